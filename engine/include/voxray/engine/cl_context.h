@@ -1,0 +1,47 @@
+#pragma once
+// The OpenCL platform, device, context and queue Voxray renders with. Passed around as
+// an object (no global singleton) so a test can pick PoCL and the app a GPU.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace voxray {
+
+struct DeviceInfo {
+  int index = 0;              // position in listDevices(); "--device N"
+  std::string platform;
+  std::string name;
+  std::string vendor;
+  std::string version;
+  bool isGpu = false;
+  bool imageSupport = false;
+  size_t globalMemBytes = 0;
+  size_t maxAllocBytes = 0;
+  size_t maxImage3d[3] = {0, 0, 0};
+  unsigned computeUnits = 0;
+};
+
+// All devices of all platforms. Throws Error (Device) with an install hint when there is
+// no OpenCL platform at all.
+std::vector<DeviceInfo> listDevices();
+
+struct ContextImpl;  // OpenCL objects stay out of public headers
+
+class ClContext {
+ public:
+  // selector: "auto" (a GPU if there is one, else the CPU), "cpu", "gpu", or an index
+  // from listDevices(). Empty = $VOXRAY_DEVICE, or "auto".
+  explicit ClContext(const std::string& selector = "");
+  ~ClContext();
+  ClContext(const ClContext&) = delete;
+  ClContext& operator=(const ClContext&) = delete;
+
+  const DeviceInfo& device() const;
+  ContextImpl& impl() { return *impl_; }
+
+ private:
+  std::unique_ptr<ContextImpl> impl_;
+};
+
+}  // namespace voxray

@@ -1,0 +1,47 @@
+#pragma once
+// The OpenCL raycast pipeline: the volume on the device as 16-bit values, the lookup
+// table, and one specialised kernel per combination of features a frame uses.
+#include <memory>
+#include <string>
+
+#include "voxray/engine/render_params.h"
+#include "voxray/io/image.h"
+
+namespace voxray {
+
+struct Volume;
+class ClContext;
+
+enum class VolumeStorage { Auto, Buffer, Image3d };
+
+struct FrameStats {
+  double kernelMs = 0.0;   // from OpenCL profiling events
+  double totalMs = 0.0;    // wall time including upload of parameters and read-back
+  double samples = 0.0;    // volume samples taken (0 when not counted)
+  std::string variant;     // the -D options of the kernel that ran
+};
+
+class Raycaster {
+ public:
+  // Uploads the volume. Auto storage: image3d_t with hardware filtering on a GPU, a
+  // buffer with manual trilinear on a CPU. Throws Error (Device) when the volume does not
+  // fit the device, naming sizes and limits.
+  Raycaster(ClContext& ctx, const Volume& volume, VolumeStorage storage = VolumeStorage::Auto);
+  ~Raycaster();
+  Raycaster(const Raycaster&) = delete;
+  Raycaster& operator=(const Raycaster&) = delete;
+
+  Image render(const RenderParams& params, FrameStats* stats = nullptr);
+  // The same, into a caller's image (reused between frames: no allocation per frame).
+  void render(const RenderParams& params, Image& out, FrameStats* stats = nullptr);
+
+  // The -D options a frame with these parameters compiles with.
+  std::string variantOptions(const RenderParams& params) const;
+  VolumeStorage storage() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace voxray

@@ -1,0 +1,95 @@
+#pragma once
+// Everything that decides what a frame looks like, declared once. voxray-cli builds
+// its flags from renderParamSpecs(), the workstation binds its models to the same
+// fields, and saved state is the same key=value text.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace voxray {
+
+enum class Mode { Iso, Dvr, Mip };
+enum class Gradient { Central, Sobel, ZuckerHummel };
+enum class Interp { Nearest, Linear };
+enum class Projection { Perspective, Orthographic };
+
+struct CameraParams {
+  double azimuthDeg = 0.0;    // 0 = anterior view; 90 = from the patient's left
+  double elevationDeg = 0.0;  // 90 = from above (superior)
+  double zoom = 1.0;
+  double distanceMm = 0.0;    // eye to volume centre; 0 = frame the whole volume
+  glm::dvec2 panMm{0.0};      // moves the look-at point in the view plane
+  Projection projection = Projection::Perspective;
+  double fovDeg = 30.0;
+};
+
+// The seed's "bounding box" cut, in fractions of the volume's extent along i, j, k.
+struct ClipBox {
+  glm::dvec3 lo{0.0};
+  glm::dvec3 hi{1.0};
+  bool isFull() const { return lo == glm::dvec3(0.0) && hi == glm::dvec3(1.0); }
+};
+
+struct LightParams {
+  // Position in mm. With followCamera it is in the camera's frame (x right, y up,
+  // z towards the viewer, origin at the eye); otherwise in patient LPS relative to the
+  // volume centre.
+  glm::dvec3 position{0.5, 0.6, 0.0};
+  bool followCamera = true;
+  double ambient = 0.15;
+  double diffuse = 0.75;
+  double specular = 0.25;
+  double shininess = 32.0;
+};
+
+struct RenderParams {
+  int width = 512;
+  int height = 384;
+  Mode mode = Mode::Iso;
+  std::string preset;         // transfer-function preset name; empty = mode's default
+  double isoLo = 400.0;       // HU range of the first-hit surface (the seed's two sliders)
+  double isoHi = 32767.0;
+  Gradient gradient = Gradient::Central;
+  Interp interp = Interp::Linear;
+  double stepMm = 0.0;        // 0 = half the smallest voxel spacing
+  int refine = 4;             // bisection steps refining an iso hit
+  bool shading = true;
+  bool opacityCorrection = true;
+  double earlyTermination = 0.99;  // dvr: stop once this opacity is reached
+  double windowWidth = 0.0;   // mip grey mapping in HU; width 0 = the volume's range
+  double windowLevel = 0.0;
+  glm::dvec3 surfaceColor{0.93, 0.89, 0.80};  // iso colour (bone) when no preset colours it
+  glm::dvec3 background{0.0};
+  CameraParams camera;
+  ClipBox clip;
+  LightParams light;
+};
+
+// One declared parameter: its key (the CLI flag without "--"), help, and how to read and
+// write it as text.
+struct ParamSpec {
+  std::string key;
+  std::string valueHint;  // e.g. "iso|dvr|mip" or "X,Y,Z"
+  std::string help;
+  std::function<void(RenderParams&, const std::string&)> parse;  // throws Error (Input)
+  std::function<std::string(const RenderParams&)> format;
+};
+const std::vector<ParamSpec>& renderParamSpecs();
+
+// key=value lines, one per declared parameter (saved state, logs, test names).
+std::string toText(const RenderParams& p);
+void fromText(RenderParams& p, const std::string& text);  // throws Error (Input)
+
+const char* toString(Mode m);
+const char* toString(Gradient g);
+const char* toString(Interp i);
+Mode parseMode(const std::string& s);
+Gradient parseGradient(const std::string& s);
+Interp parseInterp(const std::string& s);
+
+// The step actually used for a volume with this smallest spacing.
+double effectiveStepMm(const RenderParams& p, double minSpacingMm);
+
+}  // namespace voxray

@@ -1,0 +1,50 @@
+#pragma once
+// Piecewise-linear colour and opacity over HU, and the presets stored in resources/.
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace voxray {
+
+struct Volume;
+
+struct ControlPoint {
+  double hu;
+  glm::dvec4 rgba;  // colour 0..1, opacity 0..1 per reference step (one voxel)
+};
+
+struct TransferFunction {
+  std::vector<ControlPoint> points;  // sorted by hu; coincident points make a step
+  // Colour and opacity at hu: linear between points, constant beyond the ends.
+  glm::dvec4 evaluate(double hu) const;
+};
+
+// A lookup table over the stored values [storedMin, storedMax] of a volume, as the
+// kernels read it: entry k holds the TF at stored value storedMin + k / scale.
+struct Lut {
+  double storedMin = 0.0;
+  double scale = 1.0;           // entries per stored unit
+  std::vector<glm::vec4> rgba;  // float, as uploaded to the device
+  // Linear interpolation between entries, clamped; the reference renderer uses this too.
+  glm::dvec4 lookup(double stored) const;
+};
+Lut bakeLut(const TransferFunction& tf, const Volume& v, int maxEntries = 4096);
+
+struct Preset {
+  std::string name;
+  std::string description;
+  std::string mode;             // iso, dvr or mip: the mode it was made for
+  TransferFunction tf;          // dvr colours; for iso, the surface colour at the hit
+  double isoLo = 0.0, isoHi = 0.0;
+  double windowWidth = 0.0, windowLevel = 0.0;
+};
+
+// Presets from resources/presets/*.json, embedded in the binary at build time.
+const std::vector<Preset>& builtinPresets();
+// By name, case-insensitive; throws Error (Input) listing the known names.
+const Preset& findPreset(const std::string& name);
+// Parses one preset from JSON text; throws Error (Input) saying what is wrong.
+Preset parsePreset(const std::string& json, const std::string& origin);
+
+}  // namespace voxray

@@ -1,0 +1,47 @@
+#pragma once
+// A scalar volume with its physical geometry. Voxels are stored as 16-bit integers
+// (x fastest, then y, then z); the physical value (HU for CT, scanner units for MR)
+// is stored * slope + intercept, so a non-integral DICOM slope keeps its precision
+// without a float copy.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace voxray {
+
+struct Volume {
+  glm::ivec3 dims{0};          // columns (i), rows (j), slices (k)
+  glm::dvec3 spacingMm{1.0};   // distance between voxel centres along i, j, k
+  glm::dvec3 originMm{0.0};    // LPS position of the centre of voxel (0,0,0)
+  glm::dmat3 direction{1.0};   // columns: LPS unit vectors of the i, j, k axes
+  double slope = 1.0;          // physical = stored * slope + intercept
+  double intercept = 0.0;
+  std::string unit = "HU";
+  std::string sourceType = "i16";       // sample type it was read from
+  std::vector<std::string> warnings;    // things the user should know (clamping, NaN, ...)
+  std::vector<int16_t> voxels;
+
+  size_t voxelCount() const { return size_t(dims.x) * size_t(dims.y) * size_t(dims.z); }
+  size_t byteSize() const { return voxelCount() * sizeof(int16_t); }
+  size_t index(int x, int y, int z) const {
+    return (size_t(z) * size_t(dims.y) + size_t(y)) * size_t(dims.x) + size_t(x);
+  }
+  int16_t at(int x, int y, int z) const { return voxels[index(x, y, z)]; }
+  double toPhysical(double stored) const { return stored * slope + intercept; }
+  double toStored(double physical) const { return (physical - intercept) / slope; }
+  // Physical size of the volume's box: voxels are cells of one spacing each.
+  glm::dvec3 extentMm() const { return glm::dvec3(dims) * spacingMm; }
+};
+
+struct ValueRange {
+  int16_t min = 0;
+  int16_t max = 0;
+};
+
+// Smallest and largest stored value; {0, 0} for an empty volume.
+ValueRange storedRange(const Volume& v);
+
+}  // namespace voxray
