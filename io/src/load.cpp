@@ -1,1 +1,57 @@
-// placeholder
+#include "voxray/io/load.h"
+
+#include <array>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "raw_messages.h"
+#include "voxray/io/error.h"
+#include "voxray/io/phantom.h"
+
+#if __has_include("voxray/io/dicom_import.h") && defined(VOXRAY_HAS_DICOM)
+#include "voxray/io/dicom_import.h"
+#define VOXRAY_LOAD_DICOM 1
+#endif
+
+namespace fs = std::filesystem;
+
+namespace voxray {
+namespace {
+
+// True unless the file surely is not DICOM: Part 10 files carry "DICM" after a 128-byte
+// preamble; older ACR-NEMA style files start straight with a group 0002 or 0008 tag.
+bool mayBeDicom(const fs::path& file) {
+  if (file.filename() == "DICOMDIR") return true;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw inputError(file.string() + ": cannot read the file (check its permissions)");
+  std::array<unsigned char, 132> head{};
+  in.read(reinterpret_cast<char*>(head.data()), head.size());
+  const auto got = size_t(in.gcount());
+  if (got == head.size() && std::memcmp(head.data() + 128, "DICM", 4) == 0) return true;
+  if (got < 8) return false;
+  const unsigned groupLittle = head[0] | (head[1] << 8), groupBig = (head[0] << 8) | head[1];
+  return groupLittle == 0x0002 || groupLittle == 0x0008 || groupBig == 0x0008;
+}
+
+}  // namespace
+
+Volume loadVolume(const std::string& input, const LoadOptions& options) {
+  if (input.empty()) return makeHeadPhantom();
+  if (options.raw) return importRaw(input, *options.raw, {options.progress, options.cancel});
+
+  std::error_code ec;
+  if (!fs::exists(input, ec)) throw inputError(input + ": no such file or folder");
+  if (fs::is_regular_file(input, ec) && !mayBeDicom(input)) {
+    throw inputError(input + ": not a DICOM file; " + detail::kRawUsage);
+  }
+#ifdef VOXRAY_LOAD_DICOM
+  return importDicom(input, options);
+#else
+  throw inputError(input + ": this build of Voxray cannot read DICOM (it was built without " +
+                   "DCMTK); " + detail::kRawUsage);
+#endif
+}
+
+}  // namespace voxray

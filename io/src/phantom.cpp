@@ -1,1 +1,94 @@
-// placeholder
+#include "voxray/io/phantom.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "parallel.h"
+#include "voxray/io/error.h"
+
+namespace voxray {
+namespace {
+
+// Coordinates are LPS in units of the half box (128 mm): x = left, y = posterior, z = up.
+constexpr double kHalfBoxMm = 128.0;
+constexpr double kAir = -1000.0;
+
+struct Ellipsoid {
+  glm::dvec3 centre;
+  glm::dvec3 semiAxes;
+  double angleZDeg;  // rotation about z, for the tilted ventricles
+  double hu;
+};
+
+// Painted in order; each one replaces what lies inside it.
+const Ellipsoid kShapes[] = {
+    {{0.00, 0.03, 0.02}, {0.60, 0.76, 0.84}, 0, 40},       // scalp and soft tissue
+    {{0.00, -0.74, -0.14}, {0.07, 0.11, 0.15}, 0, 40},     // nose: marks anterior (-y)
+    {{0.00, 0.03, 0.04}, {0.55, 0.71, 0.79}, 0, 1150},     // skull
+    {{0.00, 0.03, 0.05}, {0.50, 0.66, 0.74}, 0, 42},       // grey matter
+    {{0.00, 0.05, 0.08}, {0.38, 0.52, 0.55}, 0, 32},       // white matter
+    {{0.10, -0.02, 0.12}, {0.05, 0.22, 0.09}, -15, 5},     // left lateral ventricle (CSF)
+    {{-0.10, -0.02, 0.12}, {0.05, 0.22, 0.09}, 15, 5},     // right lateral ventricle
+    {{0.22, -0.56, -0.18}, {0.075, 0.075, 0.07}, 0, 10},   // left eye, through the orbit
+    {{-0.22, -0.56, -0.18}, {0.075, 0.075, 0.07}, 0, 10},  // right eye
+    {{0.00, 0.20, 0.02}, {0.02, 0.02, 0.02}, 0, 300},      // calcified pineal gland
+    {{0.20, 0.35, -0.15}, {0.04, 0.06, 0.05}, 0, 15},      // old infarct, left posterior
+    {{0.25, -0.20, 0.30}, {0.07, 0.07, 0.07}, 0, 85},      // enhancing lesion, LEFT
+};
+constexpr int kLeftLesion = 11;
+
+// The x interval where the line (., y, z) lies inside e; false if it misses.
+bool rowSpan(const Ellipsoid& e, double y, double z, double& x0, double& x1) {
+  const double a = glm::radians(e.angleZDeg), c = std::cos(a), s = std::sin(a);
+  // q(x) = |M (p - centre)|^2 with M = diag(1/semi) * R^T: a quadratic in x.
+  const glm::dvec3 d{-e.centre.x, y - e.centre.y, z - e.centre.z};
+  const glm::dvec3 u = glm::dvec3(c, -s, 0) / e.semiAxes;
+  const glm::dvec3 w = glm::dvec3(c * d.x + s * d.y, -s * d.x + c * d.y, d.z) / e.semiAxes;
+  const double qa = glm::dot(u, u), qb = 2 * glm::dot(u, w), qc = glm::dot(w, w) - 1;
+  const double disc = qb * qb - 4 * qa * qc;
+  if (disc < 0) return false;
+  const double root = std::sqrt(disc);
+  x0 = (-qb - root) / (2 * qa);
+  x1 = (-qb + root) / (2 * qa);
+  return true;
+}
+
+}  // namespace
+
+PhantomLesion headPhantomLeftLesion() {
+  const Ellipsoid& e = kShapes[kLeftLesion];
+  return {e.centre * kHalfBoxMm, e.semiAxes.x * kHalfBoxMm, e.hu};
+}
+
+Volume makeHeadPhantom(int size) {
+  if (size < 2 || size > 1024) {
+    throw inputError("phantom size " + std::to_string(size) + " must be between 2 and 1024");
+  }
+  Volume v;
+  v.dims = glm::ivec3(size);
+  v.spacingMm = glm::dvec3(2 * kHalfBoxMm / size);
+  v.originMm = glm::dvec3(-(size - 1) * 0.5 * v.spacingMm.x);  // centre of the box at 0
+  v.sourceType = "phantom";
+  v.voxels.assign(v.voxelCount(), int16_t(kAir));
+
+  // Voxel i has its centre at (i + 0.5 - half) / half in half-box units.
+  const double half = size * 0.5;
+  const auto toUnits = [&](int i) { return (i + 0.5 - half) / half; };
+  // Whole spans per row instead of a test per voxel: 256^3 takes a few milliseconds.
+  detail::parallelFor(size, [&](int k) {
+    for (int j = 0; j < size; ++j) {
+      int16_t* row = v.voxels.data() + v.index(0, j, k);
+      for (const Ellipsoid& e : kShapes) {
+        double x0, x1;
+        if (!rowSpan(e, toUnits(j), toUnits(k), x0, x1)) continue;
+        const int first = std::max(0, int(std::ceil(x0 * half + half - 0.5)));
+        const int last = std::min(size - 1, int(std::floor(x1 * half + half - 0.5)));
+        if (first <= last) std::fill(row + first, row + last + 1, int16_t(e.hu));
+      }
+    }
+  });
+  return v;
+}
+
+}  // namespace voxray

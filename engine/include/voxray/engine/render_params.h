@@ -33,9 +33,9 @@ struct ClipBox {
 };
 
 struct LightParams {
-  // Position in mm. With followCamera it is in the camera's frame (x right, y up,
-  // z towards the viewer, origin at the eye); otherwise in patient LPS relative to the
-  // volume centre.
+  // With followCamera: in the camera's frame (x right, y up, z towards the viewer,
+  // origin at the eye) in units of the volume's radius; otherwise in mm, patient LPS
+  // relative to the volume centre.
   glm::dvec3 position{0.5, 0.6, 0.0};
   bool followCamera = true;
   double ambient = 0.15;

@@ -1,6 +1,8 @@
 #pragma once
 // Raw slice stacks as in the seed paper: a folder of numbered slice files, a printf
 // pattern with a range, or one raw file. No headers are parsed: the user states the layout.
+#include <atomic>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -12,12 +14,12 @@ enum class SampleType { U8, I16, U16, F32 };
 enum class ByteOrder { Little, Big };
 
 struct RawLayout {
-  glm::ivec3 dims{0};          // z = 0: taken from the number of slice files
+  glm::ivec3 dims{0};  // z = 0: taken from the number of slice files
   SampleType type = SampleType::I16;
   ByteOrder order = ByteOrder::Little;
   glm::dvec3 spacingMm{1.0};
-  size_t headerBytes = 0;      // skipped at the start of every file
-  double slope = 1.0;          // rescale to HU: hu = raw * slope + intercept
+  size_t headerBytes = 0;  // skipped at the start of every file
+  double slope = 1.0;      // rescale to HU: hu = raw * slope + intercept
   double intercept = 0.0;
   std::optional<std::pair<int, int>> range;  // first-last slice numbers (pattern or folder)
 };
@@ -29,6 +31,13 @@ constexpr size_t kMaxVoxels = size_t(2048) * 2048 * 2048;
 // a printf pattern such as "CThead.%d" (needs layout.range), or a single raw file.
 // Throws Error (Input) naming the file and what is wrong.
 Volume importRaw(const std::string& input, const RawLayout& layout);
+
+// Progress and cancellation of a raw load; loadVolume passes LoadOptions' own through.
+struct RawFeedback {
+  std::function<void(double, const std::string&)> progress;  // 0..1, from worker threads
+  const std::atomic<bool>* cancel = nullptr;  // set to true: stops, throws "loading cancelled"
+};
+Volume importRaw(const std::string& input, const RawLayout& layout, const RawFeedback& feedback);
 
 SampleType parseSampleType(const std::string& s);  // u8, i16, u16, f32
 ByteOrder parseByteOrder(const std::string& s);    // big, little

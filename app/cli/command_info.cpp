@@ -1,0 +1,59 @@
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "input_options.h"
+
+namespace voxray::cli {
+
+namespace {
+
+nlohmann::json volumeJson(const Volume& v) {
+  ValueRange r = storedRange(v);
+  double a = v.toPhysical(r.min), b = v.toPhysical(r.max);
+  nlohmann::json dir = nlohmann::json::array();
+  for (int c = 0; c < 3; ++c) dir.push_back({v.direction[c].x, v.direction[c].y, v.direction[c].z});
+  return {{"dims", {v.dims.x, v.dims.y, v.dims.z}},
+          {"spacing_mm", {v.spacingMm.x, v.spacingMm.y, v.spacingMm.z}},
+          {"origin_mm", {v.originMm.x, v.originMm.y, v.originMm.z}},
+          {"direction", dir},
+          {"hu_min", std::min(a, b)},
+          {"hu_max", std::max(a, b)},
+          {"unit", v.unit},
+          {"sample_type", v.sourceType},
+          {"rescale", {{"slope", v.slope}, {"intercept", v.intercept}}},
+          {"bytes", v.byteSize()},
+          {"warnings", v.warnings}};
+}
+
+}  // namespace
+
+Run addInfoCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("info", "Describe a volume: dims, spacing, value range, warnings");
+  auto in = std::make_shared<InputOptions>();
+  auto json = std::make_shared<bool>(false);
+  in->add(*cmd);
+  cmd->add_flag("--json", *json, "machine-readable output on stdout");
+  return [in, json] {
+    Volume v = in->load();
+    nlohmann::json j = volumeJson(v);
+    if (*json) {
+      std::cout << j.dump(2) << "\n";
+      return 0;
+    }
+    std::cout << "dims        " << v.dims.x << " x " << v.dims.y << " x " << v.dims.z << "\n"
+              << "spacing     " << v.spacingMm.x << " x " << v.spacingMm.y << " x " << v.spacingMm.z
+              << " mm\n"
+              << "extent      " << v.extentMm().x << " x " << v.extentMm().y << " x "
+              << v.extentMm().z << " mm\n"
+              << "values      " << j["hu_min"].get<double>() << " ... " << j["hu_max"].get<double>()
+              << " " << v.unit << "\n"
+              << "sample type " << v.sourceType << " (stored as int16, " << (v.byteSize() >> 20)
+              << " MiB)\n";
+    for (const auto& w : v.warnings) std::cout << "warning: " << w << "\n";
+    return 0;
+  };
+}
+
+}  // namespace voxray::cli

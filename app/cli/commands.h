@@ -1,0 +1,17 @@
+#pragma once
+// The subcommands of voxray-cli. Each registers its flags on the parser and returns the
+// function that runs it; main() catches voxray::Error at the top.
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace voxray::cli {
+
+using Run = std::function<int()>;
+
+Run addDevicesCommand(CLI::App& app);
+Run addInfoCommand(CLI::App& app);
+Run addRenderCommand(CLI::App& app);
+Run addPresetsCommand(CLI::App& app);
+
+}  // namespace voxray::cli

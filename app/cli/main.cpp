@@ -1,0 +1,35 @@
+// voxray-cli: the headless front end. Errors end in one line on stderr and exit code 1;
+// usage errors exit 2.
+#include <iostream>
+
+#include "commands.h"
+#include "voxray/io/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Voxray: CT/MR volume raycasting on OpenCL (headless)"};
+  app.require_subcommand(1);
+  std::vector<voxray::cli::Run> runs = {
+      voxray::cli::addDevicesCommand(app), voxray::cli::addInfoCommand(app),
+      voxray::cli::addRenderCommand(app), voxray::cli::addPresetsCommand(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  auto chosen = app.get_subcommands();
+  const auto& all = app.get_subcommands({});
+  for (size_t i = 0; i < all.size(); ++i) {
+    if (all[i] != chosen.front()) continue;
+    try {
+      return runs[i]();
+    } catch (const voxray::Error& e) {
+      std::cerr << "voxray-cli: " << e.what() << "\n";
+      return 1;
+    } catch (const std::bad_alloc&) {
+      std::cerr << "voxray-cli: out of memory: the volume or image is too large for this "
+                   "machine\n";
+      return 1;
+    }
+  }
+  return 2;
+}

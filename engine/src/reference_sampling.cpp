@@ -1,0 +1,54 @@
+#include "reference_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+double sampleVolume(const Volume& v, Interp interp, const glm::dvec3& p) {
+  glm::ivec3 hi = v.dims - 1;
+  if (interp == Interp::Nearest) {
+    glm::ivec3 i = glm::clamp(glm::ivec3(glm::floor(p + 0.5)), glm::ivec3(0), hi);
+    return v.at(i.x, i.y, i.z);
+  }
+  glm::dvec3 f0 = glm::floor(p);
+  glm::dvec3 f = p - f0;
+  glm::ivec3 i0(f0);
+  glm::ivec3 a = glm::clamp(i0, glm::ivec3(0), hi);
+  glm::ivec3 b = glm::clamp(i0 + 1, glm::ivec3(0), hi);
+  auto lerp = [](double x, double y, double t) { return x + (y - x) * t; };
+  double c00 = lerp(v.at(a.x, a.y, a.z), v.at(b.x, a.y, a.z), f.x);
+  double c10 = lerp(v.at(a.x, b.y, a.z), v.at(b.x, b.y, a.z), f.x);
+  double c01 = lerp(v.at(a.x, a.y, b.z), v.at(b.x, a.y, b.z), f.x);
+  double c11 = lerp(v.at(a.x, b.y, b.z), v.at(b.x, b.y, b.z), f.x);
+  return lerp(lerp(c00, c10, f.y), lerp(c01, c11, f.y), f.z);
+}
+
+glm::dvec3 volumeGradient(const Volume& v, Interp interp, Gradient op, const glm::dvec3& p) {
+  auto s = [&](double dx, double dy, double dz) {
+    return sampleVolume(v, interp, p + glm::dvec3(dx, dy, dz));
+  };
+  if (op == Gradient::Central)
+    return 0.5 * glm::dvec3(s(1, 0, 0) - s(-1, 0, 0), s(0, 1, 0) - s(0, -1, 0),
+                            s(0, 0, 1) - s(0, 0, -1));
+  // Cross-axis weights by the number of non-zero cross offsets (0, 1, 2).
+  const double sobel[3] = {6.0, 3.0, 1.0};
+  const double zh[3] = {1.0, 1.0 / std::sqrt(2.0), 1.0 / std::sqrt(3.0)};
+  const double* w = op == Gradient::Sobel ? sobel : zh;
+  double sum = w[0] + 4.0 * w[1] + 4.0 * w[2];
+  glm::dvec3 g(0.0);
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (dx == 0 && dy == 0 && dz == 0) continue;
+        double val = s(dx, dy, dz);
+        g.x += val * dx * w[std::abs(dy) + std::abs(dz)];
+        g.y += val * dy * w[std::abs(dx) + std::abs(dz)];
+        g.z += val * dz * w[std::abs(dx) + std::abs(dy)];
+      }
+  return g * (0.5 / sum);
+}
+
+}  // namespace voxray

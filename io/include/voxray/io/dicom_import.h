@@ -1,0 +1,57 @@
+#pragma once
+// DICOM import: a folder (searched recursively), a single file or a DICOMDIR becomes one
+// Volume in physical units (HU for CT). Series are discovered by SeriesInstanceUID and
+// split where geometry differs; the largest true volume is chosen unless the caller
+// selects another. Only std and GLM types here: DCMTK and OpenJPEG stay private.
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "voxray/io/load.h"
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+// One candidate volume found in the input, described from headers only (no pixels read).
+struct SeriesInfo {
+  std::string selector;     // pass as LoadOptions::series to load exactly this candidate
+  std::string uid;          // SeriesInstanceUID (several candidates may share one)
+  int number = 0;           // SeriesNumber
+  int part = 0;             // 1.. when one series was split into several candidates, else 0
+  std::string description;  // SeriesDescription
+  std::string modality;     // CT, MR, ...
+  std::string transferSyntax;  // name of the first file's transfer syntax
+  glm::ivec3 dims{0};          // columns, rows, slices as they would be loaded
+  glm::dvec3 spacingMm{0.0};   // column, row and slice spacing (slice: from positions)
+  glm::dvec3 originMm{0.0};    // LPS centre of the first voxel, as loaded
+  glm::dmat3 direction{1.0};   // columns: LPS unit vectors of i, j, k
+  int sliceCount = 0;          // images (frames) in this candidate
+  int fileCount = 0;
+  bool isVolume = false;         // a 3D stack that can be chosen by default
+  bool chosenByDefault = false;  // the candidate loadVolume opens when no series is given
+  std::string notVolumeReason;   // why isVolume is false (scout, single slice, ...)
+  std::vector<std::string> warnings;  // tilt, uneven gaps, missing slices, 4D, ...
+  // For display in the UI only: never log these or put them in messages or exports.
+  std::string patientName;
+  std::string patientId;
+  std::string patientBirthDate;
+};
+
+struct DicomListing {
+  std::vector<SeriesInfo> series;  // volumes first (largest first), then the others
+  int filesScanned = 0;
+  int filesSkipped = 0;  // not DICOM, unreadable, or DICOM without an image (DICOMDIR, SR)
+  std::vector<std::string> notes;  // what was skipped and why, without patient data
+};
+
+// Reads headers only. Throws Error (Input) when INPUT does not exist or holds no image.
+DicomListing listDicomSeries(const std::string& input, const LoadOptions& options = {});
+
+// Loads the candidate named by options.series (selector, series number or UID), else the
+// default choice. Slices are decoded in parallel; options.progress is called from worker
+// threads and options.cancel abandons the load (throws Error). Throws Error (Input) with
+// a message naming the file and the reason when the data cannot be one volume.
+Volume importDicom(const std::string& input, const LoadOptions& options = {});
+
+}  // namespace voxray

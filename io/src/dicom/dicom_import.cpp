@@ -1,0 +1,277 @@
+// The DICOM import pipeline: find files, read headers in parallel, group into candidates,
+// then decode the chosen one slice-parallel into int16, bring slices onto one value
+// scale and, for tilted or uneven stacks, resample onto an orthogonal uniform grid.
+#include "voxray/io/dicom_import.h"
+
+#include <map>
+#include <mutex>
+
+#include "file_scan.h"
+#include "parallel_for.h"
+#include "pixel_decode.h"
+#include "resample.h"
+#include "series_grouping.h"
+#include "stack_geometry.h"
+#include "value_mapping.h"
+#include "voxray/io/error.h"
+#include "voxray/io/raw_import.h"
+
+namespace voxray {
+namespace {
+
+using namespace dicom;
+
+constexpr double kHeaderShare = 0.1;  // progress spent on reading headers
+
+struct Scan {
+  InputFiles input;
+  std::vector<Candidate> candidates;
+  std::vector<StackGeometry> geometry;  // per candidate
+  int skipped = 0;
+  std::vector<std::string> notes;
+};
+
+void report(const LoadOptions& o, double fraction, const std::string& message) {
+  if (o.progress) o.progress(fraction, message);
+}
+
+void throwIfCancelled(const LoadOptions& o, const std::string& input) {
+  if (o.cancel && *o.cancel) throw inputError(input + ": DICOM import cancelled");
+}
+
+Scan scan(const std::string& input, const LoadOptions& options) {
+  Scan s;
+  s.input = collectInputFiles(input);
+  const auto& files = s.input.files;
+  std::vector<std::vector<FrameHeader>> perFile(files.size());
+  std::map<std::string, int> skippedWhy;
+  std::mutex mutex;
+  std::atomic<size_t> done{0};
+  parallelFor(
+      files.size(),
+      [&](size_t i) {
+        std::string why;
+        if (readFrameHeaders(files[i], perFile[i], why) != ScanResult::Image) {
+          std::lock_guard lock(mutex);
+          ++skippedWhy[why];
+        }
+        size_t d = ++done;
+        if (d % 16 == 0 || d == files.size())
+          report(options, kHeaderShare * double(d) / double(files.size()), "Reading headers");
+      },
+      options.cancel);
+  throwIfCancelled(options, input);
+  std::vector<FrameHeader> frames;
+  for (auto& list : perFile)
+    for (auto& f : list) frames.push_back(std::move(f));
+  for (auto& [why, count] : skippedWhy) {
+    s.skipped += count;
+    s.notes.push_back(std::to_string(count) + " file(s) skipped: " + why);
+  }
+  s.notes.insert(s.notes.end(), s.input.notes.begin(), s.input.notes.end());
+  if (frames.empty()) {
+    std::string detail = s.notes.empty() ? std::string() : " (" + s.notes.front() + ")";
+    throw inputError(input + ": no DICOM image found in " + std::to_string(files.size()) +
+                     " file(s)" + detail + ". Choose a DICOM file, folder or DICOMDIR.");
+  }
+  s.candidates = groupIntoCandidates(std::move(frames));
+  for (auto& c : s.candidates) {
+    StackGeometry g;
+    try {
+      g = analyseStack(c.frames);
+    } catch (const Error& e) {
+      c.isVolume = false;
+      c.notVolumeReason = e.what();
+      g.source.dims = g.target.dims = {c.first().columns, c.first().rows, int(c.frames.size())};
+    }
+    s.geometry.push_back(std::move(g));
+  }
+  return s;
+}
+
+SeriesInfo describe(const Candidate& c, const StackGeometry& g) {
+  const FrameHeader& f = c.first();
+  SeriesInfo info;
+  info.selector = c.selector;
+  info.uid = f.seriesUid;
+  info.number = f.seriesNumber;
+  info.part = c.part;
+  info.description = f.description;
+  info.modality = f.modality;
+  info.transferSyntax = transferSyntaxName(f.transferSyntaxUid);
+  info.dims = g.target.dims;
+  info.spacingMm = g.target.spacing;
+  info.originMm = g.target.origin;
+  info.direction = g.target.axes;
+  info.sliceCount = int(c.frames.size());
+  std::map<std::string, int> files;
+  for (auto& fr : c.frames) ++files[fr.path];
+  info.fileCount = int(files.size());
+  info.isVolume = c.isVolume;
+  info.notVolumeReason = c.notVolumeReason;
+  info.warnings = c.warnings;
+  info.warnings.insert(info.warnings.end(), g.warnings.begin(), g.warnings.end());
+  info.patientName = f.patientName;
+  info.patientId = f.patientId;
+  info.patientBirthDate = f.patientBirthDate;
+  return info;
+}
+
+int defaultChoice(const Scan& s) {
+  for (size_t i = 0; i < s.candidates.size(); ++i)
+    if (s.candidates[i].isVolume) return int(i);
+  return -1;
+}
+
+std::string candidateList(const Scan& s) {
+  std::string out;
+  for (auto& c : s.candidates) {
+    out += "\n  " + c.selector + ": " + std::to_string(c.frames.size()) + " image(s) " +
+           c.first().modality;
+    if (!c.first().description.empty()) out += " \"" + c.first().description + "\"";
+    if (!c.isVolume) out += " - " + c.notVolumeReason;
+  }
+  return out;
+}
+
+int chooseCandidate(const Scan& s, const std::string& input, const LoadOptions& options,
+                    std::vector<std::string>& warnings) {
+  if (!options.series.empty()) {
+    int i = findCandidate(s.candidates, options.series);
+    if (i < 0)
+      throw inputError(input + ": no series \"" + options.series +
+                       "\". Choose one of:" + candidateList(s));
+    const Candidate& c = s.candidates[size_t(i)];
+    if (!c.isVolume)
+      warnings.push_back("series " + c.selector + " is not a volume (" + c.notVolumeReason +
+                         "); loaded as requested");
+    return i;
+  }
+  int i = defaultChoice(s);
+  if (i >= 0) return i;
+  // A single image file is opened as what it is: the user asked for exactly this file.
+  if (s.input.singleFile && s.candidates.size() == 1) {
+    warnings.push_back("not a volume (" + s.candidates[0].notVolumeReason +
+                       "); loaded as a single file");
+    return 0;
+  }
+  throw inputError(input + ": no series here is a 3D volume:" + candidateList(s) +
+                   "\nChoose one with --series to open it anyway.");
+}
+
+// Decodes every slice of C into VOXELS (slice k at k * slice size); returns the scales.
+std::vector<SliceScale> decodeSlices(const Candidate& c, const LoadOptions& options,
+                                     std::vector<int16_t>& voxels) {
+  const FrameHeader& f0 = c.first();
+  const size_t sliceSize = size_t(f0.columns) * size_t(f0.rows);
+  std::map<std::string, std::vector<size_t>> byFile;  // frames in file order
+  for (size_t k = 0; k < c.frames.size(); ++k) byFile[c.frames[k].path].push_back(k);
+  std::vector<const std::vector<size_t>*> tasks;
+  for (auto& [path, list] : byFile) {
+    std::sort(list.begin(), list.end(),
+              [&](size_t a, size_t b) { return c.frames[a].frame < c.frames[b].frame; });
+    tasks.push_back(&list);
+  }
+  std::vector<SliceScale> scales(c.frames.size());
+  std::atomic<size_t> done{0};
+  const double air = airValue(f0.modality);
+  const size_t total = c.frames.size();
+  parallelFor(
+      tasks.size(),
+      [&](size_t t) {
+        const auto& slices = *tasks[t];
+        PixelFile file(c.frames[slices.front()].path);
+        std::vector<int32_t> values;
+        for (size_t k : slices) {
+          if (options.cancel && *options.cancel) return;
+          const FrameHeader& h = c.frames[k];
+          file.frameValues(h, values);
+          if (values.size() != sliceSize)
+            throw inputError(h.path + ": frame " + std::to_string(h.frame + 1) +
+                             " does not have the " + std::to_string(f0.columns) + "x" +
+                             std::to_string(f0.rows) + " pixels of the series");
+          scales[k] = storeSlice(values, h, air, voxels.data() + k * sliceSize);
+          size_t d = ++done;
+          report(options, kHeaderShare + (0.9 - kHeaderShare) * double(d) / double(total),
+                 "Decoding slice " + std::to_string(d) + " of " + std::to_string(total));
+        }
+      },
+      options.cancel);
+  return scales;
+}
+
+std::string sampleTypeName(const FrameHeader& f) {
+  return std::string(f.pixelRepresentation ? "i" : "u") + std::to_string(f.bitsStored);
+}
+
+}  // namespace
+
+DicomListing listDicomSeries(const std::string& input, const LoadOptions& options) {
+  Scan s = scan(input, options);
+  DicomListing listing;
+  listing.filesScanned = int(s.input.files.size());
+  listing.filesSkipped = s.skipped;
+  listing.notes = s.notes;
+  int chosen = defaultChoice(s);
+  for (size_t i = 0; i < s.candidates.size(); ++i) {
+    listing.series.push_back(describe(s.candidates[i], s.geometry[i]));
+    listing.series.back().chosenByDefault = int(i) == chosen;
+  }
+  return listing;
+}
+
+Volume importDicom(const std::string& input, const LoadOptions& options) {
+  Scan s = scan(input, options);
+  std::vector<std::string> warnings;
+  const int index = chooseCandidate(s, input, options, warnings);
+  const Candidate& c = s.candidates[size_t(index)];
+  const FrameHeader& f0 = c.first();
+  if (std::string why = unsupportedReason(f0); !why.empty()) throw inputError(f0.path + ": " + why);
+  StackGeometry g = analyseStack(c.frames);  // throws when slices coincide
+  const Grid& src = g.source;
+  const size_t voxelCount = size_t(src.dims.x) * size_t(src.dims.y) * size_t(src.dims.z);
+  const size_t targetCount = size_t(g.target.dims.x) * g.target.dims.y * size_t(g.target.dims.z);
+  if (voxelCount > kMaxVoxels || targetCount > kMaxVoxels)
+    throw inputError(input + ": series " + c.selector + " is too large to load (" +
+                     std::to_string(std::max(voxelCount, targetCount)) + " voxels)");
+
+  Volume v;
+  v.voxels.resize(voxelCount);
+  std::vector<SliceScale> scales = decodeSlices(c, options, v.voxels);
+  throwIfCancelled(options, input);
+  CommonScale common = chooseCommonScale(scales);
+  const size_t sliceSize = size_t(src.dims.x) * size_t(src.dims.y);
+  if (common.remap) {
+    parallelFor(scales.size(), [&](size_t k) {
+      remapSlice(v.voxels.data() + k * sliceSize, sliceSize, scales[k], common);
+    });
+    warnings.push_back(common.warning);
+  }
+  if (g.needsResampling) {
+    report(options, 0.92, "Resampling to a uniform grid");
+    std::vector<glm::dvec3> origins;
+    for (auto& f : c.frames) origins.push_back(f.position);
+    const double air = airValue(f0.modality);
+    auto outside = int16_t(std::clamp(std::lround((air - common.intercept) / common.slope),
+                                      long(INT16_MIN), long(INT16_MAX)));
+    std::vector<int16_t> resampled = resampleStack(v.voxels, origins, g, outside, options.cancel);
+    throwIfCancelled(options, input);
+    v.voxels = std::move(resampled);
+  }
+  v.dims = g.target.dims;
+  v.spacingMm = g.target.spacing;
+  v.originMm = g.target.origin;
+  v.direction = g.target.axes;
+  v.slope = common.slope;
+  v.intercept = common.intercept;
+  v.unit = f0.modality == "CT" ? "HU" : f0.modality + " signal (scanner units)";
+  v.sourceType = sampleTypeName(f0);
+  v.warnings = c.warnings;
+  v.warnings.insert(v.warnings.end(), g.warnings.begin(), g.warnings.end());
+  v.warnings.insert(v.warnings.end(), warnings.begin(), warnings.end());
+  for (auto& note : s.notes) v.warnings.push_back(note);
+  report(options, 1.0, "Loaded");
+  return v;
+}
+
+}  // namespace voxray

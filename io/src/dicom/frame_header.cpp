@@ -1,0 +1,205 @@
+// Header parsing with DCMTK. Pixel data is never read here: parsing stops at PixelData, so
+// listing a study touches only a few kilobytes per file.
+#include "frame_header.h"
+
+#include "codec_registry.h"
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcmetinf.h>
+#include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmdata/dcxfer.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+namespace voxray::dicom {
+namespace {
+
+// A guard against damaged headers: more frames than any real multi-frame object.
+constexpr int kMaxFramesPerFile = 100000;
+
+std::string str(DcmItem* item, const DcmTagKey& tag) {
+  OFString s;
+  if (item && item->findAndGetOFStringArray(tag, s).good()) {
+    std::string out(s.c_str());
+    while (!out.empty() && (out.back() == ' ' || out.back() == '\0')) out.pop_back();
+    return out;
+  }
+  return {};
+}
+
+int intValue(DcmItem* item, const DcmTagKey& tag, int fallback = 0) {
+  Sint32 s = 0;
+  if (item && item->findAndGetSint32(tag, s).good()) return int(s);
+  Uint16 u = 0;
+  if (item && item->findAndGetUint16(tag, u).good()) return int(u);
+  Uint32 ul = 0;
+  if (item && item->findAndGetUint32(tag, ul).good()) return int(ul);
+  return fallback;
+}
+
+// Reads N decimal values; false when any is missing or not finite.
+bool doubles(DcmItem* item, const DcmTagKey& tag, double* out, int n) {
+  if (!item) return false;
+  for (int i = 0; i < n; ++i) {
+    Float64 v = 0;
+    if (item->findAndGetFloat64(tag, v, i).bad() || !std::isfinite(v)) return false;
+    out[i] = v;
+  }
+  return true;
+}
+
+std::optional<int32_t> paddingValue(DcmItem* item, const DcmTagKey& tag, int pixelRep) {
+  Uint16 u = 0;
+  Sint16 s = 0;
+  if (item->findAndGetUint16(tag, u).good())
+    return pixelRep ? int32_t(int16_t(u)) : int32_t(u);
+  if (item->findAndGetSint16(tag, s).good()) return int32_t(s);
+  return std::nullopt;
+}
+
+// The first item of sequence TAG inside a functional group item, if present.
+DcmItem* group(DcmItem* groupItem, const DcmTagKey& seq) {
+  DcmItem* found = nullptr;
+  if (groupItem && groupItem->findAndGetSequenceItem(seq, found, 0).good()) return found;
+  return nullptr;
+}
+
+// Per-frame groups win over shared ones (PS3.3 C.7.6.16).
+DcmItem* frameGroup(DcmItem* perFrame, DcmItem* shared, const DcmTagKey& seq) {
+  if (DcmItem* g = group(perFrame, seq)) return g;
+  return group(shared, seq);
+}
+
+void readPlane(DcmItem* item, FrameHeader& h) {
+  double p[3], o[6], sp[2];
+  if (doubles(item, DCM_ImagePositionPatient, p, 3)) {
+    h.position = {p[0], p[1], p[2]};
+    h.hasPosition = true;
+  }
+  if (doubles(item, DCM_ImageOrientationPatient, o, 6)) {
+    glm::dvec3 r{o[0], o[1], o[2]}, c{o[3], o[4], o[5]};
+    if (glm::length(r) > 0.5 && glm::length(c) > 0.5 && glm::length(glm::cross(r, c)) > 0.5) {
+      h.rowDir = glm::normalize(r);
+      h.colDir = glm::normalize(c);
+      h.hasOrientation = true;
+    }
+  }
+  if (doubles(item, DCM_PixelSpacing, sp, 2) && sp[0] > 0 && sp[1] > 0) {
+    h.pixelSpacing = {sp[1], sp[0]};  // DICOM gives row spacing (between rows) first
+    h.hasPixelSpacing = true;
+  }
+  double v = 0;
+  if (doubles(item, DCM_SliceThickness, &v, 1)) h.sliceThickness = v;
+  if (doubles(item, DCM_SpacingBetweenSlices, &v, 1)) h.spacingBetweenSlices = v;
+}
+
+void readRescale(DcmItem* item, FrameHeader& h) {
+  double v = 0;
+  if (doubles(item, DCM_RescaleSlope, &v, 1) && v != 0.0) h.slope = v;
+  if (doubles(item, DCM_RescaleIntercept, &v, 1)) h.intercept = v;
+}
+
+void readFrameGroups(DcmItem* perFrame, DcmItem* shared, FrameHeader& h) {
+  if (DcmItem* g = frameGroup(perFrame, shared, DCM_PlanePositionSequence)) readPlane(g, h);
+  if (DcmItem* g = frameGroup(perFrame, shared, DCM_PlaneOrientationSequence)) readPlane(g, h);
+  if (DcmItem* g = frameGroup(perFrame, shared, DCM_PixelMeasuresSequence)) readPlane(g, h);
+  if (DcmItem* g = frameGroup(perFrame, shared, DCM_PixelValueTransformationSequence))
+    readRescale(g, h);
+  if (DcmItem* g = frameGroup(perFrame, shared, DCM_FrameContentSequence)) {
+    h.temporalIndex = intValue(g, DCM_TemporalPositionIndex, 0);
+    h.stackId = intValue(g, DCM_StackID, 0);
+  }
+}
+
+// "DICM" after the 128-byte preamble (PS3.10 7.1).
+bool hasDicomPreamble(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char buf[132] = {};
+  return in.read(buf, sizeof buf) && std::memcmp(buf + 128, "DICM", 4) == 0;
+}
+
+}  // namespace
+
+ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& out,
+                            std::string& why) {
+  ensureCodecsRegistered();  // also silences DCMTK's own logging
+  DcmFileFormat file;
+  OFCondition status = file.loadFileUntilTag(path.c_str(), EXS_Unknown, EGL_noChange, 4096,
+                                             ERM_autoDetect, DCM_PixelData);
+  DcmDataset* ds = file.getDataset();
+  if (status.bad() || !ds) {
+    why = hasDicomPreamble(path) ? std::string("damaged DICOM (") + status.text() + ")"
+                                 : std::string("not a DICOM file");
+    return ScanResult::NotDicom;
+  }
+  FrameHeader h;
+  h.path = path;
+  h.sopClassUid = str(ds, DCM_SOPClassUID);
+  h.rows = intValue(ds, DCM_Rows);
+  h.columns = intValue(ds, DCM_Columns);
+  if (h.rows <= 0 || h.columns <= 0) {
+    std::string media = str(file.getMetaInfo(), DCM_MediaStorageSOPClassUID);
+    if (h.sopClassUid.empty() && media.empty() && str(ds, DCM_Modality).empty()) {
+      why = "not a DICOM file";
+      return ScanResult::NotDicom;
+    }
+    const char* name = dcmFindNameOfUID(media.empty() ? h.sopClassUid.c_str() : media.c_str());
+    why = std::string("DICOM without an image (") + (name ? name : "no SOP class") + ")";
+    return ScanResult::NoImage;
+  }
+  h.transferSyntaxUid = DcmXfer(ds->getOriginalXfer()).getXferID();
+  h.seriesUid = str(ds, DCM_SeriesInstanceUID);
+  h.modality = str(ds, DCM_Modality);
+  h.description = str(ds, DCM_SeriesDescription);
+  h.imageType = str(ds, DCM_ImageType);
+  h.photometric = str(ds, DCM_PhotometricInterpretation);
+  h.seriesNumber = intValue(ds, DCM_SeriesNumber);
+  h.instanceNumber = intValue(ds, DCM_InstanceNumber);
+  h.acquisitionNumber = intValue(ds, DCM_AcquisitionNumber);
+  h.temporalIndex = intValue(ds, DCM_TemporalPositionIdentifier);
+  h.samplesPerPixel = intValue(ds, DCM_SamplesPerPixel, 1);
+  h.bitsAllocated = intValue(ds, DCM_BitsAllocated, 16);
+  h.bitsStored = intValue(ds, DCM_BitsStored, h.bitsAllocated);
+  h.pixelRepresentation = intValue(ds, DCM_PixelRepresentation, 0);
+  double tilt = 0;
+  if (doubles(ds, DCM_GantryDetectorTilt, &tilt, 1)) h.gantryTilt = tilt;
+  readPlane(ds, h);
+  readRescale(ds, h);
+  h.padding = paddingValue(ds, DCM_PixelPaddingValue, h.pixelRepresentation);
+  h.paddingLimit = paddingValue(ds, DCM_PixelPaddingRangeLimit, h.pixelRepresentation);
+  h.patientName = str(ds, DCM_PatientName);
+  h.patientId = str(ds, DCM_PatientID);
+  h.patientBirthDate = str(ds, DCM_PatientBirthDate);
+
+  int frames = std::max(1, intValue(ds, DCM_NumberOfFrames, 1));
+  if (frames > kMaxFramesPerFile) {
+    why = "NumberOfFrames " + std::to_string(frames) + " is implausible; the file is damaged";
+    return ScanResult::NoImage;
+  }
+  DcmItem* shared = nullptr;
+  ds->findAndGetSequenceItem(DCM_SharedFunctionalGroupsSequence, shared, 0);
+  DcmSequenceOfItems* perFrame = nullptr;
+  ds->findAndGetSequence(DCM_PerFrameFunctionalGroupsSequence, perFrame);
+  h.fileFrames = frames;
+  h.perFrameGroups = shared || perFrame;
+  for (int f = 0; f < frames; ++f) {
+    FrameHeader fh = h;
+    fh.frame = f;
+    DcmItem* item = (perFrame && unsigned(f) < perFrame->card()) ? perFrame->getItem(f) : nullptr;
+    if (shared || item) readFrameGroups(item, shared, fh);
+    out.push_back(std::move(fh));
+  }
+  return ScanResult::Image;
+}
+
+std::string transferSyntaxName(const std::string& uid) {
+  DcmXfer xfer(uid.c_str());
+  if (xfer.getXfer() == EXS_Unknown) return uid.empty() ? "unknown transfer syntax" : uid;
+  return std::string(xfer.getXferName()) + " (" + uid + ")";
+}
+
+}  // namespace voxray::dicom

@@ -1,0 +1,51 @@
+#pragma once
+// What Voxray needs to know about one image (one frame of a file), read from headers only.
+// Enhanced multi-frame files give one FrameHeader per frame, with per-frame geometry.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace voxray::dicom {
+
+struct FrameHeader {
+  std::string path;
+  int frame = 0;        // index inside the file
+  int fileFrames = 1;   // NumberOfFrames of the file
+  std::string seriesUid, sopClassUid, modality, description, imageType, photometric;
+  std::string transferSyntaxUid;
+  int seriesNumber = 0, instanceNumber = 0, acquisitionNumber = 0;
+  int temporalIndex = 0;  // TemporalPositionIndex / DimensionIndexValues, 0 when absent
+  int stackId = 0;
+  int rows = 0, columns = 0, samplesPerPixel = 1;
+  int bitsAllocated = 16, bitsStored = 16, pixelRepresentation = 0;
+  bool hasPosition = false, hasOrientation = false, hasPixelSpacing = false;
+  glm::dvec3 position{0.0};
+  glm::dvec3 rowDir{1, 0, 0};  // direction of increasing column index (i)
+  glm::dvec3 colDir{0, 1, 0};  // direction of increasing row index (j)
+  glm::dvec2 pixelSpacing{1.0};  // x: between columns (i), y: between rows (j)
+  double sliceThickness = 0.0, spacingBetweenSlices = 0.0;
+  double gantryTilt = 0.0;
+  double slope = 1.0, intercept = 0.0;
+  std::optional<int32_t> padding, paddingLimit;  // stored values meaning "no data"
+  // Display only; never logged or put in messages.
+  std::string patientName, patientId, patientBirthDate;
+
+  glm::dvec3 normal() const { return glm::normalize(glm::cross(rowDir, colDir)); }
+  bool isEnhanced() const { return fileFrames > 1 || perFrameGroups; }
+  bool perFrameGroups = false;
+};
+
+enum class ScanResult { Image, NotDicom, NoImage };
+
+// Reads the headers of PATH (pixel data is not loaded). Appends one FrameHeader per
+// frame to OUT. WHY says, for NotDicom/NoImage, what the file was.
+ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& out,
+                            std::string& why);
+
+// Human name of a transfer syntax UID ("JPEG 2000 lossless", ...), or the UID itself.
+std::string transferSyntaxName(const std::string& uid);
+
+}  // namespace voxray::dicom

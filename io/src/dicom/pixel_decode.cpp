@@ -1,0 +1,212 @@
+#include "pixel_decode.h"
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dccodec.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcpixel.h>
+#include <dcmtk/dcmdata/dcpixseq.h>
+#include <dcmtk/dcmdata/dcpxitem.h>
+#include <dcmtk/dcmdata/dcxfer.h>
+
+#include <cstring>
+
+#include "codec_registry.h"
+#include "j2k_decode.h"
+#include "voxray/io/error.h"
+
+namespace voxray::dicom {
+namespace {
+
+bool isJpeg2000(E_TransferSyntax x) {
+  return x == EXS_JPEG2000LosslessOnly || x == EXS_JPEG2000 ||
+         x == EXS_JPEG2000MulticomponentLosslessOnly || x == EXS_JPEG2000Multicomponent;
+}
+
+// Masks to BitsStored and sign-extends, so 12-bit signed data and junk in the unused high
+// bits both come out right.
+struct SampleFormat {
+  int bits;
+  bool isSigned;
+  int32_t operator()(uint32_t raw) const {
+    uint32_t v = bits >= 32 ? raw : raw & ((1u << bits) - 1u);
+    if (isSigned && bits < 32 && (v >> (bits - 1)) & 1u) return int32_t(v) - int32_t(1u << bits);
+    return int32_t(v);
+  }
+};
+
+// Fragments [first, last) of FRAME in an encapsulated pixel sequence (item 0 is the
+// offset table).
+void fragmentRange(DcmPixelSequence* seq, int frame, int frames, Uint32& first, Uint32& last) {
+  Uint32 count = Uint32(seq->card());
+  if (frames <= 1) {
+    first = 1;
+    last = count;
+    return;
+  }
+  if (DcmCodec::determineStartFragment(Uint32(frame), frames, seq, first).bad()) first = 0;
+  Uint32 next = count;
+  if (frame + 1 < frames &&
+      DcmCodec::determineStartFragment(Uint32(frame + 1), frames, seq, next).bad())
+    next = 0;
+  if (first == 0 || next == 0) {
+    // No usable offset table: a JPEG 2000 codestream starts with SOC + SIZ (FF4F FF51).
+    std::vector<Uint32> starts;
+    for (Uint32 i = 1; i < count; ++i) {
+      DcmPixelItem* item = nullptr;
+      Uint8* bytes = nullptr;
+      if (seq->getItem(item, i).good() && item->getLength() >= 4 &&
+          item->getUint8Array(bytes).good() && bytes && bytes[0] == 0xFF && bytes[1] == 0x4F)
+        starts.push_back(i);
+    }
+    if (size_t(frame) >= starts.size())
+      throw inputError("frame " + std::to_string(frame + 1) + " has no JPEG 2000 data");
+    first = starts[size_t(frame)];
+    next = size_t(frame) + 1 < starts.size() ? starts[size_t(frame) + 1] : count;
+  }
+  last = std::min(next, count);
+  if (first < 1 || first >= last)
+    throw inputError("frame " + std::to_string(frame + 1) + " has no compressed data");
+}
+
+}  // namespace
+
+struct PixelFile::Impl {
+  std::string path;
+  DcmFileFormat file;
+  DcmDataset* ds = nullptr;
+  DcmPixelData* pixels = nullptr;
+  E_TransferSyntax xfer = EXS_Unknown;
+  std::vector<uint8_t> buffer;  // one decoded or concatenated frame
+  int lastFrame = -2;
+  Uint32 nextStart = 0;
+
+  [[noreturn]] void fail(const std::string& why) const {
+    throw inputError(path + ": " + why);
+  }
+
+  void decodeJ2k(const FrameHeader& h, std::vector<int32_t>& out) {
+    DcmPixelSequence* seq = nullptr;
+    if (pixels->getEncapsulatedRepresentation(xfer, nullptr, seq).bad() || !seq)
+      fail("the JPEG 2000 pixel data is missing or damaged");
+    Uint32 first = 0, last = 0;
+    fragmentRange(seq, h.frame, h.fileFrames, first, last);
+    buffer.clear();
+    for (Uint32 i = first; i < last; ++i) {
+      DcmPixelItem* item = nullptr;
+      Uint8* bytes = nullptr;
+      if (seq->getItem(item, i).bad() || item->getUint8Array(bytes).bad()) continue;
+      if (bytes) buffer.insert(buffer.end(), bytes, bytes + item->getLength());
+    }
+    J2kImage img;
+    try {
+      img = decodeJpeg2000(buffer.data(), buffer.size());
+    } catch (const Error& e) {
+      fail(std::string(e.what()) + " (frame " + std::to_string(h.frame + 1) + ")");
+    }
+    if (img.width != h.columns || img.height != h.rows)
+      fail("the JPEG 2000 image is " + std::to_string(img.width) + "x" +
+           std::to_string(img.height) + " but the header says " + std::to_string(h.columns) +
+           "x" + std::to_string(h.rows));
+    SampleFormat fmt{std::clamp(h.bitsStored, 1, 32), h.pixelRepresentation == 1};
+    out.resize(img.samples.size());
+    for (size_t i = 0; i < out.size(); ++i) out[i] = fmt(uint32_t(img.samples[i]));
+  }
+
+  void decodeOther(const FrameHeader& h, std::vector<int32_t>& out) {
+    const size_t n = size_t(h.rows) * size_t(h.columns);
+    const size_t bytesPerSample = size_t(h.bitsAllocated) / 8;
+    const size_t frameBytes = n * size_t(h.samplesPerPixel) * bytesPerSample;
+    SampleFormat fmt{std::clamp(h.bitsStored, 1, h.bitsAllocated), h.pixelRepresentation == 1};
+    const uint8_t* src = nullptr;
+    if (DcmXfer(xfer).isEncapsulated()) {
+      if (!DcmCodecList::canChangeCoding(xfer, EXS_LittleEndianExplicit))
+        fail("transfer syntax " + transferSyntaxName(DcmXfer(xfer).getXferID()) +
+             " is not supported; convert the study with a DICOM tool (e.g. dcmdjpeg)");
+      buffer.assign(frameBytes + (frameBytes & 1), 0);
+      // DCMTK finds the first fragment itself (0) and tells where the next frame starts,
+      // which is exact when frames are read in order.
+      Uint32 start = h.frame == lastFrame + 1 ? nextStart : 0;
+      OFString colourModel;
+      OFCondition c = pixels->getUncompressedFrame(ds, Uint32(h.frame), start, buffer.data(),
+                                                   Uint32(buffer.size()), colourModel);
+      lastFrame = h.frame;
+      nextStart = start;
+      if (c.bad())
+        fail(std::string("frame ") + std::to_string(h.frame + 1) + " cannot be decoded (" +
+             c.text() + "); the compressed data is damaged");
+      src = buffer.data();
+    } else {
+      const size_t offset = size_t(h.frame) * frameBytes;
+      Uint8* bytes = nullptr;
+      Uint16* words = nullptr;
+      size_t available = 0;
+      if (bytesPerSample == 1 && pixels->getUint8Array(bytes).good() && bytes) {
+        src = bytes;
+        available = pixels->getLength();
+      } else if (bytesPerSample == 2 && pixels->getUint16Array(words).good() && words) {
+        src = reinterpret_cast<const uint8_t*>(words);  // already in local byte order
+        available = pixels->getLength();
+      }
+      if (!src || available < offset + frameBytes)
+        fail("the pixel data is shorter than " + std::to_string(h.columns) + "x" +
+             std::to_string(h.rows) + "x" + std::to_string(h.fileFrames) +
+             " samples; the file is truncated");
+      src += offset;
+    }
+    out.resize(n);
+    const size_t step = size_t(h.samplesPerPixel);
+    if (bytesPerSample == 1) {
+      for (size_t i = 0; i < n; ++i) out[i] = fmt(src[i * step]);
+    } else {
+      for (size_t i = 0; i < n; ++i) {
+        uint16_t v;
+        std::memcpy(&v, src + 2 * i * step, 2);
+        out[i] = fmt(v);
+      }
+    }
+  }
+};
+
+PixelFile::PixelFile(const std::string& path) : impl_(std::make_unique<Impl>()) {
+  ensureCodecsRegistered();
+  impl_->path = path;
+  OFCondition c = impl_->file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange,
+                                       DCM_MaxReadLength, ERM_autoDetect);
+  if (c.bad())
+    impl_->fail(std::string("cannot be read (") + c.text() +
+                "); the file is damaged or incomplete: copy it again or remove it");
+  impl_->ds = impl_->file.getDataset();
+  impl_->xfer = impl_->ds->getOriginalXfer();
+  DcmElement* element = nullptr;
+  if (impl_->ds->findAndGetElement(DCM_PixelData, element).bad() || !element)
+    impl_->fail("has no pixel data");
+  impl_->pixels = dynamic_cast<DcmPixelData*>(element);
+  if (!impl_->pixels) impl_->fail("the pixel data element is damaged");
+}
+
+PixelFile::~PixelFile() = default;
+
+void PixelFile::frameValues(const FrameHeader& h, std::vector<int32_t>& out) {
+  if (std::string why = unsupportedReason(h); !why.empty()) impl_->fail(why);
+  if (isJpeg2000(impl_->xfer))
+    impl_->decodeJ2k(h, out);
+  else
+    impl_->decodeOther(h, out);
+}
+
+std::string unsupportedReason(const FrameHeader& h) {
+  if (h.samplesPerPixel != 1 || (h.photometric != "MONOCHROME1" &&
+                                 h.photometric != "MONOCHROME2" && !h.photometric.empty()))
+    return "is a colour image (" + (h.photometric.empty() ? "RGB" : h.photometric) +
+           "); Voxray renders greyscale CT/MR volumes only";
+  if (h.bitsAllocated != 8 && h.bitsAllocated != 16)
+    return "has " + std::to_string(h.bitsAllocated) +
+           "-bit samples; only 8- and 16-bit greyscale images are supported";
+  if (h.rows <= 0 || h.columns <= 0 || h.rows > 16384 || h.columns > 16384)
+    return "has an implausible image size " + std::to_string(h.columns) + "x" +
+           std::to_string(h.rows);
+  return {};
+}
+
+}  // namespace voxray::dicom

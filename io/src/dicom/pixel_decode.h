@@ -1,0 +1,33 @@
+#pragma once
+// Pixel access for one file: native, DCMTK-decoded (JPEG, JPEG-LS, RLE, deflate) and
+// OpenJPEG-decoded (JPEG 2000) frames, as exact stored values (no windowing, no LUTs).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "frame_header.h"
+
+namespace voxray::dicom {
+
+class PixelFile {
+ public:
+  // Loads the whole file. Throws Error (Input) naming PATH when it is damaged.
+  explicit PixelFile(const std::string& path);
+  ~PixelFile();
+  PixelFile(const PixelFile&) = delete;
+  PixelFile& operator=(const PixelFile&) = delete;
+
+  // Stored values of frame H.frame (columns x rows), masked to BitsStored and sign-extended
+  // when PixelRepresentation is 1. Throws Error (Input) naming the file and the reason.
+  void frameValues(const FrameHeader& h, std::vector<int32_t>& out);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Empty when frames with this header can be decoded; otherwise why not, naming the cause.
+std::string unsupportedReason(const FrameHeader& h);
+
+}  // namespace voxray::dicom

@@ -1,0 +1,19 @@
+#pragma once
+// Resampling of a sheared or unevenly spaced stack onto an orthogonal, uniform grid.
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "stack_geometry.h"
+
+namespace voxray::dicom {
+
+// SLICES: the stored stack (x fastest, slice by slice) on geometry G.source with slice
+// origins ORIGINS. Returns voxels on G.target: trilinear along the normal between the
+// two nearest slices, bilinear inside each. Outside the data: OUTSIDE.
+std::vector<int16_t> resampleStack(const std::vector<int16_t>& slices,
+                                   const std::vector<glm::dvec3>& origins,
+                                   const StackGeometry& g, int16_t outside,
+                                   const std::atomic<bool>* cancel);
+
+}  // namespace voxray::dicom

@@ -1,0 +1,37 @@
+#pragma once
+// Decoding raw samples and fitting their rescaled values into the 16-bit voxels of a
+// Volume (physical = stored * slope + intercept).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "voxray/io/raw_import.h"
+
+namespace voxray::detail {
+
+size_t sampleBytes(SampleType t);
+
+// Range of hu = raw * slope + intercept over some samples; non-finite values are counted,
+// not ranged.
+struct ValueStats {
+  double min = 0, max = 0;
+  bool any = false;      // at least one finite value
+  bool integral = true;  // every finite value is a whole number
+  size_t nonFinite = 0;
+  void merge(const ValueStats& other);
+};
+ValueStats scanSamples(const uint8_t* raw, size_t count, const RawLayout& layout);
+
+struct Storage {
+  double slope = 1.0, intercept = 0.0;
+  double fill = 0.0;    // physical value given to NaN and infinite samples
+  std::string warning;  // empty unless the user should know how the values were stored
+};
+// Chooses the storage for values described by `stats`, read as `layout`.
+Storage chooseStorage(const ValueStats& stats, const RawLayout& layout);
+
+// Converts samples to stored voxels: round((hu - intercept) / slope).
+void storeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, const Storage& storage,
+                  int16_t* out);
+
+}  // namespace voxray::detail
