@@ -16,10 +16,15 @@ Run addDevicesCommand(CLI::App& app) {
     if (*json) {
       nlohmann::json out = nlohmann::json::array();
       for (const auto& d : devices)
-        out.push_back({{"index", d.index}, {"platform", d.platform}, {"name", d.name},
-                       {"type", d.isGpu ? "gpu" : "cpu"}, {"version", d.version},
-                       {"global_mem_bytes", d.globalMemBytes}, {"max_alloc_bytes", d.maxAllocBytes},
-                       {"image_support", d.imageSupport}, {"compute_units", d.computeUnits}});
+        out.push_back({{"index", d.index},
+                       {"platform", d.platform},
+                       {"name", d.name},
+                       {"type", d.isGpu ? "gpu" : "cpu"},
+                       {"version", d.version},
+                       {"global_mem_bytes", d.globalMemBytes},
+                       {"max_alloc_bytes", d.maxAllocBytes},
+                       {"image_support", d.imageSupport},
+                       {"compute_units", d.computeUnits}});
       std::cout << out.dump(2) << "\n";
       return 0;
     }

@@ -13,5 +13,6 @@ Run addDevicesCommand(CLI::App& app);
 Run addInfoCommand(CLI::App& app);
 Run addRenderCommand(CLI::App& app);
 Run addPresetsCommand(CLI::App& app);
+Run addBenchCommand(CLI::App& app);
 
 }  // namespace voxray::cli

@@ -4,6 +4,7 @@
 
 #include "progress.h"
 #include "voxray/io/error.h"
+#include "voxray/io/orientation.h"
 
 namespace voxray::cli {
 
@@ -41,6 +42,9 @@ void InputOptions::add(CLI::App& cmd) {
   cmd.add_option("--raw-offset", rawOffset, "raw: header bytes to skip in each file");
   cmd.add_option("--raw-rescale", rawRescale, "raw: SLOPE,INTERCEPT to HU");
   cmd.add_option("--raw-range", rawRange, "raw: FIRST-LAST slice numbers");
+  cmd.add_option("--raw-axes", rawAxes,
+                 "raw: patient direction of the x, y, z index axes, e.g. LPI when slice 1 is "
+                 "the top of the head (default LPS)");
   cmd.add_option("--series", series, "DICOM: series number or UID (default: the largest volume)");
 }
 
@@ -75,7 +79,8 @@ LoadOptions InputOptions::loadOptions() const {
       }
     }
     o.raw = l;
-  } else if (!rawSpacing.empty() || !rawRescale.empty() || !rawRange.empty() || rawOffset) {
+  } else if (!rawSpacing.empty() || !rawRescale.empty() || !rawRange.empty() || rawOffset ||
+             !rawAxes.empty()) {
     throw inputError("raw flags need --raw-dims X,Y[,Z] to read INPUT as raw data");
   }
   return o;
@@ -84,7 +89,10 @@ LoadOptions InputOptions::loadOptions() const {
 Volume InputOptions::load() const {
   LoadOptions o = loadOptions();
   o.progress = terminalProgress("loading");
-  return loadVolume(input, o);
+  Volume v = loadVolume(input, o);
+  // Raw data carry no orientation: the user states it.
+  if (!rawAxes.empty()) v.direction = directionFromAxesCode(rawAxes);
+  return v;
 }
 
 }  // namespace voxray::cli

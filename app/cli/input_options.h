@@ -10,7 +10,8 @@ namespace voxray::cli {
 
 struct InputOptions {
   std::string input;  // empty: the embedded head phantom
-  std::string rawDims, rawType = "i16", rawEndian = "little", rawSpacing, rawRescale, rawRange;
+  std::string rawDims, rawType = "i16", rawEndian = "little", rawSpacing, rawRescale, rawRange,
+                       rawAxes;
   size_t rawOffset = 0;
   std::string series;
 

@@ -16,9 +16,9 @@ constexpr double kFrameMargin = 1.05;  // leaves a thin border around the framed
 ViewGeometry makeViewGeometry(const Volume& v, const RenderParams& p) {
   ViewGeometry g;
   const CameraParams& c = p.camera;
-  glm::dmat3 voxelToWorld = v.direction * glm::dmat3(glm::dvec3(v.spacingMm.x, 0, 0),
-                                                     glm::dvec3(0, v.spacingMm.y, 0),
-                                                     glm::dvec3(0, 0, v.spacingMm.z));
+  glm::dmat3 voxelToWorld =
+      v.direction * glm::dmat3(glm::dvec3(v.spacingMm.x, 0, 0), glm::dvec3(0, v.spacingMm.y, 0),
+                               glm::dvec3(0, 0, v.spacingMm.z));
   g.worldToVoxel = glm::inverse(voxelToWorld);
   g.voxelCentre = (glm::dvec3(v.dims) - 1.0) * 0.5;
   g.gradToWorld = glm::transpose(g.worldToVoxel);

@@ -49,8 +49,9 @@ std::vector<Found> enumerate() {
     }
   }
   if (out.empty())
-    throw deviceError("OpenCL platforms were found but no devices: install a driver, e.g. "
-                      "'apt-get install pocl-opencl-icd' for the CPU");
+    throw deviceError(
+        "OpenCL platforms were found but no devices: install a driver, e.g. "
+        "'apt-get install pocl-opencl-icd' for the CPU");
   return out;
 }
 
@@ -122,9 +123,9 @@ cl::Kernel ContextImpl::kernel(const std::string& sourceName, const std::string&
         log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device);
       } catch (const cl::Error&) {
       }
-      throw deviceError(clErrorMessage("clBuildProgram(" + sourceName + " " + options + ")",
-                                       e.err()) +
-                        "\nbuild log for " + info.name + ":\n" + log);
+      throw deviceError(
+          clErrorMessage("clBuildProgram(" + sourceName + " " + options + ")", e.err()) +
+          "\nbuild log for " + info.name + ":\n" + log);
     }
     it = programs_.emplace(key, program).first;
   }

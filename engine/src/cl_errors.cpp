@@ -5,7 +5,8 @@ namespace voxray {
 const char* clErrorName(int code) {
   switch (code) {
 #define CASE(c, v) \
-  case v: return #c;
+  case v:          \
+    return #c;
     CASE(CL_SUCCESS, 0)
     CASE(CL_DEVICE_NOT_FOUND, -1)
     CASE(CL_DEVICE_NOT_AVAILABLE, -2)
@@ -53,7 +54,8 @@ const char* clErrorName(int code) {
     CASE(CL_INVALID_GLOBAL_WORK_SIZE, -63)
     CASE(CL_PLATFORM_NOT_FOUND_KHR, -1001)
 #undef CASE
-    default: return "unknown OpenCL error";
+    default:
+      return "unknown OpenCL error";
   }
 }
 
@@ -62,19 +64,22 @@ std::string clErrorMessage(const std::string& call, int code) {
   switch (code) {
     case -1001:
     case -1:
-      msg += ". No OpenCL driver was found: install one, e.g. 'apt-get install pocl-opencl-icd' "
-             "for the CPU, or your GPU vendor's OpenCL ICD";
+      msg +=
+          ". No OpenCL driver was found: install one, e.g. 'apt-get install pocl-opencl-icd' "
+          "for the CPU, or your GPU vendor's OpenCL ICD";
       break;
     case -4:
     case -5:
     case -6:
-      msg += ". The device ran out of memory: try a smaller volume, a smaller image, or "
-             "--device cpu";
+      msg +=
+          ". The device ran out of memory: try a smaller volume, a smaller image, or "
+          "--device cpu";
       break;
     case -40:
       msg += ". The volume exceeds the device's largest 3D image: try --device cpu";
       break;
-    default: break;
+    default:
+      break;
   }
   return msg;
 }

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "voxray/engine/render_params.h"
 #include "voxray/engine/transfer_function.h"
 #include "voxray/io/error.h"
 
@@ -24,9 +25,9 @@ Preset parsePreset(const std::string& text, const std::string& origin) {
     for (const auto& pt : j.value("points", nlohmann::json::array())) {
       if (!pt.is_array() || pt.size() != 5)
         throw inputError(origin + ": each point must be [hu, r, g, b, opacity]");
-      p.tf.points.push_back({pt[0].get<double>(),
-                             {pt[1].get<double>(), pt[2].get<double>(), pt[3].get<double>(),
-                              pt[4].get<double>()}});
+      p.tf.points.push_back(
+          {pt[0].get<double>(),
+           {pt[1].get<double>(), pt[2].get<double>(), pt[3].get<double>(), pt[4].get<double>()}});
     }
     std::stable_sort(p.tf.points.begin(), p.tf.points.end(),
                      [](const ControlPoint& a, const ControlPoint& b) { return a.hu < b.hu; });
@@ -52,6 +53,19 @@ const std::vector<Preset>& builtinPresets() {
     return out;
   }();
   return presets;
+}
+
+void applyPreset(RenderParams& p, const Preset& preset) {
+  p.preset = preset.name;
+  p.mode = parseMode(preset.mode);
+  if (preset.isoHi > preset.isoLo) {
+    p.isoLo = preset.isoLo;
+    p.isoHi = preset.isoHi;
+  }
+  if (preset.windowWidth > 0.0) {
+    p.windowWidth = preset.windowWidth;
+    p.windowLevel = preset.windowLevel;
+  }
 }
 
 const Preset& findPreset(const std::string& name) {

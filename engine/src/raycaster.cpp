@@ -69,9 +69,8 @@ void Raycaster::Impl::upload() {
       // SNORM so the hardware filters it; the kernel scales back by 32767.
       cl::ImageFormat format(CL_R, CL_SNORM_INT16);
       volumeImage = cl::Image3D(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, format,
-                                size_t(volume.dims.x), size_t(volume.dims.y),
-                                size_t(volume.dims.z), 0, 0,
-                                const_cast<int16_t*>(volume.voxels.data()));
+                                size_t(volume.dims.x), size_t(volume.dims.y), size_t(volume.dims.z),
+                                0, 0, const_cast<int16_t*>(volume.voxels.data()));
     } else {
       volumeBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
                                 const_cast<int16_t*>(volume.voxels.data()));
@@ -85,7 +84,8 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
   std::ostringstream o;
   bool shading = p.shading && p.mode != Mode::Mip;
   o << "-cl-fast-relaxed-math -D MODE=" << int(p.mode) << " -D SHADING=" << int(shading)
-    << " -D INTERP=" << int(p.interp) << " -D STORAGE_IMAGE=" << int(storage == VolumeStorage::Image3d)
+    << " -D INTERP=" << int(p.interp)
+    << " -D STORAGE_IMAGE=" << int(storage == VolumeStorage::Image3d)
     << " -D ORTHO=" << int(p.camera.projection == Projection::Orthographic);
   if (shading) o << " -D GRADIENT=" << int(p.gradient);
   if (p.mode == Mode::Iso) o << " -D REFINE_STEPS=" << p.refine;
@@ -161,8 +161,10 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     cl::CommandQueue& q = m.cl.queue;
     q.enqueueWriteBuffer(m.paramsBuffer, CL_FALSE, 0, sizeof(k), &k);
     q.enqueueWriteBuffer(m.lutBuffer, CL_FALSE, 0, lutBytes, s.lut.rgba.data());
-    if (m.storage == VolumeStorage::Image3d) kernel.setArg(0, m.volumeImage);
-    else kernel.setArg(0, m.volumeBuffer);
+    if (m.storage == VolumeStorage::Image3d)
+      kernel.setArg(0, m.volumeImage);
+    else
+      kernel.setArg(0, m.volumeBuffer);
     kernel.setArg(1, m.paramsBuffer);
     kernel.setArg(2, m.lutBuffer);
     kernel.setArg(3, m.outBuffer);

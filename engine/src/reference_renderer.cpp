@@ -71,8 +71,10 @@ struct Marcher {
         double a = std::min(t0 + (hit - 1) * step, t1), b = tHit;
         for (int k = 0; k < p.refine; ++k) {
           double m = 0.5 * (a + b);
-          if (inRange(sample(ov + m * dv))) b = m;
-          else a = m;
+          if (inRange(sample(ov + m * dv)))
+            b = m;
+          else
+            a = m;
         }
         tHit = p.refine > 0 ? 0.5 * (a + b) : b;
       }
@@ -100,7 +102,8 @@ struct Marcher {
         if (c.a <= 0.0) continue;
         double a = p.opacityCorrection ? 1.0 - std::pow(1.0 - c.a, seg / s.referenceStepMm) : c.a;
         glm::dvec3 rgb(c);
-        if (shading) rgb = shade(rgb, worldGradient(pv), ow + t * dw, view, s.view.lightWorld, p.light);
+        if (shading)
+          rgb = shade(rgb, worldGradient(pv), ow + t * dw, view, s.view.lightWorld, p.light);
         acc += (1.0 - alpha) * a * rgb;
         alpha += (1.0 - alpha) * a;
         if (alpha >= p.earlyTermination) break;
@@ -108,7 +111,8 @@ struct Marcher {
       return acc + (1.0 - alpha) * p.background;
     }
     double vmax = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= n; ++i) vmax = std::max(vmax, sample(ov + std::min(t0 + i * step, t1) * dv));
+    for (int i = 0; i <= n; ++i)
+      vmax = std::max(vmax, sample(ov + std::min(t0 + i * step, t1) * dv));
     return glm::dvec3(std::clamp((vmax - s.windowLoStored) * s.windowInvWidth, 0.0, 1.0));
   }
 };

@@ -31,8 +31,8 @@ glm::dvec3 volumeGradient(const Volume& v, Interp interp, Gradient op, const glm
     return sampleVolume(v, interp, p + glm::dvec3(dx, dy, dz));
   };
   if (op == Gradient::Central)
-    return 0.5 * glm::dvec3(s(1, 0, 0) - s(-1, 0, 0), s(0, 1, 0) - s(0, -1, 0),
-                            s(0, 0, 1) - s(0, 0, -1));
+    return 0.5 *
+           glm::dvec3(s(1, 0, 0) - s(-1, 0, 0), s(0, 1, 0) - s(0, -1, 0), s(0, 0, 1) - s(0, 0, -1));
   // Cross-axis weights by the number of non-zero cross offsets (0, 1, 2).
   const double sobel[3] = {6.0, 3.0, 1.0};
   const double zh[3] = {1.0, 1.0 / std::sqrt(2.0), 1.0 / std::sqrt(3.0)};

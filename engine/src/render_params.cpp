@@ -12,17 +12,23 @@ using namespace text;
 
 const char* toString(Mode m) {
   switch (m) {
-    case Mode::Iso: return "iso";
-    case Mode::Dvr: return "dvr";
-    case Mode::Mip: return "mip";
+    case Mode::Iso:
+      return "iso";
+    case Mode::Dvr:
+      return "dvr";
+    case Mode::Mip:
+      return "mip";
   }
   return "?";
 }
 const char* toString(Gradient g) {
   switch (g) {
-    case Gradient::Central: return "central";
-    case Gradient::Sobel: return "sobel";
-    case Gradient::ZuckerHummel: return "zucker-hummel";
+    case Gradient::Central:
+      return "central";
+    case Gradient::Sobel:
+      return "sobel";
+    case Gradient::ZuckerHummel:
+      return "zucker-hummel";
   }
   return "?";
 }
@@ -50,7 +56,8 @@ namespace {
 
 void parseSize(RenderParams& p, const std::string& s) {
   auto x = s.find('x');
-  if (x == std::string::npos) throw inputError("--size: expected WxH, e.g. 1024x768, got '" + s + "'");
+  if (x == std::string::npos)
+    throw inputError("--size: expected WxH, e.g. 1024x768, got '" + s + "'");
   int w = toInt("size", s.substr(0, x)), h = toInt("size", s.substr(x + 1));
   if (w < 1 || h < 1 || w > 16384 || h > 16384)
     throw inputError("--size: " + s + " is outside 1x1 ... 16384x16384");
@@ -63,8 +70,10 @@ void parseClip(RenderParams& p, const std::string& s) {
   for (int a = 0; a < 3; ++a) {
     double lo = v[2 * a], hi = v[2 * a + 1];
     if (lo < 0.0 || hi > 1.0 || lo > hi)
-      throw inputError("--clip: each pair must satisfy 0 <= lo <= hi <= 1 (fractions of the "
-                       "volume), got '" + s + "'");
+      throw inputError(
+          "--clip: each pair must satisfy 0 <= lo <= hi <= 1 (fractions of the "
+          "volume), got '" +
+          s + "'");
     p.clip.lo[a] = lo;
     p.clip.hi[a] = hi;
   }
@@ -86,11 +95,11 @@ std::vector<ParamSpec> makeSpecs() {
   using P = RenderParams;
   using S = const std::string&;
   return {
-      {"size", "WxH", "image size in pixels",
-       [](P& p, S s) { parseSize(p, s); },
+      {"size", "WxH", "image size in pixels", [](P& p, S s) { parseSize(p, s); },
        [](const P& p) { return std::to_string(p.width) + "x" + std::to_string(p.height); }},
       {"mode", "iso|dvr|mip", "first-hit surface, direct volume rendering, or maximum intensity",
-       [](P& p, S s) { p.mode = parseMode(s); }, [](const P& p) { return std::string(toString(p.mode)); }},
+       [](P& p, S s) { p.mode = parseMode(s); },
+       [](const P& p) { return std::string(toString(p.mode)); }},
       {"preset", "NAME", "transfer-function preset from resources/presets (voxray-cli presets)",
        [](P& p, S s) { p.preset = s; }, [](const P& p) { return p.preset; }},
       {"iso", "LO[,HI]", "HU range of the first-hit surface",
@@ -131,7 +140,8 @@ std::vector<ParamSpec> makeSpecs() {
       {"window", "W,L", "mip grey window width and level in HU",
        [](P& p, S s) {
          auto v = toDoubles("window", s, 2, 2);
-         if (v[0] < 0.0) throw inputError("--window: width must not be negative (0 = the volume's range)");
+         if (v[0] < 0.0)
+           throw inputError("--window: width must not be negative (0 = the volume's range)");
          p.windowWidth = v[0];
          p.windowLevel = v[1];
        },
@@ -159,9 +169,12 @@ std::vector<ParamSpec> makeSpecs() {
        [](const P& p) { return fmt(p.camera.panMm.x) + "," + fmt(p.camera.panMm.y); }},
       {"projection", "perspective|orthographic", "camera projection",
        [](P& p, S s) {
-         if (s == "perspective") p.camera.projection = Projection::Perspective;
-         else if (s == "orthographic" || s == "ortho") p.camera.projection = Projection::Orthographic;
-         else throw inputError("--projection: '" + s + "' is not perspective or orthographic");
+         if (s == "perspective")
+           p.camera.projection = Projection::Perspective;
+         else if (s == "orthographic" || s == "ortho")
+           p.camera.projection = Projection::Orthographic;
+         else
+           throw inputError("--projection: '" + s + "' is not perspective or orthographic");
        },
        [](const P& p) {
          return std::string(p.camera.projection == Projection::Perspective ? "perspective"
@@ -191,9 +204,11 @@ std::vector<ParamSpec> makeSpecs() {
       {"light-follows-camera", "on|off", "light position is relative to the eye",
        [](P& p, S s) { p.light.followCamera = toBool("light-follows-camera", s); },
        [](const P& p) { return std::string(p.light.followCamera ? "on" : "off"); }},
-      {"ambient", "K", "ambient light 0 ... 1", [](P& p, S s) { p.light.ambient = unit("ambient", s); },
+      {"ambient", "K", "ambient light 0 ... 1",
+       [](P& p, S s) { p.light.ambient = unit("ambient", s); },
        [](const P& p) { return fmt(p.light.ambient); }},
-      {"diffuse", "K", "diffuse light 0 ... 1", [](P& p, S s) { p.light.diffuse = unit("diffuse", s); },
+      {"diffuse", "K", "diffuse light 0 ... 1",
+       [](P& p, S s) { p.light.diffuse = unit("diffuse", s); },
        [](const P& p) { return fmt(p.light.diffuse); }},
       {"specular", "K", "specular light 0 ... 1",
        [](P& p, S s) { p.light.specular = unit("specular", s); },
@@ -230,9 +245,11 @@ void fromText(RenderParams& p, const std::string& text) {
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     auto eq = line.find('=');
-    if (eq == std::string::npos) throw inputError("render parameters: line '" + line + "' has no '='");
+    if (eq == std::string::npos)
+      throw inputError("render parameters: line '" + line + "' has no '='");
     std::string key = line.substr(0, eq), value = line.substr(eq + 1);
-    auto it = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.key == key; });
+    auto it =
+        std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.key == key; });
     if (it == specs.end()) throw inputError("render parameters: unknown key '" + key + "'");
     it->parse(p, value);
   }

@@ -39,9 +39,9 @@ std::vector<double> toDoubles(const std::string& key, const std::string& s, size
   std::string item;
   while (std::getline(ss, item, ',')) out.push_back(toDouble(key, item));
   if (out.size() < minCount || out.size() > maxCount) {
-    std::string want = minCount == maxCount ? std::to_string(minCount)
-                                            : std::to_string(minCount) + " to " +
-                                                  std::to_string(maxCount);
+    std::string want = minCount == maxCount
+                           ? std::to_string(minCount)
+                           : std::to_string(minCount) + " to " + std::to_string(maxCount);
     throw inputError("--" + key + ": expected " + want + " comma-separated numbers, got '" + s +
                      "'");
   }

@@ -25,8 +25,9 @@ std::string lower(std::string s) {
 // picks the format from it: "shot.png" -> ".shot.tmp4711-3.png".
 fs::path temporaryBeside(const fs::path& target) {
   static std::atomic<unsigned> counter{0};
-  const std::string name = "." + target.stem().string() + ".tmp" + std::to_string(::getpid()) +
-                           "-" + std::to_string(counter++) + target.extension().string();
+  std::string name = ".";  // appended, not "." + ...: GCC 12 warns falsely on that
+  name += target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
+          std::to_string(counter++) + target.extension().string();
   return target.parent_path() / name;
 }
 

@@ -28,12 +28,17 @@ int main(int argc, char** argv) {
     out["files_skipped"] = listing.filesSkipped;
     out["notes"] = listing.notes;
     for (auto& s : listing.series)
-      out["series"].push_back({{"selector", s.selector}, {"number", s.number},
-                               {"modality", s.modality}, {"description", s.description},
+      out["series"].push_back({{"selector", s.selector},
+                               {"number", s.number},
+                               {"modality", s.modality},
+                               {"description", s.description},
                                {"dims", {s.dims.x, s.dims.y, s.dims.z}},
-                               {"spacing_mm", vec(s.spacingMm)}, {"slices", s.sliceCount},
-                               {"is_volume", s.isVolume}, {"chosen", s.chosenByDefault},
-                               {"not_volume", s.notVolumeReason}, {"warnings", s.warnings},
+                               {"spacing_mm", vec(s.spacingMm)},
+                               {"slices", s.sliceCount},
+                               {"is_volume", s.isVolume},
+                               {"chosen", s.chosenByDefault},
+                               {"not_volume", s.notVolumeReason},
+                               {"warnings", s.warnings},
                                {"transfer_syntax", s.transferSyntax}});
   } catch (const voxray::Error& e) {
     out["listing_error"] = e.what();
@@ -47,7 +52,9 @@ int main(int argc, char** argv) {
                      {"direction", {vec(v.direction[0]), vec(v.direction[1]), vec(v.direction[2])}},
                      {"physical_min", v.toPhysical(*range.first)},
                      {"physical_max", v.toPhysical(*range.second)},
-                     {"slope", v.slope}, {"intercept", v.intercept}, {"unit", v.unit},
+                     {"slope", v.slope},
+                     {"intercept", v.intercept},
+                     {"unit", v.unit},
                      {"warnings", v.warnings}};
   } catch (const voxray::Error& e) {
     out["load_error"] = e.what();

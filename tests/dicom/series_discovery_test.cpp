@@ -1,1 +1,119 @@
-#include <gtest/gtest.h>
+// Series discovery, listing and the default choice (issue 3: ct-philips-phantom and
+// folders without any volume).
+#include "test_data.h"
+
+namespace voxray {
+namespace {
+
+using test::anyContains;
+using test::dicomPath;
+
+const SeriesInfo* findNumber(const DicomListing& l, int number) {
+  for (auto& s : l.series)
+    if (s.number == number) return &s;
+  return nullptr;
+}
+
+TEST(DicomSeriesDiscovery, PhilipsPhantomChoosesThe28SliceVolume) {
+  DicomListing l = listDicomSeries(dicomPath("ct-philips-phantom"));
+  ASSERT_FALSE(l.series.empty());
+  const SeriesInfo& chosen = l.series.front();
+  EXPECT_TRUE(chosen.chosenByDefault);
+  EXPECT_EQ(chosen.number, 201);
+  EXPECT_EQ(chosen.sliceCount, 28);
+  EXPECT_EQ(chosen.dims, glm::ivec3(512, 512, 28));
+  EXPECT_NEAR(chosen.spacingMm.x, 0.451171875, 1e-9);
+  EXPECT_NEAR(chosen.spacingMm.z, 5.0, 1e-6);
+  EXPECT_EQ(chosen.modality, "CT");
+  int chosenCount = 0;
+  for (auto& s : l.series) chosenCount += s.chosenByDefault;
+  EXPECT_EQ(chosenCount, 1);
+  // Display fields are available to the UI ...
+  EXPECT_EQ(chosen.patientName, "HEAD");
+  EXPECT_EQ(chosen.patientId, "PLASTIC");
+  // ... but never in notes.
+  EXPECT_FALSE(anyContains(l.notes, "PLASTIC"));
+}
+
+TEST(DicomSeriesDiscovery, PhilipsScoutAndSummaryPagesAreListedNotChosen) {
+  DicomListing l = listDicomSeries(dicomPath("ct-philips-phantom"));
+  const SeriesInfo* scout = findNumber(l, 100);
+  ASSERT_NE(scout, nullptr);
+  EXPECT_FALSE(scout->isVolume);
+  EXPECT_FALSE(scout->chosenByDefault);
+  EXPECT_NE(scout->notVolumeReason.find("localizer"), std::string::npos);
+  const SeriesInfo* pages = findNumber(l, 401);
+  ASSERT_NE(pages, nullptr);
+  EXPECT_FALSE(pages->isVolume);
+  EXPECT_NE(pages->notVolumeReason.find("secondary capture"), std::string::npos);
+  // LICENSE and four DIRFILEs (DICOMDIRs) are skipped and counted, not fatal.
+  EXPECT_EQ(l.filesSkipped, 5);
+  EXPECT_TRUE(anyContains(l.notes, "not a DICOM file"));
+}
+
+TEST(DicomSeriesDiscovery, DicomDirWithStaleEntriesFallsBackToItsFolder) {
+  Volume v = importDicom(dicomPath("ct-philips-phantom/DIRFILE"));
+  EXPECT_EQ(v.dims, glm::ivec3(512, 512, 28));
+  EXPECT_TRUE(anyContains(v.warnings, "DICOMDIR lists 5 file(s) that do not exist"));
+}
+
+TEST(DicomSeriesDiscovery, DefaultLoadIsTheVolumeInHounsfield) {
+  Volume v = importDicom(dicomPath("ct-philips-phantom"));
+  EXPECT_EQ(v.dims, glm::ivec3(512, 512, 28));
+  EXPECT_NEAR(v.spacingMm.z, 5.0, 1e-6);
+  EXPECT_EQ(v.unit, "HU");
+  EXPECT_DOUBLE_EQ(v.intercept, -1024.0);
+  EXPECT_DOUBLE_EQ(test::physicalMin(v), -1024.0);
+  EXPECT_NEAR(v.originMm.z, 696.21, 1e-6);
+  EXPECT_FALSE(anyContains(v.warnings, "PLASTIC"));
+}
+
+TEST(DicomSeriesDiscovery, SeriesSelectorLoadsAScoutOnRequest) {
+  LoadOptions o;
+  o.series = "100";
+  Volume v = importDicom(dicomPath("ct-philips-phantom"), o);
+  EXPECT_EQ(v.dims, glm::ivec3(512, 256, 1));
+  EXPECT_TRUE(anyContains(v.warnings, "not a volume"));
+}
+
+TEST(DicomSeriesDiscovery, SelectorByUidMatchesNumber) {
+  DicomListing l = listDicomSeries(dicomPath("ct-philips-phantom"));
+  LoadOptions o;
+  o.series = l.series.front().uid;
+  EXPECT_EQ(importDicom(dicomPath("ct-philips-phantom"), o).dims.z, 28);
+}
+
+TEST(DicomSeriesDiscovery, UnknownSelectorListsTheCandidates) {
+  std::string m = test::importError(dicomPath("ct-philips-phantom"), "999");
+  EXPECT_NE(m.find("no series \"999\""), std::string::npos) << m;
+  EXPECT_NE(m.find("201: 28 image(s) CT"), std::string::npos) << m;
+  EXPECT_EQ(m.find("PLASTIC"), std::string::npos);
+}
+
+TEST(DicomSeriesDiscovery, FolderOfSingleMosaicsIsRefusedWithReasons) {
+  std::string m = test::importError(dicomPath("transfer-syntaxes"));
+  EXPECT_NE(m.find("no series here is a 3D volume"), std::string::npos) << m;
+  EXPECT_NE(m.find("mosaic"), std::string::npos) << m;
+  EXPECT_NE(m.find("--series"), std::string::npos) << m;
+}
+
+TEST(DicomSeriesDiscovery, PrivacyPatientFieldsNeverInMessages) {
+  Volume v = importDicom(dicomPath("ct-visible-human-pelvis"));
+  EXPECT_FALSE(anyContains(v.warnings, "Eve"));
+  std::string m = test::importError(dicomPath("ct-visible-human-pelvis"), "7");
+  EXPECT_EQ(m.find("Eve"), std::string::npos) << m;
+  EXPECT_EQ(m.find("000-000-001"), std::string::npos) << m;
+}
+
+TEST(DicomSeriesDiscovery, MissingPathSaysSo) {
+  std::string m = test::importError(dicomPath("does-not-exist"));
+  EXPECT_NE(m.find("no such file or folder"), std::string::npos) << m;
+}
+
+TEST(DicomSeriesDiscovery, NonDicomFileIsRefusedNotCrashed) {
+  std::string m = test::importError(dicomPath("ct-ge-tilt/LICENSE"));
+  EXPECT_NE(m.find("no DICOM image found"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace voxray

@@ -71,7 +71,8 @@ TEST(Camera, IntersectBoxHandlesAxisParallelAndGrazingRays) {
   // Grazing along a face (o.x == lo.x exactly): inside the closed slab.
   ASSERT_TRUE(intersectBox({-0.5, 4, -10}, {0, 0, 1}, lo, hi, t0, t1, axis));
   // Through a corner exactly.
-  ASSERT_TRUE(intersectBox({-1.5, -1.5, -1.5}, glm::normalize(glm::dvec3(1)), lo, hi, t0, t1, axis));
+  ASSERT_TRUE(
+      intersectBox({-1.5, -1.5, -1.5}, glm::normalize(glm::dvec3(1)), lo, hi, t0, t1, axis));
   EXPECT_NEAR(t0, std::sqrt(3.0), 1e-12);
   // Eye inside: enters at 0 with no entry face.
   ASSERT_TRUE(intersectBox({5, 5, 5}, {1, 0, 0}, lo, hi, t0, t1, axis));

@@ -101,17 +101,18 @@ TEST_P(KernelVsReference, AgreesPixelByPixel) {
   EXPECT_GT(lit, size_t(p.width * p.height) / 8);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllVariants, KernelVsReference,
-    ::testing::Combine(::testing::Values(Mode::Iso, Mode::Dvr, Mode::Mip),
-                       ::testing::Values(Gradient::Central, Gradient::Sobel, Gradient::ZuckerHummel),
-                       ::testing::Values(Interp::Nearest, Interp::Linear)),
-    [](const auto& info) {
-      return std::string(toString(std::get<0>(info.param))) + "_" +
-             (std::get<1>(info.param) == Gradient::ZuckerHummel ? "zh"
-                                                               : toString(std::get<1>(info.param))) +
-             "_" + toString(std::get<2>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(AllVariants, KernelVsReference,
+                         ::testing::Combine(::testing::Values(Mode::Iso, Mode::Dvr, Mode::Mip),
+                                            ::testing::Values(Gradient::Central, Gradient::Sobel,
+                                                              Gradient::ZuckerHummel),
+                                            ::testing::Values(Interp::Nearest, Interp::Linear)),
+                         [](const auto& info) {
+                           return std::string(toString(std::get<0>(info.param))) + "_" +
+                                  (std::get<1>(info.param) == Gradient::ZuckerHummel
+                                       ? "zh"
+                                       : toString(std::get<1>(info.param))) +
+                                  "_" + toString(std::get<2>(info.param));
+                         });
 
 TEST(KernelVsReferenceExtras, OrthographicClipBoxAndFixedLight) {
   RenderParams p = baseParams(Mode::Iso);

@@ -7,9 +7,10 @@ namespace voxray {
 
 TEST(RenderParams, TextRoundTripKeepsEveryDeclaredValue) {
   RenderParams p;
-  fromText(p, "size=640x480\nmode=dvr\niso=100,900\ngradient=zucker-hummel\ninterp=nearest\n"
-              "step=0.25\nrefine=6\nazimuth=30\nelevation=-15\nzoom=2\nclip=0.1,0.9,0,1,0.25,0.75\n"
-              "light=100,-200,300\n");
+  fromText(p,
+           "size=640x480\nmode=dvr\niso=100,900\ngradient=zucker-hummel\ninterp=nearest\n"
+           "step=0.25\nrefine=6\nazimuth=30\nelevation=-15\nzoom=2\nclip=0.1,0.9,0,1,0.25,0.75\n"
+           "light=100,-200,300\n");
   EXPECT_EQ(p.width, 640);
   EXPECT_EQ(p.mode, Mode::Dvr);
   EXPECT_EQ(p.gradient, Gradient::ZuckerHummel);

@@ -48,7 +48,8 @@ TEST(Shading, CutFaceIsShadedAsAFlatCapFacingTheViewer) {
   Raycaster rc(context(), v, VolumeStorage::Buffer);
   Image img = rc.render(p);
   // The first sample is on the entry face: the cap normal faces the viewer exactly and
-  // the light is at the eye: colour * (ambient + diffuse) + specular = 0.4 * 0.9 + 0.25 = 0.61 -> 156 (centre pixel).
+  // the light is at the eye: colour * (ambient + diffuse) + specular = 0.4 * 0.9 + 0.25 = 0.61 ->
+  // 156 (centre pixel).
   EXPECT_NEAR(img.pixel(8, 8)[0], 156, 1);
   Image ref = renderReference(v, p);
   EXPECT_NEAR(ref.pixel(8, 8)[0], 156, 1);

@@ -15,7 +15,9 @@ TEST(TransferFunction, LinearBetweenPointsAndConstantBeyond) {
 }
 
 TEST(TransferFunction, CoincidentPointsMakeAStepWithoutNaN) {
-  TransferFunction tf{{{0.0, {0, 0, 0, 0}}, {100.0, {0, 0, 0, 0.2}}, {100.0, {1, 1, 1, 0.9}},
+  TransferFunction tf{{{0.0, {0, 0, 0, 0}},
+                       {100.0, {0, 0, 0, 0.2}},
+                       {100.0, {1, 1, 1, 0.9}},
                        {200.0, {1, 1, 1, 1}}}};
   EXPECT_DOUBLE_EQ(tf.evaluate(99.999).a, 0.2 * 0.99999);
   EXPECT_DOUBLE_EQ(tf.evaluate(100.0).a, 0.9);

@@ -69,7 +69,7 @@ TEST(RawValues, HeaderSkippedInEveryFile) {
     std::vector<uint8_t> bytes(8, 0xff);  // header
     const auto data = bytesOf(std::vector<uint16_t>{uint16_t(n), 500}, ByteOrder::Big);
     bytes.insert(bytes.end(), data.begin(), data.end());
-    test::writeBytes(dir.file("s" + std::to_string(n)), bytes);
+    test::writeBytes(dir.file(std::string("s").append(std::to_string(n))), bytes);
   }
   RawLayout l;
   l.dims = {2, 1, 0};

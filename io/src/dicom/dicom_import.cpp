@@ -3,8 +3,10 @@
 // scale and, for tilted or uneven stacks, resample onto an orthogonal uniform grid.
 #include "voxray/io/dicom_import.h"
 
+#include <filesystem>
 #include <map>
 #include <mutex>
+#include <set>
 
 #include "file_scan.h"
 #include "parallel_for.h"
@@ -200,6 +202,23 @@ std::vector<SliceScale> decodeSlices(const Candidate& c, const LoadOptions& opti
   return scales;
 }
 
+// A damaged header can claim a huge image; no real file compresses 10000:1, so refuse
+// before allocating what the files cannot hold.
+void checkPlausibleSize(const Candidate& c, size_t bytes) {
+  std::set<std::string> paths;
+  for (auto& f : c.frames) paths.insert(f.path);
+  uintmax_t fileBytes = 0;
+  for (auto& p : paths) {
+    std::error_code ec;
+    uintmax_t size = std::filesystem::file_size(p, ec);
+    if (!ec) fileBytes += size;
+  }
+  if (bytes > (uintmax_t(64) << 20) && bytes / 10000 > fileBytes)
+    throw inputError(c.first().path + ": the header claims " + std::to_string(bytes >> 20) +
+                     " MB of pixels but the files hold only " + std::to_string(fileBytes >> 10) +
+                     " KB; the data is damaged");
+}
+
 std::string sampleTypeName(const FrameHeader& f) {
   return std::string(f.pixelRepresentation ? "i" : "u") + std::to_string(f.bitsStored);
 }
@@ -234,6 +253,8 @@ Volume importDicom(const std::string& input, const LoadOptions& options) {
   if (voxelCount > kMaxVoxels || targetCount > kMaxVoxels)
     throw inputError(input + ": series " + c.selector + " is too large to load (" +
                      std::to_string(std::max(voxelCount, targetCount)) + " voxels)");
+
+  checkPlausibleSize(c, std::max(voxelCount, targetCount) * sizeof(int16_t));
 
   Volume v;
   v.voxels.resize(voxelCount);

@@ -45,8 +45,7 @@ bool readDicomDir(const fs::path& path, std::vector<std::string>& files, int& mi
   file.getMetaInfo()->findAndGetOFString(DCM_MediaStorageSOPClassUID, sopClass);
   if (sopClass != UID_MediaStorageDirectoryStorage) return false;
   DcmSequenceOfItems* records = nullptr;
-  if (file.getDataset()->findAndGetSequence(DCM_DirectoryRecordSequence, records).bad() ||
-      !records)
+  if (file.getDataset()->findAndGetSequence(DCM_DirectoryRecordSequence, records).bad() || !records)
     return true;
   for (unsigned long i = 0; i < records->card(); ++i) {
     OFString id;
@@ -69,13 +68,13 @@ InputFiles collectInputFiles(const std::string& input) {
   InputFiles result;
   std::error_code ec;
   fs::path path(input);
-  if (!fs::exists(path, ec))
-    throw inputError(input + ": no such file or folder. Check the path.");
+  if (!fs::exists(path, ec)) throw inputError(input + ": no such file or folder. Check the path.");
   if (fs::is_directory(path, ec)) {
     result.files = filesUnder(path);
     if (result.files.empty())
-      throw inputError(input + ": the folder holds no files. Choose the folder of a DICOM "
-                               "study or one of its files.");
+      throw inputError(input +
+                       ": the folder holds no files. Choose the folder of a DICOM "
+                       "study or one of its files.");
     return result;
   }
   std::vector<std::string> listed;

@@ -55,8 +55,7 @@ bool doubles(DcmItem* item, const DcmTagKey& tag, double* out, int n) {
 std::optional<int32_t> paddingValue(DcmItem* item, const DcmTagKey& tag, int pixelRep) {
   Uint16 u = 0;
   Sint16 s = 0;
-  if (item->findAndGetUint16(tag, u).good())
-    return pixelRep ? int32_t(int16_t(u)) : int32_t(u);
+  if (item->findAndGetUint16(tag, u).good()) return pixelRep ? int32_t(int16_t(u)) : int32_t(u);
   if (item->findAndGetSint16(tag, s).good()) return int32_t(s);
   return std::nullopt;
 }

@@ -12,8 +12,8 @@ namespace voxray::dicom {
 
 struct FrameHeader {
   std::string path;
-  int frame = 0;        // index inside the file
-  int fileFrames = 1;   // NumberOfFrames of the file
+  int frame = 0;       // index inside the file
+  int fileFrames = 1;  // NumberOfFrames of the file
   std::string seriesUid, sopClassUid, modality, description, imageType, photometric;
   std::string transferSyntaxUid;
   int seriesNumber = 0, instanceNumber = 0, acquisitionNumber = 0;
@@ -23,8 +23,8 @@ struct FrameHeader {
   int bitsAllocated = 16, bitsStored = 16, pixelRepresentation = 0;
   bool hasPosition = false, hasOrientation = false, hasPixelSpacing = false;
   glm::dvec3 position{0.0};
-  glm::dvec3 rowDir{1, 0, 0};  // direction of increasing column index (i)
-  glm::dvec3 colDir{0, 1, 0};  // direction of increasing row index (j)
+  glm::dvec3 rowDir{1, 0, 0};    // direction of increasing column index (i)
+  glm::dvec3 colDir{0, 1, 0};    // direction of increasing row index (j)
   glm::dvec2 pixelSpacing{1.0};  // x: between columns (i), y: between rows (j)
   double sliceThickness = 0.0, spacingBetweenSlices = 0.0;
   double gantryTilt = 0.0;

@@ -81,9 +81,7 @@ struct PixelFile::Impl {
   int lastFrame = -2;
   Uint32 nextStart = 0;
 
-  [[noreturn]] void fail(const std::string& why) const {
-    throw inputError(path + ": " + why);
-  }
+  [[noreturn]] void fail(const std::string& why) const { throw inputError(path + ": " + why); }
 
   void decodeJ2k(const FrameHeader& h, std::vector<int32_t>& out) {
     DcmPixelSequence* seq = nullptr;
@@ -106,8 +104,8 @@ struct PixelFile::Impl {
     }
     if (img.width != h.columns || img.height != h.rows)
       fail("the JPEG 2000 image is " + std::to_string(img.width) + "x" +
-           std::to_string(img.height) + " but the header says " + std::to_string(h.columns) +
-           "x" + std::to_string(h.rows));
+           std::to_string(img.height) + " but the header says " + std::to_string(h.columns) + "x" +
+           std::to_string(h.rows));
     SampleFormat fmt{std::clamp(h.bitsStored, 1, 32), h.pixelRepresentation == 1};
     out.resize(img.samples.size());
     for (size_t i = 0; i < out.size(); ++i) out[i] = fmt(uint32_t(img.samples[i]));
@@ -158,6 +156,15 @@ struct PixelFile::Impl {
     const size_t step = size_t(h.samplesPerPixel);
     if (bytesPerSample == 1) {
       for (size_t i = 0; i < n; ++i) out[i] = fmt(src[i * step]);
+    } else if (step == 1 && fmt.bits == 16) {
+      // The common case, without masking: a straight (vectorised) widening copy.
+      if (fmt.isSigned) {
+        const auto* s16 = reinterpret_cast<const int16_t*>(src);
+        for (size_t i = 0; i < n; ++i) out[i] = s16[i];
+      } else {
+        const auto* u16 = reinterpret_cast<const uint16_t*>(src);
+        for (size_t i = 0; i < n; ++i) out[i] = u16[i];
+      }
     } else {
       for (size_t i = 0; i < n; ++i) {
         uint16_t v;
@@ -171,8 +178,8 @@ struct PixelFile::Impl {
 PixelFile::PixelFile(const std::string& path) : impl_(std::make_unique<Impl>()) {
   ensureCodecsRegistered();
   impl_->path = path;
-  OFCondition c = impl_->file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange,
-                                       DCM_MaxReadLength, ERM_autoDetect);
+  OFCondition c = impl_->file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, DCM_MaxReadLength,
+                                       ERM_autoDetect);
   if (c.bad())
     impl_->fail(std::string("cannot be read (") + c.text() +
                 "); the file is damaged or incomplete: copy it again or remove it");
@@ -196,8 +203,8 @@ void PixelFile::frameValues(const FrameHeader& h, std::vector<int32_t>& out) {
 }
 
 std::string unsupportedReason(const FrameHeader& h) {
-  if (h.samplesPerPixel != 1 || (h.photometric != "MONOCHROME1" &&
-                                 h.photometric != "MONOCHROME2" && !h.photometric.empty()))
+  if (h.samplesPerPixel != 1 ||
+      (h.photometric != "MONOCHROME1" && h.photometric != "MONOCHROME2" && !h.photometric.empty()))
     return "is a colour image (" + (h.photometric.empty() ? "RGB" : h.photometric) +
            "); Voxray renders greyscale CT/MR volumes only";
   if (h.bitsAllocated != 8 && h.bitsAllocated != 16)

@@ -8,9 +8,8 @@
 namespace voxray::dicom {
 
 std::vector<int16_t> resampleStack(const std::vector<int16_t>& slices,
-                                   const std::vector<glm::dvec3>& origins,
-                                   const StackGeometry& g, int16_t outside,
-                                   const std::atomic<bool>* cancel) {
+                                   const std::vector<glm::dvec3>& origins, const StackGeometry& g,
+                                   int16_t outside, const std::atomic<bool>* cancel) {
   const Grid& s = g.source;
   const Grid& t = g.target;
   const glm::dvec3 row = s.axes[0], col = s.axes[1], n = s.axes[2];
@@ -24,7 +23,8 @@ std::vector<int16_t> resampleStack(const std::vector<int16_t>& slices,
     if (u < -0.5 || v < -0.5 || u > nx - 0.5 || v > ny - 0.5) return NAN;
     u = std::clamp(u, 0.0, double(nx - 1));
     v = std::clamp(v, 0.0, double(ny - 1));
-    int x0 = std::min(int(u), nx - 2 < 0 ? 0 : nx - 2), y0 = std::min(int(v), ny - 2 < 0 ? 0 : ny - 2);
+    int x0 = std::min(int(u), nx - 2 < 0 ? 0 : nx - 2),
+        y0 = std::min(int(v), ny - 2 < 0 ? 0 : ny - 2);
     int x1 = std::min(x0 + 1, nx - 1), y1 = std::min(y0 + 1, ny - 1);
     double fx = u - x0, fy = v - y0;
     const int16_t* p = slices.data() + size_t(k) * sliceSize;

@@ -12,8 +12,7 @@ namespace voxray::dicom {
 // origins ORIGINS. Returns voxels on G.target: trilinear along the normal between the
 // two nearest slices, bilinear inside each. Outside the data: OUTSIDE.
 std::vector<int16_t> resampleStack(const std::vector<int16_t>& slices,
-                                   const std::vector<glm::dvec3>& origins,
-                                   const StackGeometry& g, int16_t outside,
-                                   const std::atomic<bool>* cancel);
+                                   const std::vector<glm::dvec3>& origins, const StackGeometry& g,
+                                   int16_t outside, const std::atomic<bool>* cancel);
 
 }  // namespace voxray::dicom

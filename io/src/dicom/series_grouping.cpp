@@ -1,8 +1,8 @@
 #include "series_grouping.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <tuple>
@@ -36,18 +36,15 @@ bool upper(const std::string& s, const char* word) {
 }
 
 auto acquisitionOrder(const FrameHeader& f) {
-  return std::make_tuple(f.temporalIndex, f.acquisitionNumber, f.instanceNumber, f.path,
-                         f.frame);
+  return std::make_tuple(f.temporalIndex, f.acquisitionNumber, f.instanceNumber, f.path, f.frame);
 }
 
 // Splits one grid group into time points when positions repeat.
-std::vector<std::vector<FrameHeader>> splitTimePoints(std::vector<FrameHeader> g,
-                                                      bool& uneven) {
+std::vector<std::vector<FrameHeader>> splitTimePoints(std::vector<FrameHeader> g, bool& uneven) {
   uneven = false;
   if (!g.front().hasPosition) {
-    std::sort(g.begin(), g.end(), [](auto& a, auto& b) {
-      return acquisitionOrder(a) < acquisitionOrder(b);
-    });
+    std::sort(g.begin(), g.end(),
+              [](auto& a, auto& b) { return acquisitionOrder(a) < acquisitionOrder(b); });
     return {std::move(g)};
   }
   const glm::dvec3 n = g.front().normal();
@@ -121,8 +118,8 @@ std::vector<Candidate> groupIntoCandidates(std::vector<FrameHeader> frames) {
   for (auto& [key, list] : series) {
     std::vector<std::vector<FrameHeader>> grids;
     for (auto& f : list) {
-      auto it = std::find_if(grids.begin(), grids.end(),
-                             [&](auto& g) { return sameGrid(g.front(), f); });
+      auto it =
+          std::find_if(grids.begin(), grids.end(), [&](auto& g) { return sameGrid(g.front(), f); });
       if (it == grids.end())
         grids.push_back({std::move(f)});
       else
@@ -146,11 +143,13 @@ std::vector<Candidate> groupIntoCandidates(std::vector<FrameHeader> frames) {
           c.warnings.push_back(
               "the series holds " + std::to_string(c.timePoints) +
               " images at each slice position (4D: time points, phases or diffusion "
-              "directions); this is volume " + std::to_string(c.timePoint) + " of " +
-              std::to_string(c.timePoints) + ", never stacked with the others");
+              "directions); this is volume " +
+              std::to_string(c.timePoint) + " of " + std::to_string(c.timePoints) +
+              ", never stacked with the others");
           if (uneven)
-            c.warnings.push_back("some slice positions have fewer repeats than others; "
-                                 "the later volumes miss slices");
+            c.warnings.push_back(
+                "some slice positions have fewer repeats than others; "
+                "the later volumes miss slices");
         }
         parts.push_back(std::move(c));
       }

@@ -10,9 +10,9 @@
 namespace voxray::dicom {
 
 struct Candidate {
-  std::vector<FrameHeader> frames;  // sorted along the slice normal when positions exist
-  std::string selector;             // unique name: series number, UID, plus ":part"
-  int part = 0;                     // 1.. when the series was split, else 0
+  std::vector<FrameHeader> frames;    // sorted along the slice normal when positions exist
+  std::string selector;               // unique name: series number, UID, plus ":part"
+  int part = 0;                       // 1.. when the series was split, else 0
   int timePoint = 0, timePoints = 1;  // 4D: which volume of how many (1-based)
   bool isVolume = false;
   std::string notVolumeReason;

@@ -51,8 +51,10 @@ StackGeometry analyseStack(const std::vector<FrameHeader>& frames) {
 
   if (frames.size() < 2 || !f0.hasPosition) {
     if (!f0.hasPosition && frames.size() > 1)
-      g.warnings.push_back("the images carry no ImagePositionPatient: slices stacked in "
-                           "acquisition order, " + mm(s.spacing.z) + " apart (from the header)");
+      g.warnings.push_back(
+          "the images carry no ImagePositionPatient: slices stacked in "
+          "acquisition order, " +
+          mm(s.spacing.z) + " apart (from the header)");
     g.target = s;
     return g;
   }
@@ -84,9 +86,9 @@ StackGeometry analyseStack(const std::vector<FrameHeader>& frames) {
   }
   if (!onlyMissing) g.missingSlices = 0;
   if (uneven && onlyMissing) {
-    g.warnings.push_back(std::to_string(g.missingSlices) +
-                         " slice(s) missing (gaps of " + mm(g.maxGap) + " in a " +
-                         mm(g.medianGap) + " stack): filled by interpolation");
+    g.warnings.push_back(std::to_string(g.missingSlices) + " slice(s) missing (gaps of " +
+                         mm(g.maxGap) + " in a " + mm(g.medianGap) +
+                         " stack): filled by interpolation");
   } else if (uneven) {
     g.warnings.push_back("uneven slice gaps (min " + mm(g.minGap) + ", max " + mm(g.maxGap) +
                          "): resampled to a uniform grid");

@@ -14,13 +14,13 @@ namespace voxray::dicom {
 struct Grid {
   glm::ivec3 dims{0};
   glm::dvec3 spacing{1.0};
-  glm::dvec3 origin{0.0};   // LPS centre of voxel (0,0,0)
-  glm::dmat3 axes{1.0};     // columns: unit vectors of i, j, k
+  glm::dvec3 origin{0.0};  // LPS centre of voxel (0,0,0)
+  glm::dmat3 axes{1.0};    // columns: unit vectors of i, j, k
 };
 
 struct StackGeometry {
-  Grid source;              // slices as stored (k spacing = median gap)
-  Grid target;              // what the volume is delivered on
+  Grid source;  // slices as stored (k spacing = median gap)
+  Grid target;  // what the volume is delivered on
   bool needsResampling = false;
   double tiltDegrees = 0.0;  // angle between the slice normal and the stacking direction
   double minGap = 0.0, maxGap = 0.0, medianGap = 0.0;

@@ -17,8 +17,8 @@ bool integral(double v) { return std::abs(v - std::round(v)) < 1e-9; }
 
 double airValue(const std::string& modality) { return modality == "CT" ? -1024.0 : 0.0; }
 
-SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h,
-                      double airPhysical, int16_t* out) {
+SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h, double airPhysical,
+                      int16_t* out) {
   const int32_t offset = (h.pixelRepresentation == 0 && h.bitsStored > 15) ? 32768 : 0;
   SliceScale s;
   s.slope = h.slope;
@@ -32,13 +32,17 @@ SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h,
     }
   }
   const int16_t air = clamp16((airPhysical - s.intercept) / s.slope);
+  // Branch-free loops (vectorised): this runs on every voxel of the volume.
+  const size_t n = values.size();
+  const int32_t* in = values.data();
+  for (size_t i = 0; i < n; ++i) out[i] = int16_t(std::clamp(in[i] - offset, -32768, 32767));
+  if (padLo <= padHi)
+    for (size_t i = 0; i < n; ++i)
+      if (in[i] >= padLo && in[i] <= padHi) out[i] = air;
   int16_t lo = INT16_MAX, hi = INT16_MIN;
-  for (size_t i = 0; i < values.size(); ++i) {
-    int32_t v = values[i];
-    int16_t o = (v >= padLo && v <= padHi) ? air : int16_t(std::clamp(v - offset, -32768, 32767));
-    out[i] = o;
-    lo = std::min(lo, o);
-    hi = std::max(hi, o);
+  for (size_t i = 0; i < n; ++i) {
+    lo = std::min(lo, out[i]);
+    hi = std::max(hi, out[i]);
   }
   s.min = values.empty() ? 0 : lo;
   s.max = values.empty() ? 0 : hi;
@@ -72,8 +76,8 @@ CommonScale chooseCommonScale(const std::vector<SliceScale>& slices) {
     c.slope = (hi - lo) / 65535.0;
     coarser = true;
   }
-  c.intercept = (lo / c.slope >= -32768.0 && hi / c.slope <= 32767.0) ? 0.0
-                                                                      : lo + 32768.0 * c.slope;
+  c.intercept =
+      (lo / c.slope >= -32768.0 && hi / c.slope <= 32767.0) ? 0.0 : lo + 32768.0 * c.slope;
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "rescale differs between slices (slope %g to %g, intercept %g to %g): values "

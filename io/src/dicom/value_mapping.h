@@ -22,8 +22,8 @@ double airValue(const std::string& modality);
 // Writes VALUES (stored samples of one frame) into OUT as int16. Unsigned 16-bit samples
 // are shifted by -32768 (and the intercept by +32768*slope) so nothing is clipped.
 // Padding samples become AIR_PHYSICAL.
-SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h,
-                      double airPhysical, int16_t* out);
+SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h, double airPhysical,
+                      int16_t* out);
 
 struct CommonScale {
   double slope = 1.0, intercept = 0.0;

@@ -12,13 +12,13 @@ struct Volume;
 
 struct ViewGeometry {
   bool orthographic = false;
-  glm::dvec3 eye{0.0};       // world
+  glm::dvec3 eye{0.0};                           // world
   glm::dvec3 forward{0.0}, right{0.0}, up{0.0};  // world, orthonormal
-  double halfHeight = 1.0;   // view plane half height: tan(fov/2)/zoom, or mm for ortho
-  double aspect = 1.0;       // width / height
+  double halfHeight = 1.0;  // view plane half height: tan(fov/2)/zoom, or mm for ortho
+  double aspect = 1.0;      // width / height
   glm::dmat3 worldToVoxel{1.0};
-  glm::dvec3 voxelCentre{0.0};  // voxel coordinates of the world origin
-  glm::dmat3 gradToWorld{1.0};  // voxel-index gradient -> gradient per mm in world
+  glm::dvec3 voxelCentre{0.0};          // voxel coordinates of the world origin
+  glm::dmat3 gradToWorld{1.0};          // voxel-index gradient -> gradient per mm in world
   glm::dvec3 clipLo{0.0}, clipHi{0.0};  // clip box in voxel coordinates
   glm::dvec3 lightWorld{0.0};
 

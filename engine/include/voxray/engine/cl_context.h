@@ -9,7 +9,7 @@
 namespace voxray {
 
 struct DeviceInfo {
-  int index = 0;              // position in listDevices(); "--device N"
+  int index = 0;  // position in listDevices(); "--device N"
   std::string platform;
   std::string name;
   std::string vendor;

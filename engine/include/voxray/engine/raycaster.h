@@ -15,10 +15,10 @@ class ClContext;
 enum class VolumeStorage { Auto, Buffer, Image3d };
 
 struct FrameStats {
-  double kernelMs = 0.0;   // from OpenCL profiling events
-  double totalMs = 0.0;    // wall time including upload of parameters and read-back
-  double samples = 0.0;    // volume samples taken (0 when not counted)
-  std::string variant;     // the -D options of the kernel that ran
+  double kernelMs = 0.0;  // from OpenCL profiling events
+  double totalMs = 0.0;   // wall time including upload of parameters and read-back
+  double samples = 0.0;   // volume samples taken (0 when not counted)
+  std::string variant;    // the -D options of the kernel that ran
 };
 
 class Raycaster {

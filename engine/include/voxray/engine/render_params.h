@@ -19,8 +19,8 @@ struct CameraParams {
   double azimuthDeg = 0.0;    // 0 = anterior view; 90 = from the patient's left
   double elevationDeg = 0.0;  // 90 = from above (superior)
   double zoom = 1.0;
-  double distanceMm = 0.0;    // eye to volume centre; 0 = frame the whole volume
-  glm::dvec2 panMm{0.0};      // moves the look-at point in the view plane
+  double distanceMm = 0.0;  // eye to volume centre; 0 = frame the whole volume
+  glm::dvec2 panMm{0.0};    // moves the look-at point in the view plane
   Projection projection = Projection::Perspective;
   double fovDeg = 30.0;
 };
@@ -48,17 +48,17 @@ struct RenderParams {
   int width = 512;
   int height = 384;
   Mode mode = Mode::Iso;
-  std::string preset;         // transfer-function preset name; empty = mode's default
-  double isoLo = 400.0;       // HU range of the first-hit surface (the seed's two sliders)
+  std::string preset;    // transfer-function preset name; empty = mode's default
+  double isoLo = 400.0;  // HU range of the first-hit surface (the seed's two sliders)
   double isoHi = 32767.0;
   Gradient gradient = Gradient::Central;
   Interp interp = Interp::Linear;
-  double stepMm = 0.0;        // 0 = half the smallest voxel spacing
-  int refine = 4;             // bisection steps refining an iso hit
+  double stepMm = 0.0;  // 0 = half the smallest voxel spacing
+  int refine = 4;       // bisection steps refining an iso hit
   bool shading = true;
   bool opacityCorrection = true;
   double earlyTermination = 0.99;  // dvr: stop once this opacity is reached
-  double windowWidth = 0.0;   // mip grey mapping in HU; width 0 = the volume's range
+  double windowWidth = 0.0;        // mip grey mapping in HU; width 0 = the volume's range
   double windowLevel = 0.0;
   glm::dvec3 surfaceColor{0.93, 0.89, 0.80};  // iso colour (bone) when no preset colours it
   glm::dvec3 background{0.0};

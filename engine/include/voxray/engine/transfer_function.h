@@ -34,8 +34,8 @@ Lut bakeLut(const TransferFunction& tf, const Volume& v, int maxEntries = 4096);
 struct Preset {
   std::string name;
   std::string description;
-  std::string mode;             // iso, dvr or mip: the mode it was made for
-  TransferFunction tf;          // dvr colours; for iso, the surface colour at the hit
+  std::string mode;     // iso, dvr or mip: the mode it was made for
+  TransferFunction tf;  // dvr colours; for iso, the surface colour at the hit
   double isoLo = 0.0, isoHi = 0.0;
   double windowWidth = 0.0, windowLevel = 0.0;
 };
@@ -44,6 +44,10 @@ struct Preset {
 const std::vector<Preset>& builtinPresets();
 // By name, case-insensitive; throws Error (Input) listing the known names.
 const Preset& findPreset(const std::string& name);
+struct RenderParams;
+// Selects the preset and takes its mode, iso range and window where it has them.
+void applyPreset(RenderParams& p, const Preset& preset);
+
 // Parses one preset from JSON text; throws Error (Input) saying what is wrong.
 Preset parsePreset(const std::string& json, const std::string& origin);
 

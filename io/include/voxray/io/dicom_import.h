@@ -15,12 +15,12 @@ namespace voxray {
 
 // One candidate volume found in the input, described from headers only (no pixels read).
 struct SeriesInfo {
-  std::string selector;     // pass as LoadOptions::series to load exactly this candidate
-  std::string uid;          // SeriesInstanceUID (several candidates may share one)
-  int number = 0;           // SeriesNumber
-  int part = 0;             // 1.. when one series was split into several candidates, else 0
-  std::string description;  // SeriesDescription
-  std::string modality;     // CT, MR, ...
+  std::string selector;        // pass as LoadOptions::series to load exactly this candidate
+  std::string uid;             // SeriesInstanceUID (several candidates may share one)
+  int number = 0;              // SeriesNumber
+  int part = 0;                // 1.. when one series was split into several candidates, else 0
+  std::string description;     // SeriesDescription
+  std::string modality;        // CT, MR, ...
   std::string transferSyntax;  // name of the first file's transfer syntax
   glm::ivec3 dims{0};          // columns, rows, slices as they would be loaded
   glm::dvec3 spacingMm{0.0};   // column, row and slice spacing (slice: from positions)
@@ -28,9 +28,9 @@ struct SeriesInfo {
   glm::dmat3 direction{1.0};   // columns: LPS unit vectors of i, j, k
   int sliceCount = 0;          // images (frames) in this candidate
   int fileCount = 0;
-  bool isVolume = false;         // a 3D stack that can be chosen by default
-  bool chosenByDefault = false;  // the candidate loadVolume opens when no series is given
-  std::string notVolumeReason;   // why isVolume is false (scout, single slice, ...)
+  bool isVolume = false;              // a 3D stack that can be chosen by default
+  bool chosenByDefault = false;       // the candidate loadVolume opens when no series is given
+  std::string notVolumeReason;        // why isVolume is false (scout, single slice, ...)
   std::vector<std::string> warnings;  // tilt, uneven gaps, missing slices, 4D, ...
   // For display in the UI only: never log these or put them in messages or exports.
   std::string patientName;

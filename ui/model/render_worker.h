@@ -1,0 +1,69 @@
+#pragma once
+// Owns the OpenCL context and the Raycaster on one thread of its own (the Raycaster is not
+// thread-safe) so that rendering never blocks the UI. Requests do not queue up: a new
+// request replaces one that has not started, so a fast drag renders only the latest
+// camera. Results and errors arrive through callbacks ON THE WORKER THREAD; the Qt side
+// forwards them to the UI thread.
+#include <condition_variable>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "no_qt.h"
+#include "voxray/engine/raycaster.h"
+#include "voxray/engine/render_params.h"
+#include "voxray/io/image.h"
+#include "voxray/io/volume.h"
+
+namespace voxray::ui {
+
+struct Frame {
+  Image image;
+  FrameStats stats;
+  RenderParams params;
+  bool interactive = false;  // a cheap frame rendered during a drag
+  int tag = 0;               // the caller's label (0: the view; other values: exports)
+};
+
+struct RenderCallbacks {
+  std::function<void(std::shared_ptr<const Frame>)> frame;
+  // After a failed context creation, upload or render. VOLUME_REJECTED: the last volume
+  // given to setVolume could not be uploaded; the previous one is still rendered.
+  std::function<void(const std::string& message, bool volumeRejected)> error;
+  std::function<void(const std::string& deviceName)> deviceReady;
+};
+
+class RenderWorker {
+ public:
+  // DEVICE: a ClContext selector ("" = $VOXRAY_DEVICE or auto).
+  RenderWorker(std::string device, RenderCallbacks callbacks);
+  ~RenderWorker();  // waits for the frame in progress
+  RenderWorker(const RenderWorker&) = delete;
+  RenderWorker& operator=(const RenderWorker&) = delete;
+
+  void setVolume(std::shared_ptr<const Volume> volume);
+  void request(const RenderParams& params, bool interactive, int tag = 0);
+
+ private:
+  void run();
+
+  std::string device_;
+  RenderCallbacks callbacks_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  std::shared_ptr<const Volume> pendingVolume_;
+  struct Request {
+    RenderParams params;
+    bool interactive;
+    int tag;
+  };
+  std::optional<Request> pendingView_;    // latest view frame wins
+  std::optional<Request> pendingExport_;  // exports are never replaced by view frames
+  std::thread thread_;
+};
+
+}  // namespace voxray::ui

@@ -1,0 +1,42 @@
+#pragma once
+// Window/level for slice display, in the volume's physical unit (HU for CT), with the
+// presets radiologists expect (the values RadiAnt and Horos ship).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "notifier.h"
+
+namespace voxray::ui {
+
+struct WindowLevel {
+  double width = 400.0;
+  double level = 40.0;
+};
+
+struct WindowLevelPreset {
+  std::string name;
+  WindowLevel wl;
+};
+const std::vector<WindowLevelPreset>& windowLevelPresets();
+
+// DICOM-style linear ramp: level - width/2 maps to 0, level + width/2 to 255.
+uint8_t mapToGrey(double value, const WindowLevel& wl);
+
+// A mouse drag from START by (dx, dy) pixels: right widens the window, down raises the
+// level (as in 3D Slicer). Sensitivity scales with the window so narrow windows stay fine.
+WindowLevel dragWindowLevel(const WindowLevel& start, double dx, double dy);
+
+class WindowLevelModel {
+ public:
+  const WindowLevel& value() const { return wl_; }
+  void set(const WindowLevel& wl);
+  // Returns false (and changes nothing) for an unknown name.
+  bool applyPreset(const std::string& name);
+  Notifier<> changed;
+
+ private:
+  WindowLevel wl_;
+};
+
+}  // namespace voxray::ui

@@ -1,0 +1,109 @@
+#include "export_dialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QEventLoop>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTimer>
+
+#include "qt_image.h"
+#include "slice_view.h"
+#include "volume_view.h"
+#include "voxray/io/error.h"
+
+namespace voxray::ui {
+
+namespace {
+constexpr int kExportTimeoutMs = 120000;  // a 4K frame through PoCL on two cores is slow
+}
+
+ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeView& view,
+                           const std::array<SliceView*, 3>& slices)
+    : QDialog(window), window_(window), scheduler_(scheduler), view_(view), slices_(slices) {
+  setWindowTitle("Export screenshot");
+  auto* form = new QFormLayout(this);
+  what_ = new QComboBox;
+  what_->addItems({"3D view", "Axial view", "Coronal view", "Sagittal view", "Whole window"});
+  form->addRow("Capture", what_);
+  size_ = new QComboBox;
+  size_->addItems({"View size", "Chosen resolution (3D view)"});
+  form->addRow("Size", size_);
+  width_ = new QSpinBox;
+  height_ = new QSpinBox;
+  width_->setRange(16, 8192);
+  height_->setRange(16, 8192);
+  width_->setValue(1920);
+  height_->setValue(1080);
+  form->addRow("Width", width_);
+  form->addRow("Height", height_);
+  annotations_ = new QCheckBox("Burn in annotations (values, positions, file name)");
+  form->addRow(annotations_);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Save | QDialogButtonBox::Cancel);
+  connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::save);
+  connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  form->addRow(buttons);
+  auto sync = [this] {
+    bool custom = what_->currentIndex() == 0 && size_->currentIndex() == 1;
+    size_->setEnabled(what_->currentIndex() == 0);
+    width_->setEnabled(custom);
+    height_->setEnabled(custom);
+  };
+  connect(what_, &QComboBox::currentIndexChanged, this, sync);
+  connect(size_, &QComboBox::currentIndexChanged, this, sync);
+  sync();
+}
+
+QImage ExportDialog::capture() {
+  int what = what_->currentIndex();
+  bool annotate = annotations_->isChecked();
+  if (what == 0 && size_->currentIndex() == 1) {
+    QImage result;
+    QEventLoop loop;
+    auto c = connect(&scheduler_, &RenderScheduler::exportReady, &loop,
+                     [&](std::shared_ptr<const Frame> f) {
+                       result = toQImage(f->image);
+                       loop.quit();
+                     });
+    QTimer::singleShot(kExportTimeoutMs, &loop, &QEventLoop::quit);
+    scheduler_.requestExport(QSize(width_->value(), height_->value()));
+    loop.exec();
+    disconnect(c);
+    return result;
+  }
+  if (what == 0) return view_.lastFrame();  // the rendered pixels, no overlays
+  for (SliceView* s : slices_) s->setAnnotations(annotate);
+  QImage image = (what == 4 ? window_ : static_cast<QWidget*>(slices_[size_t(what - 1)]))
+                     ->grab()
+                     .toImage();
+  for (SliceView* s : slices_) s->setAnnotations(true);
+  return image;
+}
+
+void ExportDialog::save() {
+  QSettings s;
+  // The Qt file dialog asks before replacing an existing file.
+  QString path = QFileDialog::getSaveFileName(
+      this, "Export screenshot", s.value("lastExportFolder").toString(),
+      "PNG image (*.png);;TIFF image (*.tif *.tiff);;OpenEXR image (*.exr)");
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += ".png";
+  s.setValue("lastExportFolder", QFileInfo(path).absolutePath());
+  QImage image = capture();
+  if (image.isNull()) {
+    QMessageBox::warning(this, "Export failed", "No image to export yet (no frame rendered).");
+    return;
+  }
+  try {
+    writeImage(path.toStdString(), fromQImage(image));
+    accept();
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "Export failed", e.what());
+  }
+}
+
+}  // namespace voxray::ui

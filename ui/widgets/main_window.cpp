@@ -1,0 +1,204 @@
+#include "main_window.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+
+#include "control_panel.h"
+#include "export_dialog.h"
+#include "raw_import_dialog.h"
+#include "recent_files.h"
+#include "series_picker.h"
+#include "settings_store.h"
+#include "slice_view.h"
+#include "volume_view.h"
+
+namespace voxray::ui {
+
+MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent)
+    : QMainWindow(parent), models_(models) {
+  setObjectName("mainWindow");
+  setAcceptDrops(true);
+  scheduler_ = new RenderScheduler(models.render, models.document, device, this);
+  volumeView_ = new VolumeView(models.render, models.document, models.crosshair, *scheduler_);
+  const Orientation orientations[] = {Orientation::Axial, Orientation::Coronal,
+                                      Orientation::Sagittal};
+  for (int i = 0; i < 3; ++i)
+    slices_[size_t(i)] = new SliceView(orientations[i], models.document, models.crosshair,
+                                       models.windowLevel, models.render);
+  grid_ = new ViewGrid(volumeView_, slices_[0], slices_[1], slices_[2]);
+  connect(volumeView_, &VolumeView::doubleClicked, this,
+          [this] { grid_->toggleMaximised(volumeView_); });
+  for (SliceView* s : slices_)
+    connect(s, &SliceView::doubleClicked, this, [this, s] { grid_->toggleMaximised(s); });
+
+  auto* splitter = new QSplitter;
+  splitter->addWidget(grid_);
+  splitter->addWidget(makeControlPanel(models, *volumeView_));
+  splitter->setStretchFactor(0, 1);
+  setCentralWidget(splitter);
+
+  fpsLabel_ = new QLabel("no frame yet");
+  deviceLabel_ = new QLabel("starting OpenCL …");
+  statusBar()->addPermanentWidget(fpsLabel_);
+  statusBar()->addPermanentWidget(deviceLabel_);
+  connect(scheduler_, &RenderScheduler::statsChanged, this,
+          [this](double fps, double ms, bool interactive) {
+            fpsLabel_->setText(QString("%1 fps · %2 ms%3")
+                                   .arg(fps, 0, 'f', 1)
+                                   .arg(ms, 0, 'f', 0)
+                                   .arg(interactive ? " (interactive)" : ""));
+          });
+  connect(scheduler_, &RenderScheduler::deviceReady, this,
+          [this](const QString& name) { deviceLabel_->setText(name); });
+  connect(scheduler_, &RenderScheduler::renderError, this,
+          [this](const QString& message, bool rejected) {
+            // The engine's message says what failed; the previous volume stays on screen.
+            if (rejected) models_.document.restorePrevious();
+            showError(rejected ? "Cannot show this volume" : "Rendering failed", message);
+          });
+
+  loader_ = new LoadController(this);
+  connect(loader_, &LoadController::loaded, this,
+          [this](std::shared_ptr<const Volume> v, const QString& name, const QString& input) {
+            models_.crosshair.setDims(v->dims);
+            models_.document.set(std::move(v), name.toStdString());
+            if (!input.isEmpty()) {
+              QSettings s;
+              saveRecent(s, pushRecent(loadRecent(s), input.toStdString()));
+              rebuildRecentMenu();
+            }
+            for (const auto& w : models_.document.volume()->warnings)
+              statusBar()->showMessage(QString::fromStdString(w), 10000);
+            updateTitle();
+            emit volumeShown();
+          });
+  connect(loader_, &LoadController::failed, this, [this](const QString& message, bool cancelled) {
+    if (cancelled)
+      statusBar()->showMessage("Loading cancelled", 5000);
+    else
+      showError("Cannot open", message);
+  });
+  buildMenus();
+  updateTitle();
+  resize(1400, 900);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildMenus() {
+  QMenu* file = menuBar()->addMenu("&File");
+  file->addAction("Open &DICOM folder…", QKeySequence::Open, this, &MainWindow::openDicomFolder);
+  file->addAction("Open &raw volume…", QKeySequence("Ctrl+R"), this, &MainWindow::openRaw);
+  file->addAction("Open head &phantom", this, [this] { open("", {}); });
+  recentMenu_ = file->addMenu("Open &recent");
+  rebuildRecentMenu();
+  file->addSeparator();
+  file->addAction("&Export screenshot…", QKeySequence("Ctrl+E"), this,
+                  &MainWindow::exportScreenshot);
+  file->addSeparator();
+  file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
+  QMenu* view = menuBar()->addMenu("&View");
+  view->addAction("&Maximise / restore focused view", QKeySequence("F11"), this, [this] {
+    QWidget* focused = QApplication::focusWidget();
+    grid_->toggleMaximised(focused ? focused : volumeView_);
+  });
+}
+
+void MainWindow::rebuildRecentMenu() {
+  recentMenu_->clear();
+  QSettings s;
+  for (const auto& entry : loadRecent(s)) {
+    QString path = QString::fromStdString(entry);
+    recentMenu_->addAction(path, this, [this, entry] {
+      QSettings settings;
+      LoadOptions o;
+      o.raw = loadRawLayoutFor(settings, entry);
+      open(entry, o);
+    });
+  }
+  recentMenu_->setEnabled(!recentMenu_->isEmpty());
+}
+
+void MainWindow::open(const std::string& input, const LoadOptions& options) {
+  QString name = input.empty() ? QString("head phantom") : QFileInfo(QString::fromStdString(input)).fileName();
+  if (options.raw) {
+    QSettings s;
+    saveRawLayoutFor(s, input, *options.raw);
+  }
+  loader_->load(input, options, name);
+}
+
+void MainWindow::openDicomFolder() {
+  QSettings s;
+  QString dir = QFileDialog::getExistingDirectory(this, "Open DICOM folder",
+                                                  s.value("lastFolder", QDir::homePath()).toString());
+  if (dir.isEmpty()) return;
+  s.setValue("lastFolder", dir);
+  auto choice = pickSeries(this, dir.toStdString());
+  if (choice) open(dir.toStdString(), *choice);
+}
+
+void MainWindow::openRaw() {
+  QSettings s;
+  auto request = RawImportDialog::ask(this, s.value("lastFolder", QDir::homePath()).toString());
+  if (!request) return;
+  s.setValue("lastFolder", QFileInfo(request->first).absolutePath());
+  LoadOptions o;
+  o.raw = request->second;
+  open(request->first.toStdString(), o);
+}
+
+void MainWindow::exportScreenshot() {
+  ExportDialog dialog(this, *scheduler_, *volumeView_, slices_);
+  dialog.exec();
+}
+
+void MainWindow::showError(const QString& title, const QString& message) {
+  QMessageBox box(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+  box.exec();
+}
+
+void MainWindow::updateTitle() {
+  QString name = QString::fromStdString(models_.document.name());
+  setWindowTitle(name.isEmpty() ? "Voxray" : name + " — Voxray");
+}
+
+void MainWindow::restoreSettings() {
+  QSettings s;
+  restoreGeometry(s.value("window/geometry").toByteArray());
+  grid_->setMaximised(s.value("window/maximisedView", -1).toInt());
+  loadModelSettings(s, models_);
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+  QSettings s;
+  s.setValue("window/geometry", saveGeometry());
+  s.setValue("window/maximisedView", grid_->maximisedIndex());
+  saveModelSettings(s, models_);
+  e->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+  if (e->mimeData()->hasUrls()) e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+  const auto urls = e->mimeData()->urls();
+  if (urls.isEmpty() || !urls.first().isLocalFile()) return;
+  std::string path = urls.first().toLocalFile().toStdString();
+  QSettings s;
+  LoadOptions o;
+  o.raw = loadRawLayoutFor(s, path);  // a raw file opened before keeps its layout
+  open(path, o);
+}
+
+}  // namespace voxray::ui

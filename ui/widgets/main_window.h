@@ -1,0 +1,64 @@
+#pragma once
+// The workstation window. It composes views, panel, menus and status bar and wires them
+// to the models; it computes nothing itself (models and small helpers do).
+#include <array>
+
+#include <QLabel>
+#include <QMainWindow>
+#include <QMenu>
+
+#include "app_models.h"
+#include "load_controller.h"
+#include "render_scheduler.h"
+#include "view_grid.h"
+
+namespace voxray::ui {
+
+class SliceView;
+class VolumeView;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  MainWindow(AppModels& models, const QString& device, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  VolumeView& volumeView() { return *volumeView_; }
+  SliceView& sliceView(int i) { return *slices_[size_t(i)]; }  // axial, coronal, sagittal
+  RenderScheduler& scheduler() { return *scheduler_; }
+  LoadController& loader() { return *loader_; }
+  ViewGrid& grid() { return *grid_; }
+
+  // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread.
+  void open(const std::string& input, const LoadOptions& options);
+  void restoreSettings();
+
+ signals:
+  void volumeShown();  // a loaded volume became the document
+
+ protected:
+  void closeEvent(QCloseEvent*) override;
+  void dragEnterEvent(QDragEnterEvent*) override;
+  void dropEvent(QDropEvent*) override;
+
+ private:
+  void buildMenus();
+  void rebuildRecentMenu();
+  void openDicomFolder();
+  void openRaw();
+  void exportScreenshot();
+  void showError(const QString& title, const QString& message);
+  void updateTitle();
+
+  AppModels& models_;
+  RenderScheduler* scheduler_;
+  VolumeView* volumeView_;
+  std::array<SliceView*, 3> slices_{};
+  ViewGrid* grid_;
+  LoadController* loader_;
+  QLabel* fpsLabel_;
+  QLabel* deviceLabel_;
+  QMenu* recentMenu_ = nullptr;
+};
+
+}  // namespace voxray::ui

@@ -1,0 +1,184 @@
+// Clip box, light and slice display controls, and the panel that stacks all groups.
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "control_panel.h"
+#include "coupling.h"
+#include "light_gizmo.h"
+#include "volume_view.h"
+
+namespace voxray::ui {
+
+namespace {
+
+QDoubleSpinBox* spin(double lo, double hi, double step, int decimals) {
+  auto* s = new QDoubleSpinBox;
+  s->setRange(lo, hi);
+  s->setSingleStep(step);
+  s->setDecimals(decimals);
+  s->setKeyboardTracking(false);
+  return s;
+}
+
+}  // namespace
+
+QGroupBox* makeClipGroup(RenderStateModel& m, VolumeView& view) {
+  auto* box = new QGroupBox("Clip box (% of extent)");
+  auto* grid = new QGridLayout(box);
+  const char* axes[] = {"i (x)", "j (y)", "k (z)"};
+  grid->addWidget(new QLabel("from"), 0, 1);
+  grid->addWidget(new QLabel("to"), 0, 2);
+  for (int a = 0; a < 3; ++a) {
+    grid->addWidget(new QLabel(axes[a]), a + 1, 0);
+    for (int hi = 0; hi < 2; ++hi) {
+      auto* s = spin(0, 100, 1, 1);
+      s->setSuffix(" %");
+      bindSpin(
+          s, m, kClip,
+          [a, hi](const RenderParams& p) { return 100.0 * (hi ? p.clip.hi[a] : p.clip.lo[a]); },
+          [a, hi](RenderParams& p, double v) {
+            // The same clamping as a handle drag: the box never turns inside out.
+            double f = v / 100.0;
+            if (hi)
+              p.clip.hi[a] = std::max(f, p.clip.lo[a] + 0.02);
+            else
+              p.clip.lo[a] = std::min(f, p.clip.hi[a] - 0.02);
+          });
+      grid->addWidget(s, a + 1, hi + 1);
+    }
+  }
+  auto* reset = new QPushButton("Reset box");
+  QObject::connect(reset, &QPushButton::clicked, reset,
+                   [&m] { m.update(kClip, [](RenderParams& p) { p.clip = ClipBox{}; }); });
+  auto* handles = new QCheckBox("Handles in 3D view");
+  handles->setChecked(view.showClipHandles());
+  QObject::connect(handles, &QCheckBox::toggled, &view, &VolumeView::setShowClipHandles);
+  grid->addWidget(reset, 4, 0, 1, 3);
+  grid->addWidget(handles, 5, 0, 1, 3);
+  return box;
+}
+
+QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
+  RenderStateModel& m = models.render;
+  auto* box = new QGroupBox("Light");
+  auto* form = new QFormLayout(box);
+  auto* follow = new QCheckBox("Follows the camera");
+  auto refreshFollow = [follow, &m] {
+    QSignalBlocker b(follow);
+    follow->setChecked(m.params().light.followCamera);
+  };
+  refreshFollow();
+  onModelChange<unsigned>(follow, m.changed, [refreshFollow](unsigned what) {
+    if (what & kLight) refreshFollow();
+  });
+  QObject::connect(follow, &QCheckBox::toggled, follow, [&models](bool on) {
+    // Switching frames keeps the light where it is now; only later camera moves differ.
+    RenderStateModel& m = models.render;
+    if (models.document.empty()) {
+      m.update(kLight, [on](RenderParams& p) { p.light.followCamera = on; });
+      return;
+    }
+    LightParams l = withFollowCamera(*models.document.volume(), m.params(), on);
+    l.followCamera = on;
+    m.update(kLight, [&](RenderParams& p) { p.light = l; });
+  });
+  form->addRow(follow);
+  const char* names[] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    auto* s = spin(-5000, 5000, 0.1, 2);
+    bindSpin(
+        s, m, kLight, [a](const RenderParams& p) { return p.light.position[a]; },
+        [a](RenderParams& p, double v) { p.light.position[a] = v; });
+    form->addRow(QString("Position %1").arg(names[a]), s);
+  }
+  struct Term {
+    const char* name;
+    double LightParams::*field;
+    double max;
+  };
+  const Term terms[] = {{"Ambient", &LightParams::ambient, 1},
+                        {"Diffuse", &LightParams::diffuse, 1},
+                        {"Specular", &LightParams::specular, 1},
+                        {"Shininess", &LightParams::shininess, 256}};
+  for (const Term& t : terms) {
+    auto* s = spin(0, t.max, t.max > 1 ? 1 : 0.05, 2);
+    auto field = t.field;
+    bindSpin(
+        s, m, kLight, [field](const RenderParams& p) { return p.light.*field; },
+        [field](RenderParams& p, double v) { p.light.*field = v; });
+    form->addRow(t.name, s);
+  }
+  auto* gizmo = new QCheckBox("Light handle in 3D view");
+  gizmo->setChecked(view.showLightGizmo());
+  QObject::connect(gizmo, &QCheckBox::toggled, &view, &VolumeView::setShowLightGizmo);
+  form->addRow(gizmo);
+  return box;
+}
+
+QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
+  auto* box = new QGroupBox("Slices");
+  auto* form = new QFormLayout(box);
+  auto* preset = new QComboBox;
+  preset->addItem("(custom)");
+  for (const auto& p : windowLevelPresets())
+    preset->addItem(QString("%1 (%2/%3)")
+                        .arg(QString::fromStdString(p.name))
+                        .arg(p.wl.width)
+                        .arg(p.wl.level));
+  auto* width = spin(1, 10000, 10, 0);
+  auto* level = spin(-3000, 10000, 10, 0);
+  auto refresh = [preset, width, level, &wl] {
+    QSignalBlocker b1(preset), b2(width), b3(level);
+    width->setValue(wl.value().width);
+    level->setValue(wl.value().level);
+    int index = 0;
+    const auto& all = windowLevelPresets();
+    for (size_t i = 0; i < all.size(); ++i)
+      if (all[i].wl.width == wl.value().width && all[i].wl.level == wl.value().level)
+        index = int(i) + 1;
+    preset->setCurrentIndex(index);
+  };
+  refresh();
+  onModelChange<>(box, wl.changed, refresh);
+  QObject::connect(preset, &QComboBox::currentIndexChanged, box, [&wl](int i) {
+    if (i > 0) wl.applyPreset(windowLevelPresets()[size_t(i - 1)].name);
+  });
+  QObject::connect(width, &QDoubleSpinBox::valueChanged, box,
+                   [&wl](double w) { wl.set({w, wl.value().level}); });
+  QObject::connect(level, &QDoubleSpinBox::valueChanged, box,
+                   [&wl](double l) { wl.set({wl.value().width, l}); });
+  form->addRow("W/L preset", preset);
+  form->addRow("Window", width);
+  form->addRow("Level", level);
+  auto* planes = new QCheckBox("Show planes in 3D view");
+  planes->setChecked(view.showPlanes());
+  QObject::connect(planes, &QCheckBox::toggled, &view, &VolumeView::setShowPlanes);
+  form->addRow(planes);
+  return box;
+}
+
+QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
+  auto* column = new QWidget;
+  auto* layout = new QVBoxLayout(column);
+  layout->addWidget(makeRenderGroup(models.render));
+  layout->addWidget(makeQualityGroup(models.render));
+  layout->addWidget(makeCameraGroup(models.render));
+  layout->addWidget(makeSliceGroup(models.windowLevel, view));
+  layout->addWidget(makeClipGroup(models.render, view));
+  layout->addWidget(makeLightGroup(models, view));
+  layout->addStretch();
+  auto* scroll = new QScrollArea;
+  scroll->setObjectName("controlPanel");
+  scroll->setWidget(column);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(column->sizeHint().width() + 20);
+  return scroll;
+}
+
+}  // namespace voxray::ui

@@ -1,0 +1,110 @@
+#include "render_scheduler.h"
+
+#include <QMetaObject>
+
+namespace voxray::ui {
+
+namespace {
+constexpr int kSettleMs = 150;       // no movement for this long counts as "stopped"
+constexpr double kFpsSmoothing = 0.3;  // weight of the newest frame in the fps average
+}  // namespace
+
+RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
+                                 const QString& device, QObject* parent)
+    : QObject(parent), state_(state), doc_(doc) {
+  qRegisterMetaType<std::shared_ptr<const Frame>>("std::shared_ptr<const voxray::ui::Frame>");
+  settle_.setSingleShot(true);
+  settle_.setInterval(kSettleMs);
+  connect(&settle_, &QTimer::timeout, this, [this] {
+    interacting_ = false;
+    requestFrame();
+  });
+  clock_.start();
+  // The worker calls back on its own thread: hop to this object's (the UI) thread.
+  RenderCallbacks cb;
+  cb.frame = [this](std::shared_ptr<const Frame> f) {
+    QMetaObject::invokeMethod(this, [this, f] { onFrame(f); }, Qt::QueuedConnection);
+  };
+  cb.error = [this](const std::string& message, bool rejected) {
+    QString m = QString::fromStdString(message);
+    QMetaObject::invokeMethod(
+        this, [this, m, rejected] { emit renderError(m, rejected); }, Qt::QueuedConnection);
+  };
+  cb.deviceReady = [this](const std::string& name) {
+    QString n = QString::fromStdString(name);
+    QMetaObject::invokeMethod(this, [this, n] { emit deviceReady(n); }, Qt::QueuedConnection);
+  };
+  worker_ = std::make_unique<RenderWorker>(device.toStdString(), cb);
+  stateConnection_ = state_.changed.connect([this](unsigned) { requestFrame(); });
+  docConnection_ = doc_.changed.connect([this] {
+    sawFullFrame_ = false;
+    worker_->setVolume(doc_.volume());
+    requestFrame();
+  });
+  if (!doc_.empty()) worker_->setVolume(doc_.volume());
+}
+
+RenderScheduler::~RenderScheduler() {
+  state_.changed.disconnect(stateConnection_);
+  doc_.changed.disconnect(docConnection_);
+  worker_.reset();  // joins the render thread before the callbacks' target goes away
+}
+
+void RenderScheduler::setViewSize(QSize size) {
+  if (size == viewSize_ || size.isEmpty()) return;
+  viewSize_ = size;
+  requestFrame();
+}
+
+void RenderScheduler::beginInteraction() {
+  interacting_ = true;
+  settle_.start();
+}
+
+void RenderScheduler::endInteraction() {
+  settle_.stop();
+  interacting_ = false;
+  requestFrame();
+}
+
+RenderParams RenderScheduler::fullParams() const {
+  return planFrame(state_.params(), state_.quality(), {viewSize_.width(), viewSize_.height()},
+                   false, doc_.minSpacingMm());
+}
+
+void RenderScheduler::requestExport(QSize size) {
+  Quality q = state_.quality();
+  q.resolution = {size.width(), size.height()};
+  worker_->request(planFrame(state_.params(), q, q.resolution, false, doc_.minSpacingMm()), false,
+                   1);
+}
+
+void RenderScheduler::requestFrame() {
+  if (doc_.empty()) return;
+  if (interacting_) settle_.start();  // restart: refine only once the mouse rests
+  worker_->request(planFrame(state_.params(), state_.quality(),
+                             {viewSize_.width(), viewSize_.height()}, interacting_,
+                             doc_.minSpacingMm()),
+                   interacting_);
+}
+
+void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
+  if (frame->tag != 0) {
+    emit exportReady(frame);
+    return;
+  }
+  double now = clock_.nsecsElapsed() * 1e-9;
+  if (lastFrameAt_ >= 0.0 && now > lastFrameAt_) {
+    double instant = 1.0 / (now - lastFrameAt_);
+    fps_ = fps_ <= 0.0 ? instant : kFpsSmoothing * instant + (1.0 - kFpsSmoothing) * fps_;
+  }
+  lastFrameAt_ = now;
+  emit frameReady(frame);
+  emit statsChanged(fps_, frame->stats.totalMs, frame->interactive);
+  if (!frame->interactive && !sawFullFrame_) {
+    sawFullFrame_ = true;
+    emit firstFullFrame();
+  }
+}
+
+}  // namespace voxray::ui

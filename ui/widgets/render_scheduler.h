@@ -1,0 +1,60 @@
+#pragma once
+// Decides when the 3D view needs a frame and how good it must be: any change of the render
+// state asks the render thread for a frame; during a drag the frames are cheap (see
+// Quality), and once the mouse has been still for a moment one full-quality frame follows.
+// Also measures frames per second for the status bar.
+#include <memory>
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QSize>
+#include <QTimer>
+
+#include "render_state_model.h"
+#include "render_worker.h"
+#include "volume_document.h"
+
+namespace voxray::ui {
+
+class RenderScheduler : public QObject {
+  Q_OBJECT
+ public:
+  // DEVICE: a ClContext selector. The scheduler owns the render thread.
+  RenderScheduler(RenderStateModel& state, VolumeDocument& doc, const QString& device,
+                  QObject* parent = nullptr);
+  ~RenderScheduler() override;
+
+  void setViewSize(QSize size);
+  // Called by views while the user drags (cheap frames) and when the drag ends.
+  void beginInteraction();
+  void endInteraction();
+  // The full-quality parameters of the next frame (for overlays and exports).
+  RenderParams fullParams() const;
+  // Renders once at SIZE for an export; the result arrives as exportReady.
+  void requestExport(QSize size);
+
+ signals:
+  void frameReady(std::shared_ptr<const voxray::ui::Frame> frame);
+  void exportReady(std::shared_ptr<const voxray::ui::Frame> frame);
+  void firstFullFrame();
+  void statsChanged(double fps, double lastMs, bool interactive);
+  void deviceReady(const QString& name);
+  void renderError(const QString& message, bool volumeRejected);
+
+ private:
+  void requestFrame();
+  void onFrame(std::shared_ptr<const Frame> frame);
+
+  RenderStateModel& state_;
+  VolumeDocument& doc_;
+  std::unique_ptr<RenderWorker> worker_;
+  QSize viewSize_{512, 384};
+  bool interacting_ = false;
+  bool sawFullFrame_ = false;
+  QTimer settle_;  // the mouse stopped: time to refine
+  QElapsedTimer clock_;
+  double lastFrameAt_ = -1.0, fps_ = 0.0;
+  int stateConnection_ = 0, docConnection_ = 0;
+};
+
+}  // namespace voxray::ui

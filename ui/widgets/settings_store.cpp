@@ -1,0 +1,77 @@
+#include "settings_store.h"
+
+#include <QCryptographicHash>
+
+namespace voxray::ui {
+
+namespace {
+
+// QSettings keys cannot hold arbitrary paths: key raw layouts by a hash of the path.
+QString rawKey(const std::string& path) {
+  return "rawLayouts/" +
+         QCryptographicHash::hash(QByteArray::fromStdString(path), QCryptographicHash::Sha1)
+             .toHex();
+}
+
+}  // namespace
+
+void saveModelSettings(QSettings& s, const AppModels& m) {
+  s.setValue("render/state", QString::fromStdString(m.render.toText()));
+  s.setValue("slices/window", m.windowLevel.value().width);
+  s.setValue("slices/level", m.windowLevel.value().level);
+}
+
+void loadModelSettings(QSettings& s, AppModels& m) {
+  if (s.contains("render/state"))
+    m.render.fromText(s.value("render/state").toString().toStdString());
+  if (s.contains("slices/window"))
+    m.windowLevel.set({s.value("slices/window").toDouble(), s.value("slices/level").toDouble()});
+}
+
+std::vector<std::string> loadRecent(QSettings& s) {
+  std::vector<std::string> out;
+  for (const QString& p : s.value("recentFiles").toStringList()) out.push_back(p.toStdString());
+  return out;
+}
+
+void saveRecent(QSettings& s, const std::vector<std::string>& list) {
+  QStringList l;
+  for (const auto& p : list) l << QString::fromStdString(p);
+  s.setValue("recentFiles", l);
+}
+
+void saveRawLayoutFor(QSettings& s, const std::string& path, const RawLayout& l) {
+  s.beginGroup(rawKey(path));
+  s.setValue("dims", QList<QVariant>{l.dims.x, l.dims.y, l.dims.z});
+  s.setValue("type", toString(l.type));
+  s.setValue("bigEndian", l.order == ByteOrder::Big);
+  s.setValue("spacing", QList<QVariant>{l.spacingMm.x, l.spacingMm.y, l.spacingMm.z});
+  s.setValue("header", qulonglong(l.headerBytes));
+  s.setValue("slope", l.slope);
+  s.setValue("intercept", l.intercept);
+  s.endGroup();
+}
+
+std::optional<RawLayout> loadRawLayoutFor(QSettings& s, const std::string& path) {
+  s.beginGroup(rawKey(path));
+  std::optional<RawLayout> out;
+  if (s.contains("dims")) {
+    RawLayout l;
+    auto d = s.value("dims").toList();
+    auto sp = s.value("spacing").toList();
+    if (d.size() == 3 && sp.size() == 3) {
+      l.dims = {d[0].toInt(), d[1].toInt(), d[2].toInt()};
+      l.spacingMm = {sp[0].toDouble(), sp[1].toDouble(), sp[2].toDouble()};
+      l.type = parseSampleType(s.value("type").toString().toStdString());
+      l.order = s.value("bigEndian").toBool() ? ByteOrder::Big : ByteOrder::Little;
+      l.headerBytes = size_t(s.value("header").toULongLong());
+      l.slope = s.value("slope", 1.0).toDouble();
+      l.intercept = s.value("intercept", 0.0).toDouble();
+      out = l;
+    }
+  }
+  s.endGroup();
+  return out;
+}
+
+}  // namespace voxray::ui

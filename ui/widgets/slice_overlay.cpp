@@ -1,0 +1,94 @@
+#include "slice_overlay.h"
+
+#include <cmath>
+
+#include "volume_overlay.h"
+
+namespace voxray::ui {
+
+double niceLengthMm(double target) {
+  if (target <= 0) return 1.0;
+  double power = std::pow(10.0, std::floor(std::log10(target)));
+  for (double m : {5.0, 2.0, 1.0})
+    if (m * power <= target) return m * power;
+  return power;
+}
+
+namespace {
+
+void drawLabels(QPainter& p, const SliceAxes& a, const QRect& r) {
+  QFont f = p.font();
+  f.setBold(true);
+  p.setFont(f);
+  p.setPen(QColor(255, 220, 120));
+  const auto& l = a.labels;  // left, right, top, bottom
+  int m = 4;
+  p.drawText(r.adjusted(m, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, QString::fromStdString(l[0]));
+  p.drawText(r.adjusted(0, 0, -m, 0), Qt::AlignRight | Qt::AlignVCenter,
+             QString::fromStdString(l[1]));
+  p.drawText(r.adjusted(0, m, 0, 0), Qt::AlignHCenter | Qt::AlignTop, QString::fromStdString(l[2]));
+  p.drawText(r.adjusted(0, 0, 0, -m), Qt::AlignHCenter | Qt::AlignBottom,
+             QString::fromStdString(l[3]));
+  f.setBold(false);
+  p.setFont(f);
+}
+
+void drawScaleBar(QPainter& p, double mmPerPixel, const QRect& r) {
+  double mm = niceLengthMm(0.2 * r.width() * mmPerPixel);
+  double px = mm / mmPerPixel;
+  QPointF end(r.right() - 10, r.bottom() - 22);
+  QPointF start = end - QPointF(px, 0);
+  p.setPen(QPen(Qt::white, 2));
+  p.drawLine(start, end);
+  p.drawLine(start, start - QPointF(0, 4));
+  p.drawLine(end, end - QPointF(0, 4));
+  p.drawText(QRectF(start.x(), end.y() + 2, px, 16), Qt::AlignHCenter,
+             QString("%1 mm").arg(mm));
+}
+
+}  // namespace
+
+void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
+                      const SliceToWidget& toWidget) {
+  // Crosshair lines in the colours of the two other views' planes.
+  QPointF c = toWidget(o.crosshair.x, o.crosshair.y);
+  p.setPen(QPen(planeColor(o.axes.uAxis), 1));
+  p.drawLine(QPointF(c.x(), r.top()), QPointF(c.x(), r.bottom()));
+  p.setPen(QPen(planeColor(o.axes.vAxis), 1));
+  p.drawLine(QPointF(r.left(), c.y()), QPointF(r.right(), c.y()));
+
+  if (o.showClip) {
+    QPointF tl = toWidget(std::min(o.clipEdges[0].position, o.clipEdges[1].position),
+                          std::min(o.clipEdges[2].position, o.clipEdges[3].position));
+    QPointF br = toWidget(std::max(o.clipEdges[0].position, o.clipEdges[1].position),
+                          std::max(o.clipEdges[2].position, o.clipEdges[3].position));
+    p.setPen(QPen(QColor(255, 200, 0), 2, o.clipActive ? Qt::SolidLine : Qt::DashLine));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(QRectF(tl, br));
+  }
+
+  drawLabels(p, o.axes, r);
+  p.setPen(QPen(planeColor(o.axes.nAxis), 2));
+  p.drawRect(r.adjusted(0, 0, -1, -1));
+  p.setPen(Qt::white);
+  QRect text = r.adjusted(6, 4, -6, -4);
+  p.drawText(text, Qt::AlignLeft | Qt::AlignTop,
+             QString("%1 / %2").arg(o.slice + 1).arg(o.sliceCount));
+  p.drawText(text, Qt::AlignRight | Qt::AlignTop,
+             QString("W %1  L %2").arg(o.wl.width, 0, 'f', 0).arg(o.wl.level, 0, 'f', 0));
+  if (o.hasCursor) {
+    QString value = std::isnan(o.cursorValue)
+                        ? QString("outside")
+                        : QString("%1 %2").arg(o.cursorValue, 0, 'f', 0).arg(
+                              QString::fromStdString(o.unit));
+    p.drawText(text, Qt::AlignLeft | Qt::AlignBottom,
+               QString("%1\n(%2, %3, %4) mm")
+                   .arg(value)
+                   .arg(o.cursorMm.x, 0, 'f', 1)
+                   .arg(o.cursorMm.y, 0, 'f', 1)
+                   .arg(o.cursorMm.z, 0, 'f', 1));
+  }
+  drawScaleBar(p, o.mmPerWidgetPixel, r);
+}
+
+}  // namespace voxray::ui

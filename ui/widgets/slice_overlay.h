@@ -1,0 +1,37 @@
+#pragma once
+// What a slice view draws over the slice: orientation letters, the crosshair, the clip box
+// edges, slice number, window/level, the value and position under the cursor, a scale bar.
+#include <array>
+#include <functional>
+#include <string>
+
+#include <QPainter>
+
+#include "slice_clip.h"
+#include "window_level.h"
+
+namespace voxray::ui {
+
+struct SliceOverlay {
+  SliceAxes axes;
+  glm::dvec2 crosshair{0.0};
+  std::array<SliceClipEdge, 4> clipEdges{};
+  bool showClip = false;
+  bool clipActive = true;  // the slice lies inside the box across the view
+  int slice = 0, sliceCount = 0;
+  WindowLevel wl;
+  double mmPerWidgetPixel = 1.0;
+  bool hasCursor = false;
+  double cursorValue = 0.0;
+  glm::dvec3 cursorMm{0.0};
+  std::string unit;
+};
+
+using SliceToWidget = std::function<QPointF(double u, double v)>;
+void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& widget,
+                      const SliceToWidget& toWidget);
+
+// A round scale-bar length (1, 2 or 5 times a power of ten) near TARGET_MM.
+double niceLengthMm(double targetMm);
+
+}  // namespace voxray::ui

@@ -1,0 +1,227 @@
+#include "slice_view.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include "qt_image.h"
+#include "slice_clip.h"
+#include "slice_image.h"
+#include "slice_overlay.h"
+
+namespace voxray::ui {
+
+namespace {
+constexpr double kEdgePickPixels = 6.0;
+}
+
+SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crosshair,
+                     WindowLevelModel& wl, RenderStateModel& state, QWidget* parent)
+    : QWidget(parent), orientation_(o), doc_(doc), crosshair_(crosshair), wl_(wl), state_(state) {
+  setFocusPolicy(Qt::StrongFocus);
+  setMouseTracking(true);
+  setMinimumSize(120, 120);
+  docConnection_ = doc_.changed.connect([this] {
+    zoom_ = 1.0;
+    pan_ = {};
+    rebuild();
+  });
+  crossConnection_ = crosshair_.changed.connect([this] { rebuild(); });
+  wlConnection_ = wl_.changed.connect([this] { rebuild(); });
+  stateConnection_ = state_.changed.connect([this](unsigned what) {
+    if (what & kClip) update();
+  });
+  rebuild();
+}
+
+SliceView::~SliceView() {
+  doc_.changed.disconnect(docConnection_);
+  crosshair_.changed.disconnect(crossConnection_);
+  wl_.changed.disconnect(wlConnection_);
+  state_.changed.disconnect(stateConnection_);
+}
+
+void SliceView::setAnnotations(bool on) {
+  annotations_ = on;
+  update();
+}
+
+void SliceView::rebuild() {
+  if (doc_.empty()) {
+    image_ = {};
+  } else {
+    const Volume& v = *doc_.volume();
+    axes_ = sliceAxes(v.direction, orientation_);
+    image_ = toQImage(renderSlice(v, axes_, crosshair_.sliceOf(axes_), wl_.value()));
+  }
+  update();
+}
+
+QRectF SliceView::sliceRect() const {
+  if (doc_.empty() || image_.isNull()) return {};
+  const Volume& v = *doc_.volume();
+  // Pixels are not square when the spacing differs: size the image in millimetres.
+  double wMm = image_.width() * v.spacingMm[axes_.uAxis];
+  double hMm = image_.height() * v.spacingMm[axes_.vAxis];
+  double scale = std::min(width() / wMm, height() / hMm) * zoom_;
+  QSizeF s(wMm * scale, hMm * scale);
+  QPointF topLeft((width() - s.width()) / 2 + pan_.x(), (height() - s.height()) / 2 + pan_.y());
+  return {topLeft, s};
+}
+
+QPointF SliceView::toWidget(double u, double v) const {
+  QRectF r = sliceRect();
+  if (r.isEmpty()) return {};
+  return {r.left() + u / image_.width() * r.width(), r.top() + v / image_.height() * r.height()};
+}
+
+glm::dvec2 SliceView::toSlice(QPointF p) const {
+  QRectF r = sliceRect();
+  if (r.isEmpty()) return {0, 0};
+  return {(p.x() - r.left()) / r.width() * image_.width(),
+          (p.y() - r.top()) / r.height() * image_.height()};
+}
+
+int SliceView::pickClipEdge(QPointF p) const {
+  if (doc_.empty() || state_.params().clip.isFull()) return -1;  // no box drawn: no handles
+  int best = -1;
+  double bestDist = kEdgePickPixels;
+  for (const auto& e : sliceClipEdges(axes_, doc_.volume()->dims, state_.params().clip)) {
+    QPointF at = e.vertical ? toWidget(e.position, 0) : toWidget(0, e.position);
+    double d = e.vertical ? std::abs(at.x() - p.x()) : std::abs(at.y() - p.y());
+    if (d <= bestDist) {
+      bestDist = d;
+      best = e.face;
+    }
+  }
+  return best;
+}
+
+void SliceView::paintEvent(QPaintEvent*) {
+  QPainter p(this);
+  p.fillRect(rect(), Qt::black);
+  if (image_.isNull()) return;
+  p.drawImage(sliceRect(), image_);
+  paintOverlay(p);
+}
+
+void SliceView::paintOverlay(QPainter& p) {
+  const Volume& v = *doc_.volume();
+  SliceOverlay o;
+  o.axes = axes_;
+  o.crosshair = voxelToSlice(axes_, v.dims, glm::dvec3(crosshair_.voxel()));
+  o.clipEdges = sliceClipEdges(axes_, v.dims, state_.params().clip);
+  o.showClip = !state_.params().clip.isFull() || dragFace_ >= 0;
+  o.clipActive = sliceInsideClip(axes_, v.dims, state_.params().clip, crosshair_.sliceOf(axes_));
+  o.slice = crosshair_.sliceOf(axes_);
+  o.sliceCount = v.dims[axes_.nAxis];
+  o.wl = wl_.value();
+  o.mmPerWidgetPixel = image_.width() * v.spacingMm[axes_.uAxis] / sliceRect().width();
+  if (annotations_ && rect().contains(hover_.toPoint())) {
+    glm::dvec2 s = toSlice(hover_);
+    glm::dvec3 voxel = sliceToVoxel(axes_, v.dims, s.x, s.y, o.slice);
+    o.hasCursor = true;
+    o.cursorValue = sampleValue(v, voxel);
+    o.cursorMm = voxelToPatientMm(v, glm::round(voxel));
+    o.unit = v.unit;
+  }
+  drawSliceOverlay(p, o, rect(), [this](double u, double vv) { return toWidget(u, vv); });
+}
+
+void SliceView::mousePressEvent(QMouseEvent* e) {
+  lastPos_ = dragStart_ = e->position();
+  drag_ = Drag::None;
+  if (doc_.empty()) return;
+  if (e->button() == Qt::LeftButton) {
+    dragFace_ = pickClipEdge(e->position());
+    drag_ = dragFace_ >= 0 ? Drag::ClipEdge : Drag::Crosshair;
+    if (drag_ == Drag::Crosshair) {
+      glm::dvec2 s = toSlice(e->position());
+      crosshair_.clickInView(axes_, s.x, s.y);
+    }
+  } else if (e->button() == Qt::RightButton) {
+    drag_ = Drag::WindowLevel;
+    dragStartWl_ = wl_.value();
+  } else if (e->button() == Qt::MiddleButton) {
+    drag_ = Drag::Pan;
+  }
+}
+
+void SliceView::mouseMoveEvent(QMouseEvent* e) {
+  hover_ = e->position();
+  QPointF d = e->position() - lastPos_;
+  lastPos_ = e->position();
+  glm::dvec2 s = toSlice(e->position());
+  switch (drag_) {
+    case Drag::Crosshair:
+      crosshair_.clickInView(axes_, s.x, s.y);
+      break;
+    case Drag::ClipEdge: {
+      const auto& edges = sliceClipEdges(axes_, doc_.volume()->dims, state_.params().clip);
+      bool vertical = false;
+      for (const auto& edge : edges)
+        if (edge.face == dragFace_) vertical = edge.vertical;
+      state_.update(kClip, [&](RenderParams& p) {
+        dragSliceClipEdge(p.clip, axes_, doc_.volume()->dims, dragFace_, vertical ? s.x : s.y);
+      });
+      break;
+    }
+    case Drag::WindowLevel: {
+      QPointF total = e->position() - dragStart_;
+      wl_.set(dragWindowLevel(dragStartWl_, total.x(), total.y()));
+      break;
+    }
+    case Drag::Pan:
+      pan_ += d;
+      break;
+    case Drag::None:
+      break;
+  }
+  update();
+}
+
+void SliceView::mouseReleaseEvent(QMouseEvent*) {
+  drag_ = Drag::None;
+  dragFace_ = -1;
+  update();
+}
+
+void SliceView::mouseDoubleClickEvent(QMouseEvent*) { emit doubleClicked(); }
+
+void SliceView::wheelEvent(QWheelEvent* e) {
+  int notches = e->angleDelta().y() / 120;
+  if (e->modifiers() & Qt::ControlModifier) {
+    zoom_ = std::clamp(zoom_ * std::pow(1.15, notches), 0.25, 32.0);
+    update();
+  } else {
+    crosshair_.scrollView(axes_, notches);
+  }
+}
+
+void SliceView::keyPressEvent(QKeyEvent* e) {
+  switch (e->key()) {
+    case Qt::Key_Up:
+    case Qt::Key_Right:
+      crosshair_.scrollView(axes_, 1);
+      break;
+    case Qt::Key_Down:
+    case Qt::Key_Left:
+      crosshair_.scrollView(axes_, -1);
+      break;
+    case Qt::Key_PageUp:
+      crosshair_.scrollView(axes_, 10);
+      break;
+    case Qt::Key_PageDown:
+      crosshair_.scrollView(axes_, -10);
+      break;
+    default:
+      QWidget::keyPressEvent(e);
+  }
+}
+
+void SliceView::leaveEvent(QEvent*) {
+  hover_ = {-1, -1};
+  update();
+}
+
+}  // namespace voxray::ui

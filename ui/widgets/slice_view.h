@@ -1,0 +1,71 @@
+#pragma once
+// One slice view (axial, coronal or sagittal) bound to the shared crosshair, window/level
+// and render-state models. Left click/drag moves the crosshair (or a clip-box edge when
+// grabbed), right-drag changes window/level, middle-drag pans, wheel or arrow keys scroll
+// slices, Ctrl+wheel zooms, double-click maximises.
+#include <QImage>
+#include <QWidget>
+
+#include "crosshair_model.h"
+#include "render_state_model.h"
+#include "slice_geometry.h"
+#include "volume_document.h"
+#include "window_level.h"
+
+namespace voxray::ui {
+
+class SliceView : public QWidget {
+  Q_OBJECT
+ public:
+  SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crosshair, WindowLevelModel& wl,
+            RenderStateModel& state, QWidget* parent = nullptr);
+  ~SliceView() override;
+
+  Orientation orientation() const { return orientation_; }
+  const SliceAxes& axes() const { return axes_; }
+  const QImage& sliceImage() const { return image_; }  // one pixel per voxel, W/L applied
+  // Widget position of slice coordinates (u, v) and back.
+  QPointF toWidget(double u, double v) const;
+  glm::dvec2 toSlice(QPointF widget) const;
+  // Hides the cursor readout and file name (screenshots carry no data unless asked).
+  void setAnnotations(bool on);
+
+ signals:
+  void doubleClicked();
+
+ protected:
+  void paintEvent(QPaintEvent*) override;
+  void mousePressEvent(QMouseEvent*) override;
+  void mouseMoveEvent(QMouseEvent*) override;
+  void mouseReleaseEvent(QMouseEvent*) override;
+  void mouseDoubleClickEvent(QMouseEvent*) override;
+  void wheelEvent(QWheelEvent*) override;
+  void keyPressEvent(QKeyEvent*) override;
+  void leaveEvent(QEvent*) override;
+
+ private:
+  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan };
+  void rebuild();  // new volume, slice or window: redraw the slice image
+  QRectF sliceRect() const;
+  int pickClipEdge(QPointF widget) const;  // face number, or -1
+  void paintOverlay(QPainter& p);
+
+  Orientation orientation_;
+  VolumeDocument& doc_;
+  CrosshairModel& crosshair_;
+  WindowLevelModel& wl_;
+  RenderStateModel& state_;
+  SliceAxes axes_;
+  QImage image_;
+  double zoom_ = 1.0;
+  QPointF pan_;
+  Drag drag_ = Drag::None;
+  int dragFace_ = -1;
+  QPointF lastPos_, dragStart_;
+  WindowLevel dragStartWl_;
+  QPointF hover_{-1, -1};
+  bool annotations_ = true;
+  int docConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0, stateConnection_ = 0;
+};
+
+}  // namespace voxray::ui

@@ -1,0 +1,28 @@
+#pragma once
+// The voxray command line: an input with voxray-cli's raw-layout flags, every declared
+// render parameter as --KEY VALUE (the same keys as voxray-cli render), and the smoke-test
+// switches --screenshot FILE and --quit-after-first-frame.
+#include <map>
+#include <optional>
+#include <string>
+
+#include <QStringList>
+
+#include "voxray/io/load.h"
+
+namespace voxray::ui {
+
+struct StartOptions {
+  std::string input;  // empty: the embedded head phantom
+  LoadOptions load;   // raw layout and series (no progress or cancel yet)
+  std::map<std::string, std::string> renderValues;  // --KEY VALUE of renderParamSpecs()
+  std::string device;
+  std::string screenshot;
+  bool quitAfterFirstFrame = false;
+  bool resetSettings = false;  // start from defaults, ignoring saved state
+};
+
+// Throws Error (Input) for a malformed value; --help and --version exit like Qt's parser.
+StartOptions parseStartOptions(const QStringList& arguments);
+
+}  // namespace voxray::ui

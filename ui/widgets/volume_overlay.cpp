@@ -1,0 +1,93 @@
+#include "volume_overlay.h"
+
+#include <array>
+#include <optional>
+
+#include "clip_box_math.h"
+#include "light_gizmo.h"
+#include "slice_geometry.h"
+#include "voxray/io/volume.h"
+
+namespace voxray::ui {
+
+namespace {
+
+constexpr double kHandleRadius = 6.0;
+
+std::optional<QPointF> screen(const ViewProjection& view, const glm::dvec3& world) {
+  auto s = view.project(world);
+  if (!s) return std::nullopt;
+  return QPointF(s->x, s->y);
+}
+
+// Draws the 12 edges of the box [lo, hi] given in voxel coordinates.
+void drawVoxelBox(QPainter& p, const Volume& v, const glm::dvec3& lo, const glm::dvec3& hi,
+                  const ViewProjection& view) {
+  std::array<std::optional<QPointF>, 8> corner;
+  for (int c = 0; c < 8; ++c) {
+    glm::dvec3 at((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    corner[size_t(c)] = screen(view, voxelToWorldMm(v, at));
+  }
+  for (int c = 0; c < 8; ++c) {
+    for (int bit : {1, 2, 4}) {
+      int d = c | bit;
+      if (d == c || !corner[size_t(c)] || !corner[size_t(d)]) continue;
+      p.drawLine(*corner[size_t(c)], *corner[size_t(d)]);
+    }
+  }
+}
+
+}  // namespace
+
+QColor planeColor(int normalAxis) {
+  // Slicer's habit: axial red, sagittal yellow, coronal green (for LPS-aligned data).
+  static const QColor colors[] = {QColor(230, 200, 40), QColor(60, 190, 60), QColor(220, 60, 60)};
+  return colors[normalAxis % 3];
+}
+
+void drawClipBox(QPainter& p, const Volume& v, const ClipBox& box, const ViewProjection& view,
+                 int activeFace) {
+  p.setPen(QPen(QColor(255, 200, 0, 200), 1.0));
+  p.setBrush(Qt::NoBrush);
+  drawVoxelBox(p, v, fractionToVoxel(v.dims, box.lo), fractionToVoxel(v.dims, box.hi), view);
+  for (int face = 0; face < kFaceCount; ++face) {
+    auto c = screen(view, clipFaceCentreWorld(v, box, face));
+    if (!c) continue;
+    bool active = face == activeFace;
+    p.setPen(QPen(Qt::black, 1.0));
+    p.setBrush(active ? QColor(255, 255, 255) : QColor(255, 200, 0));
+    p.drawEllipse(*c, kHandleRadius, kHandleRadius);
+  }
+}
+
+void drawLightHandle(QPainter& p, const Volume& v, const RenderParams& params,
+                     const ViewProjection& view, bool active) {
+  auto centre = screen(view, glm::dvec3(0.0));
+  auto handle = screen(view, lightHandleWorld(v, params));
+  if (!centre || !handle) return;
+  p.setPen(QPen(QColor(255, 255, 160, 160), 1.0, Qt::DashLine));
+  p.drawLine(*centre, *handle);
+  p.setPen(QPen(Qt::black, 1.0));
+  p.setBrush(active ? QColor(255, 255, 255) : QColor(255, 240, 120));
+  p.drawEllipse(*handle, kHandleRadius + 3, kHandleRadius + 3);
+  p.setPen(QPen(QColor(255, 240, 120), 1.5));
+  for (int ray = 0; ray < 8; ++ray) {  // sun rays: this handle is the light
+    QLineF l = QLineF::fromPolar(kHandleRadius + 9, ray * 45.0);
+    QLineF inner = QLineF::fromPolar(kHandleRadius + 5, ray * 45.0);
+    p.drawLine(*handle + inner.p2(), *handle + l.p2());
+  }
+}
+
+void drawCrosshairPlanes(QPainter& p, const Volume& v, const glm::ivec3& voxel,
+                         const ViewProjection& view) {
+  glm::dvec3 lo(-0.5), hi = glm::dvec3(v.dims) - 0.5;
+  p.setBrush(Qt::NoBrush);
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::dvec3 a = lo, b = hi;
+    a[axis] = b[axis] = voxel[axis];
+    p.setPen(QPen(planeColor(axis), 1.0));
+    drawVoxelBox(p, v, a, b, view);
+  }
+}
+
+}  // namespace voxray::ui

@@ -1,0 +1,21 @@
+#pragma once
+// What the 3D view draws over the rendered image: the clip box with its face handles, the
+// light handle, and the outlines of the three slice planes. Coordinates are the image's.
+#include <QPainter>
+
+#include "view_projection.h"
+#include "voxray/engine/render_params.h"
+
+namespace voxray::ui {
+
+void drawClipBox(QPainter& p, const Volume& v, const ClipBox& box, const ViewProjection& view,
+                 int activeFace);
+void drawLightHandle(QPainter& p, const Volume& v, const RenderParams& params,
+                     const ViewProjection& view, bool active);
+void drawCrosshairPlanes(QPainter& p, const Volume& v, const glm::ivec3& voxel,
+                         const ViewProjection& view);
+
+// The colours the slice views use for their frames, so the 3D planes can be matched.
+QColor planeColor(int normalAxis);
+
+}  // namespace voxray::ui

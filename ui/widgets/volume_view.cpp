@@ -1,0 +1,201 @@
+#include "volume_view.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include "camera_control.h"
+#include "clip_box_math.h"
+#include "light_gizmo.h"
+#include "qt_image.h"
+#include "volume_overlay.h"
+
+namespace voxray::ui {
+
+namespace {
+constexpr double kKeyRotateDeg = 5.0;  // one arrow key press (the seed's step)
+constexpr double kWheelZoomPerNotch = 1.1;
+constexpr double kLightPickPixels = 14.0;
+}  // namespace
+
+VolumeView::VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairModel& crosshair,
+                       RenderScheduler& scheduler, QWidget* parent)
+    : QWidget(parent), state_(state), doc_(doc), crosshair_(crosshair), scheduler_(scheduler) {
+  setFocusPolicy(Qt::StrongFocus);
+  setMinimumSize(160, 120);
+  setMouseTracking(false);
+  connect(&scheduler_, &RenderScheduler::frameReady, this,
+          [this](std::shared_ptr<const Frame> f) {
+            frame_ = toQImage(f->image);
+            frameInteractive_ = f->interactive;
+            update();
+          });
+  stateConnection_ = state_.changed.connect([this](unsigned) { update(); });
+  crosshairConnection_ = crosshair_.changed.connect([this] {
+    if (showPlanes_) update();
+  });
+}
+
+VolumeView::~VolumeView() {
+  state_.changed.disconnect(stateConnection_);
+  crosshair_.changed.disconnect(crosshairConnection_);
+}
+
+void VolumeView::setShowClipHandles(bool on) {
+  showClip_ = on;
+  update();
+}
+void VolumeView::setShowLightGizmo(bool on) {
+  showLight_ = on;
+  update();
+}
+void VolumeView::setShowPlanes(bool on) {
+  showPlanes_ = on;
+  update();
+}
+
+QRect VolumeView::imageRect() const {
+  RenderParams p = scheduler_.fullParams();
+  QSize image(p.width, p.height);
+  image.scale(size(), Qt::KeepAspectRatio);
+  return QRect(QPoint((width() - image.width()) / 2, (height() - image.height()) / 2), image);
+}
+
+std::optional<ViewProjection> VolumeView::projection() const {
+  if (doc_.empty()) return std::nullopt;
+  QRect r = imageRect();
+  return makeViewProjection(*doc_.volume(), scheduler_.fullParams(),
+                            glm::dvec2(r.width(), r.height()));
+}
+
+glm::dvec2 VolumeView::toImage(QPointF p) const {
+  QRect r = imageRect();
+  return {p.x() - r.left(), p.y() - r.top()};
+}
+
+void VolumeView::paintEvent(QPaintEvent*) {
+  QPainter painter(this);
+  painter.fillRect(rect(), Qt::black);
+  QRect r = imageRect();
+  if (!frame_.isNull()) painter.drawImage(r, frame_);
+  auto proj = projection();
+  if (!proj) return;
+  painter.translate(r.topLeft());
+  painter.setRenderHint(QPainter::Antialiasing);
+  const Volume& v = *doc_.volume();
+  if (showPlanes_) drawCrosshairPlanes(painter, v, crosshair_.voxel(), *proj);
+  if (showClip_) drawClipBox(painter, v, state_.params().clip, *proj, dragFace_);
+  if (showLight_) drawLightHandle(painter, v, state_.params(), *proj, drag_ == Drag::Light);
+}
+
+void VolumeView::resizeEvent(QResizeEvent*) { scheduler_.setViewSize(size()); }
+
+void VolumeView::mousePressEvent(QMouseEvent* e) {
+  dragStart_ = lastPos_ = e->position();
+  auto proj = projection();
+  drag_ = Drag::None;
+  if (e->button() == Qt::LeftButton && proj && !(e->modifiers() & Qt::ShiftModifier)) {
+    const Volume& v = *doc_.volume();
+    glm::dvec2 at = toImage(e->position());
+    auto light = proj->project(lightHandleWorld(v, state_.params()));
+    if (showLight_ && light && glm::distance(*light, at) <= kLightPickPixels) {
+      drag_ = Drag::Light;
+    } else if (auto face = showClip_ ? pickClipFace(v, state_.params().clip, *proj, at)
+                                     : std::nullopt) {
+      drag_ = Drag::ClipFace;
+      dragFace_ = *face;
+      dragStartBox_ = state_.params().clip;
+    }
+  }
+  if (drag_ == Drag::None) {
+    if (e->button() == Qt::MiddleButton ||
+        (e->button() == Qt::LeftButton && (e->modifiers() & Qt::ShiftModifier)))
+      drag_ = Drag::Pan;
+    else if (e->button() == Qt::RightButton)
+      drag_ = Drag::Zoom;
+    else if (e->button() == Qt::LeftButton)
+      drag_ = Drag::Rotate;
+  }
+  if (drag_ != Drag::None) scheduler_.beginInteraction();
+  update();
+}
+
+void VolumeView::mouseMoveEvent(QMouseEvent* e) {
+  if (drag_ == Drag::None || doc_.empty()) return;
+  QPointF d = e->position() - lastPos_;
+  lastPos_ = e->position();
+  scheduler_.beginInteraction();
+  const Volume& v = *doc_.volume();
+  switch (drag_) {
+    case Drag::Rotate:
+      state_.update(kCamera, [&](RenderParams& p) { orbit(p.camera, d.x(), d.y()); });
+      break;
+    case Drag::Zoom:
+      state_.update(kCamera, [&](RenderParams& p) { zoomBy(p.camera, std::pow(1.01, -d.y())); });
+      break;
+    case Drag::Pan: {
+      double mm = projection() ? projection()->mmPerPixel() : 1.0;
+      state_.update(kCamera, [&](RenderParams& p) { panBy(p.camera, d.x(), d.y(), mm); });
+      break;
+    }
+    case Drag::ClipFace: {
+      QPointF total = e->position() - dragStart_;
+      ClipBox box = dragClipFace(v, dragStartBox_, *projection(), dragFace_,
+                                 glm::dvec2(total.x(), total.y()));
+      state_.update(kClip, [&](RenderParams& p) { p.clip = box; });
+      break;
+    }
+    case Drag::Light: {
+      LightParams l = lightFromScreen(v, state_.params(), *projection(), toImage(e->position()));
+      state_.update(kLight, [&](RenderParams& p) { p.light = l; });
+      break;
+    }
+    case Drag::None:
+      break;
+  }
+}
+
+void VolumeView::mouseReleaseEvent(QMouseEvent*) {
+  if (drag_ == Drag::None) return;
+  drag_ = Drag::None;
+  dragFace_ = -1;
+  scheduler_.endInteraction();
+  update();
+}
+
+void VolumeView::mouseDoubleClickEvent(QMouseEvent*) { emit doubleClicked(); }
+
+void VolumeView::wheelEvent(QWheelEvent* e) {
+  double notches = e->angleDelta().y() / 120.0;
+  scheduler_.beginInteraction();
+  state_.update(kCamera, [&](RenderParams& p) { zoomBy(p.camera, std::pow(kWheelZoomPerNotch, notches)); });
+}
+
+void VolumeView::keyPressEvent(QKeyEvent* e) {
+  double dAz = 0, dEl = 0;
+  switch (e->key()) {
+    case Qt::Key_Left:
+      dAz = -kKeyRotateDeg;
+      break;
+    case Qt::Key_Right:
+      dAz = kKeyRotateDeg;
+      break;
+    case Qt::Key_Up:
+      dEl = kKeyRotateDeg;
+      break;
+    case Qt::Key_Down:
+      dEl = -kKeyRotateDeg;
+      break;
+    case Qt::Key_R:
+      state_.update(kCamera, [](RenderParams& p) { resetCamera(p.camera); });
+      return;
+    default:
+      QWidget::keyPressEvent(e);
+      return;
+  }
+  // Same sense as dragging: the key turns the volume the way the arrow points.
+  state_.update(kCamera, [&](RenderParams& p) { orbit(p.camera, dAz, -dEl, 1.0); });
+}
+
+}  // namespace voxray::ui

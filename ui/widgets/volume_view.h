@@ -1,0 +1,68 @@
+#pragma once
+// The 3D raycast view: shows the render thread's latest frame and turns the mouse into
+// camera, clip-box and light edits on the RenderStateModel. Left-drag rotates, wheel or
+// right-drag zooms, middle-drag or Shift+left pans, arrow keys rotate; dragging a clip-box
+// face handle moves that face; dragging the sun-shaped handle moves the light.
+#include <memory>
+#include <optional>
+
+#include <QImage>
+#include <QWidget>
+
+#include "crosshair_model.h"
+#include "render_scheduler.h"
+#include "view_projection.h"
+
+namespace voxray::ui {
+
+class VolumeView : public QWidget {
+  Q_OBJECT
+ public:
+  VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairModel& crosshair,
+             RenderScheduler& scheduler, QWidget* parent = nullptr);
+  ~VolumeView() override;
+
+  void setShowClipHandles(bool on);
+  void setShowLightGizmo(bool on);
+  void setShowPlanes(bool on);
+  bool showClipHandles() const { return showClip_; }
+  bool showLightGizmo() const { return showLight_; }
+  bool showPlanes() const { return showPlanes_; }
+  const QImage& lastFrame() const { return frame_; }
+  bool lastFrameInteractive() const { return frameInteractive_; }
+  // Where the 3D image is drawn inside the widget, and its projection (for overlays, tests).
+  QRect imageRect() const;
+  std::optional<ViewProjection> projection() const;
+
+ signals:
+  void doubleClicked();
+
+ protected:
+  void paintEvent(QPaintEvent*) override;
+  void resizeEvent(QResizeEvent*) override;
+  void mousePressEvent(QMouseEvent*) override;
+  void mouseMoveEvent(QMouseEvent*) override;
+  void mouseReleaseEvent(QMouseEvent*) override;
+  void mouseDoubleClickEvent(QMouseEvent*) override;
+  void wheelEvent(QWheelEvent*) override;
+  void keyPressEvent(QKeyEvent*) override;
+
+ private:
+  enum class Drag { None, Rotate, Pan, Zoom, ClipFace, Light };
+  glm::dvec2 toImage(QPointF p) const;
+
+  RenderStateModel& state_;
+  VolumeDocument& doc_;
+  CrosshairModel& crosshair_;
+  RenderScheduler& scheduler_;
+  QImage frame_;
+  bool frameInteractive_ = false;
+  bool showClip_ = true, showLight_ = true, showPlanes_ = false;
+  Drag drag_ = Drag::None;
+  QPointF dragStart_, lastPos_;
+  int dragFace_ = -1;
+  ClipBox dragStartBox_;
+  int stateConnection_ = 0, crosshairConnection_ = 0;
+};
+
+}  // namespace voxray::ui
