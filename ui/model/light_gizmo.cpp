@@ -41,21 +41,20 @@ LightParams lightFromScreen(const Volume& v, const RenderParams& p, const ViewPr
                             const glm::dvec2& screen) {
   const ViewGeometry& g = view.g;
   double sphereMm = kGizmoRadius * volumeRadius(v);
-  // Screen offset from the projected centre, in mm at the centre's depth.
-  auto centre = view.project(glm::dvec3(0.0));
-  if (!centre) return p.light;
-  glm::dvec2 offset = (screen - *centre) * view.mmPerPixel();
-  double x = offset.x / sphereMm, y = -offset.y / sphereMm;
-  double r2 = x * x + y * y;
-  if (r2 > 1.0) {
-    x /= std::sqrt(r2);
-    y /= std::sqrt(r2);
-    r2 = 1.0;
-  }
-  double z = std::sqrt(1.0 - r2);  // towards the viewer: the lit side faces the user
-  glm::dvec3 dir = g.right * x + g.up * y - g.forward * z;
-  // The light sits a little beyond the handle so that it stays outside the volume.
-  return placeLight(v, p, dir * (2.0 * sphereMm));
+  // The ray under the mouse (continuous pixel coordinates, as ViewGeometry::ray).
+  double sx = (2.0 * screen.x / view.size.x - 1.0) * g.halfHeight * g.aspect;
+  double sy = (1.0 - 2.0 * screen.y / view.size.y) * g.halfHeight;
+  glm::dvec3 origin = g.orthographic ? g.eye + g.right * sx + g.up * sy : g.eye;
+  glm::dvec3 dir = g.orthographic ? g.forward : glm::normalize(g.forward + g.right * sx + g.up * sy);
+  // Its first hit on the gizmo sphere; a ray that misses takes the nearest point of the
+  // sphere's outline, so the handle follows the mouse around the rim.
+  double tClosest = -glm::dot(origin, dir);
+  glm::dvec3 closest = origin + dir * tClosest;
+  double d2 = glm::dot(closest, closest), r2 = sphereMm * sphereMm;
+  glm::dvec3 onSphere = d2 < r2 ? origin + dir * (tClosest - std::sqrt(r2 - d2))
+                                : closest * (sphereMm / std::max(std::sqrt(d2), 1e-9));
+  // The light sits beyond the handle, along the same direction, outside the volume.
+  return placeLight(v, p, onSphere * 2.0);
 }
 
 LightParams withFollowCamera(const Volume& v, const RenderParams& p, bool follow) {

@@ -18,7 +18,7 @@ glm::dvec3 lightWorld(const Volume& v, const RenderParams& p);
 // Where the handle is drawn: the light's direction from the centre, on the gizmo sphere.
 glm::dvec3 lightHandleWorld(const Volume& v, const RenderParams& p);
 
-// A drag to SCREEN: the point under the mouse on the gizmo sphere's front half (outside the
+// A drag to SCREEN: the point under the mouse on the gizmo sphere's front (outside the
 // sphere's outline: on the outline) becomes the light direction. Returns the light with
 // position set in the frame light.followCamera asks for.
 LightParams lightFromScreen(const Volume& v, const RenderParams& p, const ViewProjection& view,

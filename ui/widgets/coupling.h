@@ -30,7 +30,8 @@ class ModelConnection : public QObject {
 
 // Calls SLOT on every notification for as long as OWNER lives.
 template <class... Args>
-void onModelChange(QObject* owner, Notifier<Args...>& n, std::function<void(Args...)> slot) {
+void onModelChange(QObject* owner, Notifier<Args...>& n,
+                   typename Notifier<Args...>::Slot slot) {
   new ModelConnection<Args...>(owner, n, std::move(slot));
 }
 

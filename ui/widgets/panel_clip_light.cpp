@@ -124,6 +124,7 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
   auto* box = new QGroupBox("Slices");
   auto* form = new QFormLayout(box);
   auto* preset = new QComboBox;
+  preset->setObjectName("windowLevelPreset");
   preset->addItem("(custom)");
   for (const auto& p : windowLevelPresets())
     preset->addItem(QString("%1 (%2/%3)")

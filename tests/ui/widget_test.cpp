@@ -1,0 +1,219 @@
+// QTest on the offscreen platform, driving the real widgets of a MainWindow showing a
+// 64^3 head phantom rendered at 128x96 through PoCL: each test asserts values.
+#include <QComboBox>
+#include <QMouseEvent>
+#include <QSignalSpy>
+#include <QtTest>
+
+#include "clip_box_math.h"
+#include "light_gizmo.h"
+#include "main_window.h"
+#include "slice_image.h"
+#include "slice_view.h"
+#include "volume_view.h"
+#include "voxray/io/phantom.h"
+
+using namespace voxray;
+using namespace voxray::ui;
+
+namespace {
+
+// Presses, moves in steps with the button held, and releases, as a user's drag.
+void drag(QWidget* w, QPointF from, QPointF to, Qt::MouseButton button = Qt::LeftButton) {
+  auto send = [w](QEvent::Type type, QPointF at, Qt::MouseButton b, Qt::MouseButtons held) {
+    QMouseEvent e(type, at, w->mapToGlobal(at), b, held, Qt::NoModifier);
+    QApplication::sendEvent(w, &e);
+  };
+  send(QEvent::MouseButtonPress, from, button, button);
+  for (int i = 1; i <= 8; ++i)
+    send(QEvent::MouseMove, from + (to - from) * (i / 8.0), Qt::NoButton, button);
+  send(QEvent::MouseButtonRelease, to, button, Qt::NoButton);
+}
+
+// Mean brightness of the object's (non-background) pixels left or right of the centre.
+double sideBrightness(const QImage& img, bool left) {
+  double sum = 0;
+  int n = 0;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = left ? 0 : img.width() / 2; x < (left ? img.width() / 2 : img.width()); ++x) {
+      int g = qGray(img.pixel(x, y));
+      if (g > 8) {
+        sum += g;
+        ++n;
+      }
+    }
+  return n ? sum / n : 0.0;
+}
+
+int rightmostLit(const QImage& img) {
+  int right = -1;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x)
+      if (qGray(img.pixel(x, y)) > 8) right = std::max(right, x);
+  return right;
+}
+
+int differingPixels(const QImage& a, const QImage& b) {
+  if (a.size() != b.size()) return a.width() * a.height();
+  int n = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) n += a.pixel(x, y) != b.pixel(x, y);
+  return n;
+}
+
+}  // namespace
+
+class WidgetTest : public QObject {
+  Q_OBJECT
+  std::unique_ptr<AppModels> models_;
+  std::unique_ptr<MainWindow> window_;
+
+  // Waits until the 3D view shows a full-quality frame rendered after this call.
+  QImage waitFullFrame() {
+    QSignalSpy spy(&window_->scheduler(), &RenderScheduler::frameReady);
+    for (int tries = 0; tries < 600; ++tries) {
+      if (!spy.isEmpty()) {
+        auto f = spy.takeLast().at(0).value<std::shared_ptr<const Frame>>();
+        if (!f->interactive) {
+          QCoreApplication::processEvents();
+          return window_->volumeView().lastFrame();
+        }
+      }
+      spy.wait(100);
+    }
+    qFatal("no full-quality frame within 60 s");
+  }
+
+  QPointF handleOnWidget(const glm::dvec3& world) {
+    VolumeView& view = window_->volumeView();
+    auto at = view.projection()->project(world);
+    if (!at) qFatal("handle behind the camera");
+    return QPointF(at->x, at->y) + view.imageRect().topLeft();
+  }
+
+ private slots:
+  void init() {
+    models_ = std::make_unique<AppModels>();
+    window_ = std::make_unique<MainWindow>(*models_, "cpu");
+    Quality q;
+    q.resolution = {128, 96};
+    models_->render.setQuality(q);
+    window_->resize(900, 700);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    auto v = std::make_shared<const Volume>(makeHeadPhantom(64));
+    models_->crosshair.setDims(v->dims);
+    models_->document.set(v, "phantom");
+    waitFullFrame();
+  }
+
+  void cleanup() {
+    window_.reset();
+    models_.reset();
+  }
+
+  void clipHandleDragChangesBoxAndImage() {
+    QImage before = window_->volumeView().lastFrame();
+    const Volume& v = *models_->document.volume();
+    // The +x face (patient left) is on the screen's right in the anterior view.
+    QPointF handle = handleOnWidget(clipFaceCentreWorld(v, models_->render.params().clip, 1));
+    QPointF centre = handleOnWidget(glm::dvec3(0.0));
+    QVERIFY(handle.x() > centre.x() + 20);
+    drag(&window_->volumeView(), handle, handle + (centre - handle) * 0.8);
+    const ClipBox& box = models_->render.params().clip;
+    QVERIFY2(box.hi.x < 0.7 && box.hi.x > 0.5, qPrintable(QString::number(box.hi.x)));
+    QCOMPARE(box.lo.x, 0.0);
+    QCOMPARE(box.hi.y, 1.0);
+    QImage after = waitFullFrame();
+    QCOMPARE(after.size(), before.size());
+    // The patient's left (screen right) is cut away: the object ends further left.
+    QVERIFY2(rightmostLit(after) < rightmostLit(before) - 5,
+             qPrintable(QString("%1 %2").arg(rightmostLit(before)).arg(rightmostLit(after))));
+    QVERIFY(differingPixels(before, after) > 100);
+  }
+
+  void lightDragLightsExpectedSide() {
+    VolumeView& view = window_->volumeView();
+    const Volume& v = *models_->document.volume();
+    QPointF centre = handleOnWidget(glm::dvec3(0.0));
+    double reach = view.imageRect().height() * 0.45;
+    for (bool toLeft : {true, false}) {
+      QPointF handle = handleOnWidget(lightHandleWorld(v, models_->render.params()));
+      QPointF target = centre + QPointF(toLeft ? -reach : reach, 0);
+      drag(&view, handle, target);
+      glm::dvec3 light = lightWorld(v, models_->render.params());
+      QVERIFY(toLeft ? light.x < 0 : light.x > 0);  // screen left = patient right (-x)
+      QImage img = waitFullFrame();
+      double left = sideBrightness(img, true), right = sideBrightness(img, false);
+      QVERIFY2(toLeft ? left > right + 5 : right > left + 5,
+               qPrintable(QString("left %1 right %2").arg(left).arg(right)));
+    }
+  }
+
+  void windowLevelPresetSetsSlicePixels() {
+    auto* combo = window_->findChild<QComboBox*>("windowLevelPreset");
+    QVERIFY(combo);
+    SliceView& axial = window_->sliceView(0);
+    const Volume& v = *models_->document.volume();
+    glm::ivec3 c = models_->crosshair.voxel();
+    glm::dvec2 at = voxelToSlice(axial.axes(), v.dims, glm::dvec3(c));
+    QPoint pixel(int(at.x), int(at.y));
+    double hu = sampleValue(v, glm::dvec3(c));
+    for (const char* name : {"Brain", "Bone", "Lung"}) {
+      int index = combo->findText(name, Qt::MatchStartsWith);
+      QVERIFY(index > 0);
+      combo->setCurrentIndex(index);
+      WindowLevel wl = models_->windowLevel.value();
+      QCOMPARE(qGray(axial.sliceImage().pixel(pixel)), int(mapToGrey(hu, wl)));
+      double air = sampleValue(v, sliceToVoxel(axial.axes(), v.dims, 0.5, 0.5, c.z));
+      QCOMPARE(qGray(axial.sliceImage().pixel(0, 0)), int(mapToGrey(air, wl)));
+    }
+    QCOMPARE(qGray(axial.sliceImage().pixel(0, 0)), 60);  // air (-1000 HU) in the lung window
+    QCOMPARE(models_->windowLevel.value().width, 1500.0);
+    QCOMPARE(models_->windowLevel.value().level, -600.0);
+    // Brain window: 40 HU soft tissue is mid-grey.
+    combo->setCurrentIndex(combo->findText("Brain", Qt::MatchStartsWith));
+    QCOMPARE(int(mapToGrey(40, models_->windowLevel.value())), 128);
+  }
+
+  void axialClickMovesOtherSlices() {
+    SliceView& axial = window_->sliceView(0);
+    SliceView& coronal = window_->sliceView(1);
+    SliceView& sagittal = window_->sliceView(2);
+    int axialSlice = models_->crosshair.sliceOf(axial.axes());
+    QImage coronalBefore = coronal.sliceImage();
+    QPointF click = axial.toWidget(40.5, 20.5);  // slice pixel (40, 20): patient left, anterior
+    QTest::mouseClick(&axial, Qt::LeftButton, Qt::NoModifier, click.toPoint());
+    glm::dvec2 s = axial.toSlice(click.toPoint());
+    QCOMPARE(models_->crosshair.sliceOf(sagittal.axes()), int(s.x));  // x
+    QCOMPARE(models_->crosshair.sliceOf(coronal.axes()), int(s.y));   // y
+    QCOMPARE(models_->crosshair.sliceOf(axial.axes()), axialSlice);
+    const Volume& v = *models_->document.volume();
+    QImage expected = toQImageForTest(
+        renderSlice(v, coronal.axes(), int(s.y), models_->windowLevel.value()));
+    QCOMPARE(coronal.sliceImage(), expected);
+    QVERIFY(coronal.sliceImage() != coronalBefore);
+  }
+
+  void sliceEdgeDragMovesClipBox() {
+    models_->render.update(kClip, [](RenderParams& p) { p.clip.lo = {0.1, 0.1, 0.1}; });
+    SliceView& axial = window_->sliceView(0);
+    const Volume& v = *models_->document.volume();
+    // The x-low edge (patient right) is the vertical line at u = 0.1 * 64 on the screen's left.
+    QPointF edge = axial.toWidget(0.1 * v.dims.x, v.dims.y / 2.0);
+    QPointF to = axial.toWidget(0.3 * v.dims.x, v.dims.y / 2.0);
+    drag(&axial, edge, to);
+    QVERIFY(std::abs(models_->render.params().clip.lo.x - 0.3) < 0.02);
+    QCOMPARE(models_->render.params().clip.lo.y, 0.1);
+  }
+
+ private:
+  static QImage toQImageForTest(const Image& img) {
+    return QImage(img.rgba.data(), img.width, img.height, img.width * 4,
+                  QImage::Format_RGBA8888)
+        .copy();
+  }
+};
+
+QTEST_MAIN(WidgetTest)
+#include "widget_test.moc"
