@@ -1,9 +1,12 @@
 #include <iostream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "input_options.h"
+#include "voxray/io/dicom_import.h"
+#include "voxray/io/error.h"
 
 namespace voxray::cli {
 
@@ -27,6 +30,33 @@ nlohmann::json volumeJson(const Volume& v) {
           {"warnings", v.warnings}};
 }
 
+nlohmann::json vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+// Every candidate series, without patient data (info output may be pasted into tickets).
+nlohmann::json seriesJson(const DicomListing& l) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& s : l.series) {
+    nlohmann::json dir = nlohmann::json::array();
+    for (int c = 0; c < 3; ++c) dir.push_back(vec(s.direction[c]));
+    out.push_back({{"selector", s.selector},
+                   {"uid", s.uid},
+                   {"number", s.number},
+                   {"description", s.description},
+                   {"modality", s.modality},
+                   {"transfer_syntax", s.transferSyntax},
+                   {"dims", {s.dims.x, s.dims.y, s.dims.z}},
+                   {"spacing_mm", vec(s.spacingMm)},
+                   {"origin_mm", vec(s.originMm)},
+                   {"direction", dir},
+                   {"slice_count", s.sliceCount},
+                   {"is_volume", s.isVolume},
+                   {"chosen", s.chosenByDefault},
+                   {"not_volume_reason", s.notVolumeReason},
+                   {"warnings", s.warnings}});
+  }
+  return out;
+}
+
 }  // namespace
 
 Run addInfoCommand(CLI::App& app) {
@@ -36,8 +66,21 @@ Run addInfoCommand(CLI::App& app) {
   in->add(*cmd);
   cmd->add_flag("--json", *json, "machine-readable output on stdout");
   return [in, json] {
+    std::optional<DicomListing> listing;
+    if (!in->input.empty() && in->rawDims.empty()) {
+      try {
+        listing = listDicomSeries(in->input);
+      } catch (const Error&) {
+        // Not DICOM, or broken: loading below gives the message that says why.
+      }
+    }
     Volume v = in->load();
     nlohmann::json j = volumeJson(v);
+    if (listing) {
+      j["series"] = seriesJson(*listing);
+      j["files_scanned"] = listing->filesScanned;
+      j["files_skipped"] = listing->filesSkipped;
+    }
     if (*json) {
       std::cout << j.dump(2) << "\n";
       return 0;
@@ -52,6 +95,14 @@ Run addInfoCommand(CLI::App& app) {
               << "sample type " << v.sourceType << " (stored as int16, " << (v.byteSize() >> 20)
               << " MiB)\n";
     for (const auto& w : v.warnings) std::cout << "warning: " << w << "\n";
+    if (listing) {
+      std::cout << "series (" << listing->filesScanned << " files, " << listing->filesSkipped
+                << " skipped):\n";
+      for (const auto& s : listing->series)
+        std::cout << (s.chosenByDefault ? " * " : "   ") << s.selector << "  " << s.modality << "  "
+                  << s.dims.x << "x" << s.dims.y << "x" << s.dims.z << "  " << s.description
+                  << (s.isVolume ? "" : "  (" + s.notVolumeReason + ")") << "\n";
+    }
     return 0;
   };
 }

@@ -78,6 +78,7 @@ LoadOptions InputOptions::loadOptions() const {
         throw inputError("--raw-range: expected FIRST-LAST, e.g. 1-113, got '" + rawRange + "'");
       }
     }
+    if (!rawAxes.empty()) l.direction = directionFromAxesCode(rawAxes);
     o.raw = l;
   } else if (!rawSpacing.empty() || !rawRescale.empty() || !rawRange.empty() || rawOffset ||
              !rawAxes.empty()) {
@@ -89,10 +90,7 @@ LoadOptions InputOptions::loadOptions() const {
 Volume InputOptions::load() const {
   LoadOptions o = loadOptions();
   o.progress = terminalProgress("loading");
-  Volume v = loadVolume(input, o);
-  // Raw data carry no orientation: the user states it.
-  if (!rawAxes.empty()) v.direction = directionFromAxesCode(rawAxes);
-  return v;
+  return loadVolume(input, o);
 }
 
 }  // namespace voxray::cli

@@ -210,6 +210,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   Volume v;
   v.dims = {layout.dims.x, layout.dims.y, z};
   v.spacingMm = layout.spacingMm;
+  v.direction = layout.direction;
   v.slope = storage.slope;
   v.intercept = storage.intercept;
   v.unit = "HU";  // raw data are taken as given: HU once the user's rescale is applied

@@ -60,9 +60,9 @@ TEST(ClipBox, SliceEdgesMatchTheBoxAndDragBack) {
   EXPECT_EQ(edges[0].face, 0);
   EXPECT_NEAR(edges[0].position, 10.0, 1e-9);
   EXPECT_NEAR(edges[1].position, 90.0, 1e-9);
-  EXPECT_EQ(edges[2].face, 4);                  // z low ...
-  EXPECT_NEAR(edges[2].position, 42.0, 1e-9);   // ... is near the bottom: (1 - 0.3) * 60
-  EXPECT_NEAR(edges[3].position, 18.0, 1e-9);   // z high near the top
+  EXPECT_EQ(edges[2].face, 4);                    // z low ...
+  EXPECT_NEAR(edges[2].position, 42.0, 1e-9);     // ... is near the bottom: (1 - 0.3) * 60
+  EXPECT_NEAR(edges[3].position, 18.0, 1e-9);     // z high near the top
   dragSliceClipEdge(box, coronal, dims, 5, 6.0);  // z high edge dragged to v = 6
   EXPECT_NEAR(box.hi.z, 0.9, 1e-9);
   EXPECT_TRUE(sliceInsideClip(coronal, dims, box, 40));

@@ -189,8 +189,8 @@ class WidgetTest : public QObject {
     QCOMPARE(models_->crosshair.sliceOf(coronal.axes()), int(s.y));   // y
     QCOMPARE(models_->crosshair.sliceOf(axial.axes()), axialSlice);
     const Volume& v = *models_->document.volume();
-    QImage expected = toQImageForTest(
-        renderSlice(v, coronal.axes(), int(s.y), models_->windowLevel.value()));
+    QImage expected =
+        toQImageForTest(renderSlice(v, coronal.axes(), int(s.y), models_->windowLevel.value()));
     QCOMPARE(coronal.sliceImage(), expected);
     QVERIFY(coronal.sliceImage() != coronalBefore);
   }
@@ -209,8 +209,7 @@ class WidgetTest : public QObject {
 
  private:
   static QImage toQImageForTest(const Image& img) {
-    return QImage(img.rgba.data(), img.width, img.height, img.width * 4,
-                  QImage::Format_RGBA8888)
+    return QImage(img.rgba.data(), img.width, img.height, img.width * 4, QImage::Format_RGBA8888)
         .copy();
   }
 };

@@ -25,10 +25,10 @@ TEST(WindowLevel, PresetsHaveTheRadiologyValues) {
     const char* name;
     double w, l;
   };
-  for (Expect e : {Expect{"Brain", 80, 40}, Expect{"Subdural", 215, 75}, Expect{"Stroke", 40, 40},
-                   Expect{"Lung", 1500, -600}, Expect{"Mediastinum", 350, 50},
-                   Expect{"Abdomen", 400, 50}, Expect{"Liver", 150, 30},
-                   Expect{"Bone", 1800, 400}}) {
+  for (Expect e :
+       {Expect{"Brain", 80, 40}, Expect{"Subdural", 215, 75}, Expect{"Stroke", 40, 40},
+        Expect{"Lung", 1500, -600}, Expect{"Mediastinum", 350, 50}, Expect{"Abdomen", 400, 50},
+        Expect{"Liver", 150, 30}, Expect{"Bone", 1800, 400}}) {
     ASSERT_TRUE(m.applyPreset(e.name)) << e.name;
     EXPECT_EQ(m.value().width, e.w) << e.name;
     EXPECT_EQ(m.value().level, e.l) << e.name;

@@ -19,8 +19,8 @@ glm::dvec3 worldToCameraFrame(const ViewGeometry& g, const glm::dvec3& world, do
 
 LightParams placeLight(const Volume& v, const RenderParams& p, const glm::dvec3& world) {
   LightParams l = p.light;
-  l.position = l.followCamera ? worldToCameraFrame(makeViewGeometry(v, p), world, volumeRadius(v))
-                              : world;
+  l.position =
+      l.followCamera ? worldToCameraFrame(makeViewGeometry(v, p), world, volumeRadius(v)) : world;
   return l;
 }
 
@@ -45,7 +45,8 @@ LightParams lightFromScreen(const Volume& v, const RenderParams& p, const ViewPr
   double sx = (2.0 * screen.x / view.size.x - 1.0) * g.halfHeight * g.aspect;
   double sy = (1.0 - 2.0 * screen.y / view.size.y) * g.halfHeight;
   glm::dvec3 origin = g.orthographic ? g.eye + g.right * sx + g.up * sy : g.eye;
-  glm::dvec3 dir = g.orthographic ? g.forward : glm::normalize(g.forward + g.right * sx + g.up * sy);
+  glm::dvec3 dir =
+      g.orthographic ? g.forward : glm::normalize(g.forward + g.right * sx + g.up * sy);
   // Its first hit on the gizmo sphere; a ray that misses takes the nearest point of the
   // sphere's outline, so the handle follows the mouse around the rim.
   double tClosest = -glm::dot(origin, dir);

@@ -7,7 +7,9 @@ namespace voxray::ui {
 namespace {
 
 // Slice coordinate of a box fraction along a screen axis of N voxels.
-double toScreen(double fraction, bool flip, int n) { return (flip ? 1.0 - fraction : fraction) * n; }
+double toScreen(double fraction, bool flip, int n) {
+  return (flip ? 1.0 - fraction : fraction) * n;
+}
 double toFraction(double position, bool flip, int n) {
   double f = position / n;
   return flip ? 1.0 - f : f;

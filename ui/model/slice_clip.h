@@ -10,8 +10,8 @@
 namespace voxray::ui {
 
 struct SliceClipEdge {
-  int face;          // clip_box_math.h's face number
-  bool vertical;     // true: a vertical line at u = position; false: horizontal at v
+  int face;       // clip_box_math.h's face number
+  bool vertical;  // true: a vertical line at u = position; false: horizontal at v
   double position;
 };
 

@@ -73,8 +73,8 @@ SliceAxes sliceAxes(const glm::dmat3& direction, Orientation o) {
   a.vAxis = closestVoxelAxis(direction, w.v.axis, a.nAxis, a.uAxis);
   a.uFlip = direction[a.uAxis][w.u.axis] * w.u.sign < 0;
   a.vFlip = direction[a.vAxis][w.v.axis] * w.v.sign < 0;
-  a.labels = {letter(w.u.axis, -w.u.sign), letter(w.u.axis, w.u.sign),
-              letter(w.v.axis, -w.v.sign), letter(w.v.axis, w.v.sign)};
+  a.labels = {letter(w.u.axis, -w.u.sign), letter(w.u.axis, w.u.sign), letter(w.v.axis, -w.v.sign),
+              letter(w.v.axis, w.v.sign)};
   return a;
 }
 

@@ -21,9 +21,9 @@ enum class Orientation { Axial, Coronal, Sagittal };
 const char* toString(Orientation o);
 
 struct SliceAxes {
-  int uAxis = 0;  // voxel axis along the screen's x (left to right)
-  int vAxis = 1;  // voxel axis along the screen's y (top to bottom)
-  int nAxis = 2;  // voxel axis across the slice: the slice index
+  int uAxis = 0;       // voxel axis along the screen's x (left to right)
+  int vAxis = 1;       // voxel axis along the screen's y (top to bottom)
+  int nAxis = 2;       // voxel axis across the slice: the slice index
   bool uFlip = false;  // true: voxel index grows towards the screen's left
   bool vFlip = false;  // true: voxel index grows towards the screen's top
   // Patient orientation letters at the screen's left, right, top and bottom edges.

@@ -11,9 +11,9 @@ constexpr double kMinWidth = 1.0;
 
 const std::vector<WindowLevelPreset>& windowLevelPresets() {
   static const std::vector<WindowLevelPreset> presets = {
-      {"Brain", {80, 40}},          {"Subdural", {215, 75}}, {"Stroke", {40, 40}},
-      {"Lung", {1500, -600}},       {"Mediastinum", {350, 50}},
-      {"Abdomen", {400, 50}},       {"Liver", {150, 30}},    {"Bone", {1800, 400}},
+      {"Brain", {80, 40}},    {"Subdural", {215, 75}},    {"Stroke", {40, 40}},
+      {"Lung", {1500, -600}}, {"Mediastinum", {350, 50}}, {"Abdomen", {400, 50}},
+      {"Liver", {150, 30}},   {"Bone", {1800, 400}},
   };
   return presets;
 }

@@ -30,8 +30,7 @@ class ModelConnection : public QObject {
 
 // Calls SLOT on every notification for as long as OWNER lives.
 template <class... Args>
-void onModelChange(QObject* owner, Notifier<Args...>& n,
-                   typename Notifier<Args...>::Slot slot) {
+void onModelChange(QObject* owner, Notifier<Args...>& n, typename Notifier<Args...>::Slot slot) {
   new ModelConnection<Args...>(owner, n, std::move(slot));
 }
 
@@ -65,9 +64,8 @@ inline void bindCombo(QComboBox* w, RenderStateModel& m, unsigned mask, ParamGet
   onModelChange<unsigned>(w, m.changed, [refresh, mask](unsigned what) {
     if (what & mask) refresh();
   });
-  QObject::connect(w, &QComboBox::currentIndexChanged, w, [&m, mask, set](int i) {
-    m.update(mask, [&](RenderParams& p) { set(p, i); });
-  });
+  QObject::connect(w, &QComboBox::currentIndexChanged, w,
+                   [&m, mask, set](int i) { m.update(mask, [&](RenderParams& p) { set(p, i); }); });
 }
 
 inline void bindCheck(QCheckBox* w, RenderStateModel& m, unsigned mask, ParamGet get,

@@ -77,9 +77,8 @@ QImage ExportDialog::capture() {
   }
   if (what == 0) return view_.lastFrame();  // the rendered pixels, no overlays
   for (SliceView* s : slices_) s->setAnnotations(annotate);
-  QImage image = (what == 4 ? window_ : static_cast<QWidget*>(slices_[size_t(what - 1)]))
-                     ->grab()
-                     .toImage();
+  QImage image =
+      (what == 4 ? window_ : static_cast<QWidget*>(slices_[size_t(what - 1)]))->grab().toImage();
   for (SliceView* s : slices_) s->setAnnotations(true);
   return image;
 }

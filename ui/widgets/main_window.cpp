@@ -129,7 +129,8 @@ void MainWindow::rebuildRecentMenu() {
 }
 
 void MainWindow::open(const std::string& input, const LoadOptions& options) {
-  QString name = input.empty() ? QString("head phantom") : QFileInfo(QString::fromStdString(input)).fileName();
+  QString name =
+      input.empty() ? QString("head phantom") : QFileInfo(QString::fromStdString(input)).fileName();
   if (options.raw) {
     QSettings s;
     saveRawLayoutFor(s, input, *options.raw);
@@ -139,8 +140,8 @@ void MainWindow::open(const std::string& input, const LoadOptions& options) {
 
 void MainWindow::openDicomFolder() {
   QSettings s;
-  QString dir = QFileDialog::getExistingDirectory(this, "Open DICOM folder",
-                                                  s.value("lastFolder", QDir::homePath()).toString());
+  QString dir = QFileDialog::getExistingDirectory(
+      this, "Open DICOM folder", s.value("lastFolder", QDir::homePath()).toString());
   if (dir.isEmpty()) return;
   s.setValue("lastFolder", dir);
   auto choice = pickSeries(this, dir.toStdString());

@@ -127,10 +127,8 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
   preset->setObjectName("windowLevelPreset");
   preset->addItem("(custom)");
   for (const auto& p : windowLevelPresets())
-    preset->addItem(QString("%1 (%2/%3)")
-                        .arg(QString::fromStdString(p.name))
-                        .arg(p.wl.width)
-                        .arg(p.wl.level));
+    preset->addItem(
+        QString("%1 (%2/%3)").arg(QString::fromStdString(p.name)).arg(p.wl.width).arg(p.wl.level));
   auto* width = spin(1, 10000, 10, 0);
   auto* level = spin(-3000, 10000, 10, 0);
   auto refresh = [preset, width, level, &wl] {
@@ -149,10 +147,12 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
   QObject::connect(preset, &QComboBox::currentIndexChanged, box, [&wl](int i) {
     if (i > 0) wl.applyPreset(windowLevelPresets()[size_t(i - 1)].name);
   });
-  QObject::connect(width, &QDoubleSpinBox::valueChanged, box,
-                   [&wl](double w) { wl.set({w, wl.value().level}); });
-  QObject::connect(level, &QDoubleSpinBox::valueChanged, box,
-                   [&wl](double l) { wl.set({wl.value().width, l}); });
+  QObject::connect(width, &QDoubleSpinBox::valueChanged, box, [&wl](double w) {
+    wl.set({w, wl.value().level});
+  });
+  QObject::connect(level, &QDoubleSpinBox::valueChanged, box, [&wl](double l) {
+    wl.set({wl.value().width, l});
+  });
   form->addRow("W/L preset", preset);
   form->addRow("Window", width);
   form->addRow("Level", level);

@@ -125,8 +125,9 @@ void RawImportDialog::refresh() {
   }
   auto img = previewRawSlice(p, layout());
   if (img)
-    preview_->setPixmap(QPixmap::fromImage(toQImage(*img)).scaled(
-        preview_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation));
+    preview_->setPixmap(
+        QPixmap::fromImage(toQImage(*img))
+            .scaled(preview_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation));
   else
     preview_->setText("no preview");
 }

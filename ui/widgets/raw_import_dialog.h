@@ -24,7 +24,7 @@ class RawImportDialog : public QDialog {
   QString path() const;
   // Shows the dialog; the chosen path and layout, or nullopt when cancelled.
   static std::optional<std::pair<QString, RawLayout>> ask(QWidget* parent,
-                                                         const QString& startFolder);
+                                                          const QString& startFolder);
 
  private:
   void refresh();  // size check and preview for the current fields

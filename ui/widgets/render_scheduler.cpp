@@ -5,7 +5,7 @@
 namespace voxray::ui {
 
 namespace {
-constexpr int kSettleMs = 150;       // no movement for this long counts as "stopped"
+constexpr int kSettleMs = 150;         // no movement for this long counts as "stopped"
 constexpr double kFpsSmoothing = 0.3;  // weight of the newest frame in the fps average
 }  // namespace
 
@@ -23,7 +23,8 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
   // The worker calls back on its own thread: hop to this object's (the UI) thread.
   RenderCallbacks cb;
   cb.frame = [this](std::shared_ptr<const Frame> f) {
-    QMetaObject::invokeMethod(this, [this, f] { onFrame(f); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, f] { onFrame(f); }, Qt::QueuedConnection);
   };
   cb.error = [this](const std::string& message, bool rejected) {
     QString m = QString::fromStdString(message);
@@ -32,7 +33,8 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
   };
   cb.deviceReady = [this](const std::string& name) {
     QString n = QString::fromStdString(name);
-    QMetaObject::invokeMethod(this, [this, n] { emit deviceReady(n); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, n] { emit deviceReady(n); }, Qt::QueuedConnection);
   };
   worker_ = std::make_unique<RenderWorker>(device.toStdString(), cb);
   stateConnection_ = state_.changed.connect([this](unsigned) { requestFrame(); });
@@ -82,10 +84,10 @@ void RenderScheduler::requestExport(QSize size) {
 void RenderScheduler::requestFrame() {
   if (doc_.empty()) return;
   if (interacting_) settle_.start();  // restart: refine only once the mouse rests
-  worker_->request(planFrame(state_.params(), state_.quality(),
-                             {viewSize_.width(), viewSize_.height()}, interacting_,
-                             doc_.minSpacingMm()),
-                   interacting_);
+  worker_->request(
+      planFrame(state_.params(), state_.quality(), {viewSize_.width(), viewSize_.height()},
+                interacting_, doc_.minSpacingMm()),
+      interacting_);
 }
 
 void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {

@@ -38,7 +38,9 @@ std::optional<LoadOptions> pickSeries(QWidget* parent, const std::string& folder
   int chosen = 0;
   for (int r = 0; r < int(listing.series.size()); ++r) {
     const SeriesInfo& s = listing.series[size_t(r)];
-    auto set = [&](int c, const QString& text) { table->setItem(r, c, new QTableWidgetItem(text)); };
+    auto set = [&](int c, const QString& text) {
+      table->setItem(r, c, new QTableWidgetItem(text));
+    };
     set(0, QString::fromStdString(s.description.empty() ? "(no description)" : s.description));
     set(1, QString::fromStdString(s.modality));
     set(2, QString("%1 × %2 × %3").arg(s.dims.x).arg(s.dims.y).arg(s.dims.z));

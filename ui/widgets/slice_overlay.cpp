@@ -23,7 +23,8 @@ void drawLabels(QPainter& p, const SliceAxes& a, const QRect& r) {
   p.setPen(QColor(255, 220, 120));
   const auto& l = a.labels;  // left, right, top, bottom
   int m = 4;
-  p.drawText(r.adjusted(m, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, QString::fromStdString(l[0]));
+  p.drawText(r.adjusted(m, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
+             QString::fromStdString(l[0]));
   p.drawText(r.adjusted(0, 0, -m, 0), Qt::AlignRight | Qt::AlignVCenter,
              QString::fromStdString(l[1]));
   p.drawText(r.adjusted(0, m, 0, 0), Qt::AlignHCenter | Qt::AlignTop, QString::fromStdString(l[2]));
@@ -42,8 +43,7 @@ void drawScaleBar(QPainter& p, double mmPerPixel, const QRect& r) {
   p.drawLine(start, end);
   p.drawLine(start, start - QPointF(0, 4));
   p.drawLine(end, end - QPointF(0, 4));
-  p.drawText(QRectF(start.x(), end.y() + 2, px, 16), Qt::AlignHCenter,
-             QString("%1 mm").arg(mm));
+  p.drawText(QRectF(start.x(), end.y() + 2, px, 16), Qt::AlignHCenter, QString("%1 mm").arg(mm));
 }
 
 }  // namespace
@@ -77,10 +77,10 @@ void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
   p.drawText(text, Qt::AlignRight | Qt::AlignTop,
              QString("W %1  L %2").arg(o.wl.width, 0, 'f', 0).arg(o.wl.level, 0, 'f', 0));
   if (o.hasCursor) {
-    QString value = std::isnan(o.cursorValue)
-                        ? QString("outside")
-                        : QString("%1 %2").arg(o.cursorValue, 0, 'f', 0).arg(
-                              QString::fromStdString(o.unit));
+    QString value =
+        std::isnan(o.cursorValue)
+            ? QString("outside")
+            : QString("%1 %2").arg(o.cursorValue, 0, 'f', 0).arg(QString::fromStdString(o.unit));
     p.drawText(text, Qt::AlignLeft | Qt::AlignBottom,
                QString("%1\n(%2, %3, %4) mm")
                    .arg(value)

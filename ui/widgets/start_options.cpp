@@ -4,6 +4,7 @@
 
 #include "voxray/engine/render_params.h"
 #include "voxray/io/error.h"
+#include "voxray/io/orientation.h"
 
 namespace voxray::ui {
 
@@ -14,8 +15,9 @@ std::vector<double> numbers(const QString& flag, const QString& text, int minCou
   for (const QString& part : text.split(',')) {
     bool ok = false;
     out.push_back(part.trimmed().toDouble(&ok));
-    if (!ok) throw inputError("--" + flag.toStdString() + ": '" + part.toStdString() +
-                              "' is not a number");
+    if (!ok)
+      throw inputError("--" + flag.toStdString() + ": '" + part.toStdString() +
+                       "' is not a number");
   }
   if (int(out.size()) < minCount || int(out.size()) > maxCount)
     throw inputError("--" + flag.toStdString() + ": expected " + std::to_string(maxCount) +
@@ -39,6 +41,7 @@ StartOptions parseStartOptions(const QStringList& arguments) {
       {"raw-offset", "raw: header bytes to skip in each file", "bytes", "0"},
       {"raw-rescale", "raw: SLOPE,INTERCEPT to HU", "S,I"},
       {"raw-range", "raw: FIRST-LAST slice numbers", "range"},
+      {"raw-axes", "raw: patient direction of the x, y, z axes, e.g. LPI (default LPS)", "code"},
       {"series", "DICOM: series number or UID", "series"},
       {"device", "OpenCL device: auto, cpu, gpu or a number ($VOXRAY_DEVICE)", "device"},
       {"screenshot", "after the first full-quality frame, save the window to FILE", "file"},
@@ -76,6 +79,8 @@ StartOptions parseStartOptions(const QStringList& arguments) {
       if (parts.size() != 2) throw inputError("--raw-range: expected FIRST-LAST, e.g. 1-113");
       l.range = std::make_pair(parts[0].toInt(), parts[1].toInt());
     }
+    if (parser.isSet("raw-axes"))
+      l.direction = directionFromAxesCode(parser.value("raw-axes").toStdString());
     o.load.raw = l;
   }
   for (const auto& spec : renderParamSpecs()) {

@@ -25,12 +25,11 @@ VolumeView::VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairMo
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(160, 120);
   setMouseTracking(false);
-  connect(&scheduler_, &RenderScheduler::frameReady, this,
-          [this](std::shared_ptr<const Frame> f) {
-            frame_ = toQImage(f->image);
-            frameInteractive_ = f->interactive;
-            update();
-          });
+  connect(&scheduler_, &RenderScheduler::frameReady, this, [this](std::shared_ptr<const Frame> f) {
+    frame_ = toQImage(f->image);
+    frameInteractive_ = f->interactive;
+    update();
+  });
   stateConnection_ = state_.changed.connect([this](unsigned) { update(); });
   crosshairConnection_ = crosshair_.changed.connect([this] {
     if (showPlanes_) update();
@@ -101,8 +100,8 @@ void VolumeView::mousePressEvent(QMouseEvent* e) {
     auto light = proj->project(lightHandleWorld(v, state_.params()));
     if (showLight_ && light && glm::distance(*light, at) <= kLightPickPixels) {
       drag_ = Drag::Light;
-    } else if (auto face = showClip_ ? pickClipFace(v, state_.params().clip, *proj, at)
-                                     : std::nullopt) {
+    } else if (auto face =
+                   showClip_ ? pickClipFace(v, state_.params().clip, *proj, at) : std::nullopt) {
       drag_ = Drag::ClipFace;
       dragFace_ = *face;
       dragStartBox_ = state_.params().clip;
@@ -169,7 +168,8 @@ void VolumeView::mouseDoubleClickEvent(QMouseEvent*) { emit doubleClicked(); }
 void VolumeView::wheelEvent(QWheelEvent* e) {
   double notches = e->angleDelta().y() / 120.0;
   scheduler_.beginInteraction();
-  state_.update(kCamera, [&](RenderParams& p) { zoomBy(p.camera, std::pow(kWheelZoomPerNotch, notches)); });
+  state_.update(kCamera,
+                [&](RenderParams& p) { zoomBy(p.camera, std::pow(kWheelZoomPerNotch, notches)); });
 }
 
 void VolumeView::keyPressEvent(QKeyEvent* e) {

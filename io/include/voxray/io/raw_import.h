@@ -22,6 +22,9 @@ struct RawLayout {
   double slope = 1.0;      // rescale to HU: hu = raw * slope + intercept
   double intercept = 0.0;
   std::optional<std::pair<int, int>> range;  // first-last slice numbers (pattern or folder)
+  // Raw data carry no orientation: columns are the LPS directions of the x, y, z index
+  // axes (see orientation.h for codes such as "LPI").
+  glm::dmat3 direction{1.0};
 };
 
 // Largest volume accepted before allocating anything (a typo must not allocate 100 GB).

@@ -13,15 +13,15 @@
 namespace voxray {
 
 struct Volume {
-  glm::ivec3 dims{0};          // columns (i), rows (j), slices (k)
-  glm::dvec3 spacingMm{1.0};   // distance between voxel centres along i, j, k
-  glm::dvec3 originMm{0.0};    // LPS position of the centre of voxel (0,0,0)
-  glm::dmat3 direction{1.0};   // columns: LPS unit vectors of the i, j, k axes
-  double slope = 1.0;          // physical = stored * slope + intercept
+  glm::ivec3 dims{0};         // columns (i), rows (j), slices (k)
+  glm::dvec3 spacingMm{1.0};  // distance between voxel centres along i, j, k
+  glm::dvec3 originMm{0.0};   // LPS position of the centre of voxel (0,0,0)
+  glm::dmat3 direction{1.0};  // columns: LPS unit vectors of the i, j, k axes
+  double slope = 1.0;         // physical = stored * slope + intercept
   double intercept = 0.0;
   std::string unit = "HU";
-  std::string sourceType = "i16";       // sample type it was read from
-  std::vector<std::string> warnings;    // things the user should know (clamping, NaN, ...)
+  std::string sourceType = "i16";     // sample type it was read from
+  std::vector<std::string> warnings;  // things the user should know (clamping, NaN, ...)
   std::vector<int16_t> voxels;
 
   size_t voxelCount() const { return size_t(dims.x) * size_t(dims.y) * size_t(dims.z); }
