@@ -8,11 +8,15 @@
 namespace voxray {
 
 TransferFunction frameTransferFunction(const RenderParams& p) {
+  auto shifted = [&](TransferFunction tf) {
+    for (auto& c : tf.points) c.hu += p.presetShiftHu;
+    return tf;
+  };
   if (!p.preset.empty()) {
     const Preset& preset = findPreset(p.preset);
-    if (!preset.tf.points.empty()) return preset.tf;
+    if (!preset.tf.points.empty()) return shifted(preset.tf);
   }
-  if (p.mode == Mode::Dvr) return findPreset("CT-Bone").tf;
+  if (p.mode == Mode::Dvr) return shifted(findPreset("CT-Bone").tf);
   // iso: a plain surface colour; mip does not use the table.
   glm::dvec4 c(p.surfaceColor, 1.0);
   return TransferFunction{{{0.0, c}}};

@@ -102,6 +102,9 @@ std::vector<ParamSpec> makeSpecs() {
        [](const P& p) { return std::string(toString(p.mode)); }},
       {"preset", "NAME", "transfer-function preset from resources/presets (voxray-cli presets)",
        [](P& p, S s) { p.preset = s; }, [](const P& p) { return p.preset; }},
+      {"preset-shift", "HU", "move the preset's transfer function along HU",
+       [](P& p, S s) { p.presetShiftHu = toDouble("preset-shift", s); },
+       [](const P& p) { return fmt(p.presetShiftHu); }},
       {"iso", "LO[,HI]", "HU range of the first-hit surface",
        [](P& p, S s) {
          auto v = toDoubles("iso", s, 1, 2);
@@ -134,6 +137,9 @@ std::vector<ParamSpec> makeSpecs() {
       {"opacity-correction", "on|off", "scale dvr opacity to the step size",
        [](P& p, S s) { p.opacityCorrection = toBool("opacity-correction", s); },
        [](const P& p) { return std::string(p.opacityCorrection ? "on" : "off"); }},
+      {"jitter", "on|off", "per-pixel offset of the first sample (removes wood-grain banding)",
+       [](P& p, S s) { p.jitter = toBool("jitter", s); },
+       [](const P& p) { return std::string(p.jitter ? "on" : "off"); }},
       {"early-termination", "A", "dvr stops a ray at this opacity (1 = never)",
        [](P& p, S s) { p.earlyTermination = unit("early-termination", s); },
        [](const P& p) { return fmt(p.earlyTermination); }},

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "frame_setup.h"  // engine-internal: how a frame picks its transfer function
 #include "test_volumes.h"
 #include "voxray/engine/transfer_function.h"
 #include "voxray/io/error.h"
@@ -60,4 +61,18 @@ TEST(Presets, BrokenPresetSaysWhatIsWrong) {
   }
 }
 
+}  // namespace voxray
+
+namespace voxray {
+TEST(TransferFunction, PresetShiftMovesEveryControlPoint) {
+  RenderParams p;
+  p.mode = Mode::Dvr;
+  p.preset = "CT-Bone";
+  p.presetShiftHu = 100.0;
+  const TransferFunction& original = findPreset("CT-Bone").tf;
+  TransferFunction shifted = frameTransferFunction(p);
+  ASSERT_EQ(shifted.points.size(), original.points.size());
+  for (double hu : {-200.0, 0.0, 300.0, 741.0, 2000.0})
+    EXPECT_DOUBLE_EQ(shifted.evaluate(hu).a, original.evaluate(hu - 100.0).a) << hu;
+}
 }  // namespace voxray

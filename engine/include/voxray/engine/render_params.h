@@ -57,6 +57,7 @@ struct RenderParams {
   int refine = 4;       // bisection steps refining an iso hit
   bool shading = true;
   bool opacityCorrection = true;
+  bool jitter = false;        // offset each ray's first sample by a per-pixel fraction of a step
   double earlyTermination = 0.99;  // dvr: stop once this opacity is reached
   double windowWidth = 0.0;        // mip grey mapping in HU; width 0 = the volume's range
   double windowLevel = 0.0;
