@@ -4,40 +4,42 @@
 //   STORAGE_IMAGE 0: a buffer of shorts with manual interpolation (CPUs: PoCL samples a
 //                    buffer about 3x faster than an image)
 //   INTERP 0 nearest, 1 trilinear
+// Every function takes the frame parameters as P: the uber kernel reads INTERP there.
 #ifndef VOXRAY_SAMPLING_CL
 #define VOXRAY_SAMPLING_CL
 
+#include "variant.cl"
+
 #if STORAGE_IMAGE
 #define VOLUME_ARG __read_only image3d_t vol
-__constant sampler_t vol_sampler = CLK_NORMALIZED_COORDS_FALSE | CLK_ADDRESS_CLAMP_TO_EDGE |
-#if INTERP
-                                   CLK_FILTER_LINEAR;
-#else
-                                   CLK_FILTER_NEAREST;
-#endif
+__constant sampler_t vol_linear =
+    CLK_NORMALIZED_COORDS_FALSE | CLK_ADDRESS_CLAMP_TO_EDGE | CLK_FILTER_LINEAR;
+__constant sampler_t vol_nearest =
+    CLK_NORMALIZED_COORDS_FALSE | CLK_ADDRESS_CLAMP_TO_EDGE | CLK_FILTER_NEAREST;
 
-inline float sample_volume(VOLUME_ARG, int4 dims, float3 p) {
+inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
   // Texel centres sit at +0.5 in unnormalised image coordinates.
   float4 c = (float4)(p + 0.5f, 0.0f);
-  return read_imagef(vol, vol_sampler, c).x * 32767.0f;
+  float v = INTERP ? read_imagef(vol, vol_linear, c).x : read_imagef(vol, vol_nearest, c).x;
+  return v * 32767.0f;
 }
 
 #else
 #define VOLUME_ARG __global const short* restrict vol
 
-inline float voxel(__global const short* restrict vol, int4 dims, int x, int y, int z) {
-  return (float)vol[((size_t)z * dims.y + y) * dims.x + x];
-}
-
-inline float sample_volume(VOLUME_ARG, int4 dims, float3 p) {
-#if INTERP
+inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
+  int4 dims = P->dims;
+  int3 hi = dims.xyz - 1;
+  size_t sy = (size_t)dims.x, sz = (size_t)dims.x * dims.y;
+  if (!INTERP) {
+    int3 i = clamp(convert_int3(floor(p + 0.5f)), (int3)(0), hi);
+    return (float)vol[i.z * sz + i.y * sy + i.x];
+  }
   float3 f0 = floor(p);
   float3 f = p - f0;
   int3 i0 = convert_int3(f0);
-  int3 hi = dims.xyz - 1;
   int3 a = clamp(i0, (int3)(0), hi);
   int3 b = clamp(i0 + 1, (int3)(0), hi);
-  size_t sy = (size_t)dims.x, sz = (size_t)dims.x * dims.y;
   size_t za = a.z * sz, zb = b.z * sz, ya = a.y * sy, yb = b.y * sy;
   float c000 = vol[za + ya + a.x], c100 = vol[za + ya + b.x];
   float c010 = vol[za + yb + a.x], c110 = vol[za + yb + b.x];
@@ -47,10 +49,6 @@ inline float sample_volume(VOLUME_ARG, int4 dims, float3 p) {
   float c01 = mix(c001, c101, f.x), c11 = mix(c011, c111, f.x);
   float c0 = mix(c00, c10, f.y), c1 = mix(c01, c11, f.y);
   return mix(c0, c1, f.z);
-#else
-  int3 i = clamp(convert_int3(floor(p + 0.5f)), (int3)(0), dims.xyz - 1);
-  return voxel(vol, dims, i.x, i.y, i.z);
-#endif
 }
 #endif
 

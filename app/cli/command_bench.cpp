@@ -1,17 +1,18 @@
-// voxray-cli bench: frames over a 360-degree orbit after a warm-up, per size x gradient,
-// reporting medians (these machines are noisy) and kernel time beside wall time.
-#include <algorithm>
-#include <cstdio>
+// voxray-cli bench: frames over a 360-degree orbit after a warm-up, per size x gradient
+// (x kernel), reporting medians (these machines are noisy), kernel time beside wall time,
+// rays and counted samples per second. --seed-table reruns the seed paper's table on the
+// shared data beside its figures; --plot draws fps against resolution.
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
+#include "bench_plot.h"
+#include "bench_run.h"
+#include "bench_seed.h"
 #include "commands.h"
 #include "input_options.h"
 #include "render_flags.h"
 #include "voxray/engine/cl_context.h"
-#include "voxray/engine/raycaster.h"
 #include "voxray/io/error.h"
 
 namespace voxray::cli {
@@ -24,9 +25,9 @@ struct BenchOptions {
   InputOptions input;
   RenderFlags flags;
   std::string sizes = "512x384,640x480,800x600,1024x768", gradients = "central", device;
-  std::string storage = "auto";
-  int frames = 12, warmup = 2;
-  bool json = false, csv = false;
+  std::string storage = "auto", kernel = "specialised", ess = "on", local, data, plot;
+  BenchRun run;
+  bool json = false, csv = false, seedTable = false, noCount = false;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -37,10 +38,24 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+// ../shared/data beside the checkout when run from it, else the machine's shared copy.
+std::string defaultDataDir() {
+  for (const char* d : {"../shared/data", "/work/shared/data"})
+    if (std::filesystem::is_directory(d)) return d;
+  return "../shared/data";
+}
+
+RaycasterOptions raycasterOptions(const BenchOptions& o) {
+  RaycasterOptions r;
+  r.emptySpaceSkipping = o.ess == "on";
+  if (!o.local.empty()) {
+    int x = 0, y = 0;
+    if (std::sscanf(o.local.c_str(), "%dx%d", &x, &y) != 2 || x <= 0 || y <= 0)
+      throw inputError("--local: expected WxH, e.g. 8x8, got '" + o.local + "'");
+    r.localX = x;
+    r.localY = y;
+  }
+  return r;
 }
 
 }  // namespace
@@ -51,70 +66,82 @@ Run addBenchCommand(CLI::App& app) {
   o->input.add(*cmd);
   cmd->add_option("--sizes", o->sizes, "comma-separated WxH list");
   cmd->add_option("--gradients", o->gradients, "comma-separated operators");
-  cmd->add_option("--frames", o->frames, "timed frames per case (an orbit)")
+  cmd->add_option("--frames", o->run.frames, "timed frames per case (an orbit)")
       ->check(CLI::Range(1, 100000));
-  cmd->add_option("--warmup", o->warmup, "untimed frames first (kernel build)");
+  cmd->add_option("--warmup", o->run.warmup, "untimed frames first (kernel build)");
   cmd->add_option("--device", o->device, "auto, cpu, gpu or a device number");
   cmd->add_option("--storage", o->storage, "auto, buffer or image")
       ->check(CLI::IsMember({"auto", "buffer", "image"}));
+  cmd->add_option("--kernel", o->kernel,
+                  "specialised (-D per variant), uber (runtime switches) or both")
+      ->check(CLI::IsMember({"specialised", "uber", "both"}));
+  cmd->add_option("--ess", o->ess, "empty-space skipping on or off")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--local", o->local, "OpenCL work-group size WxH (default: the device's)");
+  cmd->add_flag("--no-count", o->noCount, "skip the extra orbit that counts samples");
+  cmd->add_flag("--seed-table", o->seedTable,
+                "the seed paper's table (Head, Brain, Stent x central, Zucker-Hummel x its "
+                "four sizes) on the shared data, beside the seed's fps");
+  cmd->add_option("--data", o->data, "shared data folder for --seed-table");
+  cmd->add_option("--plot", o->plot, "write fps against resolution to this PNG");
   cmd->add_flag("--json", o->json, "machine-readable output");
   cmd->add_flag("--csv", o->csv, "CSV output");
   o->flags.add(*cmd, {"size", "gradient", "azimuth"});
   return [o] {
-    RenderParams base = o->flags.params();
-    Volume v = o->input.load();
+    BenchFormat f = o->json ? BenchFormat::Json : o->csv ? BenchFormat::Csv : BenchFormat::Text;
+    o->run.countSamples = !o->noCount;
     ClContext ctx(o->device);
-    Raycaster rc(ctx, v, parseStorage(o->storage));
-    nlohmann::json rows = nlohmann::json::array();
-    if (o->csv)
-      std::cout << "input,size,mode,gradient,median_ms,min_ms,max_ms,fps,kernel_ms,mrays_s\n";
-    else if (!o->json)
-      std::printf("%-10s %-6s %-14s %9s %9s %9s %8s %9s %9s\n", "size", "mode", "gradient",
-                  "median_ms", "min_ms", "max_ms", "fps", "kernel_ms", "Mrays/s");
-    Image img;
-    for (const auto& size : split(o->sizes))
-      for (const auto& grad : split(o->gradients)) {
-        RenderParams p = base;
-        renderParamSpecs()[0].parse(p, size);  // "size"
-        p.gradient = parseGradient(grad);
-        std::vector<double> wall, kernel;
-        for (int i = -o->warmup; i < o->frames; ++i) {
-          p.camera.azimuthDeg = 360.0 * std::max(i, 0) / o->frames;
-          FrameStats s;
-          rc.render(p, img, &s);
-          if (i < 0) continue;
-          wall.push_back(s.totalMs);
-          kernel.push_back(s.kernelMs);
-        }
-        double med = median(wall), fps = 1000.0 / med;
-        double mrays = double(p.width) * p.height / (med * 1e3);
-        auto [mn, mx] = std::minmax_element(wall.begin(), wall.end());
-        std::string input = o->input.input.empty() ? "phantom" : o->input.input;
-        if (o->json)
-          rows.push_back({{"input", input},
-                          {"size", size},
-                          {"mode", toString(p.mode)},
-                          {"gradient", grad},
-                          {"median_ms", med},
-                          {"min_ms", *mn},
-                          {"max_ms", *mx},
-                          {"fps", fps},
-                          {"kernel_ms", median(kernel)},
-                          {"mrays_per_s", mrays},
-                          {"device", ctx.device().name}});
-        else if (o->csv)
-          std::cout << input << "," << size << "," << toString(p.mode) << "," << grad << "," << med
-                    << "," << *mn << "," << *mx << "," << fps << "," << median(kernel) << ","
-                    << mrays << "\n";
-        else
-          std::printf("%-10s %-6s %-14s %9.1f %9.1f %9.1f %8.2f %9.1f %9.2f\n", size.c_str(),
-                      toString(p.mode), grad.c_str(), med, *mn, *mx, fps, median(kernel), mrays);
+    std::vector<std::string> kernels = {o->kernel};
+    if (o->kernel == "both") kernels = {"specialised", "uber"};
+    std::vector<BenchRow> rows;
+    printHeader(f);
+    // One volume: each size x gradient x kernel, seed figures filled in by the caller.
+    auto bench = [&](const Volume& v, RenderParams base, const std::string& name,
+                     const std::vector<std::string>& sizes, const std::vector<std::string>& grads,
+                     const double* seedCentral, const double* seedZucker) {
+      Raycaster rc(ctx, v, parseStorage(o->storage));
+      for (size_t si = 0; si < sizes.size(); ++si)
+        for (const auto& grad : grads)
+          for (const auto& kern : kernels) {
+            RenderParams p = base;
+            renderParamSpecs()[0].parse(p, sizes[si]);  // "size"
+            p.gradient = parseGradient(grad);
+            RaycasterOptions ro = raycasterOptions(*o);
+            ro.kernel = kern == "uber" ? RaycasterOptions::Kernel::Uber
+                                       : RaycasterOptions::Kernel::Specialised;
+            rc.setOptions(ro);
+            BenchRow r = benchCase(rc, p, o->run);
+            r.input = name;
+            const double* seed = p.gradient == Gradient::Central        ? seedCentral
+                                 : p.gradient == Gradient::ZuckerHummel ? seedZucker
+                                                                        : nullptr;
+            if (seed && si < 4) r.seedFps = seed[si];
+            printRow(f, r);
+            rows.push_back(r);
+          }
+    };
+    if (o->seedTable) {
+      std::string dir = o->data.empty() ? defaultDataDir() : o->data;
+      for (const auto& d : seedDatasets(dir)) {
+        Volume v = d.input.load();
+        RenderParams p = o->flags.params();
+        p.mode = Mode::Iso;
+        p.isoLo = d.isoHu;
+        std::vector<std::string> sizes(std::begin(kSeedSizes), std::end(kSeedSizes));
+        bench(v, p, d.name, sizes, {"central", "zucker-hummel"}, d.seedCentral, d.seedZucker);
       }
-    if (o->json)
-      std::cout << rows.dump(2) << "\n";
-    else if (!o->csv)
-      std::printf("device: %s, %d frames per case over a 360-degree orbit\n",
-                  ctx.device().name.c_str(), o->frames);
+      if (f == BenchFormat::Text)
+        std::cout << "Bunny: no data here (the seed's row is left out). Stent spacing "
+                     "assumed 1 x 1 x 1 mm.\n";
+    } else {
+      Volume v = o->input.load();
+      std::string name = o->input.input.empty()
+                             ? "phantom"
+                             : std::filesystem::path(o->input.input).filename().string();
+      bench(v, o->flags.params(), name, split(o->sizes), split(o->gradients), nullptr, nullptr);
+    }
+    printFooter(f, rows, ctx.device().name, o->run.frames);
+    if (!o->plot.empty()) writeBenchPlot(o->plot, rows);
     return 0;
   };
 }

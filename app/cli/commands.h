@@ -14,5 +14,6 @@ Run addInfoCommand(CLI::App& app);
 Run addRenderCommand(CLI::App& app);
 Run addPresetsCommand(CLI::App& app);
 Run addBenchCommand(CLI::App& app);
+Run addAccuracyCommand(CLI::App& app);
 
 }  // namespace voxray::cli

@@ -17,7 +17,10 @@ struct RaycastParams {
   cl_float4 dvr;
   cl_int4 dims;
   cl_int4 image;
+  cl_int4 cells;
+  cl_int4 modes;
+  cl_int4 modes2;
 };
-static_assert(sizeof(RaycastParams) == 21 * 16, "must match kernels/params.cl");
+static_assert(sizeof(RaycastParams) == 24 * 16, "must match kernels/params.cl");
 
 }  // namespace voxray

@@ -1,10 +1,12 @@
 #include "voxray/engine/raycaster.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <sstream>
 
 #include "cl_context_impl.h"
+#include "empty_space.h"
 #include "frame_setup.h"
 #include "kernel_params.h"
 #include "voxray/io/volume.h"
@@ -35,12 +37,36 @@ struct Raycaster::Impl {
   size_t lutCapacity = 0;
   cl::Buffer outBuffer;
   size_t outCapacity = 0;
+  std::vector<glm::vec4> lutUploaded;  // the table on the device: uploaded on change only
+  EmptySpace space;
+  cl::Buffer countBuffer;  // 64 sample counters (COUNT_SAMPLES)
+  RaycasterOptions opts;
+  // The last frame's setup. Its table, thresholds and step do not depend on the camera
+  // or the image size but cost two passes over the volume (its value range), so an orbit
+  // only recomputes the view.
+  FrameSetup setup;
+  std::string setupKey;
 
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s) : cl(ctx.impl()), volume(v), storage(s) {}
 
   void upload();
   std::string options(const RenderParams& p) const;
+  cl::NDRange local() const;
+  void updateSetup(const RenderParams& p);
 };
+
+void Raycaster::Impl::updateSetup(const RenderParams& p) {
+  RenderParams q = p;
+  q.camera = CameraParams{};
+  q.width = q.height = 1;
+  std::string key = toText(q);
+  if (key == setupKey) {
+    setup.view = makeViewGeometry(volume, p);
+    return;
+  }
+  setup = makeFrameSetup(volume, p);
+  setupKey = std::move(key);
+}
 
 void Raycaster::Impl::upload() {
   const DeviceInfo& d = cl.info;
@@ -72,25 +98,40 @@ void Raycaster::Impl::upload() {
                                 size_t(volume.dims.x), size_t(volume.dims.y), size_t(volume.dims.z),
                                 0, 0, const_cast<int16_t*>(volume.voxels.data()));
     } else {
-      volumeBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
+      // A CPU device reads host memory anyway: use the volume where it is instead of a
+      // second copy (peak memory stays near the volume's size). The Volume outlives us.
+      cl_mem_flags where = d.isGpu ? CL_MEM_COPY_HOST_PTR : CL_MEM_USE_HOST_PTR;
+      volumeBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | where, bytes,
                                 const_cast<int16_t*>(volume.voxels.data()));
     }
     paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
+    countBuffer = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 64 * sizeof(cl_uint));
     return 0;
   });
+  space.upload(cl, volume);
 }
 
 std::string Raycaster::Impl::options(const RenderParams& p) const {
   std::ostringstream o;
+  o << "-cl-fast-relaxed-math -D STORAGE_IMAGE=" << int(storage == VolumeStorage::Image3d)
+    << " -D COUNT_SAMPLES=" << int(opts.countSamples);
+  // The uber kernel reads every other switch from RaycastParams (kernels/variant.cl).
+  if (opts.kernel == RaycasterOptions::Kernel::Uber) return o.str() + " -D UBER=1";
   bool shading = p.shading && p.mode != Mode::Mip;
-  o << "-cl-fast-relaxed-math -D MODE=" << int(p.mode) << " -D SHADING=" << int(shading)
+  o << " -D MODE=" << int(p.mode) << " -D SHADING=" << int(shading)
     << " -D INTERP=" << int(p.interp)
-    << " -D STORAGE_IMAGE=" << int(storage == VolumeStorage::Image3d)
-    << " -D ORTHO=" << int(p.camera.projection == Projection::Orthographic);
+    << " -D ORTHO=" << int(p.camera.projection == Projection::Orthographic)
+    << " -D ESS=" << int(opts.emptySpaceSkipping) << " -D JITTER=" << int(p.jitter);
   if (shading) o << " -D GRADIENT=" << int(p.gradient);
   if (p.mode == Mode::Iso) o << " -D REFINE_STEPS=" << p.refine;
   if (p.mode == Mode::Dvr) o << " -D OPACITY_CORRECTION=" << int(p.opacityCorrection);
   return o.str();
+}
+
+cl::NDRange Raycaster::Impl::local() const {
+  // The caller rounds the global size up to whole groups; the kernel drops extra items.
+  if (opts.localX <= 0 || opts.localY <= 0) return cl::NullRange;
+  return cl::NDRange(size_t(opts.localX), size_t(opts.localY));
 }
 
 Raycaster::Raycaster(ClContext& ctx, const Volume& volume, VolumeStorage storage)
@@ -104,6 +145,12 @@ VolumeStorage Raycaster::storage() const { return impl_->storage; }
 
 std::string Raycaster::variantOptions(const RenderParams& p) const { return impl_->options(p); }
 
+void Raycaster::setOptions(const RaycasterOptions& options) { impl_->opts = options; }
+
+const RaycasterOptions& Raycaster::options() const { return impl_->opts; }
+
+int Raycaster::classifications() const { return impl_->space.classifications(); }
+
 Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
   Image out;
   render(params, out, stats);
@@ -114,7 +161,8 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = std::chrono::steady_clock::now();
   Impl& m = *impl_;
   const Volume& v = m.volume;
-  FrameSetup s = makeFrameSetup(v, p);
+  m.updateSetup(p);
+  const FrameSetup& s = m.setup;
   const ViewGeometry& g = s.view;
 
   RaycastParams k{};
@@ -140,6 +188,12 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   k.dvr = f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, 0);
   k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
   k.image = {{p.width, p.height, 0, 0}};
+  glm::ivec3 cells = m.space.dims();
+  bool shading = p.shading && p.mode != Mode::Mip;
+  k.cells = {{cells.x, cells.y, cells.z, int(m.opts.emptySpaceSkipping)}};
+  k.modes = {{int(p.mode), int(shading), int(p.gradient), int(p.interp)}};
+  k.modes2 = {{int(p.camera.projection == Projection::Orthographic), p.refine,
+               int(p.opacityCorrection), int(p.jitter)}};
 
   size_t pixels = size_t(p.width) * size_t(p.height);
   out.width = p.width;
@@ -148,11 +202,13 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   std::string opts = m.options(p);
   cl::Kernel kernel = m.cl.kernel("raycast.cl", "raycast", opts);
   cl::Event done;
+  std::array<cl_uint, 64> counts{};
   clCall([&] {
     size_t lutBytes = s.lut.rgba.size() * sizeof(cl_float4);
     if (lutBytes > m.lutCapacity) {
       m.lutBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, lutBytes);
       m.lutCapacity = lutBytes;
+      m.lutUploaded.clear();
     }
     if (pixels * 4 > m.outCapacity) {
       m.outBuffer = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * 4);
@@ -160,7 +216,13 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     }
     cl::CommandQueue& q = m.cl.queue;
     q.enqueueWriteBuffer(m.paramsBuffer, CL_FALSE, 0, sizeof(k), &k);
-    q.enqueueWriteBuffer(m.lutBuffer, CL_FALSE, 0, lutBytes, s.lut.rgba.data());
+    if (s.lut.rgba != m.lutUploaded) {
+      m.lutUploaded = s.lut.rgba;  // the asynchronous write reads this copy
+      q.enqueueWriteBuffer(m.lutBuffer, CL_FALSE, 0, lutBytes, m.lutUploaded.data());
+    }
+    if (m.opts.emptySpaceSkipping) m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
+    if (m.opts.countSamples)
+      q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     if (m.storage == VolumeStorage::Image3d)
       kernel.setArg(0, m.volumeImage);
     else
@@ -168,13 +230,25 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     kernel.setArg(1, m.paramsBuffer);
     kernel.setArg(2, m.lutBuffer);
     kernel.setArg(3, m.outBuffer);
-    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(size_t(p.width), size_t(p.height)),
-                           cl::NullRange, nullptr, &done);
+    kernel.setArg(4, m.space.occupancy());
+    kernel.setArg(5, m.space.range());
+    kernel.setArg(6, m.countBuffer);
+    cl::NDRange local = m.local();
+    size_t gx = size_t(p.width), gy = size_t(p.height);
+    if (local.dimensions() == 2) {
+      gx = (gx + local[0] - 1) / local[0] * local[0];
+      gy = (gy + local[1] - 1) / local[1] * local[1];
+    }
+    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local, nullptr, &done);
+    if (m.opts.countSamples)
+      q.enqueueReadBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     q.enqueueReadBuffer(m.outBuffer, CL_TRUE, 0, pixels * 4, out.rgba.data());
     return 0;
   });
   if (stats) {
     stats->variant = opts;
+    stats->samples = 0.0;
+    for (cl_uint c : counts) stats->samples += double(c);
     try {
       cl_ulong t0 = done.getProfilingInfo<CL_PROFILING_COMMAND_START>();
       cl_ulong t1 = done.getProfilingInfo<CL_PROFILING_COMMAND_END>();

@@ -33,18 +33,32 @@ glm::dvec3 shade(const glm::dvec3& color, const glm::dvec3& normal, const glm::d
   return color * (k.ambient + k.diffuse * diffuse) + glm::dvec3(k.specular * specular);
 }
 
+// What one ray leaves besides its colour.
+struct PixelOut {
+  HitKind kind = HitKind::None;
+  glm::dvec3 voxel{0.0}, normal{0.0};
+  double samples = 0.0;
+};
+
 struct Marcher {
   const Volume& v;
   const RenderParams& p;
   const FrameSetup& s;
+  bool shading = p.shading && p.mode != Mode::Mip;
+  double gradSamples = double(gradientSamples(p.gradient));
 
-  double sample(const glm::dvec3& pv) const { return sampleVolume(v, p.interp, pv); }
+  double sample(const glm::dvec3& pv, PixelOut& o) const {
+    o.samples += 1.0;
+    return sampleVolume(v, p.interp, pv);
+  }
   bool inRange(double x) const { return x >= s.isoLoStored && x <= s.isoHiStored; }
-  glm::dvec3 worldGradient(const glm::dvec3& pv) const {
+  glm::dvec3 worldGradient(const glm::dvec3& pv, PixelOut& o) const {
+    o.samples += gradSamples;
     return s.view.gradToWorld * volumeGradient(v, p.interp, p.gradient, pv);
   }
 
-  glm::dvec3 pixel(int px, int py) const {
+  // The jitter placement of kernels/raycast.cl: samples shift forward by j steps.
+  glm::dvec3 pixel(int px, int py, PixelOut& o) const {
     glm::dvec3 ow, dw;
     s.view.ray(px, py, p.width, p.height, ow, dw);
     glm::dvec3 ov = s.view.toVoxel(ow), dv = s.view.dirToVoxel(dw);
@@ -53,96 +67,138 @@ struct Marcher {
     if (!intersectBox(ov, dv, s.view.clipLo, s.view.clipHi, t0, t1, axis)) return p.background;
     double step = s.stepMm, len = t1 - t0;
     int n = int(std::clamp(std::ceil(len / step), 0.0, 16777216.0));
+    double j = p.jitter ? double(jitterFraction(px, py)) : 0.0;
+    auto at = [&](int i) { return std::min(t0 + (i + j) * step, t1); };
     glm::dvec3 view = -dw;
-    bool shading = p.shading && p.mode != Mode::Mip;
-    if (p.mode == Mode::Iso) {
-      int hit = -1;
-      double tHit = 0.0;
-      for (int i = 0; i <= n; ++i) {
-        double t = std::min(t0 + i * step, t1);
-        if (inRange(sample(ov + t * dv))) {
-          hit = i;
-          tHit = t;
-          break;
-        }
-      }
-      if (hit < 0) return p.background;
-      if (hit > 0) {
-        double a = std::min(t0 + (hit - 1) * step, t1), b = tHit;
-        for (int k = 0; k < p.refine; ++k) {
-          double m = 0.5 * (a + b);
-          if (inRange(sample(ov + m * dv)))
-            b = m;
-          else
-            a = m;
-        }
-        tHit = p.refine > 0 ? 0.5 * (a + b) : b;
-      }
-      glm::dvec3 pv = ov + tHit * dv;
-      glm::dvec3 c(s.lut.lookup(sample(pv)));
-      if (!shading) return c;
-      glm::dvec3 nw;
-      if (hit == 0 && axis >= 0) {
-        glm::dvec3 e(0.0);
-        e[axis] = 1.0;
-        nw = s.view.gradToWorld * e;  // a flat cap on the clip face
-      } else {
-        nw = worldGradient(pv);
-      }
-      return shade(c, nw, ow + tHit * dw, view, s.view.lightWorld, p.light);
-    }
+    if (p.mode == Mode::Iso) return iso(ov, dv, ow, dw, at, n, axis, o);
     if (p.mode == Mode::Dvr) {
       glm::dvec3 acc(0.0);
       double alpha = 0.0;
-      for (int i = 0; i < n; ++i) {
-        double seg = std::min(step, len - i * step);
-        double t = t0 + i * step + 0.5 * seg;
+      for (int i = 0; i <= n; ++i) {
+        // Segment i ends at the i-th (jittered) sample position; segment 0 is the stub
+        // of j steps before it, empty without jitter.
+        double a = std::max(t0, t0 + (i - 1 + j) * step), b = at(i);
+        if (!(b > a)) continue;
+        double seg = b - a, t = a + 0.5 * seg;
         glm::dvec3 pv = ov + t * dv;
-        glm::dvec4 c = s.lut.lookup(sample(pv));
+        glm::dvec4 c = s.lut.lookup(sample(pv, o));
         if (c.a <= 0.0) continue;
-        double a = p.opacityCorrection ? 1.0 - std::pow(1.0 - c.a, seg / s.referenceStepMm) : c.a;
+        double al = p.opacityCorrection ? 1.0 - std::pow(1.0 - c.a, seg / s.referenceStepMm) : c.a;
         glm::dvec3 rgb(c);
         if (shading)
-          rgb = shade(rgb, worldGradient(pv), ow + t * dw, view, s.view.lightWorld, p.light);
-        acc += (1.0 - alpha) * a * rgb;
-        alpha += (1.0 - alpha) * a;
+          rgb = shade(rgb, worldGradient(pv, o), ow + t * dw, view, s.view.lightWorld, p.light);
+        acc += (1.0 - alpha) * al * rgb;
+        alpha += (1.0 - alpha) * al;
         if (alpha >= p.earlyTermination) break;
       }
       return acc + (1.0 - alpha) * p.background;
     }
     double vmax = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= n; ++i)
-      vmax = std::max(vmax, sample(ov + std::min(t0 + i * step, t1) * dv));
+    for (int i = 0; i <= n; ++i) vmax = std::max(vmax, sample(ov + at(i) * dv, o));
     return glm::dvec3(std::clamp((vmax - s.windowLoStored) * s.windowInvWidth, 0.0, 1.0));
+  }
+
+  template <class At>
+  glm::dvec3 iso(const glm::dvec3& ov, const glm::dvec3& dv, const glm::dvec3& ow,
+                 const glm::dvec3& dw, At at, int n, int axis, PixelOut& o) const {
+    int hit = -1;
+    double tHit = 0.0;
+    for (int i = 0; i <= n; ++i) {
+      double t = at(i);
+      if (inRange(sample(ov + t * dv, o))) {
+        hit = i;
+        tHit = t;
+        break;
+      }
+    }
+    if (hit < 0) return p.background;
+    if (hit > 0) {
+      double a = at(hit - 1), b = tHit;
+      for (int k = 0; k < p.refine; ++k) {
+        double m = 0.5 * (a + b);
+        if (inRange(sample(ov + m * dv, o)))
+          b = m;
+        else
+          a = m;
+      }
+      tHit = p.refine > 0 ? 0.5 * (a + b) : b;
+    }
+    glm::dvec3 pv = ov + tHit * dv;
+    glm::dvec3 c(s.lut.lookup(sample(pv, o)));
+    o.kind = hit > 0 ? HitKind::Surface : HitKind::AtEntry;
+    o.voxel = pv;
+    bool cap = hit == 0 && axis >= 0;
+    glm::dvec3 nw;
+    if (cap) {
+      glm::dvec3 e(0.0);
+      e[axis] = 1.0;
+      nw = s.view.gradToWorld * e;  // a flat cap on the clip face
+    } else if (shading) {
+      nw = worldGradient(pv, o);
+    } else if (o.kind == HitKind::Surface) {
+      // Only for the hits output: the kernel takes no gradient here, so it is not counted.
+      nw = s.view.gradToWorld * volumeGradient(v, p.interp, p.gradient, pv);
+    }
+    o.normal = safeNormalize(nw, glm::dvec3(0.0));
+    if (!shading) return c;
+    return shade(c, nw, ow + tHit * dw, -dw, s.view.lightWorld, p.light);
   }
 };
 
 }  // namespace
 
 FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p) {
+  return renderReferenceFloat(v, p, nullptr);
+}
+
+FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, ReferenceHits* hits) {
   FrameSetup s = makeFrameSetup(v, p);
   Marcher m{v, p, s};
   FloatImage out;
   out.width = p.width;
   out.height = p.height;
-  out.rgb.resize(size_t(p.width) * size_t(p.height) * 3);
-#pragma omp parallel for schedule(dynamic, 4)
+  size_t pixels = size_t(p.width) * size_t(p.height);
+  out.rgb.resize(pixels * 3);
+  if (hits) {
+    hits->width = p.width;
+    hits->height = p.height;
+    hits->kind.assign(pixels, HitKind::None);
+    hits->voxel.assign(pixels, glm::dvec3(0.0));
+    hits->normal.assign(pixels, glm::dvec3(0.0));
+    hits->gradToWorld = s.view.gradToWorld;
+  }
+  double samples = 0.0;
+#pragma omp parallel for schedule(dynamic, 4) reduction(+ : samples)
   for (int y = 0; y < p.height; ++y)
     for (int x = 0; x < p.width; ++x) {
-      glm::dvec3 c = glm::clamp(m.pixel(x, y), 0.0, 1.0);
-      float* o = &out.rgb[(size_t(y) * size_t(p.width) + size_t(x)) * 3];
+      PixelOut po;
+      // No clamp here: a NaN must reach the caller (tests look for it), not turn into 0.
+      glm::dvec3 c = m.pixel(x, y, po);
+      for (int k = 0; k < 3; ++k) c[k] = c[k] < 0.0 ? 0.0 : (c[k] > 1.0 ? 1.0 : c[k]);
+      size_t i = size_t(y) * size_t(p.width) + size_t(x);
+      float* o = &out.rgb[i * 3];
       o[0] = float(c.r);
       o[1] = float(c.g);
       o[2] = float(c.b);
+      samples += po.samples;
+      if (hits) {
+        hits->kind[i] = po.kind;
+        hits->voxel[i] = po.voxel;
+        hits->normal[i] = po.normal;
+      }
     }
+  if (hits) hits->samples = samples;
   return out;
 }
 
 Image quantise(const FloatImage& f) {
   Image img(f.width, f.height);
   for (size_t i = 0, n = size_t(f.width) * size_t(f.height); i < n; ++i) {
-    for (int c = 0; c < 3; ++c)
-      img.rgba[i * 4 + c] = uint8_t(std::lround(std::clamp(f.rgb[i * 3 + c], 0.0f, 1.0f) * 255.0f));
+    for (int c = 0; c < 3; ++c) {
+      float x = f.rgb[i * 3 + c];
+      x = x > 0.0f ? std::min(x, 1.0f) : 0.0f;  // NaN becomes 0, as convert_uchar_sat does
+      img.rgba[i * 4 + c] = uint8_t(std::lround(x * 255.0f));
+    }
     img.rgba[i * 4 + 3] = 255;
   }
   return img;

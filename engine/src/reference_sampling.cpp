@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "voxray/io/volume.h"
 
@@ -49,6 +50,16 @@ glm::dvec3 volumeGradient(const Volume& v, Interp interp, Gradient op, const glm
         g.z += val * dz * w[std::abs(dx) + std::abs(dy)];
       }
   return g * (0.5 / sum);
+}
+
+int gradientSamples(Gradient op) { return op == Gradient::Central ? 6 : 26; }
+
+float jitterFraction(int px, int py) {
+  // uint32_t arithmetic wraps exactly like OpenCL's uint.
+  uint32_t h = uint32_t(px) * 73856093u ^ uint32_t(py) * 19349663u;
+  h = (h ^ (h >> 13)) * 0x5bd1e995u;
+  h ^= h >> 15;
+  return float(h & 0xffffffu) / 16777216.0f;
 }
 
 }  // namespace voxray

@@ -12,5 +12,10 @@ struct Volume;
 double sampleVolume(const Volume& v, Interp interp, const glm::dvec3& p);
 // Gradient in stored units per voxel along the volume axes.
 glm::dvec3 volumeGradient(const Volume& v, Interp interp, Gradient op, const glm::dvec3& p);
+// Volume reads one volumeGradient() call makes (6 or 26).
+int gradientSamples(Gradient op);
+
+// The kernel's per-pixel jitter fraction in [0, 1), bit-exact (see kernels/raycast.cl).
+float jitterFraction(int px, int py);
 
 }  // namespace voxray

@@ -1,20 +1,19 @@
 // QTest on the offscreen platform, driving the real widgets of a MainWindow showing a
 // 64^3 head phantom rendered at 128x96 through PoCL: each test asserts values.
 #include <QComboBox>
+#include <QLabel>
 #include <QMouseEvent>
-#include <QSignalSpy>
-#include <QtTest>
+#include <QSlider>
 
 #include "clip_box_math.h"
 #include "light_gizmo.h"
-#include "main_window.h"
 #include "slice_image.h"
 #include "slice_view.h"
-#include "volume_view.h"
-#include "voxray/io/phantom.h"
+#include "window_fixture.h"
 
 using namespace voxray;
 using namespace voxray::ui;
+using voxray::ui::test::differingPixels;
 
 namespace {
 
@@ -53,36 +52,15 @@ int rightmostLit(const QImage& img) {
   return right;
 }
 
-int differingPixels(const QImage& a, const QImage& b) {
-  if (a.size() != b.size()) return a.width() * a.height();
-  int n = 0;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x) n += a.pixel(x, y) != b.pixel(x, y);
-  return n;
-}
-
 }  // namespace
 
 class WidgetTest : public QObject {
   Q_OBJECT
-  std::unique_ptr<AppModels> models_;
-  std::unique_ptr<MainWindow> window_;
+  test::PhantomWindow fixture_;
+  AppModels* models_ = nullptr;
+  MainWindow* window_ = nullptr;
 
-  // Waits until the 3D view shows a full-quality frame rendered after this call.
-  QImage waitFullFrame() {
-    QSignalSpy spy(&window_->scheduler(), &RenderScheduler::frameReady);
-    for (int tries = 0; tries < 600; ++tries) {
-      if (!spy.isEmpty()) {
-        auto f = spy.takeLast().at(0).value<std::shared_ptr<const Frame>>();
-        if (!f->interactive) {
-          QCoreApplication::processEvents();
-          return window_->volumeView().lastFrame();
-        }
-      }
-      spy.wait(100);
-    }
-    qFatal("no full-quality frame within 60 s");
-  }
+  QImage waitFullFrame() { return test::waitFullFrame(*window_); }
 
   QPointF handleOnWidget(const glm::dvec3& world) {
     VolumeView& view = window_->volumeView();
@@ -93,24 +71,12 @@ class WidgetTest : public QObject {
 
  private slots:
   void init() {
-    models_ = std::make_unique<AppModels>();
-    window_ = std::make_unique<MainWindow>(*models_, "cpu");
-    Quality q;
-    q.resolution = {128, 96};
-    models_->render.setQuality(q);
-    window_->resize(900, 700);
-    window_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-    auto v = std::make_shared<const Volume>(makeHeadPhantom(64));
-    models_->crosshair.setDims(v->dims);
-    models_->document.set(v, "phantom");
-    waitFullFrame();
+    QVERIFY(fixture_.start());
+    models_ = fixture_.models.get();
+    window_ = fixture_.window.get();
   }
 
-  void cleanup() {
-    window_.reset();
-    models_.reset();
-  }
+  void cleanup() { fixture_.stop(); }
 
   void clipHandleDragChangesBoxAndImage() {
     QImage before = window_->volumeView().lastFrame();
@@ -205,6 +171,38 @@ class WidgetTest : public QObject {
     drag(&axial, edge, to);
     QVERIFY(std::abs(models_->render.params().clip.lo.x - 0.3) < 0.02);
     QCOMPARE(models_->render.params().clip.lo.y, 0.1);
+  }
+
+  void presetShiftSliderChangesImage() {
+    models_->render.applyPreset("CT-Bone");  // dvr: the shift moves what is opaque
+    QImage before = waitFullFrame();
+    auto* slider = window_->findChild<QSlider*>("presetShift");
+    QVERIFY(slider);
+    QCOMPARE(slider->value(), 0);
+    // As a user's Page Down on the slider, three times: the table moves 300 HU down, so
+    // tissue below bone density becomes visible.
+    for (int i = 0; i < 3; ++i) slider->triggerAction(QAbstractSlider::SliderPageStepSub);
+    QCOMPARE(models_->render.params().presetShiftHu, -300.0);
+    QImage after = waitFullFrame();
+    QVERIFY2(differingPixels(before, after) > 200,
+             qPrintable(QString::number(differingPixels(before, after))));
+    // The slider follows the model (a preset choice resets the shift).
+    models_->render.applyPreset("CT-Skin");
+    QCOMPARE(slider->value(), 0);
+  }
+
+  void titleShowsFpsAndDevice() {
+    // A second frame, so that there is a rate to show.
+    models_->render.update(kCamera, [](RenderParams& p) { p.camera.zoom = 1.2; });
+    waitFullFrame();
+    auto* deviceLabel = window_->findChild<QLabel*>("deviceLabel");
+    QVERIFY(deviceLabel);
+    QTRY_VERIFY_WITH_TIMEOUT(!deviceLabel->text().startsWith("starting"), 10000);
+    QString title = window_->windowTitle();
+    QVERIFY2(title.startsWith("phantom — "), qPrintable(title));
+    QVERIFY2(title.contains(" fps · "), qPrintable(title));
+    QVERIFY2(title.contains(deviceLabel->text()), qPrintable(title));
+    QVERIFY2(title.endsWith(" — Voxray"), qPrintable(title));
   }
 
  private:

@@ -23,7 +23,15 @@ void RenderStateModel::setQuality(const Quality& q) {
 
 void RenderStateModel::applyPreset(const std::string& name) {
   const Preset& preset = findPreset(name);
-  update(kAppearance, [&](RenderParams& p) { voxray::applyPreset(p, preset); });
+  update(kAppearance, [&](RenderParams& p) {
+    voxray::applyPreset(p, preset);
+    p.presetShiftHu = 0.0;
+  });
+}
+
+void RenderStateModel::setPresetShift(double hu) {
+  double clamped = std::clamp(hu, -kPresetShiftLimitHu, kPresetShiftLimitHu);
+  update(kAppearance, [clamped](RenderParams& p) { p.presetShiftHu = clamped; });
 }
 
 std::string RenderStateModel::toText() const {
@@ -55,6 +63,7 @@ void RenderStateModel::fromText(const std::string& text) {
       // Saved state from another version: keep the current value for this key.
     }
   }
+  p.presetShiftHu = std::clamp(p.presetShiftHu, -kPresetShiftLimitHu, kPresetShiftLimitHu);
   params_ = p;
   setQuality(q);
   changed.notify(kAll);

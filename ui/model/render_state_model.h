@@ -19,6 +19,8 @@ enum Change : unsigned {
   kAll = 0x1fu,
 };
 
+constexpr double kPresetShiftLimitHu = 1000.0;
+
 struct Quality {
   glm::ivec2 resolution{0, 0};  // {0, 0} = the view's size (the "window size" choice)
   double stepScale = 1.0;       // times the engine's default step: 0.5 = finer, 2 = faster
@@ -37,7 +39,11 @@ class RenderStateModel {
   void update(unsigned what, const std::function<void(RenderParams&)>& edit);
   void setQuality(const Quality& q);
   // Selects a transfer-function preset by name (applyPreset: mode, iso range, window).
+  // The preset shift goes back to 0: a shift tuned for one preset means nothing for another.
   void applyPreset(const std::string& name);  // throws Error (Input) for an unknown name
+  // Moves the preset's transfer function along HU (the seed's shift slider), clamped to
+  // +-kPresetShiftLimitHu so that a slider and saved state agree on the range.
+  void setPresetShift(double hu);
 
   // Saved state: the engine's key=value text plus the quality keys.
   std::string toText() const;

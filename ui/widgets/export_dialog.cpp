@@ -5,6 +5,7 @@
 #include <QDialogButtonBox>
 #include <QEventLoop>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QMessageBox>
 #include <QSettings>
@@ -28,20 +29,25 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
   setWindowTitle("Export screenshot");
   auto* form = new QFormLayout(this);
   what_ = new QComboBox;
+  what_->setObjectName("exportWhat");
   what_->addItems({"3D view", "Axial view", "Coronal view", "Sagittal view", "Whole window"});
   form->addRow("Capture", what_);
   size_ = new QComboBox;
+  size_->setObjectName("exportSize");
   size_->addItems({"View size", "Chosen resolution (3D view)"});
   form->addRow("Size", size_);
   width_ = new QSpinBox;
   height_ = new QSpinBox;
+  width_->setObjectName("exportWidth");
+  height_->setObjectName("exportHeight");
   width_->setRange(16, 8192);
   height_->setRange(16, 8192);
   width_->setValue(1920);
   height_->setValue(1080);
   form->addRow("Width", width_);
   form->addRow("Height", height_);
-  annotations_ = new QCheckBox("Burn in annotations (values, positions, file name)");
+  annotations_ = new QCheckBox("Burn in the cursor readout (value and position)");
+  annotations_->setObjectName("exportAnnotations");
   form->addRow(annotations_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Save | QDialogButtonBox::Cancel);
   connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::save);
@@ -83,26 +89,51 @@ QImage ExportDialog::capture() {
   return image;
 }
 
-void ExportDialog::save() {
+QString ExportDialog::askPath() {
+  if (choose_) return choose_();
   QSettings s;
-  // The Qt file dialog asks before replacing an existing file.
+  // resolveExportTarget asks about replacing, with the name as it will be written.
   QString path = QFileDialog::getSaveFileName(
       this, "Export screenshot", s.value("lastExportFolder").toString(),
-      "PNG image (*.png);;TIFF image (*.tif *.tiff);;OpenEXR image (*.exr)");
-  if (path.isEmpty()) return;
-  if (QFileInfo(path).suffix().isEmpty()) path += ".png";
-  s.setValue("lastExportFolder", QFileInfo(path).absolutePath());
+      "PNG image (*.png);;TIFF image (*.tif *.tiff);;OpenEXR image (*.exr)", nullptr,
+      QFileDialog::DontConfirmOverwrite);
+  if (!path.isEmpty()) s.setValue("lastExportFolder", QFileInfo(path).absolutePath());
+  return path;
+}
+
+bool ExportDialog::askOverwrite(const std::string& path) {
+  if (confirm_) return confirm_(path);
+  auto answer = QMessageBox::question(
+      this, "Replace file?",
+      QString("%1 already exists. Replace it?").arg(QString::fromStdString(path)),
+      QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+  return answer == QMessageBox::Yes;
+}
+
+bool ExportDialog::exportTo(const QString& chosen) {
+  auto fail = [this](const QString& message) {
+    if (error_)
+      error_(message);
+    else
+      QMessageBox::warning(this, "Export failed", message);
+    return false;
+  };
+  auto target = resolveExportTarget(chosen.toStdString(),
+                                    [this](const std::string& p) { return askOverwrite(p); });
+  if (!target) return false;
   QImage image = capture();
-  if (image.isNull()) {
-    QMessageBox::warning(this, "Export failed", "No image to export yet (no frame rendered).");
-    return;
-  }
+  if (image.isNull()) return fail("No image to export yet (no frame rendered).");
   try {
-    writeImage(path.toStdString(), fromQImage(image));
-    accept();
+    writeImage(*target, fromQImage(image));
   } catch (const std::exception& e) {
-    QMessageBox::warning(this, "Export failed", e.what());
+    return fail(e.what());
   }
+  return true;
+}
+
+void ExportDialog::save() {
+  QString path = askPath();
+  if (!path.isEmpty() && exportTo(path)) accept();
 }
 
 }  // namespace voxray::ui

@@ -1,12 +1,15 @@
 #pragma once
 // Screenshot export (Ctrl+E): the 3D view at view size or a chosen resolution, a slice
-// view, or the whole window, written as PNG, TIFF or EXR through writeImage. The file
-// dialog asks before overwriting; annotations (values under the cursor, file name) are
-// left out unless the user ticks them.
+// view, or the whole window, written as PNG, TIFF or EXR through writeImage. An existing
+// file is replaced only after a yes (resolveExportTarget, asked with the final name); the
+// cursor readout is left out unless the user ticks it. The 3D view exports its rendered
+// pixels only, never the handles drawn over them.
 #include <array>
+#include <functional>
 
 #include <QDialog>
 
+#include "export_target.h"
 #include "render_scheduler.h"
 
 class QCheckBox;
@@ -24,8 +27,18 @@ class ExportDialog : public QDialog {
   ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeView& view,
                const std::array<SliceView*, 3>& slices);
 
+  // What the Save button asks for; tests replace the file and message dialogs.
+  void setPathChooser(std::function<QString()> choose) { choose_ = std::move(choose); }
+  void setConfirmOverwrite(ConfirmOverwrite confirm) { confirm_ = std::move(confirm); }
+  void setErrorSink(std::function<void(const QString&)> sink) { error_ = std::move(sink); }
+  // Writes the current choice to CHOSEN (".png" added when it has no suffix). False when
+  // nothing was written: the user kept an existing file, or capturing or writing failed.
+  bool exportTo(const QString& chosen);
+
  private:
   void save();
+  QString askPath();
+  bool askOverwrite(const std::string& path);
   QImage capture();  // empty on failure (a dialog has said why)
 
   QWidget* window_;
@@ -37,6 +50,9 @@ class ExportDialog : public QDialog {
   QSpinBox* width_;
   QSpinBox* height_;
   QCheckBox* annotations_;
+  std::function<QString()> choose_;
+  ConfirmOverwrite confirm_;
+  std::function<void(const QString&)> error_;
 };
 
 }  // namespace voxray::ui

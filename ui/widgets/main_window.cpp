@@ -47,18 +47,22 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   setCentralWidget(splitter);
 
   fpsLabel_ = new QLabel("no frame yet");
+  fpsLabel_->setObjectName("fpsLabel");
   deviceLabel_ = new QLabel("starting OpenCL …");
+  deviceLabel_->setObjectName("deviceLabel");
   statusBar()->addPermanentWidget(fpsLabel_);
   statusBar()->addPermanentWidget(deviceLabel_);
   connect(scheduler_, &RenderScheduler::statsChanged, this,
           [this](double fps, double ms, bool interactive) {
-            fpsLabel_->setText(QString("%1 fps · %2 ms%3")
-                                   .arg(fps, 0, 'f', 1)
-                                   .arg(ms, 0, 'f', 0)
-                                   .arg(interactive ? " (interactive)" : ""));
+            stats_ = {true, fps, ms, interactive};
+            fpsLabel_->setText(QString::fromStdString(formatFrameStats(stats_)));
+            updateTitle();
           });
-  connect(scheduler_, &RenderScheduler::deviceReady, this,
-          [this](const QString& name) { deviceLabel_->setText(name); });
+  connect(scheduler_, &RenderScheduler::deviceReady, this, [this](const QString& name) {
+    device_ = name;
+    deviceLabel_->setText(name);
+    updateTitle();
+  });
   connect(scheduler_, &RenderScheduler::renderError, this,
           [this](const QString& message, bool rejected) {
             // The engine's message says what failed; the previous volume stays on screen.
@@ -150,7 +154,11 @@ void MainWindow::openDicomFolder() {
 
 void MainWindow::openRaw() {
   QSettings s;
-  auto request = RawImportDialog::ask(this, s.value("lastFolder", QDir::homePath()).toString());
+  auto request = RawImportDialog::ask(this, s.value("lastFolder", QDir::homePath()).toString(),
+                                      [](const std::string& path) {
+                                        QSettings settings;
+                                        return loadRawLayoutFor(settings, path);
+                                      });
   if (!request) return;
   s.setValue("lastFolder", QFileInfo(request->first).absolutePath());
   LoadOptions o;
@@ -160,17 +168,22 @@ void MainWindow::openRaw() {
 
 void MainWindow::exportScreenshot() {
   ExportDialog dialog(this, *scheduler_, *volumeView_, slices_);
+  if (errorSink_) dialog.setErrorSink([this](const QString& m) { errorSink_("Export failed", m); });
   dialog.exec();
 }
 
 void MainWindow::showError(const QString& title, const QString& message) {
+  if (errorSink_) {
+    errorSink_(title, message);
+    return;
+  }
   QMessageBox box(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
   box.exec();
 }
 
 void MainWindow::updateTitle() {
-  QString name = QString::fromStdString(models_.document.name());
-  setWindowTitle(name.isEmpty() ? "Voxray" : name + " — Voxray");
+  setWindowTitle(QString::fromStdString(
+      formatWindowTitle(models_.document.name(), stats_, device_.toStdString())));
 }
 
 void MainWindow::restoreSettings() {

@@ -2,6 +2,7 @@
 // The workstation window. It composes views, panel, menus and status bar and wires them
 // to the models; it computes nothing itself (models and small helpers do).
 #include <array>
+#include <functional>
 
 #include <QLabel>
 #include <QMainWindow>
@@ -10,6 +11,7 @@
 #include "app_models.h"
 #include "load_controller.h"
 #include "render_scheduler.h"
+#include "status_text.h"
 #include "view_grid.h"
 
 namespace voxray::ui {
@@ -32,6 +34,11 @@ class MainWindow : public QMainWindow {
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread.
   void open(const std::string& input, const LoadOptions& options);
   void restoreSettings();
+
+  // Where load, render and export errors go: a modal message box unless a test (or an
+  // embedding) sets its own sink.
+  using ErrorSink = std::function<void(const QString& title, const QString& message)>;
+  void setErrorSink(ErrorSink sink) { errorSink_ = std::move(sink); }
 
  signals:
   void volumeShown();  // a loaded volume became the document
@@ -59,6 +66,9 @@ class MainWindow : public QMainWindow {
   QLabel* fpsLabel_;
   QLabel* deviceLabel_;
   QMenu* recentMenu_ = nullptr;
+  FrameStats stats_;
+  QString device_;
+  ErrorSink errorSink_;
 };
 
 }  // namespace voxray::ui

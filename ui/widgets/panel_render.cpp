@@ -1,10 +1,14 @@
-// Render mode, transfer-function preset, iso range, gradient, interpolation, quality and
-// camera controls.
+// Render mode, transfer-function preset and its shift, iso range, gradient, interpolation,
+// quality and camera controls.
+#include <cmath>
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSlider>
 #include <QVBoxLayout>
 
 #include "camera_control.h"
@@ -24,6 +28,39 @@ QDoubleSpinBox* huSpin() {
   s->setSuffix(" HU");
   s->setKeyboardTracking(false);
   return s;
+}
+
+// The seed's shift slider: moves the preset's transfer function along HU, e.g. to show
+// bone at a lower density. Clicking the value sets it back to 0.
+QWidget* makePresetShiftRow(RenderStateModel& m) {
+  auto* row = new QWidget;
+  auto* layout = new QHBoxLayout(row);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* slider = new QSlider(Qt::Horizontal);
+  slider->setObjectName("presetShift");
+  slider->setRange(int(-kPresetShiftLimitHu), int(kPresetShiftLimitHu));
+  slider->setSingleStep(10);
+  slider->setPageStep(100);
+  slider->setToolTip("Move the preset's transfer function along HU");
+  auto* value = new QPushButton;
+  value->setObjectName("presetShiftReset");
+  value->setFlat(true);
+  value->setToolTip("Back to 0");
+  value->setFixedWidth(value->fontMetrics().horizontalAdvance("+1000 HU") + 12);
+  auto refresh = [slider, value, &m] {
+    QSignalBlocker block(slider);
+    slider->setValue(int(std::lround(m.params().presetShiftHu)));
+    value->setText(QString::asprintf("%+d HU", slider->value()));
+  };
+  refresh();
+  onModelChange<unsigned>(slider, m.changed, [refresh](unsigned what) {
+    if (what & kAppearance) refresh();
+  });
+  QObject::connect(slider, &QSlider::valueChanged, slider, [&m](int hu) { m.setPresetShift(hu); });
+  QObject::connect(value, &QPushButton::clicked, value, [&m] { m.setPresetShift(0.0); });
+  layout->addWidget(slider, 1);
+  layout->addWidget(value);
+  return row;
 }
 
 }  // namespace
@@ -63,6 +100,7 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
     }
   });
   form->addRow("Preset", preset);
+  form->addRow("Shift", makePresetShiftRow(m));
 
   auto* isoLo = huSpin();
   bindSpin(

@@ -6,20 +6,56 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QHash>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRegularExpressionValidator>
 #include <QSpinBox>
 
 #include "qt_image.h"
 #include "raw_preview.h"
+#include "voxray/io/orientation.h"
 
 namespace voxray::ui {
 
-RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder)
-    : QDialog(parent), startFolder_(startFolder) {
+namespace {
+
+std::optional<glm::dmat3> axesDirection(const QString& code) {
+  try {
+    return directionFromAxesCode(code.toUpper().toStdString());
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// Under the code field: where each axis grows in the patient, or what a code must be. One
+// short line either way (the importer's longer message is the tooltip): a wrapped label
+// would make the dialog jump.
+std::pair<QString, QString> axesMessage(const QString& code) {
+  try {
+    directionFromAxesCode(code.toUpper().toStdString());
+  } catch (const std::exception& e) {
+    return {"<span style='color:#c03030'>✗ one letter each from L/R, A/P, S/I, e.g. LPI</span>",
+            QString(e.what())};
+  }
+  static const QHash<QChar, QString> words = {{'L', "left"},     {'R', "right"},
+                                              {'A', "anterior"}, {'P', "posterior"},
+                                              {'S', "superior"}, {'I', "inferior"}};
+  QString upper = code.toUpper();
+  return {
+      QString("✓ x → %1, y → %2, z → %3").arg(words[upper[0]], words[upper[1]], words[upper[2]]),
+      {}};
+}
+
+}  // namespace
+
+RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, LayoutLookup lookup)
+    : QDialog(parent), startFolder_(startFolder), lookup_(std::move(lookup)) {
   setWindowTitle("Open raw volume");
   auto* form = new QFormLayout;
   path_ = new QLineEdit;
+  path_->setObjectName("path");
+  path_->setPlaceholderText("raw file, or folder of numbered slice files");
   auto* browseFile = new QPushButton("File…");
   auto* browseDir = new QPushButton("Slice folder…");
   auto* pathRow = new QHBoxLayout;
@@ -39,6 +75,7 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder)
   auto* spacingRow = new QHBoxLayout;
   for (int a = 0; a < 3; ++a) {
     dims_[a] = new QSpinBox;
+    dims_[a]->setObjectName(QString("dim%1").arg(a));
     dims_[a]->setRange(0, 4096);
     dims_[a]->setValue(a < 2 ? 256 : 0);
     dimsRow->addWidget(dims_[a]);
@@ -51,10 +88,12 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder)
   dims_[2]->setSpecialValueText("from files");
   form->addRow("Dimensions x, y, z", dimsRow);
   type_ = new QComboBox;
+  type_->setObjectName("sampleType");
   type_->addItems({"u8", "i16", "u16", "f32"});
   type_->setCurrentIndex(1);
   form->addRow("Sample type", type_);
   order_ = new QComboBox;
+  order_->setObjectName("byteOrder");
   order_->addItems({"little", "big"});
   form->addRow("Byte order", order_);
   header_ = new QSpinBox;
@@ -72,8 +111,26 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder)
   rescaleRow->addWidget(slope_);
   rescaleRow->addWidget(intercept_);
   form->addRow("Rescale slope, intercept", rescaleRow);
+  // Raw data carry no orientation: the code names the patient direction of x, y and z.
+  axes_ = new QComboBox;
+  axes_->setObjectName("axes");
+  axes_->setEditable(true);
+  axes_->setInsertPolicy(QComboBox::NoInsert);
+  axes_->addItems({"LPS", "LPI", "RAS", "RAI", "PIL", "AIL"});
+  axes_->setToolTip(
+      "Patient direction in which x, y and z grow: L/R, P/A, S/I.\n"
+      "LPS: DICOM's axes. LPI: axial slices, first slice at the top of the head.\n"
+      "PIL: sagittal slices, face on the left, crown at the top.");
+  axes_->setValidator(
+      new QRegularExpressionValidator(QRegularExpression("[LRAPSIlrapsi]{0,3}"), axes_));
+  axesCheck_ = new QLabel;
+  axesCheck_->setObjectName("axesCheck");
+  axesCheck_->setWordWrap(true);
+  form->addRow("Orientation (x, y, z)", axes_);
+  form->addRow("", axesCheck_);  // its own row: an error message needs the width
   sizeCheck_ = new QLabel;
   sizeCheck_->setObjectName("sizeCheck");
+  sizeCheck_->setWordWrap(true);
   form->addRow("File size", sizeCheck_);
   preview_ = new QLabel;
   preview_->setObjectName("preview");
@@ -81,13 +138,17 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder)
   preview_->setAlignment(Qt::AlignCenter);
   form->addRow("Preview", preview_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Open | QDialogButtonBox::Cancel);
-  connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  open_ = buttons->button(QDialogButtonBox::Open);
+  connect(buttons, &QDialogButtonBox::accepted, this, [this] {
+    if (acceptable()) accept();
+  });
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form);
   layout->addWidget(buttons);
 
-  connect(path_, &QLineEdit::textChanged, this, &RawImportDialog::refresh);
+  connect(path_, &QLineEdit::textChanged, this, &RawImportDialog::pathChanged);
+  connect(axes_, &QComboBox::currentTextChanged, this, &RawImportDialog::refresh);
   for (int a = 0; a < 3; ++a)
     connect(dims_[a], &QSpinBox::valueChanged, this, &RawImportDialog::refresh);
   connect(type_, &QComboBox::currentIndexChanged, this, &RawImportDialog::refresh);
@@ -105,10 +166,41 @@ RawLayout RawImportDialog::layout() const {
   l.spacingMm = {spacing_[0]->value(), spacing_[1]->value(), spacing_[2]->value()};
   l.slope = slope_->value();
   l.intercept = intercept_->value();
+  if (auto d = axesDirection(axes_->currentText())) l.direction = *d;
   return l;
 }
 
+void RawImportDialog::setLayout(const RawLayout& l) {
+  for (int a = 0; a < 3; ++a) {
+    dims_[a]->setValue(l.dims[a]);
+    spacing_[a]->setValue(l.spacingMm[a]);
+  }
+  type_->setCurrentText(toString(l.type));
+  order_->setCurrentIndex(l.order == ByteOrder::Big ? 1 : 0);
+  header_->setValue(int(l.headerBytes));
+  slope_->setValue(l.slope);
+  intercept_->setValue(l.intercept);
+  axes_->setCurrentText(QString::fromStdString(axesCodeFromDirection(l.direction)));
+  refresh();
+}
+
 QString RawImportDialog::path() const { return path_->text(); }
+
+void RawImportDialog::setPath(const QString& path) { path_->setText(path); }
+
+bool RawImportDialog::acceptable() const {
+  return !path().isEmpty() && axesDirection(axes_->currentText()).has_value();
+}
+
+void RawImportDialog::pathChanged() {
+  // A file opened before comes back with the layout it was opened with.
+  if (lookup_)
+    if (auto saved = lookup_(path().toStdString())) {
+      setLayout(*saved);
+      return;  // setLayout refreshed
+    }
+  refresh();
+}
 
 void RawImportDialog::refresh() {
   std::string p = path().toStdString();
@@ -130,11 +222,16 @@ void RawImportDialog::refresh() {
             .scaled(preview_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation));
   else
     preview_->setText("no preview");
+  auto [text, detail] = axesMessage(axes_->currentText());
+  axesCheck_->setText(text);
+  axesCheck_->setToolTip(detail);
+  open_->setEnabled(acceptable());
 }
 
 std::optional<std::pair<QString, RawLayout>> RawImportDialog::ask(QWidget* parent,
-                                                                  const QString& startFolder) {
-  RawImportDialog d(parent, startFolder);
+                                                                  const QString& startFolder,
+                                                                  LayoutLookup lookup) {
+  RawImportDialog d(parent, startFolder, std::move(lookup));
   if (d.exec() != QDialog::Accepted || d.path().isEmpty()) return std::nullopt;
   return std::make_pair(d.path(), d.layout());
 }

@@ -1,6 +1,8 @@
 #pragma once
-// The raw-stack dialog: dims, sample type, byte order, header offset, spacing and rescale,
-// with the expected against the actual file size and a preview slice before loading.
+// The raw-stack dialog: dims, sample type, byte order, header offset, spacing, rescale and
+// orientation (an axes code such as LPI), with the expected against the actual file size
+// and a preview slice before loading. A file opened before gets its saved layout back.
+#include <functional>
 #include <optional>
 #include <utility>
 
@@ -10,6 +12,7 @@
 #include "voxray/io/raw_import.h"
 
 class QComboBox;
+class QPushButton;
 class QDoubleSpinBox;
 class QLineEdit;
 class QSpinBox;
@@ -19,15 +22,23 @@ namespace voxray::ui {
 class RawImportDialog : public QDialog {
   Q_OBJECT
  public:
-  RawImportDialog(QWidget* parent, const QString& startFolder);
-  RawLayout layout() const;
+  // The layout saved for a path, if any (the window passes the settings store's lookup).
+  using LayoutLookup = std::function<std::optional<RawLayout>(const std::string& path)>;
+
+  RawImportDialog(QWidget* parent, const QString& startFolder, LayoutLookup lookup = {});
+  RawLayout layout() const;  // the axes code must be valid (acceptable() says so)
+  void setLayout(const RawLayout& l);
   QString path() const;
+  void setPath(const QString& path);
+  bool acceptable() const;  // a path and a valid axes code
   // Shows the dialog; the chosen path and layout, or nullopt when cancelled.
   static std::optional<std::pair<QString, RawLayout>> ask(QWidget* parent,
-                                                          const QString& startFolder);
+                                                          const QString& startFolder,
+                                                          LayoutLookup lookup = {});
 
  private:
-  void refresh();  // size check and preview for the current fields
+  void refresh();  // size check, preview and axes check for the current fields
+  void pathChanged();
 
   QString startFolder_;
   QLineEdit* path_;
@@ -38,6 +49,10 @@ class RawImportDialog : public QDialog {
   QDoubleSpinBox* spacing_[3];
   QDoubleSpinBox* slope_;
   QDoubleSpinBox* intercept_;
+  QComboBox* axes_;
+  QLabel* axesCheck_;
+  QPushButton* open_;
+  LayoutLookup lookup_;
   QLabel* sizeCheck_;
   QLabel* preview_;
 };

@@ -2,6 +2,8 @@
 
 #include <QCryptographicHash>
 
+#include "voxray/io/orientation.h"
+
 namespace voxray::ui {
 
 namespace {
@@ -49,6 +51,11 @@ void saveRawLayoutFor(QSettings& s, const std::string& path, const RawLayout& l)
   s.setValue("header", qulonglong(l.headerBytes));
   s.setValue("slope", l.slope);
   s.setValue("intercept", l.intercept);
+  s.setValue("axes", QString::fromStdString(axesCodeFromDirection(l.direction)));
+  if (l.range)
+    s.setValue("range", QList<QVariant>{l.range->first, l.range->second});
+  else
+    s.remove("range");
   s.endGroup();
 }
 
@@ -62,12 +69,20 @@ std::optional<RawLayout> loadRawLayoutFor(QSettings& s, const std::string& path)
     if (d.size() == 3 && sp.size() == 3) {
       l.dims = {d[0].toInt(), d[1].toInt(), d[2].toInt()};
       l.spacingMm = {sp[0].toDouble(), sp[1].toDouble(), sp[2].toDouble()};
-      l.type = parseSampleType(s.value("type").toString().toStdString());
       l.order = s.value("bigEndian").toBool() ? ByteOrder::Big : ByteOrder::Little;
       l.headerBytes = size_t(s.value("header").toULongLong());
       l.slope = s.value("slope", 1.0).toDouble();
       l.intercept = s.value("intercept", 0.0).toDouble();
-      out = l;
+      auto r = s.value("range").toList();
+      if (r.size() == 2) l.range = std::make_pair(r[0].toInt(), r[1].toInt());
+      try {
+        l.type = parseSampleType(s.value("type").toString().toStdString());
+        // Saved before orientation existed: LPS, what those loads used.
+        l.direction = directionFromAxesCode(s.value("axes", "LPS").toString().toStdString());
+        out = l;
+      } catch (const std::exception&) {
+        // Edited by hand into nonsense: better to ask again than to load it wrongly.
+      }
     }
   }
   s.endGroup();

@@ -1,6 +1,7 @@
 #pragma once
 // What persists between sessions (QSettings): the render state and quality as the engine's
-// key=value text, window/level, recent files and the raw layout last used for each file.
+// key=value text, window/level, recent files and the raw layout last used for each file
+// (dims, type, byte order, header, spacing, rescale, slice range and axes code).
 #include <optional>
 #include <string>
 #include <vector>

@@ -14,10 +14,20 @@ class ClContext;
 
 enum class VolumeStorage { Auto, Buffer, Image3d };
 
+// How frames are computed; none of it changes the image (beyond float rounding).
+struct RaycasterOptions {
+  // Specialised: one kernel per combination of features, compiled with -D literals.
+  // Uber: one kernel for all, the switches read at runtime (to measure specialisation).
+  enum class Kernel { Specialised, Uber } kernel = Kernel::Specialised;
+  bool emptySpaceSkipping = true;  // leap macro cells that cannot change the pixel
+  bool countSamples = false;       // fill FrameStats::samples (an atomic add per ray)
+  int localX = 0, localY = 0;      // work-group size; 0 = the default for the device
+};
+
 struct FrameStats {
   double kernelMs = 0.0;  // from OpenCL profiling events
   double totalMs = 0.0;   // wall time including upload of parameters and read-back
-  double samples = 0.0;   // volume samples taken (0 when not counted)
+  double samples = 0.0;   // volume samples taken (0 unless RaycasterOptions::countSamples)
   std::string variant;    // the -D options of the kernel that ran
 };
 
@@ -25,7 +35,8 @@ class Raycaster {
  public:
   // Uploads the volume. Auto storage: image3d_t with hardware filtering on a GPU, a
   // buffer with manual trilinear on a CPU. Throws Error (Device) when the volume does not
-  // fit the device, naming sizes and limits.
+  // fit the device, naming sizes and limits. The volume must outlive the raycaster (on a
+  // CPU device the kernels read its voxels in place).
   Raycaster(ClContext& ctx, const Volume& volume, VolumeStorage storage = VolumeStorage::Auto);
   ~Raycaster();
   Raycaster(const Raycaster&) = delete;
@@ -38,6 +49,10 @@ class Raycaster {
   // The -D options a frame with these parameters compiles with.
   std::string variantOptions(const RenderParams& params) const;
   VolumeStorage storage() const;
+  void setOptions(const RaycasterOptions& options);
+  const RaycasterOptions& options() const;
+  // Times the occupancy grid was classified (it should follow TF / iso changes only).
+  int classifications() const;
 
  private:
   struct Impl;

@@ -48,8 +48,9 @@ struct RenderParams {
   int width = 512;
   int height = 384;
   Mode mode = Mode::Iso;
-  std::string preset;    // transfer-function preset name; empty = mode's default
-  double isoLo = 400.0;  // HU range of the first-hit surface (the seed's two sliders)
+  std::string preset;          // transfer-function preset name; empty = mode's default
+  double presetShiftHu = 0.0;  // moves every control point of the preset along HU
+  double isoLo = 400.0;        // HU range of the first-hit surface (the seed's two sliders)
   double isoHi = 32767.0;
   Gradient gradient = Gradient::Central;
   Interp interp = Interp::Linear;
@@ -57,7 +58,7 @@ struct RenderParams {
   int refine = 4;       // bisection steps refining an iso hit
   bool shading = true;
   bool opacityCorrection = true;
-  bool jitter = false;        // offset each ray's first sample by a per-pixel fraction of a step
+  bool jitter = false;  // offset each ray's first sample by a per-pixel fraction of a step
   double earlyTermination = 0.99;  // dvr: stop once this opacity is reached
   double windowWidth = 0.0;        // mip grey mapping in HU; width 0 = the volume's range
   double windowLevel = 0.0;

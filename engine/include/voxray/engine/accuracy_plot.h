@@ -1,0 +1,16 @@
+#pragma once
+// The Pareto plot of `voxray-cli accuracy --plot`: error against milliseconds per frame,
+// log-log, drawn by a tiny rasteriser (no plotting library).
+#include <vector>
+
+#include "voxray/engine/accuracy_sweep.h"
+#include "voxray/io/image.h"
+
+namespace voxray {
+
+// Left panel: iso surface position error (voxels; the hit-point error where there is no
+// analytic surface). Right panel: image RMSE against the reference. One colour per scene;
+// the fastest-for-its-error frontier of each panel is joined by a line.
+Image accuracyPlot(const std::vector<SweepRow>& rows);
+
+}  // namespace voxray

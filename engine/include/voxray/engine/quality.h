@@ -1,0 +1,39 @@
+#pragma once
+// Quality presets (resources/quality/*.json): named speed/accuracy trades chosen from the
+// accuracy sweep's measurements, each carrying the error and speed measured for it. The
+// UI's quality control and interactive-drag mode apply one to the user's parameters.
+#include <string>
+#include <vector>
+
+#include "voxray/engine/render_params.h"
+
+namespace voxray {
+
+struct Volume;
+
+struct QualityPreset {
+  std::string name;  // interactive, balanced, reference
+  std::string description;
+  double stepVoxels = 0.5;       // ray step in units of the smallest voxel spacing
+  double resolutionScale = 1.0;  // image size factor (the drag mode renders smaller)
+  Interp interp = Interp::Linear;
+  Gradient gradient = Gradient::ZuckerHummel;
+  int refine = 4;
+  bool jitter = false;
+  // Measured on CThead dvr (CT-Bone) by `voxray-cli accuracy`: PSNR against the
+  // reference renderer at 1/16-voxel steps, and the speed-up over the reference preset.
+  double measuredPsnrDb = 0.0;
+  double measuredSpeedup = 1.0;
+  double measuredMsPerFrame = 0.0;
+  std::string measuredOn;  // device and image size of the measurement
+};
+
+// Throws Error (Input) naming `origin` and what is wrong.
+QualityPreset parseQualityPreset(const std::string& json, const std::string& origin);
+// Every *.json in a folder, sorted by name; throws Error (Input) when it has none.
+std::vector<QualityPreset> loadQualityPresets(const std::string& folder);
+
+// p with the preset's step, reconstruction, gradient, refinement, jitter and image size.
+RenderParams applyQuality(RenderParams p, const QualityPreset& q, const Volume& v);
+
+}  // namespace voxray

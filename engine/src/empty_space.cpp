@@ -1,0 +1,64 @@
+#include "empty_space.h"
+
+#include <algorithm>
+
+#include "cl_context_impl.h"
+#include "voxray/engine/render_params.h"
+#include "voxray/engine/transfer_function.h"
+
+namespace voxray {
+
+void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
+  cells_ = computeMacroCells(v);
+  size_t n = cells_.minMax.size() / 2;
+  clCall([&] {
+    range_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(cl_short2),
+                        cells_.minMax.data());
+    occ_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
+    return 0;
+  });
+  key_.clear();
+}
+
+void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const RaycastParams& k,
+                          Mode mode, const Lut& lut) {
+  if (mode == Mode::Mip) return;
+  int m = mode == Mode::Iso ? 0 : 1;
+  // iso depends on the range only; dvr on which table entries are not transparent and on
+  // where the table sits in stored units.
+  std::vector<float> key = {float(m), k.values.s[0], k.values.s[1]};
+  std::vector<int> opaque;
+  if (m == 1) {
+    key = {float(m), k.values.s[2], k.values.s[3]};
+    opaque.resize(lut.rgba.size() + 1, 0);
+    for (size_t i = 0; i < lut.rgba.size(); ++i) opaque[i + 1] = opaque[i] + (lut.rgba[i].a > 0.0f);
+  }
+  if (key == key_ && opaque == opaque_) return;
+  size_t cells = cells_.minMax.size() / 2;
+  clCall([&] {
+    cl::CommandQueue& q = cl.queue;
+    size_t bytes = std::max<size_t>(opaque.size(), 1) * sizeof(cl_int);
+    if (bytes > opaqueCapacity_) {
+      opaqueBefore_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY, bytes);
+      opaqueCapacity_ = bytes;
+    }
+    if (!opaque.empty())
+      q.enqueueWriteBuffer(opaqueBefore_, CL_TRUE, 0, opaque.size() * sizeof(cl_int),
+                           opaque.data());
+    cl::Kernel kernel = cl.kernel("classify.cl", "classify", "");
+    kernel.setArg(0, range_);
+    kernel.setArg(1, params);
+    kernel.setArg(2, opaqueBefore_);
+    kernel.setArg(3, cl_int(m));
+    kernel.setArg(4, cl_int(cells));
+    kernel.setArg(5, occ_);
+    size_t global = (cells + 63) / 64 * 64;
+    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    return 0;
+  });
+  key_ = std::move(key);
+  opaque_ = std::move(opaque);
+  ++classifications_;
+}
+
+}  // namespace voxray

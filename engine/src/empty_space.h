@@ -1,0 +1,41 @@
+#pragma once
+// The device side of empty-space skipping: each macro cell's min/max (uploaded once per
+// volume) and its occupancy for the current frame, reclassified on the device only when
+// the iso range or the transfer function's opacity changes.
+#include <vector>
+
+#include <CL/opencl.hpp>
+
+#include "kernel_params.h"
+#include "macro_cells.h"
+
+namespace voxray {
+
+struct ContextImpl;
+struct Lut;
+enum class Mode;
+
+class EmptySpace {
+ public:
+  // Computes the macro cells of v on the host and uploads them.
+  void upload(ContextImpl& cl, const Volume& v);
+  // Brings the occupancy up to date for a frame whose parameters k are already enqueued
+  // in params (the queue is in order). mip needs none: it reads the min/max directly.
+  void classify(ContextImpl& cl, const cl::Buffer& params, const RaycastParams& k, Mode mode,
+                const Lut& lut);
+  const glm::ivec3& dims() const { return cells_.dims; }
+  const cl::Buffer& range() const { return range_; }
+  const cl::Buffer& occupancy() const { return occ_; }
+  int classifications() const { return classifications_; }
+
+ private:
+  MacroCells cells_;
+  cl::Buffer range_, occ_, opaqueBefore_;
+  size_t opaqueCapacity_ = 0;
+  // What the occupancy was classified for; equal keys skip the work.
+  std::vector<float> key_;
+  std::vector<int> opaque_;
+  int classifications_ = 0;
+};
+
+}  // namespace voxray

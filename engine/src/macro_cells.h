@@ -1,0 +1,27 @@
+#pragma once
+// Min/max of the volume over macro cells, the basis of empty-space skipping. Computed
+// once per volume on the host; the device classifies it per transfer function
+// (kernels/classify.cl) and the raycaster leaps empty cells (kernels/skip.cl).
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace voxray {
+
+struct Volume;
+
+// Cell edge in voxels; kernels/params.cl defines the same CELL.
+constexpr int kCellSize = 8;
+
+struct MacroCells {
+  glm::ivec3 dims{0};           // cells along x, y, z: ceil(volume dims / kCellSize)
+  std::vector<int16_t> minMax;  // per cell, x fastest: min, max (as the kernels' short2)
+};
+
+// Cell c covers voxels kCellSize * c - 1 ... kCellSize * (c + 1) along each axis,
+// clamped to the volume: every sample whose position falls in the cell reads only
+// those voxels, with one to spare. Runs on all hardware threads.
+MacroCells computeMacroCells(const Volume& v);
+
+}  // namespace voxray

@@ -1,0 +1,126 @@
+// The three ways of marching a ray (MODE): each returns the pixel colour and adds the
+// volume samples it took to *count. With ESS they ask skip.cl before each cell and leap
+// the samples that cannot change the pixel, so the image is the same with or without it.
+#ifndef VOXRAY_MARCH_CL
+#define VOXRAY_MARCH_CL
+
+#include "gradients.cl"
+#include "math.cl"
+#include "sampling.cl"
+#include "shading.cl"
+#include "skip.cl"
+
+inline float4 lut_lookup(__global const float4* lut, __constant RaycastParams* P, float v) {
+  float last = (float)(P->dims.w - 1);
+  float x = clamp((v - P->values.z) * P->values.w, 0.0f, last);
+  float i = floor(x);
+  int k = (int)i;
+  int k1 = min(k + 1, P->dims.w - 1);
+  return mix(lut[k], lut[k1], x - i);
+}
+
+// Normal at p (voxel coordinates) in world space; not normalised.
+inline float3 world_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
+  float3 g = volume_gradient(vol, P, p);
+  return mat_mul(P->grad_x, P->grad_y, P->grad_z, g);
+}
+
+inline bool in_iso(__constant RaycastParams* P, float v) {
+  return v >= P->values.x && v <= P->values.y;
+}
+
+// First hit of the iso range, refined by bisection between the last miss and the hit.
+inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
+                        CELL_ARGS, const Ray* r, float3 origin_w, float3 dir_w, int axis,
+                        uint* count) {
+  int hit = -1;
+  float t_hit = 0.0f;
+  for (int i = 0, check = 0; i <= r->n; ++i) {
+    if (ESS && i >= check) {
+      i = ess_next(occ, range, P, r, false, i, 0.0f, &check);
+      if (i > r->n) break;
+    }
+    float t = ray_sample_t(r, i);
+    ++*count;
+    if (in_iso(P, sample_volume(vol, P, r->o + t * r->d))) {
+      hit = i;
+      t_hit = t;
+      break;
+    }
+  }
+  if (hit < 0) return P->background.xyz;
+  if (hit > 0) {
+    float a = ray_sample_t(r, hit - 1), b = t_hit;
+    for (int k = 0; k < REFINE_STEPS; ++k) {
+      float m = 0.5f * (a + b);
+      if (in_iso(P, sample_volume(vol, P, r->o + m * r->d)))
+        b = m;
+      else
+        a = m;
+    }
+    *count += REFINE_STEPS;
+    t_hit = REFINE_STEPS > 0 ? 0.5f * (a + b) : b;
+  }
+  float3 p_v = r->o + t_hit * r->d;
+  float4 c = lut_lookup(lut, P, sample_volume(vol, P, p_v));
+  if (!SHADING) return c.xyz;
+  float3 n_w;
+  if (hit == 0 && axis >= 0) {
+    // The ray starts inside the surface at a clip face: shade the cut as a flat cap.
+    float3 e = (float3)(axis == 0, axis == 1, axis == 2);
+    n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, e);
+  } else {
+    n_w = world_gradient(vol, P, p_v);
+    *count += GRADIENT_TAPS;
+  }
+  return shade(c.xyz, n_w, origin_w + t_hit * dir_w, -dir_w, P->light_w, P->light);
+}
+
+// Front-to-back emission-absorption over segments, each sampled at its midpoint.
+inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
+                        CELL_ARGS, const Ray* r, float3 origin_w, float3 dir_w, uint* count) {
+  float3 acc = (float3)(0.0f);
+  float alpha = 0.0f;
+  for (int i = 0, check = 0; i <= r->n; ++i) {
+    if (ESS && i >= check) {
+      i = ess_next(occ, range, P, r, true, i, 0.0f, &check);
+      if (i > r->n) break;
+    }
+    float2 s = ray_segment(r, i);
+    float seg = s.y - s.x;
+    if (seg <= 0.0f) continue;  // segment 0 without jitter
+    float t = 0.5f * (s.x + s.y);
+    float3 p_v = r->o + t * r->d;
+    ++*count;
+    float4 c = lut_lookup(lut, P, sample_volume(vol, P, p_v));
+    if (c.w <= 0.0f) continue;
+    float a = OPACITY_CORRECTION ? 1.0f - pow(1.0f - c.w, seg / P->view.w) : c.w;
+    float3 rgb = c.xyz;
+    if (SHADING) {
+      rgb = shade(rgb, world_gradient(vol, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
+                  P->light);
+      *count += GRADIENT_TAPS;
+    }
+    acc += (1.0f - alpha) * a * rgb;
+    alpha += (1.0f - alpha) * a;
+    if (alpha >= P->dvr.z) break;
+  }
+  return acc + (1.0f - alpha) * P->background.xyz;
+}
+
+// Maximum intensity, mapped through the grey window.
+inline float3 march_mip(VOLUME_ARG, __constant RaycastParams* P, CELL_ARGS, const Ray* r,
+                        uint* count) {
+  float vmax = -FLT_MAX;
+  for (int i = 0, check = 0; i <= r->n; ++i) {
+    if (ESS && i >= check) {
+      i = ess_next(occ, range, P, r, false, i, vmax, &check);
+      if (i > r->n) break;
+    }
+    ++*count;
+    vmax = fmax(vmax, sample_volume(vol, P, r->o + ray_sample_t(r, i) * r->d));
+  }
+  return (float3)(clamp((vmax - P->dvr.x) * P->dvr.y, 0.0f, 1.0f));
+}
+
+#endif

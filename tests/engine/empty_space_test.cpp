@@ -1,0 +1,114 @@
+// Empty-space skipping and the uber kernel are speed-ups only: the image must be the one
+// the plain specialised kernel makes. ESS leaps only samples that cannot change a pixel,
+// in the same order and with the same positions, so frames agree exactly; the uber kernel
+// is a different compilation of the same code, so it may differ by float contraction
+// (at most one 8-bit level on a few pixels).
+#include <gtest/gtest.h>
+
+#include <tuple>
+
+#include "test_volumes.h"
+#include "voxray/engine/cl_context.h"
+#include "voxray/engine/raycaster.h"
+
+namespace voxray {
+
+namespace {
+
+ClContext& context() {
+  static ClContext ctx("cpu");
+  return ctx;
+}
+
+// A small ball in a large empty box, so most cells are empty and rays leap them.
+const Volume& sparseVolume() {
+  static Volume v = test::ball({64, 56, 40}, 10.0, 1000.0, -1000.0, {1.0, 1.1, 1.6});
+  return v;
+}
+
+int maxDiff(const Image& a, const Image& b) {
+  int worst = 0;
+  for (size_t i = 0; i < a.rgba.size(); ++i)
+    worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+  return worst;
+}
+
+RenderParams params(Mode mode, Gradient g, Interp interp, bool jitter) {
+  RenderParams p;
+  p.width = 80;
+  p.height = 60;
+  p.mode = mode;
+  p.gradient = g;
+  p.interp = interp;
+  p.jitter = jitter;
+  p.isoLo = 0.0;
+  p.camera.azimuthDeg = 35.0;
+  p.camera.elevationDeg = 25.0;
+  if (mode == Mode::Dvr) p.preset = "CT-Bone";
+  return p;
+}
+
+Image render(RaycasterOptions::Kernel k, bool ess, const RenderParams& p) {
+  Raycaster rc(context(), sparseVolume(), VolumeStorage::Buffer);
+  RaycasterOptions o;
+  o.kernel = k;
+  o.emptySpaceSkipping = ess;
+  rc.setOptions(o);
+  return rc.render(p);
+}
+
+}  // namespace
+
+using Case = std::tuple<Mode, Gradient, Interp, bool>;
+class EmptySpace : public ::testing::TestWithParam<Case> {};
+
+TEST_P(EmptySpace, SkippingChangesNoPixel) {
+  auto [mode, g, interp, jitter] = GetParam();
+  RenderParams p = params(mode, g, interp, jitter);
+  using K = RaycasterOptions::Kernel;
+  Image plain = render(K::Specialised, false, p);
+  EXPECT_EQ(maxDiff(plain, render(K::Specialised, true, p)), 0);
+  EXPECT_LE(maxDiff(plain, render(K::Uber, true, p)), 1);
+}
+
+// Every mode; gradient, interpolation and jitter vary together (each kernel build on PoCL
+// takes seconds, so not every combination).
+INSTANTIATE_TEST_SUITE_P(Variants, EmptySpace,
+                         ::testing::Combine(::testing::Values(Mode::Iso, Mode::Dvr, Mode::Mip),
+                                            ::testing::Values(Gradient::Central),
+                                            ::testing::Values(Interp::Linear),
+                                            ::testing::Values(false)));
+INSTANTIATE_TEST_SUITE_P(Jittered, EmptySpace,
+                         ::testing::Combine(::testing::Values(Mode::Iso, Mode::Dvr, Mode::Mip),
+                                            ::testing::Values(Gradient::ZuckerHummel),
+                                            ::testing::Values(Interp::Nearest, Interp::Linear),
+                                            ::testing::Values(true)));
+
+TEST(EmptySpaceExtras, ClassifiesOnlyWhenTheRangeOrTableChanges) {
+  Raycaster rc(context(), sparseVolume(), VolumeStorage::Buffer);
+  RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, false);
+  rc.render(p);
+  p.camera.azimuthDeg += 40.0;  // the camera moves: nothing to reclassify
+  rc.render(p);
+  EXPECT_EQ(rc.classifications(), 1);
+  p.isoLo = 500.0;
+  rc.render(p);
+  EXPECT_EQ(rc.classifications(), 2);
+  p.mode = Mode::Dvr;
+  p.preset = "CT-Bone";
+  rc.render(p);
+  p.presetShiftHu = 200.0;  // moves the table's opaque part
+  rc.render(p);
+  EXPECT_EQ(rc.classifications(), 4);
+}
+
+TEST(EmptySpaceExtras, ClipBoxAndOrthographicToo) {
+  RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, true);
+  p.camera.projection = Projection::Orthographic;
+  p.clip.lo = {0.1, 0.45, 0.0};
+  p.clip.hi = {0.7, 1.0, 0.9};
+  using K = RaycasterOptions::Kernel;
+  EXPECT_EQ(maxDiff(render(K::Specialised, false, p), render(K::Specialised, true, p)), 0);
+}
+
+}  // namespace voxray

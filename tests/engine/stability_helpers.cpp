@@ -1,0 +1,68 @@
+#include "stability_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "voxray/engine/raycaster.h"
+#include "voxray/engine/reference_renderer.h"
+
+namespace voxray::test {
+
+ClContext& pocl() {
+  static ClContext ctx("cpu");
+  return ctx;
+}
+
+RenderParams tinyParams(Mode mode, int width, int height) {
+  RenderParams p;
+  p.width = width;
+  p.height = height;
+  p.mode = mode;
+  p.isoLo = 0.0;
+  if (mode == Mode::Dvr) p.preset = "CT-Bone";
+  return p;
+}
+
+void expectStable(const Volume& v, const RenderParams& p, const std::string& what, Agreement tol) {
+  SCOPED_TRACE(what + " [" + toString(p.mode) + "]");
+  FloatImage ref = renderReferenceFloat(v, p);
+  size_t nonFinite = 0, outside = 0;
+  for (float x : ref.rgb) {
+    if (!std::isfinite(x))
+      ++nonFinite;
+    else if (x < 0.0f || x > 1.0f)
+      ++outside;
+  }
+  EXPECT_EQ(nonFinite, 0u) << "reference pixels NaN/Inf";
+  EXPECT_EQ(outside, 0u) << "reference pixels outside [0, 1]";
+  FloatImage ref2 = renderReferenceFloat(v, p);
+  EXPECT_TRUE(ref.rgb == ref2.rgb) << "reference not deterministic";
+
+  Raycaster rc(pocl(), v, VolumeStorage::Buffer);
+  Image a = rc.render(p), b = rc.render(p);
+  ASSERT_EQ(a.width, p.width);
+  ASSERT_EQ(a.height, p.height);
+  EXPECT_TRUE(a.rgba == b.rgba) << "kernel not deterministic: " << rc.variantOptions(p);
+  Image q = quantise(ref);
+  size_t n = size_t(p.width) * size_t(p.height), over = 0, badAlpha = 0;
+  double sum = 0.0;
+  int worst = 0;
+  for (size_t i = 0; i < n; ++i) {
+    int px = 0;
+    for (int c = 0; c < 3; ++c) {
+      int e = std::abs(int(a.rgba[i * 4 + c]) - int(q.rgba[i * 4 + c]));
+      sum += e;
+      px = std::max(px, e);
+    }
+    worst = std::max(worst, px);
+    over += px > 3;
+    badAlpha += a.rgba[i * 4 + 3] != 255;
+  }
+  EXPECT_EQ(badAlpha, 0u) << "kernel left pixels unwritten";
+  EXPECT_LE(sum / double(n * 3), tol.meanAbs) << rc.variantOptions(p);
+  EXPECT_LE(double(over) / double(n), tol.fractionOver3)
+      << rc.variantOptions(p) << " (max " << worst << " levels)";
+}
+
+}  // namespace voxray::test

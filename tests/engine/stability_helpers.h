@@ -1,0 +1,29 @@
+#pragma once
+// The assertions every stability case makes: the frame renders on PoCL and through the
+// reference renderer with no NaN/Inf, every pixel in [0, 1] (opaque alpha), the same
+// image twice from each renderer, and agreement within a stated tolerance.
+#include <string>
+
+#include "voxray/engine/cl_context.h"
+#include "voxray/engine/render_params.h"
+#include "voxray/io/volume.h"
+
+namespace voxray::test {
+
+ClContext& pocl();
+
+// Tolerance between the PoCL image and the quantised reference, in 8-bit levels. The
+// default is kernel_vs_reference_test.cpp's: float vs double can flip a first hit or a
+// sample exactly on a threshold or a box face, so a few pixels may differ a lot.
+struct Agreement {
+  double meanAbs = 0.5;          // mean absolute difference per channel
+  double fractionOver3 = 0.005;  // share of pixels more than 3 levels apart
+};
+
+void expectStable(const Volume& v, const RenderParams& p, const std::string& what,
+                  Agreement tol = {});
+
+// A small iso/dvr/mip parameter set that sees the whole volume.
+RenderParams tinyParams(Mode mode, int width = 32, int height = 24);
+
+}  // namespace voxray::test

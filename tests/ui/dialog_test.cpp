@@ -1,0 +1,184 @@
+// QTest on the offscreen platform: the raw-import dialog, the series picker and settings
+// persistence. With VOXRAY_UI_SHOTS=DIR set, the dialogs are also saved there as PNGs for
+// a person to look at.
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "raw_import_dialog.h"
+#include "series_picker.h"
+#include "settings_store.h"
+#include "voxray/io/orientation.h"
+
+using namespace voxray;
+using namespace voxray::ui;
+
+namespace {
+
+const QString kData = VOXRAY_DATA_DIR;
+
+void saveShot(QWidget& w, const QString& name) {
+  QString dir = qEnvironmentVariable("VOXRAY_UI_SHOTS");
+  if (dir.isEmpty()) return;
+  w.grab().save(dir + "/" + name + ".png");
+}
+
+}  // namespace
+
+class DialogTest : public QObject {
+  Q_OBJECT
+  QTemporaryDir dir_;
+
+ private slots:
+  void rawDialogReportsWrongDims() {
+    RawImportDialog d(nullptr, kData);
+    d.show();
+    auto* check = d.findChild<QLabel*>("sizeCheck");
+    d.setPath(kData + "/stanford/CThead/CThead.1");  // 256 x 256, 16 bit: 131072 bytes
+    d.findChild<QSpinBox*>("dim1")->setValue(257);   // the typo
+    QVERIFY2(check->text().contains("expected 131584 bytes, actual 131072"),
+             qPrintable(check->text()));
+    QVERIFY(check->text().contains("does not match"));
+    QCOMPARE(d.findChild<QLabel*>("preview")->text(), QString("no preview"));
+    saveShot(d, "raw_dialog_wrong_dims");
+    d.findChild<QSpinBox*>("dim1")->setValue(256);
+    QVERIFY2(check->text().contains("✓"), qPrintable(check->text()));
+    QVERIFY(!d.findChild<QLabel*>("preview")->pixmap().isNull());
+  }
+
+  void rawDialogValidatesOrientation() {
+    RawImportDialog d(nullptr, kData);
+    d.show();
+    d.setPath(kData + "/stanford/CThead/CThead.1");
+    d.findChild<QComboBox*>("sampleType")->setCurrentText("i16");
+    d.findChild<QComboBox*>("byteOrder")->setCurrentText("big");
+    auto* axes = d.findChild<QComboBox*>("axes");
+    QPushButton* open = d.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Open);
+    for (const char* good : {"LPI", "pil", "RAS"}) {
+      axes->setCurrentText(good);
+      QVERIFY(d.acceptable());
+      QVERIFY(open->isEnabled());
+      QVERIFY(d.layout().direction == directionFromAxesCode(QString(good).toUpper().toStdString()));
+    }
+    axes->setCurrentText("LPI");
+    QCOMPARE(d.findChild<QLabel*>("axesCheck")->text(),
+             QString("✓ x → left, y → posterior, z → inferior"));
+    saveShot(d, "raw_dialog_cthead");
+    for (const char* bad : {"LLS", "LP", ""}) {
+      axes->setCurrentText(bad);
+      QVERIFY2(!d.acceptable(), bad);
+      QVERIFY(!open->isEnabled());
+      auto* check = d.findChild<QLabel*>("axesCheck");
+      QVERIFY(check->text().contains("✗"));
+      QVERIFY(check->toolTip().contains("orientation"));  // the importer's own message
+    }
+    saveShot(d, "raw_dialog_bad_axes");
+    // The validator refuses letters that name no direction at all.
+    axes->lineEdit()->clear();
+    QTest::keyClicks(axes->lineEdit(), "LXP");
+    QCOMPARE(axes->currentText(), QString("LP"));
+  }
+
+  void rawDialogRestoresSavedLayoutForAFile() {
+    RawLayout saved;
+    saved.dims = {256, 256, 0};
+    saved.order = ByteOrder::Big;
+    saved.spacingMm = {1.0, 1.0, 2.0};
+    saved.direction = directionFromAxesCode("LPI");
+    std::string file = (kData + "/stanford/CThead/CThead.1").toStdString();
+    RawImportDialog d(nullptr, kData, [&](const std::string& p) {
+      return p == file ? std::optional<RawLayout>(saved) : std::nullopt;
+    });
+    d.setPath(QString::fromStdString(file));
+    QCOMPARE(d.findChild<QComboBox*>("axes")->currentText(), QString("LPI"));
+    QCOMPARE(d.layout().order, ByteOrder::Big);
+    QCOMPARE(d.layout().spacingMm.z, 2.0);
+  }
+
+  void settingsRoundTrip() {
+    QVERIFY(dir_.isValid());
+    QString ini = dir_.filePath("voxray.ini");
+    AppModels a;
+    a.render.applyPreset("CT-Bone");
+    a.render.setPresetShift(-150.0);
+    a.render.update(kClip, [](RenderParams& p) { p.clip.lo = {0.1, 0.2, 0.3}; });
+    Quality q;
+    q.resolution = {640, 480};
+    q.stepScale = 0.5;
+    a.render.setQuality(q);
+    a.windowLevel.set({1500.0, -600.0});
+    RawLayout raw;
+    raw.dims = {256, 256, 113};
+    raw.type = SampleType::U16;
+    raw.order = ByteOrder::Big;
+    raw.spacingMm = {0.9, 0.9, 2.0};
+    raw.headerBytes = 16;
+    raw.slope = 2.0;
+    raw.intercept = -1024.0;
+    raw.range = std::make_pair(1, 113);
+    raw.direction = directionFromAxesCode("PIL");
+    {
+      QSettings s(ini, QSettings::IniFormat);
+      saveModelSettings(s, a);
+      saveRecent(s, {"/data/b", "/data/a"});
+      saveRawLayoutFor(s, "/data/CThead", raw);
+    }
+    QSettings s(ini, QSettings::IniFormat);
+    AppModels b;
+    loadModelSettings(s, b);
+    QCOMPARE(b.render.toText(), a.render.toText());
+    QCOMPARE(b.render.params().presetShiftHu, -150.0);
+    QVERIFY(b.render.quality().resolution == glm::ivec2(640, 480));
+    QCOMPARE(b.windowLevel.value().width, 1500.0);
+    QCOMPARE(b.windowLevel.value().level, -600.0);
+    QVERIFY(loadRecent(s) == (std::vector<std::string>{"/data/b", "/data/a"}));
+    auto back = loadRawLayoutFor(s, "/data/CThead");
+    QVERIFY(back.has_value());
+    QVERIFY(back->dims == raw.dims);
+    QCOMPARE(back->type, raw.type);
+    QCOMPARE(back->order, raw.order);
+    QVERIFY(back->spacingMm == raw.spacingMm);
+    QCOMPARE(back->headerBytes, raw.headerBytes);  // size_t: QCOMPARE prints it
+    QCOMPARE(back->slope, raw.slope);
+    QCOMPARE(back->intercept, raw.intercept);
+    QVERIFY(back->range == raw.range);
+    QCOMPARE(axesCodeFromDirection(back->direction), std::string("PIL"));
+    QVERIFY(!loadRawLayoutFor(s, "/data/other").has_value());
+  }
+
+#ifdef VOXRAY_HAS_DICOM
+  void seriesPickerListsWithThumbnails() {
+    SeriesPickerDialog d(nullptr, (kData + "/dicom/ct-philips-phantom").toStdString());
+    d.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&d));
+    QSignalSpy finished(&d, &SeriesPickerDialog::scanFinished);
+    auto* table = d.findChild<QTableWidget*>();
+    // The dialog is up and answering before the headers are read.
+    QVERIFY(finished.isEmpty());
+    QVERIFY(finished.wait(120000));
+    QVERIFY(table->rowCount() >= 2);
+    QVERIFY(!table->item(0, 0)->icon().isNull());  // the volume's middle slice
+    QVERIFY(d.chosenSelector().has_value());
+    QCOMPARE(*d.chosenSelector(), d.listing().series.front().selector);
+    // Patient data only in the labelled patient field, nowhere else in the dialog.
+    const SeriesInfo& s = d.listing().series.front();
+    for (int r = 0; r < table->rowCount(); ++r)
+      for (int c = 0; c < table->columnCount(); ++c)
+        if (auto* item = table->item(r, c); item && !s.patientName.empty())
+          QVERIFY(!item->text().contains(QString::fromStdString(s.patientName)));
+    QVERIFY(d.findChild<QLabel*>("patient")->text().startsWith("Patient: "));
+    saveShot(d, "series_picker");
+  }
+#endif
+};
+
+QTEST_MAIN(DialogTest)
+#include "dialog_test.moc"

@@ -1,0 +1,168 @@
+// QTest on the offscreen platform: screenshot export and load errors, through the real
+// ExportDialog and LoadController of a MainWindow showing the 64^3 head phantom.
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFile>
+#include <QMouseEvent>
+#include <QSpinBox>
+#include <QTemporaryDir>
+
+#include "export_dialog.h"
+#include "qt_image.h"
+#include "slice_view.h"
+#include "voxray/io/load.h"
+#include "window_fixture.h"
+
+using namespace voxray;
+using namespace voxray::ui;
+using voxray::ui::test::differingPixels;
+
+class ExportLoadTest : public QObject {
+  Q_OBJECT
+  test::PhantomWindow fixture_;
+  AppModels* models_ = nullptr;
+  MainWindow* window_ = nullptr;
+  QTemporaryDir dir_;
+
+  std::unique_ptr<ExportDialog> makeDialog() {
+    auto d = std::make_unique<ExportDialog>(
+        window_, window_->scheduler(), window_->volumeView(),
+        std::array<SliceView*, 3>{&window_->sliceView(0), &window_->sliceView(1),
+                                  &window_->sliceView(2)});
+    d->setErrorSink([](const QString& m) { QFAIL(qPrintable("export error: " + m)); });
+    return d;
+  }
+  QString tempPath(const QString& name) const { return dir_.filePath(name); }
+
+  // The error the load controller reports; no modal box: init() points the sink here.
+  std::pair<QString, QString> lastError_;
+  std::pair<QString, QString> openAndCatchError(const std::string& input, LoadOptions o) {
+    lastError_ = {};
+    QSignalSpy failed(&window_->loader(), &LoadController::failed);
+    window_->open(input, o);
+    if (!failed.wait(30000)) qFatal("no load error within 30 s");
+    return lastError_;
+  }
+
+ private slots:
+  void init() {
+    QVERIFY(dir_.isValid());
+    QVERIFY(fixture_.start());
+    models_ = fixture_.models.get();
+    window_ = fixture_.window.get();
+    window_->setErrorSink([this](const QString& t, const QString& m) { lastError_ = {t, m}; });
+  }
+  void cleanup() { fixture_.stop(); }
+
+  void exportNeverOverwritesWithoutYes() {
+    const QByteArray original("not a PNG: the user's own file\n\x01\x02\xff", 34);
+    QString path = tempPath("shot.png");
+    {
+      QFile f(path);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(original);
+    }
+    auto dialog = makeDialog();
+    QStringList asked;
+    dialog->setConfirmOverwrite([&](const std::string& p) {
+      asked << QString::fromStdString(p);
+      return false;
+    });
+    QVERIFY(!dialog->exportTo(path));
+    QVERIFY(!dialog->exportTo(tempPath("shot")));  // ".png" is added, then asked about
+    QCOMPARE(asked, QStringList({path, path}));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), original);  // byte for byte
+    f.close();
+    dialog->setConfirmOverwrite([](const std::string&) { return true; });
+    QVERIFY(dialog->exportTo(path));
+    QCOMPARE(toQImage(readImage(path.toStdString())).size(),
+             window_->volumeView().lastFrame().size());
+  }
+
+  void exportWritesChosenResolution() {
+    auto dialog = makeDialog();
+    dialog->findChild<QComboBox*>("exportWhat")->setCurrentIndex(0);
+    dialog->findChild<QComboBox*>("exportSize")->setCurrentIndex(1);
+    dialog->findChild<QSpinBox*>("exportWidth")->setValue(200);
+    dialog->findChild<QSpinBox*>("exportHeight")->setValue(150);
+    QString path = tempPath("chosen.png");
+    QVERIFY(dialog->exportTo(path));
+    Image img = readImage(path.toStdString());
+    QCOMPARE(img.width, 200);
+    QCOMPARE(img.height, 150);
+    int lit = 0;
+    for (size_t i = 0; i < img.rgba.size(); i += 4) lit += img.rgba[i] > 8;
+    QVERIFY2(lit > 1000, "the phantom is in the exported frame");
+  }
+
+  void exportBurnsInNoReadoutUnlessTicked() {
+    // A name that could carry patient data: it must never reach exported pixels.
+    models_->document.set(models_->document.volume(), "DOE^JANE 1234567");
+    test::waitFullFrame(*window_);
+    auto dialog = makeDialog();
+    dialog->findChild<QComboBox*>("exportWhat")->setCurrentIndex(1);  // axial
+    auto* annotate = dialog->findChild<QCheckBox*>("exportAnnotations");
+    QVERIFY(!annotate->isChecked());  // off by default
+    SliceView& axial = window_->sliceView(0);
+    QImage clean = axial.grab().toImage();  // no hover: no readout
+    QPointF at(axial.width() / 2.0, axial.height() / 2.0);
+    QMouseEvent move(QEvent::MouseMove, at, axial.mapToGlobal(at), Qt::NoButton, Qt::NoButton,
+                     Qt::NoModifier);
+    QApplication::sendEvent(&axial, &move);  // the user's mouse rests on the slice
+    QVERIFY(dialog->exportTo(tempPath("plain.png")));
+    QImage plain = toQImage(readImage(tempPath("plain.png").toStdString()));
+    QCOMPARE(differingPixels(plain.convertToFormat(QImage::Format_RGB32),
+                             clean.convertToFormat(QImage::Format_RGB32)),
+             0);
+    annotate->setChecked(true);
+    QVERIFY(dialog->exportTo(tempPath("annotated.png")));
+    QImage annotated = toQImage(readImage(tempPath("annotated.png").toStdString()));
+    QVERIFY(differingPixels(annotated, plain) > 20);  // the readout text
+    // The 3D view exports its rendered pixels only: no handles, no text.
+    dialog->findChild<QComboBox*>("exportWhat")->setCurrentIndex(0);
+    dialog->findChild<QComboBox*>("exportSize")->setCurrentIndex(0);
+    QVERIFY(dialog->exportTo(tempPath("view.png")));
+    QImage view = toQImage(readImage(tempPath("view.png").toStdString()));
+    QCOMPARE(
+        differingPixels(view.convertToFormat(QImage::Format_RGB32),
+                        window_->volumeView().lastFrame().convertToFormat(QImage::Format_RGB32)),
+        0);
+  }
+
+  void loadErrorKeepsLastVolume() {
+    auto shown = models_->document.volume();
+    std::string missing = tempPath("no-such-folder").toStdString();
+    auto [title, message] = openAndCatchError(missing, {});
+    QCOMPARE(title, QString("Cannot open"));
+    QVERIFY2(message.contains(QString::fromStdString(missing)), qPrintable(message));
+    QCOMPARE(models_->document.volume(), shown);
+    QCOMPARE(QString::fromStdString(models_->document.name()), QString("phantom"));
+
+    // A raw file too short for its layout: the importer's own message, word for word.
+    QString truncated = tempPath("truncated.raw");
+    {
+      QFile f(truncated);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(QByteArray(1000, '\0'));
+    }
+    LoadOptions o;
+    o.raw = RawLayout{};
+    o.raw->dims = {64, 64, 64};
+    std::string expected;
+    try {
+      loadVolume(truncated.toStdString(), o);
+    } catch (const std::exception& e) {
+      expected = e.what();
+    }
+    QVERIFY(!expected.empty());
+    auto [title2, message2] = openAndCatchError(truncated.toStdString(), o);
+    QCOMPARE(message2, QString::fromStdString(expected));
+    QCOMPARE(models_->document.volume(), shown);
+    QVERIFY(window_->volumeView().lastFrame().size() == QSize(128, 96));  // still drawn
+  }
+};
+
+QTEST_MAIN(ExportLoadTest)
+#include "export_load_test.moc"
