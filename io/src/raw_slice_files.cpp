@@ -142,7 +142,8 @@ std::vector<SliceFile> listSliceFolder(const std::string& folder, const SliceRan
 
   long long first = files.front().number, last = files.back().number;
   if (range) {
-    const auto [lo, hi] = *range;
+    // Plain copies: clang 14 cannot capture structured bindings in a lambda.
+    const int lo = range->first, hi = range->second;
     const auto outside = [&](const SliceFile& f) { return f.number < lo || f.number > hi; };
     std::vector<SliceFile> inRange;
     std::copy_if(files.begin(), files.end(), std::back_inserter(inRange),
