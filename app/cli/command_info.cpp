@@ -67,6 +67,7 @@ Run addInfoCommand(CLI::App& app) {
   cmd->add_flag("--json", *json, "machine-readable output on stdout");
   return [in, json] {
     std::optional<DicomListing> listing;
+#ifdef VOXRAY_HAS_DICOM  // lean builds (VOXRAY_WITH_DICOM=OFF) read raw data only
     if (!in->input.empty() && in->rawDims.empty()) {
       try {
         listing = listDicomSeries(in->input);
@@ -74,6 +75,7 @@ Run addInfoCommand(CLI::App& app) {
         // Not DICOM, or broken: loading below gives the message that says why.
       }
     }
+#endif
     Volume v = in->load();
     nlohmann::json j = volumeJson(v);
     if (listing) {
