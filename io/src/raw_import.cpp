@@ -163,7 +163,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   validateLayout(layout);
   checkVoxelCount(layout.dims.x, layout.dims.y, layout.dims.z);
   const size_t sliceVoxels = size_t(layout.dims.x) * size_t(layout.dims.y);
-  const size_t sampleSize = detail::sampleBytes(layout.type);
+  const size_t sampleSize = sampleBytes(layout.type);
   const size_t sliceBytes = sliceVoxels * sampleSize;
 
   std::vector<SliceSource> sources;

@@ -55,19 +55,6 @@ std::string number(double v) {
 
 }  // namespace
 
-size_t sampleBytes(SampleType t) {
-  switch (t) {
-    case SampleType::U8:
-      return 1;
-    case SampleType::I16:
-    case SampleType::U16:
-      return 2;
-    case SampleType::F32:
-      return 4;
-  }
-  return 0;
-}
-
 void ValueStats::merge(const ValueStats& o) {
   nonFinite += o.nonFinite;
   integral = integral && o.integral;
@@ -147,3 +134,20 @@ void storeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, con
 }
 
 }  // namespace voxray::detail
+
+namespace voxray {
+
+size_t sampleBytes(SampleType t) {
+  switch (t) {
+    case SampleType::U8:
+      return 1;
+    case SampleType::I16:
+    case SampleType::U16:
+      return 2;
+    case SampleType::F32:
+      return 4;
+  }
+  return 0;
+}
+
+}  // namespace voxray

@@ -9,8 +9,6 @@
 
 namespace voxray::detail {
 
-size_t sampleBytes(SampleType t);
-
 // Range of hu = raw * slope + intercept over some samples; non-finite values are counted,
 // not ranged.
 struct ValueStats {

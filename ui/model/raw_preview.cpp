@@ -33,7 +33,7 @@ std::vector<fs::path> sliceFiles(const fs::path& dir) {
 }
 
 double sampleAt(const uint8_t* p, const RawLayout& l) {
-  int n = bytesPerSample(l.type);
+  int n = int(sampleBytes(l.type));
   uint8_t b[4];
   std::memcpy(b, p, size_t(n));
   bool swap = (l.order == ByteOrder::Big) != (std::endian::native == std::endian::big);
@@ -62,24 +62,11 @@ double sampleAt(const uint8_t* p, const RawLayout& l) {
 
 }  // namespace
 
-int bytesPerSample(SampleType t) {
-  switch (t) {
-    case SampleType::U8:
-      return 1;
-    case SampleType::I16:
-    case SampleType::U16:
-      return 2;
-    case SampleType::F32:
-      return 4;
-  }
-  return 1;
-}
-
 RawSizeCheck checkRawSize(const std::string& path, const RawLayout& l) {
   RawSizeCheck c;
   std::error_code ec;
   uint64_t slice = uint64_t(std::max(l.dims.x, 0)) * uint64_t(std::max(l.dims.y, 0)) *
-                   uint64_t(bytesPerSample(l.type));
+                   uint64_t(sampleBytes(l.type));
   if (fs::is_directory(path, ec)) {
     auto files = sliceFiles(path);
     c.files = int(files.size());
@@ -95,7 +82,7 @@ RawSizeCheck checkRawSize(const std::string& path, const RawLayout& l) {
 
 std::optional<Image> previewRawSlice(const std::string& path, const RawLayout& l) {
   if (l.dims.x <= 0 || l.dims.y <= 0) return std::nullopt;
-  size_t sliceBytes = size_t(l.dims.x) * size_t(l.dims.y) * size_t(bytesPerSample(l.type));
+  size_t sliceBytes = size_t(l.dims.x) * size_t(l.dims.y) * size_t(sampleBytes(l.type));
   fs::path file = path;
   size_t offset = l.headerBytes;
   std::error_code ec;
@@ -113,7 +100,7 @@ std::optional<Image> previewRawSlice(const std::string& path, const RawLayout& l
     return std::nullopt;
   std::vector<double> values(size_t(l.dims.x) * size_t(l.dims.y));
   for (size_t i = 0; i < values.size(); ++i)
-    values[i] = sampleAt(&bytes[i * size_t(bytesPerSample(l.type))], l);
+    values[i] = sampleAt(&bytes[i * size_t(sampleBytes(l.type))], l);
   auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   double range = std::max(*hi - *lo, 1e-9);
   Image img(l.dims.x, l.dims.y);

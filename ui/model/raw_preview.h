@@ -18,7 +18,6 @@ struct RawSizeCheck {
   bool matches() const { return files > 0 && expectedBytes == actualBytes; }
 };
 
-int bytesPerSample(SampleType t);
 // PATH: a single raw file or a folder of slice files. Never throws; files = 0 when unreadable.
 RawSizeCheck checkRawSize(const std::string& path, const RawLayout& layout);
 

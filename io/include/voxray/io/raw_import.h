@@ -45,5 +45,6 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
 SampleType parseSampleType(const std::string& s);  // u8, i16, u16, f32
 ByteOrder parseByteOrder(const std::string& s);    // big, little
 const char* toString(SampleType t);
+size_t sampleBytes(SampleType t);  // bytes per sample in the file
 
 }  // namespace voxray
