@@ -24,3 +24,28 @@ __kernel void classify(__global const short2* range, __constant RaycastParams* P
   int a = max((int)floor(x0) - 1, 0), b = min((int)floor(x1) + 2, last);
   occ[k] = opaque_before[b + 1] - opaque_before[a] > 0;
 }
+
+// One pass of the chessboard (L-infinity) distance of each cell to the nearest occupied
+// cell, in cells: along `axis`, out = min over |s| <= MAX_LEAP of max(|s|, in[c + s]).
+// Three passes (x, y, z) give the exact distance, because a cube is the product of three
+// segments. The first pass reads the occupancy itself (from_occ). Distances stop at
+// MAX_LEAP: a ray in a cell at distance d may leap the cube of radius d - 1 around it.
+#define MAX_LEAP 15
+
+__kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 cells, int axis,
+                            int from_occ) {
+  int k = get_global_id(0);
+  int n = cells.x * cells.y * cells.z;
+  if (k >= n) return;
+  int3 c = (int3)(k % cells.x, (k / cells.x) % cells.y, k / (cells.x * cells.y));
+  int len = axis == 0 ? cells.x : axis == 1 ? cells.y : cells.z;
+  int pos = axis == 0 ? c.x : axis == 1 ? c.y : c.z;
+  int stride = axis == 0 ? 1 : axis == 1 ? cells.x : cells.x * cells.y;
+  int best = MAX_LEAP;
+  for (int s = max(-MAX_LEAP, -pos); s <= min(MAX_LEAP, len - 1 - pos); ++s) {
+    int v = in[k + s * stride];
+    int d = from_occ ? (v ? 0 : MAX_LEAP) : v;
+    best = min(best, max(s < 0 ? -s : s, d));
+  }
+  out[k] = (uchar)best;
+}

@@ -37,7 +37,7 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
   float t_hit = 0.0f;
   for (int i = 0, check = 0; i <= r->n; ++i) {
     if (ESS && i >= check) {
-      i = ess_next(occ, range, P, r, false, i, 0.0f, &check);
+      i = ess_leap(leap, range, P, r, false, i, &check);
       if (i > r->n) break;
     }
     float t = ray_sample_t(r, i);
@@ -83,7 +83,7 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
   float alpha = 0.0f;
   for (int i = 0, check = 0; i <= r->n; ++i) {
     if (ESS && i >= check) {
-      i = ess_next(occ, range, P, r, true, i, 0.0f, &check);
+      i = ess_leap(leap, range, P, r, true, i, &check);
       if (i > r->n) break;
     }
     float2 s = ray_segment(r, i);
@@ -114,7 +114,7 @@ inline float3 march_mip(VOLUME_ARG, __constant RaycastParams* P, CELL_ARGS, cons
   float vmax = -FLT_MAX;
   for (int i = 0, check = 0; i <= r->n; ++i) {
     if (ESS && i >= check) {
-      i = ess_next(occ, range, P, r, false, i, vmax, &check);
+      i = ess_next_mip(range, P, r, i, vmax, &check);
       if (i > r->n) break;
     }
     ++*count;

@@ -5,7 +5,7 @@
 #define VOXRAY_PARAMS_CL
 
 // Edge of a macro cell of the empty-space grid, in voxels (engine/src/macro_cells.h).
-#define CELL 8
+#define CELL 4
 
 typedef struct {
   float4 eye_w;  // world (LPS mm from the volume centre)

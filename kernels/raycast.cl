@@ -4,7 +4,8 @@
 //        2 mip
 //   SHADING 0/1, GRADIENT 0..2, INTERP 0/1, STORAGE_IMAGE 0/1, ORTHO 0/1,
 //   REFINE_STEPS n, OPACITY_CORRECTION 0/1, JITTER 0/1, ESS 0/1 (empty-space skipping,
-//   skip.cl), COUNT_SAMPLES 0/1, UBER 0/1 (all switches at runtime: variant.cl)
+//   skip.cl), COUNT_SAMPLES 0/1, UBER 0/1 (all switches at runtime: variant.cl),
+//   PACKET 0/1 (iso on CPUs: 4x2 rays per work-item in SIMD, packet.cl)
 // Only what the variant needs is compiled: MIP and unshaded frames take no gradient.
 // engine/src/reference_renderer.cpp is the same algorithm in double precision.
 //
@@ -26,49 +27,72 @@
 #include "ray.cl"
 #include "variant.cl"
 
+// Pixel (px, py)'s ray in voxel coordinates (r) and in world space (origin_w, dir_w),
+// clipped to the clip box. Returns the clip box's entry axis (0..2), -1 when the eye is
+// inside it, or -2 when the ray misses it (r is then incomplete).
+inline int pixel_ray(__constant RaycastParams* P, int px, int py, Ray* r, float3* origin_w,
+                     float3* dir_w) {
+  int width = P->image.x, height = P->image.y;
+  float sx = (2.0f * (px + 0.5f) / width - 1.0f) * P->view.x * P->view.y;
+  float sy = (1.0f - 2.0f * (py + 0.5f) / height) * P->view.x;
+  if (ORTHO) {
+    *origin_w = P->eye_w.xyz + P->right_w.xyz * sx + P->up_w.xyz * sy;
+    *dir_w = P->forward_w.xyz;
+    r->o = P->eye_v.xyz + P->right_v.xyz * sx + P->up_v.xyz * sy;
+    r->d = P->forward_v.xyz;
+  } else {
+    *origin_w = P->eye_w.xyz;
+    float3 unnorm = P->forward_w.xyz + P->right_w.xyz * sx + P->up_w.xyz * sy;
+    float inv_len = rsqrt(dot(unnorm, unnorm));
+    *dir_w = unnorm * inv_len;
+    r->o = P->eye_v.xyz;
+    r->d = (P->forward_v.xyz + P->right_v.xyz * sx + P->up_v.xyz * sy) * inv_len;
+  }
+  int axis = intersect_box(r->o, r->d, P->clip_lo.xyz, P->clip_hi.xyz, &r->t0, &r->t1);
+  if (axis > -2) {
+    r->step = P->view.z;
+    r->inv_d = select(1.0f / r->d, (float3)(0.0f), isequal(r->d, 0.0f));
+    r->j = JITTER ? jitter_fraction(px, py) : 0.0f;
+    // A bounded count: a NaN or absurd length must not hang the device.
+    r->n = (int)clamp(ceil((r->t1 - r->t0) / r->step), 0.0f, 16777216.0f);
+  }
+  return axis;
+}
+
+inline uchar4 to_rgba8(float3 color) {
+  return (uchar4)(convert_uchar3_sat_rte(clamp(color, 0.0f, 1.0f) * 255.0f), 255);
+}
+
+#if PACKET
+#include "packet.cl"
+#endif
+
 // count: COUNT_SAMPLES adds each ray's samples to one of 64 counters (fewer collisions
-// than one; the host sums them). Unused otherwise, like occ and range without ESS.
+// than one; the host sums them). Unused otherwise, like leap and range without ESS.
+// PACKET 1 (CPUs, iso): each work-item marches the 4x2 pixels at (4 x, 2 y) together in
+// SIMD (packet.cl); otherwise one work-item per pixel.
 __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
                       __global uchar4* out, CELL_ARGS, __global uint* count) {
+#if PACKET
+  iso_packet(vol, P, lut, out, leap, range, count, get_global_id(0), get_global_id(1));
+#else
   int px = get_global_id(0), py = get_global_id(1);
   int width = P->image.x, height = P->image.y;
   if (px >= width || py >= height) return;
-
-  float sx = (2.0f * (px + 0.5f) / width - 1.0f) * P->view.x * P->view.y;
-  float sy = (1.0f - 2.0f * (py + 0.5f) / height) * P->view.x;
   float3 origin_w, dir_w;
   Ray r;
-  if (ORTHO) {
-    origin_w = P->eye_w.xyz + P->right_w.xyz * sx + P->up_w.xyz * sy;
-    dir_w = P->forward_w.xyz;
-    r.o = P->eye_v.xyz + P->right_v.xyz * sx + P->up_v.xyz * sy;
-    r.d = P->forward_v.xyz;
-  } else {
-    origin_w = P->eye_w.xyz;
-    float3 unnorm = P->forward_w.xyz + P->right_w.xyz * sx + P->up_w.xyz * sy;
-    float inv_len = rsqrt(dot(unnorm, unnorm));
-    dir_w = unnorm * inv_len;
-    r.o = P->eye_v.xyz;
-    r.d = (P->forward_v.xyz + P->right_v.xyz * sx + P->up_v.xyz * sy) * inv_len;
-  }
   float3 color = P->background.xyz;
   uint samples = 0;
-
-  int axis = intersect_box(r.o, r.d, P->clip_lo.xyz, P->clip_hi.xyz, &r.t0, &r.t1);
+  int axis = pixel_ray(P, px, py, &r, &origin_w, &dir_w);
   if (axis > -2) {
-    r.step = P->view.z;
-    r.inv_d = select(1.0f / r.d, (float3)(0.0f), isequal(r.d, 0.0f));
-    r.j = JITTER ? jitter_fraction(px, py) : 0.0f;
-    // A bounded count: a NaN or absurd length must not hang the device.
-    r.n = (int)clamp(ceil((r.t1 - r.t0) / r.step), 0.0f, 16777216.0f);
     if (MODE == 0)
-      color = march_iso(vol, P, lut, occ, range, &r, origin_w, dir_w, axis, &samples);
+      color = march_iso(vol, P, lut, leap, range, &r, origin_w, dir_w, axis, &samples);
     else if (MODE == 1)
-      color = march_dvr(vol, P, lut, occ, range, &r, origin_w, dir_w, &samples);
+      color = march_dvr(vol, P, lut, leap, range, &r, origin_w, dir_w, &samples);
     else
-      color = march_mip(vol, P, occ, range, &r, &samples);
+      color = march_mip(vol, P, leap, range, &r, &samples);
   }
-  color = clamp(color, 0.0f, 1.0f);
-  out[py * width + px] = (uchar4)(convert_uchar3_sat_rte(color * 255.0f), 255);
+  out[py * width + px] = to_rgba8(color);
   if (COUNT_SAMPLES) atomic_add(&count[(px ^ py) & 63], samples);
+#endif
 }

@@ -15,6 +15,8 @@ void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
     range_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(cl_short2),
                         cells_.minMax.data());
     occ_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
+    leap_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
+    scratch_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
     return 0;
   });
   key_.clear();
@@ -54,6 +56,20 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const Rayca
     kernel.setArg(5, occ_);
     size_t global = (cells + 63) / 64 * 64;
     q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    // Distances to the nearest occupied cell, so rays leap whole empty cubes at once:
+    // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
+    cl::Kernel pass = cl.kernel("classify.cl", "leap_distance", "");
+    cl_int4 dims = {{cells_.dims.x, cells_.dims.y, cells_.dims.z, 0}};
+    const cl::Buffer* from[3] = {&occ_, &leap_, &scratch_};
+    const cl::Buffer* to[3] = {&leap_, &scratch_, &leap_};
+    for (int axis = 0; axis < 3; ++axis) {
+      pass.setArg(0, *from[axis]);
+      pass.setArg(1, *to[axis]);
+      pass.setArg(2, dims);
+      pass.setArg(3, cl_int(axis));
+      pass.setArg(4, cl_int(axis == 0));
+      q.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    }
     return 0;
   });
   key_ = std::move(key);

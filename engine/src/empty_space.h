@@ -25,12 +25,14 @@ class EmptySpace {
                 const Lut& lut);
   const glm::ivec3& dims() const { return cells_.dims; }
   const cl::Buffer& range() const { return range_; }
-  const cl::Buffer& occupancy() const { return occ_; }
+  // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
+  // capped at MAX_LEAP (kernels/classify.cl).
+  const cl::Buffer& leap() const { return leap_; }
   int classifications() const { return classifications_; }
 
  private:
   MacroCells cells_;
-  cl::Buffer range_, occ_, opaqueBefore_;
+  cl::Buffer range_, occ_, leap_, scratch_, opaqueBefore_;
   size_t opaqueCapacity_ = 0;
   // What the occupancy was classified for; equal keys skip the work.
   std::vector<float> key_;

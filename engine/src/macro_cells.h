@@ -12,7 +12,7 @@ namespace voxray {
 struct Volume;
 
 // Cell edge in voxels; kernels/params.cl defines the same CELL.
-constexpr int kCellSize = 8;
+constexpr int kCellSize = 4;
 
 struct MacroCells {
   glm::ivec3 dims{0};           // cells along x, y, z: ceil(volume dims / kCellSize)

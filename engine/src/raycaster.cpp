@@ -51,6 +51,7 @@ struct Raycaster::Impl {
 
   void upload();
   std::string options(const RenderParams& p) const;
+  bool packets(const RenderParams& p) const;
   cl::NDRange local() const;
   void updateSetup(const RenderParams& p);
 };
@@ -125,7 +126,13 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
   if (shading) o << " -D GRADIENT=" << int(p.gradient);
   if (p.mode == Mode::Iso) o << " -D REFINE_STEPS=" << p.refine;
   if (p.mode == Mode::Dvr) o << " -D OPACITY_CORRECTION=" << int(p.opacityCorrection);
+  if (packets(p)) o << " -D PACKET=1";
   return o.str();
+}
+
+bool Raycaster::Impl::packets(const RenderParams& p) const {
+  return opts.packets && opts.kernel == RaycasterOptions::Kernel::Specialised &&
+         p.mode == Mode::Iso && storage == VolumeStorage::Buffer && !cl.info.isGpu;
 }
 
 cl::NDRange Raycaster::Impl::local() const {
@@ -230,11 +237,15 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     kernel.setArg(1, m.paramsBuffer);
     kernel.setArg(2, m.lutBuffer);
     kernel.setArg(3, m.outBuffer);
-    kernel.setArg(4, m.space.occupancy());
+    kernel.setArg(4, m.space.leap());
     kernel.setArg(5, m.space.range());
     kernel.setArg(6, m.countBuffer);
     cl::NDRange local = m.local();
     size_t gx = size_t(p.width), gy = size_t(p.height);
+    if (m.packets(p)) {  // one work-item per 4x2 pixels
+      gx = (gx + 3) / 4;
+      gy = (gy + 1) / 2;
+    }
     if (local.dimensions() == 2) {
       gx = (gx + local[0] - 1) / local[0] * local[0];
       gy = (gy + local[1] - 1) / local[1] * local[1];

@@ -21,7 +21,10 @@ struct RaycasterOptions {
   enum class Kernel { Specialised, Uber } kernel = Kernel::Specialised;
   bool emptySpaceSkipping = true;  // leap macro cells that cannot change the pixel
   bool countSamples = false;       // fill FrameStats::samples (an atomic add per ray)
-  int localX = 0, localY = 0;      // work-group size; 0 = the default for the device
+  // iso on a CPU device with buffer storage: each work-item marches 4x2 rays in SIMD
+  // (kernels/packet.cl). Ignored elsewhere (GPUs diverge less one ray per work-item).
+  bool packets = true;
+  int localX = 0, localY = 0;  // work-group size; 0 = the default for the device
 };
 
 struct FrameStats {

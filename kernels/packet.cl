@@ -1,0 +1,292 @@
+// iso for CPUs: one work-item marches a packet of 4x2 neighbouring rays with float8 lanes.
+// PoCL runs a per-ray loop as scalar code, one ray at a time; here the arithmetic of
+// eight rays shares each vector instruction and only the volume loads stay scalar.
+// The algorithm is march_iso's (march.cl) lane by lane: the same samples, the same
+// empty-space leaps (skip.cl's ess_leap), the same bisection, so the image is the same.
+// Lanes whose ray is done are masked; the packet runs until its last ray is.
+// Volumes here are buffers (STORAGE_IMAGE 0) of fewer than 2^31 voxels (int indices).
+#ifndef VOXRAY_PACKET_CL
+#define VOXRAY_PACKET_CL
+
+#include "march.cl"
+
+// Eight rays, one per lane, in voxel coordinates (see Ray in ray.cl).
+typedef struct {
+  float8 ox, oy, oz, dx, dy, dz, ix, iy, iz;
+  float8 t0, t1, j;
+  int8 n;
+} RayPacket;
+
+inline float8 gather8(__global const short* restrict v, int8 i) {
+  return convert_float8(
+      (short8)(v[i.s0], v[i.s1], v[i.s2], v[i.s3], v[i.s4], v[i.s5], v[i.s6], v[i.s7]));
+}
+
+// Voxels i and i + 1 of each lane, interpolated by f: one 32-bit load per lane.
+inline float8 mix_pairs8(__global const short* restrict v, int8 i, float8 f) {
+  short2 p0 = vload2(0, v + i.s0), p1 = vload2(0, v + i.s1), p2 = vload2(0, v + i.s2);
+  short2 p3 = vload2(0, v + i.s3), p4 = vload2(0, v + i.s4), p5 = vload2(0, v + i.s5);
+  short2 p6 = vload2(0, v + i.s6), p7 = vload2(0, v + i.s7);
+  float8 a = convert_float8((short8)(p0.x, p1.x, p2.x, p3.x, p4.x, p5.x, p6.x, p7.x));
+  float8 b = convert_float8((short8)(p0.y, p1.y, p2.y, p3.y, p4.y, p5.y, p6.y, p7.y));
+  return mix(a, b, f);
+}
+
+// sample_volume (sampling.cl) for eight points.
+inline float8 sample8(__global const short* restrict vol, __constant RaycastParams* P, float8 x,
+                      float8 y, float8 z) {
+  int4 dims = P->dims;
+  int sy = dims.x, sz = dims.x * dims.y;
+  if (!INTERP) {
+    int8 nx = clamp(convert_int8(floor(x + 0.5f)), 0, dims.x - 1);
+    int8 ny = clamp(convert_int8(floor(y + 0.5f)), 0, dims.y - 1);
+    int8 nz = clamp(convert_int8(floor(z + 0.5f)), 0, dims.z - 1);
+    return gather8(vol, nz * sz + ny * sy + nx);
+  }
+  float8 x0 = floor(x), y0 = floor(y), z0 = floor(z);
+  float8 fx = x - x0, fy = y - y0, fz = z - z0;
+  int8 ix = convert_int8(x0), iy = convert_int8(y0), iz = convert_int8(z0);
+  int8 ya = clamp(iy, 0, dims.y - 1) * sy, yb = clamp(iy + 1, 0, dims.y - 1) * sy;
+  int8 za = clamp(iz, 0, dims.z - 1) * sz, zb = clamp(iz + 1, 0, dims.z - 1) * sz;
+  float8 c00, c10, c01, c11;
+  if (dims.x >= 2) {
+    // Each x pair in one load: the pair starts at most at dims.x - 2; past either edge,
+    // fx = 0 or 1 picks the edge voxel exactly (clamp to edge, as below).
+    int8 ax = clamp(ix, 0, dims.x - 2);
+    fx = select(fx, (float8)(0.0f), ix < 0);
+    fx = select(fx, (float8)(1.0f), ix > dims.x - 2);
+    c00 = mix_pairs8(vol, za + ya + ax, fx);
+    c10 = mix_pairs8(vol, za + yb + ax, fx);
+    c01 = mix_pairs8(vol, zb + ya + ax, fx);
+    c11 = mix_pairs8(vol, zb + yb + ax, fx);
+  } else {
+    int8 ax = 0;
+    c00 = gather8(vol, za + ya + ax), c10 = gather8(vol, za + yb + ax);
+    c01 = gather8(vol, zb + ya + ax), c11 = gather8(vol, zb + yb + ax);
+  }
+  return mix(mix(c00, c10, fy), mix(c01, c11, fy), fz);
+}
+
+inline float8 sample_t8(const RayPacket* r, int8 i, float step) {
+  return fmin(r->t0 + (convert_float8(i) + r->j) * step, r->t1);
+}
+
+// ray_index_at (ray.cl) for samples, not segments.
+inline int8 index_at8(const RayPacket* r, float8 t, float step) {
+  float8 k = (t - r->t0) / step - r->j;
+  return convert_int8(clamp(ceil(k), 0.0f, convert_float8(r->n + 1)));
+}
+
+// ess_leap (skip.cl) for the lanes in `need`: returns their next index, sets their *check.
+inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, int8 i, int8 need,
+                      float step, int8* check) {
+  int4 last = P->cells - 1;
+  int8 ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
+  int8 flat_x = r->dx == 0.0f, flat_y = r->dy == 0.0f, flat_z = r->dz == 0.0f;
+  float8 nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
+  float8 t_land = -FLT_MAX, t = sample_t8(r, i, step);  // as in ess_leap
+  int8 result = i, pending = need;
+  int guard = last.x + last.y + last.z + 16;
+  for (int g = 0; g < guard && any(pending); ++g) {
+    int8 cx = clamp(convert_int8(floor((r->ox + t * r->dx) * (1.0f / CELL))), 0, last.x);
+    int8 cy = clamp(convert_int8(floor((r->oy + t * r->dy) * (1.0f / CELL))), 0, last.y);
+    int8 cz = clamp(convert_int8(floor((r->oz + t * r->dz) * (1.0f / CELL))), 0, last.z);
+    int8 k = select((int8)(0), (cz * P->cells.y + cy) * P->cells.x + cx, pending);
+    int8 d = convert_int8((uchar8)(leap[k.s0], leap[k.s1], leap[k.s2], leap[k.s3], leap[k.s4],
+                                   leap[k.s5], leap[k.s6], leap[k.s7]));
+    int8 radius = max(d - 1, 0);
+    float8 px = select(convert_float8(cx - radius), convert_float8(cx + radius + 1), ahead_x);
+    float8 py = select(convert_float8(cy - radius), convert_float8(cy + radius + 1), ahead_y);
+    float8 pz = select(convert_float8(cz - radius), convert_float8(cz + radius + 1), ahead_z);
+    int8 open_x = select(cx - radius <= 0, cx + radius >= last.x, ahead_x) | flat_x;
+    int8 open_y = select(cy - radius <= 0, cy + radius >= last.y, ahead_y) | flat_y;
+    int8 open_z = select(cz - radius <= 0, cz + radius >= last.z, ahead_z) | flat_z;
+    float8 tx = select((px * (float)CELL - r->ox) * r->ix, (float8)(FLT_MAX), open_x);
+    float8 ty = select((py * (float)CELL - r->oy) * r->iy, (float8)(FLT_MAX), open_y);
+    float8 tz = select((pz * (float)CELL - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
+    float8 t_exit = fmin(tx, fmin(ty, tz));
+    int8 found = pending & (d == 0);
+    int8 first = max(i, index_at8(r, t_land, step));
+    result = select(result, first, found);
+    *check = select(*check, max(first + 1, index_at8(r, t_exit, step)), found);
+    int8 beyond = pending & ~found & (t_exit >= r->t1);
+    result = select(result, r->n + 1, beyond);
+    pending &= ~(found | beyond);
+    t_land = select(t_land, fmax(t_land, t_exit), pending);
+    t = fmax(t, t_land) + fmax(nudge, fabs(t_land) * 5e-7f);
+  }
+  // Not expected: sample on from where the leaps got to (correct, only slower).
+  int8 first = max(i, index_at8(r, t_land, step));
+  result = select(result, first, pending);
+  *check = select(*check, first + 1, pending);
+  return result;
+}
+
+// pixel_ray (raycast.cl) for the 4x2 pixels at (4 gx, 2 gy), lane l at (l & 3, l >> 2);
+// the same formulas. Returns each lane's entry axis, -2 where there is no ray (a miss or
+// a pixel outside the image); such lanes get a ray of length zero at the origin.
+inline int8 pixel_rays8(__constant RaycastParams* P, int gx, int gy, RayPacket* r) {
+  int width = P->image.x, height = P->image.y;
+  int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7);
+  int8 px = 4 * gx + (lane & 3), py = 2 * gy + (lane >> 2);
+  float8 sx = (2.0f * (convert_float8(px) + 0.5f) / width - 1.0f) * P->view.x * P->view.y;
+  float8 sy = (1.0f - 2.0f * (convert_float8(py) + 0.5f) / height) * P->view.x;
+  float8 inv_len = 1.0f;
+  if (ORTHO) {
+    r->ox = P->eye_v.x + P->right_v.x * sx + P->up_v.x * sy;
+    r->oy = P->eye_v.y + P->right_v.y * sx + P->up_v.y * sy;
+    r->oz = P->eye_v.z + P->right_v.z * sx + P->up_v.z * sy;
+    r->dx = P->forward_v.x, r->dy = P->forward_v.y, r->dz = P->forward_v.z;
+  } else {
+    float8 ux = P->forward_w.x + P->right_w.x * sx + P->up_w.x * sy;
+    float8 uy = P->forward_w.y + P->right_w.y * sx + P->up_w.y * sy;
+    float8 uz = P->forward_w.z + P->right_w.z * sx + P->up_w.z * sy;
+    inv_len = rsqrt(ux * ux + uy * uy + uz * uz);
+    r->ox = P->eye_v.x, r->oy = P->eye_v.y, r->oz = P->eye_v.z;
+    r->dx = (P->forward_v.x + P->right_v.x * sx + P->up_v.x * sy) * inv_len;
+    r->dy = (P->forward_v.y + P->right_v.y * sx + P->up_v.y * sy) * inv_len;
+    r->dz = (P->forward_v.z + P->right_v.z * sx + P->up_v.z * sy) * inv_len;
+  }
+  // intersect_box (intersect.cl): slabs; a zero direction component misses or never bounds.
+  float8 o[3] = {r->ox, r->oy, r->oz}, d[3] = {r->dx, r->dy, r->dz};
+  float lo[3] = {P->clip_lo.x, P->clip_lo.y, P->clip_lo.z};
+  float hi[3] = {P->clip_hi.x, P->clip_hi.y, P->clip_hi.z};
+  float8 t0 = -INFINITY, t1 = INFINITY;
+  int8 axis = -1, miss = (px >= width) | (py >= height);
+  for (int a = 0; a < 3; ++a) {
+    int8 flat = d[a] == 0.0f;
+    miss |= flat & ((o[a] < lo[a]) | (o[a] > hi[a]));
+    float8 inv = 1.0f / d[a];
+    float8 ta = (lo[a] - o[a]) * inv, tb = (hi[a] - o[a]) * inv;
+    float8 near = select(fmin(ta, tb), (float8)(-INFINITY), flat);
+    float8 far = select(fmax(ta, tb), (float8)(INFINITY), flat);
+    int8 later = near > t0;
+    axis = select(axis, (int8)(a), later);
+    t0 = select(t0, near, later);
+    t1 = fmin(t1, far);
+  }
+  int8 behind = t0 < 0.0f;
+  t0 = select(t0, (float8)(0.0f), behind);
+  axis = select(axis, (int8)(-1), behind);
+  miss |= ~(t1 >= t0);
+  axis = select(axis, (int8)(-2), miss);
+  r->t0 = select(t0, (float8)(0.0f), miss);
+  r->t1 = select(t1, (float8)(0.0f), miss);
+  r->ix = select(1.0f / r->dx, (float8)(0.0f), r->dx == 0.0f);
+  r->iy = select(1.0f / r->dy, (float8)(0.0f), r->dy == 0.0f);
+  r->iz = select(1.0f / r->dz, (float8)(0.0f), r->dz == 0.0f);
+  r->j = 0.0f;
+  if (JITTER) {  // jitter_fraction (ray.cl)
+    uint8 h = as_uint8(px) * 73856093u ^ as_uint8(py) * 19349663u;
+    h = (h ^ (h >> 13)) * 0x5bd1e995u;
+    h ^= h >> 15;
+    r->j = convert_float8(h & 0xffffffu) / 16777216.0f;
+  }
+  r->n = select(convert_int8(clamp(ceil((r->t1 - r->t0) / P->view.z), (float8)(0.0f), 16777216.0f)),
+                (int8)(-1), miss);
+  // A lane without a ray marches nothing, at the origin (its indices stay in range).
+  r->ox = select(r->ox, (float8)(0.0f), miss), r->oy = select(r->oy, (float8)(0.0f), miss);
+  r->oz = select(r->oz, (float8)(0.0f), miss);
+  r->dx = select(r->dx, (float8)(0.0f), miss), r->dy = select(r->dy, (float8)(0.0f), miss);
+  r->dz = select(r->dz, (float8)(0.0f), miss);
+  return axis;
+}
+
+inline void iso_packet(__global const short* restrict vol, __constant RaycastParams* P,
+                       __global const float4* lut, __global uchar4* out, CELL_ARGS,
+                       __global uint* count, int gx, int gy) {
+  int width = P->image.x, height = P->image.y;
+  float step = P->view.z;
+  RayPacket r;
+  int8 axis = pixel_rays8(P, gx, gy, &r);
+
+  float lo = P->values.x, hi = P->values.y;
+  int8 i = 0, check = 0, hit = -1, samples = 0;
+  float8 t_hit = 0.0f;
+  int8 active = r.n >= 0;
+  while (any(active)) {
+    if (ESS) {
+      int8 need = active & (i >= check);
+      if (any(need)) {
+        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, &check), need);
+        active &= ~(need & (i > r.n));
+        if (!any(active)) break;
+      }
+    }
+    float8 t = sample_t8(&r, i, step);
+    float8 v = sample8(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz);
+    samples -= active;  // true is -1
+    int8 in = active & (v >= lo) & (v <= hi);
+    hit = select(hit, i, in);
+    t_hit = select(t_hit, t, in);
+    active &= ~in;
+    i += 1;
+    active &= i <= r.n;
+  }
+  int8 refine = hit > 0;
+  if (REFINE_STEPS > 0 && any(refine)) {
+    float8 a = sample_t8(&r, hit - 1, step), b = t_hit;
+    for (int k = 0; k < REFINE_STEPS; ++k) {
+      float8 m = 0.5f * (a + b);
+      float8 v = sample8(vol, P, r.ox + m * r.dx, r.oy + m * r.dy, r.oz + m * r.dz);
+      int8 in = (v >= lo) & (v <= hi);
+      b = select(b, m, in);
+      a = select(m, a, in);
+    }
+    t_hit = select(t_hit, 0.5f * (a + b), refine);
+    samples += select((int8)(0), (int8)(REFINE_STEPS), refine);
+  }
+  float8 hx = r.ox + t_hit * r.dx, hy = r.oy + t_hit * r.dy, hz = r.oz + t_hit * r.dz;
+  float value[8], gxa[8], gya[8], gza[8];
+  vstore8(sample8(vol, P, hx, hy, hz), 0, value);
+  if (SHADING && GRADIENT == 0) {
+    // volume_gradient's central difference, for all lanes at once.
+    vstore8(0.5f * (sample8(vol, P, hx + 1.0f, hy, hz) - sample8(vol, P, hx - 1.0f, hy, hz)), 0,
+            gxa);
+    vstore8(0.5f * (sample8(vol, P, hx, hy + 1.0f, hz) - sample8(vol, P, hx, hy - 1.0f, hz)), 0,
+            gya);
+    vstore8(0.5f * (sample8(vol, P, hx, hy, hz + 1.0f) - sample8(vol, P, hx, hy, hz - 1.0f)), 0,
+            gza);
+  }
+  int hits[8], counts[8], axes[8];
+  float th[8], hxa[8], hya[8], hza[8];
+  vstore8(t_hit, 0, th);
+  vstore8(axis, 0, axes);
+  vstore8(hx, 0, hxa), vstore8(hy, 0, hya), vstore8(hz, 0, hza);
+  vstore8(hit, 0, hits);
+  vstore8(samples, 0, counts);
+  uint total = 0;
+  for (int l = 0; l < 8; ++l) {
+    int px = 4 * gx + (l & 3), py = 2 * gy + (l >> 2);
+    if (px >= width || py >= height) continue;
+    float3 color = P->background.xyz;
+    if (hits[l] >= 0) {
+      float4 c = lut_lookup(lut, P, value[l]);
+      color = c.xyz;
+      if (SHADING) {
+        float3 p_v = (float3)(hxa[l], hya[l], hza[l]);
+        // Only hit lanes need the world-space ray: set it up again, as a single ray.
+        Ray one;
+        float3 origin_w, dir_w;
+        pixel_ray(P, px, py, &one, &origin_w, &dir_w);
+        float3 n_w;
+        if (hits[l] == 0 && axes[l] >= 0) {
+          // The ray starts inside the surface at a clip face: shade the cut as a flat cap.
+          float3 e = (float3)(axes[l] == 0, axes[l] == 1, axes[l] == 2);
+          n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, e);
+        } else {
+          float3 g = (float3)(gxa[l], gya[l], gza[l]);
+          if (GRADIENT != 0) g = volume_gradient(vol, P, p_v);
+          n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, g);
+          counts[l] += GRADIENT_TAPS;
+        }
+        color = shade(color, n_w, origin_w + th[l] * dir_w, -dir_w, P->light_w, P->light);
+      }
+    }
+    out[py * width + px] = to_rgba8(color);
+    total += counts[l];
+  }
+  if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], total);
+}
+
+#endif
