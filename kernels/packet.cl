@@ -22,26 +22,33 @@ inline float8 gather8(__global const short* restrict v, int8 i) {
       (short8)(v[i.s0], v[i.s1], v[i.s2], v[i.s3], v[i.s4], v[i.s5], v[i.s6], v[i.s7]));
 }
 
-// Voxels i and i + 1 of each lane, interpolated by f: one 32-bit load per lane.
-inline float8 mix_pairs8(__global const short* restrict v, int8 i, float8 f) {
+// Voxels i and i + 1 of each lane, interpolated by f: one 32-bit load per lane. Widens
+// [*lo, *hi] to hold both.
+inline float8 mix_pairs8(__global const short* restrict v, int8 i, float8 f, float8* lo,
+                         float8* hi) {
   short2 p0 = vload2(0, v + i.s0), p1 = vload2(0, v + i.s1), p2 = vload2(0, v + i.s2);
   short2 p3 = vload2(0, v + i.s3), p4 = vload2(0, v + i.s4), p5 = vload2(0, v + i.s5);
   short2 p6 = vload2(0, v + i.s6), p7 = vload2(0, v + i.s7);
   float8 a = convert_float8((short8)(p0.x, p1.x, p2.x, p3.x, p4.x, p5.x, p6.x, p7.x));
   float8 b = convert_float8((short8)(p0.y, p1.y, p2.y, p3.y, p4.y, p5.y, p6.y, p7.y));
+  *lo = fmin(*lo, fmin(a, b));
+  *hi = fmax(*hi, fmax(a, b));
   return mix(a, b, f);
 }
 
-// sample_volume (sampling.cl) for eight points.
-inline float8 sample8(__global const short* restrict vol, __constant RaycastParams* P, float8 x,
-                      float8 y, float8 z) {
+// sample_volume (sampling.cl) for eight points. Trilinear also returns in [*lo, *hi] a
+// range that holds the eight voxels around each point, and so every value trilinear
+// interpolation takes in that voxel cell (nearest: the sample itself).
+inline float8 sample8_range(__global const short* restrict vol, __constant RaycastParams* P,
+                            float8 x, float8 y, float8 z, float8* lo, float8* hi) {
   int4 dims = P->dims;
   int sy = dims.x, sz = dims.x * dims.y;
   if (!INTERP) {
     int8 nx = clamp(convert_int8(floor(x + 0.5f)), 0, dims.x - 1);
     int8 ny = clamp(convert_int8(floor(y + 0.5f)), 0, dims.y - 1);
     int8 nz = clamp(convert_int8(floor(z + 0.5f)), 0, dims.z - 1);
-    return gather8(vol, nz * sz + ny * sy + nx);
+    *lo = *hi = gather8(vol, nz * sz + ny * sy + nx);
+    return *lo;
   }
   float8 x0 = floor(x), y0 = floor(y), z0 = floor(z);
   float8 fx = x - x0, fy = y - y0, fz = z - z0;
@@ -49,22 +56,31 @@ inline float8 sample8(__global const short* restrict vol, __constant RaycastPara
   int8 ya = clamp(iy, 0, dims.y - 1) * sy, yb = clamp(iy + 1, 0, dims.y - 1) * sy;
   int8 za = clamp(iz, 0, dims.z - 1) * sz, zb = clamp(iz + 1, 0, dims.z - 1) * sz;
   float8 c00, c10, c01, c11;
+  *lo = FLT_MAX, *hi = -FLT_MAX;
   if (dims.x >= 2) {
     // Each x pair in one load: the pair starts at most at dims.x - 2; past either edge,
     // fx = 0 or 1 picks the edge voxel exactly (clamp to edge, as below).
     int8 ax = clamp(ix, 0, dims.x - 2);
     fx = select(fx, (float8)(0.0f), ix < 0);
     fx = select(fx, (float8)(1.0f), ix > dims.x - 2);
-    c00 = mix_pairs8(vol, za + ya + ax, fx);
-    c10 = mix_pairs8(vol, za + yb + ax, fx);
-    c01 = mix_pairs8(vol, zb + ya + ax, fx);
-    c11 = mix_pairs8(vol, zb + yb + ax, fx);
+    c00 = mix_pairs8(vol, za + ya + ax, fx, lo, hi);
+    c10 = mix_pairs8(vol, za + yb + ax, fx, lo, hi);
+    c01 = mix_pairs8(vol, zb + ya + ax, fx, lo, hi);
+    c11 = mix_pairs8(vol, zb + yb + ax, fx, lo, hi);
   } else {
     int8 ax = 0;
     c00 = gather8(vol, za + ya + ax), c10 = gather8(vol, za + yb + ax);
     c01 = gather8(vol, zb + ya + ax), c11 = gather8(vol, zb + yb + ax);
+    *lo = fmin(fmin(c00, c10), fmin(c01, c11));
+    *hi = fmax(fmax(c00, c10), fmax(c01, c11));
   }
   return mix(mix(c00, c10, fy), mix(c01, c11, fy), fz);
+}
+
+inline float8 sample8(__global const short* restrict vol, __constant RaycastParams* P, float8 x,
+                      float8 y, float8 z) {
+  float8 lo, hi;
+  return sample8_range(vol, P, x, y, z, &lo, &hi);
 }
 
 inline float8 sample_t8(const RayPacket* r, int8 i, float step) {
@@ -75,6 +91,19 @@ inline float8 sample_t8(const RayPacket* r, int8 i, float step) {
 inline int8 index_at8(const RayPacket* r, float8 t, float step) {
   float8 k = (t - r->t0) / step - r->j;
   return convert_int8(clamp(ceil(k), 0.0f, convert_float8(r->n + 1)));
+}
+
+// The first sample index past the voxel cell [floor(p), floor(p) + 1] that sample t lies
+// in (trilinear reads the same eight voxels, clamped, everywhere in it).
+inline int8 past_voxel_cell8(const RayPacket* r, float8 t, float step) {
+  float8 x = r->ox + t * r->dx, y = r->oy + t * r->dy, z = r->oz + t * r->dz;
+  float8 px = floor(x) + select((float8)(0.0f), (float8)(1.0f), r->dx > 0.0f);
+  float8 py = floor(y) + select((float8)(0.0f), (float8)(1.0f), r->dy > 0.0f);
+  float8 pz = floor(z) + select((float8)(0.0f), (float8)(1.0f), r->dz > 0.0f);
+  float8 tx = select((px - r->ox) * r->ix, (float8)(FLT_MAX), r->dx == 0.0f);
+  float8 ty = select((py - r->oy) * r->iy, (float8)(FLT_MAX), r->dy == 0.0f);
+  float8 tz = select((pz - r->oz) * r->iz, (float8)(FLT_MAX), r->dz == 0.0f);
+  return index_at8(r, fmin(tx, fmin(ty, tz)), step);
 }
 
 // ess_leap (skip.cl) for the lanes in `need`: returns their next index, sets their *check.
@@ -214,13 +243,21 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
       }
     }
     float8 t = sample_t8(&r, i, step);
-    float8 v = sample8(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz);
+    float8 vlo, vhi;
+    float8 v = sample8_range(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz, &vlo, &vhi);
     samples -= active;  // true is -1
     int8 in = active & (v >= lo) & (v <= hi);
     hit = select(hit, i, in);
     t_hit = select(t_hit, t, in);
     active &= ~in;
-    i += 1;
+    // Trilinear: a voxel cell whose eight voxels all miss the iso range holds no hit, so
+    // the samples left in it are skipped (the same first hit; the one before it, where
+    // refinement starts, is outside the range either way).
+    int8 cell_misses = active & ((vhi < lo) | (vlo > hi));
+    if (INTERP != 0 && any(cell_misses) != 0)
+      i = select(i + 1, max(i + 1, past_voxel_cell8(&r, t, step)), cell_misses);
+    else
+      i += 1;
     active &= i <= r.n;
   }
   int8 refine = hit > 0;
@@ -238,8 +275,9 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
   }
   float8 hx = r.ox + t_hit * r.dx, hy = r.oy + t_hit * r.dy, hz = r.oz + t_hit * r.dz;
   float value[8], gxa[8], gya[8], gza[8];
-  vstore8(sample8(vol, P, hx, hy, hz), 0, value);
-  if (SHADING && GRADIENT == 0) {
+  bool any_hit = any(hit >= 0);
+  if (any_hit) vstore8(sample8(vol, P, hx, hy, hz), 0, value);
+  if (SHADING && GRADIENT == 0 && any_hit) {
     // volume_gradient's central difference, for all lanes at once.
     vstore8(0.5f * (sample8(vol, P, hx + 1.0f, hy, hz) - sample8(vol, P, hx - 1.0f, hy, hz)), 0,
             gxa);
