@@ -154,7 +154,8 @@ inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r
 // pixel_ray (raycast.cl) for the 4x2 pixels at (4 gx, 2 gy), lane l at (l & 3, l >> 2);
 // the same formulas. Returns each lane's entry axis, -2 where there is no ray (a miss or
 // a pixel outside the image); such lanes get a ray of length zero at the origin.
-inline int8 pixel_rays8(__constant RaycastParams* P, int gx, int gy, RayPacket* r) {
+// w gets the rays in world space (origin, unit direction) for shading.
+inline int8 pixel_rays8(__constant RaycastParams* P, int gx, int gy, RayPacket* r, float8 w[6]) {
   int width = P->image.x, height = P->image.y;
   int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7);
   int8 px = 4 * gx + (lane & 3), py = 2 * gy + (lane >> 2);
@@ -162,6 +163,10 @@ inline int8 pixel_rays8(__constant RaycastParams* P, int gx, int gy, RayPacket* 
   float8 sy = (1.0f - 2.0f * (convert_float8(py) + 0.5f) / height) * P->view.x;
   float8 inv_len = 1.0f;
   if (ORTHO) {
+    w[0] = P->eye_w.x + P->right_w.x * sx + P->up_w.x * sy;
+    w[1] = P->eye_w.y + P->right_w.y * sx + P->up_w.y * sy;
+    w[2] = P->eye_w.z + P->right_w.z * sx + P->up_w.z * sy;
+    w[3] = P->forward_w.x, w[4] = P->forward_w.y, w[5] = P->forward_w.z;
     r->ox = P->eye_v.x + P->right_v.x * sx + P->up_v.x * sy;
     r->oy = P->eye_v.y + P->right_v.y * sx + P->up_v.y * sy;
     r->oz = P->eye_v.z + P->right_v.z * sx + P->up_v.z * sy;
@@ -171,6 +176,8 @@ inline int8 pixel_rays8(__constant RaycastParams* P, int gx, int gy, RayPacket* 
     float8 uy = P->forward_w.y + P->right_w.y * sx + P->up_w.y * sy;
     float8 uz = P->forward_w.z + P->right_w.z * sx + P->up_w.z * sy;
     inv_len = rsqrt(ux * ux + uy * uy + uz * uz);
+    w[0] = P->eye_w.x, w[1] = P->eye_w.y, w[2] = P->eye_w.z;
+    w[3] = ux * inv_len, w[4] = uy * inv_len, w[5] = uz * inv_len;
     r->ox = P->eye_v.x, r->oy = P->eye_v.y, r->oz = P->eye_v.z;
     r->dx = (P->forward_v.x + P->right_v.x * sx + P->up_v.x * sy) * inv_len;
     r->dy = (P->forward_v.y + P->right_v.y * sx + P->up_v.y * sy) * inv_len;
@@ -227,7 +234,8 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
   int width = P->image.x, height = P->image.y;
   float step = P->view.z;
   RayPacket r;
-  int8 axis = pixel_rays8(P, gx, gy, &r);
+  float8 world[6];
+  int8 axis = pixel_rays8(P, gx, gy, &r, world);
 
   float lo = P->values.x, hi = P->values.y;
   int8 i = 0, check = 0, hit = -1, samples = 0;
@@ -291,6 +299,10 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
   vstore8(t_hit, 0, th);
   vstore8(axis, 0, axes);
   vstore8(hx, 0, hxa), vstore8(hy, 0, hya), vstore8(hz, 0, hza);
+  float pwx[8], pwy[8], pwz[8], dwx[8], dwy[8], dwz[8];  // hit points and rays, world
+  vstore8(world[0] + t_hit * world[3], 0, pwx), vstore8(world[3], 0, dwx);
+  vstore8(world[1] + t_hit * world[4], 0, pwy), vstore8(world[4], 0, dwy);
+  vstore8(world[2] + t_hit * world[5], 0, pwz), vstore8(world[5], 0, dwz);
   vstore8(hit, 0, hits);
   vstore8(samples, 0, counts);
   uint total = 0;
@@ -303,10 +315,6 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
       color = c.xyz;
       if (SHADING) {
         float3 p_v = (float3)(hxa[l], hya[l], hza[l]);
-        // Only hit lanes need the world-space ray: set it up again, as a single ray.
-        Ray one;
-        float3 origin_w, dir_w;
-        pixel_ray(P, px, py, &one, &origin_w, &dir_w);
         float3 n_w;
         if (hits[l] == 0 && axes[l] >= 0) {
           // The ray starts inside the surface at a clip face: shade the cut as a flat cap.
@@ -318,7 +326,8 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
           n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, g);
           counts[l] += GRADIENT_TAPS;
         }
-        color = shade(color, n_w, origin_w + th[l] * dir_w, -dir_w, P->light_w, P->light);
+        color = shade(color, n_w, (float3)(pwx[l], pwy[l], pwz[l]),
+                      -(float3)(dwx[l], dwy[l], dwz[l]), P->light_w, P->light);
       }
     }
     out[py * width + px] = to_rgba8(color);

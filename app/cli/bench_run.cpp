@@ -26,19 +26,23 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
   rc.setOptions(opts);
   Image img;
   std::vector<double> wall, kernel;
+  std::string variant;
   for (int i = -run.warmup; i < run.frames; ++i) {
     p.camera.azimuthDeg = 360.0 * std::max(i, 0) / run.frames;
     FrameStats s;
     rc.render(p, img, &s);
     if (i < 0) continue;
     wall.push_back(s.totalMs);
+    variant = s.variant;
     kernel.push_back(s.kernelMs);
   }
   BenchRow r;
   r.size = std::to_string(p.width) + "x" + std::to_string(p.height);
   r.mode = toString(p.mode);
   r.gradient = toString(p.gradient);
-  r.kernel = opts.kernel == RaycasterOptions::Kernel::Uber ? "uber" : "specialised";
+  r.kernel = opts.kernel == RaycasterOptions::Kernel::Uber   ? "uber"
+             : variant.find("PACKET=1") != std::string::npos ? "packet"
+                                                             : "specialised";
   r.pixels = p.width * p.height;
   r.medianMs = median(wall);
   r.minMs = *std::min_element(wall.begin(), wall.end());
@@ -90,7 +94,7 @@ void printHeader(BenchFormat f) {
 
 void printRow(BenchFormat f, const BenchRow& r) {
   double ratio = r.seedFps > 0 ? r.fps / r.seedFps : 0.0;
-  std::string kern = r.kernel == "uber" ? "uber" : "spec";
+  std::string kern = r.kernel == "specialised" ? "spec" : r.kernel == "packet" ? "pack" : "uber";
   if (f == BenchFormat::Csv)
     std::cout << r.input << "," << r.size << "," << r.mode << "," << r.gradient << "," << r.kernel
               << "," << r.medianMs << "," << r.minMs << "," << r.maxMs << "," << r.fps << ","

@@ -64,7 +64,8 @@ Run addBenchCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench", "Frame times over an orbit (median, min, max)");
   auto o = std::make_shared<BenchOptions>();
   o->input.add(*cmd);
-  cmd->add_option("--sizes", o->sizes, "comma-separated WxH list");
+  CLI::Option* sizesOption =
+      cmd->add_option("--sizes", o->sizes, "comma-separated WxH list (also for --seed-table)");
   cmd->add_option("--gradients", o->gradients, "comma-separated operators");
   cmd->add_option("--frames", o->run.frames, "timed frames per case (an orbit)")
       ->check(CLI::Range(1, 100000));
@@ -73,8 +74,10 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_option("--storage", o->storage, "auto, buffer or image")
       ->check(CLI::IsMember({"auto", "buffer", "image"}));
   cmd->add_option("--kernel", o->kernel,
-                  "specialised (-D per variant), uber (runtime switches) or both")
-      ->check(CLI::IsMember({"specialised", "uber", "both"}));
+                  "specialised (-D per variant; iso on a CPU: 4x2 ray packets), per-ray "
+                  "(specialised, one ray per work-item), uber (runtime switches), both "
+                  "(specialised and uber) or all three")
+      ->check(CLI::IsMember({"specialised", "per-ray", "uber", "both", "all"}));
   cmd->add_option("--ess", o->ess, "empty-space skipping on or off")
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--local", o->local, "OpenCL work-group size WxH (default: the device's)");
@@ -87,12 +90,13 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_flag("--json", o->json, "machine-readable output");
   cmd->add_flag("--csv", o->csv, "CSV output");
   o->flags.add(*cmd, {"size", "gradient", "azimuth"});
-  return [o] {
+  return [o, sizesOption] {
     BenchFormat f = o->json ? BenchFormat::Json : o->csv ? BenchFormat::Csv : BenchFormat::Text;
     o->run.countSamples = !o->noCount;
     ClContext ctx(o->device);
     std::vector<std::string> kernels = {o->kernel};
     if (o->kernel == "both") kernels = {"specialised", "uber"};
+    if (o->kernel == "all") kernels = {"specialised", "per-ray", "uber"};
     std::vector<BenchRow> rows;
     printHeader(f);
     // One volume: each size x gradient x kernel, seed figures filled in by the caller.
@@ -109,13 +113,15 @@ Run addBenchCommand(CLI::App& app) {
             RaycasterOptions ro = raycasterOptions(*o);
             ro.kernel = kern == "uber" ? RaycasterOptions::Kernel::Uber
                                        : RaycasterOptions::Kernel::Specialised;
+            ro.packets = kern != "per-ray";
             rc.setOptions(ro);
             BenchRow r = benchCase(rc, p, o->run);
             r.input = name;
             const double* seed = p.gradient == Gradient::Central        ? seedCentral
                                  : p.gradient == Gradient::ZuckerHummel ? seedZucker
                                                                         : nullptr;
-            if (seed && si < 4) r.seedFps = seed[si];
+            for (int k = 0; seed && k < 4; ++k)
+              if (sizes[si] == kSeedSizes[k]) r.seedFps = seed[k];
             printRow(f, r);
             rows.push_back(r);
           }
@@ -128,6 +134,7 @@ Run addBenchCommand(CLI::App& app) {
         p.mode = Mode::Iso;
         p.isoLo = d.isoHu;
         std::vector<std::string> sizes(std::begin(kSeedSizes), std::end(kSeedSizes));
+        if (sizesOption->count() > 0) sizes = split(o->sizes);
         bench(v, p, d.name, sizes, {"central", "zucker-hummel"}, d.seedCentral, d.seedZucker);
       }
       if (f == BenchFormat::Text)
