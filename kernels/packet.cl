@@ -83,6 +83,13 @@ inline float8 sample8(__global const short* restrict vol, __constant RaycastPara
   return sample8_range(vol, P, x, y, z, &lo, &hi);
 }
 
+// How many lanes of a mask are set.
+inline int lanes8(int8 m) {
+  int8 b = m & 1;
+  int4 h = b.lo + b.hi;
+  return h.x + h.y + h.z + h.w;
+}
+
 inline float8 sample_t8(const RayPacket* r, int8 i, float step) {
   return fmin(r->t0 + (convert_float8(i) + r->j) * step, r->t1);
 }
@@ -243,8 +250,10 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
   int8 active = r.n >= 0;
   while (any(active)) {
     if (ESS) {
+      // Leaping is optional (sampling on is always right), and a call costs every lane:
+      // leap once at least half the active lanes have left their occupied cell.
       int8 need = active & (i >= check);
-      if (any(need)) {
+      if (any(need) && 2 * lanes8(need) >= lanes8(active)) {
         i = select(i, ess_leap8(leap, range, P, &r, i, need, step, &check), need);
         active &= ~(need & (i > r.n));
         if (!any(active)) break;

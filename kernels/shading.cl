@@ -15,7 +15,9 @@ inline float3 shade(float3 color, float3 normal_w, float3 pos_w, float3 view_w, 
   float specular = 0.0f;
   if (diffuse > 0.0f) {
     float3 h = safe_normalize(l + view_w, n);
-    specular = pow(fmax(dot(n, h), 0.0f), k.w);
+    // powr on the fast native path; at 0 it keeps pow's value (0, or 1 for exponent 0).
+    float s = fmax(dot(n, h), 0.0f);
+    specular = s > 0.0f ? native_exp2(k.w * native_log2(s)) : (k.w == 0.0f ? 1.0f : 0.0f);
   }
   return color * (k.x + k.y * diffuse) + (float3)(k.z * specular);
 }
