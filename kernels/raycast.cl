@@ -4,7 +4,8 @@
 //        2 mip
 //   SHADING 0/1, GRADIENT 0..2, INTERP 0/1, STORAGE_IMAGE 0/1, ORTHO 0/1,
 //   REFINE_STEPS n, OPACITY_CORRECTION 0/1, JITTER 0/1, ESS 0/1 (empty-space skipping,
-//   skip.cl), COUNT_SAMPLES 0/1, UBER 0/1 (all switches at runtime: variant.cl)
+//   skip.cl), COUNT_SAMPLES 0/1, UBER 0/1 (all switches at runtime: variant.cl),
+//   HIT_OUTPUT 0/1 (iso: each pixel's hit to `hits`, see march_iso; w -1 for none)
 // Only what the variant needs is compiled: MIP and unshaded frames take no gradient.
 // engine/src/reference_renderer.cpp is the same algorithm in double precision.
 //
@@ -29,7 +30,12 @@
 // count: COUNT_SAMPLES adds each ray's samples to one of 64 counters (fewer collisions
 // than one; the host sums them). Unused otherwise, like occ and range without ESS.
 __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
-                      __global uchar4* out, CELL_ARGS, __global uint* count) {
+                      __global uchar4* out, CELL_ARGS, __global uint* count
+#if HIT_OUTPUT
+                      ,
+                      __global float4* hits
+#endif
+) {
   int px = get_global_id(0), py = get_global_id(1);
   int width = P->image.x, height = P->image.y;
   if (px >= width || py >= height) return;
@@ -53,6 +59,7 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
   }
   float3 color = P->background.xyz;
   uint samples = 0;
+  float4 hit = (float4)(0.0f, 0.0f, 0.0f, -1.0f);
 
   int axis = intersect_box(r.o, r.d, P->clip_lo.xyz, P->clip_hi.xyz, &r.t0, &r.t1);
   if (axis > -2) {
@@ -62,7 +69,7 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
     // A bounded count: a NaN or absurd length must not hang the device.
     r.n = (int)clamp(ceil((r.t1 - r.t0) / r.step), 0.0f, 16777216.0f);
     if (MODE == 0)
-      color = march_iso(vol, P, lut, occ, range, &r, origin_w, dir_w, axis, &samples);
+      color = march_iso(vol, P, lut, occ, range, &r, origin_w, dir_w, axis, &samples, &hit);
     else if (MODE == 1)
       color = march_dvr(vol, P, lut, occ, range, &r, origin_w, dir_w, &samples);
     else
@@ -71,4 +78,7 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
   color = clamp(color, 0.0f, 1.0f);
   out[py * width + px] = (uchar4)(convert_uchar3_sat_rte(color * 255.0f), 255);
   if (COUNT_SAMPLES) atomic_add(&count[(px ^ py) & 63], samples);
+#if HIT_OUTPUT
+  hits[py * width + px] = hit;
+#endif
 }
