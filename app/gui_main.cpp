@@ -27,6 +27,9 @@ void applyRenderValues(RenderStateModel& m, const std::map<std::string, std::str
       if (auto it = values.find(spec.key); it != values.end() && spec.key != "size")
         spec.parse(p, it->second);
   });
+  // Explicit step, refinement or jitter flags win over the quality preset's.
+  for (const char* key : {"step", "refine", "jitter"})
+    if (values.count(key)) m.setQualityPreset("");
   if (auto it = values.find("size"); it != values.end()) {
     RenderParams sized;
     renderParamSpecs().front().parse(sized, it->second);

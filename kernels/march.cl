@@ -30,9 +30,11 @@ inline bool in_iso(__constant RaycastParams* P, float v) {
 }
 
 // First hit of the iso range, refined by bisection between the last miss and the hit.
+// *hit_out (kept by HIT_OUTPUT variants): the hit in voxel coordinates, w 1 for a
+// crossing, 0 for the first sample (entry face or clip cap); untouched without a hit.
 inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
                         CELL_ARGS, const Ray* r, float3 origin_w, float3 dir_w, int axis,
-                        uint* count) {
+                        uint* count, float4* hit_out) {
   int hit = -1;
   float t_hit = 0.0f;
   for (int i = 0, check = 0; i <= r->n; ++i) {
@@ -62,6 +64,7 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
     t_hit = REFINE_STEPS > 0 ? 0.5f * (a + b) : b;
   }
   float3 p_v = r->o + t_hit * r->d;
+  *hit_out = (float4)(p_v, hit > 0 ? 1.0f : 0.0f);
   float4 c = lut_lookup(lut, P, sample_volume(vol, P, p_v));
   if (!SHADING) return c.xyz;
   float3 n_w;

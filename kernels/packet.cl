@@ -291,18 +291,9 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
     samples += select((int8)(0), (int8)(REFINE_STEPS), refine);
   }
   float8 hx = r.ox + t_hit * r.dx, hy = r.oy + t_hit * r.dy, hz = r.oz + t_hit * r.dz;
-  float value[8], gxa[8], gya[8], gza[8];
+  float value[8];
   bool any_hit = any(hit >= 0);
   if (any_hit) vstore8(sample8(vol, P, hx, hy, hz), 0, value);
-  if (SHADING && GRADIENT == 0 && any_hit) {
-    // volume_gradient's central difference, for all lanes at once.
-    vstore8(0.5f * (sample8(vol, P, hx + 1.0f, hy, hz) - sample8(vol, P, hx - 1.0f, hy, hz)), 0,
-            gxa);
-    vstore8(0.5f * (sample8(vol, P, hx, hy + 1.0f, hz) - sample8(vol, P, hx, hy - 1.0f, hz)), 0,
-            gya);
-    vstore8(0.5f * (sample8(vol, P, hx, hy, hz + 1.0f) - sample8(vol, P, hx, hy, hz - 1.0f)), 0,
-            gza);
-  }
   int hits[8], counts[8], axes[8];
   float th[8], hxa[8], hya[8], hza[8];
   vstore8(t_hit, 0, th);
@@ -330,9 +321,8 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
           float3 e = (float3)(axes[l] == 0, axes[l] == 1, axes[l] == 2);
           n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, e);
         } else {
-          float3 g = (float3)(gxa[l], gya[l], gza[l]);
-          if (GRADIENT != 0) g = volume_gradient(vol, P, p_v);
-          n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, g);
+          // One lane at a time: the gradient's cancellation rule needs its own stencil.
+          n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, volume_gradient(vol, P, p_v));
           counts[l] += GRADIENT_TAPS;
         }
         color = shade(color, n_w, (float3)(pwx[l], pwy[l], pwz[l]),

@@ -5,7 +5,9 @@
 //   SHADING 0/1, GRADIENT 0..2, INTERP 0/1, STORAGE_IMAGE 0/1, ORTHO 0/1,
 //   REFINE_STEPS n, OPACITY_CORRECTION 0/1, JITTER 0/1, ESS 0/1 (empty-space skipping,
 //   skip.cl), COUNT_SAMPLES 0/1, UBER 0/1 (all switches at runtime: variant.cl),
-//   PACKET 0/1 (iso on CPUs: 4x2 rays per work-item in SIMD, packet.cl)
+//   PACKET 0/1 (iso on CPUs: 4x2 rays per work-item in SIMD, packet.cl),
+//   HIT_OUTPUT 0/1 (iso, one ray per work-item: each pixel's hit to `hits`, see
+//   march_iso; w -1 for none)
 // Only what the variant needs is compiled: MIP and unshaded frames take no gradient.
 // engine/src/reference_renderer.cpp is the same algorithm in double precision.
 //
@@ -72,7 +74,12 @@ inline uchar4 to_rgba8(float3 color) {
 // PACKET 1 (CPUs, iso): each work-item marches the 4x2 pixels at (4 x, 2 y) together in
 // SIMD (packet.cl); otherwise one work-item per pixel.
 __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
-                      __global uchar4* out, CELL_ARGS, __global uint* count) {
+                      __global uchar4* out, CELL_ARGS, __global uint* count
+#if HIT_OUTPUT
+                      ,
+                      __global float4* hits
+#endif
+) {
 #if PACKET
   iso_packet(vol, P, lut, out, leap, range, count, get_global_id(0), get_global_id(1));
 #else
@@ -83,10 +90,11 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
   Ray r;
   float3 color = P->background.xyz;
   uint samples = 0;
+  float4 hit = (float4)(0.0f, 0.0f, 0.0f, -1.0f);
   int axis = pixel_ray(P, px, py, &r, &origin_w, &dir_w);
   if (axis > -2) {
     if (MODE == 0)
-      color = march_iso(vol, P, lut, leap, range, &r, origin_w, dir_w, axis, &samples);
+      color = march_iso(vol, P, lut, leap, range, &r, origin_w, dir_w, axis, &samples, &hit);
     else if (MODE == 1)
       color = march_dvr(vol, P, lut, leap, range, &r, origin_w, dir_w, &samples);
     else
@@ -94,5 +102,8 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
   }
   out[py * width + px] = to_rgba8(color);
   if (COUNT_SAMPLES) atomic_add(&count[(px ^ py) & 63], samples);
+#if HIT_OUTPUT
+  hits[py * width + px] = hit;
+#endif
 #endif
 }

@@ -74,17 +74,18 @@ std::string num(double v, int prec) {
 }
 
 void printTable(const std::vector<SweepRow>& rows, const std::string& device) {
-  std::printf("%-12s %-32s %8s %8s %8s %6s %8s %8s %7s %7s %8s %6s %6s\n", "scene", "setting", "ms",
-              "Msamp/s", "hit_med", "miss%", "surf_vox", "surf_p95", "nrm_deg", "nrm_p95", "rmse",
-              "psnr", "ssim");
+  std::printf("%-12s %-32s %8s %8s %8s %6s %8s %8s %8s %7s %7s %8s %6s %6s\n", "scene", "setting",
+              "ms", "Msamp/s", "hit_med", "miss%", "surf_vox", "surf_p95", "k_surf", "nrm_deg",
+              "nrm_p95", "rmse", "psnr", "ssim");
   for (const SweepRow& r : rows) {
     bool iso = r.mode == Mode::Iso && r.hitPoint.count > 0;
     double miss = 100.0 * r.hitPoint.excluded / std::max(1, r.hitPoint.count + r.hitPoint.excluded);
-    std::printf("%-12s %-32s %8.1f %8.2f %8s %6s %8s %8s %7s %7s %8.5f %6.2f %6.4f\n",
+    std::printf("%-12s %-32s %8.1f %8.2f %8s %6s %8s %8s %8s %7s %7s %8.5f %6.2f %6.4f\n",
                 r.scene.c_str(), r.setting.c_str(), r.msPerFrame, r.samplesPerSecond * 1e-6,
                 iso ? num(r.hitPoint.median, 5).c_str() : "-", iso ? num(miss, 2).c_str() : "-",
                 r.hasSurface ? num(r.surface.positionVoxels.mean, 4).c_str() : "-",
                 r.hasSurface ? num(r.surface.positionVoxels.p95, 4).c_str() : "-",
+                r.hasSurface ? num(r.kernelSurface.mean, 4).c_str() : "-",
                 r.hasSurface ? num(r.surface.normalDeg.mean, 2).c_str() : "-",
                 r.hasSurface ? num(r.surface.normalDeg.p95, 2).c_str() : "-", r.image.rmse,
                 r.image.psnrDb, r.image.ssim);
@@ -94,7 +95,8 @@ void printTable(const std::vector<SweepRow>& rows, const std::string& device) {
       "reference renderer / ms; hit_med: median distance of the hit point to the same "
       "reconstruction's crossing marched at 1/16 voxel with 24 bisections; miss%%: rays that "
       "found another crossing (stepped over a thin feature), left out of hit_med; surf/nrm: vs the "
-      "analytic surface and normal; rmse/psnr/ssim: "
+      "analytic surface and normal (reference renderer's hits); k_surf: the OpenCL kernel's own "
+      "hit points vs the analytic surface (mean); rmse/psnr/ssim: "
       "OpenCL image vs the reference renderer at 1/16 voxel steps (trilinear)\n",
       device.c_str());
 }
@@ -122,6 +124,9 @@ nlohmann::json toJson(const std::vector<SweepRow>& rows, const std::string& devi
                              {"p95", r.surface.positionVoxels.p95},
                              {"max", r.surface.positionVoxels.max}};
       j["normal_deg"] = {{"mean", r.surface.normalDeg.mean}, {"p95", r.surface.normalDeg.p95}};
+      j["kernel_surface_voxels"] = {{"mean", r.kernelSurface.mean},
+                                    {"p95", r.kernelSurface.p95},
+                                    {"max", r.kernelSurface.max}};
     }
     out.push_back(j);
   }

@@ -124,6 +124,21 @@ SurfaceError surfaceError(const ReferenceHits& hits, const AnalyticField& truth)
   return {summarize(std::move(pos)), summarize(std::move(ang))};
 }
 
+ReferenceHits kernelHits(const std::vector<glm::vec4>& hits, int width, int height) {
+  ReferenceHits out;
+  out.width = width;
+  out.height = height;
+  out.kind.reserve(hits.size());
+  out.voxel.reserve(hits.size());
+  for (const glm::vec4& h : hits) {
+    out.kind.push_back(h.w > 0.5f ? HitKind::Surface
+                                  : (h.w > -0.5f ? HitKind::AtEntry : HitKind::None));
+    out.voxel.push_back(glm::dvec3(h));
+  }
+  out.normal.assign(hits.size(), glm::dvec3(0.0));
+  return out;
+}
+
 ErrorStats hitPointError(const ReferenceHits& hits, const ReferenceHits& fine,
                          double sameCrossingVoxels) {
   std::vector<double> d;

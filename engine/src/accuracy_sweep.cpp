@@ -162,6 +162,11 @@ std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
       if (scene.truth) {
         row.hasSurface = true;
         row.surface = surfaceError(hits, *scene.truth);
+        std::vector<glm::vec4> kernel;  // an extra, untimed frame: HIT_OUTPUT is a variant
+        rc.renderWithHits(c.params, kernel);
+        row.kernelSurface =
+            surfaceError(kernelHits(kernel, c.params.width, c.params.height), *scene.truth)
+                .positionVoxels;
       }
     }
     rows.push_back(row);

@@ -12,6 +12,7 @@ TransferFunction frameTransferFunction(const RenderParams& p) {
     for (auto& c : tf.points) c.hu += p.presetShiftHu;
     return tf;
   };
+  if (!p.transferFunction.empty()) return shifted(TransferFunction{p.transferFunction});
   if (!p.preset.empty()) {
     const Preset& preset = findPreset(p.preset);
     if (!preset.tf.points.empty()) return shifted(preset.tf);

@@ -57,6 +57,7 @@ const std::vector<Preset>& builtinPresets() {
 
 void applyPreset(RenderParams& p, const Preset& preset) {
   p.preset = preset.name;
+  p.transferFunction.clear();  // the preset's table, not an earlier custom one
   p.mode = parseMode(preset.mode);
   if (preset.isoHi > preset.isoLo) {
     p.isoLo = preset.isoLo;

@@ -1,9 +1,9 @@
 #include "voxray/engine/quality.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <cctype>
+#include <map>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -11,6 +11,8 @@
 #include "voxray/io/volume.h"
 
 namespace voxray {
+
+const std::map<std::string, std::string_view>& embeddedQualityPresets();  // generated at build
 
 QualityPreset parseQualityPreset(const std::string& text, const std::string& origin) {
   QualityPreset q;
@@ -42,26 +44,34 @@ QualityPreset parseQualityPreset(const std::string& text, const std::string& ori
   return q;
 }
 
-std::vector<QualityPreset> loadQualityPresets(const std::string& folder) {
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(folder, ec))
-    if (e.path().extension() == ".json") files.push_back(e.path());
-  if (files.empty()) throw inputError(folder + ": no quality presets (*.json) here");
-  std::sort(files.begin(), files.end());
-  std::vector<QualityPreset> out;
-  for (const auto& f : files) {
-    std::ifstream in(f);
-    std::stringstream text;
-    text << in.rdbuf();
-    out.push_back(parseQualityPreset(text.str(), f.string()));
-  }
-  return out;
+const std::vector<QualityPreset>& builtinQualityPresets() {
+  static const std::vector<QualityPreset> presets = [] {
+    std::vector<QualityPreset> out;
+    for (const auto& [name, text] : embeddedQualityPresets())
+      out.push_back(parseQualityPreset(std::string(text), "resources/quality/" + name));
+    std::stable_sort(out.begin(), out.end(), [](const QualityPreset& a, const QualityPreset& b) {
+      return a.measuredSpeedup > b.measuredSpeedup;
+    });
+    return out;
+  }();
+  return presets;
 }
 
-RenderParams applyQuality(RenderParams p, const QualityPreset& q, const Volume& v) {
-  double h = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
-  p.stepMm = q.stepVoxels * h;
+const QualityPreset& findQualityPreset(const std::string& name) {
+  auto lower = [](std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+  };
+  std::string known;
+  for (const auto& q : builtinQualityPresets()) {
+    if (lower(q.name) == lower(name)) return q;
+    known += (known.empty() ? "" : ", ") + q.name;
+  }
+  throw inputError("unknown quality preset '" + name + "'; known: " + known);
+}
+
+RenderParams applyQuality(RenderParams p, const QualityPreset& q, double minSpacingMm) {
+  p.stepMm = q.stepVoxels * minSpacingMm;
   p.interp = q.interp;
   p.gradient = q.gradient;
   p.refine = q.refine;
@@ -69,6 +79,10 @@ RenderParams applyQuality(RenderParams p, const QualityPreset& q, const Volume& 
   p.width = std::max(1, int(p.width * q.resolutionScale + 0.5));
   p.height = std::max(1, int(p.height * q.resolutionScale + 0.5));
   return p;
+}
+
+RenderParams applyQuality(RenderParams p, const QualityPreset& q, const Volume& v) {
+  return applyQuality(std::move(p), q, std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z}));
 }
 
 }  // namespace voxray

@@ -39,7 +39,10 @@ struct Raycaster::Impl {
   size_t outCapacity = 0;
   std::vector<glm::vec4> lutUploaded;  // the table on the device: uploaded on change only
   EmptySpace space;
-  cl::Buffer countBuffer;  // 64 sample counters (COUNT_SAMPLES)
+  cl::Buffer countBuffer;                     // 64 sample counters (COUNT_SAMPLES)
+  std::vector<glm::vec4>* hitsOut = nullptr;  // set by renderWithHits (HIT_OUTPUT)
+  cl::Buffer hitBuffer;
+  size_t hitCapacity = 0;
   RaycasterOptions opts;
   // The last frame's setup. Its table, thresholds and step do not depend on the camera
   // or the image size but cost two passes over the volume (its value range), so an orbit
@@ -116,6 +119,7 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
   std::ostringstream o;
   o << "-cl-fast-relaxed-math -D STORAGE_IMAGE=" << int(storage == VolumeStorage::Image3d)
     << " -D COUNT_SAMPLES=" << int(opts.countSamples);
+  if (hitsOut) o << " -D HIT_OUTPUT=1";
   // The uber kernel reads every other switch from RaycastParams (kernels/variant.cl).
   if (opts.kernel == RaycasterOptions::Kernel::Uber) return o.str() + " -D UBER=1";
   bool shading = p.shading && p.mode != Mode::Mip;
@@ -131,7 +135,7 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
 }
 
 bool Raycaster::Impl::packets(const RenderParams& p) const {
-  return opts.packets && opts.kernel == RaycasterOptions::Kernel::Specialised &&
+  return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
          p.mode == Mode::Iso && storage == VolumeStorage::Buffer && !cl.info.isGpu;
 }
 
@@ -240,6 +244,14 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     kernel.setArg(4, m.space.leap());
     kernel.setArg(5, m.space.range());
     kernel.setArg(6, m.countBuffer);
+    if (m.hitsOut) {
+      if (pixels * sizeof(cl_float4) > m.hitCapacity) {
+        m.hitBuffer = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
+        m.hitCapacity = pixels * sizeof(cl_float4);
+      }
+      m.hitsOut->resize(pixels);
+      kernel.setArg(7, m.hitBuffer);
+    }
     cl::NDRange local = m.local();
     size_t gx = size_t(p.width), gy = size_t(p.height);
     if (m.packets(p)) {  // one work-item per 4x2 pixels
@@ -253,6 +265,8 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local, nullptr, &done);
     if (m.opts.countSamples)
       q.enqueueReadBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
+    if (m.hitsOut)
+      q.enqueueReadBuffer(m.hitBuffer, CL_FALSE, 0, pixels * sizeof(cl_float4), m.hitsOut->data());
     q.enqueueReadBuffer(m.outBuffer, CL_TRUE, 0, pixels * 4, out.rgba.data());
     return 0;
   });
@@ -270,6 +284,18 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     stats->totalMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
+}
+
+Image Raycaster::renderWithHits(const RenderParams& params, std::vector<glm::vec4>& hits,
+                                FrameStats* stats) {
+  struct Reset {  // the next plain render() must not write hits again
+    Impl& m;
+    ~Reset() { m.hitsOut = nullptr; }
+  } reset{*impl_};
+  impl_->hitsOut = &hits;
+  Image out;
+  render(params, out, stats);
+  return out;
 }
 
 }  // namespace voxray

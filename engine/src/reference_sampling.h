@@ -10,7 +10,8 @@ namespace voxray {
 struct Volume;
 
 double sampleVolume(const Volume& v, Interp interp, const glm::dvec3& p);
-// Gradient in stored units per voxel along the volume axes.
+// Gradient in stored units per voxel along the volume axes; exactly 0 when it is at most
+// 1e-5 times the largest |voxel| the stencil read (cancellation noise in the kernel's float).
 glm::dvec3 volumeGradient(const Volume& v, Interp interp, Gradient op, const glm::dvec3& p);
 // Volume reads one volumeGradient() call makes (6 or 26).
 int gradientSamples(Gradient op);

@@ -79,6 +79,39 @@ void parseClip(RenderParams& p, const std::string& s) {
   }
 }
 
+// "HU:R:G:B:A,HU:R:G:B:A,...": sorted by HU, stable, so coincident points keep their order
+// (the step goes from the first to the last of them).
+std::vector<ControlPoint> parseTransferFunction(const std::string& s) {
+  std::vector<ControlPoint> points;
+  std::istringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    std::vector<double> v;
+    std::istringstream fields(item);
+    std::string field;
+    while (std::getline(fields, field, ':')) v.push_back(toDouble("tf", field));
+    if (v.size() != 5 || !std::isfinite(v[0]))
+      throw inputError("--tf: each point is HU:R:G:B:A with a finite HU, got '" + item + "'");
+    for (int c = 1; c < 5; ++c)
+      if (!(v[c] >= 0.0 && v[c] <= 1.0))
+        throw inputError("--tf: colour and opacity must lie in 0 ... 1, got '" + item + "'");
+    points.push_back({v[0], {v[1], v[2], v[3], v[4]}});
+  }
+  std::stable_sort(points.begin(), points.end(),
+                   [](const ControlPoint& a, const ControlPoint& b) { return a.hu < b.hu; });
+  return points;
+}
+
+std::string formatTransferFunction(const std::vector<ControlPoint>& points) {
+  std::string out;
+  for (const ControlPoint& c : points) {
+    if (!out.empty()) out += ",";
+    out += fmt(c.hu);
+    for (int k = 0; k < 4; ++k) out += ":" + fmt(c.rgba[k]);
+  }
+  return out;
+}
+
 double positive(const std::string& key, const std::string& s) {
   double v = toDouble(key, s);
   if (v <= 0.0) throw inputError("--" + key + ": must be greater than 0, got '" + s + "'");
@@ -102,6 +135,11 @@ std::vector<ParamSpec> makeSpecs() {
        [](const P& p) { return std::string(toString(p.mode)); }},
       {"preset", "NAME", "transfer-function preset from resources/presets (voxray-cli presets)",
        [](P& p, S s) { p.preset = s; }, [](const P& p) { return p.preset; }},
+      {"tf", "HU:R:G:B:A,...",
+       "custom transfer function instead of the preset's: colour and opacity (0 ... 1, opacity "
+       "per voxel) at each HU, linear between; a repeated HU makes a step",
+       [](P& p, S s) { p.transferFunction = parseTransferFunction(s); },
+       [](const P& p) { return formatTransferFunction(p.transferFunction); }},
       {"preset-shift", "HU", "move the preset's transfer function along HU",
        [](P& p, S s) { p.presetShiftHu = toDouble("preset-shift", s); },
        [](const P& p) { return fmt(p.presetShiftHu); }},

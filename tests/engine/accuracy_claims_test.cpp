@@ -3,8 +3,11 @@
 // kernel_vs_reference_test.cpp). The numbers in comments were measured with this code.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "reference_sampling.h"
 #include "voxray/engine/accuracy.h"
@@ -86,28 +89,137 @@ TEST(Synthetic, SignedDistanceSurfacesAreFoundToAFewHundredthsOfAVoxel) {
   }
 }
 
-TEST(LiteratureClaims, SmoothingGradientsDoNotBeatCentralDifferencesOnCleanMarschnerLobb) {
-  // The literature's claim (Sobel / Zucker-Hummel normals beat central differences on
-  // Marschner-Lobb) is NOT reproduced on the noise-free trilinear signal: their 3x3x3
-  // smoothing attenuates the radial ripples (near Nyquist at 41^3) more than the slow z
-  // term, which tilts the normal. Measured mean angular error, step 0.25, 8 bisections,
-  // 96x96: 41^3 central 37.6, Sobel 45.5, Zucker-Hummel 51.1 degrees (p95 ~78 for all);
-  // the sweep finds the same order at 81^3 (9.2 / 10.1 / 11.2) and 161^3 (2.5 / 2.7 / 2.9).
-  // This test pins the finding so a change to the operators shows up here.
-  double mean[3], p95[3];
+namespace {
+
+// Gaussian noise of sigmaHu on every voxel, by Box-Muller on mt19937's raw output: both
+// are specified exactly (std::normal_distribution is not), so the numbers below hold
+// with every standard library.
+Volume withNoise(Volume v, double sigmaHu, uint32_t seed) {
+  std::mt19937 rng(seed);
+  auto uniform = [&] { return (double(rng()) + 0.5) / 4294967296.0; };
+  for (int16_t& x : v.voxels) {
+    double g = std::sqrt(-2.0 * std::log(uniform())) * std::cos(6.283185307179586 * uniform());
+    x = int16_t(std::clamp(std::nearbyint(x + g * sigmaHu / v.slope), -32768.0, 32767.0));
+  }
+  return v;
+}
+
+// Mean normal angular error (degrees) per operator, indexed by Gradient, as the sweep
+// measures it: iso hits at step 0.25 with 8 bisections, 96x96, the computed normal at the
+// hit against the analytic gradient of the continuous Marschner-Lobb signal there.
+std::array<double, 3> meanNormalErrors(const Volume& v, int size, const std::string& tag) {
+  std::array<double, 3> mean{};
   for (Gradient g : {Gradient::Central, Gradient::Sobel, Gradient::ZuckerHummel}) {
     ReferenceHits hits;
-    renderReferenceFloat(ml41(), isoParams(0.25, 8, g), &hits);
-    SurfaceError e = surfaceError(hits, AnalyticField{{SyntheticShape::MarschnerLobb, 41}});
-    mean[int(g)] = e.normalDeg.mean;
-    p95[int(g)] = e.normalDeg.p95;
-    RecordProperty(std::string("normal_mean_deg_") + toString(g), std::to_string(mean[int(g)]));
+    renderReferenceFloat(v, isoParams(0.25, 8, g), &hits);
+    SurfaceError e = surfaceError(hits, AnalyticField{{SyntheticShape::MarschnerLobb, size}});
+    mean[size_t(g)] = e.normalDeg.mean;
+    ::testing::Test::RecordProperty("normal_mean_deg_" + tag + "_" + toString(g),
+                                    std::to_string(e.normalDeg.mean));
   }
-  int c = int(Gradient::Central), s = int(Gradient::Sobel), z = int(Gradient::ZuckerHummel);
-  EXPECT_LT(mean[c], mean[s]);
-  EXPECT_LT(mean[s], mean[z]);
-  EXPECT_NEAR(p95[s], p95[c], 5.0);
-  EXPECT_NEAR(p95[z], p95[c], 5.0);
+  return mean;
+}
+
+constexpr size_t kC = size_t(Gradient::Central), kS = size_t(Gradient::Sobel),
+                 kZ = size_t(Gradient::ZuckerHummel);
+
+}  // namespace
+
+TEST(LiteratureClaims, GradientAtTheSampleIsTheInterpolatedGridGradient) {
+  // The operators run on trilinear samples at p + {-1, 0, 1}^3 rather than on the grid,
+  // with their gradients interpolated afterwards (Moeller et al.'s "derivative first").
+  // Both are linear and the neighbours share p's fractional offset, so the two orders give
+  // the same gradient: evaluation order is not why smoothing operators lose below.
+  const Volume& v = ml41();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(2.0, 38.0);  // stencils away from the clamped faces
+  for (Gradient g : {Gradient::Central, Gradient::Sobel, Gradient::ZuckerHummel})
+    for (int i = 0; i < 200; ++i) {
+      glm::dvec3 p(u(rng), u(rng), u(rng)), f0 = glm::floor(p), f = p - f0, grid(0.0);
+      for (int c = 0; c < 8; ++c) {
+        glm::dvec3 o(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+        double w = (o.x ? f.x : 1 - f.x) * (o.y ? f.y : 1 - f.y) * (o.z ? f.z : 1 - f.z);
+        grid += w * volumeGradient(v, Interp::Linear, g, f0 + o);
+      }
+      glm::dvec3 atP = volumeGradient(v, Interp::Linear, g, p);
+      EXPECT_LE(glm::length(atP - grid), 1e-12 * glm::length(atP)) << toString(g);
+    }
+}
+
+TEST(LiteratureClaims, SmoothingGradientsDoNotBeatCentralDifferencesOnCleanMarschnerLobb) {
+  // The literature's claim (Sobel / Zucker-Hummel normals beat central differences on
+  // Marschner-Lobb) does NOT hold on the noise-free signal at any resolution tried; the gap
+  // closes as the ripples get more samples. Measured mean angular error (central / Sobel /
+  // ZH, degrees): 41^3 38.0 / 45.5 / 51.1, 64^3 14.3 / 16.5 / 18.5, 81^3 8.7 / 9.7 / 10.7,
+  // 128^3 3.6 / 3.9 / 4.2. Why: see the next test. docs/accuracy/gradient-operators.md.
+  for (int size : {41, 64, 81, 128}) {
+    Volume v = makeSyntheticVolume({SyntheticShape::MarschnerLobb, size});
+    auto mean = meanNormalErrors(v, size, "ml" + std::to_string(size));
+    EXPECT_LT(mean[kC], mean[kS]) << size;
+    EXPECT_LT(mean[kS], mean[kZ]) << size;
+  }
+}
+
+TEST(LiteratureClaims, SmoothingAttenuatesTheRadialRipplesAndTiltsNormalsTowardsZ) {
+  // Marschner-Lobb is a slow term in z plus radial ripples in x, y whose frequency reaches
+  // 0.94 of Nyquist at 41^3. Every operator here differentiates a trilinear reconstruction
+  // with a +-1 voxel difference, which already damps the ripples' gradient; Sobel and
+  // Zucker-Hummel also average across the derivative axis, which damps the ripples (they
+  // vary across it) further but not the z term (it does not). The normal tilts towards z.
+  // Measured at the hit points, 41^3: mean share of the true x-y gradient kept, central
+  // 0.54, Sobel 0.38, ZH 0.35; mean |n_z| true 0.27, central 0.63, Sobel 0.77, ZH 0.80.
+  AnalyticField truth{{SyntheticShape::MarschnerLobb, 41}};
+  ReferenceHits hits;
+  renderReferenceFloat(ml41(), isoParams(0.25, 8), &hits);
+  double kept[3] = {}, nz[3] = {}, nzTrue = 0.0;
+  int n = 0;
+  for (size_t i = 0; i < hits.kind.size(); ++i) {
+    if (hits.kind[i] != HitKind::Surface) continue;
+    glm::dvec3 t = truth.gradient(hits.voxel[i]);
+    double txy = std::hypot(t.x, t.y);
+    if (!(txy > 1e-6 * glm::length(t))) continue;
+    for (Gradient g : {Gradient::Central, Gradient::Sobel, Gradient::ZuckerHummel}) {
+      glm::dvec3 c = volumeGradient(ml41(), Interp::Linear, g, hits.voxel[i]) * ml41().slope;
+      kept[int(g)] += std::hypot(c.x, c.y) / txy;
+      nz[int(g)] += std::abs(c.z) / glm::length(c);
+    }
+    nzTrue += std::abs(t.z) / glm::length(t);
+    ++n;
+  }
+  ASSERT_GT(n, 1000);
+  for (int g = 0; g < 3; ++g) {
+    kept[g] /= n;
+    nz[g] /= n;
+    RecordProperty(std::string("xy_kept_") + toString(Gradient(g)), std::to_string(kept[g]));
+    RecordProperty(std::string("abs_nz_") + toString(Gradient(g)), std::to_string(nz[g]));
+  }
+  nzTrue /= n;
+  RecordProperty("abs_nz_true", std::to_string(nzTrue));
+  EXPECT_LT(kept[kC], 0.6);  // even central differences keep only about half
+  EXPECT_LT(kept[kS], kept[kC]);
+  EXPECT_LT(kept[kZ], kept[kS]);
+  EXPECT_GT(nz[kC], 2.0 * nzTrue);
+  EXPECT_GT(nz[kS], nz[kC]);
+  EXPECT_GT(nz[kZ], nz[kS]);
+}
+
+TEST(LiteratureClaims, SmoothingGradientsBeatCentralDifferencesOnNoisyMarschnerLobb) {
+  // Where the literature's claim does hold: with noise, once the ripples are sampled well
+  // enough that the smoothing costs less than the noise it removes. Gaussian noise of
+  // 40 HU (2 % of the -1000..1000 range) on every voxel; measured mean angular error
+  // (central / Sobel / ZH, degrees): 41^3 38.5 / 45.4 / 50.9 (central still best: the
+  // ripples are near Nyquist), 81^3 16.1 / 13.1 / 13.6, 128^3 18.1 / 11.7 / 10.8.
+  for (int size : {41, 81, 128}) {
+    Volume v = withNoise(makeSyntheticVolume({SyntheticShape::MarschnerLobb, size}), 40.0, 7);
+    auto mean = meanNormalErrors(v, size, "ml" + std::to_string(size) + "_noise40");
+    if (size == 41) {
+      EXPECT_LT(mean[kC], mean[kS]);
+      EXPECT_LT(mean[kC], mean[kZ]);
+    } else {
+      EXPECT_LT(mean[kS], 0.9 * mean[kC]) << size;
+      EXPECT_LT(mean[kZ], 0.9 * mean[kC]) << size;
+    }
+  }
 }
 
 TEST(LiteratureClaims, EachBisectionStepRoughlyHalvesTheHitPointError) {
@@ -141,6 +253,43 @@ TEST(LiteratureClaims, EachBisectionStepRoughlyHalvesTheHitPointError) {
   }
   EXPECT_GE(err[0] / err[6], 64.0);
   EXPECT_LT(err[0] / err[5], 64.0);
+}
+
+TEST(LiteratureClaims, EachBisectionStepHalvesTheSphereHitError) {
+  // The sphere's distance field is nearly linear along a ray, so bisection goes by the
+  // book. Sphere 64^3, 1-voxel step, 96x96; median hit error (voxels) against the same
+  // reconstruction's crossing found at 1/16 voxel with 24 bisections: r0 0.496, r1 0.126
+  // (3.9x: the hit becomes the bracket's midpoint), then x2.01 1.97 2.09 1.92 2.02 2.08
+  // 1.93 down to r8 0.00098. r0 / r5 = 63x: "5-6 steps give a 64x better hit point" holds
+  // at 5 here. Against the analytic surface the mean halves as well (r0 0.341, r1 0.085,
+  // r2 0.042, r3 0.022) until it meets trilinear's own error of the curved field: r6 0.0076,
+  // r8 0.0077 voxels.
+  SyntheticSpec spec{SyntheticShape::Sphere, 64};
+  Volume v = makeSyntheticVolume(spec);
+  ReferenceHits fine;
+  renderReferenceFloat(v, isoParams(1.0 / 16, 24), &fine);
+  double err[9], truthErr[9];
+  for (int r = 0; r <= 8; ++r) {
+    ReferenceHits hits;
+    renderReferenceFloat(v, isoParams(1.0, r), &hits);
+    ErrorStats e = hitPointError(hits, fine, 1.0);
+    ASSERT_GT(e.count, 1000);
+    EXPECT_EQ(e.excluded, 0);  // a sphere has no ripple to step over
+    err[r] = e.median;
+    truthErr[r] = surfaceError(hits, AnalyticField{spec}).positionVoxels.mean;
+    RecordProperty("hit_error_r" + std::to_string(r), std::to_string(err[r]));
+    RecordProperty("surface_error_r" + std::to_string(r), std::to_string(truthErr[r]));
+  }
+  EXPECT_GT(err[0] / err[1], 3.5);
+  EXPECT_LT(err[0] / err[1], 4.5);
+  for (int r = 1; r < 8; ++r) {
+    EXPECT_GT(err[r] / err[r + 1], 1.8) << "step " << r;
+    EXPECT_LT(err[r] / err[r + 1], 2.25) << "step " << r;
+  }
+  EXPECT_NEAR(err[0] / err[5], 64.0, 6.0);
+  for (int r = 1; r < 3; ++r) EXPECT_GT(truthErr[r] / truthErr[r + 1], 1.8) << "step " << r;
+  EXPECT_LT(truthErr[8], 0.01);
+  EXPECT_NEAR(truthErr[8], truthErr[6], 0.1 * truthErr[6]);  // the reconstruction's floor
 }
 
 TEST(LiteratureClaims, SurfaceErrorAgainstTheTrueSurfaceStopsAtTheReconstructionError) {

@@ -19,13 +19,21 @@ namespace {
 
 std::map<std::string, QualityPreset> presets() {
   std::map<std::string, QualityPreset> m;
-  for (const QualityPreset& q : loadQualityPresets(VOXRAY_QUALITY_DIR)) m[q.name] = q;
+  for (const QualityPreset& q : builtinQualityPresets()) m[q.name] = q;
   return m;
 }
 
 }  // namespace
 
 TEST(AccuracyQuality, PresetsParseAndAreOrderedBySpeed) {
+  // Embedded in the binary, fastest first: the order the UI's quality control lists.
+  const auto& list = builtinQualityPresets();
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(list[0].name, "interactive");
+  EXPECT_EQ(list[1].name, "balanced");
+  EXPECT_EQ(list[2].name, "reference");
+  EXPECT_EQ(&findQualityPreset("Balanced"), &list[1]);
+  EXPECT_THROW(findQualityPreset("ultra"), Error);
   auto m = presets();
   ASSERT_EQ(m.count("interactive"), 1u);
   ASSERT_EQ(m.count("balanced"), 1u);

@@ -60,14 +60,18 @@ TEST(StabilityTransferFunction, OpacityExactlyOneInTheFirstSample) {
     }
 }
 
+namespace {
+// Three points at 100 HU: a hard step from transparent black to opaque red; the middle
+// point (white, half opaque) has zero width and must never show.
+const std::vector<ControlPoint> kStep = {{-1000.0, {0, 0, 0, 0}},
+                                         {100.0, {0, 0, 0, 0}},
+                                         {100.0, {1, 1, 1, 0.5}},
+                                         {100.0, {1, 0, 0, 1}},
+                                         {1000.0, {1, 0, 0, 1}}};
+}  // namespace
+
 TEST(StabilityTransferFunction, CoincidentControlPointsMakeAStepWithoutNaN) {
-  // RenderParams names presets only, so a custom table reaches neither renderer; the
-  // table itself is what could divide by zero. Three points at 100 HU: a hard step.
-  TransferFunction tf{{{-1000.0, {0, 0, 0, 0}},
-                       {100.0, {0, 0, 0, 0}},
-                       {100.0, {1, 1, 1, 0.5}},
-                       {100.0, {1, 0, 0, 1}},
-                       {1000.0, {1, 0, 0, 1}}}};
+  TransferFunction tf{kStep};
   EXPECT_EQ(tf.evaluate(99.999), glm::dvec4(0.0, 0.0, 0.0, 0.0));
   EXPECT_EQ(tf.evaluate(100.0), glm::dvec4(1, 0, 0, 1));
   Volume v = test::rampX({201, 1, 1}, -1000.0, 10.0);  // -1000 ... 1000 HU in 10 HU steps
@@ -76,6 +80,35 @@ TEST(StabilityTransferFunction, CoincidentControlPointsMakeAStepWithoutNaN) {
     for (int c = 0; c < 4; ++c) EXPECT_TRUE(std::isfinite(e[c]));
   EXPECT_EQ(lut.lookup(v.toStored(90.0)).a, 0.0);
   EXPECT_EQ(lut.lookup(v.toStored(110.0)).a, 1.0);
+}
+
+TEST(StabilityTransferFunction, CoincidentControlPointsRenderThroughBothRenderers) {
+  // The table reaches the renderers as RenderParams::transferFunction (--tf on the CLI).
+  RenderParams text;
+  fromText(text, "tf=1000:1:0:0:1,100:1:0:0:1,100:1:1:1:0.5,100:0:0:0:0,-1000:0:0:0:0\n");
+  ASSERT_EQ(text.transferFunction.size(), 5u);
+  EXPECT_EQ(text.transferFunction[1].rgba, glm::dvec4(1, 0, 0, 1)) << "stable sort by HU";
+  for (Mode m : {Mode::Dvr, Mode::Iso})
+    for (bool shading : {true, false}) {
+      RenderParams p = test::tinyParams(m);
+      p.transferFunction = kStep;
+      p.shading = shading;
+      if (m == Mode::Iso) p.isoLo = 100.0;  // the surface sits on the step
+      test::expectStable(ball16(), p,
+                         std::string("step at 100 HU, shading ") + (shading ? "on" : "off"));
+    }
+  // Unshaded dvr: every ray through the ball meets the step and stops on opaque red; the
+  // zero-width white point adds nothing to green or blue.
+  RenderParams p = test::tinyParams(Mode::Dvr);
+  p.transferFunction = kStep;
+  p.shading = false;
+  Raycaster rc(test::pocl(), ball16(), VolumeStorage::Buffer);
+  for (const Image& img : {rc.render(p), renderReference(ball16(), p)}) {
+    const uint8_t* c = img.pixel(16, 12);
+    EXPECT_GE(c[0], 250);
+    EXPECT_EQ(c[1], 0);
+    EXPECT_EQ(c[2], 0);
+  }
 }
 
 TEST(StabilityJitter, ReferenceHashIsTheKernelsHash) {

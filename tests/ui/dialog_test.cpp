@@ -112,7 +112,7 @@ class DialogTest : public QObject {
     a.render.update(kClip, [](RenderParams& p) { p.clip.lo = {0.1, 0.2, 0.3}; });
     Quality q;
     q.resolution = {640, 480};
-    q.stepScale = 0.5;
+    q.preset = "reference";
     a.render.setQuality(q);
     a.windowLevel.set({1500.0, -600.0});
     RawLayout raw;

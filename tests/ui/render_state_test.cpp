@@ -2,29 +2,102 @@
 
 #include "camera_control.h"
 #include "light_gizmo.h"
+#include "quality_choice.h"
 #include "recent_files.h"
 #include "render_state_model.h"
+#include "voxray/engine/quality.h"
+#include "voxray/io/error.h"
 #include "voxray/io/phantom.h"
 
 using namespace voxray;
 using namespace voxray::ui;
 
-TEST(RenderState, InteractiveFramesAreCheaperThanFullOnes) {
-  RenderParams base;
-  Quality q;
-  RenderParams full = planFrame(base, q, {800, 600}, false, 1.0);
-  RenderParams fast = planFrame(base, q, {800, 600}, true, 1.0);
-  EXPECT_EQ(full.width, 800);
-  EXPECT_EQ(full.height, 600);
-  EXPECT_DOUBLE_EQ(full.stepMm, 0.5);  // the engine's default: half the smallest spacing
-  EXPECT_EQ(fast.width, 400);
-  EXPECT_EQ(fast.height, 300);
-  EXPECT_DOUBLE_EQ(fast.stepMm, 1.0);
-  q.resolution = {512, 384};
-  q.stepScale = 0.5;
-  RenderParams fixed = planFrame(base, q, {800, 600}, false, 2.0);
-  EXPECT_EQ(fixed.width, 512);
-  EXPECT_DOUBLE_EQ(fixed.stepMm, 0.5);
+TEST(RenderState, DragFramesUseTheInteractivePresetAndIdleFramesTheChosenOne) {
+  const QualityPreset& drag = findQualityPreset("interactive");
+  const QualityPreset& ref = findQualityPreset("reference");
+  RenderStateModel m;
+  EXPECT_EQ(m.quality().preset, "balanced");  // the default
+  m.update(kAppearance, [](RenderParams& p) {
+    p.gradient = Gradient::Sobel;  // the user's choices, unlike every preset's
+    p.interp = Interp::Nearest;
+  });
+  m.setQualityPreset("reference");
+  EXPECT_EQ(m.params().gradient, ref.gradient);  // picking a preset takes its operator
+  EXPECT_EQ(m.params().interp, ref.interp);
+  const double h = 0.8;  // smallest voxel spacing, mm
+
+  RenderParams idle = planFrame(m.params(), m.quality(), {800, 600}, false, h);
+  EXPECT_EQ(idle.width, int(800 * ref.resolutionScale + 0.5));
+  EXPECT_EQ(idle.height, int(600 * ref.resolutionScale + 0.5));
+  EXPECT_DOUBLE_EQ(idle.stepMm, ref.stepVoxels * h);
+  EXPECT_EQ(idle.refine, ref.refine);
+  EXPECT_EQ(idle.jitter, ref.jitter);
+  EXPECT_EQ(idle.gradient, ref.gradient);
+  EXPECT_EQ(idle.interp, ref.interp);
+  EXPECT_EQ(idle.refine, 8);  // reference.json, so a preset edit shows up here
+  EXPECT_DOUBLE_EQ(idle.stepMm, 0.25 * h);
+
+  // Dragging: everything from the interactive preset, whatever was chosen or set.
+  m.update(kAppearance, [](RenderParams& p) { p.gradient = Gradient::Central; });
+  for (const char* chosen : {"reference", "balanced", ""}) {
+    Quality q = m.quality();
+    q.preset = chosen;
+    m.setQuality(q);
+    RenderParams fast = planFrame(m.params(), m.quality(), {800, 600}, true, h);
+    EXPECT_EQ(fast.width, int(800 * drag.resolutionScale + 0.5)) << chosen;
+    EXPECT_EQ(fast.height, int(600 * drag.resolutionScale + 0.5));
+    EXPECT_DOUBLE_EQ(fast.stepMm, drag.stepVoxels * h);
+    EXPECT_EQ(fast.interp, drag.interp);
+    EXPECT_EQ(fast.gradient, drag.gradient);
+    EXPECT_EQ(fast.refine, drag.refine);
+    EXPECT_EQ(fast.jitter, drag.jitter);
+  }
+  // interactive.json: half resolution, 2-voxel steps.
+  EXPECT_EQ(planFrame(m.params(), m.quality(), {800, 600}, true, h).width, 400);
+  EXPECT_DOUBLE_EQ(planFrame(m.params(), m.quality(), {800, 600}, true, h).stepMm, 2.0 * h);
+
+  // The chosen preset's step and refinement with the user's later gradient choice.
+  m.setQualityPreset("balanced");
+  m.update(kAppearance, [](RenderParams& p) { p.gradient = Gradient::Sobel; });
+  RenderParams balanced = planFrame(m.params(), m.quality(), {800, 600}, false, h);
+  EXPECT_DOUBLE_EQ(balanced.stepMm, findQualityPreset("balanced").stepVoxels * h);
+  EXPECT_EQ(balanced.refine, findQualityPreset("balanced").refine);
+  EXPECT_EQ(balanced.gradient, Gradient::Sobel);
+
+  // Custom: the parameters as set (the engine's default step: half the smallest spacing).
+  m.setQualityPreset("");
+  m.update(kAppearance, [](RenderParams& p) { p.refine = 3; });
+  RenderParams custom = planFrame(m.params(), m.quality(), {800, 600}, false, h);
+  EXPECT_DOUBLE_EQ(custom.stepMm, 0.5 * h);
+  EXPECT_EQ(custom.refine, 3);
+  EXPECT_EQ(custom.width, 800);
+  Quality fixed = m.quality();
+  fixed.resolution = {512, 384};
+  m.setQuality(fixed);
+  EXPECT_EQ(planFrame(m.params(), m.quality(), {800, 600}, false, h).width, 512);
+  EXPECT_EQ(planFrame(m.params(), m.quality(), {800, 600}, true, h).width, 256);
+
+  fixed.preset = "ultra";
+  EXPECT_THROW(m.setQuality(fixed), Error);
+  EXPECT_THROW(m.setQualityPreset("ultra"), Error);
+  EXPECT_EQ(m.quality().preset, "");  // unchanged
+}
+
+TEST(RenderState, QualityChoicesShowEachPresetsMeasuredErrorAndSpeed) {
+  auto choices = qualityChoices();
+  ASSERT_EQ(choices.size(), 4u);
+  EXPECT_EQ(choices[0].label, "Interactive");
+  EXPECT_EQ(choices[1].label, "Balanced");
+  EXPECT_EQ(choices[2].label, "Reference");
+  EXPECT_EQ(choices[3].label, "Custom");
+  EXPECT_EQ(choices[3].preset, "");
+  // balanced.json: psnr_db 41.83, speedup_vs_reference 6.3, ms_per_frame 41.7
+  EXPECT_EQ(choices[1].measured, "41.8 dB PSNR \u00b7 6.3\u00d7 the reference's speed");
+  EXPECT_NE(choices[1].tooltip.find("41.83 dB PSNR"), std::string::npos) << choices[1].tooltip;
+  EXPECT_NE(choices[1].tooltip.find("41.7 ms per frame"), std::string::npos);
+  EXPECT_NE(choices[0].tooltip.find("26.2\u00d7"), std::string::npos) << choices[0].tooltip;
+  EXPECT_EQ(resolutionLabel({0, 0}), "Window size");
+  EXPECT_EQ(resolutionLabel({160, 120}), "160 \u00d7 120");
 }
 
 TEST(RenderState, NotifiesWithTheChangeAndRoundTripsAsText) {
@@ -36,17 +109,21 @@ TEST(RenderState, NotifiesWithTheChangeAndRoundTripsAsText) {
   m.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Mip; });
   Quality q;
   q.resolution = {640, 480};
-  q.stepScale = 2.0;
+  q.preset = "reference";
   m.setQuality(q);
   RenderStateModel copy;
   copy.fromText(m.toText());
   EXPECT_EQ(copy.params().mode, Mode::Mip);
   EXPECT_DOUBLE_EQ(copy.params().clip.hi.x, 0.5);
   EXPECT_EQ(copy.quality().resolution, glm::ivec2(640, 480));
-  EXPECT_DOUBLE_EQ(copy.quality().stepScale, 2.0);
-  copy.fromText("mode=banana\nnot a line\nzoom=2\n");  // bad lines are skipped
+  EXPECT_EQ(copy.quality().preset, "reference");
+  // Bad lines, an unknown quality preset and an older version's step scale are skipped.
+  copy.fromText("mode=banana\nnot a line\nzoom=2\nui-quality=ultra\nui-step-scale=2\n");
   EXPECT_EQ(copy.params().mode, Mode::Mip);
   EXPECT_DOUBLE_EQ(copy.params().camera.zoom, 2.0);
+  EXPECT_EQ(copy.quality().preset, "reference");
+  copy.fromText("ui-quality=\n");
+  EXPECT_EQ(copy.quality().preset, "");  // custom
 }
 
 TEST(CameraControl, StandardViewsAndDragDirections) {

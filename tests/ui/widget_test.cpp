@@ -1,6 +1,7 @@
 // QTest on the offscreen platform, driving the real widgets of a MainWindow showing a
 // 64^3 head phantom rendered at 128x96 through PoCL: each test asserts values.
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QSlider>
@@ -189,6 +190,44 @@ class WidgetTest : public QObject {
     // The slider follows the model (a preset choice resets the shift).
     models_->render.applyPreset("CT-Skin");
     QCOMPARE(slider->value(), 0);
+  }
+
+  void qualityPanelOffersPresetsAndIsoRowsOnlyInIso() {
+    auto* preset = window_->findChild<QComboBox*>("qualityPreset");
+    auto* measured = window_->findChild<QLabel*>("qualityMeasured");
+    auto* resolution = window_->findChild<QComboBox*>("resolution");
+    QVERIFY(preset && measured && resolution);
+    QCOMPARE(preset->count(), 4);
+    QCOMPARE(preset->currentText(), QString("Balanced"));
+    // balanced.json measured 41.83 dB at 6.3x the reference preset's speed.
+    QVERIFY2(measured->text().startsWith("41.8 dB PSNR"), qPrintable(measured->text()));
+    QString tip = preset->itemData(1, Qt::ToolTipRole).toString();
+    QVERIFY2(tip.contains("41.83 dB PSNR") && tip.contains("6.3\u00d7"), qPrintable(tip));
+    // The user picks "Reference": the model and the full frame's step and refinement follow.
+    preset->setCurrentIndex(2);
+    QCOMPARE(models_->render.quality().preset, std::string("reference"));
+    QVERIFY2(measured->text().startsWith("62.3 dB PSNR"), qPrintable(measured->text()));
+    double h = models_->document.minSpacingMm();
+    RenderParams full = window_->scheduler().fullParams();
+    QCOMPARE(full.stepMm, 0.25 * h);
+    QCOMPARE(full.refine, 8);
+
+    // The fixture's 128 x 96 is not in the list: it shows as itself, not "Window size".
+    QCOMPARE(resolution->currentText(), QString("128 \u00d7 96"));
+    resolution->setCurrentIndex(2);
+    QVERIFY(models_->render.quality().resolution == glm::ivec2(640, 480));
+    QCOMPARE(resolution->count(), 5);  // its own entry went away
+    QCOMPARE(resolution->currentText(), QString("640 \u00d7 480"));
+
+    // The iso range rows show in iso mode only.
+    auto* isoLo = window_->findChild<QDoubleSpinBox*>("isoLo");
+    auto* isoHi = window_->findChild<QDoubleSpinBox*>("isoHi");
+    QVERIFY(isoLo && isoHi);
+    for (Mode m : {Mode::Iso, Mode::Dvr, Mode::Mip, Mode::Iso}) {
+      models_->render.update(kAppearance, [m](RenderParams& p) { p.mode = m; });
+      QCOMPARE(isoLo->isHidden(), m != Mode::Iso);
+      QCOMPARE(isoHi->isHidden(), m != Mode::Iso);
+    }
   }
 
   void titleShowsFpsAndDevice() {

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "quality_choice.h"
+#include "voxray/engine/quality.h"
 #include "voxray/engine/transfer_function.h"
 #include "voxray/io/error.h"
 
@@ -15,10 +17,25 @@ void RenderStateModel::update(unsigned what, const std::function<void(RenderPara
 }
 
 void RenderStateModel::setQuality(const Quality& q) {
+  if (!q.preset.empty()) findQualityPreset(q.preset);  // throws for an unknown name
   quality_ = q;
-  quality_.stepScale = std::clamp(q.stepScale, 0.1, 8.0);
-  quality_.interactiveDivisor = std::clamp(q.interactiveDivisor, 1, 8);
   changed.notify(kQuality);
+}
+
+void RenderStateModel::setQualityPreset(const std::string& name) {
+  Quality q = quality_;
+  q.preset = name;
+  if (name.empty()) {
+    setQuality(q);
+    return;
+  }
+  const QualityPreset& preset = findQualityPreset(name);
+  q.preset = preset.name;
+  quality_ = q;
+  update(kQuality | kAppearance, [&](RenderParams& p) {
+    p.interp = preset.interp;
+    p.gradient = preset.gradient;
+  });
 }
 
 void RenderStateModel::applyPreset(const std::string& name) {
@@ -38,7 +55,7 @@ std::string RenderStateModel::toText() const {
   std::ostringstream out;
   out << voxray::toText(params_);
   out << "ui-resolution=" << quality_.resolution.x << "," << quality_.resolution.y << "\n";
-  out << "ui-step-scale=" << quality_.stepScale << "\n";
+  out << "ui-quality=" << quality_.preset << "\n";
   return out.str();
 }
 
@@ -54,9 +71,12 @@ void RenderStateModel::fromText(const std::string& text) {
     try {
       if (key == "ui-resolution") {
         std::sscanf(value.c_str(), "%d,%d", &q.resolution.x, &q.resolution.y);
-      } else if (key == "ui-step-scale") {
-        q.stepScale = std::stod(value);
-      } else if (key != "size") {  // the view decides the size
+      } else if (key == "ui-quality") {
+        if (!value.empty()) findQualityPreset(value);  // throws for an unknown name
+        q.preset = value;
+      } else if (key == "size" || key == "ui-step-scale") {
+        // The view decides the size; ui-step-scale was an older version's quality.
+      } else {
         voxray::fromText(p, line);
       }
     } catch (const std::exception&) {
@@ -73,15 +93,19 @@ RenderParams planFrame(const RenderParams& base, const Quality& q, const glm::iv
                        bool interactive, double minSpacingMm) {
   RenderParams p = base;
   glm::ivec2 size = q.resolution.x > 0 ? q.resolution : viewSize;
-  double step = effectiveStepMm(base, minSpacingMm) * q.stepScale;
-  if (interactive) {
-    size /= q.interactiveDivisor;
-    step *= q.interactiveStepScale;
-  }
-  size = glm::max(size, glm::ivec2(16));
   p.width = size.x;
   p.height = size.y;
-  p.stepMm = step;
+  if (interactive) {
+    p = applyQuality(p, findQualityPreset(kDragQualityPreset), minSpacingMm);
+  } else if (!q.preset.empty()) {
+    p = applyQuality(p, findQualityPreset(q.preset), minSpacingMm);
+    p.interp = base.interp;  // the user's, set to the preset's when it was picked
+    p.gradient = base.gradient;
+  } else {
+    p.stepMm = effectiveStepMm(base, minSpacingMm);
+  }
+  p.width = std::max(p.width, 16);
+  p.height = std::max(p.height, 16);
   return p;
 }
 

@@ -15,7 +15,7 @@ enum Change : unsigned {
   kClip = 1u << 1,
   kLight = 1u << 2,
   kAppearance = 1u << 3,  // mode, preset, iso range, gradient, interpolation, colours
-  kQuality = 1u << 4,     // resolution and step
+  kQuality = 1u << 4,     // resolution and quality preset
   kAll = 0x1fu,
 };
 
@@ -23,11 +23,10 @@ constexpr double kPresetShiftLimitHu = 1000.0;
 
 struct Quality {
   glm::ivec2 resolution{0, 0};  // {0, 0} = the view's size (the "window size" choice)
-  double stepScale = 1.0;       // times the engine's default step: 0.5 = finer, 2 = faster
-  // While the user drags, frames are rendered at 1/interactiveDivisor of the size with
-  // interactiveStepScale times the step, then refined when the mouse stops.
-  int interactiveDivisor = 2;
-  double interactiveStepScale = 2.0;
+  // The quality preset (resources/quality) of the frames once the mouse rests: its step,
+  // refinement, jitter and image scale. Empty = custom: the render parameters' own step,
+  // refinement and jitter. Frames while dragging use kDragQualityPreset whatever this is.
+  std::string preset = "balanced";
 };
 
 class RenderStateModel {
@@ -37,7 +36,11 @@ class RenderStateModel {
 
   // Applies EDIT and notifies with WHAT (bits of Change).
   void update(unsigned what, const std::function<void(RenderParams&)>& edit);
+  // Throws Error (Input) for an unknown quality preset, leaving the quality as it was.
   void setQuality(const Quality& q);
+  // Picks a quality preset ("" = custom) and, for a preset, the reconstruction and gradient
+  // it was measured with (the Rendering group may change them afterwards). Throws as above.
+  void setQualityPreset(const std::string& name);
   // Selects a transfer-function preset by name (applyPreset: mode, iso range, window).
   // The preset shift goes back to 0: a shift tuned for one preset means nothing for another.
   void applyPreset(const std::string& name);  // throws Error (Input) for an unknown name
@@ -56,9 +59,11 @@ class RenderStateModel {
   Quality quality_;
 };
 
-// The parameters of one frame: resolution from the quality choice (or the view size),
-// and cheaper resolution and step while INTERACTIVE. minSpacingMm: the volume's smallest
-// voxel spacing (for the default step).
+// The parameters of one frame: the size from the quality choice (or the view size), then
+// while INTERACTIVE everything the drag preset sets (step, reconstruction, gradient,
+// refinement, jitter, image scale); otherwise the chosen preset's step, refinement, jitter
+// and image scale with the user's reconstruction and gradient, or for custom the
+// parameters as they are. minSpacingMm: the volume's smallest voxel spacing.
 RenderParams planFrame(const RenderParams& base, const Quality& q, const glm::ivec2& viewSize,
                        bool interactive, double minSpacingMm);
 

@@ -6,6 +6,7 @@
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSlider>
@@ -14,6 +15,7 @@
 #include "camera_control.h"
 #include "control_panel.h"
 #include "coupling.h"
+#include "quality_choice.h"
 #include "voxray/engine/transfer_function.h"
 
 namespace voxray::ui {
@@ -110,8 +112,20 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   bindSpin(
       isoHi, m, kAppearance, [](const RenderParams& p) { return p.isoHi; },
       [](RenderParams& p, double v) { p.isoHi = v; });
+  isoLo->setObjectName("isoLo");
+  isoHi->setObjectName("isoHi");
   form->addRow("Iso from", isoLo);
   form->addRow("Iso to", isoHi);
+  // The iso range means nothing to dvr and mip: its rows show in iso mode only.
+  auto showIsoRows = [form, isoLo, isoHi, &m] {
+    bool iso = m.params().mode == Mode::Iso;
+    form->setRowVisible(isoLo, iso);
+    form->setRowVisible(isoHi, iso);
+  };
+  showIsoRows();
+  onModelChange<unsigned>(box, m.changed, [showIsoRows](unsigned what) {
+    if (what & kAppearance) showIsoRows();
+  });
 
   auto* gradient = new QComboBox;
   gradient->addItems({"Central difference", "Sobel", "Zucker-Hummel"});
@@ -132,34 +146,59 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
 QGroupBox* makeQualityGroup(RenderStateModel& m) {
   auto* box = new QGroupBox("Quality");
   auto* form = new QFormLayout(box);
+
+  // The quality presets with what was measured for each; frames while dragging always use
+  // the interactive one.
+  static const std::vector<QualityChoice> choices = qualityChoices();
+  auto* preset = new QComboBox;
+  preset->setObjectName("qualityPreset");
+  for (const QualityChoice& c : choices) {
+    preset->addItem(QString::fromStdString(c.label));
+    preset->setItemData(preset->count() - 1, QString::fromStdString(c.tooltip), Qt::ToolTipRole);
+  }
+  auto* measured = new QLabel;
+  measured->setObjectName("qualityMeasured");
+
   static const QList<QSize> sizes = {{0, 0}, {512, 384}, {640, 480}, {800, 600}, {1024, 768}};
   auto* resolution = new QComboBox;
-  resolution->addItems({"Window size", "512 × 384", "640 × 480", "800 × 600", "1024 × 768"});
-  static const QList<double> steps = {2.0, 1.0, 0.5};
-  auto* step = new QComboBox;
-  step->addItems({"Fast (2× step)", "Normal", "Fine (½ step)"});
-  auto refresh = [resolution, step, &m] {
-    QSignalBlocker b1(resolution), b2(step);
-    QSize s(m.quality().resolution.x, m.quality().resolution.y);
-    resolution->setCurrentIndex(std::max(0, int(sizes.indexOf(s))));
-    step->setCurrentIndex(std::max(0, int(steps.indexOf(m.quality().stepScale))));
+  resolution->setObjectName("resolution");
+  for (QSize s : sizes)
+    resolution->addItem(QString::fromStdString(resolutionLabel({s.width(), s.height()})));
+
+  auto refresh = [preset, measured, resolution, &m] {
+    QSignalBlocker b1(preset), b2(resolution);
+    int i = 0;
+    while (i + 1 < int(choices.size()) && choices[size_t(i)].preset != m.quality().preset) ++i;
+    preset->setCurrentIndex(i);
+    preset->setToolTip(QString::fromStdString(choices[size_t(i)].tooltip));
+    measured->setText(QString::fromStdString(choices[size_t(i)].measured));
+    measured->setToolTip(preset->toolTip());
+    // A size from the command line or saved state that the list lacks gets its own entry
+    // rather than showing as "Window size".
+    glm::ivec2 r = m.quality().resolution;
+    while (resolution->count() > sizes.size()) resolution->removeItem(resolution->count() - 1);
+    int k = int(sizes.indexOf(QSize(r.x, r.y)));
+    if (k < 0) {
+      resolution->addItem(QString::fromStdString(resolutionLabel(r)));
+      k = resolution->count() - 1;
+    }
+    resolution->setCurrentIndex(k);
   };
   refresh();
   onModelChange<unsigned>(box, m.changed, [refresh](unsigned what) {
     if (what & kQuality) refresh();
   });
+  QObject::connect(preset, &QComboBox::currentIndexChanged, box,
+                   [&m](int i) { m.setQualityPreset(choices[size_t(i)].preset); });
   QObject::connect(resolution, &QComboBox::currentIndexChanged, box, [&m](int i) {
+    if (i >= sizes.size()) return;  // the current size's own entry
     Quality q = m.quality();
     q.resolution = {sizes[i].width(), sizes[i].height()};
     m.setQuality(q);
   });
-  QObject::connect(step, &QComboBox::currentIndexChanged, box, [&m](int i) {
-    Quality q = m.quality();
-    q.stepScale = steps[i];
-    m.setQuality(q);
-  });
+  form->addRow("Preset", preset);
+  form->addRow("", measured);
   form->addRow("Resolution", resolution);
-  form->addRow("Step", step);
   return box;
 }
 

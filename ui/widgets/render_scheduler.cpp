@@ -77,8 +77,10 @@ RenderParams RenderScheduler::fullParams() const {
 void RenderScheduler::requestExport(QSize size) {
   Quality q = state_.quality();
   q.resolution = {size.width(), size.height()};
-  worker_->request(planFrame(state_.params(), q, q.resolution, false, doc_.minSpacingMm()), false,
-                   1);
+  RenderParams p = planFrame(state_.params(), q, q.resolution, false, doc_.minSpacingMm());
+  p.width = size.width();  // exactly the size asked for, whatever the preset's image scale
+  p.height = size.height();
+  worker_->request(p, false, 1);
 }
 
 void RenderScheduler::requestFrame() {

@@ -1,7 +1,8 @@
 #pragma once
 // Decides when the 3D view needs a frame and how good it must be: any change of the render
 // state asks the render thread for a frame; during a drag the frames are cheap (see
-// Quality), and once the mouse has been still for a moment one full-quality frame follows.
+// the interactive quality preset), and once the mouse has been still for a moment one frame
+// of the chosen quality follows.
 // Also measures frames per second for the status bar.
 #include <memory>
 

@@ -35,6 +35,11 @@ struct SurfaceError {
 // Over the pixels whose ray found a surface crossing (HitKind::Surface).
 SurfaceError surfaceError(const ReferenceHits& hits, const AnalyticField& truth);
 
+// The OpenCL kernel's hits (Raycaster::renderWithHits: xyz voxel position, w 1 crossing,
+// 0 first sample, -1 none) as ReferenceHits without normals, so surfaceError scores the
+// kernel's own hit points (its normal angles are then left out).
+ReferenceHits kernelHits(const std::vector<glm::vec4>& hits, int width, int height);
+
 // Distance (voxels) of each hit point to the hit point of the same pixel in `fine` (the
 // same reconstruction marched at a tiny step with many bisections): the error of finding
 // the crossing alone, without the reconstruction's own error. Pixels where either missed

@@ -1,7 +1,8 @@
 #pragma once
 // The speed/accuracy sweep behind `voxray-cli accuracy`: each case renders on the OpenCL
-// device (median time per frame) and through the double-precision reference renderer
-// (hit points, normals, samples taken), and is scored against ground truth.
+// device (median time per frame, and once more with the kernel's iso hit points) and
+// through the double-precision reference renderer (hit points, normals, samples taken),
+// and is scored against ground truth.
 #include <functional>
 #include <optional>
 #include <string>
@@ -33,6 +34,7 @@ struct SweepRow {
   double samplesPerSecond = 0.0;  // volume reads (counted by the reference) / time
   bool hasSurface = false;        // iso on an analytic volume
   SurfaceError surface;           // against the analytic surface and normal
+  ErrorStats kernelSurface;       // the OpenCL kernel's own hit points vs the surface
   ErrorStats hitPoint;            // against the same reconstruction marched finely
   ImageError image;               // OpenCL image against the fine reference image
 };

@@ -3,6 +3,9 @@
 // table, and one specialised kernel per combination of features a frame uses.
 #include <memory>
 #include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
@@ -48,6 +51,11 @@ class Raycaster {
   Image render(const RenderParams& params, FrameStats* stats = nullptr);
   // The same, into a caller's image (reused between frames: no allocation per frame).
   void render(const RenderParams& params, Image& out, FrameStats* stats = nullptr);
+  // A frame from the -D HIT_OUTPUT=1 variant that also gives each pixel's iso hit (row by
+  // row): xyz the hit point in voxel coordinates, w 1 for a surface crossing, 0 for a hit
+  // at the first sample (entry face or clip cap), -1 for none (and for dvr and mip).
+  Image renderWithHits(const RenderParams& params, std::vector<glm::vec4>& hits,
+                       FrameStats* stats = nullptr);
 
   // The -D options a frame with these parameters compiles with.
   std::string variantOptions(const RenderParams& params) const;

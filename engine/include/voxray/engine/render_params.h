@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "voxray/engine/transfer_function.h"
+
 namespace voxray {
 
 enum class Mode { Iso, Dvr, Mip };
@@ -50,7 +52,10 @@ struct RenderParams {
   Mode mode = Mode::Iso;
   std::string preset;          // transfer-function preset name; empty = mode's default
   double presetShiftHu = 0.0;  // moves every control point of the preset along HU
-  double isoLo = 400.0;        // HU range of the first-hit surface (the seed's two sliders)
+  // A custom table (sorted by HU; a repeated HU makes a step) used instead of the
+  // preset's; the shift moves it too. Empty: the preset's.
+  std::vector<ControlPoint> transferFunction;
+  double isoLo = 400.0;  // HU range of the first-hit surface (the seed's two sliders)
   double isoHi = 32767.0;
   Gradient gradient = Gradient::Central;
   Interp interp = Interp::Linear;
