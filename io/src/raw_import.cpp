@@ -189,13 +189,18 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   };
 
   // Whole slices are read in parallel into one buffer; the rescale needs the full value
-  // range before the first voxel can be stored.
-  std::vector<uint8_t> raw(sliceBytes * static_cast<size_t>(z));
+  // range before the first voxel can be stored. 16-bit samples are read straight into the
+  // volume's voxels and converted in place (each sample is read before its voxel is
+  // written), so the peak is one copy of the volume, not two.
+  const bool inPlace = sampleBytes(layout.type) == sizeof(int16_t);
+  std::vector<int16_t> voxels(inPlace ? sliceVoxels * static_cast<size_t>(z) : 0);
+  std::vector<uint8_t> rawCopy(inPlace ? 0 : sliceBytes * static_cast<size_t>(z));
+  uint8_t* const raw = inPlace ? reinterpret_cast<uint8_t*>(voxels.data()) : rawCopy.data();
   std::vector<detail::ValueStats> stats(static_cast<size_t>(z));
   std::atomic<int> slicesRead{0};
   detail::parallelFor(z, [&](int k) {
     if (cancelled()) return;
-    uint8_t* slice = raw.data() + size_t(k) * sliceBytes;
+    uint8_t* slice = raw + size_t(k) * sliceBytes;
     readExactly(sources[size_t(k)], slice, sliceBytes);
     stats[size_t(k)] = detail::scanSamples(slice, sliceVoxels, layout);
     const int done = ++slicesRead;
@@ -216,11 +221,14 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   v.unit = "HU";  // raw data are taken as given: HU once the user's rescale is applied
   v.sourceType = toString(layout.type);
   if (!storage.warning.empty()) v.warnings.push_back(storage.warning);
-  v.voxels.resize(v.voxelCount());
+  if (inPlace)
+    v.voxels = std::move(voxels);  // the buffer (and `raw`) stays where it is
+  else
+    v.voxels.resize(v.voxelCount());
   report(0.9, "Converting to 16-bit voxels");
   detail::parallelFor(z, [&](int k) {
     if (cancelled()) return;
-    detail::storeSamples(raw.data() + size_t(k) * sliceBytes, sliceVoxels, layout, storage,
+    detail::storeSamples(raw + size_t(k) * sliceBytes, sliceVoxels, layout, storage,
                          v.voxels.data() + size_t(k) * sliceVoxels);
   });
   if (cancelled()) throw inputError("loading cancelled");
