@@ -27,7 +27,7 @@ struct RaycasterOptions {
   // iso on a CPU device with buffer storage: each work-item marches 4x2 rays in SIMD
   // (kernels/packet.cl). Ignored elsewhere (GPUs diverge less one ray per work-item).
   bool packets = true;
-  int localX = 0, localY = 0;  // work-group size; 0 = the default for the device
+  int localX = 0, localY = 0;  // work-group size; 0: 16x8 on GPUs, PoCL's choice on CPUs
 };
 
 struct FrameStats {
