@@ -83,6 +83,13 @@ inline float8 sample8(__global const short* restrict vol, __constant RaycastPara
   return sample8_range(vol, P, x, y, z, &lo, &hi);
 }
 
+// Lane l of v (l need not be a constant).
+inline float lane8(float8 v, int l) {
+  float a[8];
+  vstore8(v, 0, a);
+  return a[l];
+}
+
 // How many lanes of a mask are set.
 inline int lanes8(int8 m) {
   int8 b = m & 1;
@@ -94,10 +101,26 @@ inline float8 sample_t8(const RayPacket* r, int8 i, float step) {
   return fmin(r->t0 + (convert_float8(i) + r->j) * step, r->t1);
 }
 
-// ray_index_at (ray.cl) for samples, not segments.
-inline int8 index_at8(const RayPacket* r, float8 t, float step) {
-  float8 k = (t - r->t0) / step - r->j;
+// ray_index_at (ray.cl): the first sample (or, with `segments`, segment midpoint) index at
+// or beyond t.
+inline int8 index_at8(const RayPacket* r, float8 t, float step, bool segments) {
+  float8 k = (t - r->t0) / step - r->j + (segments ? 0.5f : 0.0f);
   return convert_int8(clamp(ceil(k), 0.0f, convert_float8(r->n + 1)));
+}
+
+// ray_segment (ray.cl): segment i spans [*a, *b].
+inline void segment8(const RayPacket* r, int8 i, float step, float8* a, float8* b) {
+  float8 fi = convert_float8(i) + r->j;
+  *a = fmax(r->t0, r->t0 + (fi - 1.0f) * step);
+  *b = fmin(r->t1, r->t0 + fi * step);
+}
+
+// ray_t (ray.cl): where sample (or segment midpoint) i lies.
+inline float8 ray_t8(const RayPacket* r, int8 i, float step, bool segments) {
+  if (!segments) return sample_t8(r, i, step);
+  float8 a, b;
+  segment8(r, i, step, &a, &b);
+  return 0.5f * (a + b);
 }
 
 // The first sample index past the voxel cell [floor(p), floor(p) + 1] that sample t lies
@@ -110,17 +133,17 @@ inline int8 past_voxel_cell8(const RayPacket* r, float8 t, float step) {
   float8 tx = select((px - r->ox) * r->ix, (float8)(FLT_MAX), r->dx == 0.0f);
   float8 ty = select((py - r->oy) * r->iy, (float8)(FLT_MAX), r->dy == 0.0f);
   float8 tz = select((pz - r->oz) * r->iz, (float8)(FLT_MAX), r->dz == 0.0f);
-  return index_at8(r, fmin(tx, fmin(ty, tz)), step);
+  return index_at8(r, fmin(tx, fmin(ty, tz)), step, false);
 }
 
 // ess_leap (skip.cl) for the lanes in `need`: returns their next index, sets their *check.
 inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, int8 i, int8 need,
-                      float step, int8* check) {
+                      float step, bool segments, int8* check) {
   int4 last = P->cells - 1;
   int8 ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
   int8 flat_x = r->dx == 0.0f, flat_y = r->dy == 0.0f, flat_z = r->dz == 0.0f;
   float8 nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
-  float8 t_land = -FLT_MAX, t = sample_t8(r, i, step);  // as in ess_leap
+  float8 t_land = -FLT_MAX, t = ray_t8(r, i, step, segments);  // as in ess_leap
   int8 result = i, pending = need;
   int guard = last.x + last.y + last.z + 16;
   for (int g = 0; g < guard && any(pending); ++g) {
@@ -142,9 +165,9 @@ inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r
     float8 tz = select((pz * (float)CELL - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
     float8 t_exit = fmin(tx, fmin(ty, tz));
     int8 found = pending & (d == 0);
-    int8 first = max(i, index_at8(r, t_land, step));
+    int8 first = max(i, index_at8(r, t_land, step, segments));
     result = select(result, first, found);
-    *check = select(*check, max(first + 1, index_at8(r, t_exit, step)), found);
+    *check = select(*check, max(first + 1, index_at8(r, t_exit, step, segments)), found);
     int8 beyond = pending & ~found & (t_exit >= r->t1);
     result = select(result, r->n + 1, beyond);
     pending &= ~(found | beyond);
@@ -152,7 +175,7 @@ inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r
     t = fmax(t, t_land) + fmax(nudge, fabs(t_land) * 5e-7f);
   }
   // Not expected: sample on from where the leaps got to (correct, only slower).
-  int8 first = max(i, index_at8(r, t_land, step));
+  int8 first = max(i, index_at8(r, t_land, step, segments));
   result = select(result, first, pending);
   *check = select(*check, first + 1, pending);
   return result;
@@ -235,6 +258,23 @@ inline int8 pixel_rays8(__constant RaycastParams* P, int gx, int gy, RayPacket* 
   return axis;
 }
 
+// lut_lookup (march.cl) for eight values, as four channels.
+inline void lut8(__global const float4* lut, __constant RaycastParams* P, float8 v,
+                 float8 rgba[4]) {
+  int last = P->dims.w - 1;
+  float8 x = clamp((v - P->values.z) * P->values.w, 0.0f, (float)last);
+  float8 x0 = floor(x);
+  float f[8], c[4][8];
+  int k[8];
+  vstore8(x - x0, 0, f);
+  vstore8(convert_int8(x0), 0, k);
+  for (int l = 0; l < 8; ++l) {
+    float4 e = mix(lut[k[l]], lut[min(k[l] + 1, last)], f[l]);
+    c[0][l] = e.x, c[1][l] = e.y, c[2][l] = e.z, c[3][l] = e.w;
+  }
+  for (int ch = 0; ch < 4; ++ch) rgba[ch] = vload8(0, c[ch]);
+}
+
 inline void iso_packet(__global const short* restrict vol, __constant RaycastParams* P,
                        __global const float4* lut, __global uchar4* out, CELL_ARGS,
                        __global uint* count, int gx, int gy) {
@@ -254,7 +294,7 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
       // leap once at least half the active lanes have left their occupied cell.
       int8 need = active & (i >= check);
       if (any(need) && 2 * lanes8(need) >= lanes8(active)) {
-        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, &check), need);
+        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, false, &check), need);
         active &= ~(need & (i > r.n));
         if (!any(active)) break;
       }
@@ -291,45 +331,136 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
     samples += select((int8)(0), (int8)(REFINE_STEPS), refine);
   }
   float8 hx = r.ox + t_hit * r.dx, hy = r.oy + t_hit * r.dy, hz = r.oz + t_hit * r.dz;
-  float value[8];
-  bool any_hit = any(hit >= 0);
-  if (any_hit) vstore8(sample8(vol, P, hx, hy, hz), 0, value);
-  int hits[8], counts[8], axes[8];
-  float th[8], hxa[8], hya[8], hza[8];
-  vstore8(t_hit, 0, th);
-  vstore8(axis, 0, axes);
-  vstore8(hx, 0, hxa), vstore8(hy, 0, hya), vstore8(hz, 0, hza);
-  float pwx[8], pwy[8], pwz[8], dwx[8], dwy[8], dwz[8];  // hit points and rays, world
-  vstore8(world[0] + t_hit * world[3], 0, pwx), vstore8(world[3], 0, dwx);
-  vstore8(world[1] + t_hit * world[4], 0, pwy), vstore8(world[4], 0, dwy);
-  vstore8(world[2] + t_hit * world[5], 0, pwz), vstore8(world[5], 0, dwz);
-  vstore8(hit, 0, hits);
+  int8 has_hit = hit >= 0;
+  Vec8 color = {P->background.x, P->background.y, P->background.z};
+  if (any(has_hit)) {
+    float8 c[4];
+    lut8(lut, P, sample8(vol, P, hx, hy, hz), c);
+    Vec8 surface = {c[0], c[1], c[2]};
+    if (SHADING) {
+      // Normals lane by lane (a gradient keeps its own cancellation rule), shading at once.
+      float xs[8], ys[8], zs[8], g[3][8];
+      int hits[8], axes[8], taps[8];
+      vstore8(hx, 0, xs), vstore8(hy, 0, ys), vstore8(hz, 0, zs);
+      vstore8(hit, 0, hits), vstore8(axis, 0, axes);
+      for (int l = 0; l < 8; ++l) {
+        float3 n = (float3)(0.0f);
+        taps[l] = 0;
+        if (hits[l] == 0 && axes[l] >= 0) {
+          // The ray starts inside the surface at a clip face: shade the cut as a flat cap.
+          n = (float3)(axes[l] == 0, axes[l] == 1, axes[l] == 2);
+        } else if (hits[l] > 0 || (hits[l] == 0 && axes[l] < 0)) {
+          n = volume_gradient(vol, P, (float3)(xs[l], ys[l], zs[l]));
+          taps[l] = GRADIENT_TAPS;
+        }
+        float3 n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, n);
+        g[0][l] = n_w.x, g[1][l] = n_w.y, g[2][l] = n_w.z;
+      }
+      samples += vload8(0, taps);
+      Vec8 normal = {vload8(0, g[0]), vload8(0, g[1]), vload8(0, g[2])};
+      Vec8 pos = {world[0] + t_hit * world[3], world[1] + t_hit * world[4],
+                  world[2] + t_hit * world[5]};
+      Vec8 view = {-world[3], -world[4], -world[5]};
+      surface = shade8(surface, normal, pos, view, P->light_w, P->light);
+    }
+    color.x = select(color.x, surface.x, has_hit);
+    color.y = select(color.y, surface.y, has_hit);
+    color.z = select(color.z, surface.z, has_hit);
+  }
+  float cr[8], cg[8], cb[8];
+  int counts[8];
+  vstore8(color.x, 0, cr), vstore8(color.y, 0, cg), vstore8(color.z, 0, cb);
   vstore8(samples, 0, counts);
   uint total = 0;
   for (int l = 0; l < 8; ++l) {
     int px = 4 * gx + (l & 3), py = 2 * gy + (l >> 2);
     if (px >= width || py >= height) continue;
-    float3 color = P->background.xyz;
-    if (hits[l] >= 0) {
-      float4 c = lut_lookup(lut, P, value[l]);
-      color = c.xyz;
-      if (SHADING) {
-        float3 p_v = (float3)(hxa[l], hya[l], hza[l]);
-        float3 n_w;
-        if (hits[l] == 0 && axes[l] >= 0) {
-          // The ray starts inside the surface at a clip face: shade the cut as a flat cap.
-          float3 e = (float3)(axes[l] == 0, axes[l] == 1, axes[l] == 2);
-          n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, e);
-        } else {
-          // One lane at a time: the gradient's cancellation rule needs its own stencil.
-          n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, volume_gradient(vol, P, p_v));
-          counts[l] += GRADIENT_TAPS;
-        }
-        color = shade(color, n_w, (float3)(pwx[l], pwy[l], pwz[l]),
-                      -(float3)(dwx[l], dwy[l], dwz[l]), P->light_w, P->light);
+    out[py * width + px] = to_rgba8((float3)(cr[l], cg[l], cb[l]));
+    total += counts[l];
+  }
+  if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], total);
+}
+
+// march_dvr (march.cl) for a 4x2 packet: the same segments, leaps, opacity and early
+// termination lane by lane. Shading runs lane by lane, only for samples that are seen.
+inline void dvr_packet(__global const short* restrict vol, __constant RaycastParams* P,
+                       __global const float4* lut, __global uchar4* out, CELL_ARGS,
+                       __global uint* count, int gx, int gy) {
+  int width = P->image.x, height = P->image.y;
+  float step = P->view.z;
+  RayPacket r;
+  float8 world[6];
+  pixel_rays8(P, gx, gy, &r, world);
+  float8 acc[3] = {0.0f, 0.0f, 0.0f}, alpha = 0.0f;
+  int8 i = 0, check = 0, samples = 0;
+  int8 active = r.n >= 0;
+  while (any(active)) {
+    if (ESS) {
+      int8 need = active & (i >= check);  // as in iso_packet
+      if (any(need) && 2 * lanes8(need) >= lanes8(active)) {
+        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, true, &check), need);
+        active &= ~(need & (i > r.n));
+        if (!any(active)) break;
       }
     }
-    out[py * width + px] = to_rgba8(color);
+    float8 sa, sb;
+    segment8(&r, i, step, &sa, &sb);
+    float8 seg = sb - sa;
+    int8 live = active & (seg > 0.0f);  // segment 0 without jitter is empty
+    if (any(live)) {
+      float8 t = 0.5f * (sa + sb);
+      float8 x = r.ox + t * r.dx, y = r.oy + t * r.dy, z = r.oz + t * r.dz;
+      float8 c[4];
+      lut8(lut, P, sample8(vol, P, x, y, z), c);
+      samples -= live;
+      int8 seen = live & (c[3] > 0.0f);
+      if (any(seen)) {
+        float8 a = c[3];
+        if (OPACITY_CORRECTION) {
+          float8 ratio = seg / P->view.w;
+          a = select(1.0f - native_exp2(ratio * native_log2(1.0f - a)), (float8)(1.0f), a >= 1.0f);
+        }
+        if (SHADING) {
+          // Gradients lane by lane (each keeps its own cancellation rule), shading at once.
+          float xs[8], ys[8], zs[8], g[3][8];
+          int sn[8];
+          vstore8(x, 0, xs), vstore8(y, 0, ys), vstore8(z, 0, zs);
+          vstore8(seen, 0, sn);
+          for (int l = 0; l < 8; ++l) {
+            float3 n_w = (float3)(0.0f);
+            if (sn[l])
+              n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z,
+                            volume_gradient(vol, P, (float3)(xs[l], ys[l], zs[l])));
+            g[0][l] = n_w.x, g[1][l] = n_w.y, g[2][l] = n_w.z;
+          }
+          Vec8 color = {c[0], c[1], c[2]};
+          Vec8 normal = {vload8(0, g[0]), vload8(0, g[1]), vload8(0, g[2])};
+          Vec8 pos = {world[0] + t * world[3], world[1] + t * world[4], world[2] + t * world[5]};
+          Vec8 view = {-world[3], -world[4], -world[5]};
+          Vec8 lit = shade8(color, normal, pos, view, P->light_w, P->light);
+          c[0] = lit.x, c[1] = lit.y, c[2] = lit.z;
+          samples += select((int8)(0), (int8)(GRADIENT_TAPS), seen);
+        }
+        float8 w = select((float8)(0.0f), (1.0f - alpha) * a, seen);
+        for (int ch = 0; ch < 3; ++ch) acc[ch] += w * c[ch];
+        alpha += w;
+        active &= ~(seen & (alpha >= P->dvr.z));
+      }
+    }
+    i += 1;
+    active &= i <= r.n;
+  }
+  float cr[8], cg[8], cb[8];
+  vstore8(acc[0] + (1.0f - alpha) * P->background.x, 0, cr);
+  vstore8(acc[1] + (1.0f - alpha) * P->background.y, 0, cg);
+  vstore8(acc[2] + (1.0f - alpha) * P->background.z, 0, cb);
+  int counts[8];
+  vstore8(samples, 0, counts);
+  uint total = 0;
+  for (int l = 0; l < 8; ++l) {
+    int px = 4 * gx + (l & 3), py = 2 * gy + (l >> 2);
+    if (px >= width || py >= height) continue;
+    out[py * width + px] = to_rgba8((float3)(cr[l], cg[l], cb[l]));
     total += counts[l];
   }
   if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], total);

@@ -136,7 +136,7 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
 
 bool Raycaster::Impl::packets(const RenderParams& p) const {
   return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
-         p.mode == Mode::Iso && storage == VolumeStorage::Buffer && !cl.info.isGpu;
+         p.mode != Mode::Mip && storage == VolumeStorage::Buffer && !cl.info.isGpu;
 }
 
 cl::NDRange Raycaster::Impl::local() const {

@@ -24,7 +24,7 @@ struct RaycasterOptions {
   enum class Kernel { Specialised, Uber } kernel = Kernel::Specialised;
   bool emptySpaceSkipping = true;  // leap macro cells that cannot change the pixel
   bool countSamples = false;       // fill FrameStats::samples (an atomic add per ray)
-  // iso on a CPU device with buffer storage: each work-item marches 4x2 rays in SIMD
+  // iso and dvr on a CPU device with buffer storage: each work-item marches 4x2 rays in SIMD
   // (kernels/packet.cl). Ignored elsewhere (GPUs diverge less one ray per work-item).
   bool packets = true;
   int localX = 0, localY = 0;  // work-group size; 0: 16x8 on GPUs, PoCL's choice on CPUs
