@@ -136,7 +136,8 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
 
 bool Raycaster::Impl::packets(const RenderParams& p) const {
   return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
-         p.mode != Mode::Mip && storage == VolumeStorage::Buffer && !cl.info.isGpu;
+         p.mode != Mode::Mip && storage == VolumeStorage::Buffer && !cl.info.isGpu &&
+         volume.voxelCount() < (size_t(1) << 31);  // packet.cl indexes voxels with int
 }
 
 cl::NDRange Raycaster::Impl::local() const {

@@ -97,6 +97,10 @@ RenderParams planFrame(const RenderParams& base, const Quality& q, const glm::iv
   p.height = size.y;
   if (interactive) {
     p = applyQuality(p, findQualityPreset(kDragQualityPreset), minSpacingMm);
+    // Speed comes from the step and the size; the surfaces keep the user's look, so the
+    // shading does not change the moment the camera moves.
+    p.interp = base.interp;
+    p.gradient = base.gradient;
   } else if (!q.preset.empty()) {
     p = applyQuality(p, findQualityPreset(q.preset), minSpacingMm);
     p.interp = base.interp;  // the user's, set to the preset's when it was picked
