@@ -4,8 +4,7 @@
 #define VOXRAY_INTERSECT_CL
 
 // Returns the entry axis (0..2), -1 when the origin is inside the box, or -2 on a miss.
-inline int intersect_box(float3 o, float3 d, float3 lo, float3 hi, float* t_enter,
-                         float* t_exit) {
+inline int intersect_box(float3 o, float3 d, float3 lo, float3 hi, float* t_enter, float* t_exit) {
   float t0 = -INFINITY, t1 = INFINITY;
   int axis = -1;
   float oa[3] = {o.x, o.y, o.z}, da[3] = {d.x, d.y, d.z};

@@ -32,7 +32,10 @@ void writeBenchPlot(const std::string& path, const std::vector<BenchRow>& rows) 
   std::map<std::string, std::vector<const BenchRow*>> series;
   double xmax = 0, ymin = 1e30, ymax = 0;
   for (const auto& r : rows) {
-    std::string key = r.input + " " + r.gradient + (r.kernel == "uber" ? " uber" : r.kernel == "specialised" ? " per-ray" : "");
+    std::string key = r.input + " " + r.gradient +
+                      (r.kernel == "uber"          ? " uber"
+                       : r.kernel == "specialised" ? " per-ray"
+                                                   : "");
     if (!series.count(key)) order.push_back(key);
     series[key].push_back(&r);
     xmax = std::max(xmax, double(r.pixels));
