@@ -258,6 +258,23 @@ inline int8 pixel_rays8(__constant RaycastParams* P, int gx, int gy, RayPacket* 
   return axis;
 }
 
+// Writes the packet's pixels that lie inside the image, and adds its samples to a counter.
+inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __global uint* count,
+                         int gx, int gy, Vec8 color, int8 samples) {
+  float cr[8], cg[8], cb[8];
+  int counts[8];
+  vstore8(color.x, 0, cr), vstore8(color.y, 0, cg), vstore8(color.z, 0, cb);
+  vstore8(samples, 0, counts);
+  uint total = 0;
+  for (int l = 0; l < 8; ++l) {
+    int px = 4 * gx + (l & 3), py = 2 * gy + (l >> 2);
+    if (px >= P->image.x || py >= P->image.y) continue;
+    out[py * P->image.x + px] = to_rgba8((float3)(cr[l], cg[l], cb[l]));
+    total += counts[l];
+  }
+  if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], total);
+}
+
 // lut_lookup (march.cl) for eight values, as four channels.
 inline void lut8(__global const float4* lut, __constant RaycastParams* P, float8 v,
                  float8 rgba[4]) {
@@ -278,7 +295,6 @@ inline void lut8(__global const float4* lut, __constant RaycastParams* P, float8
 inline void iso_packet(__global const short* restrict vol, __constant RaycastParams* P,
                        __global const float4* lut, __global uchar4* out, CELL_ARGS,
                        __global uint* count, int gx, int gy) {
-  int width = P->image.x, height = P->image.y;
   float step = P->view.z;
   RayPacket r;
   float8 world[6];
@@ -367,26 +383,15 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
     color.y = select(color.y, surface.y, has_hit);
     color.z = select(color.z, surface.z, has_hit);
   }
-  float cr[8], cg[8], cb[8];
-  int counts[8];
-  vstore8(color.x, 0, cr), vstore8(color.y, 0, cg), vstore8(color.z, 0, cb);
-  vstore8(samples, 0, counts);
-  uint total = 0;
-  for (int l = 0; l < 8; ++l) {
-    int px = 4 * gx + (l & 3), py = 2 * gy + (l >> 2);
-    if (px >= width || py >= height) continue;
-    out[py * width + px] = to_rgba8((float3)(cr[l], cg[l], cb[l]));
-    total += counts[l];
-  }
-  if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], total);
+  write_packet(P, out, count, gx, gy, color, samples);
 }
 
 // march_dvr (march.cl) for a 4x2 packet: the same segments, leaps, opacity and early
-// termination lane by lane. Shading runs lane by lane, only for samples that are seen.
+// termination lane by lane. Gradients are taken lane by lane, only for samples that are
+// seen; their shading runs in SIMD.
 inline void dvr_packet(__global const short* restrict vol, __constant RaycastParams* P,
                        __global const float4* lut, __global uchar4* out, CELL_ARGS,
                        __global uint* count, int gx, int gy) {
-  int width = P->image.x, height = P->image.y;
   float step = P->view.z;
   RayPacket r;
   float8 world[6];
@@ -450,20 +455,10 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
     i += 1;
     active &= i <= r.n;
   }
-  float cr[8], cg[8], cb[8];
-  vstore8(acc[0] + (1.0f - alpha) * P->background.x, 0, cr);
-  vstore8(acc[1] + (1.0f - alpha) * P->background.y, 0, cg);
-  vstore8(acc[2] + (1.0f - alpha) * P->background.z, 0, cb);
-  int counts[8];
-  vstore8(samples, 0, counts);
-  uint total = 0;
-  for (int l = 0; l < 8; ++l) {
-    int px = 4 * gx + (l & 3), py = 2 * gy + (l >> 2);
-    if (px >= width || py >= height) continue;
-    out[py * width + px] = to_rgba8((float3)(cr[l], cg[l], cb[l]));
-    total += counts[l];
-  }
-  if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], total);
+  Vec8 color = {acc[0] + (1.0f - alpha) * P->background.x,
+                acc[1] + (1.0f - alpha) * P->background.y,
+                acc[2] + (1.0f - alpha) * P->background.z};
+  write_packet(P, out, count, gx, gy, color, samples);
 }
 
 #endif
