@@ -83,13 +83,6 @@ inline float8 sample8(__global const short* restrict vol, __constant RaycastPara
   return sample8_range(vol, P, x, y, z, &lo, &hi);
 }
 
-// Lane l of v (l need not be a constant).
-inline float lane8(float8 v, int l) {
-  float a[8];
-  vstore8(v, 0, a);
-  return a[l];
-}
-
 // How many lanes of a mask are set.
 inline int lanes8(int8 m) {
   int8 b = m & 1;
@@ -423,7 +416,7 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
         float8 a = c[3];
         if (OPACITY_CORRECTION) {
           float8 ratio = seg / P->view.w;
-          a = select(1.0f - native_exp2(ratio * native_log2(1.0f - a)), (float8)(1.0f), a >= 1.0f);
+          a = CORRECTED_OPACITY(a, ratio);
         }
         if (SHADING) {
           // Gradients lane by lane (each keeps its own cancellation rule), shading at once.

@@ -4,6 +4,12 @@
 
 #include "math.cl"
 
+// s^w for s >= 0 on the fast native path, keeping pow's value at s = 0 (0, or 1 for w = 0).
+// A macro so that float and the float8 lanes of shade8 share it; vector lanes evaluate
+// both branches, so the logarithm never sees 0.
+#define SPECULAR_POWER(s, w) \
+  ((s) > 0.0f ? native_exp2((w)*native_log2(fmax((s), FLT_MIN))) : ((w) == 0.0f ? 1.0f : 0.0f))
+
 // normal_w need not be unit length or point at the viewer; view_w points to the eye.
 // A zero normal (flat region) is treated as facing the viewer, never as NaN.
 inline float3 shade(float3 color, float3 normal_w, float3 pos_w, float3 view_w, float4 light_w,
@@ -15,9 +21,7 @@ inline float3 shade(float3 color, float3 normal_w, float3 pos_w, float3 view_w, 
   float specular = 0.0f;
   if (diffuse > 0.0f) {
     float3 h = safe_normalize(l + view_w, n);
-    // powr on the fast native path; at 0 it keeps pow's value (0, or 1 for exponent 0).
-    float s = fmax(dot(n, h), 0.0f);
-    specular = s > 0.0f ? native_exp2(k.w * native_log2(s)) : (k.w == 0.0f ? 1.0f : 0.0f);
+    specular = SPECULAR_POWER(fmax(dot(n, h), 0.0f), k.w);
   }
   return color * (k.x + k.y * diffuse) + (float3)(k.z * specular);
 }
@@ -51,9 +55,7 @@ inline Vec8 shade8(Vec8 color, Vec8 normal_w, Vec8 pos_w, Vec8 view_w, float4 li
   float8 diffuse = fmax(dot8(n, l), 0.0f);
   Vec8 half_way = {l.x + view_w.x, l.y + view_w.y, l.z + view_w.z};
   Vec8 h = safe_normalize8(half_way, n);
-  float8 sp = fmax(dot8(n, h), 0.0f);
-  float8 specular = select((float8)(k.w == 0.0f ? 1.0f : 0.0f),
-                           native_exp2(k.w * native_log2(fmax(sp, FLT_MIN))), sp > 0.0f);
+  float8 specular = SPECULAR_POWER(fmax(dot8(n, h), 0.0f), k.w);
   specular = select((float8)(0.0f), specular, diffuse > 0.0f);
   float8 f = k.x + k.y * diffuse, s = k.z * specular;
   Vec8 out = {color.x * f + s, color.y * f + s, color.z * f + s};
