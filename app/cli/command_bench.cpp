@@ -74,7 +74,7 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_option("--storage", o->storage, "auto, buffer or image")
       ->check(CLI::IsMember({"auto", "buffer", "image"}));
   cmd->add_option("--kernel", o->kernel,
-                  "specialised (-D per variant; iso on a CPU: 4x2 ray packets), per-ray "
+                  "specialised (-D per variant; iso and dvr on a CPU: 4x2 ray packets), per-ray "
                   "(specialised, one ray per work-item), uber (runtime switches), both "
                   "(specialised and uber) or all three")
       ->check(CLI::IsMember({"specialised", "per-ray", "uber", "both", "all"}));
