@@ -8,6 +8,7 @@
 #ifndef VOXRAY_PACKET_CL
 #define VOXRAY_PACKET_CL
 
+#include "gradients8.cl"
 #include "march.cl"
 
 // Eight rays, one per lane, in voxel coordinates (see Ray in ray.cl).
@@ -16,72 +17,6 @@ typedef struct {
   float8 t0, t1, j;
   int8 n;
 } RayPacket;
-
-inline float8 gather8(__global const short* restrict v, int8 i) {
-  return convert_float8(
-      (short8)(v[i.s0], v[i.s1], v[i.s2], v[i.s3], v[i.s4], v[i.s5], v[i.s6], v[i.s7]));
-}
-
-// Voxels i and i + 1 of each lane, interpolated by f: one 32-bit load per lane. Widens
-// [*lo, *hi] to hold both.
-inline float8 mix_pairs8(__global const short* restrict v, int8 i, float8 f, float8* lo,
-                         float8* hi) {
-  short2 p0 = vload2(0, v + i.s0), p1 = vload2(0, v + i.s1), p2 = vload2(0, v + i.s2);
-  short2 p3 = vload2(0, v + i.s3), p4 = vload2(0, v + i.s4), p5 = vload2(0, v + i.s5);
-  short2 p6 = vload2(0, v + i.s6), p7 = vload2(0, v + i.s7);
-  float8 a = convert_float8((short8)(p0.x, p1.x, p2.x, p3.x, p4.x, p5.x, p6.x, p7.x));
-  float8 b = convert_float8((short8)(p0.y, p1.y, p2.y, p3.y, p4.y, p5.y, p6.y, p7.y));
-  *lo = fmin(*lo, fmin(a, b));
-  *hi = fmax(*hi, fmax(a, b));
-  return mix(a, b, f);
-}
-
-// sample_volume (sampling.cl) for eight points. Trilinear also returns in [*lo, *hi] a
-// range that holds the eight voxels around each point, and so every value trilinear
-// interpolation takes in that voxel cell (nearest: the sample itself).
-inline float8 sample8_range(__global const short* restrict vol, __constant RaycastParams* P,
-                            float8 x, float8 y, float8 z, float8* lo, float8* hi) {
-  int4 dims = P->dims;
-  int sy = dims.x, sz = dims.x * dims.y;
-  if (!INTERP) {
-    int8 nx = clamp(convert_int8(floor(x + 0.5f)), 0, dims.x - 1);
-    int8 ny = clamp(convert_int8(floor(y + 0.5f)), 0, dims.y - 1);
-    int8 nz = clamp(convert_int8(floor(z + 0.5f)), 0, dims.z - 1);
-    *lo = *hi = gather8(vol, nz * sz + ny * sy + nx);
-    return *lo;
-  }
-  float8 x0 = floor(x), y0 = floor(y), z0 = floor(z);
-  float8 fx = x - x0, fy = y - y0, fz = z - z0;
-  int8 ix = convert_int8(x0), iy = convert_int8(y0), iz = convert_int8(z0);
-  int8 ya = clamp(iy, 0, dims.y - 1) * sy, yb = clamp(iy + 1, 0, dims.y - 1) * sy;
-  int8 za = clamp(iz, 0, dims.z - 1) * sz, zb = clamp(iz + 1, 0, dims.z - 1) * sz;
-  float8 c00, c10, c01, c11;
-  *lo = FLT_MAX, *hi = -FLT_MAX;
-  if (dims.x >= 2) {
-    // Each x pair in one load: the pair starts at most at dims.x - 2; past either edge,
-    // fx = 0 or 1 picks the edge voxel exactly (clamp to edge, as below).
-    int8 ax = clamp(ix, 0, dims.x - 2);
-    fx = select(fx, (float8)(0.0f), ix < 0);
-    fx = select(fx, (float8)(1.0f), ix > dims.x - 2);
-    c00 = mix_pairs8(vol, za + ya + ax, fx, lo, hi);
-    c10 = mix_pairs8(vol, za + yb + ax, fx, lo, hi);
-    c01 = mix_pairs8(vol, zb + ya + ax, fx, lo, hi);
-    c11 = mix_pairs8(vol, zb + yb + ax, fx, lo, hi);
-  } else {
-    int8 ax = 0;
-    c00 = gather8(vol, za + ya + ax), c10 = gather8(vol, za + yb + ax);
-    c01 = gather8(vol, zb + ya + ax), c11 = gather8(vol, zb + yb + ax);
-    *lo = fmin(fmin(c00, c10), fmin(c01, c11));
-    *hi = fmax(fmax(c00, c10), fmax(c01, c11));
-  }
-  return mix(mix(c00, c10, fy), mix(c01, c11, fy), fz);
-}
-
-inline float8 sample8(__global const short* restrict vol, __constant RaycastParams* P, float8 x,
-                      float8 y, float8 z) {
-  float8 lo, hi;
-  return sample8_range(vol, P, x, y, z, &lo, &hi);
-}
 
 // How many lanes of a mask are set.
 inline int lanes8(int8 m) {
@@ -285,6 +220,13 @@ inline void lut8(__global const float4* lut, __constant RaycastParams* P, float8
   for (int ch = 0; ch < 4; ++ch) rgba[ch] = vload8(0, c[ch]);
 }
 
+// One component of an iso hit's normal: the gradient's where it was taken, the clip
+// face's axis at a cap, 0 otherwise.
+inline float8 cap_or_gradient8(float8 g, int8 graded, int8 cap, int8 along) {
+  float8 zero = 0.0f;
+  return select(select(zero, g, graded), select(zero, (float8)(1.0f), along), cap);
+}
+
 inline void iso_packet(__global const short* restrict vol, __constant RaycastParams* P,
                        __global const float4* lut, __global uchar4* out, CELL_ARGS,
                        __global uint* count, int gx, int gy) {
@@ -347,26 +289,17 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
     lut8(lut, P, sample8(vol, P, hx, hy, hz), c);
     Vec8 surface = {c[0], c[1], c[2]};
     if (SHADING) {
-      // Normals lane by lane (a gradient keeps its own cancellation rule), shading at once.
-      float xs[8], ys[8], zs[8], g[3][8];
-      int hits[8], axes[8], taps[8];
-      vstore8(hx, 0, xs), vstore8(hy, 0, ys), vstore8(hz, 0, zs);
-      vstore8(hit, 0, hits), vstore8(axis, 0, axes);
-      for (int l = 0; l < 8; ++l) {
-        float3 n = (float3)(0.0f);
-        taps[l] = 0;
-        if (hits[l] == 0 && axes[l] >= 0) {
-          // The ray starts inside the surface at a clip face: shade the cut as a flat cap.
-          n = (float3)(axes[l] == 0, axes[l] == 1, axes[l] == 2);
-        } else if (hits[l] > 0 || (hits[l] == 0 && axes[l] < 0)) {
-          n = volume_gradient(vol, P, (float3)(xs[l], ys[l], zs[l]));
-          taps[l] = GRADIENT_TAPS;
-        }
-        float3 n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, n);
-        g[0][l] = n_w.x, g[1][l] = n_w.y, g[2][l] = n_w.z;
-      }
-      samples += vload8(0, taps);
-      Vec8 normal = {vload8(0, g[0]), vload8(0, g[1]), vload8(0, g[2])};
+      // The gradient where the ray hits the surface; a ray that starts inside the surface
+      // at a clip face shades the cut as a flat cap facing along that face's axis.
+      Vec8 at = {hx, hy, hz};
+      Vec8 g = volume_gradient8(vol, P, at);
+      int8 cap = (hit == 0) & (axis >= 0);
+      int8 graded = (hit > 0) | ((hit == 0) & (axis < 0));
+      Vec8 n = {cap_or_gradient8(g.x, graded, cap, axis == 0),
+                cap_or_gradient8(g.y, graded, cap, axis == 1),
+                cap_or_gradient8(g.z, graded, cap, axis == 2)};
+      samples += select((int8)(0), (int8)(GRADIENT_TAPS), graded);
+      Vec8 normal = gradient_to_world8(P, n);
       Vec8 pos = {world[0] + t_hit * world[3], world[1] + t_hit * world[4],
                   world[2] + t_hit * world[5]};
       Vec8 view = {-world[3], -world[4], -world[5]};
@@ -419,20 +352,9 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
           a = CORRECTED_OPACITY(a, ratio);
         }
         if (SHADING) {
-          // Gradients lane by lane (each keeps its own cancellation rule), shading at once.
-          float xs[8], ys[8], zs[8], g[3][8];
-          int sn[8];
-          vstore8(x, 0, xs), vstore8(y, 0, ys), vstore8(z, 0, zs);
-          vstore8(seen, 0, sn);
-          for (int l = 0; l < 8; ++l) {
-            float3 n_w = (float3)(0.0f);
-            if (sn[l])
-              n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z,
-                            volume_gradient(vol, P, (float3)(xs[l], ys[l], zs[l])));
-            g[0][l] = n_w.x, g[1][l] = n_w.y, g[2][l] = n_w.z;
-          }
+          Vec8 at = {x, y, z};
+          Vec8 normal = gradient_to_world8(P, volume_gradient8(vol, P, at));
           Vec8 color = {c[0], c[1], c[2]};
-          Vec8 normal = {vload8(0, g[0]), vload8(0, g[1]), vload8(0, g[2])};
           Vec8 pos = {world[0] + t * world[3], world[1] + t * world[4], world[2] + t * world[5]};
           Vec8 view = {-world[3], -world[4], -world[5]};
           Vec8 lit = shade8(color, normal, pos, view, P->light_w, P->light);
