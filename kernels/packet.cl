@@ -203,21 +203,22 @@ inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __gl
   if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], total);
 }
 
-// lut_lookup (march.cl) for eight values, as four channels.
+// lut_lookup (march.cl) for eight values, as four channels. Each lane mixes its two
+// entries as a float4; the eight results are transposed in registers.
 inline void lut8(__global const float4* lut, __constant RaycastParams* P, float8 v,
                  float8 rgba[4]) {
   int last = P->dims.w - 1;
   float8 x = clamp((v - P->values.z) * P->values.w, 0.0f, (float)last);
-  float8 x0 = floor(x);
-  float f[8], c[4][8];
-  int k[8];
-  vstore8(x - x0, 0, f);
-  vstore8(convert_int8(x0), 0, k);
-  for (int l = 0; l < 8; ++l) {
-    float4 e = mix(lut[k[l]], lut[min(k[l] + 1, last)], f[l]);
-    c[0][l] = e.x, c[1][l] = e.y, c[2][l] = e.z, c[3][l] = e.w;
-  }
-  for (int ch = 0; ch < 4; ++ch) rgba[ch] = vload8(0, c[ch]);
+  float8 x0 = floor(x), f = x - x0;
+  int8 k = convert_int8(x0), k1 = min(k + 1, last);
+#define LUT8_LANE(l) mix(lut[k.s##l], lut[k1.s##l], f.s##l)
+  float4 e0 = LUT8_LANE(0), e1 = LUT8_LANE(1), e2 = LUT8_LANE(2), e3 = LUT8_LANE(3);
+  float4 e4 = LUT8_LANE(4), e5 = LUT8_LANE(5), e6 = LUT8_LANE(6), e7 = LUT8_LANE(7);
+#undef LUT8_LANE
+  rgba[0] = (float8)(e0.x, e1.x, e2.x, e3.x, e4.x, e5.x, e6.x, e7.x);
+  rgba[1] = (float8)(e0.y, e1.y, e2.y, e3.y, e4.y, e5.y, e6.y, e7.y);
+  rgba[2] = (float8)(e0.z, e1.z, e2.z, e3.z, e4.z, e5.z, e6.z, e7.z);
+  rgba[3] = (float8)(e0.w, e1.w, e2.w, e3.w, e4.w, e5.w, e6.w, e7.w);
 }
 
 // One component of an iso hit's normal: the gradient's where it was taken, the clip

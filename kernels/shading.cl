@@ -33,12 +33,16 @@ typedef struct {
 
 inline float8 dot8(Vec8 a, Vec8 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-// safe_normalize (math.cl) lane by lane.
+// safe_normalize (math.cl) lane by lane. Scaling by the largest component only matters
+// when the dot product could overflow, so it is skipped (a division saved) unless a lane
+// is that large.
 inline Vec8 safe_normalize8(Vec8 v, Vec8 fallback) {
   float8 m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
   int8 bad = ~(m > 1e-6f) | isinf(m);
-  float8 inv = 1.0f / select(m, (float8)(1.0f), bad);
-  v.x *= inv, v.y *= inv, v.z *= inv;
+  if (any(m > 1e18f)) {
+    float8 inv = 1.0f / select(m, (float8)(1.0f), bad);
+    v.x *= inv, v.y *= inv, v.z *= inv;
+  }
   float8 r = rsqrt(select(dot8(v, v), (float8)(1.0f), bad));
   Vec8 n = {select(v.x * r, fallback.x, bad), select(v.y * r, fallback.y, bad),
             select(v.z * r, fallback.z, bad)};
