@@ -20,6 +20,16 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+void orbitCamera(CameraParams& c, const BenchRun& run, int i) {
+  double angle = 360.0 * std::max(i, 0) / run.frames;
+  if (run.orbit == Orbit::Azimuth) {
+    c.azimuthDeg = angle;
+    return;
+  }
+  c.azimuthDeg = 90.0;
+  c.elevationDeg = angle - 90.0;
+}
+
 BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
   RaycasterOptions opts = rc.options();
   opts.countSamples = false;
@@ -28,7 +38,7 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
   std::vector<double> wall, kernel;
   std::string variant;
   for (int i = -run.warmup; i < run.frames; ++i) {
-    p.camera.azimuthDeg = 360.0 * std::max(i, 0) / run.frames;
+    orbitCamera(p.camera, run, i);
     FrameStats s;
     rc.render(p, img, &s);
     if (i < 0) continue;
@@ -69,7 +79,7 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
     rc.setOptions(opts);
     double samples = 0, ms = 0;
     for (int i = -1; i < run.frames; ++i) {  // the first builds the kernel
-      p.camera.azimuthDeg = 360.0 * std::max(i, 0) / run.frames;
+      orbitCamera(p.camera, run, i);
       FrameStats s;
       rc.render(p, img, &s);
       if (i >= 0) samples += s.samples;

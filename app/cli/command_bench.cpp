@@ -82,6 +82,10 @@ Run addBenchCommand(CLI::App& app) {
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--local", o->local, "OpenCL work-group size WxH (default: the device's)");
   cmd->add_flag("--no-count", o->noCount, "skip the extra orbit that counts samples");
+  cmd->add_option("--orbit", o->orbit,
+                  "azimuth (around the long axis) or elevation (around the anterior-posterior "
+                  "axis from inferior: VTK's orbit of an axial stack, for the peer benchmark)")
+      ->check(CLI::IsMember({"azimuth", "elevation"}));
   cmd->add_flag("--seed-table", o->seedTable,
                 "the seed paper's table (Head, Brain, Stent x central, Zucker-Hummel x its "
                 "four sizes) on the shared data, beside the seed's fps");
@@ -93,6 +97,7 @@ Run addBenchCommand(CLI::App& app) {
   return [o, sizesOption] {
     BenchFormat f = o->json ? BenchFormat::Json : o->csv ? BenchFormat::Csv : BenchFormat::Text;
     o->run.countSamples = !o->noCount;
+    o->run.orbit = o->orbit == "elevation" ? Orbit::Elevation : Orbit::Azimuth;
     ClContext ctx(o->device);
     std::vector<std::string> kernels = {o->kernel};
     if (o->kernel == "both") kernels = {"specialised", "uber"};
