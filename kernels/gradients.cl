@@ -29,9 +29,7 @@ inline float3 zero_if_cancelled(float3 g, float largest_voxel) {
 // from one clamped 4x4x4 block of voxels interpolated along x, then y, then z (the order
 // sample_volume uses): 64 loads instead of 216, the same values. *largest: the largest
 // |voxel| of the block.
-inline void neighbourhood_trilinear(VOLUME_ARG, __constant RaycastParams* P, float3 p, float* s,
-                                    float* largest) {
-  int4 dims = P->dims;
+inline void neighbourhood_trilinear(SLAB_TYPE vol, int4 dims, float3 p, float* s, float* largest) {
   float3 f0 = floor(p);
   float3 f = p - f0;
   int3 i0 = convert_int3(f0) - 1;
@@ -63,9 +61,7 @@ inline void neighbourhood_trilinear(VOLUME_ARG, __constant RaycastParams* P, flo
 // The six trilinear samples at p -+ 1 along x, y, z (s: xm, xp, ym, yp, zm, zp), from the
 // 32 voxels of the same 4x4x4 block that a cross through its centre cell covers, in
 // sample_volume's order: 32 loads instead of 48. *largest: the largest |voxel| read.
-inline void cross_trilinear(VOLUME_ARG, __constant RaycastParams* P, float3 p, float* s,
-                            float* largest) {
-  int4 dims = P->dims;
+inline void cross_trilinear(SLAB_TYPE vol, int4 dims, float3 p, float* s, float* largest) {
   float3 f0 = floor(p);
   float3 f = p - f0;
   int3 i0 = convert_int3(f0) - 1;
@@ -108,18 +104,20 @@ inline void cross_trilinear(VOLUME_ARG, __constant RaycastParams* P, float3 p, f
 }
 #endif
 
-inline float3 volume_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
+// The gradient at p in one slab (the whole volume when SLABS is 1) of extent dims.
+inline float3 volume_gradient_slab(SLAB_TYPE vol, int4 dims, __constant RaycastParams* P,
+                                   float3 p) {
   float largest = 0.0f;  // the largest |voxel| the stencil read (see GRADIENT_ZERO_REL)
   if (GRADIENT == 0) {
     float s[6];  // p - x, p + x, p - y, p + y, p - z, p + z
 #if !STORAGE_IMAGE
     if (INTERP)
-      cross_trilinear(vol, P, p, s, &largest);
+      cross_trilinear(vol, dims, p, s, &largest);
     else
 #endif
       for (int k = 0; k < 6; ++k) {
         float3 e = (float3)(k / 2 == 0, k / 2 == 1, k / 2 == 2);
-        s[k] = sample_volume(vol, P, k % 2 ? p + e : p - e);
+        s[k] = sample_slab(vol, dims, P, k % 2 ? p + e : p - e);
         // Nearest samples are voxels; filtered image samples stand in for theirs.
         largest = fmax(largest, fabs(s[k]));
       }
@@ -137,12 +135,12 @@ inline float3 volume_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p)
   float s[27];  // the samples at p + (dx, dy, dz), index (dz + 1) * 9 + (dy + 1) * 3 + dx + 1
 #if !STORAGE_IMAGE
   if (INTERP)
-    neighbourhood_trilinear(vol, P, p, s, &largest);
+    neighbourhood_trilinear(vol, dims, p, s, &largest);
   else
 #endif
     for (int k = 0; k < 27; ++k) {  // the centre (13) has weight 0
-      s[k] =
-          k == 13 ? 0.0f : sample_volume(vol, P, p + (float3)(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1));
+      float3 q = p + (float3)(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
+      s[k] = k == 13 ? 0.0f : sample_slab(vol, dims, P, q);
       largest = fmax(largest, fabs(s[k]));
     }
   float3 g = (float3)(0.0f);
@@ -156,5 +154,19 @@ inline float3 volume_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p)
     g += s[k] * (float3)(dx * wx, dy * wy, dz * wz);
   }
   return zero_if_cancelled(g * (0.5f / w_sum), largest);
+}
+
+// The block (or every tap) lies in the slab owning floor(p.z): slabs.cl.
+inline float3 volume_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
+#if SLABS > 1
+  int s = slab_of(P, p.z);
+  int4 dims = slab_dims(P, s);
+  float3 q = slab_point(P, s, p);
+#define GRADIENT_IN(v) return volume_gradient_slab(v, dims, P, q)
+  WITH_SLAB(s, GRADIENT_IN);
+#undef GRADIENT_IN
+#else
+  return volume_gradient_slab(vol, P->dims, P, p);
+#endif
 }
 #endif

@@ -21,7 +21,7 @@ inline float4 lut_lookup(__global const float4* lut, __constant RaycastParams* P
 
 // Normal at p (voxel coordinates) in world space; not normalised.
 inline float3 world_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
-  float3 g = volume_gradient(vol, P, p);
+  float3 g = volume_gradient(VOLUME, P, p);
   return mat_mul(P->grad_x, P->grad_y, P->grad_z, g);
 }
 
@@ -50,7 +50,7 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
     }
     float t = ray_sample_t(r, i);
     ++*count;
-    if (in_iso(P, sample_volume(vol, P, r->o + t * r->d))) {
+    if (in_iso(P, sample_volume(VOLUME, P, r->o + t * r->d))) {
       hit = i;
       t_hit = t;
       break;
@@ -61,7 +61,7 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
     float a = ray_sample_t(r, hit - 1), b = t_hit;
     for (int k = 0; k < REFINE_STEPS; ++k) {
       float m = 0.5f * (a + b);
-      if (in_iso(P, sample_volume(vol, P, r->o + m * r->d)))
+      if (in_iso(P, sample_volume(VOLUME, P, r->o + m * r->d)))
         b = m;
       else
         a = m;
@@ -71,7 +71,7 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
   }
   float3 p_v = r->o + t_hit * r->d;
   *hit_out = (float4)(p_v, hit > 0 ? 1.0f : 0.0f);
-  float4 c = lut_lookup(lut, P, sample_volume(vol, P, p_v));
+  float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
   if (!SHADING) return c.xyz;
   float3 n_w;
   if (hit == 0 && axis >= 0) {
@@ -79,7 +79,7 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
     float3 e = (float3)(axis == 0, axis == 1, axis == 2);
     n_w = mat_mul(P->grad_x, P->grad_y, P->grad_z, e);
   } else {
-    n_w = world_gradient(vol, P, p_v);
+    n_w = world_gradient(VOLUME, P, p_v);
     *count += GRADIENT_TAPS;
   }
   return shade(c.xyz, n_w, origin_w + t_hit * dir_w, -dir_w, P->light_w, P->light);
@@ -101,12 +101,12 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
     float t = 0.5f * (s.x + s.y);
     float3 p_v = r->o + t * r->d;
     ++*count;
-    float4 c = lut_lookup(lut, P, sample_volume(vol, P, p_v));
+    float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
     if (c.w <= 0.0f) continue;
     float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
     float3 rgb = c.xyz;
     if (SHADING) {
-      rgb = shade(rgb, world_gradient(vol, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
+      rgb = shade(rgb, world_gradient(VOLUME, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
                   P->light);
       *count += GRADIENT_TAPS;
     }
@@ -127,7 +127,7 @@ inline float3 march_mip(VOLUME_ARG, __constant RaycastParams* P, CELL_ARGS, cons
       if (i > r->n) break;
     }
     ++*count;
-    vmax = fmax(vmax, sample_volume(vol, P, r->o + ray_sample_t(r, i) * r->d));
+    vmax = fmax(vmax, sample_volume(VOLUME, P, r->o + ray_sample_t(r, i) * r->d));
   }
   return (float3)(clamp((vmax - P->dvr.x) * P->dvr.y, 0.0f, 1.0f));
 }

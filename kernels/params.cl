@@ -32,6 +32,7 @@ typedef struct {
   int4 cells;     // macro-cell grid x, y, z (cells of CELL^3 voxels); ESS (uber only)
   int4 modes;     // MODE, SHADING, GRADIENT, INTERP (read by uber kernels only)
   int4 modes2;    // ORTHO, REFINE_STEPS, OPACITY_CORRECTION, JITTER (uber only)
+  int4 slabs;     // slices each z slab owns (SLABS > 1, slabs.cl), unused, unused, unused
 } RaycastParams;
 
 #endif

@@ -7,7 +7,8 @@
 //   skip.cl), COUNT_SAMPLES 0/1, UBER 0/1 (all switches at runtime: variant.cl),
 //   PACKET 0/1 (iso and dvr on CPUs: 4x2 rays per work-item in SIMD, packet.cl),
 //   HIT_OUTPUT 0/1 (iso, one ray per work-item: each pixel's hit to `hits`, see
-//   march_iso; w -1 for none)
+//   march_iso; w -1 for none), SLABS k (the volume in k z slabs, slabs.cl; k > 1 only
+//   without PACKET)
 // Only what the variant needs is compiled: MIP and unshaded frames take no gradient.
 // engine/src/reference_renderer.cpp is the same algorithm in double precision.
 //
@@ -97,11 +98,11 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
   int axis = pixel_ray(P, px, py, &r, &origin_w, &dir_w);
   if (axis > -2) {
     if (MODE == 0)
-      color = march_iso(vol, P, lut, leap, range, &r, origin_w, dir_w, axis, &samples, &hit);
+      color = march_iso(VOLUME, P, lut, leap, range, &r, origin_w, dir_w, axis, &samples, &hit);
     else if (MODE == 1)
-      color = march_dvr(vol, P, lut, leap, range, &r, origin_w, dir_w, &samples);
+      color = march_dvr(VOLUME, P, lut, leap, range, &r, origin_w, dir_w, &samples);
     else
-      color = march_mip(vol, P, leap, range, &r, &samples);
+      color = march_mip(VOLUME, P, leap, range, &r, &samples);
   }
   out[py * width + px] = to_rgba8(color);
   if (COUNT_SAMPLES) atomic_add(&count[(px ^ py) & 63], samples);

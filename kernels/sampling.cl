@@ -4,20 +4,23 @@
 //   STORAGE_IMAGE 0: a buffer of shorts with manual interpolation (CPUs: PoCL samples a
 //                    buffer about 3x faster than an image)
 //   INTERP 0 nearest, 1 trilinear
+//   SLABS k: the volume in k slabs along z (slabs.cl)
 // Every function takes the frame parameters as P: the uber kernel reads INTERP there.
+// sample_slab reads one slab (the whole volume when SLABS is 1) of extent dims.
 #ifndef VOXRAY_SAMPLING_CL
 #define VOXRAY_SAMPLING_CL
 
 #include "variant.cl"
 
 #if STORAGE_IMAGE
-#define VOLUME_ARG __read_only image3d_t vol
+#define SLAB_TYPE __read_only image3d_t
 __constant sampler_t vol_linear =
     CLK_NORMALIZED_COORDS_FALSE | CLK_ADDRESS_CLAMP_TO_EDGE | CLK_FILTER_LINEAR;
 __constant sampler_t vol_nearest =
     CLK_NORMALIZED_COORDS_FALSE | CLK_ADDRESS_CLAMP_TO_EDGE | CLK_FILTER_NEAREST;
 
-inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
+// dims: unused, the image clamps at its own edges.
+inline float sample_slab(SLAB_TYPE vol, int4 dims, __constant RaycastParams* P, float3 p) {
   // Texel centres sit at +0.5 in unnormalised image coordinates.
   float4 c = (float4)(p + 0.5f, 0.0f);
   float v = INTERP ? read_imagef(vol, vol_linear, c).x : read_imagef(vol, vol_nearest, c).x;
@@ -25,10 +28,9 @@ inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
 }
 
 #else
-#define VOLUME_ARG __global const short* restrict vol
+#define SLAB_TYPE __global const short* restrict
 
-inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
-  int4 dims = P->dims;
+inline float sample_slab(SLAB_TYPE vol, int4 dims, __constant RaycastParams* P, float3 p) {
   int3 hi = dims.xyz - 1;
   size_t sy = (size_t)dims.x, sz = (size_t)dims.x * dims.y;
   if (!INTERP) {
@@ -51,5 +53,20 @@ inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
   return mix(c0, c1, f.z);
 }
 #endif
+
+#include "slabs.cl"
+
+inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
+#if SLABS > 1
+  int s = slab_of(P, p.z);
+  int4 dims = slab_dims(P, s);
+  float3 q = slab_point(P, s, p);
+#define SAMPLE_IN(v) return sample_slab(v, dims, P, q)
+  WITH_SLAB(s, SAMPLE_IN);
+#undef SAMPLE_IN
+#else
+  return sample_slab(vol, P->dims, P, p);
+#endif
+}
 
 #endif

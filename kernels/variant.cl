@@ -2,8 +2,8 @@
 // literal, so `if (MODE == 0)` and friends fold away at compile time and only what the
 // frame uses is compiled. -D UBER=1 maps them to runtime fields of the frame parameters
 // instead: one kernel for every frame, kept to measure what specialisation buys.
-// STORAGE_IMAGE, COUNT_SAMPLES and HIT_OUTPUT stay compile-time: they change arguments
-// and stores.
+// STORAGE_IMAGE, SLABS, COUNT_SAMPLES and HIT_OUTPUT stay compile-time: they change
+// arguments and stores.
 // Code that uses a switch must have the frame parameters in scope as `P`.
 #ifndef VOXRAY_VARIANT_CL
 #define VOXRAY_VARIANT_CL
@@ -53,6 +53,9 @@
 
 #ifndef STORAGE_IMAGE
 #define STORAGE_IMAGE 0
+#endif
+#ifndef SLABS
+#define SLABS 1
 #endif
 #ifndef COUNT_SAMPLES
 #define COUNT_SAMPLES 0

@@ -28,6 +28,7 @@ struct BenchOptions {
   std::string storage = "auto", kernel = "specialised", ess = "on", local, data, plot;
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
+  size_t slabMib = 0;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -48,6 +49,7 @@ std::string defaultDataDir() {
 RaycasterOptions raycasterOptions(const BenchOptions& o) {
   RaycasterOptions r;
   r.emptySpaceSkipping = o.ess == "on";
+  r.maxSlabBytes = o.slabMib << 20;
   if (!o.local.empty()) {
     int x = 0, y = 0;
     if (std::sscanf(o.local.c_str(), "%dx%d", &x, &y) != 2 || x <= 0 || y <= 0)
@@ -81,6 +83,9 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_option("--ess", o->ess, "empty-space skipping on or off")
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--local", o->local, "OpenCL work-group size WxH (default: the device's)");
+  cmd->add_option("--slab-mib", o->slabMib,
+                  "split the volume into z slabs of at most this many MiB on the device "
+                  "(default: only when it exceeds the largest allocation)");
   cmd->add_flag("--no-count", o->noCount, "skip the extra orbit that counts samples");
   cmd->add_option("--orbit", o->orbit,
                   "azimuth (around the long axis) or elevation (around the anterior-posterior "
@@ -122,6 +127,7 @@ Run addBenchCommand(CLI::App& app) {
             rc.setOptions(ro);
             BenchRow r = benchCase(rc, p, o->run);
             r.input = name;
+            if (rc.slabCount() > 1) r.input += "/" + std::to_string(rc.slabCount()) + "slabs";
             const double* seed = p.gradient == Gradient::Central        ? seedCentral
                                  : p.gradient == Gradient::ZuckerHummel ? seedZucker
                                                                         : nullptr;

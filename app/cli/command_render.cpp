@@ -13,6 +13,7 @@ struct RenderOptions {
   InputOptions input;
   RenderFlags flags;
   std::string output, device, storage = "auto";
+  size_t slabMib = 0;
 };
 }  // namespace
 
@@ -30,18 +31,26 @@ Run addRenderCommand(CLI::App& app) {
   cmd->add_option("--device", o->device, "auto, cpu, gpu or a device number ($VOXRAY_DEVICE)");
   cmd->add_option("--storage", o->storage, "volume on the device: auto, buffer or image")
       ->check(CLI::IsMember({"auto", "buffer", "image"}));
+  cmd->add_option("--slab-mib", o->slabMib,
+                  "split the volume into z slabs of at most this many MiB on the device "
+                  "(default: only when it exceeds the largest allocation)");
   o->flags.add(*cmd);
   return [o] {
     RenderParams p = o->flags.params();
     Volume v = o->input.load();
     ClContext ctx(o->device);
     Raycaster rc(ctx, v, parseStorage(o->storage));
+    RaycasterOptions ro;
+    ro.maxSlabBytes = o->slabMib << 20;
+    rc.setOptions(ro);
     FrameStats stats;
     Image img = rc.render(p, &stats);
     writeImage(o->output, img);
     std::cerr << "rendered " << p.width << "x" << p.height << " " << toString(p.mode) << " on "
               << ctx.device().name << " in " << stats.totalMs << " ms (kernel " << stats.kernelMs
-              << " ms, first frame includes the kernel build) -> " << o->output << "\n";
+              << " ms, first frame includes the kernel build";
+    if (rc.slabCount() > 1) std::cerr << "; " << rc.slabCount() << " z slabs";
+    std::cerr << ") -> " << o->output << "\n";
     return 0;
   };
 }

@@ -5,6 +5,7 @@
 #include "progress.h"
 #include "voxray/io/error.h"
 #include "voxray/io/orientation.h"
+#include "voxray/io/phantom.h"
 
 namespace voxray::cli {
 
@@ -46,6 +47,9 @@ void InputOptions::add(CLI::App& cmd) {
                  "raw: patient direction of the x, y, z index axes, e.g. LPI when slice 1 is "
                  "the top of the head (default LPS)");
   cmd.add_option("--series", series, "DICOM: series number or UID (default: the largest volume)");
+  cmd.add_option("--phantom-size", phantomSize,
+                 "no INPUT: voxels per axis of the head phantom (1024: a 2 GiB volume)")
+      ->check(CLI::Range(2, 1024));
 }
 
 LoadOptions InputOptions::loadOptions() const {
@@ -89,6 +93,7 @@ LoadOptions InputOptions::loadOptions() const {
 
 Volume InputOptions::load() const {
   LoadOptions o = loadOptions();
+  if (input.empty()) return makeHeadPhantom(phantomSize);
   o.progress = terminalProgress("loading");
   return loadVolume(input, o);
 }

@@ -14,6 +14,7 @@ struct InputOptions {
                        rawAxes;
   size_t rawOffset = 0;
   std::string series;
+  int phantomSize = 256;  // voxels per axis of the head phantom (no INPUT)
 
   void add(CLI::App& cmd);
   // Loads the volume, showing progress on stderr when it is a terminal.

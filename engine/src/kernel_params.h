@@ -20,7 +20,8 @@ struct RaycastParams {
   cl_int4 cells;
   cl_int4 modes;
   cl_int4 modes2;
+  cl_int4 slabs;
 };
-static_assert(sizeof(RaycastParams) == 24 * 16, "must match kernels/params.cl");
+static_assert(sizeof(RaycastParams) == 25 * 16, "must match kernels/params.cl");
 
 }  // namespace voxray

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cl_context_impl.h"
+#include "device_volume.h"
 #include "empty_space.h"
 #include "frame_setup.h"
 #include "kernel_params.h"
@@ -22,16 +23,13 @@ cl_float4 f4(double x, double y, double z, double w) {
   return {{float(x), float(y), float(z), float(w)}};
 }
 
-std::string mib(size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
-
 }  // namespace
 
 struct Raycaster::Impl {
   ContextImpl& cl;
   const Volume& volume;
   VolumeStorage storage;
-  cl::Buffer volumeBuffer;
-  cl::Image3D volumeImage;
+  DeviceVolume device;
   cl::Buffer paramsBuffer;
   cl::Buffer lutBuffer;
   size_t lutCapacity = 0;
@@ -78,36 +76,8 @@ void Raycaster::Impl::upload() {
     throw inputError("the volume is empty or its voxel count does not match its dimensions");
   if (storage == VolumeStorage::Auto)
     storage = d.isGpu && d.imageSupport ? VolumeStorage::Image3d : VolumeStorage::Buffer;
-  size_t bytes = volume.byteSize();
-  std::string dims = std::to_string(volume.dims.x) + "x" + std::to_string(volume.dims.y) + "x" +
-                     std::to_string(volume.dims.z);
-  if (storage == VolumeStorage::Image3d) {
-    if (!d.imageSupport)
-      throw deviceError(d.name + " has no image support: render with the buffer storage");
-    if (size_t(volume.dims.x) > d.maxImage3d[0] || size_t(volume.dims.y) > d.maxImage3d[1] ||
-        size_t(volume.dims.z) > d.maxImage3d[2])
-      throw deviceError("the volume (" + dims + ") exceeds " + d.name + "'s largest 3D image (" +
-                        std::to_string(d.maxImage3d[0]) + "x" + std::to_string(d.maxImage3d[1]) +
-                        "x" + std::to_string(d.maxImage3d[2]) + "): try --device cpu");
-  }
-  if (bytes > d.maxAllocBytes)
-    throw deviceError("the volume (" + dims + ", " + mib(bytes) + ") exceeds " + d.name +
-                      "'s largest allocation (" + mib(d.maxAllocBytes) +
-                      "): crop or downsample it, or use a device with more memory");
+  device.upload(cl, volume, storage, opts.maxSlabBytes);
   clCall([&] {
-    if (storage == VolumeStorage::Image3d) {
-      // SNORM so the hardware filters it; the kernel scales back by 32767.
-      cl::ImageFormat format(CL_R, CL_SNORM_INT16);
-      volumeImage = cl::Image3D(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, format,
-                                size_t(volume.dims.x), size_t(volume.dims.y), size_t(volume.dims.z),
-                                0, 0, const_cast<int16_t*>(volume.voxels.data()));
-    } else {
-      // A CPU device reads host memory anyway: use the volume where it is instead of a
-      // second copy (peak memory stays near the volume's size). The Volume outlives us.
-      cl_mem_flags where = d.isGpu ? CL_MEM_COPY_HOST_PTR : CL_MEM_USE_HOST_PTR;
-      volumeBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | where, bytes,
-                                const_cast<int16_t*>(volume.voxels.data()));
-    }
     paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
     countBuffer = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 64 * sizeof(cl_uint));
     return 0;
@@ -119,6 +89,7 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
   std::ostringstream o;
   o << "-cl-fast-relaxed-math -D STORAGE_IMAGE=" << int(storage == VolumeStorage::Image3d)
     << " -D COUNT_SAMPLES=" << int(opts.countSamples);
+  if (device.plan().count() > 1) o << " -D SLABS=" << device.plan().count();
   if (hitsOut) o << " -D HIT_OUTPUT=1";
   // The uber kernel reads every other switch from RaycastParams (kernels/variant.cl).
   if (opts.kernel == RaycasterOptions::Kernel::Uber) return o.str() + " -D UBER=1";
@@ -135,9 +106,10 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
 }
 
 bool Raycaster::Impl::packets(const RenderParams& p) const {
+  // packet.cl reads one volume argument and indexes voxels with int.
   return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
          p.mode != Mode::Mip && storage == VolumeStorage::Buffer && !cl.info.isGpu &&
-         volume.voxelCount() < (size_t(1) << 31);  // packet.cl indexes voxels with int
+         device.plan().count() == 1 && volume.voxelCount() < (size_t(1) << 31);
 }
 
 cl::NDRange Raycaster::Impl::local() const {
@@ -163,7 +135,14 @@ VolumeStorage Raycaster::storage() const { return impl_->storage; }
 
 std::string Raycaster::variantOptions(const RenderParams& p) const { return impl_->options(p); }
 
-void Raycaster::setOptions(const RaycasterOptions& options) { impl_->opts = options; }
+int Raycaster::slabCount() const { return impl_->device.plan().count(); }
+
+void Raycaster::setOptions(const RaycasterOptions& options) {
+  Impl& m = *impl_;
+  bool reslab = options.maxSlabBytes != m.opts.maxSlabBytes;
+  if (reslab) m.device.upload(m.cl, m.volume, m.storage, options.maxSlabBytes);
+  m.opts = options;
+}
 
 const RaycasterOptions& Raycaster::options() const { return impl_->opts; }
 
@@ -212,6 +191,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   k.modes = {{int(p.mode), int(shading), int(p.gradient), int(p.interp)}};
   k.modes2 = {{int(p.camera.projection == Projection::Orthographic), p.refine,
                int(p.opacityCorrection), int(p.jitter)}};
+  k.slabs = {{m.device.plan().depth, 0, 0, 0}};
 
   size_t pixels = size_t(p.width) * size_t(p.height);
   out.width = p.width;
@@ -241,23 +221,20 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     if (m.opts.emptySpaceSkipping) m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
     if (m.opts.countSamples)
       q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
-    if (m.storage == VolumeStorage::Image3d)
-      kernel.setArg(0, m.volumeImage);
-    else
-      kernel.setArg(0, m.volumeBuffer);
-    kernel.setArg(1, m.paramsBuffer);
-    kernel.setArg(2, m.lutBuffer);
-    kernel.setArg(3, m.outBuffer);
-    kernel.setArg(4, m.space.leap());
-    kernel.setArg(5, m.space.range());
-    kernel.setArg(6, m.countBuffer);
+    cl_uint arg = m.device.setArgs(kernel, 0);  // vol, or vol0 .. per slab
+    kernel.setArg(arg++, m.paramsBuffer);
+    kernel.setArg(arg++, m.lutBuffer);
+    kernel.setArg(arg++, m.outBuffer);
+    kernel.setArg(arg++, m.space.leap());
+    kernel.setArg(arg++, m.space.range());
+    kernel.setArg(arg++, m.countBuffer);
     if (m.hitsOut) {
       if (pixels * sizeof(cl_float4) > m.hitCapacity) {
         m.hitBuffer = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
         m.hitCapacity = pixels * sizeof(cl_float4);
       }
       m.hitsOut->resize(pixels);
-      kernel.setArg(7, m.hitBuffer);
+      kernel.setArg(arg, m.hitBuffer);
     }
     cl::NDRange local = m.local();
     size_t gx = size_t(p.width), gy = size_t(p.height);

@@ -1,7 +1,8 @@
-// A volume larger than the device's largest allocation or 3D image must fail with a clear
-// Error (Device), before anything is uploaded. Allocating gigabytes to provoke it is not
-// cheap, so the test lowers the limits a fresh context reports (white box: the limits live
-// in the context's DeviceInfo, read by Raycaster's upload).
+// A volume larger than the device's largest allocation or 3D image is split into z slabs;
+// one that cannot be split within the limits must fail with a clear Error (Device), before
+// anything is uploaded. Allocating gigabytes to provoke it is not cheap, so the tests lower
+// the limits a fresh context reports (white box: the limits live in the context's
+// DeviceInfo, read by Raycaster's upload).
 #include <gtest/gtest.h>
 
 #include "cl_context_impl.h"
@@ -24,6 +25,23 @@ TEST(StabilityDeviceLimits, VolumeLargerThanTheLargestAllocationIsAClearDeviceEr
     EXPECT_NE(m.find("16x16x16"), std::string::npos) << m;
     EXPECT_NE(m.find("largest allocation"), std::string::npos) << m;
   }
+}
+
+TEST(StabilityDeviceLimits, VolumeLargerThanTheLargestAllocationIsSplitIntoSlabs) {
+  ClContext ctx("cpu");
+  ctx.impl().info.maxAllocBytes = 8 * 16 * 16 * 2;  // 8 of the 16 slices
+  Volume v = test::constant({16, 16, 16}, 0);
+  Raycaster rc(ctx, v, VolumeStorage::Buffer);
+  EXPECT_EQ(rc.slabCount(), 4);  // 4 slices each, 2 of apron each side
+}
+
+TEST(StabilityDeviceLimits, VolumeDeeperThanTheLargest3dImageIsSplitIntoSlabs) {
+  ClContext ctx("cpu");
+  if (!ctx.device().imageSupport) GTEST_SKIP() << "no image support";
+  ctx.impl().info.maxImage3d[2] = 10;
+  Volume v = test::constant({4, 4, 16}, 0);
+  Raycaster rc(ctx, v, VolumeStorage::Image3d);
+  EXPECT_EQ(rc.slabCount(), 2);  // 8 slices each, 2 of apron on the inner side
 }
 
 TEST(StabilityDeviceLimits, VolumeLargerThanTheLargest3dImageIsAClearDeviceError) {

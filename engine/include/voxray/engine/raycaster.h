@@ -28,6 +28,9 @@ struct RaycasterOptions {
   // (kernels/packet.cl). Ignored elsewhere (GPUs diverge less one ray per work-item).
   bool packets = true;
   int localX = 0, localY = 0;  // work-group size; 0: 16x8 on GPUs, PoCL's choice on CPUs
+  // Largest bytes of one z slab of the volume on the device (apron included); 0: the
+  // device's largest allocation. Lower it to split volumes that fit (tests, benchmarks).
+  size_t maxSlabBytes = 0;
 };
 
 struct FrameStats {
@@ -40,8 +43,9 @@ struct FrameStats {
 class Raycaster {
  public:
   // Uploads the volume. Auto storage: image3d_t with hardware filtering on a GPU, a
-  // buffer with manual trilinear on a CPU. Throws Error (Device) when the volume does not
-  // fit the device, naming sizes and limits. The volume must outlive the raycaster (on a
+  // buffer with manual trilinear on a CPU. A volume larger than one allocation or 3D image
+  // is split into up to 8 slabs along z. Throws Error (Device) when it still does not fit
+  // the device, naming sizes and limits. The volume must outlive the raycaster (on a
   // CPU device the kernels read its voxels in place).
   Raycaster(ClContext& ctx, const Volume& volume, VolumeStorage storage = VolumeStorage::Auto);
   ~Raycaster();
@@ -60,6 +64,8 @@ class Raycaster {
   // The -D options a frame with these parameters compiles with.
   std::string variantOptions(const RenderParams& params) const;
   VolumeStorage storage() const;
+  int slabCount() const;  // z slabs the volume is stored in (1: one buffer or image)
+  // Uploads the volume again when maxSlabBytes changes (throws as the constructor).
   void setOptions(const RaycasterOptions& options);
   const RaycasterOptions& options() const;
   // Times the occupancy grid was classified (it should follow TF / iso changes only).

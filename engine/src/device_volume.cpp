@@ -1,0 +1,83 @@
+#include "device_volume.h"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+
+#include "cl_context_impl.h"
+#include "voxray/engine/raycaster.h"
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+namespace {
+
+std::string mib(size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
+
+}  // namespace
+
+void DeviceVolume::upload(ContextImpl& cl, const Volume& volume, VolumeStorage storage,
+                          size_t maxSlabBytes) {
+  const DeviceInfo& d = cl.info;
+  const glm::ivec3 n = volume.dims;
+  std::string dims = std::to_string(n.x) + "x" + std::to_string(n.y) + "x" + std::to_string(n.z);
+  bool image = storage == VolumeStorage::Image3d;
+  if (image) {
+    if (!d.imageSupport)
+      throw deviceError(d.name + " has no image support: render with the buffer storage");
+    // Slabs split z only.
+    if (size_t(n.x) > d.maxImage3d[0] || size_t(n.y) > d.maxImage3d[1])
+      throw deviceError("the volume (" + dims + ") exceeds " + d.name + "'s largest 3D image (" +
+                        std::to_string(d.maxImage3d[0]) + "x" + std::to_string(d.maxImage3d[1]) +
+                        "x" + std::to_string(d.maxImage3d[2]) + "): try --device cpu");
+  }
+  size_t sliceBytes = size_t(n.x) * size_t(n.y) * sizeof(int16_t);
+  size_t limit = d.maxAllocBytes;
+  std::string limitText = d.name + "'s largest allocation (" + mib(limit) + ")";
+  if (maxSlabBytes > 0 && maxSlabBytes < limit) {
+    limit = maxSlabBytes;
+    limitText = "the slab limit (" + mib(limit) + ")";
+  }
+  size_t maxSlices = limit / sliceBytes;
+  if (image && d.maxImage3d[2] < maxSlices) {
+    maxSlices = d.maxImage3d[2];
+    limitText = d.name + "'s largest 3D image depth (" + std::to_string(maxSlices) + " slices)";
+  }
+  std::optional<SlabPlan> plan = planSlabs(n.z, maxSlices);
+  if (!plan)
+    throw deviceError("the volume (" + dims + ", " + mib(volume.byteSize()) + ") exceeds " +
+                      limitText + " and does not split into " +
+                      std::to_string(SlabPlan::kMaxSlabs) + " slabs of " +
+                      std::to_string(maxSlices) + " slices (" + mib(sliceBytes) +
+                      " each) within it: crop or downsample it, or use a device with more memory");
+  plan_ = *plan;
+  buffers_.clear();
+  images_.clear();
+  clCall([&] {
+    for (const SlabPlan::Slab& s : plan_.slabs) {
+      auto* first = const_cast<int16_t*>(volume.voxels.data()) + size_t(s.first) * n.x * n.y;
+      if (image) {
+        // SNORM so the hardware filters it; the kernel scales back by 32767.
+        cl::ImageFormat format(CL_R, CL_SNORM_INT16);
+        images_.emplace_back(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, format,
+                             size_t(n.x), size_t(n.y), size_t(s.stored), 0, 0, first);
+      } else {
+        // A CPU device reads host memory anyway: use the volume where it is instead of a
+        // second copy (peak memory stays near the volume's size; slabs overlap by their
+        // aprons). The Volume outlives us.
+        cl_mem_flags where = d.isGpu ? CL_MEM_COPY_HOST_PTR : CL_MEM_USE_HOST_PTR;
+        buffers_.emplace_back(cl.context, CL_MEM_READ_ONLY | where, size_t(s.stored) * sliceBytes,
+                              first);
+      }
+    }
+    return 0;
+  });
+}
+
+cl_uint DeviceVolume::setArgs(cl::Kernel& kernel, cl_uint first) const {
+  for (const cl::Image3D& i : images_) kernel.setArg(first++, i);
+  for (const cl::Buffer& b : buffers_) kernel.setArg(first++, b);
+  return first;
+}
+
+}  // namespace voxray

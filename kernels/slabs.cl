@@ -1,0 +1,93 @@
+// Volumes split along z into SLABS slabs (engine/src/slab_plan.h) when one allocation or
+// 3D image cannot hold them. The kernels then take one volume argument per slab, vol0 ..
+// vol{SLABS-1}; slab s owns slices [s * D, (s + 1) * D) (D = P->slabs.x) and stores
+// SLAB_APRON more on each side, clamped to the volume. A sample or gradient at p reads the
+// slab owning floor(p.z), with z made relative to the slab's first stored slice and the
+// slab's stored depth as dims.z. Clamping at an apron edge then equals clamping at the
+// volume's edge: a stencil reaches one slice below floor(p.z) and two above, so apron edges
+// that are not volume edges are never reached. The shift p.z - first is exact in float
+// (first <= floor(p.z), both below 2^24), so the buffer path reads the same voxels with the
+// same weights as one volume.
+//   SLABS 1 (the default): one argument, `vol`; none of this is compiled.
+// Code reading the volume takes VOLUME_ARG and passes VOLUME on; sampling.cl and
+// gradients.cl pick the slab with WITH_SLAB.
+#ifndef VOXRAY_SLABS_CL
+#define VOXRAY_SLABS_CL
+
+#include "variant.cl"
+
+#if SLABS == 1
+#define VOLUME_ARG SLAB_TYPE vol
+#define VOLUME vol
+#else
+#define SLAB_APRON 2  // engine/src/slab_plan.h: SlabPlan::kApron
+
+#define SLAB_ARGS_2 SLAB_TYPE vol0, SLAB_TYPE vol1
+#define SLAB_ARGS_3 SLAB_ARGS_2, SLAB_TYPE vol2
+#define SLAB_ARGS_4 SLAB_ARGS_3, SLAB_TYPE vol3
+#define SLAB_ARGS_5 SLAB_ARGS_4, SLAB_TYPE vol4
+#define SLAB_ARGS_6 SLAB_ARGS_5, SLAB_TYPE vol5
+#define SLAB_ARGS_7 SLAB_ARGS_6, SLAB_TYPE vol6
+#define SLAB_ARGS_8 SLAB_ARGS_7, SLAB_TYPE vol7
+#define SLAB_NAMES_2 vol0, vol1
+#define SLAB_NAMES_3 SLAB_NAMES_2, vol2
+#define SLAB_NAMES_4 SLAB_NAMES_3, vol3
+#define SLAB_NAMES_5 SLAB_NAMES_4, vol4
+#define SLAB_NAMES_6 SLAB_NAMES_5, vol5
+#define SLAB_NAMES_7 SLAB_NAMES_6, vol6
+#define SLAB_NAMES_8 SLAB_NAMES_7, vol7
+#define SLAB_JOIN(a, b) a##b
+#define SLAB_EXPAND(a, b) SLAB_JOIN(a, b)
+#define VOLUME_ARG SLAB_EXPAND(SLAB_ARGS_, SLABS)
+#define VOLUME SLAB_EXPAND(SLAB_NAMES_, SLABS)
+
+#if STORAGE_IMAGE
+// Images cannot be held in variables: one case per slab. CALL(v) returns.
+#define SLAB_CASES_2(CALL) \
+  default:                 \
+  case 0:                  \
+    CALL(vol0);            \
+  case 1:                  \
+    CALL(vol1);
+#define SLAB_CASES_3(CALL) SLAB_CASES_2(CALL) case 2 : CALL(vol2);
+#define SLAB_CASES_4(CALL) SLAB_CASES_3(CALL) case 3 : CALL(vol3);
+#define SLAB_CASES_5(CALL) SLAB_CASES_4(CALL) case 4 : CALL(vol4);
+#define SLAB_CASES_6(CALL) SLAB_CASES_5(CALL) case 5 : CALL(vol5);
+#define SLAB_CASES_7(CALL) SLAB_CASES_6(CALL) case 6 : CALL(vol6);
+#define SLAB_CASES_8(CALL) SLAB_CASES_7(CALL) case 7 : CALL(vol7);
+#define WITH_SLAB(s, CALL) \
+  switch (s) { SLAB_EXPAND(SLAB_CASES_, SLABS)(CALL) }
+#else
+// Buffers: one copy of the reading code, on the selected pointer.
+inline __global const short* slab_pointer(VOLUME_ARG, int s) {
+  __global const short* slabs[SLABS] = {VOLUME};
+  return slabs[s];
+}
+#define WITH_SLAB(s, CALL) CALL(slab_pointer(VOLUME, s))
+#endif
+
+// The slab owning slice floor(z); outside the volume, the nearest end slab. Compares, not a
+// division: exact, cheap, and always a valid slab (even for NaN).
+inline int slab_of(__constant RaycastParams* P, float z) {
+  int zi = convert_int(clamp(floor(z), -1.0f, (float)P->dims.z));
+  int s = 0;
+  for (int k = 1; k < SLABS; ++k) s += zi >= k * P->slabs.x;
+  return s;
+}
+
+inline int slab_first(__constant RaycastParams* P, int s) {
+  return max(s * P->slabs.x - SLAB_APRON, 0);
+}
+
+// The slab's extent in voxels: the volume's x and y, its stored slices along z.
+inline int4 slab_dims(__constant RaycastParams* P, int s) {
+  int end = min((s + 1) * P->slabs.x + SLAB_APRON, P->dims.z);
+  return (int4)(P->dims.x, P->dims.y, end - slab_first(P, s), P->dims.w);
+}
+
+inline float3 slab_point(__constant RaycastParams* P, int s, float3 p) {
+  return (float3)(p.x, p.y, p.z - (float)slab_first(P, s));
+}
+#endif
+
+#endif
