@@ -26,6 +26,7 @@ struct BenchOptions {
   RenderFlags flags;
   std::string sizes = "512x384,640x480,800x600,1024x768", gradients = "central", device;
   std::string storage = "auto", kernel = "specialised", ess = "on", local, data, plot;
+  std::string orbit = "azimuth";
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
