@@ -6,6 +6,8 @@
 //   mode 0 (iso): occupied when [min, max] meets the iso range P->values.xy
 //   mode 1 (dvr): occupied when a table entry the cell's values can interpolate from has
 //                 opacity > 0; opaque_before[k] counts such entries below k
+//   mode 2 (mip): occupied when the cell's max is above the grey window's low end
+//                 P->dvr.x (anything at or below it shows black, like no sample at all)
 #include "params.cl"
 
 __kernel void classify(__global const short2* range, __constant RaycastParams* P,
@@ -16,6 +18,10 @@ __kernel void classify(__global const short2* range, __constant RaycastParams* P
   float lo = range[k].x - 0.5f, hi = range[k].y + 0.5f;
   if (mode == 0) {
     occ[k] = hi >= P->values.x && lo <= P->values.y;
+    return;
+  }
+  if (mode == 2) {
+    occ[k] = hi > P->dvr.x;
     return;
   }
   int last = P->dims.w - 1;

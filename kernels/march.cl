@@ -117,13 +117,15 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
   return acc + (1.0f - alpha) * P->background.xyz;
 }
 
-// Maximum intensity, mapped through the grey window.
+// Maximum intensity, mapped through the grey window. Values at or below the window's low
+// end show black whatever they are, so skipping starts from there; a ray that reaches
+// the high end is white whatever follows. Neither changes a pixel.
 inline float3 march_mip(VOLUME_ARG, __constant RaycastParams* P, CELL_ARGS, const Ray* r,
                         uint* count) {
-  float vmax = -FLT_MAX;
-  for (int i = 0, check = 0; i <= r->n; ++i) {
+  float vmax = -FLT_MAX, low = P->dvr.x, high = P->dvr.x + 1.0f / P->dvr.y;
+  for (int i = 0, check = 0; i <= r->n && vmax < high; ++i) {
     if (ESS && i >= check) {
-      i = ess_next_mip(range, P, r, i, vmax, &check);
+      i = ess_next_mip(range, P, r, i, fmax(vmax, low), &check);
       if (i > r->n) break;
     }
     ++*count;

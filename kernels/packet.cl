@@ -65,8 +65,10 @@ inline int8 past_voxel_cell8(const RayPacket* r, float8 t, float step) {
 }
 
 // ess_leap (skip.cl) for the lanes in `need`: returns their next index, sets their *check.
+// mip also passes an occupied cell whose max cannot raise a lane's floor (its running
+// maximum, or the window's low end), as ess_next_mip does.
 inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, int8 i, int8 need,
-                      float step, bool segments, int8* check) {
+                      float step, bool segments, bool mip, float8 floor_v, int8* check) {
   int4 last = P->cells - 1;
   int8 ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
   int8 flat_x = r->dx == 0.0f, flat_y = r->dy == 0.0f, flat_z = r->dz == 0.0f;
@@ -93,6 +95,12 @@ inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r
     float8 tz = select((pz * (float)CELL - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
     float8 t_exit = fmin(tx, fmin(ty, tz));
     int8 found = pending & (d == 0);
+    if (mip) {
+      float8 cell_max =
+          convert_float8((short8)(range[k.s0].y, range[k.s1].y, range[k.s2].y, range[k.s3].y,
+                                  range[k.s4].y, range[k.s5].y, range[k.s6].y, range[k.s7].y));
+      found &= cell_max > floor_v;
+    }
     int8 first = max(i, index_at8(r, t_land, step, segments));
     result = select(result, first, found);
     *check = select(*check, max(first + 1, index_at8(r, t_exit, step, segments)), found);
@@ -246,7 +254,8 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
       // leap once at least half the active lanes have left their occupied cell.
       int8 need = active & (i >= check);
       if (any(need) && 2 * lanes8(need) >= lanes8(active)) {
-        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, false, &check), need);
+        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, false, false, 0.0f, &check),
+                   need);
         active &= ~(need & (i > r.n));
         if (!any(active)) break;
       }
@@ -330,7 +339,8 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
     if (ESS) {
       int8 need = active & (i >= check);  // as in iso_packet
       if (any(need) && 2 * lanes8(need) >= lanes8(active)) {
-        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, true, &check), need);
+        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, true, false, 0.0f, &check),
+                   need);
         active &= ~(need & (i > r.n));
         if (!any(active)) break;
       }
@@ -374,6 +384,112 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
   Vec8 color = {acc[0] + (1.0f - alpha) * P->background.x,
                 acc[1] + (1.0f - alpha) * P->background.y,
                 acc[2] + (1.0f - alpha) * P->background.z};
+  write_packet(P, out, count, gx, gy, color, samples);
+}
+
+// For each lane, the macro cell along its ray with the largest max, as [*t_in, *t_out];
+// returns that max. A walk over the cells only (3D DDA by exit planes), no samples.
+inline float8 brightest_cell8(__global const short2* range, __constant RaycastParams* P,
+                              const RayPacket* r, float8* t_in, float8* t_out) {
+  int4 last = P->cells - 1;
+  int8 ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
+  float8 nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
+  float8 best = -FLT_MAX, t = r->t0, t_enter = r->t0;
+  *t_in = *t_out = r->t0;
+  int8 pending = r->n >= 0;
+  int guard = last.x + last.y + last.z + 16;
+  for (int g = 0; g < guard && any(pending); ++g) {
+    int8 cx = clamp(convert_int8(floor((r->ox + t * r->dx) * (1.0f / CELL))), 0, last.x);
+    int8 cy = clamp(convert_int8(floor((r->oy + t * r->dy) * (1.0f / CELL))), 0, last.y);
+    int8 cz = clamp(convert_int8(floor((r->oz + t * r->dz) * (1.0f / CELL))), 0, last.z);
+    int8 k = select((int8)(0), (cz * P->cells.y + cy) * P->cells.x + cx, pending);
+    float8 cell_max =
+        convert_float8((short8)(range[k.s0].y, range[k.s1].y, range[k.s2].y, range[k.s3].y,
+                                range[k.s4].y, range[k.s5].y, range[k.s6].y, range[k.s7].y));
+    // Exit planes of this cell; an axis at the grid's edge (or parallel) reaches to t1.
+    float8 px = convert_float8(select(cx, cx + 1, ahead_x)) * (float)CELL;
+    float8 py = convert_float8(select(cy, cy + 1, ahead_y)) * (float)CELL;
+    float8 pz = convert_float8(select(cz, cz + 1, ahead_z)) * (float)CELL;
+    int8 open_x = select(cx <= 0, cx >= last.x, ahead_x) | (r->dx == 0.0f);
+    int8 open_y = select(cy <= 0, cy >= last.y, ahead_y) | (r->dy == 0.0f);
+    int8 open_z = select(cz <= 0, cz >= last.z, ahead_z) | (r->dz == 0.0f);
+    float8 tx = select((px - r->ox) * r->ix, (float8)(FLT_MAX), open_x);
+    float8 ty = select((py - r->oy) * r->iy, (float8)(FLT_MAX), open_y);
+    float8 tz = select((pz - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
+    float8 t_exit = fmin(fmin(tx, fmin(ty, tz)), r->t1);
+    int8 better = pending & (cell_max > best);
+    best = select(best, cell_max, better);
+    *t_in = select(*t_in, t_enter, better);
+    *t_out = select(*t_out, t_exit, better);
+    pending &= t_exit < r->t1;
+    t_enter = select(t_enter, t_exit, pending);
+    t = select(t, fmax(t, t_exit) + fmax(nudge, fabs(t_exit) * 5e-7f), pending);
+  }
+  return best;
+}
+
+// march_mip (march.cl) for a 4x2 packet. Only what can change the windowed grey is
+// sampled: values at or below the window's low end show black, so the running maximum
+// starts there for skipping; a lane stops once it reaches the window's high end (white);
+// and with trilinear the rest of a voxel cell whose eight voxels cannot exceed the lane's
+// floor is skipped. Each is exact: the grey of every pixel is unchanged.
+inline void mip_packet(__global const short* restrict vol, __constant RaycastParams* P,
+                       __global uchar4* out, CELL_ARGS, __global uint* count, int gx, int gy) {
+  float step = P->view.z;
+  RayPacket r;
+  float8 world[6];
+  pixel_rays8(P, gx, gy, &r, world);
+  float low = P->dvr.x, high = P->dvr.x + 1.0f / P->dvr.y;
+  float8 vmax = -FLT_MAX;
+  int8 i = 0, check = 0, samples = 0;
+  int8 active = r.n >= 0;
+  if (ESS) {
+    // The maximum does not depend on the order of the samples: take the brightest cell's
+    // first, so that the walk from the start skips nearly every cell below it.
+    float8 t_in, t_out;
+    float8 best = brightest_cell8(range, P, &r, &t_in, &t_out);
+    active &= best > low;  // every sample at or below the window's low end: black
+    int8 j = max(index_at8(&r, t_in, step, false) - 1, 0);
+    int8 end = min(index_at8(&r, t_out, step, false), r.n);
+    int8 first = active & (j <= end);
+    while (any(first)) {
+      float8 t = sample_t8(&r, j, step);
+      float8 v = sample8(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz);
+      samples -= first;
+      vmax = select(vmax, fmax(vmax, v), first);
+      j += 1;
+      first &= j <= end;
+    }
+    active &= vmax < high;
+  }
+  while (any(active)) {
+    if (ESS) {
+      // Every active lane: mip's leaps mostly pass single cells below a lane's floor, and
+      // waiting for all lanes ran 1.13x faster than iso's half (CThead, VTK's orbit).
+      int8 need = active & (i >= check);
+      if (any(need) && lanes8(need) == lanes8(active)) {
+        float8 floor_v = fmax(vmax, low);
+        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, false, true, floor_v, &check),
+                   need);
+        active &= ~(need & (i > r.n));
+        if (!any(active)) break;
+      }
+    }
+    float8 t = sample_t8(&r, i, step);
+    float8 vlo, vhi;
+    float8 v = sample8_range(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz, &vlo, &vhi);
+    samples -= active;
+    vmax = select(vmax, fmax(vmax, v), active);
+    active &= vmax < high;
+    int8 cell_below = active & (vhi <= fmax(vmax, low));
+    if (INTERP != 0 && any(cell_below) != 0)
+      i = select(i + 1, max(i + 1, past_voxel_cell8(&r, t, step)), cell_below);
+    else
+      i += 1;
+    active &= i <= r.n;
+  }
+  float8 grey = clamp((vmax - low) * P->dvr.y, 0.0f, 1.0f);
+  Vec8 color = {grey, grey, grey};
   write_packet(P, out, count, gx, gy, color, samples);
 }
 

@@ -84,8 +84,10 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
 #if PACKET
   if (MODE == 0)
     iso_packet(vol, P, lut, out, leap, range, count, get_global_id(0), get_global_id(1));
-  else
+  else if (MODE == 1)
     dvr_packet(vol, P, lut, out, leap, range, count, get_global_id(0), get_global_id(1));
+  else
+    mip_packet(vol, P, out, leap, range, count, get_global_id(0), get_global_id(1));
 #else
   int px = get_global_id(0), py = get_global_id(1);
   int width = P->image.x, height = P->image.y;

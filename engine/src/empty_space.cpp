@@ -24,11 +24,11 @@ void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
 
 void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const RaycastParams& k,
                           Mode mode, const Lut& lut) {
-  if (mode == Mode::Mip) return;
-  int m = mode == Mode::Iso ? 0 : 1;
+  int m = mode == Mode::Iso ? 0 : mode == Mode::Dvr ? 1 : 2;
   // iso depends on the range only; dvr on which table entries are not transparent and on
   // where the table sits in stored units.
   std::vector<float> key = {float(m), k.values.s[0], k.values.s[1]};
+  if (m == 2) key = {float(m), k.dvr.s[0]};
   std::vector<int> opaque;
   if (m == 1) {
     key = {float(m), k.values.s[2], k.values.s[3]};

@@ -108,8 +108,8 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
 bool Raycaster::Impl::packets(const RenderParams& p) const {
   // packet.cl reads one volume argument and indexes voxels with int.
   return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
-         p.mode != Mode::Mip && storage == VolumeStorage::Buffer && !cl.info.isGpu &&
-         device.plan().count() == 1 && volume.voxelCount() < (size_t(1) << 31);
+         storage == VolumeStorage::Buffer && !cl.info.isGpu && device.plan().count() == 1 &&
+         volume.voxelCount() < (size_t(1) << 31);
 }
 
 cl::NDRange Raycaster::Impl::local() const {
