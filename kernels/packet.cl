@@ -337,8 +337,10 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
   int8 active = r.n >= 0;
   while (any(active)) {
     if (ESS) {
-      int8 need = active & (i >= check);  // as in iso_packet
-      if (any(need) && 2 * lanes8(need) >= lanes8(active)) {
+      // Every active lane, as in mip_packet: 3 % less CPU time than iso's half (CThead,
+      // VTK's transfer function, both orbits).
+      int8 need = active & (i >= check);
+      if (any(need) && lanes8(need) == lanes8(active)) {
         i = select(i, ess_leap8(leap, range, P, &r, i, need, step, true, false, 0.0f, &check),
                    need);
         active &= ~(need & (i > r.n));
