@@ -389,45 +389,93 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
   write_packet(P, out, count, gx, gy, color, samples);
 }
 
-// For each lane, the macro cell along its ray with the largest max, as [*t_in, *t_out];
-// returns that max. A walk over the cells only (3D DDA by exit planes), no samples.
-inline float8 brightest_cell8(__global const short2* range, __constant RaycastParams* P,
-                              const RayPacket* r, float8* t_in, float8* t_out) {
+// The macro cell that the point at t lies in (its index in *k) and where each lane's ray
+// leaves it (at most t1). An axis at the grid's edge (or parallel) reaches to t1.
+inline float8 cell_at8(__constant RaycastParams* P, const RayPacket* r, float8 t, int8 pending,
+                       int8* k) {
   int4 last = P->cells - 1;
+  int8 cx = clamp(convert_int8(floor((r->ox + t * r->dx) * (1.0f / CELL))), 0, last.x);
+  int8 cy = clamp(convert_int8(floor((r->oy + t * r->dy) * (1.0f / CELL))), 0, last.y);
+  int8 cz = clamp(convert_int8(floor((r->oz + t * r->dz) * (1.0f / CELL))), 0, last.z);
+  *k = select((int8)(0), (cz * P->cells.y + cy) * P->cells.x + cx, pending);
   int8 ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
+  float8 px = convert_float8(select(cx, cx + 1, ahead_x)) * (float)CELL;
+  float8 py = convert_float8(select(cy, cy + 1, ahead_y)) * (float)CELL;
+  float8 pz = convert_float8(select(cz, cz + 1, ahead_z)) * (float)CELL;
+  int8 open_x = select(cx <= 0, cx >= last.x, ahead_x) | (r->dx == 0.0f);
+  int8 open_y = select(cy <= 0, cy >= last.y, ahead_y) | (r->dy == 0.0f);
+  int8 open_z = select(cz <= 0, cz >= last.z, ahead_z) | (r->dz == 0.0f);
+  float8 tx = select((px - r->ox) * r->ix, (float8)(FLT_MAX), open_x);
+  float8 ty = select((py - r->oy) * r->iy, (float8)(FLT_MAX), open_y);
+  float8 tz = select((pz - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
+  return fmin(fmin(tx, fmin(ty, tz)), r->t1);
+}
+
+inline float8 cell_max8(__global const short2* range, int8 k) {
+  return convert_float8((short8)(range[k.s0].y, range[k.s1].y, range[k.s2].y, range[k.s3].y,
+                                 range[k.s4].y, range[k.s5].y, range[k.s6].y, range[k.s7].y));
+}
+
+// Steps of the cell walk a mip packet keeps (float8 x 3 each in private memory); a ray
+// that crosses more cells takes the walk-as-you-go loop instead.
+#define MIP_WALK 256
+
+// Walks every lane's cells in order (a 3D DDA by exit planes, no samples) and keeps step
+// g's cell in max[g], t_in[g], t_out[g], its max as -FLT_MAX where it cannot show above
+// the window's low end. Returns the number of steps, or -1 when a ray needs more.
+inline int walk_cells8(__global const short2* range, __constant RaycastParams* P,
+                       const RayPacket* r, float low, float8* max, float8* t_in, float8* t_out) {
   float8 nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
-  float8 best = -FLT_MAX, t = r->t0, t_enter = r->t0;
-  *t_in = *t_out = r->t0;
+  float8 t = r->t0, t_enter = r->t0;
   int8 pending = r->n >= 0;
-  int guard = last.x + last.y + last.z + 16;
-  for (int g = 0; g < guard && any(pending); ++g) {
-    int8 cx = clamp(convert_int8(floor((r->ox + t * r->dx) * (1.0f / CELL))), 0, last.x);
-    int8 cy = clamp(convert_int8(floor((r->oy + t * r->dy) * (1.0f / CELL))), 0, last.y);
-    int8 cz = clamp(convert_int8(floor((r->oz + t * r->dz) * (1.0f / CELL))), 0, last.z);
-    int8 k = select((int8)(0), (cz * P->cells.y + cy) * P->cells.x + cx, pending);
-    float8 cell_max =
-        convert_float8((short8)(range[k.s0].y, range[k.s1].y, range[k.s2].y, range[k.s3].y,
-                                range[k.s4].y, range[k.s5].y, range[k.s6].y, range[k.s7].y));
-    // Exit planes of this cell; an axis at the grid's edge (or parallel) reaches to t1.
-    float8 px = convert_float8(select(cx, cx + 1, ahead_x)) * (float)CELL;
-    float8 py = convert_float8(select(cy, cy + 1, ahead_y)) * (float)CELL;
-    float8 pz = convert_float8(select(cz, cz + 1, ahead_z)) * (float)CELL;
-    int8 open_x = select(cx <= 0, cx >= last.x, ahead_x) | (r->dx == 0.0f);
-    int8 open_y = select(cy <= 0, cy >= last.y, ahead_y) | (r->dy == 0.0f);
-    int8 open_z = select(cz <= 0, cz >= last.z, ahead_z) | (r->dz == 0.0f);
-    float8 tx = select((px - r->ox) * r->ix, (float8)(FLT_MAX), open_x);
-    float8 ty = select((py - r->oy) * r->iy, (float8)(FLT_MAX), open_y);
-    float8 tz = select((pz - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
-    float8 t_exit = fmin(fmin(tx, fmin(ty, tz)), r->t1);
-    int8 better = pending & (cell_max > best);
-    best = select(best, cell_max, better);
-    *t_in = select(*t_in, t_enter, better);
-    *t_out = select(*t_out, t_exit, better);
+  int g = 0;
+  for (; any(pending); ++g) {
+    if (g == MIP_WALK) return -1;
+    int8 k;
+    float8 t_exit = cell_at8(P, r, t, pending, &k);
+    float8 m = cell_max8(range, k);
+    max[g] = select((float8)(-FLT_MAX), m, pending & (m > low));
+    t_in[g] = t_enter;
+    t_out[g] = t_exit;
     pending &= t_exit < r->t1;
     t_enter = select(t_enter, t_exit, pending);
     t = select(t, fmax(t, t_exit) + fmax(nudge, fabs(t_exit) * 5e-7f), pending);
   }
-  return best;
+  return g;
+}
+
+// Lane l of v[g] for each lane's own step g = at.sl.
+inline float8 pick8(const float8* v, int8 at) {
+  const float* f = (const float*)v;
+  return (float8)(f[at.s0 * 8], f[at.s1 * 8 + 1], f[at.s2 * 8 + 2], f[at.s3 * 8 + 3],
+                  f[at.s4 * 8 + 4], f[at.s5 * 8 + 5], f[at.s6 * 8 + 6], f[at.s7 * 8 + 7]);
+}
+
+// The samples with t in [t_in, t_out] (one more on either side against rounding) for the
+// lanes in `todo`, raising *vmax; with trilinear, the rest of a voxel cell whose eight
+// voxels cannot raise the lane's floor is skipped.
+inline void sample_span8(__global const short* restrict vol, __constant RaycastParams* P,
+                         const RayPacket* r, float8 t_in, float8 t_out, int8 todo, float low,
+                         float high, float8* vmax, int8* samples) {
+  float step = P->view.z;
+  int8 j = max(index_at8(r, t_in, step, false) - 1, 0);
+  int8 end = min(index_at8(r, t_out, step, false), r->n);
+  todo &= j <= end;
+  while (any(todo)) {
+    float8 t = sample_t8(r, j, step);
+    float8 vlo, vhi;
+    float8 v =
+        sample8_range(vol, P, r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz, &vlo, &vhi);
+    *samples -= todo;
+    *vmax = select(*vmax, fmax(*vmax, v), todo);
+    todo &= *vmax < high;
+    int8 cell_below = todo & (vhi <= fmax(*vmax, low));
+    if (INTERP != 0 && any(cell_below) != 0)
+      j = select(j + 1, max(j + 1, past_voxel_cell8(r, t, step)), cell_below);
+    else
+      j += 1;
+    todo &= j <= end;
+  }
 }
 
 // march_mip (march.cl) for a 4x2 packet. Only what can change the windowed grey is
@@ -446,23 +494,30 @@ inline void mip_packet(__global const short* restrict vol, __constant RaycastPar
   int8 i = 0, check = 0, samples = 0;
   int8 active = r.n >= 0;
   if (ESS) {
-    // The maximum does not depend on the order of the samples: take the brightest cell's
-    // first, so that the walk from the start skips nearly every cell below it.
-    float8 t_in, t_out;
-    float8 best = brightest_cell8(range, P, &r, &t_in, &t_out);
-    active &= best > low;  // every sample at or below the window's low end: black
-    int8 j = max(index_at8(&r, t_in, step, false) - 1, 0);
-    int8 end = min(index_at8(&r, t_out, step, false), r.n);
-    int8 first = active & (j <= end);
-    while (any(first)) {
-      float8 t = sample_t8(&r, j, step);
-      float8 v = sample8(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz);
-      samples -= first;
-      vmax = select(vmax, fmax(vmax, v), first);
-      j += 1;
-      first &= j <= end;
+    // The maximum does not depend on the order of the samples: walk the cells once, then
+    // sample them brightest first, until no cell left can raise a lane's maximum (or
+    // show above the window's low end). Most rays sample a few cells.
+    float8 cell_max[MIP_WALK], t_in[MIP_WALK], t_out[MIP_WALK];
+    int steps = walk_cells8(range, P, &r, low, cell_max, t_in, t_out);
+    if (steps >= 0) {
+      while (any(active)) {
+        float8 best = -FLT_MAX;
+        int8 at = 0;
+        for (int g = 0; g < steps; ++g) {
+          int8 better = cell_max[g] > best;
+          best = select(best, cell_max[g], better);
+          at = select(at, (int8)(g), better);
+        }
+        active &= best > fmax(vmax, low);
+        if (!any(active)) break;
+        float* m = (float*)cell_max;  // taken: lane l of step at.sl
+        m[at.s0 * 8] = m[at.s1 * 8 + 1] = m[at.s2 * 8 + 2] = m[at.s3 * 8 + 3] = -FLT_MAX;
+        m[at.s4 * 8 + 4] = m[at.s5 * 8 + 5] = m[at.s6 * 8 + 6] = m[at.s7 * 8 + 7] = -FLT_MAX;
+        sample_span8(vol, P, &r, pick8(t_in, at), pick8(t_out, at), active, low, high, &vmax,
+                     &samples);
+        active &= vmax < high;
+      }
     }
-    active &= vmax < high;
   }
   while (any(active)) {
     if (ESS) {
