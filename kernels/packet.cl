@@ -451,15 +451,17 @@ inline float8 pick8(const float8* v, int8 at) {
                   f[at.s4 * 8 + 4], f[at.s5 * 8 + 5], f[at.s6 * 8 + 6], f[at.s7 * 8 + 7]);
 }
 
-// The samples with t in [t_in, t_out] (one more on either side against rounding) for the
-// lanes in `todo`, raising *vmax; with trilinear, the rest of a voxel cell whose eight
-// voxels cannot raise the lane's floor is skipped.
+// The samples with t in [t_in, t_out) (up to the last one at t1) for the lanes in `todo`,
+// raising *vmax; with trilinear, the rest of a voxel cell whose eight voxels cannot raise
+// the lane's floor is skipped. A sample that rounding puts in the neighbouring cell is
+// still within a voxel of the face, and so within that cell's max (its apron): skipping
+// it with that cell is exact.
 inline void sample_span8(__global const short* restrict vol, __constant RaycastParams* P,
                          const RayPacket* r, float8 t_in, float8 t_out, int8 todo, float low,
                          float high, float8* vmax, int8* samples) {
   float step = P->view.z;
-  int8 j = max(index_at8(r, t_in, step, false) - 1, 0);
-  int8 end = min(index_at8(r, t_out, step, false), r->n);
+  int8 j = index_at8(r, t_in, step, false);
+  int8 end = select(index_at8(r, t_out, step, false) - 1, r->n, t_out >= r->t1);
   todo &= j <= end;
   while (any(todo)) {
     float8 t = sample_t8(r, j, step);
