@@ -451,17 +451,13 @@ inline float8 pick8(const float8* v, int8 at) {
                   f[at.s4 * 8 + 4], f[at.s5 * 8 + 5], f[at.s6 * 8 + 6], f[at.s7 * 8 + 7]);
 }
 
-// The samples with t in [t_in, t_out) (up to the last one at t1) for the lanes in `todo`,
-// raising *vmax; with trilinear, the rest of a voxel cell whose eight voxels cannot raise
-// the lane's floor is skipped. A sample that rounding puts in the neighbouring cell is
-// still within a voxel of the face, and so within that cell's max (its apron): skipping
-// it with that cell is exact.
+// Samples j ... end for the lanes in `todo`, raising *vmax until it reaches the window's
+// high end; with trilinear, the rest of a voxel cell whose eight voxels cannot raise the
+// lane's floor (its maximum, or the window's low end) is skipped.
 inline void sample_span8(__global const short* restrict vol, __constant RaycastParams* P,
-                         const RayPacket* r, float8 t_in, float8 t_out, int8 todo, float low,
-                         float high, float8* vmax, int8* samples) {
+                         const RayPacket* r, int8 j, int8 end, int8 todo, float low, float high,
+                         float8* vmax, int8* samples) {
   float step = P->view.z;
-  int8 j = index_at8(r, t_in, step, false);
-  int8 end = select(index_at8(r, t_out, step, false) - 1, r->n, t_out >= r->t1);
   todo &= j <= end;
   while (any(todo)) {
     float8 t = sample_t8(r, j, step);
@@ -515,37 +511,32 @@ inline void mip_packet(__global const short* restrict vol, __constant RaycastPar
         float* m = (float*)cell_max;  // taken: lane l of step at.sl
         m[at.s0 * 8] = m[at.s1 * 8 + 1] = m[at.s2 * 8 + 2] = m[at.s3 * 8 + 3] = -FLT_MAX;
         m[at.s4 * 8 + 4] = m[at.s5 * 8 + 5] = m[at.s6 * 8 + 6] = m[at.s7 * 8 + 7] = -FLT_MAX;
-        sample_span8(vol, P, &r, pick8(t_in, at), pick8(t_out, at), active, low, high, &vmax,
+        // The samples with t in [t_in, t_out), up to the last one at t1. One that rounding
+        // puts in the neighbouring cell is within a voxel of the face, and so within
+        // that cell's max (its apron): leaving it to that cell is exact.
+        float8 from = pick8(t_in, at), to = pick8(t_out, at);
+        int8 end = select(index_at8(&r, to, step, false) - 1, r.n, to >= r.t1);
+        sample_span8(vol, P, &r, index_at8(&r, from, step, false), end, active, low, high, &vmax,
                      &samples);
         active &= vmax < high;
       }
     }
   }
+  // Without ESS, or for a ray that crosses more cells than the walk keeps: in order, a
+  // span at a time between leaps past cells that cannot raise a lane's floor.
   while (any(active)) {
+    int8 end = r.n;
     if (ESS) {
-      // Every active lane: mip's leaps mostly pass single cells below a lane's floor, and
-      // waiting for all lanes ran 1.13x faster than iso's half (CThead, VTK's orbit).
-      int8 need = active & (i >= check);
-      if (any(need) && lanes8(need) == lanes8(active)) {
-        float8 floor_v = fmax(vmax, low);
-        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, false, true, floor_v, &check),
-                   need);
-        active &= ~(need & (i > r.n));
-        if (!any(active)) break;
-      }
+      float8 floor_v = fmax(vmax, low);
+      i = select(i, ess_leap8(leap, range, P, &r, i, active, step, false, true, floor_v, &check),
+                 active);
+      active &= i <= r.n;
+      if (!any(active)) break;
+      end = min(check - 1, r.n);
     }
-    float8 t = sample_t8(&r, i, step);
-    float8 vlo, vhi;
-    float8 v = sample8_range(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz, &vlo, &vhi);
-    samples -= active;
-    vmax = select(vmax, fmax(vmax, v), active);
-    active &= vmax < high;
-    int8 cell_below = active & (vhi <= fmax(vmax, low));
-    if (INTERP != 0 && any(cell_below) != 0)
-      i = select(i + 1, max(i + 1, past_voxel_cell8(&r, t, step)), cell_below);
-    else
-      i += 1;
-    active &= i <= r.n;
+    sample_span8(vol, P, &r, i, end, active, low, high, &vmax, &samples);
+    i = end + 1;
+    active &= (i <= r.n) & (vmax < high);
   }
   float8 grey = clamp((vmax - low) * P->dvr.y, 0.0f, 1.0f);
   Vec8 color = {grey, grey, grey};

@@ -50,25 +50,34 @@ RenderParams params(Mode mode, Gradient g, Interp interp, bool jitter) {
   return p;
 }
 
-// Noise from -1000 to 1500 with two bright blobs: along a ray the running maximum keeps
+// Noise from -400 to 600 with two bright blobs: along a ray the running maximum keeps
 // rising, so mip's skipping (cells and voxel cells that cannot raise it, or that stay
 // below the window) decides often, both ways.
+Volume noisy(glm::ivec3 dims) {
+  Volume n = test::constant(dims, 0);
+  glm::dvec3 blobs[2] = {glm::dvec3(dims) * 0.3, glm::dvec3(dims) * 0.7};
+  for (int z = 0; z < n.dims.z; ++z)
+    for (int y = 0; y < n.dims.y; ++y)
+      for (int x = 0; x < n.dims.x; ++x) {
+        uint32_t h = uint32_t(x) * 73856093u ^ uint32_t(y) * 19349663u ^ uint32_t(z) * 83492791u;
+        h = (h ^ (h >> 13)) * 0x5bd1e995u;
+        double value = -400.0 + 1000.0 * double((h >> 8) & 0xffff) / 65535.0;
+        for (glm::dvec3 c : blobs)
+          if (glm::length(glm::dvec3(x, y, z) - c) < 4.0) value = 1500.0 - 20.0 * (x % 40);
+        n.voxels[n.index(x, y, z)] = int16_t(value);
+      }
+  return n;
+}
+
 const Volume& noisyVolume() {
-  static Volume v = [] {
-    Volume n = test::constant({48, 40, 36}, 0);
-    for (int z = 0; z < n.dims.z; ++z)
-      for (int y = 0; y < n.dims.y; ++y)
-        for (int x = 0; x < n.dims.x; ++x) {
-          uint32_t h = uint32_t(x) * 73856093u ^ uint32_t(y) * 19349663u ^ uint32_t(z) * 83492791u;
-          h = (h ^ (h >> 13)) * 0x5bd1e995u;
-          double value = -1000.0 + 2500.0 * double((h >> 8) & 0xffff) / 65535.0;
-          value *= 0.4;  // mostly -400 ... 600
-          for (glm::dvec3 c : {glm::dvec3(14, 12, 10), glm::dvec3(33, 27, 24)})
-            if (glm::length(glm::dvec3(x, y, z) - c) < 4.0) value = 1500.0 - 20.0 * x;
-          n.voxels[n.index(x, y, z)] = int16_t(value);
-        }
-    return n;
-  }();
+  static Volume v = noisy({48, 40, 36});
+  return v;
+}
+
+// Long along x: a ray along it crosses more macro cells than a mip packet's walk keeps
+// (kernels/packet.cl, MIP_WALK), so it takes the in-order loop.
+const Volume& longVolume() {
+  static Volume v = noisy({1100, 12, 12});
   return v;
 }
 
@@ -131,36 +140,39 @@ TEST(EmptySpaceExtras, PacketsFillImagesOfOddSizes) {
 }
 
 // mip skips by the window too: a window whose low end is inside the data (values below it
-// show black) and whose high end is reached (rays stop once white). Every pixel must stay.
+// show black) and whose high end is reached (rays stop once white). Every pixel must stay,
+// through the packets' walk-once path and, on the long volume, their in-order loop.
 TEST(EmptySpaceExtras, MipSkippingByWindowAndMaximumChangesNoPixel) {
   using K = RaycasterOptions::Kernel;
-  for (Interp interp : {Interp::Linear, Interp::Nearest})
-    for (glm::dvec2 window : {glm::dvec2(0.0, 0.0), glm::dvec2(700.0, 450.0)}) {
-      SCOPED_TRACE(testing::Message() << "interp " << int(interp) << " window " << window.x);
-      RenderParams p = params(Mode::Mip, Gradient::Central, interp, false);
-      p.windowWidth = window.x;
-      p.windowLevel = window.y;
-      const Volume& v = noisyVolume();
-      // Skipping on and off: the same kernel must give the same pixels.
-      Image plain = render(K::Specialised, false, p, false, v);
-      EXPECT_EQ(maxDiff(plain, render(K::Specialised, true, p, false, v)), 0);
-      Image packets = render(K::Specialised, false, p, true, v);
-      EXPECT_EQ(maxDiff(packets, render(K::Specialised, true, p, true, v)), 0);
-      // Other compilations of the same algorithm: float contraction, one level at most.
-      EXPECT_LE(maxDiff(plain, packets), 1);
-      EXPECT_LE(maxDiff(plain, render(K::Uber, true, p, false, v)), 1);
-      // Not a blank test: the narrow window saturates some pixels and blacks out others.
-      int white = 0, black = 0, grey = 0;
-      for (size_t i = 0; i < plain.rgba.size(); i += 4) {
-        white += plain.rgba[i] == 255;
-        black += plain.rgba[i] == 0;
-        grey += plain.rgba[i] > 0 && plain.rgba[i] < 255;
+  for (bool along : {false, true})
+    for (Interp interp : {Interp::Linear, Interp::Nearest})
+      for (glm::dvec2 window : {glm::dvec2(0.0, 0.0), glm::dvec2(700.0, 450.0)}) {
+        SCOPED_TRACE(testing::Message()
+                     << "long " << along << " interp " << int(interp) << " window " << window.x);
+        RenderParams p = params(Mode::Mip, Gradient::Central, interp, false);
+        p.windowWidth = window.x;
+        p.windowLevel = window.y;
+        if (along) p.camera = {90.0, 0.0, 60.0};  // from the left, down the long axis
+        const Volume& v = along ? longVolume() : noisyVolume();
+        // Skipping on and off: the same kernel must give the same pixels.
+        Image plain = render(K::Specialised, false, p, false, v);
+        EXPECT_EQ(maxDiff(plain, render(K::Specialised, true, p, false, v)), 0);
+        Image packets = render(K::Specialised, false, p, true, v);
+        EXPECT_EQ(maxDiff(packets, render(K::Specialised, true, p, true, v)), 0);
+        // Other compilations of the same algorithm: float contraction, one level at most.
+        EXPECT_LE(maxDiff(plain, packets), 1);
+        EXPECT_LE(maxDiff(plain, render(K::Uber, true, p, false, v)), 1);
+        // Not a blank test: greys, and with the narrow window saturated pixels too.
+        int white = 0, grey = 0;
+        for (size_t i = 0; i < plain.rgba.size(); i += 4) {
+          white += plain.rgba[i] == 255;
+          grey += plain.rgba[i] > 0 && plain.rgba[i] < 255;
+        }
+        EXPECT_GT(grey, 100);
+        if (window.x > 0.0) {
+          EXPECT_GT(white, 20);
+        }
       }
-      EXPECT_GT(grey, 100);
-      if (window.x > 0.0) {
-        EXPECT_GT(white, 20);
-      }
-    }
 }
 
 TEST(EmptySpaceExtras, ClassifiesOnlyWhenTheRangeOrTableChanges) {
