@@ -1,7 +1,7 @@
-// iso for CPUs: one work-item marches a packet of 4x2 neighbouring rays with float8 lanes.
-// PoCL runs a per-ray loop as scalar code, one ray at a time; here the arithmetic of
-// eight rays shares each vector instruction and only the volume loads stay scalar.
-// The algorithm is march_iso's (march.cl) lane by lane: the same samples, the same
+// iso, dvr and mip for CPUs: one work-item marches a packet of 4x2 neighbouring rays with
+// float8 lanes. PoCL runs a per-ray loop as scalar code, one ray at a time; here the
+// arithmetic of eight rays shares each vector instruction and only the volume loads stay
+// scalar. The algorithms are march.cl's lane by lane: the same samples, the same
 // empty-space leaps (skip.cl's ess_leap), the same bisection, so the image is the same.
 // Lanes whose ray is done are masked; the packet runs until its last ray is.
 // Volumes here are buffers (STORAGE_IMAGE 0) of fewer than 2^31 voxels (int indices).
@@ -64,43 +64,60 @@ inline int8 past_voxel_cell8(const RayPacket* r, float8 t, float step) {
   return index_at8(r, fmin(tx, fmin(ty, tz)), step, false);
 }
 
+// The macro cell (cx, cy, cz) that the point at t lies in, clamped to the grid; returns
+// its index (0 for lanes outside `pending`).
+inline int8 cell8(__constant RaycastParams* P, const RayPacket* r, float8 t, int8 pending, int8* cx,
+                  int8* cy, int8* cz) {
+  int4 last = P->cells - 1;
+  *cx = clamp(convert_int8(floor((r->ox + t * r->dx) * (1.0f / CELL))), 0, last.x);
+  *cy = clamp(convert_int8(floor((r->oy + t * r->dy) * (1.0f / CELL))), 0, last.y);
+  *cz = clamp(convert_int8(floor((r->oz + t * r->dz) * (1.0f / CELL))), 0, last.z);
+  return select((int8)(0), (*cz * P->cells.y + *cy) * P->cells.x + *cx, pending);
+}
+
+// Where each lane's ray leaves the cube of cells within `radius` of (cx, cy, cz). Along an
+// axis the outermost cells reach to infinity (positions off the grid are clamped into
+// them), as does an axis the ray runs parallel to: FLT_MAX.
+inline float8 cube_exit8(__constant RaycastParams* P, const RayPacket* r, int8 cx, int8 cy, int8 cz,
+                         int8 radius) {
+  int4 last = P->cells - 1;
+  int8 ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
+  float8 px = convert_float8(select(cx - radius, cx + radius + 1, ahead_x));
+  float8 py = convert_float8(select(cy - radius, cy + radius + 1, ahead_y));
+  float8 pz = convert_float8(select(cz - radius, cz + radius + 1, ahead_z));
+  int8 open_x = select(cx - radius <= 0, cx + radius >= last.x, ahead_x) | (r->dx == 0.0f);
+  int8 open_y = select(cy - radius <= 0, cy + radius >= last.y, ahead_y) | (r->dy == 0.0f);
+  int8 open_z = select(cz - radius <= 0, cz + radius >= last.z, ahead_z) | (r->dz == 0.0f);
+  float8 tx = select((px * (float)CELL - r->ox) * r->ix, (float8)(FLT_MAX), open_x);
+  float8 ty = select((py * (float)CELL - r->oy) * r->iy, (float8)(FLT_MAX), open_y);
+  float8 tz = select((pz * (float)CELL - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
+  return fmin(tx, fmin(ty, tz));
+}
+
+// Each lane's macro cell k's max (mip).
+inline float8 cell_max8(__global const short2* range, int8 k) {
+  return convert_float8((short8)(range[k.s0].y, range[k.s1].y, range[k.s2].y, range[k.s3].y,
+                                 range[k.s4].y, range[k.s5].y, range[k.s6].y, range[k.s7].y));
+}
+
 // ess_leap (skip.cl) for the lanes in `need`: returns their next index, sets their *check.
 // mip also passes an occupied cell whose max cannot raise a lane's floor (its running
 // maximum, or the window's low end), as ess_next_mip does.
 inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, int8 i, int8 need,
                       float step, bool segments, bool mip, float8 floor_v, int8* check) {
   int4 last = P->cells - 1;
-  int8 ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
-  int8 flat_x = r->dx == 0.0f, flat_y = r->dy == 0.0f, flat_z = r->dz == 0.0f;
   float8 nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
   float8 t_land = -FLT_MAX, t = ray_t8(r, i, step, segments);  // as in ess_leap
   int8 result = i, pending = need;
   int guard = last.x + last.y + last.z + 16;
   for (int g = 0; g < guard && any(pending); ++g) {
-    int8 cx = clamp(convert_int8(floor((r->ox + t * r->dx) * (1.0f / CELL))), 0, last.x);
-    int8 cy = clamp(convert_int8(floor((r->oy + t * r->dy) * (1.0f / CELL))), 0, last.y);
-    int8 cz = clamp(convert_int8(floor((r->oz + t * r->dz) * (1.0f / CELL))), 0, last.z);
-    int8 k = select((int8)(0), (cz * P->cells.y + cy) * P->cells.x + cx, pending);
+    int8 cx, cy, cz;
+    int8 k = cell8(P, r, t, pending, &cx, &cy, &cz);
     int8 d = convert_int8((uchar8)(leap[k.s0], leap[k.s1], leap[k.s2], leap[k.s3], leap[k.s4],
                                    leap[k.s5], leap[k.s6], leap[k.s7]));
-    int8 radius = max(d - 1, 0);
-    float8 px = select(convert_float8(cx - radius), convert_float8(cx + radius + 1), ahead_x);
-    float8 py = select(convert_float8(cy - radius), convert_float8(cy + radius + 1), ahead_y);
-    float8 pz = select(convert_float8(cz - radius), convert_float8(cz + radius + 1), ahead_z);
-    int8 open_x = select(cx - radius <= 0, cx + radius >= last.x, ahead_x) | flat_x;
-    int8 open_y = select(cy - radius <= 0, cy + radius >= last.y, ahead_y) | flat_y;
-    int8 open_z = select(cz - radius <= 0, cz + radius >= last.z, ahead_z) | flat_z;
-    float8 tx = select((px * (float)CELL - r->ox) * r->ix, (float8)(FLT_MAX), open_x);
-    float8 ty = select((py * (float)CELL - r->oy) * r->iy, (float8)(FLT_MAX), open_y);
-    float8 tz = select((pz * (float)CELL - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
-    float8 t_exit = fmin(tx, fmin(ty, tz));
+    float8 t_exit = cube_exit8(P, r, cx, cy, cz, max(d - 1, 0));
     int8 found = pending & (d == 0);
-    if (mip) {
-      float8 cell_max =
-          convert_float8((short8)(range[k.s0].y, range[k.s1].y, range[k.s2].y, range[k.s3].y,
-                                  range[k.s4].y, range[k.s5].y, range[k.s6].y, range[k.s7].y));
-      found &= cell_max > floor_v;
-    }
+    if (mip) found &= cell_max8(range, k) > floor_v;
     int8 first = max(i, index_at8(r, t_land, step, segments));
     result = select(result, first, found);
     *check = select(*check, max(first + 1, index_at8(r, t_exit, step, segments)), found);
@@ -115,6 +132,19 @@ inline int8 ess_leap8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r
   result = select(result, first, pending);
   *check = select(*check, first + 1, pending);
   return result;
+}
+
+// The empty-space step of iso and dvr packets: once enough of the active lanes have left
+// their occupied cell, ess_leap8 moves those on. Leaping is optional (sampling on is
+// always right) and a call costs every lane, so it waits for `every_lane` of them or for
+// at least half. Returns the lanes still active.
+inline int8 leap_packet8(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, int8* i,
+                         int8* check, int8 active, float step, bool segments, bool every_lane) {
+  int8 need = active & (*i >= *check);
+  int n = lanes8(need), all = lanes8(active);
+  if (n == 0 || (every_lane ? n < all : 2 * n < all)) return active;
+  *i = select(*i, ess_leap8(leap, range, P, r, *i, need, step, segments, false, 0.0f, check), need);
+  return active & ~(need & (*i > r->n));
 }
 
 // pixel_ray (raycast.cl) for the 4x2 pixels at (4 gx, 2 gy), lane l at (l & 3, l >> 2);
@@ -250,15 +280,8 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
   int8 active = r.n >= 0;
   while (any(active)) {
     if (ESS) {
-      // Leaping is optional (sampling on is always right), and a call costs every lane:
-      // leap once at least half the active lanes have left their occupied cell.
-      int8 need = active & (i >= check);
-      if (any(need) && 2 * lanes8(need) >= lanes8(active)) {
-        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, false, false, 0.0f, &check),
-                   need);
-        active &= ~(need & (i > r.n));
-        if (!any(active)) break;
-      }
+      active = leap_packet8(leap, range, P, &r, &i, &check, active, step, false, false);
+      if (!any(active)) break;
     }
     float8 t = sample_t8(&r, i, step);
     float8 vlo, vhi;
@@ -323,8 +346,8 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
 }
 
 // march_dvr (march.cl) for a 4x2 packet: the same segments, leaps, opacity and early
-// termination lane by lane. Gradients are taken lane by lane, only for samples that are
-// seen; their shading runs in SIMD.
+// termination lane by lane. Gradients and shading run in SIMD when any lane's sample is
+// seen (gradients8.cl).
 inline void dvr_packet(__global const short* restrict vol, __constant RaycastParams* P,
                        __global const float4* lut, __global uchar4* out, CELL_ARGS,
                        __global uint* count, int gx, int gy) {
@@ -337,15 +360,10 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
   int8 active = r.n >= 0;
   while (any(active)) {
     if (ESS) {
-      // Every active lane, as in mip_packet: 3 % less CPU time than iso's half (CThead,
-      // VTK's transfer function, both orbits).
-      int8 need = active & (i >= check);
-      if (any(need) && lanes8(need) == lanes8(active)) {
-        i = select(i, ess_leap8(leap, range, P, &r, i, need, step, true, false, 0.0f, &check),
-                   need);
-        active &= ~(need & (i > r.n));
-        if (!any(active)) break;
-      }
+      // Waiting for every lane took 3 % less CPU time than iso's half (CThead, VTK's
+      // transfer function, both orbits).
+      active = leap_packet8(leap, range, P, &r, &i, &check, active, step, true, true);
+      if (!any(active)) break;
     }
     float8 sa, sb;
     segment8(&r, i, step, &sa, &sb);
@@ -389,33 +407,6 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
   write_packet(P, out, count, gx, gy, color, samples);
 }
 
-// The macro cell that the point at t lies in (its index in *k) and where each lane's ray
-// leaves it (at most t1). An axis at the grid's edge (or parallel) reaches to t1.
-inline float8 cell_at8(__constant RaycastParams* P, const RayPacket* r, float8 t, int8 pending,
-                       int8* k) {
-  int4 last = P->cells - 1;
-  int8 cx = clamp(convert_int8(floor((r->ox + t * r->dx) * (1.0f / CELL))), 0, last.x);
-  int8 cy = clamp(convert_int8(floor((r->oy + t * r->dy) * (1.0f / CELL))), 0, last.y);
-  int8 cz = clamp(convert_int8(floor((r->oz + t * r->dz) * (1.0f / CELL))), 0, last.z);
-  *k = select((int8)(0), (cz * P->cells.y + cy) * P->cells.x + cx, pending);
-  int8 ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
-  float8 px = convert_float8(select(cx, cx + 1, ahead_x)) * (float)CELL;
-  float8 py = convert_float8(select(cy, cy + 1, ahead_y)) * (float)CELL;
-  float8 pz = convert_float8(select(cz, cz + 1, ahead_z)) * (float)CELL;
-  int8 open_x = select(cx <= 0, cx >= last.x, ahead_x) | (r->dx == 0.0f);
-  int8 open_y = select(cy <= 0, cy >= last.y, ahead_y) | (r->dy == 0.0f);
-  int8 open_z = select(cz <= 0, cz >= last.z, ahead_z) | (r->dz == 0.0f);
-  float8 tx = select((px - r->ox) * r->ix, (float8)(FLT_MAX), open_x);
-  float8 ty = select((py - r->oy) * r->iy, (float8)(FLT_MAX), open_y);
-  float8 tz = select((pz - r->oz) * r->iz, (float8)(FLT_MAX), open_z);
-  return fmin(fmin(tx, fmin(ty, tz)), r->t1);
-}
-
-inline float8 cell_max8(__global const short2* range, int8 k) {
-  return convert_float8((short8)(range[k.s0].y, range[k.s1].y, range[k.s2].y, range[k.s3].y,
-                                 range[k.s4].y, range[k.s5].y, range[k.s6].y, range[k.s7].y));
-}
-
 // Steps of the cell walk a mip packet keeps (float8 x 3 each in private memory); a ray
 // that crosses more cells takes the walk-as-you-go loop instead.
 #define MIP_WALK 256
@@ -431,8 +422,9 @@ inline int walk_cells8(__global const short2* range, __constant RaycastParams* P
   int g = 0;
   for (; any(pending); ++g) {
     if (g == MIP_WALK) return -1;
-    int8 k;
-    float8 t_exit = cell_at8(P, r, t, pending, &k);
+    int8 cx, cy, cz;
+    int8 k = cell8(P, r, t, pending, &cx, &cy, &cz);
+    float8 t_exit = fmin(cube_exit8(P, r, cx, cy, cz, 0), r->t1);
     float8 m = cell_max8(range, k);
     max[g] = select((float8)(-FLT_MAX), m, pending & (m > low));
     t_in[g] = t_enter;
