@@ -158,15 +158,6 @@ inline float3 volume_gradient_slab(SLAB_TYPE vol, int4 dims, __constant RaycastP
 
 // The block (or every tap) lies in the slab owning floor(p.z): slabs.cl.
 inline float3 volume_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
-#if SLABS > 1
-  int s = slab_of(P, p.z);
-  int4 dims = slab_dims(P, s);
-  float3 q = slab_point(P, s, p);
-#define GRADIENT_IN(v) return volume_gradient_slab(v, dims, P, q)
-  WITH_SLAB(s, GRADIENT_IN);
-#undef GRADIENT_IN
-#else
-  return volume_gradient_slab(vol, P->dims, P, p);
-#endif
+  RETURN_FROM_SLAB(volume_gradient_slab, P, p);
 }
 #endif

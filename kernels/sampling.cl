@@ -57,16 +57,7 @@ inline float sample_slab(SLAB_TYPE vol, int4 dims, __constant RaycastParams* P, 
 #include "slabs.cl"
 
 inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
-#if SLABS > 1
-  int s = slab_of(P, p.z);
-  int4 dims = slab_dims(P, s);
-  float3 q = slab_point(P, s, p);
-#define SAMPLE_IN(v) return sample_slab(v, dims, P, q)
-  WITH_SLAB(s, SAMPLE_IN);
-#undef SAMPLE_IN
-#else
-  return sample_slab(vol, P->dims, P, p);
-#endif
+  RETURN_FROM_SLAB(sample_slab, P, p);
 }
 
 #endif

@@ -10,7 +10,7 @@
 // same weights as one volume.
 //   SLABS 1 (the default): one argument, `vol`; none of this is compiled.
 // Code reading the volume takes VOLUME_ARG and passes VOLUME on; sampling.cl and
-// gradients.cl pick the slab with WITH_SLAB.
+// gradients.cl read through RETURN_FROM_SLAB.
 #ifndef VOXRAY_SLABS_CL
 #define VOXRAY_SLABS_CL
 
@@ -19,6 +19,8 @@
 #if SLABS == 1
 #define VOLUME_ARG SLAB_TYPE vol
 #define VOLUME vol
+// Returns FN(volume, its dims, P, p): FN reads one slab, here the whole volume.
+#define RETURN_FROM_SLAB(FN, P, p) return FN(vol, (P)->dims, P, p)
 #else
 #define SLAB_APRON 2  // engine/src/slab_plan.h: SlabPlan::kApron
 
@@ -41,29 +43,31 @@
 #define VOLUME_ARG SLAB_EXPAND(SLAB_ARGS_, SLABS)
 #define VOLUME SLAB_EXPAND(SLAB_NAMES_, SLABS)
 
+// FN on slab volume v, with the slab's dims and point (RETURN_FROM_SLAB's locals).
+#define SLAB_RETURN(FN, v) return FN(v, slab_dims_, P, slab_p_)
 #if STORAGE_IMAGE
-// Images cannot be held in variables: one case per slab. CALL(v) returns.
-#define SLAB_CASES_2(CALL) \
+// Images cannot be held in variables: one case per slab.
+#define SLAB_CASES_2(FN)   \
   default:                 \
   case 0:                  \
-    CALL(vol0);            \
+    SLAB_RETURN(FN, vol0); \
   case 1:                  \
-    CALL(vol1);
-#define SLAB_CASES_3(CALL) SLAB_CASES_2(CALL) case 2 : CALL(vol2);
-#define SLAB_CASES_4(CALL) SLAB_CASES_3(CALL) case 3 : CALL(vol3);
-#define SLAB_CASES_5(CALL) SLAB_CASES_4(CALL) case 4 : CALL(vol4);
-#define SLAB_CASES_6(CALL) SLAB_CASES_5(CALL) case 5 : CALL(vol5);
-#define SLAB_CASES_7(CALL) SLAB_CASES_6(CALL) case 6 : CALL(vol6);
-#define SLAB_CASES_8(CALL) SLAB_CASES_7(CALL) case 7 : CALL(vol7);
-#define WITH_SLAB(s, CALL) \
-  switch (s) { SLAB_EXPAND(SLAB_CASES_, SLABS)(CALL) }
+    SLAB_RETURN(FN, vol1);
+#define SLAB_CASES_3(FN) SLAB_CASES_2(FN) case 2 : SLAB_RETURN(FN, vol2);
+#define SLAB_CASES_4(FN) SLAB_CASES_3(FN) case 3 : SLAB_RETURN(FN, vol3);
+#define SLAB_CASES_5(FN) SLAB_CASES_4(FN) case 4 : SLAB_RETURN(FN, vol4);
+#define SLAB_CASES_6(FN) SLAB_CASES_5(FN) case 5 : SLAB_RETURN(FN, vol5);
+#define SLAB_CASES_7(FN) SLAB_CASES_6(FN) case 6 : SLAB_RETURN(FN, vol6);
+#define SLAB_CASES_8(FN) SLAB_CASES_7(FN) case 7 : SLAB_RETURN(FN, vol7);
+#define SLAB_CALL(FN, s) \
+  switch (s) { SLAB_EXPAND(SLAB_CASES_, SLABS)(FN) }
 #else
 // Buffers: one copy of the reading code, on the selected pointer.
 inline __global const short* slab_pointer(VOLUME_ARG, int s) {
   __global const short* slabs[SLABS] = {VOLUME};
   return slabs[s];
 }
-#define WITH_SLAB(s, CALL) CALL(slab_pointer(VOLUME, s))
+#define SLAB_CALL(FN, s) SLAB_RETURN(FN, slab_pointer(VOLUME, s))
 #endif
 
 // The slab owning slice floor(z); outside the volume, the nearest end slab. Compares, not a
@@ -88,6 +92,13 @@ inline int4 slab_dims(__constant RaycastParams* P, int s) {
 inline float3 slab_point(__constant RaycastParams* P, int s, float3 p) {
   return (float3)(p.x, p.y, p.z - (float)slab_first(P, s));
 }
+
+// Returns FN(slab volume, its dims, P, p in it) for the slab owning floor(p.z).
+#define RETURN_FROM_SLAB(FN, P, p)          \
+  int slab_ = slab_of(P, (p).z);            \
+  int4 slab_dims_ = slab_dims(P, slab_);    \
+  float3 slab_p_ = slab_point(P, slab_, p); \
+  SLAB_CALL(FN, slab_)
 #endif
 
 #endif
