@@ -131,7 +131,7 @@ inline float3 march_mip(VOLUME_ARG, __constant RaycastParams* P, CELL_ARGS, cons
     ++*count;
     vmax = fmax(vmax, sample_volume(VOLUME, P, r->o + ray_sample_t(r, i) * r->d));
   }
-  return (float3)(clamp((vmax - P->dvr.x) * P->dvr.y, 0.0f, 1.0f));
+  return (float3)(clamp((vmax - low) * P->dvr.y, 0.0f, 1.0f));
 }
 
 #endif

@@ -218,7 +218,10 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       m.lutUploaded = s.lut.rgba;  // the asynchronous write reads this copy
       q.enqueueWriteBuffer(m.lutBuffer, CL_FALSE, 0, lutBytes, m.lutUploaded.data());
     }
-    if (m.opts.emptySpaceSkipping) m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
+    // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
+    bool leaps = p.mode != Mode::Mip || m.packets(p);
+    if (m.opts.emptySpaceSkipping && leaps)
+      m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
     if (m.opts.countSamples)
       q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     cl_uint arg = m.device.setArgs(kernel, 0);  // vol, or vol0 .. per slab
