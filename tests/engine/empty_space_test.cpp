@@ -9,6 +9,7 @@
 
 #include <tuple>
 
+#include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
@@ -16,11 +17,6 @@
 namespace voxray {
 
 namespace {
-
-ClContext& context() {
-  static ClContext ctx("cpu");
-  return ctx;
-}
 
 // A small ball in a large empty box, so most cells are empty and rays leap them.
 const Volume& sparseVolume() {
@@ -83,7 +79,7 @@ const Volume& longVolume() {
 
 Image render(RaycasterOptions::Kernel k, bool ess, const RenderParams& p, bool packets = true,
              const Volume& volume = sparseVolume()) {
-  Raycaster rc(context(), volume, VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), volume, VolumeStorage::Buffer);
   RaycasterOptions o;
   o.kernel = k;
   o.emptySpaceSkipping = ess;
@@ -176,7 +172,7 @@ TEST(EmptySpaceExtras, MipSkippingByWindowAndMaximumChangesNoPixel) {
 }
 
 TEST(EmptySpaceExtras, ClassifiesOnlyWhenTheRangeOrTableChanges) {
-  Raycaster rc(context(), sparseVolume(), VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), sparseVolume(), VolumeStorage::Buffer);
   RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, false);
   rc.render(p);
   p.camera.azimuthDeg += 40.0;  // the camera moves: nothing to reclassify

@@ -7,6 +7,7 @@
 
 #include <tuple>
 
+#include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
@@ -15,11 +16,6 @@
 namespace voxray {
 
 namespace {
-
-ClContext& context() {
-  static ClContext ctx("cpu");
-  return ctx;
-}
 
 // 30 slices: 3 slabs own 10 each, 2 own 15, 4 own 8 (the last 6). The ball spans z 4.5 to
 // 24.5, so its surface crosses each boundary obliquely.
@@ -63,10 +59,10 @@ class Slabs : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Slabs, RenderExactlyAsOneVolume) {
   auto [mode, g, interp, ess, slabs, storage] = GetParam();
-  if (storage == VolumeStorage::Image3d && !context().device().imageSupport)
+  if (storage == VolumeStorage::Image3d && !test::pocl().device().imageSupport)
     GTEST_SKIP() << "no image support";
-  Raycaster one(context(), ballVolume(), storage);
-  Raycaster split(context(), ballVolume(), storage);
+  Raycaster one(test::pocl(), ballVolume(), storage);
+  Raycaster split(test::pocl(), ballVolume(), storage);
   RaycasterOptions o;
   o.emptySpaceSkipping = ess;
   o.packets = false;
@@ -111,8 +107,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{M::Dvr, G::ZuckerHummel, I::Linear, false, 2, S::Image3d}));
 
 TEST(Slabs, OrthographicAlongZ) {
-  Raycaster one(context(), ballVolume(), VolumeStorage::Buffer);
-  Raycaster split(context(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster one(test::pocl(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster split(test::pocl(), ballVolume(), VolumeStorage::Buffer);
   RaycasterOptions o;
   o.packets = false;
   one.setOptions(o);
@@ -124,7 +120,7 @@ TEST(Slabs, OrthographicAlongZ) {
 }
 
 TEST(Slabs, SplittingOffAndOnAgainFollowsTheLimit) {
-  Raycaster rc(context(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), ballVolume(), VolumeStorage::Buffer);
   RaycasterOptions o;
   o.maxSlabBytes = slabBytes(4);
   rc.setOptions(o);
@@ -139,7 +135,7 @@ TEST(Slabs, SplittingOffAndOnAgainFollowsTheLimit) {
 }
 
 TEST(Slabs, ALimitBelowFiveSlicesIsAClearDeviceError) {
-  Raycaster rc(context(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), ballVolume(), VolumeStorage::Buffer);
   RaycasterOptions o;
   o.maxSlabBytes = 4 * 40 * 36 * sizeof(int16_t);  // no slab depth leaves room for aprons
   try {
