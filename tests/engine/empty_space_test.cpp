@@ -24,13 +24,6 @@ const Volume& sparseVolume() {
   return v;
 }
 
-int maxDiff(const Image& a, const Image& b) {
-  int worst = 0;
-  for (size_t i = 0; i < a.rgba.size(); ++i)
-    worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
-  return worst;
-}
-
 RenderParams params(Mode mode, Gradient g, Interp interp, bool jitter) {
   RenderParams p;
   p.width = 80;
@@ -98,10 +91,10 @@ TEST_P(EmptySpace, SkippingChangesNoPixel) {
   RenderParams p = params(mode, g, interp, jitter);
   using K = RaycasterOptions::Kernel;
   Image plain = render(K::Specialised, false, p);
-  EXPECT_EQ(maxDiff(plain, render(K::Specialised, true, p)), 0);
-  EXPECT_LE(maxDiff(plain, render(K::Uber, true, p)), 1);
+  EXPECT_EQ(test::maxDiff(plain, render(K::Specialised, true, p)), 0);
+  EXPECT_LE(test::maxDiff(plain, render(K::Uber, true, p)), 1);
   // Every mode runs 4x2 ray packets on this CPU device; one ray per work-item must agree.
-  EXPECT_LE(maxDiff(plain, render(K::Specialised, true, p, false)), 1);
+  EXPECT_LE(test::maxDiff(plain, render(K::Specialised, true, p, false)), 1);
 }
 
 // Every mode; gradient, interpolation and jitter vary together (each kernel build on PoCL
@@ -128,7 +121,7 @@ TEST(EmptySpaceExtras, PacketsFillImagesOfOddSizes) {
   Image packets = render(K::Specialised, true, p, true);
   Image perRay = render(K::Specialised, true, p, false);
   ASSERT_EQ(packets.rgba.size(), size_t(83 * 61 * 4));
-  EXPECT_LE(maxDiff(packets, perRay), 1);
+  EXPECT_LE(test::maxDiff(packets, perRay), 1);
   // And the ball is there: many pixels differ from the background in the corner.
   int surface = 0;
   for (size_t i = 0; i < packets.rgba.size(); i += 4) surface += packets.rgba[i] != packets.rgba[0];
@@ -152,12 +145,12 @@ TEST(EmptySpaceExtras, MipSkippingByWindowAndMaximumChangesNoPixel) {
         const Volume& v = along ? longVolume() : noisyVolume();
         // Skipping on and off: the same kernel must give the same pixels.
         Image plain = render(K::Specialised, false, p, false, v);
-        EXPECT_EQ(maxDiff(plain, render(K::Specialised, true, p, false, v)), 0);
+        EXPECT_EQ(test::maxDiff(plain, render(K::Specialised, true, p, false, v)), 0);
         Image packets = render(K::Specialised, false, p, true, v);
-        EXPECT_EQ(maxDiff(packets, render(K::Specialised, true, p, true, v)), 0);
+        EXPECT_EQ(test::maxDiff(packets, render(K::Specialised, true, p, true, v)), 0);
         // Other compilations of the same algorithm: float contraction, one level at most.
-        EXPECT_LE(maxDiff(plain, packets), 1);
-        EXPECT_LE(maxDiff(plain, render(K::Uber, true, p, false, v)), 1);
+        EXPECT_LE(test::maxDiff(plain, packets), 1);
+        EXPECT_LE(test::maxDiff(plain, render(K::Uber, true, p, false, v)), 1);
         // Not a blank test: greys, and with the narrow window saturated pixels too.
         int white = 0, grey = 0;
         for (size_t i = 0; i < plain.rgba.size(); i += 4) {
@@ -195,7 +188,7 @@ TEST(EmptySpaceExtras, ClipBoxAndOrthographicToo) {
   p.clip.lo = {0.1, 0.45, 0.0};
   p.clip.hi = {0.7, 1.0, 0.9};
   using K = RaycasterOptions::Kernel;
-  EXPECT_EQ(maxDiff(render(K::Specialised, false, p), render(K::Specialised, true, p)), 0);
+  EXPECT_EQ(test::maxDiff(render(K::Specialised, false, p), render(K::Specialised, true, p)), 0);
 }
 
 }  // namespace voxray

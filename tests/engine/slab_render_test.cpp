@@ -30,13 +30,6 @@ size_t slabBytes(int slabs) {
   return slice * (slabs == 2 ? 17 : slabs == 3 ? 14 : 12);
 }
 
-int maxDiff(const Image& a, const Image& b) {
-  int worst = 0;
-  for (size_t i = 0; i < a.rgba.size(); ++i)
-    worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
-  return worst;
-}
-
 RenderParams params(Mode mode, Gradient g, Interp interp, double elevationDeg) {
   RenderParams p;
   p.width = 64;
@@ -80,7 +73,7 @@ TEST_P(Slabs, RenderExactlyAsOneVolume) {
     Image b = split.render(p, &stats);
     EXPECT_NE(stats.variant.find("-D SLABS=" + std::to_string(slabs)), std::string::npos)
         << stats.variant;
-    EXPECT_EQ(maxDiff(a, b), 0) << "elevation " << elevation;
+    EXPECT_EQ(test::maxDiff(a, b), 0) << "elevation " << elevation;
   }
 }
 
@@ -116,7 +109,7 @@ TEST(Slabs, OrthographicAlongZ) {
   split.setOptions(o);
   RenderParams p = params(Mode::Iso, Gradient::ZuckerHummel, Interp::Linear, 90.0);
   p.camera.projection = Projection::Orthographic;
-  EXPECT_EQ(maxDiff(one.render(p), split.render(p)), 0);
+  EXPECT_EQ(test::maxDiff(one.render(p), split.render(p)), 0);
 }
 
 TEST(Slabs, SplittingOffAndOnAgainFollowsTheLimit) {

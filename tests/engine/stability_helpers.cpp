@@ -2,12 +2,21 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/reference_renderer.h"
 
 namespace voxray::test {
+
+int maxDiff(const Image& a, const Image& b) {
+  int worst = 0;
+  for (size_t i = 0; i < a.rgba.size(); ++i)
+    worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+  return worst;
+}
 
 ClContext& pocl() {
   static ClContext ctx("cpu");

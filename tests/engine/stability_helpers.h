@@ -1,16 +1,21 @@
 #pragma once
 // The assertions every stability case makes: the frame renders on PoCL and through the
 // reference renderer with no NaN/Inf, every pixel in [0, 1] (opaque alpha), the same
-// image twice from each renderer, and agreement within a stated tolerance.
+// image twice from each renderer, and agreement within a stated tolerance. Also the PoCL
+// context and image difference other engine tests share.
 #include <string>
 
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/render_params.h"
+#include "voxray/io/image.h"
 #include "voxray/io/volume.h"
 
 namespace voxray::test {
 
 ClContext& pocl();
+
+// The largest difference between two images of the same size, in 8-bit levels.
+int maxDiff(const Image& a, const Image& b);
 
 // Tolerance between the PoCL image and the quantised reference, in 8-bit levels. The
 // default is kernel_vs_reference_test.cpp's: float vs double can flip a first hit or a
