@@ -27,7 +27,7 @@ inline float3 world_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) 
 
 // Opacity a of a reference-length step, for a segment `ratio` times that length:
 // 1 - (1 - a)^ratio, on the fast native path (pow costs a fifth of a CPU dvr frame);
-// a = 1 stays exactly 1. A macro so that float and the float8 lanes of packet.cl share it.
+// a = 1 stays exactly 1. A macro so that float and the floatN lanes of packet.cl share it.
 #define CORRECTED_OPACITY(a, ratio) \
   ((a) >= 1.0f ? 1.0f : 1.0f - native_exp2((ratio)*native_log2(1.0f - (a))))
 

@@ -5,7 +5,7 @@
 //   SHADING 0/1, GRADIENT 0..2, INTERP 0/1, STORAGE_IMAGE 0/1, ORTHO 0/1,
 //   REFINE_STEPS n, OPACITY_CORRECTION 0/1, JITTER 0/1, ESS 0/1 (empty-space skipping,
 //   skip.cl), COUNT_SAMPLES 0/1, UBER 0/1 (all switches at runtime: variant.cl),
-//   PACKET 0/1 (iso and dvr on CPUs: 4x2 rays per work-item in SIMD, packet.cl),
+//   PACKET 0/1 (CPUs: LANES = 8 or 16 rays per work-item in SIMD, packet.cl, lanes.cl),
 //   HIT_OUTPUT 0/1 (iso, one ray per work-item: each pixel's hit to `hits`, see
 //   march_iso; w -1 for none), SLABS k (the volume in k z slabs, slabs.cl; k > 1 only
 //   without PACKET)
@@ -72,8 +72,8 @@ inline uchar4 to_rgba8(float3 color) {
 
 // count: COUNT_SAMPLES adds each ray's samples to one of 64 counters (fewer collisions
 // than one; the host sums them). Unused otherwise, like leap and range without ESS.
-// PACKET 1 (CPUs, iso and dvr): each work-item marches the 4x2 pixels at (4 x, 2 y) together in
-// SIMD (packet.cl); otherwise one work-item per pixel.
+// PACKET 1 (CPUs): each work-item marches the 4 x PACKET_ROWS pixels at (4 x, PACKET_ROWS y)
+// together in SIMD (packet.cl); otherwise one work-item per pixel.
 __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
                       __global uchar4* out, CELL_ARGS, __global uint* count
 #if HIT_OUTPUT

@@ -30,6 +30,7 @@ struct BenchOptions {
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
+  int lanes = 0;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -51,6 +52,7 @@ RaycasterOptions raycasterOptions(const BenchOptions& o) {
   RaycasterOptions r;
   r.emptySpaceSkipping = o.ess == "on";
   r.maxSlabBytes = o.slabMib << 20;
+  r.packetLanes = o.lanes;
   if (!o.local.empty()) {
     int x = 0, y = 0;
     if (std::sscanf(o.local.c_str(), "%dx%d", &x, &y) != 2 || x <= 0 || y <= 0)
@@ -77,7 +79,7 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_option("--storage", o->storage, "auto, buffer or image")
       ->check(CLI::IsMember({"auto", "buffer", "image"}));
   cmd->add_option("--kernel", o->kernel,
-                  "specialised (-D per variant; iso and dvr on a CPU: 4x2 ray packets), per-ray "
+                  "specialised (-D per variant; on a CPU: ray packets), per-ray "
                   "(specialised, one ray per work-item), uber (runtime switches), both "
                   "(specialised and uber) or all three")
       ->check(CLI::IsMember({"specialised", "per-ray", "uber", "both", "all"}));
@@ -87,6 +89,10 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_option("--slab-mib", o->slabMib,
                   "split the volume into z slabs of at most this many MiB on the device "
                   "(default: only when it exceeds the largest allocation)");
+  cmd->add_option("--lanes", o->lanes,
+                  "rays per CPU packet: 8 (4x2), 16 (4x4) or 0 (16 for iso and dvr where the "
+                  "device's native float vector holds 16, else 8)")
+      ->check(CLI::IsMember({0, 8, 16}));
   cmd->add_flag("--no-count", o->noCount, "skip the extra orbit that counts samples");
   cmd->add_option("--orbit", o->orbit,
                   "azimuth (around the long axis) or elevation (around the anterior-posterior "

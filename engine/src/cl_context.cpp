@@ -45,6 +45,7 @@ std::vector<Found> enumerate() {
         i.maxImage3d[2] = d.getInfo<CL_DEVICE_IMAGE3D_MAX_DEPTH>();
       }
       i.computeUnits = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+      i.nativeFloatWidth = d.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>();
       out.push_back({pl, d, i});
     }
   }

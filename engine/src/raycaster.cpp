@@ -53,6 +53,7 @@ struct Raycaster::Impl {
   void upload();
   std::string options(const RenderParams& p) const;
   bool packets(const RenderParams& p) const;
+  int lanes(const RenderParams& p) const;
   cl::NDRange local() const;
   void updateSetup(const RenderParams& p);
 };
@@ -101,7 +102,7 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
   if (shading) o << " -D GRADIENT=" << int(p.gradient);
   if (p.mode == Mode::Iso) o << " -D REFINE_STEPS=" << p.refine;
   if (p.mode == Mode::Dvr) o << " -D OPACITY_CORRECTION=" << int(p.opacityCorrection);
-  if (packets(p)) o << " -D PACKET=1";
+  if (packets(p)) o << " -D PACKET=1 -D LANES=" << lanes(p);
   return o.str();
 }
 
@@ -110,6 +111,12 @@ bool Raycaster::Impl::packets(const RenderParams& p) const {
   return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
          storage == VolumeStorage::Buffer && !cl.info.isGpu && device.plan().count() == 1 &&
          volume.voxelCount() < (size_t(1) << 31);
+}
+
+int Raycaster::Impl::lanes(const RenderParams& p) const {
+  if (opts.packetLanes != 0) return opts.packetLanes;
+  // CThead dvr on VTK's orbit, AVX-512: 16 lanes 1.22x faster than 8; mip 1.4x slower.
+  return p.mode != Mode::Mip && cl.info.nativeFloatWidth >= 16 ? 16 : 8;
 }
 
 cl::NDRange Raycaster::Impl::local() const {
@@ -139,6 +146,9 @@ int Raycaster::slabCount() const { return impl_->device.plan().count(); }
 
 void Raycaster::setOptions(const RaycasterOptions& options) {
   Impl& m = *impl_;
+  if (options.packetLanes != 0 && options.packetLanes != 8 && options.packetLanes != 16)
+    throw inputError("packet lanes must be 8, 16 or 0 (automatic), not " +
+                     std::to_string(options.packetLanes));
   bool reslab = options.maxSlabBytes != m.opts.maxSlabBytes;
   if (reslab) m.device.upload(m.cl, m.volume, m.storage, options.maxSlabBytes);
   m.opts = options;
@@ -241,9 +251,10 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     }
     cl::NDRange local = m.local();
     size_t gx = size_t(p.width), gy = size_t(p.height);
-    if (m.packets(p)) {  // one work-item per 4x2 pixels
+    if (m.packets(p)) {  // one work-item per 4 x (lanes / 4) pixels
+      size_t rows = size_t(m.lanes(p) / 4);
       gx = (gx + 3) / 4;
-      gy = (gy + 1) / 2;
+      gy = (gy + rows - 1) / rows;
     }
     if (local.dimensions() == 2) {
       gx = (gx + local[0] - 1) / local[0] * local[0];

@@ -1,4 +1,4 @@
-// Empty-space skipping, the uber kernel and iso's ray packets on CPUs are speed-ups only:
+// Empty-space skipping, the uber kernel and ray packets on CPUs are speed-ups only:
 // the image must be the one the plain specialised kernel makes. ESS leaps only samples
 // that cannot change a pixel, in the same order and with the same positions, so frames
 // agree exactly; the uber kernel and the one-ray-per-work-item kernel are different
@@ -13,6 +13,7 @@
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
+#include "voxray/io/error.h"
 
 namespace voxray {
 
@@ -70,13 +71,17 @@ const Volume& longVolume() {
   return v;
 }
 
-Image render(RaycasterOptions::Kernel k, bool ess, const RenderParams& p, bool packets = true,
+// lanes: rays per CPU packet (8 or 16), 0 the raycaster's choice, kPerRay for none.
+constexpr int kPerRay = -1;
+
+Image render(RaycasterOptions::Kernel k, bool ess, const RenderParams& p, int lanes = 0,
              const Volume& volume = sparseVolume()) {
   Raycaster rc(test::pocl(), volume, VolumeStorage::Buffer);
   RaycasterOptions o;
   o.kernel = k;
   o.emptySpaceSkipping = ess;
-  o.packets = packets;
+  o.packets = lanes != kPerRay;
+  o.packetLanes = lanes == kPerRay ? 0 : lanes;
   rc.setOptions(o);
   return rc.render(p);
 }
@@ -90,11 +95,17 @@ TEST_P(EmptySpace, SkippingChangesNoPixel) {
   auto [mode, g, interp, jitter] = GetParam();
   RenderParams p = params(mode, g, interp, jitter);
   using K = RaycasterOptions::Kernel;
-  Image plain = render(K::Specialised, false, p);
-  EXPECT_EQ(test::maxDiff(plain, render(K::Specialised, true, p)), 0);
+  Image plain = render(K::Specialised, false, p, kPerRay);
+  EXPECT_EQ(test::maxDiff(plain, render(K::Specialised, true, p, kPerRay)), 0);
   EXPECT_LE(test::maxDiff(plain, render(K::Uber, true, p)), 1);
-  // Every mode runs 4x2 ray packets on this CPU device; one ray per work-item must agree.
-  EXPECT_LE(test::maxDiff(plain, render(K::Specialised, true, p, false)), 1);
+  // Every mode runs ray packets on this CPU device, of either width; they must agree with
+  // one ray per work-item, and skipping must not change their pixels.
+  for (int lanes : {8, 16}) {
+    SCOPED_TRACE(testing::Message() << lanes << " lanes");
+    Image packets = render(K::Specialised, false, p, lanes);
+    EXPECT_LE(test::maxDiff(plain, packets), 1);
+    EXPECT_EQ(test::maxDiff(packets, render(K::Specialised, true, p, lanes)), 0);
+  }
 }
 
 // Every mode; gradient, interpolation and jitter vary together (each kernel build on PoCL
@@ -110,22 +121,40 @@ INSTANTIATE_TEST_SUITE_P(Jittered, EmptySpace,
                                             ::testing::Values(Interp::Nearest, Interp::Linear),
                                             ::testing::Values(true)));
 
-// Packets cover 4x2 pixels: an image whose sides are not multiples of them must still get
-// every pixel, and only its own (the per-ray image agrees; a stray or missing write would
-// leave the background or overwrite a neighbour).
+// Packets cover 4x2 or 4x4 pixels: an image whose sides are not multiples of them must
+// still get every pixel, and only its own (the per-ray image agrees; a stray or missing
+// write would leave the background or overwrite a neighbour). 61 rows leave one row of
+// the last 4x2 packets and three of the last 4x4 ones outside.
 TEST(EmptySpaceExtras, PacketsFillImagesOfOddSizes) {
   RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, false);
   p.width = 83;
   p.height = 61;
   using K = RaycasterOptions::Kernel;
-  Image packets = render(K::Specialised, true, p, true);
-  Image perRay = render(K::Specialised, true, p, false);
-  ASSERT_EQ(packets.rgba.size(), size_t(83 * 61 * 4));
-  EXPECT_LE(test::maxDiff(packets, perRay), 1);
-  // And the ball is there: many pixels differ from the background in the corner.
-  int surface = 0;
-  for (size_t i = 0; i < packets.rgba.size(); i += 4) surface += packets.rgba[i] != packets.rgba[0];
-  EXPECT_GT(surface, 100);  // the ball (radius 10 of a 64-voxel box) covers about 130
+  Image perRay = render(K::Specialised, true, p, kPerRay);
+  for (int lanes : {8, 16}) {
+    SCOPED_TRACE(testing::Message() << lanes << " lanes");
+    Image packets = render(K::Specialised, true, p, lanes);
+    ASSERT_EQ(packets.rgba.size(), size_t(83 * 61 * 4));
+    EXPECT_LE(test::maxDiff(packets, perRay), 1);
+    // And the ball is there: many pixels differ from the background in the corner.
+    int surface = 0;
+    for (size_t i = 0; i < packets.rgba.size(); i += 4)
+      surface += packets.rgba[i] != packets.rgba[0];
+    EXPECT_GT(surface, 100);  // the ball (radius 10 of a 64-voxel box) covers about 130
+  }
+}
+
+TEST(EmptySpaceExtras, PacketLanesOtherThan8Or16AreRefused) {
+  Raycaster rc(test::pocl(), sparseVolume(), VolumeStorage::Buffer);
+  RaycasterOptions o;
+  o.packetLanes = 12;
+  try {
+    rc.setOptions(o);
+    FAIL() << "12 lanes were accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::Input);
+    EXPECT_NE(std::string(e.what()).find("8, 16"), std::string::npos) << e.what();
+  }
 }
 
 // mip skips by the window too: a window whose low end is inside the data (values below it
@@ -144,13 +173,15 @@ TEST(EmptySpaceExtras, MipSkippingByWindowAndMaximumChangesNoPixel) {
         if (along) p.camera = {90.0, 0.0, 60.0};  // from the left, down the long axis
         const Volume& v = along ? longVolume() : noisyVolume();
         // Skipping on and off: the same kernel must give the same pixels.
-        Image plain = render(K::Specialised, false, p, false, v);
-        EXPECT_EQ(test::maxDiff(plain, render(K::Specialised, true, p, false, v)), 0);
-        Image packets = render(K::Specialised, false, p, true, v);
-        EXPECT_EQ(test::maxDiff(packets, render(K::Specialised, true, p, true, v)), 0);
+        Image plain = render(K::Specialised, false, p, kPerRay, v);
+        EXPECT_EQ(test::maxDiff(plain, render(K::Specialised, true, p, kPerRay, v)), 0);
         // Other compilations of the same algorithm: float contraction, one level at most.
-        EXPECT_LE(test::maxDiff(plain, packets), 1);
-        EXPECT_LE(test::maxDiff(plain, render(K::Uber, true, p, false, v)), 1);
+        for (int lanes : {8, 16}) {
+          Image packets = render(K::Specialised, false, p, lanes, v);
+          EXPECT_EQ(test::maxDiff(packets, render(K::Specialised, true, p, lanes, v)), 0);
+          EXPECT_LE(test::maxDiff(plain, packets), 1) << lanes << " lanes";
+        }
+        EXPECT_LE(test::maxDiff(plain, render(K::Uber, true, p, kPerRay, v)), 1);
         // Not a blank test: greys, and with the narrow window saturated pixels too.
         int white = 0, grey = 0;
         for (size_t i = 0; i < plain.rgba.size(); i += 4) {

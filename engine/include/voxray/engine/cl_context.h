@@ -20,6 +20,7 @@ struct DeviceInfo {
   size_t maxAllocBytes = 0;
   size_t maxImage3d[3] = {0, 0, 0};
   unsigned computeUnits = 0;
+  unsigned nativeFloatWidth = 0;  // floats in the device's native vector (16: AVX-512)
 };
 
 // All devices of all platforms. Throws Error (Device) with an install hint when there is

@@ -24,9 +24,13 @@ struct RaycasterOptions {
   enum class Kernel { Specialised, Uber } kernel = Kernel::Specialised;
   bool emptySpaceSkipping = true;  // leap macro cells that cannot change the pixel
   bool countSamples = false;       // fill FrameStats::samples (an atomic add per ray)
-  // iso and dvr on a CPU device with buffer storage: each work-item marches 4x2 rays in SIMD
+  // A CPU device with buffer storage: each work-item marches a packet of rays in SIMD
   // (kernels/packet.cl). Ignored elsewhere (GPUs diverge less one ray per work-item).
   bool packets = true;
+  // Rays per packet, 8 (4x2) or 16 (4x4). 0: 16 for iso and dvr where the device's native
+  // float vector holds 16 (AVX-512), else 8; mip keeps 8 (its cell walk lives in private
+  // memory, and wider packets diverge more).
+  int packetLanes = 0;
   int localX = 0, localY = 0;  // work-group size; 0: 16x8 on GPUs, PoCL's choice on CPUs
   // Largest bytes of one z slab of the volume on the device (apron included); 0: the
   // device's largest allocation. Lower it to split volumes that fit (tests, benchmarks).
