@@ -20,6 +20,8 @@ typedef uchar8 ucharN;
 #define convert_floatN convert_float8
 #define convert_intN convert_int8
 #define as_uintN as_uint8
+#define as_intN as_int8
+#define as_floatN as_float8
 #define vstoreN vstore8
 #define LANE_LIST(F) F(0, 0), F(1, 1), F(2, 2), F(3, 3), F(4, 4), F(5, 5), F(6, 6), F(7, 7)
 #define LANE_EACH(F) F(0, 0) F(1, 1) F(2, 2) F(3, 3) F(4, 4) F(5, 5) F(6, 6) F(7, 7)
@@ -32,6 +34,8 @@ typedef uchar16 ucharN;
 #define convert_floatN convert_float16
 #define convert_intN convert_int16
 #define as_uintN as_uint16
+#define as_intN as_int16
+#define as_floatN as_float16
 #define vstoreN vstore16
 // clang-format does not settle on one layout of these lists.
 // clang-format off

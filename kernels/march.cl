@@ -26,10 +26,12 @@ inline float3 world_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) 
 }
 
 // Opacity a of a reference-length step, for a segment `ratio` times that length:
-// 1 - (1 - a)^ratio, on the fast native path (pow costs a fifth of a CPU dvr frame);
-// a = 1 stays exactly 1. A macro so that float and the floatN lanes of packet.cl share it.
-#define CORRECTED_OPACITY(a, ratio) \
-  ((a) >= 1.0f ? 1.0f : 1.0f - native_exp2((ratio)*native_log2(1.0f - (a))))
+// 1 - (1 - a)^ratio, on a fast path (pow costs a fifth of a CPU dvr frame); a = 1 stays
+// exactly 1. A macro so that float (native_) and the floatN lanes of packet.cl
+// (math_lanes.cl) share it.
+#define CORRECTED_OPACITY_BY(a, ratio, LOG2, EXP2) \
+  ((a) >= 1.0f ? 1.0f : 1.0f - EXP2((ratio)*LOG2(1.0f - (a))))
+#define CORRECTED_OPACITY(a, ratio) CORRECTED_OPACITY_BY(a, ratio, native_log2, native_exp2)
 
 inline bool in_iso(__constant RaycastParams* P, float v) {
   return v >= P->values.x && v <= P->values.y;

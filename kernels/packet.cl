@@ -385,7 +385,7 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
         floatN a = c[3];
         if (OPACITY_CORRECTION) {
           floatN ratio = seg / P->view.w;
-          a = CORRECTED_OPACITY(a, ratio);
+          a = CORRECTED_OPACITY_BY(a, ratio, fast_log2N, fast_exp2N);
         }
         if (SHADING) {
           VecN at = {x, y, z};

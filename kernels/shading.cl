@@ -4,11 +4,12 @@
 
 #include "math.cl"
 
-// s^w for s >= 0 on the fast native path, keeping pow's value at s = 0 (0, or 1 for w = 0).
-// A macro so that float and the floatN lanes of shadeN share it; vector lanes evaluate
-// both branches, so the logarithm never sees 0.
-#define SPECULAR_POWER(s, w) \
-  ((s) > 0.0f ? native_exp2((w)*native_log2(fmax((s), FLT_MIN))) : ((w) == 0.0f ? 1.0f : 0.0f))
+// s^w for s >= 0 by EXP2(w LOG2(s)), keeping pow's value at s = 0 (0, or 1 for w = 0).
+// A macro so that float (native_) and the floatN lanes of shadeN (math_lanes.cl) share it;
+// vector lanes evaluate both branches, so the logarithm never sees 0.
+#define SPECULAR_POWER_BY(s, w, LOG2, EXP2) \
+  ((s) > 0.0f ? EXP2((w)*LOG2(fmax((s), FLT_MIN))) : ((w) == 0.0f ? 1.0f : 0.0f))
+#define SPECULAR_POWER(s, w) SPECULAR_POWER_BY(s, w, native_log2, native_exp2)
 
 // normal_w need not be unit length or point at the viewer; view_w points to the eye.
 // A zero normal (flat region) is treated as facing the viewer, never as NaN.

@@ -3,6 +3,7 @@
 #define VOXRAY_SHADING_LANES_CL
 
 #include "lanes.cl"
+#include "math_lanes.cl"
 #include "shading.cl"
 
 // Vectors in lanes, as x, y, z components.
@@ -38,7 +39,7 @@ inline VecN shadeN(VecN color, VecN normal_w, VecN pos_w, VecN view_w, float4 li
   floatN diffuse = fmax(dotN(n, l), 0.0f);
   VecN half_way = {l.x + view_w.x, l.y + view_w.y, l.z + view_w.z};
   VecN h = safe_normalizeN(half_way, n);
-  floatN specular = SPECULAR_POWER(fmax(dotN(n, h), 0.0f), k.w);
+  floatN specular = SPECULAR_POWER_BY(fmax(dotN(n, h), 0.0f), k.w, fast_log2N, fast_exp2N);
   specular = select((floatN)(0.0f), specular, diffuse > 0.0f);
   floatN f = k.x + k.y * diffuse, s = k.z * specular;
   VecN out = {color.x * f + s, color.y * f + s, color.z * f + s};
