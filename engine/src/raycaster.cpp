@@ -54,7 +54,7 @@ struct Raycaster::Impl {
   std::string options(const RenderParams& p) const;
   bool packets(const RenderParams& p) const;
   int lanes(const RenderParams& p) const;
-  cl::NDRange local() const;
+  cl::NDRange local(const RenderParams& p) const;
   void updateSetup(const RenderParams& p);
 };
 
@@ -119,13 +119,16 @@ int Raycaster::Impl::lanes(const RenderParams& p) const {
   return p.mode != Mode::Mip && cl.info.nativeFloatWidth >= 16 ? 16 : 8;
 }
 
-cl::NDRange Raycaster::Impl::local() const {
+cl::NDRange Raycaster::Impl::local(const RenderParams& p) const {
   // The caller rounds the global size up to whole groups; the kernel drops extra items.
   if (opts.localX <= 0 || opts.localY <= 0) {
     // GPUs: 16x8 pixel tiles keep neighbouring rays' texture reads in cache; on an H200
-    // 1920x1080 dvr ran 1.38x faster than with the driver's choice (docs/bench). PoCL's
-    // own choice suits CPUs.
+    // 1920x1080 dvr ran 1.38x faster than with the driver's choice (docs/bench).
     if (cl.info.isGpu) return cl::NDRange(16, 8);
+    // Packets: PoCL chose a few large groups (128x24 packets at 512x384), and the cores
+    // idled 15-20 % of a CThead dvr frame waiting for the last, slowest one. Groups of 4x4
+    // packets keep them both busy (idle 2-3 %, vmstat).
+    if (packets(p)) return cl::NDRange(4, 4);
     return cl::NullRange;
   }
   return cl::NDRange(size_t(opts.localX), size_t(opts.localY));
@@ -249,7 +252,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       m.hitsOut->resize(pixels);
       kernel.setArg(arg, m.hitBuffer);
     }
-    cl::NDRange local = m.local();
+    cl::NDRange local = m.local(p);
     size_t gx = size_t(p.width), gy = size_t(p.height);
     if (m.packets(p)) {  // one work-item per 4 x (lanes / 4) pixels
       size_t rows = size_t(m.lanes(p) / 4);
