@@ -23,6 +23,7 @@ typedef uchar8 ucharN;
 #define as_intN as_int8
 #define as_floatN as_float8
 #define vstoreN vstore8
+#define vloadN vload8
 #define LANE_LIST(F) F(0, 0), F(1, 1), F(2, 2), F(3, 3), F(4, 4), F(5, 5), F(6, 6), F(7, 7)
 #define LANE_EACH(F) F(0, 0) F(1, 1) F(2, 2) F(3, 3) F(4, 4) F(5, 5) F(6, 6) F(7, 7)
 #elif LANES == 16
@@ -37,6 +38,7 @@ typedef uchar16 ucharN;
 #define as_intN as_int16
 #define as_floatN as_float16
 #define vstoreN vstore16
+#define vloadN vload16
 // clang-format does not settle on one layout of these lists.
 // clang-format off
 #define LANE_LIST(F)                                                                       \

@@ -240,12 +240,30 @@ inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __gl
 
 // lut_lookup (march.cl) for each lane's value, as four channels. Each lane mixes its two
 // entries as a float4; the results are transposed in registers.
-inline void lutN(__global const float4* lut, __constant RaycastParams* P, floatN v,
-                 floatN rgba[4]) {
+// Where each lane's value falls in the table: entries *k and *k1, mixed by *f.
+inline void lut_spotN(__constant RaycastParams* P, floatN v, intN* k, intN* k1, floatN* f) {
   int last = P->dims.w - 1;
   floatN x = clamp((v - P->values.z) * P->values.w, 0.0f, (float)last);
-  floatN x0 = floor(x), f = x - x0;
-  intN k = convert_intN(x0), k1 = min(k + 1, last);
+  floatN x0 = floor(x);
+  *f = x - x0;
+  *k = convert_intN(x0);
+  *k1 = min(*k + 1, last);
+}
+
+// Only the opacity: two gathers (dvr with shading looks the colour up when it shades).
+inline floatN lut_alphaN(__global const float4* lut, __constant RaycastParams* P, floatN v) {
+  intN k, k1;
+  floatN f;
+  lut_spotN(P, v, &k, &k1, &f);
+  __global const float* alpha = (__global const float*)lut + 3;
+  return mix(gather_floatN(alpha, 4 * k), gather_floatN(alpha, 4 * k1), f);
+}
+
+inline void lutN(__global const float4* lut, __constant RaycastParams* P, floatN v,
+                 floatN rgba[4]) {
+  intN k, k1;
+  floatN f;
+  lut_spotN(P, v, &k, &k1, &f);
   float4 e[LANES];
 #define LUT_LANE(l, n) e[n] = mix(lut[k.s##l], lut[k1.s##l], f.s##l);
 #define LUT_X(l, n) e[n].x
@@ -290,7 +308,7 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
     }
     floatN t = sample_tN(&r, i, step);
     floatN vlo, vhi;
-    floatN v = sample8_range(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz, &vlo, &vhi);
+    floatN v = sample_rangeN(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz, &vlo, &vhi);
     samples -= active;  // true is -1
     intN in = active & (v >= lo) & (v <= hi);
     hit = select(hit, i, in);
@@ -350,9 +368,11 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
   write_packet(P, out, count, gx, gy, color, samples);
 }
 
+// After RayPacket and lutN, which it uses.
+#include "shade_queue.cl"
+
 // march_dvr (march.cl) for a packet: the same segments, leaps, opacity and early
-// termination lane by lane. Gradients and shading run in SIMD when any lane's sample is
-// seen (gradients_lanes.cl).
+// termination lane by lane. Seen samples are shaded LANES at a time (shade_queue.cl).
 inline void dvr_packet(__global const short* restrict vol, __constant RaycastParams* P,
                        __global const float4* lut, __global uchar4* out, CELL_ARGS,
                        __global uint* count, int gx, int gy) {
@@ -363,6 +383,8 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
   floatN acc[3] = {0.0f, 0.0f, 0.0f}, alpha = 0.0f;
   intN i = 0, check = 0, samples = 0;
   intN active = r.n >= 0;
+  ShadeQueue queue;
+  if (SHADING) shade_queue_init(&queue, &r, world);
   while (any(active)) {
     if (ESS) {
       // Waiting for every lane took 3 % less CPU time than iso's half (CThead, VTK's
@@ -377,8 +399,11 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
     if (any(live)) {
       floatN t = 0.5f * (sa + sb);
       floatN x = r.ox + t * r.dx, y = r.oy + t * r.dy, z = r.oz + t * r.dz;
-      floatN c[4];
-      lutN(lut, P, sampleN(vol, P, x, y, z), c);
+      floatN c[4], value = sampleN(vol, P, x, y, z);
+      if (SHADING)
+        c[3] = lut_alphaN(lut, P, value);
+      else
+        lutN(lut, P, value, c);
       samples -= live;
       intN seen = live & (c[3] > 0.0f);
       if (any(seen)) {
@@ -387,24 +412,23 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
           floatN ratio = seg / P->view.w;
           a = CORRECTED_OPACITY_BY(a, ratio, fast_log2N, fast_exp2N);
         }
-        if (SHADING) {
-          VecN at = {x, y, z};
-          VecN normal = gradient_to_worldN(P, volume_gradientN(vol, P, at));
-          VecN color = {c[0], c[1], c[2]};
-          VecN pos = {world[0] + t * world[3], world[1] + t * world[4], world[2] + t * world[5]};
-          VecN view = {-world[3], -world[4], -world[5]};
-          VecN lit = shadeN(color, normal, pos, view, P->light_w, P->light);
-          c[0] = lit.x, c[1] = lit.y, c[2] = lit.z;
-          samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
-        }
         floatN w = select((floatN)(0.0f), (1.0f - alpha) * a, seen);
-        for (int ch = 0; ch < 3; ++ch) acc[ch] += w * c[ch];
+        if (SHADING) {
+          shade_queue_push(vol, P, lut, &queue, t, value, w, seen);
+          samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+        } else {
+          for (int ch = 0; ch < 3; ++ch) acc[ch] += w * c[ch];
+        }
         alpha += w;
         active &= ~(seen & (alpha >= P->dvr.z));
       }
     }
     i += 1;
     active &= i <= r.n;
+  }
+  if (SHADING) {
+    if (queue.n > 0) shade_queue_flush(vol, P, lut, &queue, queue.n);
+    for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, queue.acc[ch]);
   }
   VecN color = {acc[0] + (1.0f - alpha) * P->background.x,
                 acc[1] + (1.0f - alpha) * P->background.y,
@@ -461,7 +485,7 @@ inline void sample_spanN(__global const short* restrict vol, __constant RaycastP
     floatN t = sample_tN(r, j, step);
     floatN vlo, vhi;
     floatN v =
-        sample8_range(vol, P, r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz, &vlo, &vhi);
+        sample_rangeN(vol, P, r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz, &vlo, &vhi);
     *samples -= todo;
     *vmax = select(*vmax, fmax(*vmax, v), todo);
     todo &= *vmax < high;

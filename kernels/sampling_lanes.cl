@@ -13,6 +13,13 @@ inline floatN gatherN(__global const short* restrict v, intN i) {
 #undef GATHER_LANE
 }
 
+// p[i] for each lane.
+inline floatN gather_floatN(__global const float* restrict p, intN i) {
+#define GATHER_FLOAT_LANE(l, n) p[i.s##l]
+  return (floatN)(LANE_LIST(GATHER_FLOAT_LANE));
+#undef GATHER_FLOAT_LANE
+}
+
 // Voxels i and i + 1 of each lane, in *a and *b: one 32-bit load per lane.
 inline void pairsN(__global const short* restrict v, intN i, floatN* a, floatN* b) {
   short2 p[LANES];
@@ -39,9 +46,12 @@ inline floatN mix_pairsN(__global const short* restrict v, intN i, floatN f, flo
 
 // sample_volume (sampling.cl) for each lane's point. Trilinear also returns in [*lo, *hi] a
 // range that holds the eight voxels around each point, and so every value trilinear
-// interpolation takes in that voxel cell (nearest: the sample itself).
-inline floatN sample8_range(__global const short* restrict vol, __constant RaycastParams* P,
-                            floatN x, floatN y, floatN z, floatN* lo, floatN* hi) {
+// interpolation takes in that voxel cell (nearest: the sample itself). Always inlined, so
+// that sampleN drops the range (PoCL kept it a call that stored both).
+inline __attribute__((always_inline)) floatN sample_rangeN(__global const short* restrict vol,
+                                                           __constant RaycastParams* P, floatN x,
+                                                           floatN y, floatN z, floatN* lo,
+                                                           floatN* hi) {
   int4 dims = P->dims;
   int sy = dims.x, sz = dims.x * dims.y;
   if (!INTERP) {
@@ -81,7 +91,7 @@ inline floatN sample8_range(__global const short* restrict vol, __constant Rayca
 inline floatN sampleN(__global const short* restrict vol, __constant RaycastParams* P, floatN x,
                       floatN y, floatN z) {
   floatN lo, hi;
-  return sample8_range(vol, P, x, y, z, &lo, &hi);
+  return sample_rangeN(vol, P, x, y, z, &lo, &hi);
 }
 
 #endif

@@ -37,9 +37,14 @@ inline VecN shadeN(VecN color, VecN normal_w, VecN pos_w, VecN view_w, float4 li
   VecN to_light = {light_w.x - pos_w.x, light_w.y - pos_w.y, light_w.z - pos_w.z};
   VecN l = safe_normalizeN(to_light, view_w);
   floatN diffuse = fmax(dotN(n, l), 0.0f);
+  // n.h for h = l + v normalised, without normalising h: (n.l + n.v) / |l + v|; where
+  // l + v vanishes, h falls back to n as in shade (n.h = 1).
   VecN half_way = {l.x + view_w.x, l.y + view_w.y, l.z + view_w.z};
-  VecN h = safe_normalizeN(half_way, n);
-  floatN specular = SPECULAR_POWER_BY(fmax(dotN(n, h), 0.0f), k.w, fast_log2N, fast_exp2N);
+  floatN hh = dotN(half_way, half_way);
+  intN no_half = ~(hh > 1e-12f);
+  floatN nh = (dotN(n, l) + dotN(n, view_w)) * rsqrt(select(hh, (floatN)(1.0f), no_half));
+  nh = select(nh, (floatN)(1.0f), no_half);
+  floatN specular = SPECULAR_POWER_BY(fmax(nh, 0.0f), k.w, fast_log2N, fast_exp2N);
   specular = select((floatN)(0.0f), specular, diffuse > 0.0f);
   floatN f = k.x + k.y * diffuse, s = k.z * specular;
   VecN out = {color.x * f + s, color.y * f + s, color.z * f + s};

@@ -1,0 +1,105 @@
+// The shading queue of dvr packets (packet.cl): seen samples wait here until LANES of
+// them fill one gradient-and-shade call. Shading each step's seen lanes in place ran
+// calls with 65 % of their lanes useful on average (CThead, VTK's transfer function); the
+// gradient's gathers and the shading cost the same for the idle lanes. A sample's weight
+// in the composite is known when it is queued (opacity does not depend on shading), so
+// only its colour waits: acc[lane] += weight * lit colour, in the order the lane took its
+// samples, as without the queue. An entry keeps only t, the value and the weight; its
+// position, colour and view come back from its lane's ray at the flush.
+#ifndef VOXRAY_SHADE_QUEUE_CL
+#define VOXRAY_SHADE_QUEUE_CL
+
+#include "gradients_lanes.cl"
+
+typedef struct {
+  float t[2 * LANES], value[2 * LANES], weight[2 * LANES];
+  int lane[2 * LANES];  // whose ray entry e belongs to
+  int n;
+  // The part of each lane's ray that differs between lanes: voxel and world origins with
+  // ORTHO, else voxel and world directions (pixel_raysN).
+  float ray[6][LANES];
+  float acc[3][LANES];  // each lane's composited colour
+} ShadeQueue;
+
+inline void shade_queue_init(ShadeQueue* q, const RayPacket* r, const floatN world[6]) {
+  floatN ray[6] = {r->ox, r->oy, r->oz, world[0], world[1], world[2]};
+  if (!ORTHO)
+    ray[0] = r->dx, ray[1] = r->dy, ray[2] = r->dz, ray[3] = world[3], ray[4] = world[4],
+    ray[5] = world[5];
+  for (int k = 0; k < 6; ++k) vstoreN(ray[k], 0, q->ray[k]);
+  // Entries past n still go through the gradient (whole vectors): t = 0 and lane 0 put
+  // them at a lane's entry point, in the volume.
+  for (int e = 0; e < 2 * LANES; ++e) q->t[e] = q->value[e] = q->weight[e] = 0.0f, q->lane[e] = 0;
+  for (int c = 0; c < 3; ++c)
+    for (int l = 0; l < LANES; ++l) q->acc[c][l] = 0.0f;
+  q->n = 0;
+}
+
+inline floatN lane_valuesN(const float* a, intN lane) {
+#define LANE_VALUE(l, n) a[lane.s##l]
+  return (floatN)(LANE_LIST(LANE_VALUE));
+#undef LANE_VALUE
+}
+
+// Shades the first `count` entries (at most LANES) and adds them to their lanes' colours;
+// the rest move to the front.
+inline void shade_queue_flush(__global const short* restrict vol, __constant RaycastParams* P,
+                              __global const float4* lut, ShadeQueue* q, int count) {
+  floatN t = vloadN(0, q->t);
+  intN lane = vloadN(0, q->lane);
+  floatN ray[12];  // voxel origin, direction; world origin, direction
+  float4 o_v = P->eye_v, d_v = P->forward_v, o_w = P->eye_w, d_w = P->forward_w;
+  for (int k = 0; k < 3; ++k) {
+    floatN v = lane_valuesN(q->ray[k], lane), w = lane_valuesN(q->ray[k + 3], lane);
+    ray[k] = ORTHO ? v : (floatN)(k == 0 ? o_v.x : k == 1 ? o_v.y : o_v.z);
+    ray[k + 3] = ORTHO ? (floatN)(k == 0 ? d_v.x : k == 1 ? d_v.y : d_v.z) : v;
+    ray[k + 6] = ORTHO ? w : (floatN)(k == 0 ? o_w.x : k == 1 ? o_w.y : o_w.z);
+    ray[k + 9] = ORTHO ? (floatN)(k == 0 ? d_w.x : k == 1 ? d_w.y : d_w.z) : w;
+  }
+  VecN at = {ray[0] + t * ray[3], ray[1] + t * ray[4], ray[2] + t * ray[5]};
+  VecN pos = {ray[6] + t * ray[9], ray[7] + t * ray[10], ray[8] + t * ray[11]};
+  VecN view = {-ray[9], -ray[10], -ray[11]};
+  floatN c[4];
+  lutN(lut, P, vloadN(0, q->value), c);
+  VecN color = {c[0], c[1], c[2]};
+  VecN normal = gradient_to_worldN(P, volume_gradientN(vol, P, at));
+  VecN lit = shadeN(color, normal, pos, view, P->light_w, P->light);
+  floatN w = vloadN(0, q->weight);
+  float add[3][LANES];
+  vstoreN(w * lit.x, 0, add[0]);
+  vstoreN(w * lit.y, 0, add[1]);
+  vstoreN(w * lit.z, 0, add[2]);
+  for (int e = 0; e < count; ++e)
+    for (int ch = 0; ch < 3; ++ch) q->acc[ch][q->lane[e]] += add[ch][e];
+  int n = q->n;
+  for (int e = count; e < n; ++e) {
+    q->t[e - count] = q->t[e];
+    q->value[e - count] = q->value[e];
+    q->weight[e - count] = q->weight[e];
+    q->lane[e - count] = q->lane[e];
+  }
+  q->n = n - count;
+}
+
+// Queues the lanes in `seen` (their t, value and weight); shades a full call's worth when
+// there is one.
+inline void shade_queue_push(__global const short* restrict vol, __constant RaycastParams* P,
+                             __global const float4* lut, ShadeQueue* q, floatN t, floatN value,
+                             floatN weight, intN seen) {
+  float ts[LANES], vs[LANES], ws[LANES];
+  int take[LANES];
+  vstoreN(t, 0, ts);
+  vstoreN(value, 0, vs);
+  vstoreN(weight, 0, ws);
+  vstoreN(seen, 0, take);
+  int n = q->n;
+  for (int l = 0; l < LANES; ++l) {
+    if (!take[l]) continue;
+    q->t[n] = ts[l], q->value[n] = vs[l], q->weight[n] = ws[l], q->lane[n] = l;
+    ++n;
+  }
+  q->n = n;
+  if (n >= LANES) shade_queue_flush(vol, P, lut, q, LANES);
+}
+
+#endif
