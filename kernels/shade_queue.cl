@@ -92,11 +92,12 @@ inline void shade_queue_push(__global const short* restrict vol, __constant Rayc
   vstoreN(value, 0, vs);
   vstoreN(weight, 0, ws);
   vstoreN(seen, 0, take);
+  // Without branches (which lanes are seen is hard to predict): every lane is written at
+  // n, and n moves on past the seen ones. n < LANES before, so n + LANES - 1 fits.
   int n = q->n;
   for (int l = 0; l < LANES; ++l) {
-    if (!take[l]) continue;
     q->t[n] = ts[l], q->value[n] = vs[l], q->weight[n] = ws[l], q->lane[n] = l;
-    ++n;
+    n += take[l] & 1;
   }
   q->n = n;
   if (n >= LANES) shade_queue_flush(vol, P, lut, q, LANES);
