@@ -371,8 +371,38 @@ inline void iso_packet(__global const short* restrict vol, __constant RaycastPar
 // After RayPacket and lutN, which it uses.
 #include "shade_queue.cl"
 
+// One dvr sample into the composite: opacity (and colour) c of the segment of length seg
+// at t, for the lanes in `live`. Updates alpha, active, samples and the colour (acc, or
+// the shading queue).
+inline void dvr_compositeN(__global const short* restrict vol, __constant RaycastParams* P,
+                           __global const float4* lut, ShadeQueue* queue, floatN acc[3],
+                           floatN* alpha, intN* active, intN* samples, intN live, floatN seg,
+                           floatN t, floatN value, const floatN c[4]) {
+  *samples -= live;
+  intN seen = live & (c[3] > 0.0f);
+  if (!any(seen)) return;
+  floatN a = c[3];
+  if (OPACITY_CORRECTION) {
+    floatN ratio = seg / P->view.w;
+    a = CORRECTED_OPACITY_BY(a, ratio, fast_log2N, fast_exp2N);
+  }
+  floatN w = select((floatN)(0.0f), (1.0f - *alpha) * a, seen);
+  if (SHADING) {
+    shade_queue_push(vol, P, lut, queue, t, value, w, seen);
+    *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+  } else {
+    for (int ch = 0; ch < 3; ++ch) acc[ch] += w * c[ch];
+  }
+  *alpha += w;
+  *active &= ~(seen & (*alpha >= P->dvr.z));
+}
+
 // march_dvr (march.cl) for a packet: the same segments, leaps, opacity and early
 // termination lane by lane. Seen samples are shaded LANES at a time (shade_queue.cl).
+// DVR_BATCH samples per iteration: the later ones' loads need not wait for the first's
+// compositing (a lane that ends early drops the rest). 2 ran about 5 % faster than 1;
+// 3 and 4 no faster than 2 (CThead, VTK's orbit).
+#define DVR_BATCH 2
 inline void dvr_packet(__global const short* restrict vol, __constant RaycastParams* P,
                        __global const float4* lut, __global uchar4* out, CELL_ARGS,
                        __global uint* count, int gx, int gy) {
@@ -392,38 +422,23 @@ inline void dvr_packet(__global const short* restrict vol, __constant RaycastPar
       active = leap_packetN(leap, range, P, &r, &i, &check, active, step, true, true);
       if (!any(active)) break;
     }
-    floatN sa, sb;
-    segmentN(&r, i, step, &sa, &sb);
-    floatN seg = sb - sa;
-    intN live = active & (seg > 0.0f);  // segment 0 without jitter is empty
-    if (any(live)) {
-      floatN t = 0.5f * (sa + sb);
-      floatN x = r.ox + t * r.dx, y = r.oy + t * r.dy, z = r.oz + t * r.dz;
-      floatN c[4], value = sampleN(vol, P, x, y, z);
+    floatN sa[DVR_BATCH], sb[DVR_BATCH], t[DVR_BATCH], value[DVR_BATCH], c[DVR_BATCH][4];
+    intN live[DVR_BATCH];
+    for (int k = 0; k < DVR_BATCH; ++k) {
+      segmentN(&r, i + k, step, &sa[k], &sb[k]);
+      live[k] =
+          active & (i + k <= r.n) & (sb[k] - sa[k] > 0.0f);  // segment 0 without jitter is empty
+      t[k] = 0.5f * (sa[k] + sb[k]);
+      value[k] = sampleN(vol, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
       if (SHADING)
-        c[3] = lut_alphaN(lut, P, value);
+        c[k][3] = lut_alphaN(lut, P, value[k]);
       else
-        lutN(lut, P, value, c);
-      samples -= live;
-      intN seen = live & (c[3] > 0.0f);
-      if (any(seen)) {
-        floatN a = c[3];
-        if (OPACITY_CORRECTION) {
-          floatN ratio = seg / P->view.w;
-          a = CORRECTED_OPACITY_BY(a, ratio, fast_log2N, fast_exp2N);
-        }
-        floatN w = select((floatN)(0.0f), (1.0f - alpha) * a, seen);
-        if (SHADING) {
-          shade_queue_push(vol, P, lut, &queue, t, value, w, seen);
-          samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
-        } else {
-          for (int ch = 0; ch < 3; ++ch) acc[ch] += w * c[ch];
-        }
-        alpha += w;
-        active &= ~(seen & (alpha >= P->dvr.z));
-      }
+        lutN(lut, P, value[k], c[k]);
     }
-    i += 1;
+    for (int k = 0; k < DVR_BATCH; ++k)
+      dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
+                     sb[k] - sa[k], t[k], value[k], c[k]);
+    i += DVR_BATCH;
     active &= i <= r.n;
   }
   if (SHADING) {
