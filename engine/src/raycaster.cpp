@@ -106,7 +106,7 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
   return o.str();
 }
 
-bool Raycaster::Impl::packets(const RenderParams& p) const {
+bool Raycaster::Impl::packets(const RenderParams&) const {
   // packet.cl reads one volume argument and indexes voxels with int.
   return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
          storage == VolumeStorage::Buffer && !cl.info.isGpu && device.plan().count() == 1 &&
