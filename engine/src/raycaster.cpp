@@ -52,9 +52,9 @@ struct Raycaster::Impl {
 
   void upload();
   std::string options(const RenderParams& p) const;
-  bool packets(const RenderParams& p) const;
+  bool packets() const;
   int lanes(const RenderParams& p) const;
-  cl::NDRange local(const RenderParams& p) const;
+  cl::NDRange local() const;
   void updateSetup(const RenderParams& p);
 };
 
@@ -102,11 +102,11 @@ std::string Raycaster::Impl::options(const RenderParams& p) const {
   if (shading) o << " -D GRADIENT=" << int(p.gradient);
   if (p.mode == Mode::Iso) o << " -D REFINE_STEPS=" << p.refine;
   if (p.mode == Mode::Dvr) o << " -D OPACITY_CORRECTION=" << int(p.opacityCorrection);
-  if (packets(p)) o << " -D PACKET=1 -D LANES=" << lanes(p);
+  if (packets()) o << " -D PACKET=1 -D LANES=" << lanes(p);
   return o.str();
 }
 
-bool Raycaster::Impl::packets(const RenderParams&) const {
+bool Raycaster::Impl::packets() const {
   // packet.cl reads one volume argument and indexes voxels with int.
   return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
          storage == VolumeStorage::Buffer && !cl.info.isGpu && device.plan().count() == 1 &&
@@ -119,7 +119,7 @@ int Raycaster::Impl::lanes(const RenderParams& p) const {
   return p.mode != Mode::Mip && cl.info.nativeFloatWidth >= 16 ? 16 : 8;
 }
 
-cl::NDRange Raycaster::Impl::local(const RenderParams& p) const {
+cl::NDRange Raycaster::Impl::local() const {
   // The caller rounds the global size up to whole groups; the kernel drops extra items.
   if (opts.localX <= 0 || opts.localY <= 0) {
     // GPUs: 16x8 pixel tiles keep neighbouring rays' texture reads in cache; on an H200
@@ -128,7 +128,7 @@ cl::NDRange Raycaster::Impl::local(const RenderParams& p) const {
     // Packets: PoCL chose a few large groups (128x24 packets at 512x384), and the cores
     // idled 15-20 % of a CThead dvr frame waiting for the last, slowest one. Groups of 4x4
     // packets keep them both busy (idle 2-3 %, vmstat).
-    if (packets(p)) return cl::NDRange(4, 4);
+    if (packets()) return cl::NDRange(4, 4);
     return cl::NullRange;
   }
   return cl::NDRange(size_t(opts.localX), size_t(opts.localY));
@@ -232,7 +232,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       q.enqueueWriteBuffer(m.lutBuffer, CL_FALSE, 0, lutBytes, m.lutUploaded.data());
     }
     // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
-    bool leaps = p.mode != Mode::Mip || m.packets(p);
+    bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
       m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
     if (m.opts.countSamples)
@@ -252,9 +252,9 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       m.hitsOut->resize(pixels);
       kernel.setArg(arg, m.hitBuffer);
     }
-    cl::NDRange local = m.local(p);
+    cl::NDRange local = m.local();
     size_t gx = size_t(p.width), gy = size_t(p.height);
-    if (m.packets(p)) {  // one work-item per 4 x (lanes / 4) pixels
+    if (m.packets()) {  // one work-item per 4 x (lanes / 4) pixels
       size_t rows = size_t(m.lanes(p) / 4);
       gx = (gx + 3) / 4;
       gy = (gy + rows - 1) / rows;

@@ -31,7 +31,8 @@ struct RaycasterOptions {
   // float vector holds 16 (AVX-512), else 8; mip keeps 8 (its cell walk lives in private
   // memory, and wider packets diverge more).
   int packetLanes = 0;
-  int localX = 0, localY = 0;  // work-group size; 0: 16x8 on GPUs, PoCL's choice on CPUs
+  // Work-group size; 0: 16x8 on GPUs, 4x4 packets with CPU packets, else PoCL's choice.
+  int localX = 0, localY = 0;
   // Largest bytes of one z slab of the volume on the device (apron included); 0: the
   // device's largest allocation. Lower it to split volumes that fit (tests, benchmarks).
   size_t maxSlabBytes = 0;
