@@ -238,9 +238,8 @@ inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __gl
   if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], total);
 }
 
-// lut_lookup (march.cl) for each lane's value, as four channels. Each lane mixes its two
-// entries as a float4; the results are transposed in registers.
-// Where each lane's value falls in the table: entries *k and *k1, mixed by *f.
+// Where each lane's value falls in the table (lut_lookup, march.cl): entries *k and *k1,
+// mixed by *f.
 inline void lut_spotN(__constant RaycastParams* P, floatN v, intN* k, intN* k1, floatN* f) {
   int last = P->dims.w - 1;
   floatN x = clamp((v - P->values.z) * P->values.w, 0.0f, (float)last);
@@ -259,6 +258,8 @@ inline floatN lut_alphaN(__global const float4* lut, __constant RaycastParams* P
   return mix(gather_floatN(alpha, 4 * k), gather_floatN(alpha, 4 * k1), f);
 }
 
+// lut_lookup for each lane's value, as four channels. Each lane mixes its two entries as a
+// float4; the results are transposed in registers.
 inline void lutN(__global const float4* lut, __constant RaycastParams* P, floatN v,
                  floatN rgba[4]) {
   intN k, k1;

@@ -47,15 +47,15 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
                               __global const float4* lut, ShadeQueue* q, int count) {
   floatN t = vloadN(0, q->t);
   intN lane = vloadN(0, q->lane);
-  floatN ray[12];  // voxel origin, direction; world origin, direction
-  float4 o_v = P->eye_v, d_v = P->forward_v, o_w = P->eye_w, d_w = P->forward_w;
-  for (int k = 0; k < 3; ++k) {
-    floatN v = lane_valuesN(q->ray[k], lane), w = lane_valuesN(q->ray[k + 3], lane);
-    ray[k] = ORTHO ? v : (floatN)(k == 0 ? o_v.x : k == 1 ? o_v.y : o_v.z);
-    ray[k + 3] = ORTHO ? (floatN)(k == 0 ? d_v.x : k == 1 ? d_v.y : d_v.z) : v;
-    ray[k + 6] = ORTHO ? w : (floatN)(k == 0 ? o_w.x : k == 1 ? o_w.y : o_w.z);
-    ray[k + 9] = ORTHO ? (floatN)(k == 0 ? d_w.x : k == 1 ? d_w.y : d_w.z) : w;
-  }
+  // voxel origin, direction; world origin, direction: the shared part from P
+  floatN ray[12];
+  float4 shared[4] = {P->eye_v, P->forward_v, P->eye_w, P->forward_w};
+  for (int k = 0; k < 3; ++k)
+    for (int s = 0; s < 4; ++s) {
+      bool varies = ORTHO ? s % 2 == 0 : s % 2 == 1;  // origins with ORTHO, else directions
+      float u = k == 0 ? shared[s].x : k == 1 ? shared[s].y : shared[s].z;
+      ray[3 * s + k] = varies ? lane_valuesN(q->ray[3 * (s / 2) + k], lane) : (floatN)(u);
+    }
   VecN at = {ray[0] + t * ray[3], ray[1] + t * ray[4], ray[2] + t * ray[5]};
   VecN pos = {ray[6] + t * ray[9], ray[7] + t * ray[10], ray[8] + t * ray[11]};
   VecN view = {-ray[9], -ray[10], -ray[11]};
