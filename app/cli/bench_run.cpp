@@ -1,4 +1,5 @@
 #include "bench_run.h"
+#include "json_text.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -142,7 +143,7 @@ void printFooter(BenchFormat f, const std::vector<BenchRow>& rows, const std::st
                      {"samples_per_s", r.samplesPerS},
                      {"seed_fps", r.seedFps},
                      {"device", device}});
-    std::cout << out.dump(2) << "\n";
+    std::cout << jsonText(out) << "\n";
   } else if (f == BenchFormat::Text) {
     std::printf("device: %s, %d frames per case over a 360-degree orbit after a warm-up\n",
                 device.c_str(), frames);

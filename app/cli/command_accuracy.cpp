@@ -11,6 +11,7 @@
 
 #include "commands.h"
 #include "input_options.h"
+#include "json_text.h"
 #include "render_flags.h"
 #include "voxray/engine/accuracy_plot.h"
 #include "voxray/engine/accuracy_sweep.h"
@@ -180,7 +181,7 @@ Run addAccuracyCommand(CLI::App& app) {
     }
     const std::string device = ctx.device().name;
     if (o->json)
-      std::cout << toJson(rows, device).dump(2) << "\n";
+      std::cout << jsonText(toJson(rows, device)) << "\n";
     else
       printTable(rows, device);
     if (!o->plot.empty()) {

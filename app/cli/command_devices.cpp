@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "json_text.h"
 #include "voxray/engine/cl_context.h"
 
 namespace voxray::cli {
@@ -25,7 +26,7 @@ Run addDevicesCommand(CLI::App& app) {
                        {"max_alloc_bytes", d.maxAllocBytes},
                        {"image_support", d.imageSupport},
                        {"compute_units", d.computeUnits}});
-      std::cout << out.dump(2) << "\n";
+      std::cout << jsonText(out) << "\n";
       return 0;
     }
     for (const auto& d : devices) {

@@ -1,5 +1,6 @@
 // voxray-cli: the headless front end. Errors end in one line on stderr and exit code 1;
-// usage errors exit 2.
+// usage errors exit 2, internal errors (a bug: any exception that is not voxray::Error) 3.
+// No exception reaches the runtime: a user never sees an abort.
 #include <iostream>
 
 #include "commands.h"
@@ -30,6 +31,15 @@ int main(int argc, char** argv) {
       std::cerr << "voxray-cli: out of memory: the volume or image is too large for this "
                    "machine\n";
       return 1;
+    } catch (const std::exception& e) {
+      // A bug, not the user's input: say so rather than abort.
+      std::cerr << "voxray-cli: internal error (" << e.what()
+                << "); please report it with the command that caused it\n";
+      return 3;
+    } catch (...) {
+      std::cerr << "voxray-cli: internal error (an unknown exception); please report it with "
+                   "the command that caused it\n";
+      return 3;
     }
   }
   return 2;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <system_error>
 
+#include "file_kind.h"
 #include "raw_messages.h"
 #include "voxray/io/error.h"
 #include "voxray/io/phantom.h"
@@ -43,6 +44,7 @@ Volume loadVolume(const std::string& input, const LoadOptions& options) {
 
   std::error_code ec;
   if (!fs::exists(input, ec)) throw inputError(input + ": no such file or folder");
+  detail::refuseSpecialFile(input);
   if (fs::is_regular_file(input, ec) && !mayBeDicom(input)) {
     throw inputError(input + ": not a DICOM file; " + detail::kRawUsage);
   }

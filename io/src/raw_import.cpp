@@ -1,6 +1,7 @@
 #include "voxray/io/raw_import.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <system_error>
 #include <vector>
 
+#include "file_kind.h"
 #include "parallel.h"
 #include "raw_messages.h"
 #include "raw_samples.h"
@@ -137,8 +139,15 @@ std::vector<SliceSource> fileSources(const std::string& path, const RawLayout& l
 }
 
 void readExactly(const SliceSource& s, uint8_t* dest, size_t bytes) {
-  const int fd = ::open(s.path.c_str(), O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK and fstat: a path swapped for a FIFO after the checks must not hang here.
+  const int fd = ::open(s.path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) throw inputError(s.path + ": cannot read (" + ioReason() + ")");
+  struct stat info {};
+  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+    ::close(fd);
+    detail::refuseSpecialFile(s.path);
+    throw inputError(s.path + ": is not a regular file; save the data to a file and open that");
+  }
   size_t done = 0;
   while (done < bytes) {
     const ssize_t n = ::pread(fd, dest + done, bytes - done, off_t(s.offset + done));
@@ -174,6 +183,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
       checkVoxelCount(layout.dims.x, layout.dims.y, detail::sliceCount(*layout.range));
     sources = stackSources(detail::listSliceFolder(input, layout.range), layout, sliceBytes, z);
   } else if (fs::exists(input, ec)) {
+    detail::refuseSpecialFile(input);
     sources = fileSources(input, layout, sliceBytes, z);
   } else if (input.find('%') != std::string::npos) {
     if (layout.range)

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "file_kind.h"
 #include "voxray/io/error.h"
 
 namespace fs = std::filesystem;
@@ -169,15 +170,34 @@ std::vector<SliceFile> listSlicePattern(const std::string& pattern, const SliceR
   }
   sliceCount(*range);
   const auto [first, last] = *range;
+  // Stops at the first gap: a range of two billion names must not be walked when slice 4
+  // is already absent. The message says how far the gap goes, looking a bounded way ahead.
+  constexpr long long kLookAhead = 1000;
+  const auto exists = [](const std::string& path) {
+    std::error_code ec;
+    return fs::exists(path, ec);
+  };
   std::vector<SliceFile> files;
   for (long long n = first; n <= last; ++n) {
     SliceFile f{n, p.format(n)};
-    std::error_code ec;
-    if (fs::exists(f.path, ec)) files.push_back(std::move(f));
-  }
-  if (files.empty()) {
-    throw inputError(pattern + ": no files for slices " + numbers(first, last) + " (the first " +
-                     "would be " + p.format(first) + ")");
+    if (exists(f.path)) {
+      refuseSpecialFile(f.path);
+      files.push_back(std::move(f));
+      continue;
+    }
+    const long long horizon = std::min<long long>(last, n + kLookAhead);
+    long long next = n + 1;
+    while (next <= horizon && !exists(p.format(next))) ++next;
+    const SliceFile* before = files.empty() ? nullptr : &files.back();
+    if (next <= horizon) {
+      const SliceFile after{next, p.format(next)};
+      throw missingSlices(n, next - 1, before, &after, pattern);
+    }
+    if (!before) {
+      throw inputError(pattern + ": no files for slices " + numbers(n, horizon) +
+                       " (the first would be " + f.path + ")");
+    }
+    throw missingSlices(n, horizon, before, nullptr, pattern);
   }
   requireComplete(files, first, last, pattern);
   return files;

@@ -3,6 +3,7 @@
 find_package(DCMTK REQUIRED CONFIG)
 pkg_check_modules(OPENJPEG REQUIRED IMPORTED_TARGET libopenjp2)
 target_sources(voxray_io PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/bounded_load.cpp
   ${CMAKE_CURRENT_LIST_DIR}/codec_registry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/dicom_import.cpp
   ${CMAKE_CURRENT_LIST_DIR}/file_scan.cpp
@@ -12,6 +13,7 @@ target_sources(voxray_io PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/resample.cpp
   ${CMAKE_CURRENT_LIST_DIR}/series_grouping.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stack_geometry.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/text_decode.cpp
   ${CMAKE_CURRENT_LIST_DIR}/value_mapping.cpp)
 target_link_libraries(voxray_io PRIVATE
   DCMTK::dcmdata DCMTK::dcmjpeg DCMTK::dcmjpls PkgConfig::OPENJPEG Threads::Threads)

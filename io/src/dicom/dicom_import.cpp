@@ -125,9 +125,16 @@ int defaultChoice(const Scan& s) {
   return -1;
 }
 
+// At most a screenful: a damaged multi-frame file can split into thousands of candidates.
 std::string candidateList(const Scan& s) {
+  constexpr size_t kShown = 12;
   std::string out;
-  for (auto& c : s.candidates) {
+  for (size_t i = 0; i < s.candidates.size(); ++i) {
+    if (i == kShown) {
+      out += "\n  ... and " + std::to_string(s.candidates.size() - kShown) + " more";
+      break;
+    }
+    const Candidate& c = s.candidates[i];
     out += "\n  " + c.selector + ": " + std::to_string(c.frames.size()) + " image(s) " +
            c.first().modality;
     if (!c.first().description.empty()) out += " \"" + c.first().description + "\"";

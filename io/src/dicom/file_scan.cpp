@@ -12,7 +12,8 @@
 #include <filesystem>
 #include <system_error>
 
-#include "codec_registry.h"
+#include "../file_kind.h"
+#include "bounded_load.h"
 #include "voxray/io/error.h"
 
 namespace fs = std::filesystem;
@@ -34,13 +35,9 @@ std::vector<std::string> filesUnder(const fs::path& dir) {
 
 // Referenced files of a DICOMDIR; empty when PATH is not a DICOMDIR.
 bool readDicomDir(const fs::path& path, std::vector<std::string>& files, int& missing) {
-  ensureCodecsRegistered();  // quiets DCMTK's logging
   DcmFileFormat file;
   // Stops at PixelData: an image given as INPUT is not read twice in full.
-  if (file.loadFileUntilTag(path.c_str(), EXS_Unknown, EGL_noChange, DCM_MaxReadLength,
-                            ERM_autoDetect, DCM_PixelData)
-          .bad())
-    return false;
+  if (!loadDicomFile(file, path.string(), DCM_MaxReadLength, DCM_PixelData).empty()) return false;
   OFString sopClass;
   file.getMetaInfo()->findAndGetOFString(DCM_MediaStorageSOPClassUID, sopClass);
   if (sopClass != UID_MediaStorageDirectoryStorage) return false;
@@ -69,6 +66,7 @@ InputFiles collectInputFiles(const std::string& input) {
   std::error_code ec;
   fs::path path(input);
   if (!fs::exists(path, ec)) throw inputError(input + ": no such file or folder. Check the path.");
+  detail::refuseSpecialFile(input);
   if (fs::is_directory(path, ec)) {
     result.files = filesUnder(path);
     if (result.files.empty())

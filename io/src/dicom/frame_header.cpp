@@ -2,7 +2,8 @@
 // listing a study touches only a few kilobytes per file.
 #include "frame_header.h"
 
-#include "codec_registry.h"
+#include "bounded_load.h"
+#include "text_decode.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 namespace voxray::dicom {
@@ -21,12 +23,14 @@ namespace {
 // A guard against damaged headers: more frames than any real multi-frame object.
 constexpr int kMaxFramesPerFile = 100000;
 
-std::string str(DcmItem* item, const DcmTagKey& tag) {
+// Every string is UTF-8 from here on: JSON, the UI and messages need nothing else.
+std::string str(DcmItem* item, const DcmTagKey& tag, const TextDecoder& text,
+                bool personName = false) {
   OFString s;
   if (item && item->findAndGetOFStringArray(tag, s).good()) {
-    std::string out(s.c_str());
+    std::string out(s.data(), s.size());
     while (!out.empty() && (out.back() == ' ' || out.back() == '\0')) out.pop_back();
-    return out;
+    return text(out, personName);
   }
   return {};
 }
@@ -125,24 +129,22 @@ bool hasDicomPreamble(const std::string& path) {
 
 ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& out,
                             std::string& why) {
-  ensureCodecsRegistered();  // also silences DCMTK's own logging
   DcmFileFormat file;
-  OFCondition status = file.loadFileUntilTag(path.c_str(), EXS_Unknown, EGL_noChange, 4096,
-                                             ERM_autoDetect, DCM_PixelData);
+  const std::string failure = loadDicomFile(file, path, 4096, DCM_PixelData);
   DcmDataset* ds = file.getDataset();
-  if (status.bad() || !ds) {
-    why = hasDicomPreamble(path) ? std::string("damaged DICOM (") + status.text() + ")"
-                                 : std::string("not a DICOM file");
+  if (!failure.empty() || !ds) {
+    why = hasDicomPreamble(path) ? "damaged DICOM (" + failure + ")" : "not a DICOM file";
     return ScanResult::NotDicom;
   }
+  const TextDecoder text(*ds);
   FrameHeader h;
   h.path = path;
-  h.sopClassUid = str(ds, DCM_SOPClassUID);
+  h.sopClassUid = str(ds, DCM_SOPClassUID, text);
   h.rows = intValue(ds, DCM_Rows);
   h.columns = intValue(ds, DCM_Columns);
   if (h.rows <= 0 || h.columns <= 0) {
-    std::string media = str(file.getMetaInfo(), DCM_MediaStorageSOPClassUID);
-    if (h.sopClassUid.empty() && media.empty() && str(ds, DCM_Modality).empty()) {
+    std::string media = str(file.getMetaInfo(), DCM_MediaStorageSOPClassUID, text);
+    if (h.sopClassUid.empty() && media.empty() && str(ds, DCM_Modality, text).empty()) {
       why = "not a DICOM file";
       return ScanResult::NotDicom;
     }
@@ -150,12 +152,13 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
     why = std::string("DICOM without an image (") + (name ? name : "no SOP class") + ")";
     return ScanResult::NoImage;
   }
-  h.transferSyntaxUid = DcmXfer(ds->getOriginalXfer()).getXferID();
-  h.seriesUid = str(ds, DCM_SeriesInstanceUID);
-  h.modality = str(ds, DCM_Modality);
-  h.description = str(ds, DCM_SeriesDescription);
-  h.imageType = str(ds, DCM_ImageType);
-  h.photometric = str(ds, DCM_PhotometricInterpretation);
+  const DcmXfer xfer(ds->getOriginalXfer());
+  h.transferSyntaxUid = xfer.getXferID();
+  h.seriesUid = str(ds, DCM_SeriesInstanceUID, text);
+  h.modality = str(ds, DCM_Modality, text);
+  h.description = str(ds, DCM_SeriesDescription, text);
+  h.imageType = str(ds, DCM_ImageType, text);
+  h.photometric = str(ds, DCM_PhotometricInterpretation, text);
   h.seriesNumber = intValue(ds, DCM_SeriesNumber);
   h.instanceNumber = intValue(ds, DCM_InstanceNumber);
   h.acquisitionNumber = intValue(ds, DCM_AcquisitionNumber);
@@ -170,9 +173,9 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
   readRescale(ds, h);
   h.padding = paddingValue(ds, DCM_PixelPaddingValue, h.pixelRepresentation);
   h.paddingLimit = paddingValue(ds, DCM_PixelPaddingRangeLimit, h.pixelRepresentation);
-  h.patientName = str(ds, DCM_PatientName);
-  h.patientId = str(ds, DCM_PatientID);
-  h.patientBirthDate = str(ds, DCM_PatientBirthDate);
+  h.patientName = str(ds, DCM_PatientName, text, true);
+  h.patientId = str(ds, DCM_PatientID, text);
+  h.patientBirthDate = str(ds, DCM_PatientBirthDate, text);
 
   int frames = std::max(1, intValue(ds, DCM_NumberOfFrames, 1));
   if (frames > kMaxFramesPerFile) {
@@ -183,6 +186,22 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
   ds->findAndGetSequenceItem(DCM_SharedFunctionalGroupsSequence, shared, 0);
   DcmSequenceOfItems* perFrame = nullptr;
   ds->findAndGetSequence(DCM_PerFrameFunctionalGroupsSequence, perFrame);
+  // Uncompressed frames lie one after another: a file too small for them is damaged, and
+  // refusing it here keeps a header that claims 2000 frames from allocating them.
+  if (!xfer.isEncapsulated()) {
+    const uintmax_t bits = uintmax_t(frames) * uintmax_t(h.rows) * uintmax_t(h.columns) *
+                           uintmax_t(std::max(1, h.samplesPerPixel)) *
+                           uintmax_t(std::max(1, h.bitsAllocated));
+    std::error_code ec;
+    const uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && bits / 8 > size) {
+      why = "the header describes " + std::to_string(frames) + " frame(s) of " +
+            std::to_string(h.columns) + "x" + std::to_string(h.rows) + " pixels (" +
+            std::to_string(bits / 8) + " bytes) but the file holds only " + std::to_string(size) +
+            " bytes; the file is truncated or damaged";
+      return ScanResult::NoImage;
+    }
+  }
   h.fileFrames = frames;
   h.perFrameGroups = shared || perFrame;
   for (int f = 0; f < frames; ++f) {

@@ -11,7 +11,7 @@
 
 #include <cstring>
 
-#include "codec_registry.h"
+#include "bounded_load.h"
 #include "j2k_decode.h"
 #include "voxray/io/error.h"
 
@@ -176,12 +176,9 @@ struct PixelFile::Impl {
 };
 
 PixelFile::PixelFile(const std::string& path) : impl_(std::make_unique<Impl>()) {
-  ensureCodecsRegistered();
   impl_->path = path;
-  OFCondition c = impl_->file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, DCM_MaxReadLength,
-                                       ERM_autoDetect);
-  if (c.bad())
-    impl_->fail(std::string("cannot be read (") + c.text() +
+  if (std::string why = loadDicomFile(impl_->file, path, DCM_MaxReadLength); !why.empty())
+    impl_->fail("cannot be read (" + why +
                 "); the file is damaged or incomplete: copy it again or remove it");
   impl_->ds = impl_->file.getDataset();
   impl_->xfer = impl_->ds->getOriginalXfer();

@@ -1,0 +1,14 @@
+#pragma once
+// What `voxray-cli info --json` prints: the volume as loaded and, for DICOM, every candidate
+// series. No patient data: info output may be pasted into tickets.
+#include <nlohmann/json.hpp>
+
+#include "voxray/io/dicom_import.h"
+#include "voxray/io/volume.h"
+
+namespace voxray::cli {
+
+// LISTING may be null (raw data, or a build without DICOM).
+nlohmann::json infoJson(const Volume& v, const DicomListing* listing);
+
+}  // namespace voxray::cli

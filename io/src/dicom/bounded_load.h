@@ -1,0 +1,23 @@
+#pragma once
+// Every DICOM file Voxray parses is read through here. DCMTK parses nested sequences by
+// recursion and has no depth limit of its own: a file with sequences nested 100,000 deep
+// overflows the stack. Here the parse stops once it has used a fixed stack budget, which
+// allows nesting far deeper than any real object (kMaxNestingDepth levels at least).
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+
+#include <string>
+
+namespace voxray::dicom {
+
+// Sequences nested this deep always parse; deeper ones may be refused.
+constexpr int kMaxNestingDepth = 256;
+
+// Loads PATH into FILE as DcmFileFormat::loadFileUntilTag does (values longer than
+// MAX_READ_LENGTH are read when first used; parsing stops at STOP_AT). Returns an empty
+// string on success, else why the file could not be parsed (without the path). A C++
+// exception from the parser becomes such a reason too.
+std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 maxReadLength,
+                          const DcmTagKey& stopAt = DCM_UndefinedTagKey);
+
+}  // namespace voxray::dicom

@@ -1,0 +1,80 @@
+#include "dicom_writer.h"
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcuid.h>
+
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <vector>
+
+namespace voxray::test {
+
+void writeTestSlice(const std::string& path, const TestSlice& s) {
+  DcmFileFormat file;
+  DcmDataset* ds = file.getDataset();
+  const std::string sop = s.seriesUid + "." + std::to_string(s.instance);
+  if (!s.charset.empty()) ds->putAndInsertString(DCM_SpecificCharacterSet, s.charset.c_str());
+  ds->putAndInsertString(DCM_SOPClassUID, UID_CTImageStorage);
+  ds->putAndInsertString(DCM_SOPInstanceUID, sop.c_str());
+  ds->putAndInsertString(DCM_StudyInstanceUID, s.seriesUid.c_str());
+  ds->putAndInsertString(DCM_SeriesInstanceUID, s.seriesUid.c_str());
+  ds->putAndInsertString(DCM_Modality, s.modality.c_str());
+  ds->putAndInsertString(DCM_SeriesNumber, "7");
+  ds->putAndInsertString(DCM_InstanceNumber, std::to_string(s.instance).c_str());
+  ds->putAndInsertString(DCM_SeriesDescription, s.description.c_str());
+  ds->putAndInsertString(DCM_PatientName, s.patientName.c_str());
+  ds->putAndInsertString(DCM_ImagePositionPatient, ("0\\0\\" + std::to_string(s.z)).c_str());
+  ds->putAndInsertString(DCM_ImageOrientationPatient, "1\\0\\0\\0\\1\\0");
+  ds->putAndInsertString(DCM_PixelSpacing, "1\\1");
+  ds->putAndInsertUint16(DCM_Rows, Uint16(s.size));
+  ds->putAndInsertUint16(DCM_Columns, Uint16(s.size));
+  ds->putAndInsertUint16(DCM_SamplesPerPixel, 1);
+  ds->putAndInsertString(DCM_PhotometricInterpretation, "MONOCHROME2");
+  ds->putAndInsertUint16(DCM_BitsAllocated, 16);
+  ds->putAndInsertUint16(DCM_BitsStored, 16);
+  ds->putAndInsertUint16(DCM_HighBit, 15);
+  ds->putAndInsertUint16(DCM_PixelRepresentation, 1);
+  ds->putAndInsertString(DCM_RescaleIntercept, "0");
+  ds->putAndInsertString(DCM_RescaleSlope, "1");
+  if (s.numberOfFrames > 0)
+    ds->putAndInsertString(DCM_NumberOfFrames, std::to_string(s.numberOfFrames).c_str());
+  std::vector<Uint16> pixels(size_t(s.size) * size_t(s.size));
+  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = Uint16(int16_t(int(i) - 8));
+  ds->putAndInsertUint16Array(DCM_PixelData, pixels.data(), unsigned(pixels.size()));
+  if (file.saveFile(path.c_str(), EXS_LittleEndianExplicit).bad())
+    throw std::runtime_error("cannot write " + path);
+}
+
+void nestSequences(const std::string& path, int depth) {
+  std::vector<char> bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // Preamble (128), "DICM", then (0002,0000) UL: 8 bytes of header and its 4-byte value.
+  const auto u32 = [&](size_t at) {
+    return uint32_t(uint8_t(bytes[at])) | uint32_t(uint8_t(bytes[at + 1])) << 8 |
+           uint32_t(uint8_t(bytes[at + 2])) << 16 | uint32_t(uint8_t(bytes[at + 3])) << 24;
+  };
+  if (bytes.size() < 144 || std::string(bytes.data() + 128, 4) != "DICM")
+    throw std::runtime_error(path + ": not a Part 10 file");
+  const size_t datasetStart = 144 + u32(140);
+  std::string nested;
+  const auto put = [&](std::initializer_list<uint8_t> b) { nested.append(b.begin(), b.end()); };
+  for (int i = 0; i < depth; ++i) {
+    put({0x08, 0x00, 0x40, 0x11, 'S', 'Q', 0, 0, 0xFF, 0xFF, 0xFF, 0xFF});  // SQ, undefined
+    put({0xFE, 0xFF, 0x00, 0xE0, 0xFF, 0xFF, 0xFF, 0xFF});                  // item, undefined
+  }
+  for (int i = 0; i < depth; ++i) {
+    put({0xFE, 0xFF, 0x0D, 0xE0, 0, 0, 0, 0});  // item delimiter
+    put({0xFE, 0xFF, 0xDD, 0xE0, 0, 0, 0, 0});  // sequence delimiter
+  }
+  bytes.insert(bytes.begin() + std::ptrdiff_t(datasetStart), nested.begin(), nested.end());
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+}  // namespace voxray::test

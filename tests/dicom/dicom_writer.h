@@ -1,0 +1,29 @@
+#pragma once
+// Small DICOM files written by the tests themselves (DCMTK), for the cases the shared data
+// does not have: text in other character sets, hostile structure.
+#include <cstdint>
+#include <string>
+
+namespace voxray::test {
+
+struct TestSlice {
+  std::string charset;      // SpecificCharacterSet; empty: none (the default repertoire)
+  std::string description;  // SeriesDescription, raw bytes in CHARSET
+  std::string patientName;  // PatientName, raw bytes in CHARSET
+  std::string modality = "CT";
+  int size = 4;            // Rows = Columns
+  int numberOfFrames = 0;  // > 0: NumberOfFrames says this (one frame of pixels is stored)
+  double z = 0.0;          // ImagePositionPatient z in mm
+  int instance = 1;
+  std::string seriesUid = "1.2.826.0.1.3680043.10.1082.1";
+};
+
+// A SIZE x SIZE CT image (int16, pixel i = i - 8) in explicit VR little endian. Throws
+// std::runtime_error when DCMTK cannot write it.
+void writeTestSlice(const std::string& path, const TestSlice& slice);
+
+// Rewrites PATH with sequences nested DEPTH deep (each an undefined-length
+// ReferencedImageSequence holding one item) at the start of its dataset, closed properly.
+void nestSequences(const std::string& path, int depth);
+
+}  // namespace voxray::test

@@ -1,0 +1,155 @@
+// Input that once crashed or aborted Voxray (issue 19): text in the dataset's own character
+// set, sequences nested 100,000 deep, headers claiming more frames than the file holds.
+// Each input is made here; none is kept as a blob.
+#include <gmock/gmock.h>
+
+#include <filesystem>
+#include <random>
+
+#include "dicom_writer.h"
+#include "test_data.h"
+
+namespace voxray {
+namespace {
+
+using ::testing::HasSubstr;
+
+class TempFolder {
+ public:
+  TempFolder() {
+    std::random_device seed;
+    path_ = std::filesystem::temp_directory_path() /
+            ("voxray-hostile-" + std::to_string(seed()) + std::to_string(seed()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// The listing of one slice written with TEXT (charset, description, name).
+SeriesInfo listOne(const test::TestSlice& text) {
+  TempFolder dir;
+  test::writeTestSlice(dir.file("1.dcm"), text);
+  DicomListing l = listDicomSeries(dir.file("1.dcm"));
+  EXPECT_EQ(l.series.size(), 1u);
+  return l.series.empty() ? SeriesInfo{} : l.series[0];
+}
+
+TEST(DicomText, Latin1IsDecodedToUtf8) {
+  test::TestSlice s;
+  s.charset = "ISO_IR 100";
+  s.description =
+      "Kn\xF6"
+      "chel Sch\xE4"
+      "del";
+  s.patientName =
+      "M\xFC"
+      "ller^J\xFC"
+      "rgen";
+  SeriesInfo info = listOne(s);
+  EXPECT_EQ(info.description, "Knöchel Schädel");
+  EXPECT_EQ(info.patientName, "Müller^Jürgen");
+}
+
+TEST(DicomText, Utf8IsKept) {
+  test::TestSlice s;
+  s.charset = "ISO_IR 192";
+  s.description = "Thorax – Übersicht";
+  s.patientName = "Dvořák^Antonín";
+  SeriesInfo info = listOne(s);
+  EXPECT_EQ(info.description, "Thorax – Übersicht");
+  EXPECT_EQ(info.patientName, "Dvořák^Antonín");
+}
+
+TEST(DicomText, Gb18030IsDecoded) {
+  test::TestSlice s;
+  s.charset = "GB18030";
+  s.description = "\xD0\xD8\xB2\xBF CT";                      // 胸部 CT
+  s.patientName = "Wang^XiaoDong=\xCD\xF5^\xD0\xA1\xB6\xAB";  // PS3.5 J.3: 王^小东
+  SeriesInfo info = listOne(s);
+  EXPECT_EQ(info.description, "胸部 CT");
+  EXPECT_EQ(info.patientName, "Wang^XiaoDong=王^小东");
+}
+
+TEST(DicomText, Iso2022JapaneseIsDecoded) {
+  // PS3.5 H.3.1: the name in romaji, kanji and hiragana, JIS X 0208 behind escape sequences.
+  test::TestSlice s;
+  s.charset = "\\ISO 2022 IR 87";
+  s.patientName =
+      "Yamada^Tarou=\x1b$B;3ED\x1b(B^\x1b$BB@O:\x1b(B=\x1b$B$d$^$@\x1b(B^\x1b$B$?$m$&\x1b(B";
+  s.description = "\x1b$B;3ED\x1b(B";
+  SeriesInfo info = listOne(s);
+  EXPECT_EQ(info.patientName, "Yamada^Tarou=山田^太郎=やまだ^たろう");
+  EXPECT_EQ(info.description, "山田");
+}
+
+TEST(DicomText, BytesThatDoNotDecodeAreReplaced) {
+  test::TestSlice s;
+  s.charset = "ISO_IR 192";
+  s.description = "Kopf \xC3( \xFF";  // a broken two-byte sequence and a byte UTF-8 never uses
+  EXPECT_EQ(listOne(s).description, "Kopf \xEF\xBF\xBD( \xEF\xBF\xBD");
+  test::TestSlice undeclared;
+  undeclared.description =
+      "Kn\xF6"
+      "chel";  // Latin-1 without SpecificCharacterSet
+  EXPECT_EQ(listOne(undeclared).description,
+            "Kn\xEF\xBF\xBD"
+            "chel");
+}
+
+TEST(DicomText, AFlippedByteInModalityIsReplacedNotFatal) {
+  test::TestSlice s;
+  s.modality = "C\xD4";
+  SeriesInfo info = listOne(s);
+  EXPECT_EQ(info.modality, "C\xEF\xBF\xBD");
+}
+
+TEST(DicomHostile, SequencesNestedTooDeepAreRefused) {
+  for (int depth : {10000, 100000}) {
+    TempFolder dir;
+    const std::string path = dir.file("nested.dcm");
+    test::writeTestSlice(path, {});
+    test::nestSequences(path, depth);
+    std::string m;
+    try {
+      listDicomSeries(path);
+    } catch (const Error& e) {
+      m = e.what();
+    }
+    EXPECT_THAT(m, HasSubstr("nested deeper than Voxray reads (over 256 levels)")) << depth;
+    EXPECT_THAT(test::importError(path), HasSubstr("nested deeper than Voxray reads")) << depth;
+  }
+}
+
+TEST(DicomHostile, NestingUpToTheLimitLoads) {
+  TempFolder dir;
+  const std::string path = dir.file("nested.dcm");
+  test::writeTestSlice(path, {});
+  test::nestSequences(path, 256);  // kMaxNestingDepth
+  Volume v = importDicom(path);
+  EXPECT_EQ(v.dims, glm::ivec3(4, 4, 1));
+  EXPECT_EQ(v.toPhysical(v.voxels[0]), -8.0);
+  EXPECT_EQ(v.toPhysical(v.voxels[15]), 7.0);
+}
+
+TEST(DicomHostile, FramesTheFileCannotHoldAreRefusedBeforeAllocating) {
+  TempFolder dir;
+  const std::string path = dir.file("frames.dcm");
+  test::TestSlice s;
+  s.size = 512;
+  s.numberOfFrames = 2000;  // 1 GB of frames claimed, one frame (512 KB) stored
+  test::writeTestSlice(path, s);
+  const std::string m = test::importError(path);
+  EXPECT_THAT(m.substr(0, 400),
+              HasSubstr("the header describes 2000 frame(s) of 512x512 pixels (1048576000 "
+                        "bytes) but the file holds only"));
+}
+
+}  // namespace
+}  // namespace voxray
