@@ -88,9 +88,11 @@ void panel(Canvas& c, int ox, const std::vector<Point>& pts, const std::string& 
     for (const Point& p : pts) lo = std::min(lo, get(p)), hi = std::max(hi, get(p));
     return std::pair<int, int>(int(std::floor(std::log10(lo))), int(std::ceil(std::log10(hi))));
   };
-  auto [x0, x1] = range([](const Point& p) { return std::max(p.ms, 1e-3); });
-  auto [y0, y1] = range([](const Point& p) { return std::max(p.err, 1e-9); });
-  x1 = std::max(x1, x0 + 1), y1 = std::max(y1, y0 + 1);
+  // Plain variables: clang 14 (the fuzz build) cannot capture structured bindings.
+  const auto xs = range([](const Point& p) { return std::max(p.ms, 1e-3); });
+  const auto ys = range([](const Point& p) { return std::max(p.err, 1e-9); });
+  const int x0 = xs.first, x1 = std::max(xs.second, x0 + 1);
+  const int y0 = ys.first, y1 = std::max(ys.second, y0 + 1);
   auto px = [&](double ms) {
     return left + int(w * (std::log10(std::max(ms, 1e-3)) - x0) / (x1 - x0));
   };

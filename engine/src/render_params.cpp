@@ -134,7 +134,16 @@ std::vector<ParamSpec> makeSpecs() {
        [](P& p, S s) { p.mode = parseMode(s); },
        [](const P& p) { return std::string(toString(p.mode)); }},
       {"preset", "NAME", "transfer-function preset from resources/presets (voxray-cli presets)",
-       [](P& p, S s) { p.preset = s; }, [](const P& p) { return p.preset; }},
+       [](P& p, S s) {
+         // Saved state is one key=value per line: a name with a line break would not read
+         // back (found by the render-parameter fuzzer).
+         if (std::any_of(s.begin(), s.end(), [](unsigned char c) { return c < 0x20 || c == 0x7F; }))
+           throw inputError(
+               "--preset: a preset name is one line of printable text; see "
+               "voxray-cli presets");
+         p.preset = s;
+       },
+       [](const P& p) { return p.preset; }},
       {"tf", "HU:R:G:B:A,...",
        "custom transfer function instead of the preset's: colour and opacity (0 ... 1, opacity "
        "per voxel) at each HU, linear between; a repeated HU makes a step",
