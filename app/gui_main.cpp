@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   StartOptions options;
   try {
     options = parseStartOptions(QApplication::arguments());
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {  // voxray::Error, or a bug: a message, never an abort
     std::cerr << "voxray: " << e.what() << "\n";
     return 2;
   }
@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   if (!options.resetSettings && options.screenshot.empty()) window->restoreSettings();
   try {
     applyRenderValues(models->render, options.renderValues);
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {
     std::cerr << "voxray: " << e.what() << "\n";
     return 2;
   }
@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
         if (!options.screenshot.empty()) {
           try {
             writeImage(options.screenshot, fromQImage(window->grab().toImage()));
-          } catch (const Error& e) {
+          } catch (const std::exception& e) {
             std::cerr << "voxray: " << e.what() << "\n";
             exitCode = 1;
           }

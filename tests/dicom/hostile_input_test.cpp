@@ -151,5 +151,40 @@ TEST(DicomHostile, FramesTheFileCannotHoldAreRefusedBeforeAllocating) {
                         "bytes) but the file holds only"));
 }
 
+TEST(DicomHostile, ParserExceptionOnAMutatedDicomdirIsAnError) {
+  // DCMTK throws std::out_of_range from basic_string::erase on this file; it once aborted
+  // voxray-cli. The message names the file and what went wrong.
+  const std::string path =
+      std::string(VOXRAY_FUZZ_REGRESSIONS) + "/dicomdir-erase-out-of-range.dcm";
+  std::string m;
+  try {
+    listDicomSeries(path);
+  } catch (const Error& e) {
+    m = e.what();
+  }
+  EXPECT_THAT(m, HasSubstr("dicomdir-erase-out-of-range.dcm: no DICOM image found"));
+  EXPECT_THAT(m, HasSubstr("damaged DICOM (the DICOM parser failed (basic_string::erase"));
+}
+
+TEST(DicomHostile, EveryFuzzerRegressionIsAVolumeOrAnError) {
+  int inputs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(VOXRAY_FUZZ_REGRESSIONS)) {
+    if (entry.path().extension() == ".md") continue;
+    ++inputs;
+    for (bool listOnly : {true, false}) {
+      try {
+        if (listOnly)
+          listDicomSeries(entry.path().string());
+        else
+          importDicom(entry.path().string());
+      } catch (const Error&) {
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << entry.path() << ": " << e.what();
+      }
+    }
+  }
+  EXPECT_GE(inputs, 1);
+}
+
 }  // namespace
 }  // namespace voxray

@@ -17,6 +17,8 @@ seeds=$(mktemp -d "/tmp/voxray-fuzz-seeds.XXXXXX")
 trap 'rm -rf "$work" "$seeds"' EXIT
 mkdir -p "$kept"
 cp -r "$kept/." "$work/"
+# The suppressions of the ASan test run: driver internals, and DCMTK's leak when it throws.
+export LSAN_OPTIONS=suppressions=$here/../sanitizers/lsan.supp:print_suppressions=0
 args=(-max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -print_final_stats=1)
 case $name in
   dicom | info_json)
