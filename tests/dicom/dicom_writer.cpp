@@ -48,6 +48,16 @@ void writeTestSlice(const std::string& path, const TestSlice& s) {
     throw std::runtime_error("cannot write " + path);
 }
 
+void setPixelDataLength(const std::string& path, uint32_t length) {
+  std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const size_t at = bytes.rfind(std::string("\xE0\x7F\x10\x00OW", 6));
+  if (at == std::string::npos) throw std::runtime_error(path + ": no PixelData");
+  const char le[4] = {char(length), char(length >> 8), char(length >> 16), char(length >> 24)};
+  file.seekp(std::streamoff(at + 8));  // tag (4), VR (2), reserved (2), then the length
+  file.write(le, 4);
+}
+
 void nestSequences(const std::string& path, int depth) {
   std::vector<char> bytes;
   {

@@ -26,4 +26,7 @@ void writeTestSlice(const std::string& path, const TestSlice& slice);
 // ReferencedImageSequence holding one item) at the start of its dataset, closed properly.
 void nestSequences(const std::string& path, int depth);
 
+// Rewrites the length field of PixelData in PATH (written by writeTestSlice) to LENGTH.
+void setPixelDataLength(const std::string& path, uint32_t length);
+
 }  // namespace voxray::test

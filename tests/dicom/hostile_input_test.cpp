@@ -4,8 +4,8 @@
 #include <gmock/gmock.h>
 
 #include <filesystem>
-#include <random>
 
+#include "../io/test_support.h"
 #include "dicom_writer.h"
 #include "test_data.h"
 
@@ -14,27 +14,9 @@ namespace {
 
 using ::testing::HasSubstr;
 
-class TempFolder {
- public:
-  TempFolder() {
-    std::random_device seed;
-    path_ = std::filesystem::temp_directory_path() /
-            ("voxray-hostile-" + std::to_string(seed()) + std::to_string(seed()));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempFolder() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
-
 // The listing of one slice written with TEXT (charset, description, name).
 SeriesInfo listOne(const test::TestSlice& text) {
-  TempFolder dir;
+  test::TempDir dir;
   test::writeTestSlice(dir.file("1.dcm"), text);
   DicomListing l = listDicomSeries(dir.file("1.dcm"));
   EXPECT_EQ(l.series.size(), 1u);
@@ -112,7 +94,7 @@ TEST(DicomText, AFlippedByteInModalityIsReplacedNotFatal) {
 
 TEST(DicomHostile, SequencesNestedTooDeepAreRefused) {
   for (int depth : {10000, 100000}) {
-    TempFolder dir;
+    test::TempDir dir;
     const std::string path = dir.file("nested.dcm");
     test::writeTestSlice(path, {});
     test::nestSequences(path, depth);
@@ -128,7 +110,7 @@ TEST(DicomHostile, SequencesNestedTooDeepAreRefused) {
 }
 
 TEST(DicomHostile, NestingUpToTheLimitLoads) {
-  TempFolder dir;
+  test::TempDir dir;
   const std::string path = dir.file("nested.dcm");
   test::writeTestSlice(path, {});
   test::nestSequences(path, 256);  // kMaxNestingDepth
@@ -139,7 +121,7 @@ TEST(DicomHostile, NestingUpToTheLimitLoads) {
 }
 
 TEST(DicomHostile, FramesTheFileCannotHoldAreRefusedBeforeAllocating) {
-  TempFolder dir;
+  test::TempDir dir;
   const std::string path = dir.file("frames.dcm");
   test::TestSlice s;
   s.size = 512;
@@ -149,6 +131,16 @@ TEST(DicomHostile, FramesTheFileCannotHoldAreRefusedBeforeAllocating) {
   EXPECT_THAT(m.substr(0, 400),
               HasSubstr("the header describes 2000 frame(s) of 512x512 pixels (1048576000 "
                         "bytes) but the file holds only"));
+}
+
+TEST(DicomHostile, ElementLongerThanTheFileIsRefusedBeforeAllocating) {
+  // PixelData claiming 4 GiB in a file of a few hundred bytes: DCMTK checks the length
+  // against what the file holds before it allocates (ASan would report a 4 GiB allocation).
+  test::TempDir dir;
+  const std::string path = dir.file("long.dcm");
+  test::writeTestSlice(path, {});
+  test::setPixelDataLength(path, 0xFFFFFFF0u);
+  EXPECT_THAT(test::importError(path), HasSubstr("long.dcm: cannot be read ("));
 }
 
 TEST(DicomHostile, ParserExceptionOnAMutatedDicomdirIsAnError) {
