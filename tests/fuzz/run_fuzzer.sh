@@ -41,5 +41,10 @@ esac
 "$fuzzer" "${args[@]}" "$work" "$seeds"
 if [[ $keep == --keep ]]; then
   "$fuzzer" -merge=1 "${args[@]:1}" "$kept" "$work" "$seeds"
+  # Shared files stay out of the repository (every run adds them as seeds): libFuzzer names
+  # a unit by its SHA-1, so an exact copy of a seed is found by name.
+  for f in "$seeds"/*; do
+    [[ -e $f ]] && rm -f "$kept/$(sha1sum "$f" | cut -c1-40)"
+  done
   echo "kept corpus $kept: $(find "$kept" -type f | wc -l) inputs, $(du -sh "$kept" | cut -f1)"
 fi
