@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QFile>
 #include <QMouseEvent>
+#include <QProgressDialog>
 #include <QSpinBox>
 #include <QTemporaryDir>
 
@@ -129,6 +130,25 @@ class ExportLoadTest : public QObject {
         differingPixels(view.convertToFormat(QImage::Format_RGB32),
                         window_->volumeView().lastFrame().convertToFormat(QImage::Format_RGB32)),
         0);
+  }
+
+  void loadErrorClosesProgressFirst() {
+    // A load slow enough to show its progress box, then failing: the box must be gone
+    // before the message appears (it once stayed on top of it, at 9 %).
+    std::vector<QProgressDialog*> visibleWhenReported;
+    window_->setErrorSink([&](const QString& t, const QString& m) {
+      lastError_ = {t, m};
+      for (auto* d : window_->findChildren<QProgressDialog*>())
+        if (d->isVisible()) visibleWhenReported.push_back(d);
+    });
+    QSignalSpy failed(&window_->loader(), &LoadController::failed);
+    window_->open(tempPath("no-such-file").toStdString(), {});
+    const auto progress = window_->findChildren<QProgressDialog*>();
+    QCOMPARE(progress.size(), qsizetype(1));
+    progress.front()->show();  // as after 300 ms of a slow load
+    QVERIFY(failed.wait(30000));
+    QCOMPARE(lastError_.first, QString("Cannot open"));
+    QVERIFY(visibleWhenReported.empty());
   }
 
   void loadErrorKeepsLastVolume() {

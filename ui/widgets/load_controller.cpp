@@ -47,7 +47,13 @@ void LoadController::poll() {
   if (!done_) return;
   poll_.stop();
   worker_.join();
-  if (dialog_) dialog_->deleteLater();
+  if (dialog_) {
+    // Hidden now, not when deleteLater comes: the error box that may follow runs its own
+    // event loop, in which the deferred delete does not happen, and the progress box
+    // stayed on top of the message.
+    dialog_->hide();
+    dialog_->deleteLater();
+  }
   if (result_)
     emit loaded(std::move(result_), name_, input_);
   else

@@ -65,7 +65,7 @@ std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 m
     file.transferEnd();
     if (stream.tooDeep())
       return "its sequences are nested deeper than Voxray reads (over " +
-             std::to_string(kMaxNestingDepth) + " levels); the file is damaged";
+             std::to_string(kMaxNestingDepth) + " levels)";
     if (status.bad()) return status.text();
     return {};
   } catch (const std::exception& e) {
