@@ -182,10 +182,6 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
     why = "NumberOfFrames " + std::to_string(frames) + " is implausible; the file is damaged";
     return ScanResult::NoImage;
   }
-  DcmItem* shared = nullptr;
-  ds->findAndGetSequenceItem(DCM_SharedFunctionalGroupsSequence, shared, 0);
-  DcmSequenceOfItems* perFrame = nullptr;
-  ds->findAndGetSequence(DCM_PerFrameFunctionalGroupsSequence, perFrame);
   // Uncompressed frames lie one after another: a file too small for them is damaged, and
   // refusing it here keeps a header that claims 2000 frames from allocating them.
   if (!xfer.isEncapsulated()) {
@@ -202,6 +198,10 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
       return ScanResult::NoImage;
     }
   }
+  DcmItem* shared = nullptr;
+  ds->findAndGetSequenceItem(DCM_SharedFunctionalGroupsSequence, shared, 0);
+  DcmSequenceOfItems* perFrame = nullptr;
+  ds->findAndGetSequence(DCM_PerFrameFunctionalGroupsSequence, perFrame);
   h.fileFrames = frames;
   h.perFrameGroups = shared || perFrame;
   for (int f = 0; f < frames; ++f) {
