@@ -1,4 +1,4 @@
-// The width of a ray packet (packet.cl): LANES rays per work-item, 4 across and
+// The width of a ray packet (march_lanes.cl): LANES rays per work-item, 4 across and
 // PACKET_ROWS down, in floatN vectors. 8 fills AVX2; 16 fills AVX-512, where it ran dvr
 // 1.22x faster (the host picks it from the device's native float width).
 #ifndef VOXRAY_LANES_CL

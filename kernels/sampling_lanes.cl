@@ -1,4 +1,4 @@
-// Volume reconstruction for a packet's points at once (packet.cl): sample_volume (sampling.cl)
+// Volume reconstruction for a packet's points at once (march_lanes.cl): sample_volume (sampling.cl)
 // with floatN lanes. Only buffers (STORAGE_IMAGE 0) of fewer than 2^31 voxels come here,
 // so voxel indices fit an int.
 #ifndef VOXRAY_SAMPLING_LANES_CL

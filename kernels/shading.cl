@@ -27,4 +27,8 @@ inline float3 shade(float3 color, float3 normal_w, float3 pos_w, float3 view_w, 
   return color * (k.x + k.y * diffuse) + (float3)(k.z * specular);
 }
 
+inline uchar4 to_rgba8(float3 color) {
+  return (uchar4)(convert_uchar3_sat_rte(clamp(color, 0.0f, 1.0f) * 255.0f), 255);
+}
+
 #endif

@@ -1,4 +1,4 @@
-// shade (shading.cl) for a packet's lanes at once (packet.cl): the same formulas.
+// shade (shading.cl) for a packet's lanes at once (march_lanes.cl): the same formulas.
 #ifndef VOXRAY_SHADING_LANES_CL
 #define VOXRAY_SHADING_LANES_CL
 

@@ -10,6 +10,7 @@
 #include "empty_space.h"
 #include "frame_setup.h"
 #include "kernel_params.h"
+#include "kernel_switches.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -51,7 +52,8 @@ struct Raycaster::Impl {
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s) : cl(ctx.impl()), volume(v), storage(s) {}
 
   void upload();
-  std::string options(const RenderParams& p) const;
+  KernelSwitches switches(const RenderParams& p) const;
+  std::string options(const KernelSwitches& s) const;
   bool packets() const;
   int lanes(const RenderParams& p) const;
   cl::NDRange local() const;
@@ -86,28 +88,26 @@ void Raycaster::Impl::upload() {
   space.upload(cl, volume);
 }
 
-std::string Raycaster::Impl::options(const RenderParams& p) const {
-  std::ostringstream o;
-  o << "-cl-fast-relaxed-math -D STORAGE_IMAGE=" << int(storage == VolumeStorage::Image3d)
-    << " -D COUNT_SAMPLES=" << int(opts.countSamples);
-  if (device.plan().count() > 1) o << " -D SLABS=" << device.plan().count();
-  if (hitsOut) o << " -D HIT_OUTPUT=1";
-  // The uber kernel reads every other switch from RaycastParams (kernels/variant.cl).
-  if (opts.kernel == RaycasterOptions::Kernel::Uber) return o.str() + " -D UBER=1";
-  bool shading = p.shading && p.mode != Mode::Mip;
-  o << " -D MODE=" << int(p.mode) << " -D SHADING=" << int(shading)
-    << " -D INTERP=" << int(p.interp)
-    << " -D ORTHO=" << int(p.camera.projection == Projection::Orthographic)
-    << " -D ESS=" << int(opts.emptySpaceSkipping) << " -D JITTER=" << int(p.jitter);
-  if (shading) o << " -D GRADIENT=" << int(p.gradient);
-  if (p.mode == Mode::Iso) o << " -D REFINE_STEPS=" << p.refine;
-  if (p.mode == Mode::Dvr) o << " -D OPACITY_CORRECTION=" << int(p.opacityCorrection);
-  if (packets()) o << " -D PACKET=1 -D LANES=" << lanes(p);
-  return o.str();
+KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
+  KernelSwitches s = kernelSwitches(p);
+  s.ESS = opts.emptySpaceSkipping;
+  s.STORAGE_IMAGE = storage == VolumeStorage::Image3d;
+  s.SLABS = device.plan().count();
+  s.COUNT_SAMPLES = opts.countSamples;
+  s.HIT_OUTPUT = hitsOut != nullptr;
+  if (packets()) {
+    s.PACKET = 1;
+    s.LANES = lanes(p);
+  }
+  return s;
+}
+
+std::string Raycaster::Impl::options(const KernelSwitches& s) const {
+  return "-cl-fast-relaxed-math " + switchOptions(s, opts.kernel == RaycasterOptions::Kernel::Uber);
 }
 
 bool Raycaster::Impl::packets() const {
-  // packet.cl reads one volume argument and indexes voxels with int.
+  // march_lanes.cl reads one volume argument and indexes voxels with int.
   return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
          storage == VolumeStorage::Buffer && !cl.info.isGpu && device.plan().count() == 1 &&
          volume.voxelCount() < (size_t(1) << 31);
@@ -143,7 +143,9 @@ Raycaster::~Raycaster() = default;
 
 VolumeStorage Raycaster::storage() const { return impl_->storage; }
 
-std::string Raycaster::variantOptions(const RenderParams& p) const { return impl_->options(p); }
+std::string Raycaster::variantOptions(const RenderParams& p) const {
+  return impl_->options(impl_->switches(p));
+}
 
 int Raycaster::slabCount() const { return impl_->device.plan().count(); }
 
@@ -199,18 +201,16 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
   k.image = {{p.width, p.height, 0, 0}};
   glm::ivec3 cells = m.space.dims();
-  bool shading = p.shading && p.mode != Mode::Mip;
-  k.cells = {{cells.x, cells.y, cells.z, int(m.opts.emptySpaceSkipping)}};
-  k.modes = {{int(p.mode), int(shading), int(p.gradient), int(p.interp)}};
-  k.modes2 = {{int(p.camera.projection == Projection::Orthographic), p.refine,
-               int(p.opacityCorrection), int(p.jitter)}};
+  k.cells = {{cells.x, cells.y, cells.z, 0}};
+  KernelSwitches sw = m.switches(p);
+  packSwitches(sw, k);
   k.slabs = {{m.device.plan().depth, 0, 0, 0}};
 
   size_t pixels = size_t(p.width) * size_t(p.height);
   out.width = p.width;
   out.height = p.height;
   out.rgba.resize(pixels * 4);
-  std::string opts = m.options(p);
+  std::string opts = m.options(sw);
   cl::Kernel kernel = m.cl.kernel("raycast.cl", "raycast", opts);
   cl::Event done;
   std::array<cl_uint, 64> counts{};

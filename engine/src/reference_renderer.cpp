@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "frame_setup.h"
+#include "kernel_switches.h"
 #include "reference_sampling.h"
 #include "voxray/io/volume.h"
 
@@ -44,7 +45,7 @@ struct Marcher {
   const Volume& v;
   const RenderParams& p;
   const FrameSetup& s;
-  bool shading = p.shading && p.mode != Mode::Mip;
+  bool shading = kernelSwitches(p).SHADING != 0;  // the kernels' rule
   double gradSamples = double(gradientSamples(p.gradient));
 
   double sample(const glm::dvec3& pv, PixelOut& o) const {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "jitter_hash.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -81,10 +82,7 @@ int gradientSamples(Gradient op) { return op == Gradient::Central ? 6 : 26; }
 
 float jitterFraction(int px, int py) {
   // uint32_t arithmetic wraps exactly like OpenCL's uint.
-  uint32_t h = uint32_t(px) * 73856093u ^ uint32_t(py) * 19349663u;
-  h = (h ^ (h >> 13)) * 0x5bd1e995u;
-  h ^= h >> 15;
-  return float(h & 0xffffffu) / 16777216.0f;
+  return float(VOXRAY_JITTER_HASH(uint32_t(px), uint32_t(py))) / VOXRAY_JITTER_RANGE;
 }
 
 }  // namespace voxray

@@ -16,7 +16,7 @@ glm::dvec3 volumeGradient(const Volume& v, Interp interp, Gradient op, const glm
 // Volume reads one volumeGradient() call makes (6 or 26).
 int gradientSamples(Gradient op);
 
-// The kernel's per-pixel jitter fraction in [0, 1), bit-exact (see kernels/raycast.cl).
+// The kernel's per-pixel jitter fraction in [0, 1), bit-exact (kernels/jitter_hash.h).
 float jitterFraction(int px, int py);
 
 }  // namespace voxray

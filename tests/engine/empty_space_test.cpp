@@ -65,7 +65,7 @@ const Volume& noisyVolume() {
 }
 
 // Long along x: a ray along it crosses more macro cells than a mip packet's walk keeps
-// (kernels/packet.cl, MIP_WALK), so it takes the in-order loop.
+// (kernels/march_lanes.cl, MIP_WALK), so it takes the in-order loop.
 const Volume& longVolume() {
   static Volume v = noisy({1100, 12, 12});
   return v;

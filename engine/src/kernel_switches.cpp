@@ -1,0 +1,95 @@
+#include "kernel_switches.h"
+
+#include <cctype>
+#include <sstream>
+#include <vector>
+
+#include "kernel_params.h"
+#include "voxray/engine/kernel_variant.h"
+
+namespace voxray {
+
+namespace {
+
+enum class Kind { FRAME, RUNTIME, BUILD };
+
+struct SwitchEntry {
+  const char* name;
+  int defaultValue;
+  Kind kind;
+  const char* labels;
+  int KernelSwitches::*field;
+};
+
+const std::vector<SwitchEntry>& switchList() {
+  static const std::vector<SwitchEntry> list = {
+#define VOXRAY_SWITCH(NAME, DEFAULT, KIND, LABELS) \
+  {#NAME, DEFAULT, Kind::KIND, LABELS, &KernelSwitches::NAME},
+#include "switches.h"
+#undef VOXRAY_SWITCH
+  };
+  return list;
+}
+
+// Label `value` of "a|b|c"; "" past the end.
+std::string label(const std::string& labels, int value) {
+  std::istringstream in(labels);
+  std::string item;
+  for (int i = 0; std::getline(in, item, '|'); ++i)
+    if (i == value) return item;
+  return "";
+}
+
+}  // namespace
+
+KernelSwitches kernelSwitches(const RenderParams& p) {
+  KernelSwitches s;
+  s.MODE = int(p.mode);
+  s.SHADING = p.shading && p.mode != Mode::Mip;
+  if (s.SHADING) s.GRADIENT = int(p.gradient);
+  s.INTERP = int(p.interp);
+  s.ORTHO = p.camera.projection == Projection::Orthographic;
+  if (p.mode == Mode::Dvr) s.OPACITY_CORRECTION = p.opacityCorrection;
+  s.JITTER = p.jitter;
+  if (p.mode == Mode::Iso) s.REFINE_STEPS = p.refine;
+  return s;
+}
+
+std::string switchOptions(const KernelSwitches& s, bool uber) {
+  std::ostringstream o;
+  o << "-D VOXRAY_SWITCHES_SET=1";
+  for (const SwitchEntry& e : switchList()) {
+    bool runtime = e.kind == Kind::RUNTIME || (uber && e.kind == Kind::FRAME);
+    o << " -D " << e.name << "=";
+    if (runtime)
+      o << "P_SWITCH(VOXRAY_SLOT_" << e.name << ")";
+    else
+      o << s.*e.field;
+  }
+  return o.str();
+}
+
+void packSwitches(const KernelSwitches& s, RaycastParams& k) {
+  const auto& list = switchList();
+  for (size_t i = 0; i < list.size(); ++i) k.switches[i / 4].s[i % 4] = s.*list[i].field;
+}
+
+std::string variantName(const KernelSwitches& s) {
+  std::string out;
+  for (const SwitchEntry& e : switchList()) {
+    int value = s.*e.field;
+    std::string part;
+    if (*e.labels)
+      part = label(e.labels, value);
+    else if (value != e.defaultValue)
+      part = std::string(e.name) + std::to_string(value);
+    for (char& c : part) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (part.empty()) continue;
+    out += (out.empty() ? "" : "_") + part;
+  }
+  return out;
+}
+
+std::string kernelVariantName(const RenderParams& p) { return variantName(kernelSwitches(p)); }
+
+}  // namespace voxray

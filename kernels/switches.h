@@ -1,0 +1,47 @@
+// The switches of a kernel variant, declared once. Everything else is generated from this
+// list: the -D options and the frame parameters' switch slots (engine/src/kernel_switches.cpp),
+// the host's KernelSwitches struct, the variant names of tests and logs. The rules that set
+// them from a frame's RenderParams live in one function, kernelSwitches() (same file).
+//
+// VOXRAY_SWITCH(NAME, DEFAULT, KIND, LABELS), KIND:
+//   FRAME    a -D literal in a specialised kernel, so `if (SHADING)` folds away and only what
+//            the frame uses is compiled; the uber kernel (RaycasterOptions::Kernel::Uber) reads
+//            it from the frame parameters instead.
+//   RUNTIME  always read from the frame parameters: compiling a program per value would buy
+//            nothing (REFINE_STEPS bounds the bisection run once per hit ray).
+//   BUILD    always a -D literal: it changes the kernel's arguments, stores or vector width.
+// LABELS names the values for variant names, "|"-separated from 0; an empty label leaves the
+// switch out of the name; no labels at all: NAME and the number, unless it is the default.
+// Adding a switch: a line here, its rule in kernelSwitches(), the kernel code that uses it.
+//
+// Included by the kernels (params.cl) and by the engine; deliberately without a guard.
+
+// 0 iso (first hit of a HU range, refined by bisection, shaded), 1 dvr (front-to-back
+// emission-absorption, the seed's transparency formula), 2 mip.
+VOXRAY_SWITCH(MODE, 0, FRAME, "iso|dvr|mip")
+// Blinn-Phong from the gradient (never for mip).
+VOXRAY_SWITCH(SHADING, 0, FRAME, "|shaded")
+// The gradient operator when shading: central differences, Sobel 3D, Zucker-Hummel.
+VOXRAY_SWITCH(GRADIENT, 0, FRAME, "|sobel|zh")
+// 0 nearest voxel, 1 trilinear.
+VOXRAY_SWITCH(INTERP, 1, FRAME, "nearest|")
+VOXRAY_SWITCH(ORTHO, 0, FRAME, "|ortho")
+// dvr: opacity scaled to the step (the preset's opacities are per voxel spacing).
+VOXRAY_SWITCH(OPACITY_CORRECTION, 0, FRAME, "|oc")
+// Each ray's samples shifted by a per-pixel fraction of a step (jitter_hash.h).
+VOXRAY_SWITCH(JITTER, 0, FRAME, "|jitter")
+// Empty-space skipping over macro cells (skip.cl).
+VOXRAY_SWITCH(ESS, 0, FRAME, "|ess")
+// iso: bisection steps refining a hit.
+VOXRAY_SWITCH(REFINE_STEPS, 0, RUNTIME, "")
+// The volume as image3d_t (GPUs, hardware filtering) instead of a buffer of shorts.
+VOXRAY_SWITCH(STORAGE_IMAGE, 0, BUILD, "|image")
+// The volume in this many z slabs, one argument each (slabs.cl).
+VOXRAY_SWITCH(SLABS, 1, BUILD, "")
+// Each ray's samples added to one of 64 counters (FrameStats::samples).
+VOXRAY_SWITCH(COUNT_SAMPLES, 0, BUILD, "|counted")
+// iso, one ray per work-item: each pixel's hit point to an extra output (march_iso).
+VOXRAY_SWITCH(HIT_OUTPUT, 0, BUILD, "|hits")
+// CPUs: a work-item marches LANES rays in SIMD (march_lanes.cl); LANES 8 (4x2) or 16 (4x4).
+VOXRAY_SWITCH(PACKET, 0, BUILD, "|packet")
+VOXRAY_SWITCH(LANES, 8, BUILD, "")
