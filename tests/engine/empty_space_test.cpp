@@ -12,6 +12,7 @@
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
+#include "voxray/engine/kernel_variant.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/error.h"
 
@@ -91,6 +92,11 @@ Image render(RaycasterOptions::Kernel k, bool ess, const RenderParams& p, int la
 using Case = std::tuple<Mode, Gradient, Interp, bool>;
 class EmptySpace : public ::testing::TestWithParam<Case> {};
 
+std::string variantTestName(const ::testing::TestParamInfo<Case>& info) {
+  auto [mode, g, interp, jitter] = info.param;
+  return kernelVariantName(params(mode, g, interp, jitter));
+}
+
 TEST_P(EmptySpace, SkippingChangesNoPixel) {
   auto [mode, g, interp, jitter] = GetParam();
   RenderParams p = params(mode, g, interp, jitter);
@@ -114,12 +120,14 @@ INSTANTIATE_TEST_SUITE_P(Variants, EmptySpace,
                          ::testing::Combine(::testing::Values(Mode::Iso, Mode::Dvr, Mode::Mip),
                                             ::testing::Values(Gradient::Central),
                                             ::testing::Values(Interp::Linear),
-                                            ::testing::Values(false)));
+                                            ::testing::Values(false)),
+                         variantTestName);
 INSTANTIATE_TEST_SUITE_P(Jittered, EmptySpace,
                          ::testing::Combine(::testing::Values(Mode::Iso, Mode::Dvr, Mode::Mip),
                                             ::testing::Values(Gradient::ZuckerHummel),
                                             ::testing::Values(Interp::Nearest, Interp::Linear),
-                                            ::testing::Values(true)));
+                                            ::testing::Values(true)),
+                         variantTestName);
 
 // Packets cover 4x2 or 4x4 pixels: an image whose sides are not multiples of them must
 // still get every pixel, and only its own (the per-ray image agrees; a stray or missing

@@ -10,6 +10,7 @@
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
+#include "voxray/engine/kernel_variant.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/error.h"
 
@@ -77,6 +78,12 @@ TEST_P(Slabs, RenderExactlyAsOneVolume) {
   }
 }
 
+std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+  auto [mode, g, interp, ess, slabs, storage] = info.param;
+  return kernelVariantName(params(mode, g, interp, 25.0)) + (ess ? "_ess_" : "_") +
+         std::to_string(slabs) + "slabs" + (storage == VolumeStorage::Image3d ? "_image" : "");
+}
+
 using M = Mode;
 using G = Gradient;
 using I = Interp;
@@ -97,7 +104,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{M::Mip, G::Central, I::Linear, true, 4, S::Buffer},
                       Case{M::Mip, G::Central, I::Nearest, false, 3, S::Buffer},
                       Case{M::Iso, G::Central, I::Linear, true, 3, S::Image3d},
-                      Case{M::Dvr, G::ZuckerHummel, I::Linear, false, 2, S::Image3d}));
+                      Case{M::Dvr, G::ZuckerHummel, I::Linear, false, 2, S::Image3d}),
+    caseName);
 
 TEST(Slabs, OrthographicAlongZ) {
   Raycaster one(test::pocl(), ballVolume(), VolumeStorage::Buffer);
