@@ -9,13 +9,13 @@
 #include <set>
 
 #include "file_scan.h"
-#include "parallel_for.h"
 #include "pixel_decode.h"
 #include "resample.h"
 #include "series_grouping.h"
 #include "stack_geometry.h"
 #include "value_mapping.h"
 #include "voxray/io/error.h"
+#include "voxray/io/parallel.h"
 #include "voxray/io/raw_import.h"
 
 namespace voxray {
