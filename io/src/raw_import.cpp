@@ -219,7 +219,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
                "Reading slice " + std::to_string(done) + " of " + std::to_string(z));
       },
       feedback.cancel);
-  if (cancelled()) throw inputError("loading cancelled");
+  if (cancelled()) throw cancelledError("loading cancelled");
 
   detail::ValueStats all;
   for (const auto& s : stats) all.merge(s);
@@ -246,7 +246,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
                              v.voxels.data() + k * sliceVoxels);
       },
       feedback.cancel);
-  if (cancelled()) throw inputError("loading cancelled");
+  if (cancelled()) throw cancelledError("loading cancelled");
   report(1.0, "Loaded " + input);
   return v;
 }

@@ -38,7 +38,7 @@ void report(const LoadOptions& o, double fraction, const std::string& message) {
 }
 
 void throwIfCancelled(const LoadOptions& o, const std::string& input) {
-  if (o.cancel && *o.cancel) throw inputError(input + ": DICOM import cancelled");
+  if (o.cancel && *o.cancel) throw cancelledError(input + ": DICOM import cancelled");
 }
 
 Scan scan(const std::string& input, const LoadOptions& options) {
