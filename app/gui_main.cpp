@@ -86,6 +86,11 @@ int main(int argc, char** argv) {
                        std::cerr << "voxray: " << message.toStdString() << "\n";
                        if (options.quitAfterFirstFrame) QApplication::exit(1);
                      });
+    // A cancelled first load leaves nothing to capture: end as a failed one did.
+    QObject::connect(&window->loader(), &LoadController::cancelled, window.get(), [&] {
+      std::cerr << "voxray: loading cancelled\n";
+      if (options.quitAfterFirstFrame) QApplication::exit(1);
+    });
     QObject::connect(&window->scheduler(), &RenderScheduler::renderError, window.get(),
                      [&](const QString& message) {
                        std::cerr << "voxray: " << message.toStdString() << "\n";

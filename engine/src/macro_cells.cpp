@@ -1,8 +1,8 @@
 #include "macro_cells.h"
 
 #include <algorithm>
-#include <thread>
 
+#include "voxray/io/parallel.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -41,15 +41,9 @@ MacroCells computeMacroCells(const Volume& v) {
   m.dims = (v.dims + (kCellSize - 1)) / kCellSize;
   size_t cells = size_t(m.dims.x) * size_t(m.dims.y) * size_t(m.dims.z);
   m.minMax.resize(cells * 2);
-  // Slabs of cells along z, interleaved over the threads: every slab costs the same.
-  int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
-  threads = std::min(threads, m.dims.z);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (int cz = t; cz < m.dims.z; cz += threads) cellSlab(v, m, cz);
-    });
-  for (auto& th : pool) th.join();
+  // One slab of cells along z per index: every slab costs the same, and each writes only
+  // its own cells.
+  parallelFor(size_t(m.dims.z), [&](size_t cz) { cellSlab(v, m, int(cz)); });
   return m;
 }
 

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "frame_setup.h"
 #include "kernel_switches.h"
 #include "reference_sampling.h"
+#include "voxray/io/parallel.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -168,9 +170,11 @@ FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, Referenc
     hits->normal.assign(pixels, glm::dvec3(0.0));
     hits->gradToWorld = s.view.gradToWorld;
   }
-  double samples = 0.0;
-#pragma omp parallel for schedule(dynamic, 4) reduction(+ : samples)
-  for (int y = 0; y < p.height; ++y)
+  // One row per index. Samples are summed per row, then the rows in order, so the total
+  // does not depend on the scheduling.
+  std::vector<double> rowSamples(size_t(p.height), 0.0);
+  parallelFor(size_t(p.height), [&](size_t row) {
+    const int y = int(row);
     for (int x = 0; x < p.width; ++x) {
       PixelOut po;
       // No clamp here: a NaN must reach the caller (tests look for it), not turn into 0.
@@ -181,13 +185,16 @@ FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, Referenc
       o[0] = float(c.r);
       o[1] = float(c.g);
       o[2] = float(c.b);
-      samples += po.samples;
+      rowSamples[row] += po.samples;
       if (hits) {
         hits->kind[i] = po.kind;
         hits->voxel[i] = po.voxel;
         hits->normal[i] = po.normal;
       }
     }
+  });
+  double samples = 0.0;
+  for (double r : rowSamples) samples += r;
   if (hits) hits->samples = samples;
   return out;
 }

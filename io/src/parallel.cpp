@@ -1,27 +1,26 @@
-#include "parallel.h"
+#include "voxray/io/parallel.h"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
 
-namespace voxray::detail {
+namespace voxray {
 
-void parallelFor(int count, const std::function<void(int)>& body) {
-  if (count <= 0) return;
-  const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
-  const int threads = std::min({count, hardware, 16});
-
-  std::atomic<int> next{0};
+void parallelFor(size_t count, const std::function<void(size_t)>& body,
+                 const std::atomic<bool>* cancel) {
+  if (count == 0) return;
+  const size_t threads = std::min<size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+  std::atomic<size_t> next{0};
   std::atomic<bool> failed{false};
   std::mutex errorMutex;
   std::exception_ptr error;
-  int errorIndex = count;
+  size_t errorIndex = count;
 
+  auto stopped = [&] { return failed || (cancel && *cancel); };
   auto worker = [&] {
-    for (int i = next++; i < count && !failed; i = next++) {
+    for (size_t i; !stopped() && (i = next++) < count;) {
       try {
         body(i);
       } catch (...) {
@@ -35,10 +34,10 @@ void parallelFor(int count, const std::function<void(int)>& body) {
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace voxray::detail
+}  // namespace voxray

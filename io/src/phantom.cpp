@@ -8,8 +8,8 @@
 #define GLM_ENABLE_EXPERIMENTAL
 #include <glm/gtx/component_wise.hpp>
 
-#include "parallel.h"
 #include "voxray/io/error.h"
+#include "voxray/io/parallel.h"
 
 namespace voxray {
 namespace {
@@ -92,7 +92,8 @@ Volume makeHeadPhantom(int size) {
   const auto toUnits = [&](int i) { return (i + 0.5 - half) / half; };
   // Edges are blurred over three voxels (partial volume and the scanner's point spread),
   // so iso surfaces and gradients are smooth instead of terraced.
-  detail::parallelFor(size, [&](int k) {
+  parallelFor(size_t(size), [&](size_t slice) {
+    const int k = int(slice);
     std::vector<double> row(static_cast<size_t>(size));
     for (int j = 0; j < size; ++j) {
       std::fill(row.begin(), row.end(), kAir);

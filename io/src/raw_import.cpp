@@ -15,11 +15,11 @@
 #include <vector>
 
 #include "file_kind.h"
-#include "parallel.h"
 #include "raw_messages.h"
 #include "raw_samples.h"
 #include "raw_slice_files.h"
 #include "voxray/io/error.h"
+#include "voxray/io/parallel.h"
 
 namespace fs = std::filesystem;
 
@@ -208,15 +208,18 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   uint8_t* const raw = inPlace ? reinterpret_cast<uint8_t*>(voxels.data()) : rawCopy.data();
   std::vector<detail::ValueStats> stats(static_cast<size_t>(z));
   std::atomic<int> slicesRead{0};
-  detail::parallelFor(z, [&](int k) {
-    if (cancelled()) return;
-    uint8_t* slice = raw + size_t(k) * sliceBytes;
-    readExactly(sources[size_t(k)], slice, sliceBytes);
-    stats[size_t(k)] = detail::scanSamples(slice, sliceVoxels, layout);
-    const int done = ++slicesRead;
-    report(0.9 * done / z, "Reading slice " + std::to_string(done) + " of " + std::to_string(z));
-  });
-  if (cancelled()) throw inputError("loading cancelled");
+  parallelFor(
+      size_t(z),
+      [&](size_t k) {
+        uint8_t* slice = raw + k * sliceBytes;
+        readExactly(sources[k], slice, sliceBytes);
+        stats[k] = detail::scanSamples(slice, sliceVoxels, layout);
+        const int done = ++slicesRead;
+        report(0.9 * done / z,
+               "Reading slice " + std::to_string(done) + " of " + std::to_string(z));
+      },
+      feedback.cancel);
+  if (cancelled()) throw cancelledError("loading cancelled");
 
   detail::ValueStats all;
   for (const auto& s : stats) all.merge(s);
@@ -236,12 +239,14 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   else
     v.voxels.resize(v.voxelCount());
   report(0.9, "Converting to 16-bit voxels");
-  detail::parallelFor(z, [&](int k) {
-    if (cancelled()) return;
-    detail::storeSamples(raw + size_t(k) * sliceBytes, sliceVoxels, layout, storage,
-                         v.voxels.data() + size_t(k) * sliceVoxels);
-  });
-  if (cancelled()) throw inputError("loading cancelled");
+  parallelFor(
+      size_t(z),
+      [&](size_t k) {
+        detail::storeSamples(raw + k * sliceBytes, sliceVoxels, layout, storage,
+                             v.voxels.data() + k * sliceVoxels);
+      },
+      feedback.cancel);
+  if (cancelled()) throw cancelledError("loading cancelled");
   report(1.0, "Loaded " + input);
   return v;
 }

@@ -38,9 +38,26 @@ TEST(DicomProgress, CancelStopsTheLoad) {
     importDicom(dicomPath("ct-visible-human-pelvis"), o);
     FAIL() << "a cancelled load must throw";
   } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::Cancelled) << "a cancellation is not an input error";
+    EXPECT_TRUE(isCancellation(e));
     EXPECT_NE(std::string(e.what()).find("cancelled"), std::string::npos);
   }
   EXPECT_LT(decoded.load(), 150);
+}
+
+TEST(DicomProgress, CancelledBeforeTheStartReportsCancelled) {
+  std::atomic<bool> cancel{true};
+  int reports = 0;
+  LoadOptions o;
+  o.cancel = &cancel;
+  o.progress = [&](double, const std::string&) { ++reports; };
+  try {
+    listDicomSeries(dicomPath("ct-visible-human-pelvis"), o);
+    FAIL() << "a cancelled listing must throw";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::Cancelled) << e.what();
+  }
+  EXPECT_EQ(reports, 0) << "no header was read";
 }
 
 }  // namespace

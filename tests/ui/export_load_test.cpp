@@ -5,7 +5,9 @@
 #include <QFile>
 #include <QMouseEvent>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTemporaryDir>
 
 #include "export_dialog.h"
@@ -149,6 +151,26 @@ class ExportLoadTest : public QObject {
     QVERIFY(failed.wait(30000));
     QCOMPARE(lastError_.first, QString("Cannot open"));
     QVERIFY(visibleWhenReported.empty());
+  }
+
+  void loadCancelShowsNoErrorBox() {
+    // The user presses Cancel in the progress box: no error box, the status bar says so,
+    // and the volume on screen stays, even if the load was about to finish.
+    auto shown = models_->document.volume();
+    QSignalSpy cancelled(&window_->loader(), &LoadController::cancelled);
+    QSignalSpy loaded(&window_->loader(), &LoadController::loaded);
+    window_->open("", {});  // the head phantom: a real load
+    const auto progress = window_->findChildren<QProgressDialog*>();
+    QCOMPARE(progress.size(), qsizetype(1));
+    auto* cancelButton = progress.front()->findChild<QPushButton*>();
+    QVERIFY(cancelButton);
+    cancelButton->click();
+    QVERIFY(cancelled.wait(30000));
+    QVERIFY2(lastError_.first.isEmpty(), qPrintable(lastError_.second));
+    QCOMPARE(loaded.count(), 0);
+    QCOMPARE(models_->document.volume(), shown);
+    QCOMPARE(window_->statusBar()->currentMessage(), QString("Loading cancelled"));
+    QVERIFY(!window_->loader().busy());
   }
 
   void loadErrorKeepsLastVolume() {

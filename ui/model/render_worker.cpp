@@ -5,18 +5,18 @@
 
 namespace voxray::ui {
 
-RenderWorker::RenderWorker(std::string device, RenderCallbacks callbacks)
-    : device_(std::move(device)), callbacks_(std::move(callbacks)) {
-  thread_ = std::thread([this] { run(); });
+RenderWorker::RenderWorker(std::string device, RenderCallbacks callbacks, BackgroundTask::Post post)
+    : device_(std::move(device)), callbacks_(std::move(callbacks)), task_(std::move(post)) {
+  task_.start([this] { run(); });
 }
 
 RenderWorker::~RenderWorker() {
   {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
+    std::lock_guard lock(mutex_);  // the loop checks the flag under the lock before waiting
+    task_.cancel();
   }
   wake_.notify_all();
-  thread_.join();
+  task_.wait();
 }
 
 void RenderWorker::setVolume(std::shared_ptr<const Volume> volume) {
@@ -35,13 +35,19 @@ void RenderWorker::request(const RenderParams& params, bool interactive, int tag
   wake_.notify_all();
 }
 
+void RenderWorker::reportError(const std::string& message, bool volumeRejected) const {
+  if (callbacks_.error)
+    task_.post([f = callbacks_.error, message, volumeRejected] { f(message, volumeRejected); });
+}
+
 void RenderWorker::run() {
   std::unique_ptr<ClContext> ctx;
   try {
     ctx = std::make_unique<ClContext>(device_);
-    if (callbacks_.deviceReady) callbacks_.deviceReady(ctx->device().name);
+    if (callbacks_.deviceReady)
+      task_.post([f = callbacks_.deviceReady, name = ctx->device().name] { f(name); });
   } catch (const std::exception& e) {
-    if (callbacks_.error) callbacks_.error(e.what(), false);
+    reportError(e.what(), false);
   }
   std::unique_ptr<Raycaster> raycaster;
   std::shared_ptr<const Volume> volume;  // kept alive while the raycaster uses it
@@ -51,8 +57,10 @@ void RenderWorker::run() {
     std::optional<Request> req;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || pendingVolume_ || pendingView_ || pendingExport_; });
-      if (stop_) return;
+      wake_.wait(lock, [&] {
+        return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_;
+      });
+      if (task_.cancelled()) return;
       nextVolume = std::move(pendingVolume_);
       pendingVolume_.reset();
       if (pendingExport_) {
@@ -69,7 +77,7 @@ void RenderWorker::run() {
         raycaster = std::make_unique<Raycaster>(*ctx, *nextVolume);
         volume = nextVolume;
       } catch (const std::exception& e) {
-        if (callbacks_.error) callbacks_.error(e.what(), true);
+        reportError(e.what(), true);
       }
     }
     if (!req || !raycaster) continue;
@@ -79,9 +87,9 @@ void RenderWorker::run() {
     frame->tag = req->tag;
     try {
       raycaster->render(req->params, frame->image, &frame->stats);
-      if (callbacks_.frame) callbacks_.frame(frame);
+      if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
     } catch (const std::exception& e) {
-      if (callbacks_.error) callbacks_.error(e.what(), false);
+      reportError(e.what(), false);
     }
   }
 }

@@ -2,16 +2,16 @@
 // Owns the OpenCL context and the Raycaster on one thread of its own (the Raycaster is not
 // thread-safe) so that rendering never blocks the UI. Requests do not queue up: a new
 // request replaces one that has not started, so a fast drag renders only the latest
-// camera. Results and errors arrive through callbacks ON THE WORKER THREAD; the Qt side
-// forwards them to the UI thread.
+// camera. Runs as a BackgroundTask: results and errors arrive through its Post (the
+// scheduler's GUI thread).
 #include <condition_variable>
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
+#include "background_task.h"
 #include "no_qt.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
@@ -38,8 +38,9 @@ struct RenderCallbacks {
 
 class RenderWorker {
  public:
-  // DEVICE: a ClContext selector ("" = $VOXRAY_DEVICE or auto).
-  RenderWorker(std::string device, RenderCallbacks callbacks);
+  // DEVICE: a ClContext selector ("" = $VOXRAY_DEVICE or auto). POST: where callbacks run
+  // (BackgroundTask::Post; none: on the render thread).
+  RenderWorker(std::string device, RenderCallbacks callbacks, BackgroundTask::Post post = {});
   ~RenderWorker();  // waits for the frame in progress
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
@@ -49,12 +50,12 @@ class RenderWorker {
 
  private:
   void run();
+  void reportError(const std::string& message, bool volumeRejected) const;
 
   std::string device_;
   RenderCallbacks callbacks_;
   std::mutex mutex_;
   std::condition_variable wake_;
-  bool stop_ = false;
   std::shared_ptr<const Volume> pendingVolume_;
   struct Request {
     RenderParams params;
@@ -63,7 +64,7 @@ class RenderWorker {
   };
   std::optional<Request> pendingView_;    // latest view frame wins
   std::optional<Request> pendingExport_;  // exports are never replaced by view frames
-  std::thread thread_;
+  BackgroundTask task_;                   // cancelled: the loop ends
 };
 
 }  // namespace voxray::ui

@@ -2,32 +2,42 @@
 
 #ifdef VOXRAY_HAS_DICOM
 #include "thumbnail.h"
+#include "voxray/io/error.h"
 
 namespace voxray::ui {
 
-SeriesScan::SeriesScan(std::string input, SeriesScanEvents events, size_t budget)
-    : input_(std::move(input)), events_(std::move(events)), budget_(budget) {
-  thread_ = std::thread([this] { run(); });
+SeriesScan::SeriesScan(std::string input, SeriesScanEvents events, size_t budget,
+                       BackgroundTask::Post post)
+    : input_(std::move(input)),
+      events_(std::move(events)),
+      budget_(budget),
+      task_(std::move(post)) {
+  task_.start([this] { run(); });
 }
 
 SeriesScan::~SeriesScan() {
-  cancel_ = true;
-  thread_.join();
+  task_.cancel();
+  task_.wait();
+}
+
+void SeriesScan::send(BackgroundTask::Event event) const {
+  if (!task_.cancelled()) task_.post(std::move(event));
 }
 
 void SeriesScan::run() {
   LoadOptions options;
-  options.cancel = &cancel_;
+  options.cancel = task_.cancelFlag();
   DicomListing listing;
   try {
     listing = listDicomSeries(input_, options);
   } catch (const std::exception& e) {
-    if (!cancel_ && events_.failed) events_.failed(e.what());
+    if (!isCancellation(e) && events_.failed)
+      send([f = events_.failed, m = std::string(e.what())] { f(m); });
     return;
   }
-  if (cancel_) return;
-  if (events_.listed) events_.listed(listing);
-  for (size_t i = 0; i < listing.series.size() && !cancel_; ++i) {
+  if (task_.cancelled()) return;
+  if (events_.listed) send([f = events_.listed, listing] { f(listing); });
+  for (size_t i = 0; i < listing.series.size() && !task_.cancelled(); ++i) {
     const SeriesInfo& s = listing.series[i];
     Image thumb;
     size_t voxels = size_t(s.dims.x) * size_t(s.dims.y) * size_t(s.dims.z);
@@ -40,9 +50,9 @@ void SeriesScan::run() {
         // Not loadable as a volume (a scout, a broken file): the row's notes say why.
       }
     }
-    if (!cancel_ && events_.thumbnail) events_.thumbnail(int(i), thumb);
+    if (events_.thumbnail) send([f = events_.thumbnail, i, thumb] { f(int(i), thumb); });
   }
-  if (!cancel_ && events_.finished) events_.finished();
+  if (events_.finished) send(events_.finished);
 }
 
 }  // namespace voxray::ui

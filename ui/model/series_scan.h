@@ -3,12 +3,11 @@
 // then make a thumbnail of each candidate's middle slice, one candidate at a time, on a
 // thread of its own so the dialog stays responsive. Thumbnails load the candidate through
 // importDicom (the only decoder io offers), so candidates above a voxel budget get none.
-// Events arrive on the worker thread; the receiver hops to its own thread.
-#include <atomic>
+// Runs as a BackgroundTask: events arrive through POST (the picker's GUI thread).
 #include <functional>
 #include <string>
-#include <thread>
 
+#include "background_task.h"
 #include "no_qt.h"
 #include "voxray/io/image.h"
 
@@ -29,20 +28,23 @@ struct SeriesScanEvents {
 
 class SeriesScan {
  public:
-  // Starts at once. BUDGET: candidates with more voxels get an empty thumbnail.
-  SeriesScan(std::string input, SeriesScanEvents events, size_t budget = kThumbnailVoxelBudget);
-  ~SeriesScan();  // cancels and waits: no event arrives after this returns
+  // Starts at once. BUDGET: candidates with more voxels get an empty thumbnail. POST: where
+  // events go (BackgroundTask::Post; none: on the scan's thread).
+  SeriesScan(std::string input, SeriesScanEvents events, size_t budget = kThumbnailVoxelBudget,
+             BackgroundTask::Post post = {});
+  ~SeriesScan();  // cancels and waits: no event is sent after this returns
   SeriesScan(const SeriesScan&) = delete;
   SeriesScan& operator=(const SeriesScan&) = delete;
 
  private:
   void run();
+  // Sends EVENT unless the scan was cancelled.
+  void send(BackgroundTask::Event event) const;
 
   std::string input_;
   SeriesScanEvents events_;
   size_t budget_;
-  std::atomic<bool> cancel_{false};
-  std::thread thread_;
+  BackgroundTask task_;  // last member: its thread starts after the rest is built
 };
 
 }  // namespace voxray::ui

@@ -1,52 +1,55 @@
 #include "load_controller.h"
 
+#include <algorithm>
+
+#include "gui_post.h"
 #include "voxray/io/error.h"
 
 namespace voxray::ui {
 
 LoadController::LoadController(QWidget* dialogParent)
-    : QObject(dialogParent), dialogParent_(dialogParent) {
+    : QObject(dialogParent), dialogParent_(dialogParent), task_(postTo(this)) {
   qRegisterMetaType<std::shared_ptr<const Volume>>("std::shared_ptr<const voxray::Volume>");
-  poll_.setInterval(50);
-  connect(&poll_, &QTimer::timeout, this, &LoadController::poll);
 }
 
-LoadController::~LoadController() {
-  cancel_ = true;
-  if (worker_.joinable()) worker_.join();
-}
+LoadController::~LoadController() = default;  // task_ cancels and waits
 
 void LoadController::load(const std::string& input, LoadOptions options, const QString& name) {
-  if (busy()) return;
-  cancel_ = false;
-  done_ = false;
-  progress_ = 0.0;
-  result_.reset();
-  error_.clear();
+  if (busy_) return;
+  busy_ = true;
   name_ = name;
   input_ = QString::fromStdString(input);
-  options.cancel = &cancel_;
-  options.progress = [this](double p, const std::string&) { progress_ = p; };
-  worker_ = std::thread([this, input, options] {
-    try {
-      result_ = std::make_shared<const Volume>(loadVolume(input, options));
-    } catch (const std::exception& e) {
-      error_ = e.what();
-    }
-    done_ = true;
-  });
   dialog_ = new QProgressDialog("Loading " + name + " …", "Cancel", 0, 1000, dialogParent_);
   dialog_->setWindowModality(Qt::WindowModal);
   dialog_->setMinimumDuration(300);  // quick loads show no dialog at all
-  connect(dialog_, &QProgressDialog::canceled, this, [this] { cancel_ = true; });
-  poll_.start();
+  connect(dialog_, &QProgressDialog::canceled, this, &LoadController::cancel);
+  task_.start([this, input, options]() mutable {
+    options.cancel = task_.cancelFlag();
+    options.progress = [this](double p, const std::string&) {
+      task_.post([this, p] { showProgress(p); });
+    };
+    std::shared_ptr<const Volume> volume;
+    QString error;
+    bool wasCancelled = false;
+    try {
+      volume = std::make_shared<const Volume>(loadVolume(input, options));
+    } catch (const std::exception& e) {
+      wasCancelled = isCancellation(e);
+      error = QString::fromStdString(e.what());
+    }
+    task_.post([this, volume, error, wasCancelled] { finish(volume, error, wasCancelled); });
+  });
 }
 
-void LoadController::poll() {
-  if (dialog_) dialog_->setValue(int(progress_ * 999));
-  if (!done_) return;
-  poll_.stop();
-  worker_.join();
+void LoadController::showProgress(double fraction) {
+  // Slices finish out of order on the importer's threads: the bar only moves forward.
+  if (dialog_) dialog_->setValue(std::max(dialog_->value(), int(fraction * 999)));
+}
+
+void LoadController::finish(std::shared_ptr<const Volume> volume, const QString& error,
+                            bool wasCancelled) {
+  task_.wait();  // the job has posted its last event: it returns at once
+  busy_ = false;
   if (dialog_) {
     // Hidden now, not when deleteLater comes: the error box that may follow runs its own
     // event loop, in which the deferred delete does not happen, and the progress box
@@ -54,10 +57,14 @@ void LoadController::poll() {
     dialog_->hide();
     dialog_->deleteLater();
   }
-  if (result_)
-    emit loaded(std::move(result_), name_, input_);
+  // A load that finished while the user pressed Cancel is dropped too: they asked for
+  // nothing to change.
+  if (wasCancelled || task_.cancelled())
+    emit cancelled();
+  else if (volume)
+    emit loaded(std::move(volume), name_, input_);
   else
-    emit failed(QString::fromStdString(error_), cancel_.load());
+    emit failed(error);
 }
 
 }  // namespace voxray::ui

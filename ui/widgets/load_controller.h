@@ -1,16 +1,14 @@
 #pragma once
-// Loads volumes on a worker thread through voxray::loadVolume, with a progress dialog
-// that can cancel. The window stays responsive; the result or the importer's message
-// arrives as a signal on the UI thread.
-#include <atomic>
+// Loads volumes through voxray::loadVolume as a BackgroundTask, with a progress dialog that
+// can cancel. The window stays responsive; progress and the outcome arrive on the UI thread:
+// the volume, the importer's message, or a cancellation (which is no error).
 #include <memory>
-#include <thread>
 
 #include <QObject>
 #include <QPointer>
 #include <QProgressDialog>
-#include <QTimer>
 
+#include "background_task.h"
 #include "voxray/io/load.h"
 
 namespace voxray::ui {
@@ -21,29 +19,28 @@ class LoadController : public QObject {
   explicit LoadController(QWidget* dialogParent);
   ~LoadController() override;  // cancels and waits for a load in progress
 
-  bool busy() const { return worker_.joinable(); }
+  bool busy() const { return busy_; }
   // INPUT and OPTIONS as loadVolume takes them (progress and cancel are filled in here).
   // NAME: what the window title shows. Ignored while another load runs.
   void load(const std::string& input, LoadOptions options, const QString& name);
+  // As the dialog's Cancel button: the load ends with cancelled(), even if it was finishing.
+  void cancel() { task_.cancel(); }
 
  signals:
   void loaded(std::shared_ptr<const voxray::Volume> volume, const QString& name,
               const QString& input);
-  void failed(const QString& message, bool cancelled);
+  void failed(const QString& message);
+  void cancelled();
 
  private:
-  void poll();
+  void showProgress(double fraction);
+  void finish(std::shared_ptr<const Volume> volume, const QString& error, bool wasCancelled);
 
   QWidget* dialogParent_;
   QPointer<QProgressDialog> dialog_;
-  QTimer poll_;
-  std::thread worker_;
-  std::atomic<bool> cancel_{false};
-  std::atomic<bool> done_{false};
-  std::atomic<double> progress_{0.0};
-  std::shared_ptr<const Volume> result_;
-  std::string error_;
+  bool busy_ = false;
   QString name_, input_;
+  BackgroundTask task_;  // last member: stops before the rest goes
 };
 
 }  // namespace voxray::ui

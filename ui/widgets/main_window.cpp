@@ -85,12 +85,10 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
             updateTitle();
             emit volumeShown();
           });
-  connect(loader_, &LoadController::failed, this, [this](const QString& message, bool cancelled) {
-    if (cancelled)
-      statusBar()->showMessage("Loading cancelled", 5000);
-    else
-      showError("Cannot open", message);
-  });
+  connect(loader_, &LoadController::failed, this,
+          [this](const QString& message) { showError("Cannot open", message); });
+  connect(loader_, &LoadController::cancelled, this,
+          [this] { statusBar()->showMessage("Loading cancelled", 5000); });
   buildMenus();
   updateTitle();
   resize(1400, 900);

@@ -1,6 +1,6 @@
 #include "render_scheduler.h"
 
-#include <QMetaObject>
+#include "gui_post.h"
 
 namespace voxray::ui {
 
@@ -20,23 +20,16 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
     requestFrame();
   });
   clock_.start();
-  // The worker calls back on its own thread: hop to this object's (the UI) thread.
+  // The worker's callbacks arrive on this object's (the UI) thread.
   RenderCallbacks cb;
-  cb.frame = [this](std::shared_ptr<const Frame> f) {
-    QMetaObject::invokeMethod(
-        this, [this, f] { onFrame(f); }, Qt::QueuedConnection);
-  };
+  cb.frame = [this](std::shared_ptr<const Frame> f) { onFrame(std::move(f)); };
   cb.error = [this](const std::string& message, bool rejected) {
-    QString m = QString::fromStdString(message);
-    QMetaObject::invokeMethod(
-        this, [this, m, rejected] { emit renderError(m, rejected); }, Qt::QueuedConnection);
+    emit renderError(QString::fromStdString(message), rejected);
   };
   cb.deviceReady = [this](const std::string& name) {
-    QString n = QString::fromStdString(name);
-    QMetaObject::invokeMethod(
-        this, [this, n] { emit deviceReady(n); }, Qt::QueuedConnection);
+    emit deviceReady(QString::fromStdString(name));
   };
-  worker_ = std::make_unique<RenderWorker>(device.toStdString(), cb);
+  worker_ = std::make_unique<RenderWorker>(device.toStdString(), cb, postTo(this));
   stateConnection_ = state_.changed.connect([this](unsigned) { requestFrame(); });
   docConnection_ = doc_.changed.connect([this] {
     sawFullFrame_ = false;

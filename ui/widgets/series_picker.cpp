@@ -11,6 +11,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include "gui_post.h"
 #include "qt_image.h"
 #include "thumbnail.h"
 
@@ -78,32 +79,17 @@ SeriesPickerDialog::SeriesPickerDialog(QWidget* parent, const std::string& folde
   layout->addWidget(buttons);
   resize(900, 440);
 
-  // The scan calls back on its own thread: hop to this dialog's. A queued call to a dialog
-  // that is gone is dropped by Qt, and the scan stops before the dialog goes anyway.
+  // The scan's events arrive on this dialog's thread; it stops before the dialog goes.
   SeriesScanEvents events;
-  events.listed = [this](const DicomListing& l) {
-    QMetaObject::invokeMethod(
-        this, [this, l] { showListing(l); }, Qt::QueuedConnection);
-  };
-  events.thumbnail = [this](int row, const Image& img) {
-    QMetaObject::invokeMethod(
-        this, [this, row, img] { showThumbnail(row, img); }, Qt::QueuedConnection);
-  };
-  events.failed = [this](const std::string& message) {
-    QString m = QString::fromStdString(message);
-    QMetaObject::invokeMethod(
-        this, [this, m] { emit listingFailed(m); }, Qt::QueuedConnection);
-  };
+  events.listed = [this](const DicomListing& l) { showListing(l); };
+  events.thumbnail = [this](int row, const Image& img) { showThumbnail(row, img); };
+  events.failed = [this](const std::string& m) { emit listingFailed(QString::fromStdString(m)); };
   events.finished = [this] {
-    QMetaObject::invokeMethod(
-        this,
-        [this] {
-          status_->setText(QString("%1 candidate(s)").arg(listing_.series.size()));
-          emit scanFinished();
-        },
-        Qt::QueuedConnection);
+    status_->setText(QString("%1 candidate(s)").arg(listing_.series.size()));
+    emit scanFinished();
   };
-  scan_ = std::make_unique<SeriesScan>(folder, std::move(events));
+  scan_ =
+      std::make_unique<SeriesScan>(folder, std::move(events), kThumbnailVoxelBudget, postTo(this));
 }
 
 SeriesPickerDialog::~SeriesPickerDialog() { scan_.reset(); }

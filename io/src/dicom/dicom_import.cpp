@@ -9,13 +9,13 @@
 #include <set>
 
 #include "file_scan.h"
-#include "parallel_for.h"
 #include "pixel_decode.h"
 #include "resample.h"
 #include "series_grouping.h"
 #include "stack_geometry.h"
 #include "value_mapping.h"
 #include "voxray/io/error.h"
+#include "voxray/io/parallel.h"
 #include "voxray/io/raw_import.h"
 
 namespace voxray {
@@ -38,7 +38,7 @@ void report(const LoadOptions& o, double fraction, const std::string& message) {
 }
 
 void throwIfCancelled(const LoadOptions& o, const std::string& input) {
-  if (o.cancel && *o.cancel) throw inputError(input + ": DICOM import cancelled");
+  if (o.cancel && *o.cancel) throw cancelledError(input + ": DICOM import cancelled");
 }
 
 Scan scan(const std::string& input, const LoadOptions& options) {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parallel_for.h"
+#include "voxray/io/parallel.h"
 
 namespace voxray::dicom {
 
