@@ -1,4 +1,4 @@
-#include "voxray/engine/accuracy_plot.h"
+#include "voxray/lab/accuracy_plot.h"
 
 #include <algorithm>
 #include <cmath>

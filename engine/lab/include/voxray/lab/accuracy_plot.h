@@ -3,8 +3,8 @@
 // log-log, drawn by a tiny rasteriser (no plotting library).
 #include <vector>
 
-#include "voxray/engine/accuracy_sweep.h"
 #include "voxray/io/image.h"
+#include "voxray/lab/accuracy_sweep.h"
 
 namespace voxray {
 
