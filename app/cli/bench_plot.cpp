@@ -5,16 +5,12 @@
 #include <cstdio>
 #include <map>
 
-#include "plot_canvas.h"
 #include "voxray/io/error.h"
+#include "voxray/lab/plot_canvas.h"
 
 namespace voxray::cli {
 
 namespace {
-
-const Rgb kColours[] = {{31, 119, 180},  {214, 39, 40},  {44, 160, 44}, {148, 103, 189},
-                        {255, 127, 14},  {23, 190, 207}, {140, 86, 75}, {227, 119, 194},
-                        {127, 127, 127}, {188, 189, 34}};
 
 std::string fmt(double v) {
   char b[32];
@@ -45,8 +41,8 @@ void writeBenchPlot(const std::string& path, const std::vector<BenchRow>& rows) 
   double lo = std::pow(10.0, std::floor(std::log10(ymin))),
          hi = std::pow(10.0, std::ceil(std::log10(ymax)));
   const int W = 1000, H = 640, L = 90, R = 330, T = 50, B = 70;
-  Canvas c(W, H, {255, 255, 255});
-  Rgb ink{30, 30, 30}, grid{225, 225, 225};
+  PlotCanvas c(W, H);
+  const PlotRgb ink{30, 30, 30}, grid{225, 225, 225};
   auto X = [&](double px) { return L + (W - L - R) * px / (xmax * 1.05); };
   auto Y = [&](double fps) {
     return T + (H - T - B) *
@@ -57,7 +53,7 @@ void writeBenchPlot(const std::string& path, const std::vector<BenchRow>& rows) 
       double v = d * m;
       if (v > hi * 1.001) break;
       c.line(L, Y(v), W - R, Y(v), grid);
-      c.text(L - 8 - Canvas::textWidth(fmt(v)), int(Y(v)) - 7, fmt(v), ink);
+      c.text(L - 8 - PlotCanvas::textWidth(fmt(v)), int(Y(v)) - 7, fmt(v), ink);
     }
   std::vector<std::pair<int, std::string>> xticks;
   for (const auto& r : rows) xticks.emplace_back(r.pixels, r.size);
@@ -65,14 +61,14 @@ void writeBenchPlot(const std::string& path, const std::vector<BenchRow>& rows) 
   xticks.erase(std::unique(xticks.begin(), xticks.end()), xticks.end());
   for (const auto& [px, label] : xticks) {
     c.line(X(px), T, X(px), H - B, grid);
-    c.text(int(X(px)) - Canvas::textWidth(label, 1) / 2, H - B + 8, label, ink, 1);
+    c.text(int(X(px)) - PlotCanvas::textWidth(label, 1) / 2, H - B + 8, label, ink, 1);
   }
   c.line(L, T, L, H - B, ink, 2);
   c.line(L, H - B, W - R, H - B, ink, 2);
   c.text(L, 15, "frames per second (log) against image size", ink);
   c.text(L + 120, H - 30, "pixels: solid = voxray, dashed = seed paper (8800 GT)", ink, 1);
   for (size_t s = 0; s < order.size(); ++s) {
-    Rgb col = kColours[s % std::size(kColours)];
+    PlotRgb col = seriesColour(s);
     auto pts = series[order[s]];
     std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->pixels < b->pixels; });
     for (size_t i = 0; i < pts.size(); ++i) {

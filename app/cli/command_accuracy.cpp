@@ -13,11 +13,11 @@
 #include "input_options.h"
 #include "json_text.h"
 #include "render_flags.h"
-#include "voxray/engine/accuracy_plot.h"
-#include "voxray/engine/accuracy_sweep.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/transfer_function.h"
 #include "voxray/io/error.h"
+#include "voxray/lab/accuracy_plot.h"
+#include "voxray/lab/accuracy_sweep.h"
 
 namespace voxray::cli {
 

@@ -10,9 +10,9 @@
 #include <string>
 
 #include "reference_sampling.h"
-#include "voxray/engine/accuracy.h"
 #include "voxray/engine/reference_renderer.h"
 #include "voxray/io/synthetic.h"
+#include "voxray/lab/accuracy.h"
 
 namespace voxray {
 

@@ -5,8 +5,8 @@
 
 #include "accuracy_cthead.h"
 #include "stability_helpers.h"
-#include "voxray/engine/accuracy.h"
 #include "voxray/engine/raycaster.h"
+#include "voxray/lab/accuracy.h"
 
 namespace voxray {
 

@@ -8,10 +8,10 @@
 
 #include "accuracy_cthead.h"
 #include "stability_helpers.h"
-#include "voxray/engine/accuracy.h"
 #include "voxray/engine/quality.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/error.h"
+#include "voxray/lab/accuracy.h"
 
 namespace voxray {
 

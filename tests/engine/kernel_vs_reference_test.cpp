@@ -16,12 +16,12 @@
 #include <vector>
 
 #include "test_volumes.h"
-#include "voxray/engine/accuracy.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/kernel_variant.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/reference_renderer.h"
 #include "voxray/io/synthetic.h"
+#include "voxray/lab/accuracy.h"
 
 namespace voxray {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "voxray/engine/accuracy.h"
 #include "voxray/engine/render_params.h"
+#include "voxray/lab/accuracy.h"
 
 namespace voxray {
 

@@ -1,10 +1,10 @@
 #pragma once
 // The Pareto plot of `voxray-cli accuracy --plot`: error against milliseconds per frame,
-// log-log, drawn by a tiny rasteriser (no plotting library).
+// log-log, drawn on the lab's one plot canvas (plot_canvas.h).
 #include <vector>
 
-#include "voxray/engine/accuracy_sweep.h"
 #include "voxray/io/image.h"
+#include "voxray/lab/accuracy_sweep.h"
 
 namespace voxray {
 

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "voxray/engine/accuracy.h"
 #include "voxray/io/error.h"
+#include "voxray/lab/accuracy.h"
 
 namespace voxray {
 

@@ -1,4 +1,4 @@
-#include "voxray/engine/accuracy_sweep.h"
+#include "voxray/lab/accuracy_sweep.h"
 
 #include <algorithm>
 #include <map>

@@ -1,4 +1,4 @@
-#include "plot_canvas.h"
+#include "voxray/lab/plot_canvas.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-namespace voxray::cli {
+namespace voxray {
 
 namespace {
 
@@ -61,14 +61,20 @@ const std::map<char, std::array<uint8_t, 7>>& font() {
   return f;
 }
 
+const PlotRgb kSeries[] = {{31, 119, 180},  {214, 39, 40},  {44, 160, 44}, {148, 103, 189},
+                           {255, 127, 14},  {23, 190, 207}, {140, 86, 75}, {227, 119, 194},
+                           {127, 127, 127}, {188, 189, 34}};
+
 }  // namespace
 
-Canvas::Canvas(int width, int height, Rgb bg) : img_(width, height) {
+PlotRgb seriesColour(size_t i) { return kSeries[i % std::size(kSeries)]; }
+
+PlotCanvas::PlotCanvas(int width, int height, PlotRgb bg) : img_(width, height) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) pixel(x, y, bg);
 }
 
-void Canvas::pixel(int x, int y, Rgb c) {
+void PlotCanvas::pixel(int x, int y, PlotRgb c) {
   if (x < 0 || y < 0 || x >= img_.width || y >= img_.height) return;
   uint8_t* p = &img_.rgba[(size_t(y) * size_t(img_.width) + size_t(x)) * 4];
   p[0] = c.r;
@@ -77,7 +83,7 @@ void Canvas::pixel(int x, int y, Rgb c) {
   p[3] = 255;
 }
 
-void Canvas::line(double x0, double y0, double x1, double y1, Rgb c, int w, bool dashed) {
+void PlotCanvas::line(double x0, double y0, double x1, double y1, PlotRgb c, int w, bool dashed) {
   double len = std::hypot(x1 - x0, y1 - y0);
   int steps = std::max(1, int(std::ceil(len)));
   for (int i = 0; i <= steps; ++i) {
@@ -88,12 +94,18 @@ void Canvas::line(double x0, double y0, double x1, double y1, Rgb c, int w, bool
   }
 }
 
-void Canvas::box(int x0, int y0, int x1, int y1, Rgb c) {
+void PlotCanvas::box(int x0, int y0, int x1, int y1, PlotRgb c) {
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) pixel(x, y, c);
 }
 
-void Canvas::text(int x, int y, const std::string& s, Rgb c, int scale) {
+void PlotCanvas::disc(int cx, int cy, int radius, PlotRgb c) {
+  for (int y = -radius; y <= radius; ++y)
+    for (int x = -radius; x <= radius; ++x)
+      if (x * x + y * y <= radius * radius) pixel(cx + x, cy + y, c);
+}
+
+void PlotCanvas::text(int x, int y, const std::string& s, PlotRgb c, int scale) {
   for (size_t i = 0; i < s.size(); ++i) {
     auto it = font().find(char(std::toupper(static_cast<unsigned char>(s[i]))));
     if (it == font().end()) continue;  // spaces and anything without a glyph
@@ -106,4 +118,4 @@ void Canvas::text(int x, int y, const std::string& s, Rgb c, int scale) {
   }
 }
 
-}  // namespace voxray::cli
+}  // namespace voxray
