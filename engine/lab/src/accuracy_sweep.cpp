@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "voxray/engine/cl_context.h"
+#include "voxray/engine/kernel_variant.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/volume.h"
 
@@ -20,10 +21,6 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   size_t n = v.size();
   return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
-
-const char* gradientShort(Gradient g) {
-  return g == Gradient::Central ? "central" : g == Gradient::Sobel ? "sobel" : "zh";
 }
 
 // The fine reference of a case: the same operator, trilinear (images) or the case's own
@@ -46,12 +43,9 @@ struct Fine {
 
 std::string settingLabel(const RenderParams& p, double minSpacingMm) {
   std::ostringstream s;
-  s << "step=" << p.stepMm / minSpacingMm << " " << (p.interp == Interp::Linear ? "lin" : "near");
-  if (p.mode != Mode::Mip && p.shading) s << " " << gradientShort(p.gradient);
-  if (p.mode == Mode::Iso) s << " r" << p.refine;
-  if (p.mode == Mode::Dvr && !p.opacityCorrection) s << " no-oc";
-  if (p.jitter) s << " jitter";
-  s << " " << p.width << "x" << p.height;
+  // The kernel variant's name says what the kernel switches say (no gradient for mip, ...).
+  s << "step=" << p.stepMm / minSpacingMm << " " << kernelVariantName(p) << " " << p.width << "x"
+    << p.height;
   return s.str();
 }
 

@@ -50,7 +50,8 @@ struct SweepOptions {
 // gradient operators, and (iso) refinement 0 ... 8. `reduced` keeps a handful of cases
 // (for extra resolutions and shapes).
 std::vector<SweepCase> standardCases(const SweepScene& scene, bool reduced = false);
-// "step=S interp gradient rN ..." for a parameter set, relative to the scene's voxel size.
+// "step=S VARIANT WxH" for a parameter set: the step relative to the scene's voxel size, the
+// kernel variant's name (kernelVariantName).
 std::string settingLabel(const RenderParams& p, double minSpacingMm);
 
 std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
