@@ -45,9 +45,9 @@ void parseRange(RawLayout& l, const std::string& s) {
 }
 
 std::vector<InputFlagSpec> makeSpecs() {
-  const ParamDomain dims = {.min = 1.0, .decimals = 0};
-  const ParamDomain spacing = {.min = 0.0, .minExclusive = true, .decimals = 3, .unit = "mm"};
-  const ParamDomain offset = {.min = 0.0, .decimals = 0, .unit = "bytes"};
+  const ParamDomain dims = ParamDomain().atLeast(1).steps(1, 0);
+  const ParamDomain spacing = ParamDomain().above(0).steps(1, 3).in("mm");
+  const ParamDomain offset = ParamDomain().atLeast(0).steps(1, 0).in("bytes");
   const std::vector<EnumLabel> types = sampleTypeLabels();
   return {
       {"raw-dims", "X,Y[,Z]", "raw: voxels along x, y and z (Z: the number of slice files)", dims,
@@ -60,17 +60,11 @@ std::vector<InputFlagSpec> makeSpecs() {
          return std::to_string(l.dims.x) + "," + std::to_string(l.dims.y) +
                 (l.dims.z ? "," + std::to_string(l.dims.z) : "");
        })},
-      {"raw-type",
-       labelNames(types, "|"),
-       "raw: sample type (default i16)",
-       {.labels = types},
-       [](O& o, S s) { raw(o).type = parseSampleType(s); },
+      {"raw-type", labelNames(types, "|"), "raw: sample type (default i16)",
+       ParamDomain().choices(types), [](O& o, S s) { raw(o).type = parseSampleType(s); },
        rawText([](const RawLayout& l) { return std::string(toString(l.type)); })},
-      {"raw-endian",
-       labelNames(kByteOrderLabels, "|"),
-       "raw: byte order (default little)",
-       {.labels = kByteOrderLabels},
-       [](O& o, S s) { raw(o).order = parseByteOrder(s); },
+      {"raw-endian", labelNames(kByteOrderLabels, "|"), "raw: byte order (default little)",
+       ParamDomain().choices(kByteOrderLabels), [](O& o, S s) { raw(o).order = parseByteOrder(s); },
        rawText([](const RawLayout& l) { return kByteOrderLabels[size_t(l.order)].name; })},
       {"raw-spacing", "SX,SY,SZ", "raw: voxel spacing in mm (default 1,1,1)", spacing,
        [spacing](O& o, S s) {

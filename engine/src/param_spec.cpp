@@ -7,6 +7,45 @@
 
 namespace voxray {
 
+namespace {
+
+// One end of the range: where it lies and whether the range excludes it.
+ParamDomain& setEnd(ParamDomain& d, std::optional<double>& end, bool& excluded, double v,
+                    bool exclude) {
+  end = v;
+  excluded = exclude;
+  return d;
+}
+
+}  // namespace
+
+ParamDomain& ParamDomain::atLeast(double v) { return setEnd(*this, min, minExclusive, v, false); }
+ParamDomain& ParamDomain::above(double v) { return setEnd(*this, min, minExclusive, v, true); }
+ParamDomain& ParamDomain::atMost(double v) { return setEnd(*this, max, maxExclusive, v, false); }
+ParamDomain& ParamDomain::below(double v) { return setEnd(*this, max, maxExclusive, v, true); }
+
+ParamDomain& ParamDomain::choices(std::vector<EnumLabel> l) {
+  labels = std::move(l);
+  return *this;
+}
+
+ParamDomain& ParamDomain::steps(double by, int shownDecimals) {
+  step = by;
+  decimals = shownDecimals;
+  return *this;
+}
+
+ParamDomain& ParamDomain::in(std::string u) {
+  unit = std::move(u);
+  return *this;
+}
+
+ParamDomain& ParamDomain::offer(std::optional<double> lo, std::optional<double> hi) {
+  uiMin = lo;
+  uiMax = hi;
+  return *this;
+}
+
 bool ParamDomain::contains(double v) const {
   if (min && (minExclusive ? v <= *min : v < *min)) return false;
   if (max && (maxExclusive ? v >= *max : v > *max)) return false;

@@ -57,8 +57,8 @@ namespace {
 using P = RenderParams;
 using S = const std::string&;
 
-const ParamDomain kSizeDomain = {.min = 1.0, .max = 16384.0};
-const ParamDomain kFractionDomain = {.min = 0.0, .max = 1.0, .step = 0.01, .decimals = 3};
+const ParamDomain kSizeDomain = ParamDomain().atLeast(1).atMost(16384);
+const ParamDomain kFractionDomain = ParamDomain().atLeast(0).atMost(1).steps(0.01, 3);
 
 void parseSize(RenderParams& p, const std::string& s) {
   auto x = s.find('x');
@@ -144,7 +144,7 @@ ParamSpec whole(std::string key, std::string hint, std::string help, ParamDomain
 template <class Field>
 ParamSpec choice(std::string key, std::string help, const std::vector<EnumLabel>& labels,
                  Field field) {
-  ParamSpec s{key, labelNames(labels, "|"), std::move(help), {.labels = labels}, {}, {}};
+  ParamSpec s{key, labelNames(labels, "|"), std::move(help), ParamDomain().choices(labels), {}, {}};
   s.parse = [key, labels, field](P& p, S text) {
     using Enum = std::remove_reference_t<decltype(field(p))>;
     field(p) = Enum(labelIndex(key, labels, text));
@@ -166,9 +166,9 @@ ParamSpec toggle(std::string key, std::string help, Field field) {
   [](auto& p) -> auto& { return p.path; }
 
 std::vector<ParamSpec> makeSpecs() {
-  const ParamDomain unit = {.min = 0.0, .max = 1.0, .step = 0.05};
-  const ParamDomain positive = {.min = 0.0, .minExclusive = true};
-  const ParamDomain notNegative = {.min = 0.0};
+  const ParamDomain unit = ParamDomain().atLeast(0).atMost(1).steps(0.05, 2);
+  const ParamDomain positive = ParamDomain().above(0);
+  const ParamDomain notNegative = ParamDomain().atLeast(0);
   const ParamDomain none;
   return {
       {"size", "WxH", "image size in pixels", kSizeDomain, [](P& p, S s) { parseSize(p, s); },
@@ -192,13 +192,11 @@ std::vector<ParamSpec> makeSpecs() {
        "per voxel) at each HU, linear between; a repeated HU makes a step",
        none, [](P& p, S s) { p.transferFunction = parseTransferFunction(s); },
        [](const P& p) { return formatTransferFunction(p.transferFunction); }},
-      number("preset-shift", "HU", "move the preset's transfer function along HU", {.unit = "HU"},
-             FIELD(presetShiftHu)),
+      number("preset-shift", "HU", "move the preset's transfer function along HU",
+             ParamDomain().in("HU"), FIELD(presetShiftHu)),
       // Any HU is accepted; a control offers the range of CT values.
-      {"iso",
-       "LO[,HI]",
-       "HU range of the first-hit surface",
-       {.step = 10.0, .decimals = 0, .unit = "HU", .uiMin = -3000.0, .uiMax = 32767.0},
+      {"iso", "LO[,HI]", "HU range of the first-hit surface",
+       ParamDomain().steps(10, 0).in("HU").offer(-3000, 32767),
        [](P& p, S s) {
          auto v = toDoubles("iso", s, 1, 2);
          p.isoLo = v[0];
@@ -209,19 +207,16 @@ std::vector<ParamSpec> makeSpecs() {
       choice("gradient", "gradient operator for normals", gradientLabels(), FIELD(gradient)),
       choice("interp", "sample reconstruction", interpLabels(), FIELD(interp)),
       number("step", "MM", "sampling distance along the ray in mm (0 = half the smallest spacing)",
-             {.min = 0.0, .unit = "mm"}, FIELD(stepMm)),
+             ParamDomain().atLeast(0).in("mm"), FIELD(stepMm)),
       whole("refine", "N", "bisection steps refining an iso hit (0 ... 16)",
-            {.min = 0.0, .max = 16.0, .decimals = 0}, FIELD(refine)),
+            ParamDomain().atLeast(0).atMost(16).steps(1, 0), FIELD(refine)),
       toggle("shading", "Blinn-Phong lighting from the gradient", FIELD(shading)),
       toggle("opacity-correction", "scale dvr opacity to the step size", FIELD(opacityCorrection)),
       toggle("jitter", "per-pixel offset of the first sample (removes wood-grain banding)",
              FIELD(jitter)),
       number("early-termination", "A", "dvr stops a ray at this opacity (1 = never)", unit,
              FIELD(earlyTermination)),
-      {"window",
-       "W,L",
-       "mip grey window width and level in HU",
-       {.unit = "HU"},
+      {"window", "W,L", "mip grey window width and level in HU", ParamDomain().in("HU"),
        [](P& p, S s) {
          auto v = toDoubles("window", s, 2, 2);
          if (v[0] < 0.0)
@@ -245,8 +240,7 @@ std::vector<ParamSpec> makeSpecs() {
        [](const P& p) { return fmt(p.camera.panMm.x) + "," + fmt(p.camera.panMm.y); }},
       choice("projection", "camera projection", projectionLabels(), FIELD(camera.projection)),
       number("fov", "DEG", "perspective field of view (vertical)",
-             {.min = 0.0, .max = 170.0, .minExclusive = true, .maxExclusive = true},
-             FIELD(camera.fovDeg)),
+             ParamDomain().above(0).below(170), FIELD(camera.fovDeg)),
       {"clip", "X0,X1,Y0,Y1,Z0,Z1", "clip box in fractions of the volume (0 ... 1)",
        kFractionDomain, [](P& p, S s) { parseClip(p, s); },
        [](const P& p) {
@@ -256,10 +250,8 @@ std::vector<ParamSpec> makeSpecs() {
          return out;
        }},
       // Any position is accepted; a control offers a few metres either way.
-      {"light",
-       "X,Y,Z",
-       "point light in mm, patient LPS from the volume centre (fixes the light)",
-       {.step = 0.1, .uiMin = -5000.0, .uiMax = 5000.0},
+      {"light", "X,Y,Z", "point light in mm, patient LPS from the volume centre (fixes the light)",
+       ParamDomain().steps(0.1, 2).offer(-5000, 5000),
        [](P& p, S s) {
          p.light.position = toVec3("light", s);
          p.light.followCamera = false;
@@ -272,8 +264,8 @@ std::vector<ParamSpec> makeSpecs() {
       number("specular", "K", "specular light 0 ... 1", unit, FIELD(light.specular)),
       // Any positive exponent is accepted; a control stops at 1024, far past the narrowest
       // highlight a CT surface shows.
-      number("shininess", "N", "specular exponent",
-             {.min = 0.0, .minExclusive = true, .uiMax = 1024.0}, FIELD(light.shininess)),
+      number("shininess", "N", "specular exponent", ParamDomain().above(0).offer({}, 1024),
+             FIELD(light.shininess)),
       {"surface-color", "R,G,B", "iso surface colour 0 ... 1", none,
        [](P& p, S s) { p.surfaceColor = glm::clamp(toVec3("surface-color", s), 0.0, 1.0); },
        [](const P& p) { return fmt(p.surfaceColor); }},

@@ -123,8 +123,8 @@ TEST(ParamDomain, EverySingleNumberSpecChecksItsDomain) {
 TEST(ParamDomain, UiEndsLieInsideTheDomain) {
   for (const ParamSpec& spec : renderParamSpecs()) {
     const ParamDomain& d = spec.domain;
-    if (d.uiMin) EXPECT_TRUE(d.contains(*d.uiMin)) << spec.key;
-    if (d.uiMax) EXPECT_TRUE(d.contains(*d.uiMax)) << spec.key;
+    EXPECT_TRUE(!d.uiMin || d.contains(*d.uiMin)) << spec.key;
+    EXPECT_TRUE(!d.uiMax || d.contains(*d.uiMax)) << spec.key;
   }
   EXPECT_DOUBLE_EQ(*findRenderParamSpec("shininess").domain.uiMax, 1024.0);
 }

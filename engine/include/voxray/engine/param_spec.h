@@ -30,6 +30,16 @@ struct ParamDomain {
   // The ends a control offers where the range is open (a spin box needs ends): inside it.
   std::optional<double> uiMin, uiMax;
 
+  // Chained settings for declarations, e.g. ParamDomain().above(0).offer({}, 1024).
+  ParamDomain& choices(std::vector<EnumLabel> l);
+  ParamDomain& atLeast(double v);
+  ParamDomain& above(double v);  // exclusive
+  ParamDomain& atMost(double v);
+  ParamDomain& below(double v);  // exclusive
+  ParamDomain& steps(double by, int shownDecimals);
+  ParamDomain& in(std::string u);
+  ParamDomain& offer(std::optional<double> lo, std::optional<double> hi);  // uiMin, uiMax
+
   bool contains(double v) const;
   // The range in words, e.g. "lie in 0 ... 1" or "be greater than 0" (after "must").
   std::string rangeText() const;
