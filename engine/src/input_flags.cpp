@@ -46,7 +46,8 @@ void parseRange(RawLayout& l, const std::string& s) {
 
 std::vector<InputFlagSpec> makeSpecs() {
   const ParamDomain dims = ParamDomain().atLeast(1).steps(1, 0);
-  const ParamDomain spacing = ParamDomain().above(0).steps(1, 3).in("mm");
+  // Any positive spacing is accepted; a control offers up to 10 cm.
+  const ParamDomain spacing = ParamDomain().above(0).steps(0.1, 3).in("mm").offer({}, 100);
   const ParamDomain offset = ParamDomain().atLeast(0).steps(1, 0).in("bytes");
   const std::vector<EnumLabel> types = sampleTypeLabels();
   return {

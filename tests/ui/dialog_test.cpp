@@ -3,6 +3,7 @@
 // a person to look at.
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -117,6 +118,10 @@ class DialogTest : public QObject {
         QCOMPARE(combo->itemText(i).toStdString(), labels[size_t(i)].title);
     }
     QCOMPARE(d.layout().type, RawLayout{}.type);
+    auto spacings = d.findChildren<QDoubleSpinBox*>("raw-spacing");
+    QCOMPARE(spacings.size(), 3);
+    QCOMPARE(spacings[0]->minimum(), 0.001);  // greater than 0, at the 3 decimals shown
+    QCOMPARE(spacings[0]->maximum(), *findInputFlagSpec("raw-spacing").domain.uiMax);
     RawLayout l;
     l.type = SampleType::F32;
     l.order = ByteOrder::Big;

@@ -81,9 +81,7 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
     dims_[a]->setRange(0, 4096);
     dims_[a]->setValue(a < 2 ? 256 : 0);
     dimsRow->addWidget(dims_[a]);
-    spacing_[a] = new QDoubleSpinBox;
-    spacing_[a]->setRange(0.001, 100);
-    spacing_[a]->setDecimals(3);
+    spacing_[a] = makeSpin(findInputFlagSpec("raw-spacing"));  // greater than 0, in mm
     spacing_[a]->setValue(1.0);
     spacingRow->addWidget(spacing_[a]);
   }
@@ -101,7 +99,7 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
   header_->setRange(0, 1 << 30);
   header_->setSuffix(" bytes");
   form->addRow("Header offset", header_);
-  form->addRow("Spacing x, y, z (mm)", spacingRow);
+  form->addRow("Spacing x, y, z", spacingRow);
   slope_ = new QDoubleSpinBox;
   slope_->setRange(-1e6, 1e6);
   slope_->setDecimals(4);
