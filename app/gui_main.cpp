@@ -10,36 +10,10 @@
 #include "main_window.h"
 #include "qt_image.h"
 #include "start_options.h"
-#include "voxray/engine/transfer_function.h"
 #include "voxray/io/error.h"
 
 using namespace voxray;
 using namespace voxray::ui;
-
-namespace {
-
-// Render values from the command line, a preset first so that explicit flags win over it
-// (the same order as voxray-cli render).
-void applyRenderValues(RenderStateModel& m, const std::map<std::string, std::string>& values) {
-  if (auto it = values.find("preset"); it != values.end()) m.applyPreset(it->second);
-  m.update(kAll, [&](RenderParams& p) {
-    for (const auto& spec : renderParamSpecs())
-      if (auto it = values.find(spec.key); it != values.end() && spec.key != "size")
-        spec.parse(p, it->second);
-  });
-  // Explicit step, refinement or jitter flags win over the quality preset's.
-  for (const char* key : {"step", "refine", "jitter"})
-    if (values.count(key)) m.setQualityPreset("");
-  if (auto it = values.find("size"); it != values.end()) {
-    RenderParams sized;
-    renderParamSpecs().front().parse(sized, it->second);
-    Quality q = m.quality();
-    q.resolution = {sized.width, sized.height};
-    m.setQuality(q);
-  }
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
@@ -59,7 +33,7 @@ int main(int argc, char** argv) {
   auto window = std::make_unique<MainWindow>(*models, QString::fromStdString(options.device));
   if (!options.resetSettings && options.screenshot.empty()) window->restoreSettings();
   try {
-    applyRenderValues(models->render, options.renderValues);
+    models->render.applyValues(options.renderValues);
   } catch (const std::exception& e) {
     std::cerr << "voxray: " << e.what() << "\n";
     return 2;

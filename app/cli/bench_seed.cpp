@@ -9,12 +9,8 @@ std::vector<SeedDataset> seedDatasets(const std::string& dataDir) {
   SeedDataset& head = out[0];
   head.name = "Head";
   head.input.input = dataDir + "/stanford/CThead";
-  head.input.rawDims = "256,256";
-  head.input.rawType = "i16";
-  head.input.rawEndian = "big";
-  head.input.rawSpacing = "1,1,2";
-  head.input.rawRescale = "1,-1024";
-  head.input.rawAxes = "LPI";
+  head.input.flags = {{"raw-dims", "256,256"},  {"raw-type", "i16"},        {"raw-endian", "big"},
+                      {"raw-spacing", "1,1,2"}, {"raw-rescale", "1,-1024"}, {"raw-axes", "LPI"}};
   head.isoHu = 400;  // bone
   head.seedCentral[0] = 27.02, head.seedCentral[1] = 24.39;
   head.seedCentral[2] = 20.40, head.seedCentral[3] = 14.08;
@@ -24,11 +20,11 @@ std::vector<SeedDataset> seedDatasets(const std::string& dataDir) {
   SeedDataset& brain = out[1];
   brain.name = "Brain";
   brain.input.input = dataDir + "/stanford/MRbrain";
-  brain.input.rawDims = "256,256";
-  brain.input.rawType = "u16";
-  brain.input.rawEndian = "big";
-  brain.input.rawSpacing = "1,1,1.5";
-  brain.input.rawAxes = "PIL";
+  brain.input.flags = {{"raw-dims", "256,256"},
+                       {"raw-type", "u16"},
+                       {"raw-endian", "big"},
+                       {"raw-spacing", "1,1,1.5"},
+                       {"raw-axes", "PIL"}};
   brain.isoHu = 1600;  // scanner units: skin and brain surface above the background (~1028)
   brain.seedCentral[0] = 30.30, brain.seedCentral[1] = 27.02;
   brain.seedCentral[2] = 23.25, brain.seedCentral[3] = 16.39;
@@ -39,10 +35,10 @@ std::vector<SeedDataset> seedDatasets(const std::string& dataDir) {
   SeedDataset& stent = out[2];
   stent.name = "Stent";
   stent.input.input = dataDir + "/raw/stent/stent_128x128x256_u8.raw";
-  stent.input.rawDims = "128,128,256";
-  stent.input.rawType = "u8";
-  stent.input.rawSpacing = "1,1,1";
-  stent.input.rawRescale = "62.5,0";
+  stent.input.flags = {{"raw-dims", "128,128,256"},
+                       {"raw-type", "u8"},
+                       {"raw-spacing", "1,1,1"},
+                       {"raw-rescale", "62.5,0"}};
   stent.isoHu = 1000;  // the stent and contrast-filled vessels
   stent.seedCentral[0] = 15.87, stent.seedCentral[1] = 12.56;
   stent.seedCentral[2] = 9.90, stent.seedCentral[3] = 7.46;

@@ -19,7 +19,7 @@ Run addInfoCommand(CLI::App& app) {
   return [in, json] {
     std::optional<DicomListing> listing;
 #ifdef VOXRAY_HAS_DICOM  // lean builds (VOXRAY_WITH_DICOM=OFF) read raw data only
-    if (!in->input.empty() && in->rawDims.empty()) {
+    if (!in->input.empty() && !in->flags.count("raw-dims")) {
       try {
         listing = listDicomSeries(in->input);
       } catch (const Error&) {

@@ -1,5 +1,7 @@
 #pragma once
-// INPUT and the raw-layout flags shared by info, render and bench.
+// INPUT and its flags (the raw layout and the DICOM series, declared in input_flags.h) shared
+// by info, render and bench.
+#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -9,17 +11,14 @@
 namespace voxray::cli {
 
 struct InputOptions {
-  std::string input;  // empty: the embedded head phantom
-  std::string rawDims, rawType = "i16", rawEndian = "little", rawSpacing, rawRescale, rawRange,
-                       rawAxes;
-  size_t rawOffset = 0;
-  std::string series;
-  int phantomSize = 256;  // voxels per axis of the head phantom (no INPUT)
+  std::string input;                         // empty: the embedded head phantom
+  std::map<std::string, std::string> flags;  // --KEY VALUE of inputFlagSpecs() the user gave
+  int phantomSize = 256;                     // voxels per axis of the head phantom (no INPUT)
 
   void add(CLI::App& cmd);
   // Loads the volume, showing progress on stderr when it is a terminal.
   Volume load() const;
-  LoadOptions loadOptions() const;
+  LoadOptions loadOptions() const;  // throws Error (Input) for a bad flag
 };
 
 }  // namespace voxray::cli

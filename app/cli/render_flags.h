@@ -14,7 +14,7 @@ namespace voxray::cli {
 struct RenderFlags {
   std::map<std::string, std::string> given;  // --KEY VALUE the user wrote
   void add(CLI::App& cmd, const std::vector<std::string>& skip = {});
-  // A preset brings its mode, iso range and window; flags the user gave win over it.
+  // applyRenderValues: a preset brings its mode, iso range and window; flags given win.
   RenderParams params() const;
 };
 

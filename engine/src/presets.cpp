@@ -58,6 +58,7 @@ const std::vector<Preset>& builtinPresets() {
 void applyPreset(RenderParams& p, const Preset& preset) {
   p.preset = preset.name;
   p.transferFunction.clear();  // the preset's table, not an earlier custom one
+  p.presetShiftHu = 0.0;       // a shift tuned for one preset means nothing for another
   p.mode = parseMode(preset.mode);
   if (preset.isoHi > preset.isoLo) {
     p.isoLo = preset.isoLo;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 #include "text_parse.h"
 #include "voxray/io/error.h"
@@ -10,56 +11,61 @@
 namespace voxray {
 using namespace text;
 
-const char* toString(Mode m) {
-  switch (m) {
-    case Mode::Iso:
-      return "iso";
-    case Mode::Dvr:
-      return "dvr";
-    case Mode::Mip:
-      return "mip";
-  }
-  return "?";
-}
-const char* toString(Gradient g) {
-  switch (g) {
-    case Gradient::Central:
-      return "central";
-    case Gradient::Sobel:
-      return "sobel";
-    case Gradient::ZuckerHummel:
-      return "zucker-hummel";
-  }
-  return "?";
-}
-const char* toString(Interp i) { return i == Interp::Nearest ? "nearest" : "linear"; }
+namespace {
 
-Mode parseMode(const std::string& s) {
-  if (s == "iso") return Mode::Iso;
-  if (s == "dvr") return Mode::Dvr;
-  if (s == "mip") return Mode::Mip;
-  throw inputError("--mode: '" + s + "' is not one of iso, dvr, mip");
+// The enumerations' one table each: names (what parses and formats), titles (what a control
+// shows) and other accepted spellings, in the enum's order.
+const std::vector<EnumLabel>& modeLabels() {
+  static const std::vector<EnumLabel> l = {
+      {"iso", "Iso surface", {}}, {"dvr", "Volume (DVR)", {}}, {"mip", "MIP", {}}};
+  return l;
 }
+const std::vector<EnumLabel>& gradientLabels() {
+  static const std::vector<EnumLabel> l = {{"central", "Central difference", {}},
+                                           {"sobel", "Sobel", {}},
+                                           {"zucker-hummel", "Zucker-Hummel", {"zh"}}};
+  return l;
+}
+const std::vector<EnumLabel>& interpLabels() {
+  static const std::vector<EnumLabel> l = {{"nearest", "Nearest", {}},
+                                           {"linear", "Trilinear", {"trilinear"}}};
+  return l;
+}
+const std::vector<EnumLabel>& projectionLabels() {
+  static const std::vector<EnumLabel> l = {{"perspective", "Perspective", {}},
+                                           {"orthographic", "Orthographic", {"ortho"}}};
+  return l;
+}
+
+const char* name(const std::vector<EnumLabel>& labels, int value) {
+  return value >= 0 && size_t(value) < labels.size() ? labels[size_t(value)].name.c_str() : "?";
+}
+
+}  // namespace
+
+const char* toString(Mode m) { return name(modeLabels(), int(m)); }
+const char* toString(Gradient g) { return name(gradientLabels(), int(g)); }
+const char* toString(Interp i) { return name(interpLabels(), int(i)); }
+Mode parseMode(const std::string& s) { return Mode(labelIndex("mode", modeLabels(), s)); }
 Gradient parseGradient(const std::string& s) {
-  if (s == "central") return Gradient::Central;
-  if (s == "sobel") return Gradient::Sobel;
-  if (s == "zucker-hummel" || s == "zh") return Gradient::ZuckerHummel;
-  throw inputError("--gradient: '" + s + "' is not one of central, sobel, zucker-hummel");
+  return Gradient(labelIndex("gradient", gradientLabels(), s));
 }
-Interp parseInterp(const std::string& s) {
-  if (s == "nearest") return Interp::Nearest;
-  if (s == "linear" || s == "trilinear") return Interp::Linear;
-  throw inputError("--interp: '" + s + "' is not one of nearest, linear");
-}
+Interp parseInterp(const std::string& s) { return Interp(labelIndex("interp", interpLabels(), s)); }
 
 namespace {
+
+using P = RenderParams;
+using S = const std::string&;
+
+const ParamDomain kSizeDomain = ParamDomain().atLeast(1).atMost(16384);
+const ParamDomain kFractionDomain = ParamDomain().atLeast(0).atMost(1).steps(0.01, 3);
 
 void parseSize(RenderParams& p, const std::string& s) {
   auto x = s.find('x');
   if (x == std::string::npos)
     throw inputError("--size: expected WxH, e.g. 1024x768, got '" + s + "'");
   int w = toInt("size", s.substr(0, x)), h = toInt("size", s.substr(x + 1));
-  if (w < 1 || h < 1 || w > 16384 || h > 16384)
+  if (!kSizeDomain.contains(w) || !kSizeDomain.contains(h))
     throw inputError("--size: " + s + " is outside 1x1 ... 16384x16384");
   p.width = w;
   p.height = h;
@@ -67,9 +73,10 @@ void parseSize(RenderParams& p, const std::string& s) {
 
 void parseClip(RenderParams& p, const std::string& s) {
   auto v = toDoubles("clip", s, 6, 6);
+  for (double f : v) checkInDomain("clip", kFractionDomain, f, s);
   for (int a = 0; a < 3; ++a) {
     double lo = v[2 * a], hi = v[2 * a + 1];
-    if (lo < 0.0 || hi > 1.0 || lo > hi)
+    if (lo > hi)
       throw inputError(
           "--clip: each pair must satisfy 0 <= lo <= hi <= 1 (fractions of the "
           "volume), got '" +
@@ -112,28 +119,64 @@ std::string formatTransferFunction(const std::vector<ControlPoint>& points) {
   return out;
 }
 
-double positive(const std::string& key, const std::string& s) {
-  double v = toDouble(key, s);
-  if (v <= 0.0) throw inputError("--" + key + ": must be greater than 0, got '" + s + "'");
-  return v;
+// Builders for the common kinds. FIELD is a generic lambda giving the field of a
+// RenderParams, const or not, so that one accessor serves both parse and format.
+template <class Field>
+ParamSpec number(std::string key, std::string hint, std::string help, ParamDomain d, Field field) {
+  ParamSpec s{key, std::move(hint), std::move(help), d, {}, {}};
+  s.parse = [key, d, field](P& p, S text) {
+    field(p) = checkInDomain(key, d, toDouble(key, text), text);
+  };
+  s.format = [field](const P& p) { return fmt(field(p)); };
+  return s;
 }
 
-double unit(const std::string& key, const std::string& s) {
-  double v = toDouble(key, s);
-  if (v < 0.0 || v > 1.0) throw inputError("--" + key + ": must lie in 0 ... 1, got '" + s + "'");
-  return v;
+template <class Field>
+ParamSpec whole(std::string key, std::string hint, std::string help, ParamDomain d, Field field) {
+  ParamSpec s{key, std::move(hint), std::move(help), d, {}, {}};
+  s.parse = [key, d, field](P& p, S text) {
+    field(p) = int(checkInDomain(key, d, toInt(key, text), text));
+  };
+  s.format = [field](const P& p) { return std::to_string(field(p)); };
+  return s;
 }
+
+template <class Field>
+ParamSpec choice(std::string key, std::string help, const std::vector<EnumLabel>& labels,
+                 Field field) {
+  ParamSpec s{key, labelNames(labels, "|"), std::move(help), ParamDomain().choices(labels), {}, {}};
+  s.parse = [key, labels, field](P& p, S text) {
+    using Enum = std::remove_reference_t<decltype(field(p))>;
+    field(p) = Enum(labelIndex(key, labels, text));
+  };
+  s.format = [labels, field](const P& p) { return labels[size_t(field(p))].name; };
+  return s;
+}
+
+template <class Field>
+ParamSpec toggle(std::string key, std::string help, Field field) {
+  ParamSpec s{key, "on|off", std::move(help), {}, {}, {}};
+  s.parse = [key, field](P& p, S text) { field(p) = toBool(key, text); };
+  s.format = [field](const P& p) { return std::string(field(p) ? "on" : "off"); };
+  return s;
+}
+
+// The field of a RenderParams a spec reads and writes.
+#define FIELD(path) \
+  [](auto& p) -> auto& { return p.path; }
 
 std::vector<ParamSpec> makeSpecs() {
-  using P = RenderParams;
-  using S = const std::string&;
+  const ParamDomain unit = ParamDomain().atLeast(0).atMost(1).steps(0.05, 2);
+  const ParamDomain positive = ParamDomain().above(0);
+  const ParamDomain notNegative = ParamDomain().atLeast(0);
+  const ParamDomain none;
   return {
-      {"size", "WxH", "image size in pixels", [](P& p, S s) { parseSize(p, s); },
+      {"size", "WxH", "image size in pixels", kSizeDomain, [](P& p, S s) { parseSize(p, s); },
        [](const P& p) { return std::to_string(p.width) + "x" + std::to_string(p.height); }},
-      {"mode", "iso|dvr|mip", "first-hit surface, direct volume rendering, or maximum intensity",
-       [](P& p, S s) { p.mode = parseMode(s); },
-       [](const P& p) { return std::string(toString(p.mode)); }},
+      choice("mode", "first-hit surface, direct volume rendering, or maximum intensity",
+             modeLabels(), FIELD(mode)),
       {"preset", "NAME", "transfer-function preset from resources/presets (voxray-cli presets)",
+       none,
        [](P& p, S s) {
          // Saved state is one key=value per line: a name with a line break would not read
          // back (found by the render-parameter fuzzer).
@@ -147,12 +190,13 @@ std::vector<ParamSpec> makeSpecs() {
       {"tf", "HU:R:G:B:A,...",
        "custom transfer function instead of the preset's: colour and opacity (0 ... 1, opacity "
        "per voxel) at each HU, linear between; a repeated HU makes a step",
-       [](P& p, S s) { p.transferFunction = parseTransferFunction(s); },
+       none, [](P& p, S s) { p.transferFunction = parseTransferFunction(s); },
        [](const P& p) { return formatTransferFunction(p.transferFunction); }},
-      {"preset-shift", "HU", "move the preset's transfer function along HU",
-       [](P& p, S s) { p.presetShiftHu = toDouble("preset-shift", s); },
-       [](const P& p) { return fmt(p.presetShiftHu); }},
+      number("preset-shift", "HU", "move the preset's transfer function along HU",
+             ParamDomain().in("HU"), FIELD(presetShiftHu)),
+      // Any HU is accepted; a control offers the range of CT values.
       {"iso", "LO[,HI]", "HU range of the first-hit surface",
+       ParamDomain().steps(10, 0).in("HU").offer(-3000, 32767),
        [](P& p, S s) {
          auto v = toDoubles("iso", s, 1, 2);
          p.isoLo = v[0];
@@ -160,37 +204,19 @@ std::vector<ParamSpec> makeSpecs() {
          if (p.isoHi < p.isoLo) throw inputError("--iso: HI must not be below LO, got '" + s + "'");
        },
        [](const P& p) { return fmt(p.isoLo) + "," + fmt(p.isoHi); }},
-      {"gradient", "central|sobel|zucker-hummel", "gradient operator for normals",
-       [](P& p, S s) { p.gradient = parseGradient(s); },
-       [](const P& p) { return std::string(toString(p.gradient)); }},
-      {"interp", "nearest|linear", "sample reconstruction",
-       [](P& p, S s) { p.interp = parseInterp(s); },
-       [](const P& p) { return std::string(toString(p.interp)); }},
-      {"step", "MM", "sampling distance along the ray in mm (0 = half the smallest spacing)",
-       [](P& p, S s) {
-         p.stepMm = toDouble("step", s);
-         if (p.stepMm < 0.0) throw inputError("--step: must not be negative, got '" + s + "'");
-       },
-       [](const P& p) { return fmt(p.stepMm); }},
-      {"refine", "N", "bisection steps refining an iso hit (0 ... 16)",
-       [](P& p, S s) {
-         p.refine = toInt("refine", s);
-         if (p.refine < 0 || p.refine > 16) throw inputError("--refine: must lie in 0 ... 16");
-       },
-       [](const P& p) { return std::to_string(p.refine); }},
-      {"shading", "on|off", "Blinn-Phong lighting from the gradient",
-       [](P& p, S s) { p.shading = toBool("shading", s); },
-       [](const P& p) { return std::string(p.shading ? "on" : "off"); }},
-      {"opacity-correction", "on|off", "scale dvr opacity to the step size",
-       [](P& p, S s) { p.opacityCorrection = toBool("opacity-correction", s); },
-       [](const P& p) { return std::string(p.opacityCorrection ? "on" : "off"); }},
-      {"jitter", "on|off", "per-pixel offset of the first sample (removes wood-grain banding)",
-       [](P& p, S s) { p.jitter = toBool("jitter", s); },
-       [](const P& p) { return std::string(p.jitter ? "on" : "off"); }},
-      {"early-termination", "A", "dvr stops a ray at this opacity (1 = never)",
-       [](P& p, S s) { p.earlyTermination = unit("early-termination", s); },
-       [](const P& p) { return fmt(p.earlyTermination); }},
-      {"window", "W,L", "mip grey window width and level in HU",
+      choice("gradient", "gradient operator for normals", gradientLabels(), FIELD(gradient)),
+      choice("interp", "sample reconstruction", interpLabels(), FIELD(interp)),
+      number("step", "MM", "sampling distance along the ray in mm (0 = half the smallest spacing)",
+             ParamDomain().atLeast(0).in("mm"), FIELD(stepMm)),
+      whole("refine", "N", "bisection steps refining an iso hit (0 ... 16)",
+            ParamDomain().atLeast(0).atMost(16).steps(1, 0), FIELD(refine)),
+      toggle("shading", "Blinn-Phong lighting from the gradient", FIELD(shading)),
+      toggle("opacity-correction", "scale dvr opacity to the step size", FIELD(opacityCorrection)),
+      toggle("jitter", "per-pixel offset of the first sample (removes wood-grain banding)",
+             FIELD(jitter)),
+      number("early-termination", "A", "dvr stops a ray at this opacity (1 = never)", unit,
+             FIELD(earlyTermination)),
+      {"window", "W,L", "mip grey window width and level in HU", ParamDomain().in("HU"),
        [](P& p, S s) {
          auto v = toDoubles("window", s, 2, 2);
          if (v[0] < 0.0)
@@ -199,84 +225,56 @@ std::vector<ParamSpec> makeSpecs() {
          p.windowLevel = v[1];
        },
        [](const P& p) { return fmt(p.windowWidth) + "," + fmt(p.windowLevel); }},
-      {"azimuth", "DEG", "orbit around the patient's long axis (0 = anterior, 90 = left)",
-       [](P& p, S s) { p.camera.azimuthDeg = toDouble("azimuth", s); },
-       [](const P& p) { return fmt(p.camera.azimuthDeg); }},
-      {"elevation", "DEG", "orbit up towards superior (90 = from above)",
-       [](P& p, S s) { p.camera.elevationDeg = toDouble("elevation", s); },
-       [](const P& p) { return fmt(p.camera.elevationDeg); }},
-      {"zoom", "F", "magnification (1 = whole volume in view)",
-       [](P& p, S s) { p.camera.zoom = positive("zoom", s); },
-       [](const P& p) { return fmt(p.camera.zoom); }},
-      {"distance", "MM", "eye to volume centre (0 = automatic)",
-       [](P& p, S s) {
-         p.camera.distanceMm = toDouble("distance", s);
-         if (p.camera.distanceMm < 0.0) throw inputError("--distance: must not be negative");
-       },
-       [](const P& p) { return fmt(p.camera.distanceMm); }},
-      {"pan", "X,Y", "move the view in mm (right, up)",
+      number("azimuth", "DEG", "orbit around the patient's long axis (0 = anterior, 90 = left)",
+             none, FIELD(camera.azimuthDeg)),
+      number("elevation", "DEG", "orbit up towards superior (90 = from above)", none,
+             FIELD(camera.elevationDeg)),
+      number("zoom", "F", "magnification (1 = whole volume in view)", positive, FIELD(camera.zoom)),
+      number("distance", "MM", "eye to volume centre (0 = automatic)", notNegative,
+             FIELD(camera.distanceMm)),
+      {"pan", "X,Y", "move the view in mm (right, up)", none,
        [](P& p, S s) {
          auto v = toDoubles("pan", s, 2, 2);
          p.camera.panMm = {v[0], v[1]};
        },
        [](const P& p) { return fmt(p.camera.panMm.x) + "," + fmt(p.camera.panMm.y); }},
-      {"projection", "perspective|orthographic", "camera projection",
-       [](P& p, S s) {
-         if (s == "perspective")
-           p.camera.projection = Projection::Perspective;
-         else if (s == "orthographic" || s == "ortho")
-           p.camera.projection = Projection::Orthographic;
-         else
-           throw inputError("--projection: '" + s + "' is not perspective or orthographic");
-       },
-       [](const P& p) {
-         return std::string(p.camera.projection == Projection::Perspective ? "perspective"
-                                                                           : "orthographic");
-       }},
-      {"fov", "DEG", "perspective field of view (vertical)",
-       [](P& p, S s) {
-         p.camera.fovDeg = toDouble("fov", s);
-         if (p.camera.fovDeg <= 0.0 || p.camera.fovDeg >= 170.0)
-           throw inputError("--fov: must lie between 0 and 170 degrees");
-       },
-       [](const P& p) { return fmt(p.camera.fovDeg); }},
+      choice("projection", "camera projection", projectionLabels(), FIELD(camera.projection)),
+      number("fov", "DEG", "perspective field of view (vertical)",
+             ParamDomain().above(0).below(170), FIELD(camera.fovDeg)),
       {"clip", "X0,X1,Y0,Y1,Z0,Z1", "clip box in fractions of the volume (0 ... 1)",
-       [](P& p, S s) { parseClip(p, s); },
+       kFractionDomain, [](P& p, S s) { parseClip(p, s); },
        [](const P& p) {
          std::string out;
          for (int a = 0; a < 3; ++a)
            out += (a ? "," : "") + fmt(p.clip.lo[a]) + "," + fmt(p.clip.hi[a]);
          return out;
        }},
+      // Any position is accepted; a control offers a few metres either way.
       {"light", "X,Y,Z", "point light in mm, patient LPS from the volume centre (fixes the light)",
+       ParamDomain().steps(0.1, 2).offer(-5000, 5000),
        [](P& p, S s) {
          p.light.position = toVec3("light", s);
          p.light.followCamera = false;
        },
        [](const P& p) { return fmt(p.light.position); }},
-      {"light-follows-camera", "on|off", "light position is relative to the eye",
-       [](P& p, S s) { p.light.followCamera = toBool("light-follows-camera", s); },
-       [](const P& p) { return std::string(p.light.followCamera ? "on" : "off"); }},
-      {"ambient", "K", "ambient light 0 ... 1",
-       [](P& p, S s) { p.light.ambient = unit("ambient", s); },
-       [](const P& p) { return fmt(p.light.ambient); }},
-      {"diffuse", "K", "diffuse light 0 ... 1",
-       [](P& p, S s) { p.light.diffuse = unit("diffuse", s); },
-       [](const P& p) { return fmt(p.light.diffuse); }},
-      {"specular", "K", "specular light 0 ... 1",
-       [](P& p, S s) { p.light.specular = unit("specular", s); },
-       [](const P& p) { return fmt(p.light.specular); }},
-      {"shininess", "N", "specular exponent",
-       [](P& p, S s) { p.light.shininess = positive("shininess", s); },
-       [](const P& p) { return fmt(p.light.shininess); }},
-      {"surface-color", "R,G,B", "iso surface colour 0 ... 1",
+      toggle("light-follows-camera", "light position is relative to the eye",
+             FIELD(light.followCamera)),
+      number("ambient", "K", "ambient light 0 ... 1", unit, FIELD(light.ambient)),
+      number("diffuse", "K", "diffuse light 0 ... 1", unit, FIELD(light.diffuse)),
+      number("specular", "K", "specular light 0 ... 1", unit, FIELD(light.specular)),
+      // Any positive exponent is accepted; a control stops at 1024, far past the narrowest
+      // highlight a CT surface shows.
+      number("shininess", "N", "specular exponent", ParamDomain().above(0).offer({}, 1024),
+             FIELD(light.shininess)),
+      {"surface-color", "R,G,B", "iso surface colour 0 ... 1", none,
        [](P& p, S s) { p.surfaceColor = glm::clamp(toVec3("surface-color", s), 0.0, 1.0); },
        [](const P& p) { return fmt(p.surfaceColor); }},
-      {"background", "R,G,B", "background colour 0 ... 1",
+      {"background", "R,G,B", "background colour 0 ... 1", none,
        [](P& p, S s) { p.background = glm::clamp(toVec3("background", s), 0.0, 1.0); },
        [](const P& p) { return fmt(p.background); }},
   };
 }
+#undef FIELD
 
 }  // namespace
 
@@ -291,21 +289,31 @@ std::string toText(const RenderParams& p) {
   return out;
 }
 
+const ParamSpec& findRenderParamSpec(const std::string& key) {
+  const auto& specs = renderParamSpecs();
+  auto it =
+      std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.key == key; });
+  if (it == specs.end()) throw inputError("render parameters: unknown key '" + key + "'");
+  return *it;
+}
+
 void fromText(RenderParams& p, const std::string& text) {
   std::istringstream in(text);
   std::string line;
-  const auto& specs = renderParamSpecs();
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     auto eq = line.find('=');
     if (eq == std::string::npos)
       throw inputError("render parameters: line '" + line + "' has no '='");
-    std::string key = line.substr(0, eq), value = line.substr(eq + 1);
-    auto it =
-        std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.key == key; });
-    if (it == specs.end()) throw inputError("render parameters: unknown key '" + key + "'");
-    it->parse(p, value);
+    findRenderParamSpec(line.substr(0, eq)).parse(p, line.substr(eq + 1));
   }
+}
+
+void applyRenderValues(RenderParams& p, const std::map<std::string, std::string>& values) {
+  for (const auto& kv : values) findRenderParamSpec(kv.first);  // refuses unknown keys
+  if (auto it = values.find("preset"); it != values.end()) applyPreset(p, findPreset(it->second));
+  for (const auto& spec : renderParamSpecs())
+    if (auto it = values.find(spec.key); it != values.end()) spec.parse(p, it->second);
 }
 
 double effectiveStepMm(const RenderParams& p, double minSpacingMm) {

@@ -32,12 +32,16 @@ bool toBool(const std::string& key, const std::string& s) {
   throw inputError("--" + key + ": '" + s + "' is not on/off");
 }
 
-std::vector<double> toDoubles(const std::string& key, const std::string& s, size_t minCount,
-                              size_t maxCount) {
-  std::vector<double> out;
+namespace {
+
+// The comma-separated items of S, MIN_COUNT to MAX_COUNT of them, each read by READ.
+template <class T, class Read>
+std::vector<T> toList(const std::string& key, const std::string& s, size_t minCount,
+                      size_t maxCount, Read read) {
+  std::vector<T> out;
   std::stringstream ss(s);
   std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(toDouble(key, item));
+  while (std::getline(ss, item, ',')) out.push_back(read(key, item));
   if (out.size() < minCount || out.size() > maxCount) {
     std::string want = minCount == maxCount
                            ? std::to_string(minCount)
@@ -46,6 +50,18 @@ std::vector<double> toDoubles(const std::string& key, const std::string& s, size
                      "'");
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<double> toDoubles(const std::string& key, const std::string& s, size_t minCount,
+                              size_t maxCount) {
+  return toList<double>(key, s, minCount, maxCount, toDouble);
+}
+
+std::vector<int> toInts(const std::string& key, const std::string& s, size_t minCount,
+                        size_t maxCount) {
+  return toList<int>(key, s, minCount, maxCount, toInt);
 }
 
 glm::dvec3 toVec3(const std::string& key, const std::string& s) {

@@ -13,6 +13,8 @@ int toInt(const std::string& key, const std::string& s);
 bool toBool(const std::string& key, const std::string& s);
 std::vector<double> toDoubles(const std::string& key, const std::string& s, size_t minCount,
                               size_t maxCount);
+std::vector<int> toInts(const std::string& key, const std::string& s, size_t minCount,
+                        size_t maxCount);
 glm::dvec3 toVec3(const std::string& key, const std::string& s);
 std::string fmt(double v);
 std::string fmt(const glm::dvec3& v);

@@ -3,6 +3,7 @@
 // a person to look at.
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -16,6 +17,7 @@
 #include "raw_import_dialog.h"
 #include "series_picker.h"
 #include "settings_store.h"
+#include "voxray/engine/input_flags.h"
 #include "voxray/io/orientation.h"
 
 using namespace voxray;
@@ -101,6 +103,32 @@ class DialogTest : public QObject {
     QCOMPARE(d.findChild<QComboBox*>("axes")->currentText(), QString("LPI"));
     QCOMPARE(d.layout().order, ByteOrder::Big);
     QCOMPARE(d.layout().spacingMm.z, 2.0);
+  }
+
+  void rawDialogChoicesComeFromFlagSpecs() {
+    RawImportDialog d(nullptr, kData);
+    const std::pair<const char*, const char*> combos[] = {{"sampleType", "raw-type"},
+                                                          {"byteOrder", "raw-endian"}};
+    for (auto [name, key] : combos) {
+      auto* combo = d.findChild<QComboBox*>(name);
+      QVERIFY2(combo, name);
+      const auto& labels = findInputFlagSpec(key).domain.labels;
+      QCOMPARE(combo->count(), int(labels.size()));
+      for (int i = 0; i < combo->count(); ++i)
+        QCOMPARE(combo->itemText(i).toStdString(), labels[size_t(i)].title);
+    }
+    QCOMPARE(d.layout().type, RawLayout{}.type);
+    auto spacings = d.findChildren<QDoubleSpinBox*>("raw-spacing");
+    QCOMPARE(spacings.size(), 3);
+    QCOMPARE(spacings[0]->minimum(), 0.001);  // greater than 0, at the 3 decimals shown
+    QCOMPARE(spacings[0]->maximum(), *findInputFlagSpec("raw-spacing").domain.uiMax);
+    RawLayout l;
+    l.type = SampleType::F32;
+    l.order = ByteOrder::Big;
+    d.setLayout(l);
+    QCOMPARE(d.findChild<QComboBox*>("sampleType")->currentText(), QString("f32"));
+    QCOMPARE(d.layout().type, SampleType::F32);
+    QCOMPARE(d.layout().order, ByteOrder::Big);
   }
 
   void settingsRoundTrip() {

@@ -180,3 +180,24 @@ TEST(RecentFiles, MostRecentFirstWithoutDuplicates) {
   EXPECT_EQ(l.front(), "f5");
   EXPECT_EQ(std::count(l.begin(), l.end(), "f5"), 1);
 }
+
+TEST(RenderState, CommandLineValuesKeepTheWorkstationsRules) {
+  RenderStateModel m;
+  m.setPresetShift(300.0);  // from saved state, tuned for another preset
+  int notified = 0;
+  m.changed.connect([&](unsigned what) { notified += what == kAll; });
+  m.applyValues({{"preset", "CT-Bone"}, {"size", "320x240"}, {"azimuth", "40"}});
+  EXPECT_EQ(notified, 1);
+  EXPECT_EQ(m.params().mode, Mode::Dvr);     // CT-Bone's mode
+  EXPECT_EQ(m.params().presetShiftHu, 0.0);  // dropped with the old preset
+  EXPECT_EQ(m.params().camera.azimuthDeg, 40.0);
+  EXPECT_EQ(m.quality().resolution, glm::ivec2(320, 240));  // --size is the resolution choice
+  EXPECT_EQ(m.params().width, RenderParams{}.width);
+  EXPECT_EQ(m.quality().preset, "balanced");  // no step, refine or jitter given
+  m.applyValues({{"refine", "8"}});
+  EXPECT_EQ(m.quality().preset, "");  // an explicit refinement wins over the preset's
+  EXPECT_EQ(m.params().refine, 8);
+  // A bad value leaves the state as it was.
+  EXPECT_THROW(m.applyValues({{"azimuth", "10"}, {"zoom", "-1"}}), Error);
+  EXPECT_EQ(m.params().camera.azimuthDeg, 40.0);
+}

@@ -230,6 +230,47 @@ class WidgetTest : public QObject {
     }
   }
 
+  void panelTakesChoicesAndRangesFromSpecs() {
+    // Each combo box lists its spec's labels in the enum's order, and picks by them.
+    for (const char* key : {"mode", "gradient", "interp"}) {
+      const ParamSpec& spec = findRenderParamSpec(key);
+      auto* combo = window_->findChild<QComboBox*>(key);
+      QVERIFY2(combo, key);
+      QCOMPARE(combo->count(), int(spec.domain.labels.size()));
+      for (int i = 0; i < combo->count(); ++i) {
+        QCOMPARE(combo->itemText(i).toStdString(), spec.domain.labels[size_t(i)].title);
+        QCOMPARE(combo->itemData(i).toString().toStdString(), spec.domain.labels[size_t(i)].name);
+      }
+    }
+    auto* gradient = window_->findChild<QComboBox*>("gradient");
+    models_->render.update(kAppearance, [](RenderParams& p) { p.gradient = Gradient::Sobel; });
+    QCOMPARE(gradient->currentText(), QString("Sobel"));
+    gradient->setCurrentIndex(2);
+    QCOMPARE(models_->render.params().gradient, Gradient::ZuckerHummel);
+
+    // Spin boxes take the spec's range; an open end takes the spec's uiMin/uiMax.
+    auto* ambient = window_->findChild<QDoubleSpinBox*>("ambient");
+    QVERIFY(ambient);
+    QCOMPARE(ambient->minimum(), 0.0);
+    QCOMPARE(ambient->maximum(), 1.0);
+    auto* isoLo = window_->findChild<QDoubleSpinBox*>("isoLo");
+    const ParamDomain& iso = findRenderParamSpec("iso").domain;
+    QCOMPARE(isoLo->minimum(), *iso.uiMin);
+    QCOMPARE(isoLo->maximum(), *iso.uiMax);
+    QCOMPARE(isoLo->suffix(), QString(" HU"));
+    // Shininess: greater than 0 and up to the spec's uiMax, past the old cap of 256.
+    auto* shininess = window_->findChild<QDoubleSpinBox*>("shininess");
+    QVERIFY(shininess);
+    QCOMPARE(shininess->maximum(), *findRenderParamSpec("shininess").domain.uiMax);
+    QCOMPARE(shininess->minimum(), 0.01);
+    shininess->setValue(600.0);
+    QCOMPARE(models_->render.params().light.shininess, 600.0);
+    // Clip fractions show as percent of the spec's 0 ... 1.
+    auto clips = window_->findChildren<QDoubleSpinBox*>("clip");
+    QCOMPARE(clips.size(), 6);
+    QCOMPARE(clips[0]->maximum(), 100.0);
+  }
+
   void titleShowsFpsAndDevice() {
     // A second frame, so that there is a rate to show.
     models_->render.update(kCamera, [](RenderParams& p) { p.camera.zoom = 1.2; });

@@ -40,10 +40,21 @@ void RenderStateModel::setQualityPreset(const std::string& name) {
 
 void RenderStateModel::applyPreset(const std::string& name) {
   const Preset& preset = findPreset(name);
-  update(kAppearance, [&](RenderParams& p) {
-    voxray::applyPreset(p, preset);
-    p.presetShiftHu = 0.0;
-  });
+  update(kAppearance, [&](RenderParams& p) { voxray::applyPreset(p, preset); });
+}
+
+void RenderStateModel::applyValues(const std::map<std::string, std::string>& values) {
+  RenderParams p = params_;
+  applyRenderValues(p, values);
+  Quality q = quality_;
+  if (values.count("size")) q.resolution = {p.width, p.height};
+  p.width = params_.width;  // the view decides the size; --size is the resolution choice
+  p.height = params_.height;
+  for (const char* key : {"step", "refine", "jitter"})
+    if (values.count(key)) q.preset.clear();
+  params_ = p;
+  quality_ = q;
+  changed.notify(kAll);
 }
 
 void RenderStateModel::setPresetShift(double hu) {

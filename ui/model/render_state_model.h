@@ -3,6 +3,7 @@
 // shared with voxray-cli) plus the workstation's quality choices. Edits go through
 // update() so every bound widget and the render scheduler hear about them.
 #include <functional>
+#include <map>
 #include <string>
 
 #include "notifier.h"
@@ -47,6 +48,11 @@ class RenderStateModel {
   // Moves the preset's transfer function along HU (the seed's shift slider), clamped to
   // +-kPresetShiftLimitHu so that a slider and saved state agree on the range.
   void setPresetShift(double hu);
+  // Values by key from the command line, as voxray-cli reads them (applyRenderValues: a
+  // preset first, then the values given); --size picks the resolution, and an explicit
+  // step, refinement or jitter switches the quality preset to custom so that it wins.
+  // Throws Error (Input), leaving the state as it was.
+  void applyValues(const std::map<std::string, std::string>& values);
 
   // Saved state: the engine's key=value text plus the quality keys.
   std::string toText() const;

@@ -10,6 +10,7 @@
 #include "control_panel.h"
 #include "coupling.h"
 #include "light_gizmo.h"
+#include "spec_widgets.h"
 #include "volume_view.h"
 
 namespace voxray::ui {
@@ -30,13 +31,14 @@ QDoubleSpinBox* spin(double lo, double hi, double step, int decimals) {
 QGroupBox* makeClipGroup(RenderStateModel& m, VolumeView& view) {
   auto* box = new QGroupBox("Clip box (% of extent)");
   auto* grid = new QGridLayout(box);
+  const ParamSpec& clip = findRenderParamSpec("clip");
   const char* axes[] = {"i (x)", "j (y)", "k (z)"};
   grid->addWidget(new QLabel("from"), 0, 1);
   grid->addWidget(new QLabel("to"), 0, 2);
   for (int a = 0; a < 3; ++a) {
     grid->addWidget(new QLabel(axes[a]), a + 1, 0);
     for (int hi = 0; hi < 2; ++hi) {
-      auto* s = spin(0, 100, 1, 1);
+      auto* s = makeSpin(clip, 100.0);  // fractions shown as percent
       s->setSuffix(" %");
       bindSpin(
           s, m, kClip,
@@ -90,7 +92,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   form->addRow(follow);
   const char* names[] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    auto* s = spin(-5000, 5000, 0.1, 2);
+    auto* s = makeSpin(findRenderParamSpec("light"));
     bindSpin(
         s, m, kLight, [a](const RenderParams& p) { return p.light.position[a]; },
         [a](RenderParams& p, double v) { p.light.position[a] = v; });
@@ -98,15 +100,15 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   }
   struct Term {
     const char* name;
+    const char* key;  // its render parameter: the range comes from the spec
     double LightParams::*field;
-    double max;
   };
-  const Term terms[] = {{"Ambient", &LightParams::ambient, 1},
-                        {"Diffuse", &LightParams::diffuse, 1},
-                        {"Specular", &LightParams::specular, 1},
-                        {"Shininess", &LightParams::shininess, 256}};
+  const Term terms[] = {{"Ambient", "ambient", &LightParams::ambient},
+                        {"Diffuse", "diffuse", &LightParams::diffuse},
+                        {"Specular", "specular", &LightParams::specular},
+                        {"Shininess", "shininess", &LightParams::shininess}};
   for (const Term& t : terms) {
-    auto* s = spin(0, t.max, t.max > 1 ? 1 : 0.05, 2);
+    auto* s = makeSpin(findRenderParamSpec(t.key));
     auto field = t.field;
     bindSpin(
         s, m, kLight, [field](const RenderParams& p) { return p.light.*field; },

@@ -16,21 +16,12 @@
 #include "control_panel.h"
 #include "coupling.h"
 #include "quality_choice.h"
+#include "spec_widgets.h"
 #include "voxray/engine/transfer_function.h"
 
 namespace voxray::ui {
 
 namespace {
-
-QDoubleSpinBox* huSpin() {
-  auto* s = new QDoubleSpinBox;
-  s->setRange(-3000, 32767);
-  s->setDecimals(0);
-  s->setSingleStep(10);
-  s->setSuffix(" HU");
-  s->setKeyboardTracking(false);
-  return s;
-}
 
 // The seed's shift slider: moves the preset's transfer function along HU, e.g. to show
 // bone at a lower density. Clicking the value sets it back to 0.
@@ -71,12 +62,7 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   auto* box = new QGroupBox("Rendering");
   auto* form = new QFormLayout(box);
 
-  auto* mode = new QComboBox;
-  mode->addItems({"Iso surface", "Volume (DVR)", "MIP"});
-  bindCombo(
-      mode, m, kAppearance, [](const RenderParams& p) { return double(int(p.mode)); },
-      [](RenderParams& p, double v) { p.mode = Mode(int(v)); });
-  form->addRow("Mode", mode);
+  form->addRow("Mode", makeParamCombo(m, kAppearance, "mode"));
 
   auto* preset = new QComboBox;
   preset->addItem("(mode default)");
@@ -104,11 +90,12 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   form->addRow("Preset", preset);
   form->addRow("Shift", makePresetShiftRow(m));
 
-  auto* isoLo = huSpin();
+  const ParamSpec& iso = findRenderParamSpec("iso");
+  auto* isoLo = makeSpin(iso);
   bindSpin(
       isoLo, m, kAppearance, [](const RenderParams& p) { return p.isoLo; },
       [](RenderParams& p, double v) { p.isoLo = v; });
-  auto* isoHi = huSpin();
+  auto* isoHi = makeSpin(iso);
   bindSpin(
       isoHi, m, kAppearance, [](const RenderParams& p) { return p.isoHi; },
       [](RenderParams& p, double v) { p.isoHi = v; });
@@ -127,19 +114,8 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
     if (what & kAppearance) showIsoRows();
   });
 
-  auto* gradient = new QComboBox;
-  gradient->addItems({"Central difference", "Sobel", "Zucker-Hummel"});
-  bindCombo(
-      gradient, m, kAppearance, [](const RenderParams& p) { return double(int(p.gradient)); },
-      [](RenderParams& p, double v) { p.gradient = Gradient(int(v)); });
-  form->addRow("Gradient", gradient);
-
-  auto* interp = new QComboBox;
-  interp->addItems({"Nearest", "Trilinear"});
-  bindCombo(
-      interp, m, kAppearance, [](const RenderParams& p) { return double(int(p.interp)); },
-      [](RenderParams& p, double v) { p.interp = Interp(int(v)); });
-  form->addRow("Interpolation", interp);
+  form->addRow("Gradient", makeParamCombo(m, kAppearance, "gradient"));
+  form->addRow("Interpolation", makeParamCombo(m, kAppearance, "interp"));
   return box;
 }
 

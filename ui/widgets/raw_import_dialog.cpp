@@ -14,6 +14,8 @@
 
 #include "qt_image.h"
 #include "raw_preview.h"
+#include "spec_widgets.h"
+#include "voxray/engine/input_flags.h"
 #include "voxray/io/orientation.h"
 
 namespace voxray::ui {
@@ -79,28 +81,25 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
     dims_[a]->setRange(0, 4096);
     dims_[a]->setValue(a < 2 ? 256 : 0);
     dimsRow->addWidget(dims_[a]);
-    spacing_[a] = new QDoubleSpinBox;
-    spacing_[a]->setRange(0.001, 100);
-    spacing_[a]->setDecimals(3);
+    spacing_[a] = makeSpin(findInputFlagSpec("raw-spacing"));  // greater than 0, in mm
     spacing_[a]->setValue(1.0);
     spacingRow->addWidget(spacing_[a]);
   }
   dims_[2]->setSpecialValueText("from files");
   form->addRow("Dimensions x, y, z", dimsRow);
-  type_ = new QComboBox;
+  // The choices of voxray's --raw-type and --raw-endian, in the enums' order.
+  type_ = makeCombo(findInputFlagSpec("raw-type"));
   type_->setObjectName("sampleType");
-  type_->addItems({"u8", "i16", "u16", "f32"});
-  type_->setCurrentIndex(1);
+  type_->setCurrentIndex(int(RawLayout{}.type));
   form->addRow("Sample type", type_);
-  order_ = new QComboBox;
+  order_ = makeCombo(findInputFlagSpec("raw-endian"));
   order_->setObjectName("byteOrder");
-  order_->addItems({"little", "big"});
   form->addRow("Byte order", order_);
   header_ = new QSpinBox;
   header_->setRange(0, 1 << 30);
   header_->setSuffix(" bytes");
   form->addRow("Header offset", header_);
-  form->addRow("Spacing x, y, z (mm)", spacingRow);
+  form->addRow("Spacing x, y, z", spacingRow);
   slope_ = new QDoubleSpinBox;
   slope_->setRange(-1e6, 1e6);
   slope_->setDecimals(4);
@@ -160,8 +159,8 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
 RawLayout RawImportDialog::layout() const {
   RawLayout l;
   l.dims = {dims_[0]->value(), dims_[1]->value(), dims_[2]->value()};
-  l.type = parseSampleType(type_->currentText().toStdString());
-  l.order = parseByteOrder(order_->currentText().toStdString());
+  l.type = SampleType(type_->currentIndex());
+  l.order = ByteOrder(order_->currentIndex());
   l.headerBytes = size_t(header_->value());
   l.spacingMm = {spacing_[0]->value(), spacing_[1]->value(), spacing_[2]->value()};
   l.slope = slope_->value();
@@ -175,8 +174,8 @@ void RawImportDialog::setLayout(const RawLayout& l) {
     dims_[a]->setValue(l.dims[a]);
     spacing_[a]->setValue(l.spacingMm[a]);
   }
-  type_->setCurrentText(toString(l.type));
-  order_->setCurrentIndex(l.order == ByteOrder::Big ? 1 : 0);
+  type_->setCurrentIndex(int(l.type));
+  order_->setCurrentIndex(int(l.order));
   header_->setValue(int(l.headerBytes));
   slope_->setValue(l.slope);
   intercept_->setValue(l.intercept);

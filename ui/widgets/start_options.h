@@ -1,7 +1,7 @@
 #pragma once
-// The voxray command line: an input with voxray-cli's raw-layout flags, every declared
-// render parameter as --KEY VALUE (the same keys as voxray-cli render), and the smoke-test
-// switches --screenshot FILE and --quit-after-first-frame.
+// The voxray command line: an input with voxray-cli's input flags (input_flags.h), every
+// declared render parameter as --KEY VALUE (the same keys as voxray-cli render), and the
+// smoke-test switches --screenshot FILE and --quit-after-first-frame.
 #include <map>
 #include <optional>
 #include <string>

@@ -2,12 +2,13 @@
 // Everything that decides what a frame looks like, declared once. voxray-cli builds
 // its flags from renderParamSpecs(), the workstation binds its models to the same
 // fields, and saved state is the same key=value text.
-#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "voxray/engine/param_spec.h"
 #include "voxray/engine/transfer_function.h"
 
 namespace voxray {
@@ -74,21 +75,23 @@ struct RenderParams {
   LightParams light;
 };
 
-// One declared parameter: its key (the CLI flag without "--"), help, and how to read and
-// write it as text.
-struct ParamSpec {
-  std::string key;
-  std::string valueHint;  // e.g. "iso|dvr|mip" or "X,Y,Z"
-  std::string help;
-  std::function<void(RenderParams&, const std::string&)> parse;  // throws Error (Input)
-  std::function<std::string(const RenderParams&)> format;
-};
+// One declared render parameter: its key (the CLI flag without "--"), help, domain (enum
+// labels, number range) and how to read and write it as text.
+using ParamSpec = Spec<RenderParams>;
 const std::vector<ParamSpec>& renderParamSpecs();
+// The spec of KEY; throws Error (Input) for an unknown key.
+const ParamSpec& findRenderParamSpec(const std::string& key);
+
+// VALUES by key (voxray-cli's flags, the workstation's command line): a preset first, then
+// every value given in declaration order, so that explicit values win over what the preset
+// brings (mode, iso range, window). Throws Error (Input) for an unknown preset or bad value.
+void applyRenderValues(RenderParams& p, const std::map<std::string, std::string>& values);
 
 // key=value lines, one per declared parameter (saved state, logs, test names).
 std::string toText(const RenderParams& p);
 void fromText(RenderParams& p, const std::string& text);  // throws Error (Input)
 
+// The names from the specs' label tables ("iso", "zucker-hummel"); parse* accept aliases too.
 const char* toString(Mode m);
 const char* toString(Gradient g);
 const char* toString(Interp i);

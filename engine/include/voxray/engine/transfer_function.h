@@ -45,8 +45,8 @@ const std::vector<Preset>& builtinPresets();
 // By name, case-insensitive; throws Error (Input) listing the known names.
 const Preset& findPreset(const std::string& name);
 struct RenderParams;
-// Selects the preset (dropping a custom table) and takes its mode, iso range and window
-// where it has them.
+// Selects the preset (dropping a custom table and the preset shift) and takes its mode, iso
+// range and window where it has them.
 void applyPreset(RenderParams& p, const Preset& preset);
 
 // Parses one preset from JSON text; throws Error (Input) saying what is wrong.
