@@ -127,7 +127,7 @@ TEST_F(CliHostile, HugeRawRangeEndsAtTheFirstGap) {
 
 TEST_F(CliHostile, FifoIsRefusedNotWaitedOn) {
   ASSERT_EQ(mkfifo(path("pipe").c_str(), 0600), 0);
-  for (const std::string flags : {std::string(), std::string(" --raw-dims 2,2")}) {
+  for (const std::string& flags : {std::string(), std::string(" --raw-dims 2,2")}) {
     Result r = cli("info " + path("pipe") + flags);
     EXPECT_EQ(r.exitCode, 1) << flags << ": " << r.output;
     EXPECT_THAT(r.output, HasSubstr("is a FIFO (named pipe), not a regular file or folder"));
