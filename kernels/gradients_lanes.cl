@@ -1,5 +1,5 @@
-// volume_gradient (gradients.cl) for a packet's points at once (march_lanes.cl): the same operators,
-// stencils, evaluation order and cancellation rule, lane by lane. The voxel loads are
+// volume_gradient (gradients.cl) for a packet's points at once (march_lanes.cl): the same
+// operators, stencils, evaluation order and cancellation rule, lane by lane. The voxel loads are
 // gathers; the interpolation and the weighted sums run in floatN lanes, which is what
 // makes shading every visible dvr sample affordable on a CPU.
 #ifndef VOXRAY_GRADIENTS_LANES_CL

@@ -58,7 +58,7 @@ SceneToken parseScene(const std::string& token) {
 
 RenderParams syntheticBase(Mode mode, const std::string& size) {
   RenderParams p;
-  renderParamSpecs()[0].parse(p, size);  // "size"
+  findRenderParamSpec("size").parse(p, size);
   p.mode = mode;
   p.isoLo = 0.0;  // analytic fields have their surface at value 0
   p.camera.azimuthDeg = 30.0;

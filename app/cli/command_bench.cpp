@@ -125,7 +125,7 @@ Run addBenchCommand(CLI::App& app) {
         for (const auto& grad : grads)
           for (const auto& kern : kernels) {
             RenderParams p = base;
-            renderParamSpecs()[0].parse(p, sizes[si]);  // "size"
+            findRenderParamSpec("size").parse(p, sizes[si]);
             p.gradient = parseGradient(grad);
             RaycasterOptions ro = raycasterOptions(*o);
             ro.kernel = kern == "uber" ? RaycasterOptions::Kernel::Uber
