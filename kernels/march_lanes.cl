@@ -15,6 +15,11 @@
 #include "shade_queue.cl"
 #include "skip_lanes.cl"
 
+// What iso and dvr packets take: the kernel's arguments and the packet's place (gx, gy).
+#define PACKET_ARGS                                                                            \
+  __global const short *restrict vol, __constant RaycastParams *P, __global const float4 *lut, \
+      __global uchar4 *out, CELL_ARGS, __global uint *count, int gx, int gy
+
 // Writes the packet's pixels that lie inside the image, and adds its samples to a counter.
 inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __global uint* count,
                          int gx, int gy, VecN color, intN samples) {
@@ -39,9 +44,7 @@ inline floatN cap_or_gradientN(floatN g, intN graded, intN cap, intN along) {
   return select(select(zero, g, graded), select(zero, (floatN)(1.0f), along), cap);
 }
 
-inline void iso_packet(__global const short* restrict vol, __constant RaycastParams* P,
-                       __global const float4* lut, __global uchar4* out, CELL_ARGS,
-                       __global uint* count, int gx, int gy) {
+inline void iso_packet(PACKET_ARGS) {
   float step = P->view.z;
   RayPacket r;
   floatN world[6];
@@ -150,9 +153,7 @@ inline void dvr_compositeN(__global const short* restrict vol, __constant Raycas
 // compositing (a lane that ends early drops the rest). 2 ran about 5 % faster than 1;
 // 3 and 4 no faster than 2 (CThead, VTK's orbit).
 #define DVR_BATCH 2
-inline void dvr_packet(__global const short* restrict vol, __constant RaycastParams* P,
-                       __global const float4* lut, __global uchar4* out, CELL_ARGS,
-                       __global uint* count, int gx, int gy) {
+inline void dvr_packet(PACKET_ARGS) {
   float step = P->view.z;
   RayPacket r;
   floatN world[6];

@@ -8,6 +8,7 @@
 
 #include "kernel_params.h"
 #include "kernel_switches.h"
+#include "stability_helpers.h"
 #include "voxray/engine/kernel_variant.h"
 
 namespace voxray {
@@ -21,8 +22,7 @@ size_t count(const std::string& text, const std::string& what) {
 }
 
 RenderParams frame(Mode mode, Gradient gradient, Interp interp) {
-  RenderParams p;
-  p.mode = mode;
+  RenderParams p = test::tinyParams(mode);
   p.gradient = gradient;
   p.interp = interp;
   return p;
