@@ -293,6 +293,8 @@ Volume importDicom(const std::string& input, const LoadOptions& options) {
   v.slope = common.slope;
   v.intercept = common.intercept;
   v.unit = f0.modality == "CT" ? "HU" : f0.modality + " signal (scanner units)";
+  v.modality = f0.modality;
+  v.window = f0.window;  // the first slice's: what a viewer shows when the series opens
   v.sourceType = sampleTypeName(f0);
   v.warnings = c.warnings;
   v.warnings.insert(v.warnings.end(), g.warnings.begin(), g.warnings.end());

@@ -24,10 +24,13 @@ namespace {
 constexpr int kMaxFramesPerFile = 100000;
 
 // Every string is UTF-8 from here on: JSON, the UI and messages need nothing else.
+// VALUE: which value of a multi-valued element, or -1 for all of them as stored.
 std::string str(DcmItem* item, const DcmTagKey& tag, const TextDecoder& text,
-                bool personName = false) {
+                bool personName = false, long value = -1) {
   OFString s;
-  if (item && item->findAndGetOFStringArray(tag, s).good()) {
+  if (item && (value < 0 ? item->findAndGetOFStringArray(tag, s)
+                         : item->findAndGetOFString(tag, s, static_cast<unsigned long>(value)))
+                  .good()) {
     std::string out(s.data(), s.size());
     while (!out.empty() && (out.back() == ' ' || out.back() == '\0')) out.pop_back();
     return text(out, personName);
@@ -106,12 +109,25 @@ void readRescale(DcmItem* item, FrameHeader& h) {
   if (doubles(item, DCM_RescaleIntercept, &v, 1)) h.intercept = v;
 }
 
-void readFrameGroups(DcmItem* perFrame, DcmItem* shared, FrameHeader& h) {
+// The first WindowCenter/WindowWidth pair (a header may offer several, the first is the
+// one meant by default) with its explanation. A width below 1 is no window (PS3.3
+// C.11.2.1.2).
+void readWindow(DcmItem* item, const TextDecoder& text, FrameHeader& h) {
+  double centre = 0, width = 0;
+  if (!doubles(item, DCM_WindowCenter, &centre, 1) || !doubles(item, DCM_WindowWidth, &width, 1) ||
+      width < 1.0)
+    return;
+  h.window =
+      DisplayWindow{width, centre, str(item, DCM_WindowCenterWidthExplanation, text, false, 0)};
+}
+
+void readFrameGroups(DcmItem* perFrame, DcmItem* shared, const TextDecoder& text, FrameHeader& h) {
   if (DcmItem* g = frameGroup(perFrame, shared, DCM_PlanePositionSequence)) readPlane(g, h);
   if (DcmItem* g = frameGroup(perFrame, shared, DCM_PlaneOrientationSequence)) readPlane(g, h);
   if (DcmItem* g = frameGroup(perFrame, shared, DCM_PixelMeasuresSequence)) readPlane(g, h);
   if (DcmItem* g = frameGroup(perFrame, shared, DCM_PixelValueTransformationSequence))
     readRescale(g, h);
+  if (DcmItem* g = frameGroup(perFrame, shared, DCM_FrameVOILUTSequence)) readWindow(g, text, h);
   if (DcmItem* g = frameGroup(perFrame, shared, DCM_FrameContentSequence)) {
     h.temporalIndex = intValue(g, DCM_TemporalPositionIndex, 0);
     h.stackId = intValue(g, DCM_StackID, 0);
@@ -171,6 +187,7 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
   if (doubles(ds, DCM_GantryDetectorTilt, &tilt, 1)) h.gantryTilt = tilt;
   readPlane(ds, h);
   readRescale(ds, h);
+  readWindow(ds, text, h);
   h.padding = paddingValue(ds, DCM_PixelPaddingValue, h.pixelRepresentation);
   h.paddingLimit = paddingValue(ds, DCM_PixelPaddingRangeLimit, h.pixelRepresentation);
   h.patientName = str(ds, DCM_PatientName, text, true);
@@ -208,7 +225,7 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
     FrameHeader fh = h;
     fh.frame = f;
     DcmItem* item = (perFrame && unsigned(f) < perFrame->card()) ? perFrame->getItem(f) : nullptr;
-    if (shared || item) readFrameGroups(item, shared, fh);
+    if (shared || item) readFrameGroups(item, shared, text, fh);
     out.push_back(std::move(fh));
   }
   return ScanResult::Image;

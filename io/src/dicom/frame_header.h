@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "voxray/io/volume.h"
+
 namespace voxray::dicom {
 
 struct FrameHeader {
@@ -30,6 +32,7 @@ struct FrameHeader {
   double gantryTilt = 0.0;
   double slope = 1.0, intercept = 0.0;
   std::optional<int32_t> padding, paddingLimit;  // stored values meaning "no data"
+  std::optional<DisplayWindow> window;           // the first WindowCenter/Width pair
   // Display only; never logged or put in messages.
   std::string patientName, patientId, patientBirthDate;
 

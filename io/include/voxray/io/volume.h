@@ -5,12 +5,21 @@
 // without a float copy.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 namespace voxray {
+
+// The window the data asks to be shown with (DICOM WindowCenter/WindowWidth, the first
+// pair), in physical units like every value of the volume.
+struct DisplayWindow {
+  double width = 0.0;
+  double level = 0.0;
+  std::string explanation;  // WindowCenterWidthExplanation (its first value), may be empty
+};
 
 struct Volume {
   glm::ivec3 dims{0};         // columns (i), rows (j), slices (k)
@@ -20,8 +29,10 @@ struct Volume {
   double slope = 1.0;         // physical = stored * slope + intercept
   double intercept = 0.0;
   std::string unit = "HU";
-  std::string sourceType = "i16";     // sample type it was read from
-  std::vector<std::string> warnings;  // things the user should know (clamping, NaN, ...)
+  std::string modality;                 // DICOM Modality ("CT", "MR", ...); empty: not known
+  std::optional<DisplayWindow> window;  // none when the source gives no window
+  std::string sourceType = "i16";       // sample type it was read from
+  std::vector<std::string> warnings;    // things the user should know (clamping, NaN, ...)
   std::vector<int16_t> voxels;
 
   size_t voxelCount() const { return size_t(dims.x) * size_t(dims.y) * size_t(dims.z); }
