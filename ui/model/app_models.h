@@ -14,6 +14,16 @@ struct AppModels {
   RenderStateModel render;
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
+
+  // The per-study state of the volume the document keeps as its previous one: openStudy
+  // saves it, restorePreviousStudy (study_state.h) brings it back with that volume.
+  struct PreviousStudy {
+    bool valid = false;
+    RenderParams render;
+    WindowLevel wl;
+    std::string wlSource;
+    glm::ivec3 dims{1}, crosshair{0};
+  } previousStudy;
 };
 
 }  // namespace voxray::ui

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace voxray::ui {
 
@@ -37,7 +38,20 @@ void WindowLevelModel::set(const WindowLevel& wl) {
   WindowLevel clamped{std::max(wl.width, kMinWidth), wl.level};
   if (clamped.width == wl_.width && clamped.level == wl_.level) return;
   wl_ = clamped;
+  source_.clear();
   changed.notify();
+}
+
+void WindowLevelModel::reset(const WindowLevel& wl, std::string source) {
+  wl_ = {std::max(wl.width, kMinWidth), wl.level};
+  source_ = std::move(source);
+  changed.notify();
+}
+
+std::string formatWindowLevel(const WindowLevel& wl, const std::string& source) {
+  char text[64];
+  std::snprintf(text, sizeof text, "W %.0f  L %.0f", wl.width, wl.level);
+  return source.empty() ? std::string(text) : std::string(text) + "\n" + source;
 }
 
 bool WindowLevelModel::applyPreset(const std::string& name) {

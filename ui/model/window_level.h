@@ -30,13 +30,22 @@ WindowLevel dragWindowLevel(const WindowLevel& start, double dx, double dy);
 class WindowLevelModel {
  public:
   const WindowLevel& value() const { return wl_; }
-  void set(const WindowLevel& wl);
+  // Where the value came from when the study opened ("DICOM window", "CT default ...");
+  // empty once the user has changed it. Shown wherever W/L is shown.
+  const std::string& source() const { return source_; }
+  void set(const WindowLevel& wl);  // the user's value: clears the source
+  // A study's initial window (initialWindow in study_state.h) and where it came from.
+  void reset(const WindowLevel& wl, std::string source);
   // Returns false (and changes nothing) for an unknown name.
   bool applyPreset(const std::string& name);
   Notifier<> changed;
 
  private:
   WindowLevel wl_;
+  std::string source_;
 };
+
+// "W 400  L 40", with the source on a second line while there is one.
+std::string formatWindowLevel(const WindowLevel& wl, const std::string& source);
 
 }  // namespace voxray::ui
