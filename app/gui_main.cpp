@@ -72,7 +72,9 @@ int main(int argc, char** argv) {
                      });
   }
   window->show();
-  window->open(options.input, options.load);
+  // The camera, clip and light values given belong to the volume opened here: it starts
+  // from its own defaults, then takes them (the preferences among them are applied above).
+  window->open(options.input, options.load, options.renderValues);
   int rc = app.exec();
   window.reset();  // widgets go before the models they are bound to
   return rc != 0 ? rc : exitCode;

@@ -17,6 +17,7 @@
 #include "raw_import_dialog.h"
 #include "series_picker.h"
 #include "settings_store.h"
+#include "study_state.h"
 #include "voxray/engine/input_flags.h"
 #include "voxray/io/orientation.h"
 
@@ -155,18 +156,29 @@ class DialogTest : public QObject {
     raw.direction = directionFromAxesCode("PIL");
     {
       QSettings s(ini, QSettings::IniFormat);
+      // What an older version left: the whole state and the slices' window/level.
+      s.setValue("render/state", "clip=0.5,1,0,1,0,1\nzoom=3\n");
+      s.setValue("slices/window", 80.0);
       saveModelSettings(s, a);
       saveRecent(s, {"/data/b", "/data/a"});
       saveRawLayoutFor(s, "/data/CThead", raw);
     }
     QSettings s(ini, QSettings::IniFormat);
-    AppModels b;
+    AppModels b;  // a restart: new models over the same settings file
     loadModelSettings(s, b);
-    QCOMPARE(b.render.toText(), a.render.toText());
+    // Preferences come back ...
+    QCOMPARE(preferencesText(b.render), preferencesText(a.render));
+    QCOMPARE(b.render.params().preset, std::string("CT-Bone"));
     QCOMPARE(b.render.params().presetShiftHu, -150.0);
     QVERIFY(b.render.quality().resolution == glm::ivec2(640, 480));
-    QCOMPARE(b.windowLevel.value().width, 1500.0);
-    QCOMPARE(b.windowLevel.value().level, -600.0);
+    QCOMPARE(b.render.quality().preset, std::string("reference"));
+    // ... the study's clip box and window/level do not, nor an older version's.
+    QVERIFY(b.render.params().clip.isFull());
+    QCOMPARE(b.render.params().camera.zoom, 1.0);
+    QCOMPARE(b.windowLevel.value().width, WindowLevel().width);
+    QCOMPARE(b.windowLevel.value().level, WindowLevel().level);
+    QVERIFY(!s.contains("render/state"));
+    QVERIFY(!s.contains("slices/window"));
     QVERIFY(loadRecent(s) == (std::vector<std::string>{"/data/b", "/data/a"}));
     auto back = loadRawLayoutFor(s, "/data/CThead");
     QVERIFY(back.has_value());

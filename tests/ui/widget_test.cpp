@@ -285,6 +285,38 @@ class WidgetTest : public QObject {
     QVERIFY2(title.endsWith(" — Voxray"), qPrintable(title));
   }
 
+#ifdef VOXRAY_HAS_DICOM
+  // Issue 18: a study opened through the window starts from its own defaults and the
+  // series' window, which is named beside the W/L in the panel and on the slices.
+  void openedStudyStartsFromItsDefaultsAndWindow() {
+    models_->render.update(kClip | kCamera, [](RenderParams& p) {
+      p.clip.lo.x = 0.5;
+      p.camera.zoom = 2.0;
+      p.camera.panMm = {20.0, 5.0};
+    });
+    models_->windowLevel.set({1500.0, -600.0});
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open((QString(VOXRAY_DATA_DIR) + "/dicom/ct-ge-tilt").toStdString(), {});
+    QVERIFY(shown.wait(120000));
+    const RenderParams& p = models_->render.params();
+    QVERIFY(p.clip.isFull());
+    QCOMPARE(p.camera.zoom, 1.0);
+    QCOMPARE(p.camera.panMm.x, 0.0);
+    QCOMPARE(models_->windowLevel.value().width, 100.0);  // WindowWidth in the header
+    QCOMPARE(models_->windowLevel.value().level, 35.0);   // WindowCenter
+    auto* source = window_->findChild<QLabel*>("windowLevelSource");
+    QVERIFY(source);
+    QCOMPARE(source->text(), QString("DICOM window"));
+    // The slice overlay names it too: without the source line the corner differs.
+    SliceView& axial = window_->sliceView(0);
+    QImage named = axial.grab().toImage();
+    models_->windowLevel.reset(models_->windowLevel.value(), "");
+    QCOMPARE(source->text(), QString());
+    QImage plain = axial.grab().toImage();
+    QVERIFY(differingPixels(named, plain) > 20);
+  }
+#endif
+
  private:
   static QImage toQImageForTest(const Image& img) {
     return QImage(img.rgba.data(), img.width, img.height, img.width * 4, QImage::Format_RGBA8888)

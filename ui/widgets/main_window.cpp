@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include <utility>
+
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -19,6 +21,7 @@
 #include "series_picker.h"
 #include "settings_store.h"
 #include "slice_view.h"
+#include "study_state.h"
 #include "volume_view.h"
 
 namespace voxray::ui {
@@ -66,15 +69,19 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   connect(scheduler_, &RenderScheduler::renderError, this,
           [this](const QString& message, bool rejected) {
             // The engine's message says what failed; the previous volume stays on screen.
-            if (rejected) models_.document.restorePrevious();
+            if (rejected) restorePreviousStudy(models_);
             showError(rejected ? "Cannot show this volume" : "Rendering failed", message);
           });
 
   loader_ = new LoadController(this);
   connect(loader_, &LoadController::loaded, this,
           [this](std::shared_ptr<const Volume> v, const QString& name, const QString& input) {
-            models_.crosshair.setDims(v->dims);
-            models_.document.set(std::move(v), name.toStdString());
+            try {
+              openStudy(models_, std::move(v), name.toStdString(), std::exchange(studyValues_, {}));
+            } catch (const std::exception& e) {  // values were checked when given: a bug
+              showError("Cannot open", QString::fromStdString(e.what()));
+              return;
+            }
             if (!input.isEmpty()) {
               QSettings s;
               saveRecent(s, pushRecent(loadRecent(s), input.toStdString()));
@@ -130,7 +137,10 @@ void MainWindow::rebuildRecentMenu() {
   recentMenu_->setEnabled(!recentMenu_->isEmpty());
 }
 
-void MainWindow::open(const std::string& input, const LoadOptions& options) {
+void MainWindow::open(const std::string& input, const LoadOptions& options,
+                      const std::map<std::string, std::string>& studyValues) {
+  if (loader_->busy()) return;  // the loader ignores it too: keep the running load's values
+  studyValues_ = studyValues;
   QString name =
       input.empty() ? QString("head phantom") : QFileInfo(QString::fromStdString(input)).fileName();
   if (options.raw) {

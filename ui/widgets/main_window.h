@@ -3,6 +3,8 @@
 // to the models; it computes nothing itself (models and small helpers do).
 #include <array>
 #include <functional>
+#include <map>
+#include <string>
 
 #include <QLabel>
 #include <QMainWindow>
@@ -31,8 +33,10 @@ class MainWindow : public QMainWindow {
   LoadController& loader() { return *loader_; }
   ViewGrid& grid() { return *grid_; }
 
-  // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread.
-  void open(const std::string& input, const LoadOptions& options);
+  // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
+  // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
+  void open(const std::string& input, const LoadOptions& options,
+            const std::map<std::string, std::string>& studyValues = {});
   void restoreSettings();
 
   // Where load, render and export errors go: a modal message box unless a test (or an
@@ -69,6 +73,7 @@ class MainWindow : public QMainWindow {
   FrameStats stats_;
   QString device_;
   ErrorSink errorSink_;
+  std::map<std::string, std::string> studyValues_;  // for the volume being loaded
 };
 
 }  // namespace voxray::ui

@@ -133,10 +133,14 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
         QString("%1 (%2/%3)").arg(QString::fromStdString(p.name)).arg(p.wl.width).arg(p.wl.level));
   auto* width = spin(1, 10000, 10, 0);
   auto* level = spin(-3000, 10000, 10, 0);
-  auto refresh = [preset, width, level, &wl] {
+  auto* source = new QLabel;
+  source->setObjectName("windowLevelSource");
+  source->setWordWrap(true);
+  auto refresh = [preset, width, level, source, &wl] {
     QSignalBlocker b1(preset), b2(width), b3(level);
     width->setValue(wl.value().width);
     level->setValue(wl.value().level);
+    source->setText(QString::fromStdString(wl.source()));
     int index = 0;
     const auto& all = windowLevelPresets();
     for (size_t i = 0; i < all.size(); ++i)
@@ -158,6 +162,7 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
   form->addRow("W/L preset", preset);
   form->addRow("Window", width);
   form->addRow("Level", level);
+  form->addRow(source);
   auto* planes = new QCheckBox("Show planes in 3D view");
   planes->setChecked(view.showPlanes());
   QObject::connect(planes, &QCheckBox::toggled, &view, &VolumeView::setShowPlanes);

@@ -2,6 +2,7 @@
 
 #include <QCryptographicHash>
 
+#include "study_state.h"
 #include "voxray/io/orientation.h"
 
 namespace voxray::ui {
@@ -18,16 +19,17 @@ QString rawKey(const std::string& path) {
 }  // namespace
 
 void saveModelSettings(QSettings& s, const AppModels& m) {
-  s.setValue("render/state", QString::fromStdString(m.render.toText()));
-  s.setValue("slices/window", m.windowLevel.value().width);
-  s.setValue("slices/level", m.windowLevel.value().level);
+  s.setValue("render/preferences", QString::fromStdString(preferencesText(m.render)));
+  // Older versions saved the whole state, window/level included: per-study state that
+  // must not come back (study_state.h).
+  for (const char* old : {"render/state", "slices/window", "slices/level"}) s.remove(old);
 }
 
 void loadModelSettings(QSettings& s, AppModels& m) {
-  if (s.contains("render/state"))
-    m.render.fromText(s.value("render/state").toString().toStdString());
-  if (s.contains("slices/window"))
-    m.windowLevel.set({s.value("slices/window").toDouble(), s.value("slices/level").toDouble()});
+  // An older version's whole state still holds the user's preferences: applyPreferences
+  // takes only those.
+  const char* key = s.contains("render/preferences") ? "render/preferences" : "render/state";
+  if (s.contains(key)) applyPreferences(m.render, s.value(key).toString().toStdString());
 }
 
 std::vector<std::string> loadRecent(QSettings& s) {

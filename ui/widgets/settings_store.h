@@ -1,7 +1,8 @@
 #pragma once
-// What persists between sessions (QSettings): the render state and quality as the engine's
-// key=value text, window/level, recent files and the raw layout last used for each file
-// (dims, type, byte order, header, spacing, rescale, slice range and axes code).
+// What persists between sessions (QSettings): the user's preferences (study_state.h says
+// which; never the camera, clip box, light or window/level of a study) as the engine's
+// key=value text, recent files and the raw layout last used for each file (dims, type,
+// byte order, header, spacing, rescale, slice range and axes code).
 #include <optional>
 #include <string>
 #include <vector>

@@ -75,7 +75,7 @@ void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
   p.drawText(text, Qt::AlignLeft | Qt::AlignTop,
              QString("%1 / %2").arg(o.slice + 1).arg(o.sliceCount));
   p.drawText(text, Qt::AlignRight | Qt::AlignTop,
-             QString("W %1  L %2").arg(o.wl.width, 0, 'f', 0).arg(o.wl.level, 0, 'f', 0));
+             QString::fromStdString(formatWindowLevel(o.wl, o.wlSource)));
   if (o.hasCursor) {
     QString value =
         std::isnan(o.cursorValue)

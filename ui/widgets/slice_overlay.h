@@ -20,6 +20,7 @@ struct SliceOverlay {
   bool clipActive = true;  // the slice lies inside the box across the view
   int slice = 0, sliceCount = 0;
   WindowLevel wl;
+  std::string wlSource;  // where the window came from (WindowLevelModel::source)
   double mmPerWidgetPixel = 1.0;
   bool hasCursor = false;
   double cursorValue = 0.0;

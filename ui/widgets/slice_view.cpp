@@ -116,6 +116,7 @@ void SliceView::paintOverlay(QPainter& p) {
   o.slice = crosshair_.sliceOf(axes_);
   o.sliceCount = v.dims[axes_.nAxis];
   o.wl = wl_.value();
+  o.wlSource = wl_.source();
   o.mmPerWidgetPixel = image_.width() * v.spacingMm[axes_.uAxis] / sliceRect().width();
   if (annotations_ && rect().contains(hover_.toPoint())) {
     glm::dvec2 s = toSlice(hover_);
