@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 
 #include "export_dialog.h"
+#include "gui_message.h"
 #include "qt_image.h"
 #include "slice_view.h"
 #include "voxray/io/load.h"
@@ -182,7 +183,8 @@ class ExportLoadTest : public QObject {
     QCOMPARE(models_->document.volume(), shown);
     QCOMPARE(QString::fromStdString(models_->document.name()), QString("phantom"));
 
-    // A raw file too short for its layout: the importer's own message, word for word.
+    // A raw file too short for its layout: the importer's own message, word for word, but
+    // naming the raw dialog's fields where the CLI names its flags.
     QString truncated = tempPath("truncated.raw");
     {
       QFile f(truncated);
@@ -200,7 +202,10 @@ class ExportLoadTest : public QObject {
     }
     QVERIFY(!expected.empty());
     auto [title2, message2] = openAndCatchError(truncated.toStdString(), o);
-    QCOMPARE(message2, QString::fromStdString(expected));
+    QVERIFY2(QString::fromStdString(expected).contains("--raw-dims"), expected.c_str());
+    QCOMPARE(message2, QString::fromStdString(guiMessage(expected)));
+    QVERIFY2(!message2.contains("--raw") && message2.contains("\u201cDimensions x, y, z\u201d"),
+             qPrintable(message2));
     QCOMPARE(models_->document.volume(), shown);
     QVERIFY(window_->volumeView().lastFrame().size() == QSize(128, 96));  // still drawn
   }

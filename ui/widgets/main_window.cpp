@@ -13,7 +13,9 @@
 #include <QStatusBar>
 
 #include "control_panel.h"
+#include "coupling.h"
 #include "export_dialog.h"
+#include "gui_message.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
 #include "series_picker.h"
@@ -56,13 +58,9 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
           [this](double fps, double ms, bool interactive) {
             stats_ = {true, fps, ms, interactive};
             fpsLabel_->setText(QString::fromStdString(formatFrameStats(stats_)));
-            updateTitle();
           });
-  connect(scheduler_, &RenderScheduler::deviceReady, this, [this](const QString& name) {
-    device_ = name;
-    deviceLabel_->setText(name);
-    updateTitle();
-  });
+  connect(scheduler_, &RenderScheduler::deviceReady, this,
+          [this](const QString& name) { deviceLabel_->setText(name); });
   connect(scheduler_, &RenderScheduler::renderError, this,
           [this](const QString& message, bool rejected) {
             // The engine's message says what failed; the previous volume stays on screen.
@@ -82,7 +80,6 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
             }
             for (const auto& w : models_.document.volume()->warnings)
               statusBar()->showMessage(QString::fromStdString(w), 10000);
-            updateTitle();
             emit volumeShown();
           });
   connect(loader_, &LoadController::failed, this,
@@ -91,6 +88,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
           [this] { statusBar()->showMessage("Loading cancelled", 5000); });
   buildMenus();
   updateTitle();
+  onModelChange<>(this, models_.document.changed, [this] { updateTitle(); });
   resize(1400, 900);
 }
 
@@ -170,7 +168,9 @@ void MainWindow::exportScreenshot() {
   dialog.exec();
 }
 
-void MainWindow::showError(const QString& title, const QString& message) {
+void MainWindow::showError(const QString& title, const QString& cliMessage) {
+  // io and engine word their errors for voxray-cli: here the fields have other names.
+  QString message = QString::fromStdString(guiMessage(cliMessage.toStdString()));
   if (errorSink_) {
     errorSink_(title, message);
     return;
@@ -180,8 +180,7 @@ void MainWindow::showError(const QString& title, const QString& message) {
 }
 
 void MainWindow::updateTitle() {
-  setWindowTitle(QString::fromStdString(
-      formatWindowTitle(models_.document.name(), stats_, device_.toStdString())));
+  setWindowTitle(QString::fromStdString(formatWindowTitle(models_.document.name())));
 }
 
 void MainWindow::restoreSettings() {

@@ -67,7 +67,6 @@ class MainWindow : public QMainWindow {
   QLabel* deviceLabel_;
   QMenu* recentMenu_ = nullptr;
   FrameStats stats_;
-  QString device_;
   ErrorSink errorSink_;
 };
 

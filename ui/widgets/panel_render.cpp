@@ -64,11 +64,20 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
 
   form->addRow("Mode", makeParamCombo(m, kAppearance, "mode"));
 
+  // Only the presets made for the current mode: a dvr table named in MIP would be a label
+  // for something not rendered.
   auto* preset = new QComboBox;
-  preset->addItem("(mode default)");
-  for (const auto& p : builtinPresets()) preset->addItem(QString::fromStdString(p.name));
+  preset->setObjectName("preset");
   auto refreshPreset = [preset, &m] {
     QSignalBlocker block(preset);
+    preset->clear();
+    preset->addItem("(mode default)");
+    for (const auto& p : builtinPresets()) {
+      if (!presetFitsMode(p.name, m.params().mode)) continue;
+      preset->addItem(QString::fromStdString(p.name));
+      preset->setItemData(preset->count() - 1, QString::fromStdString(p.description),
+                          Qt::ToolTipRole);
+    }
     int i = preset->findText(QString::fromStdString(m.params().preset), Qt::MatchFixedString);
     preset->setCurrentIndex(std::max(i, 0));
   };
@@ -77,7 +86,7 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
     if (what & kAppearance) refreshPreset();
   });
   QObject::connect(preset, &QComboBox::currentIndexChanged, preset, [preset, &m](int i) {
-    if (i == 0) {
+    if (i <= 0) {
       m.update(kAppearance, [](RenderParams& p) { p.preset.clear(); });
       return;
     }
@@ -103,15 +112,34 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   isoHi->setObjectName("isoHi");
   form->addRow("Iso from", isoLo);
   form->addRow("Iso to", isoHi);
-  // The iso range means nothing to dvr and mip: its rows show in iso mode only.
-  auto showIsoRows = [form, isoLo, isoHi, &m] {
-    bool iso = m.params().mode == Mode::Iso;
-    form->setRowVisible(isoLo, iso);
-    form->setRowVisible(isoHi, iso);
+  // MIP's grey window (the --window parameter); width 0 = the volume's whole range.
+  const ParamSpec& window = findRenderParamSpec("window");
+  auto* mipWidth = makeSpin(window);
+  mipWidth->setMinimum(0.0);
+  mipWidth->setSpecialValueText("whole range");
+  bindSpin(
+      mipWidth, m, kAppearance, [](const RenderParams& p) { return p.windowWidth; },
+      [](RenderParams& p, double v) { p.windowWidth = v; });
+  auto* mipLevel = makeSpin(window);
+  bindSpin(
+      mipLevel, m, kAppearance, [](const RenderParams& p) { return p.windowLevel; },
+      [](RenderParams& p, double v) { p.windowLevel = v; });
+  mipWidth->setObjectName("mipWindow");
+  mipLevel->setObjectName("mipLevel");
+  form->addRow("MIP window", mipWidth);
+  form->addRow("MIP level", mipLevel);
+  // The iso range means nothing to dvr and mip, the window nothing to iso and dvr: their
+  // rows show in their own mode only.
+  auto showModeRows = [form, isoLo, isoHi, mipWidth, mipLevel, &m] {
+    Mode mode = m.params().mode;
+    form->setRowVisible(isoLo, mode == Mode::Iso);
+    form->setRowVisible(isoHi, mode == Mode::Iso);
+    form->setRowVisible(mipWidth, mode == Mode::Mip);
+    form->setRowVisible(mipLevel, mode == Mode::Mip);
   };
-  showIsoRows();
-  onModelChange<unsigned>(box, m.changed, [showIsoRows](unsigned what) {
-    if (what & kAppearance) showIsoRows();
+  showModeRows();
+  onModelChange<unsigned>(box, m.changed, [showModeRows](unsigned what) {
+    if (what & kAppearance) showModeRows();
   });
 
   form->addRow("Gradient", makeParamCombo(m, kAppearance, "gradient"));
@@ -134,6 +162,7 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
   }
   auto* measured = new QLabel;
   measured->setObjectName("qualityMeasured");
+  measured->setWordWrap(true);
 
   static const QList<QSize> sizes = {{0, 0}, {512, 384}, {640, 480}, {800, 600}, {1024, 768}};
   auto* resolution = new QComboBox;
@@ -147,7 +176,10 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
     while (i + 1 < int(choices.size()) && choices[size_t(i)].preset != m.quality().preset) ++i;
     preset->setCurrentIndex(i);
     preset->setToolTip(QString::fromStdString(choices[size_t(i)].tooltip));
-    measured->setText(QString::fromStdString(choices[size_t(i)].measured));
+    // Figures that describe another rendering than this one are not shown as its own.
+    std::string mismatch = qualityMismatch(m.quality().preset, m.params());
+    measured->setText(QString::fromStdString(mismatch.empty() ? choices[size_t(i)].measured
+                                                              : mismatch));
     measured->setToolTip(preset->toolTip());
     // A size from the command line or saved state that the list lacks gets its own entry
     // rather than showing as "Window size".
@@ -162,7 +194,7 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
   };
   refresh();
   onModelChange<unsigned>(box, m.changed, [refresh](unsigned what) {
-    if (what & kQuality) refresh();
+    if (what & (kQuality | kAppearance)) refresh();
   });
   QObject::connect(preset, &QComboBox::currentIndexChanged, box,
                    [&m](int i) { m.setQualityPreset(choices[size_t(i)].preset); });
