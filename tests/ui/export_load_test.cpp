@@ -135,6 +135,32 @@ class ExportLoadTest : public QObject {
         0);
   }
 
+  void exportSizeFieldsShowWhatIsWritten() {
+    // They once said 1920 x 1080 whatever was exported.
+    auto dialog = makeDialog();
+    auto* what = dialog->findChild<QComboBox*>("exportWhat");
+    auto* sizeChoice = dialog->findChild<QComboBox*>("exportSize");
+    auto* width = dialog->findChild<QSpinBox*>("exportWidth");
+    auto* height = dialog->findChild<QSpinBox*>("exportHeight");
+    for (int w = 0; w < 5; ++w) {
+      what->setCurrentIndex(w);
+      sizeChoice->setCurrentIndex(0);
+      QString path = tempPath(QString("size%1.png").arg(w));
+      QVERIFY(dialog->exportTo(path));
+      Image img = readImage(path.toStdString());
+      QCOMPARE(QSize(width->value(), height->value()), QSize(img.width, img.height));
+      QVERIFY(!width->isEnabled());
+    }
+    // The chosen resolution starts from the 3D frame and keeps what the user typed.
+    what->setCurrentIndex(0);
+    sizeChoice->setCurrentIndex(1);
+    QCOMPARE(QSize(width->value(), height->value()), window_->volumeView().lastFrame().size());
+    width->setValue(300);
+    what->setCurrentIndex(1);
+    what->setCurrentIndex(0);
+    QCOMPARE(width->value(), 300);
+  }
+
   void loadErrorClosesProgressFirst() {
     // A load slow enough to show its progress box, then failing: the box must be gone
     // before the message appears (it once stayed on top of it, at 9 %).

@@ -109,8 +109,7 @@ TEST(Labels, LightPositionHasAUnitInEitherFrame) {
 
 TEST(Labels, GuiMessagesNameFieldsNotFlags) {
   // Every raw-input flag of the CLI has a workstation name.
-  for (const InputFlagSpec& s : inputFlagSpecs())
-    EXPECT_NO_THROW(inputFieldLabel(s.key)) << s.key;
+  for (const InputFlagSpec& s : inputFlagSpecs()) EXPECT_NO_THROW(inputFieldLabel(s.key)) << s.key;
   EXPECT_EQ(inputFieldLabel("raw-dims"), "Dimensions x, y, z");
 
   // A real importer message: the CLI keeps its flag, the GUI names the dialog's field.

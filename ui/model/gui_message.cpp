@@ -29,8 +29,9 @@ const std::vector<std::pair<std::string, std::string>>& fields() {
 }
 
 bool isHintChar(char c) {
-  return std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) ||
-         c == ',' || c == '-' || c == '[' || c == ']';
+  return std::isupper(static_cast<unsigned char>(c)) ||
+         std::isdigit(static_cast<unsigned char>(c)) || c == ',' || c == '-' || c == '[' ||
+         c == ']';
 }
 
 }  // namespace

@@ -16,12 +16,12 @@ namespace voxray::ui {
 inline constexpr const char* kDragQualityPreset = "interactive";
 
 struct QualityChoice {
-  std::string preset;    // resources/quality name; empty = custom
-  std::string label;     // "Balanced", "Custom"
+  std::string preset;  // resources/quality name; empty = custom
+  std::string label;   // "Balanced", "Custom"
   // "41.8 dB PSNR · 6.3× Reference's speed, measured on <where>": the figures come from
-  // the preset's file, measured once on the machine it names, not on this one.
+  // the preset's file, measured once where it says, not on this machine.
   std::string measured;
-  std::string tooltip;   // the description, the measurement and what it was measured on
+  std::string tooltip;  // the description, the measurement and what it was measured on
 };
 
 // The presets fastest first, then custom.

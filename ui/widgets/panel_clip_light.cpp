@@ -51,8 +51,8 @@ QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
                                                         : models.document.volume()->direction);
     for (size_t a = 0; a < 3; ++a) {
       axisLabels[a]->setText(QString::fromStdString(names[a]));
-      axisLabels[a]->setToolTip(QString("Index axis %1, from the box's low face to its high face")
-                                    .arg(index[a]));
+      axisLabels[a]->setToolTip(
+          QString("Index axis %1, from the box's low face to its high face").arg(index[a]));
     }
   };
   for (int a = 0; a < 3; ++a) {
@@ -91,6 +91,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   auto* box = new QGroupBox("Light");
   auto* form = new QFormLayout(box);
   auto* follow = new QCheckBox("Follows the camera");
+  follow->setObjectName("lightFollowsCamera");
   auto refreshFollow = [follow, &m] {
     QSignalBlocker b(follow);
     follow->setChecked(m.params().light.followCamera);

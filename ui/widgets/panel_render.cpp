@@ -178,8 +178,8 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
     preset->setToolTip(QString::fromStdString(choices[size_t(i)].tooltip));
     // Figures that describe another rendering than this one are not shown as its own.
     std::string mismatch = qualityMismatch(m.quality().preset, m.params());
-    measured->setText(QString::fromStdString(mismatch.empty() ? choices[size_t(i)].measured
-                                                              : mismatch));
+    measured->setText(
+        QString::fromStdString(mismatch.empty() ? choices[size_t(i)].measured : mismatch));
     measured->setToolTip(preset->toolTip());
     // A size from the command line or saved state that the list lacks gets its own entry
     // rather than showing as "Window size".
