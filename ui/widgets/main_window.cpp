@@ -50,8 +50,12 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
 
   fpsLabel_ = new QLabel("no frame yet");
   fpsLabel_->setObjectName("fpsLabel");
+  fpsLabel_->setToolTip(
+      "Render time of the last 3D frame; frames per second while frames "
+      "follow each other (a drag), none after a pause");
   deviceLabel_ = new QLabel("starting OpenCL …");
   deviceLabel_->setObjectName("deviceLabel");
+  deviceLabel_->setToolTip("The OpenCL device that renders the 3D view");
   statusBar()->addPermanentWidget(fpsLabel_);
   statusBar()->addPermanentWidget(deviceLabel_);
   connect(scheduler_, &RenderScheduler::statsChanged, this,
