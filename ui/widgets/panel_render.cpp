@@ -56,6 +56,17 @@ QWidget* makePresetShiftRow(RenderStateModel& m) {
   return row;
 }
 
+// A spin box with the range of render parameter KEY, named NAME, bound to one FIELD of it.
+QDoubleSpinBox* fieldSpin(RenderStateModel& m, const char* key, const char* name,
+                          double RenderParams::*field) {
+  auto* spin = makeSpin(findRenderParamSpec(key));
+  spin->setObjectName(name);
+  bindSpin(
+      spin, m, kAppearance, [field](const RenderParams& p) { return p.*field; },
+      [field](RenderParams& p, double v) { p.*field = v; });
+  return spin;
+}
+
 }  // namespace
 
 QGroupBox* makeRenderGroup(RenderStateModel& m) {
@@ -99,33 +110,15 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   form->addRow("Preset", preset);
   form->addRow("Shift", makePresetShiftRow(m));
 
-  const ParamSpec& iso = findRenderParamSpec("iso");
-  auto* isoLo = makeSpin(iso);
-  bindSpin(
-      isoLo, m, kAppearance, [](const RenderParams& p) { return p.isoLo; },
-      [](RenderParams& p, double v) { p.isoLo = v; });
-  auto* isoHi = makeSpin(iso);
-  bindSpin(
-      isoHi, m, kAppearance, [](const RenderParams& p) { return p.isoHi; },
-      [](RenderParams& p, double v) { p.isoHi = v; });
-  isoLo->setObjectName("isoLo");
-  isoHi->setObjectName("isoHi");
+  auto* isoLo = fieldSpin(m, "iso", "isoLo", &RenderParams::isoLo);
+  auto* isoHi = fieldSpin(m, "iso", "isoHi", &RenderParams::isoHi);
   form->addRow("Iso from", isoLo);
   form->addRow("Iso to", isoHi);
   // MIP's grey window (the --window parameter); width 0 = the volume's whole range.
-  const ParamSpec& window = findRenderParamSpec("window");
-  auto* mipWidth = makeSpin(window);
+  auto* mipWidth = fieldSpin(m, "window", "mipWindow", &RenderParams::windowWidth);
   mipWidth->setMinimum(0.0);
   mipWidth->setSpecialValueText("whole range");
-  bindSpin(
-      mipWidth, m, kAppearance, [](const RenderParams& p) { return p.windowWidth; },
-      [](RenderParams& p, double v) { p.windowWidth = v; });
-  auto* mipLevel = makeSpin(window);
-  bindSpin(
-      mipLevel, m, kAppearance, [](const RenderParams& p) { return p.windowLevel; },
-      [](RenderParams& p, double v) { p.windowLevel = v; });
-  mipWidth->setObjectName("mipWindow");
-  mipLevel->setObjectName("mipLevel");
+  auto* mipLevel = fieldSpin(m, "window", "mipLevel", &RenderParams::windowLevel);
   form->addRow("MIP window", mipWidth);
   form->addRow("MIP level", mipLevel);
   // The iso range means nothing to dvr and mip, the window nothing to iso and dvr: their
