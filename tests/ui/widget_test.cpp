@@ -304,6 +304,7 @@ class WidgetTest : public QObject {
     }
     models_->render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Mip; });
     preset->setCurrentText("CT-MIP");  // its window: 1800/400
+    QCOMPARE(models_->render.params().preset, std::string("CT-MIP"));
     QCOMPARE(mipWindow->value(), 1800.0);
     QCOMPARE(mipLevel->value(), 400.0);
     mipLevel->setValue(250.0);
@@ -312,6 +313,10 @@ class WidgetTest : public QObject {
     mipWindow->setValue(0.0);
     QCOMPARE(mipWindow->text(), QString("whole range"));
     QCOMPARE(models_->render.params().windowWidth, 0.0);
+    // The command line may pair a preset with another mode, as voxray-cli does: the box
+    // names it with its own mode rather than showing "(mode default)".
+    models_->render.applyValues({{"preset", "CT-Bone"}, {"mode", "iso"}});
+    QCOMPARE(preset->currentText(), QString("CT-Bone (dvr preset)"));
   }
 
   void qualityFiguresAreNotShownForAnotherRendering() {

@@ -76,20 +76,25 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   form->addRow("Mode", makeParamCombo(m, kAppearance, "mode"));
 
   // Only the presets made for the current mode: a dvr table named in MIP would be a label
-  // for something not rendered.
+  // for something not rendered. The preset's name is each item's data.
   auto* preset = new QComboBox;
   preset->setObjectName("preset");
   auto refreshPreset = [preset, &m] {
     QSignalBlocker block(preset);
     preset->clear();
-    preset->addItem("(mode default)");
+    preset->addItem("(mode default)", QString());
+    const std::string& current = m.params().preset;
     for (const auto& p : builtinPresets()) {
-      if (!presetFitsMode(p.name, m.params().mode)) continue;
-      preset->addItem(QString::fromStdString(p.name));
+      bool fits = presetFitsMode(p.name, m.params().mode);
+      // The command line may pair a preset with another mode (--preset CT-Bone --mode
+      // iso colours the surface by CT-Bone): then it is listed, saying so.
+      if (!fits && p.name != current) continue;
+      preset->addItem(QString::fromStdString(fits ? p.name : p.name + " (" + p.mode + " preset)"),
+                      QString::fromStdString(p.name));
       preset->setItemData(preset->count() - 1, QString::fromStdString(p.description),
                           Qt::ToolTipRole);
     }
-    int i = preset->findText(QString::fromStdString(m.params().preset), Qt::MatchFixedString);
+    int i = preset->findData(QString::fromStdString(current));
     preset->setCurrentIndex(std::max(i, 0));
   };
   refreshPreset();
@@ -102,7 +107,7 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
       return;
     }
     try {
-      m.applyPreset(preset->currentText().toStdString());
+      m.applyPreset(preset->currentData().toString().toStdString());
     } catch (const std::exception& e) {
       QMessageBox::warning(preset, "Preset", e.what());
     }
