@@ -11,6 +11,7 @@
 #include "render_state_model.h"
 #include "start_options.h"
 #include "voxray/engine/input_flags.h"
+#include "voxray/engine/quality.h"
 #include "voxray/io/orientation.h"
 
 using namespace voxray;
@@ -107,7 +108,16 @@ TEST_F(CommandLine, CliAndGuiApplyAPresetFirstThenTheFlags) {
   RenderParams fromCli = cli.render.params();
   ui::RenderStateModel model;
   model.applyValues(readGui(args).renderValues);
+  // The one default that differs: the workstation starts with the gradient its default
+  // quality preset (Balanced) was measured with, so that the preset's label is true; the
+  // CLI keeps its own default. A flag sets both alike.
+  EXPECT_EQ(model.params().gradient, findQualityPreset("balanced").gradient);
+  EXPECT_EQ(fromCli.gradient, RenderParams{}.gradient);
+  fromCli.gradient = model.params().gradient;
   EXPECT_EQ(toText(model.params()), toText(fromCli));
+  ui::RenderStateModel central;
+  central.applyValues(readGui({"--gradient", "central"}).renderValues);
+  EXPECT_EQ(central.params().gradient, Gradient::Central);
   EXPECT_EQ(fromCli.mode, Mode::Mip);  // the flag wins over CT-Bone's dvr
   EXPECT_EQ(fromCli.preset, "CT-Bone");
   EXPECT_EQ(fromCli.light.shininess, 600.0);

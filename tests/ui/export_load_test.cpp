@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 
 #include "export_dialog.h"
+#include "gui_message.h"
 #include "qt_image.h"
 #include "slice_view.h"
 #include "voxray/io/load.h"
@@ -134,6 +135,32 @@ class ExportLoadTest : public QObject {
         0);
   }
 
+  void exportSizeFieldsShowWhatIsWritten() {
+    // They once said 1920 x 1080 whatever was exported.
+    auto dialog = makeDialog();
+    auto* what = dialog->findChild<QComboBox*>("exportWhat");
+    auto* sizeChoice = dialog->findChild<QComboBox*>("exportSize");
+    auto* width = dialog->findChild<QSpinBox*>("exportWidth");
+    auto* height = dialog->findChild<QSpinBox*>("exportHeight");
+    for (int w = 0; w < 5; ++w) {
+      what->setCurrentIndex(w);
+      sizeChoice->setCurrentIndex(0);
+      QString path = tempPath(QString("size%1.png").arg(w));
+      QVERIFY(dialog->exportTo(path));
+      Image img = readImage(path.toStdString());
+      QCOMPARE(QSize(width->value(), height->value()), QSize(img.width, img.height));
+      QVERIFY(!width->isEnabled());
+    }
+    // The chosen resolution starts from the 3D frame and keeps what the user typed.
+    what->setCurrentIndex(0);
+    sizeChoice->setCurrentIndex(1);
+    QCOMPARE(QSize(width->value(), height->value()), window_->volumeView().lastFrame().size());
+    width->setValue(300);
+    what->setCurrentIndex(1);
+    what->setCurrentIndex(0);
+    QCOMPARE(width->value(), 300);
+  }
+
   void loadErrorClosesProgressFirst() {
     // A load slow enough to show its progress box, then failing: the box must be gone
     // before the message appears (it once stayed on top of it, at 9 %).
@@ -182,7 +209,8 @@ class ExportLoadTest : public QObject {
     QCOMPARE(models_->document.volume(), shown);
     QCOMPARE(QString::fromStdString(models_->document.name()), QString("phantom"));
 
-    // A raw file too short for its layout: the importer's own message, word for word.
+    // A raw file too short for its layout: the importer's own message, word for word, but
+    // naming the raw dialog's fields where the CLI names its flags.
     QString truncated = tempPath("truncated.raw");
     {
       QFile f(truncated);
@@ -200,7 +228,10 @@ class ExportLoadTest : public QObject {
     }
     QVERIFY(!expected.empty());
     auto [title2, message2] = openAndCatchError(truncated.toStdString(), o);
-    QCOMPARE(message2, QString::fromStdString(expected));
+    QVERIFY2(QString::fromStdString(expected).contains("--raw-dims"), expected.c_str());
+    QCOMPARE(message2, QString::fromStdString(guiMessage(expected)));
+    QVERIFY2(!message2.contains("--raw") && message2.contains("\u201cDimensions x, y, z\u201d"),
+             qPrintable(message2));
     QCOMPARE(models_->document.volume(), shown);
     QVERIFY(window_->volumeView().lastFrame().size() == QSize(128, 96));  // still drawn
   }

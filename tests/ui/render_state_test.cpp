@@ -93,7 +93,9 @@ TEST(RenderState, QualityChoicesShowEachPresetsMeasuredErrorAndSpeed) {
   EXPECT_EQ(choices[3].label, "Custom");
   EXPECT_EQ(choices[3].preset, "");
   // balanced.json: psnr_db 41.83, speedup_vs_reference 6.3, ms_per_frame 41.7
-  EXPECT_EQ(choices[1].measured, "41.8 dB PSNR \u00b7 6.3\u00d7 the reference's speed");
+  EXPECT_EQ(choices[1].measured,
+            "41.8 dB PSNR \u00b7 6.3\u00d7 Reference's speed, measured on PoCL pthread (Xeon, 2 "
+            "shared cores), CThead dvr CT-Bone 160x120, azimuth 30");
   EXPECT_NE(choices[1].tooltip.find("41.83 dB PSNR"), std::string::npos) << choices[1].tooltip;
   EXPECT_NE(choices[1].tooltip.find("41.7 ms per frame"), std::string::npos);
   EXPECT_NE(choices[0].tooltip.find("26.2\u00d7"), std::string::npos) << choices[0].tooltip;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slice_geometry.h"
+#include "voxray/io/orientation.h"
 #include "voxray/io/volume.h"
 
 namespace voxray::ui {
@@ -20,6 +21,14 @@ void setClipFace(ClipBox& box, int face, double fraction) {
 
 double clipFace(const ClipBox& box, int face) {
   return faceIsHigh(face) ? box.hi[faceAxis(face)] : box.lo[faceAxis(face)];
+}
+
+std::array<std::string, 3> clipAxisLabels(const glm::dmat3& direction) {
+  // The low face lies where the index axis points away from: the reversed axes' letters.
+  std::string to = axesCodeFromDirection(direction), from = axesCodeFromDirection(-direction);
+  std::array<std::string, 3> out;
+  for (size_t a = 0; a < 3; ++a) out[a] = std::string(1, from[a]) + "\u2013" + to[a];
+  return out;
 }
 
 glm::dvec3 fractionToVoxel(const glm::ivec3& dims, const glm::dvec3& fraction) {

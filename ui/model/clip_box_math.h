@@ -2,7 +2,9 @@
 // The clip box (the seed's "bounding box" cut) as six draggable faces. The box is stored
 // in fractions of the volume's extent along i, j, k (RenderParams::clip); the handles live
 // in world millimetres so they can be drawn over the 3D view and the slice views.
+#include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -24,6 +26,11 @@ constexpr double kMinClipGap = 0.02;
 // Moves one face to FRACTION (clamped to [0, 1] and at least kMinClipGap from its opposite).
 void setClipFace(ClipBox& box, int face, double fraction);
 double clipFace(const ClipBox& box, int face);
+
+// For the index axes i, j, k: the patient directions each runs between, from the box's low
+// face to its high face ("R–L" for an axis growing to the patient's left), the closest
+// patient axis for an oblique one. DIRECTION: the volume's (columns: LPS unit vectors).
+std::array<std::string, 3> clipAxisLabels(const glm::dmat3& direction);
 
 // Voxel position of a fractional box coordinate (0 = outer edge of the first voxel).
 glm::dvec3 fractionToVoxel(const glm::ivec3& dims, const glm::dvec3& fraction);

@@ -65,4 +65,16 @@ LightParams withFollowCamera(const Volume& v, const RenderParams& p, bool follow
   return placeLight(v, q, world);
 }
 
+LightPositionUnit lightPositionUnit(bool followCamera) {
+  if (followCamera)
+    return {{"Right", "Up", "Back"},
+            " \u00d7 radius",
+            "Multiples of the volume's bounding radius from the eye: to the right, up, and back "
+            "towards the viewer (negative: in front of the eye)"};
+  return {{"L (x)", "P (y)", "S (z)"},
+          " mm",
+          "Millimetres from the volume centre towards the patient's left, posterior and "
+          "superior (negative: right, anterior, inferior)"};
+}
+
 }  // namespace voxray::ui

@@ -11,9 +11,13 @@ namespace {
 
 std::string measuredLine(const QualityPreset& q) {
   char b[160];
-  std::snprintf(b, sizeof b, "%.1f dB PSNR \u00b7 %.1f\u00d7 the reference's speed",
-                q.measuredPsnrDb, q.measuredSpeedup);
-  return b;
+  std::snprintf(b, sizeof b, "%.1f dB PSNR \u00b7 %.1f\u00d7 Reference's speed", q.measuredPsnrDb,
+                q.measuredSpeedup);
+  return std::string(b) + ", measured on " + q.measuredOn;
+}
+
+std::string title(const std::string& key, int index) {
+  return findRenderParamSpec(key).domain.labels[size_t(index)].title;
 }
 
 std::string tooltip(const QualityPreset& q) {
@@ -39,6 +43,20 @@ std::vector<QualityChoice> qualityChoices() {
                  "The render parameters' own step, refinement and jitter (voxray-cli flags); "
                  "frames while dragging still use the interactive preset"});
   return out;
+}
+
+std::string qualityMismatch(const std::string& preset, const RenderParams& p) {
+  if (preset.empty()) return "";
+  const QualityPreset& q = findQualityPreset(preset);
+  std::string out;
+  auto add = [&out](const std::string& part) { out += (out.empty() ? "" : "; ") + part; };
+  if (p.gradient != q.gradient)
+    add(title("gradient", int(p.gradient)) + " gradient (measured with " +
+        title("gradient", int(q.gradient)) + ")");
+  if (p.interp != q.interp)
+    add(title("interp", int(p.interp)) + " sampling (measured with " +
+        title("interp", int(q.interp)) + ")");
+  return out.empty() ? out : "Not as measured: " + out;
 }
 
 std::string resolutionLabel(const glm::ivec2& size) {

@@ -11,8 +11,27 @@
 
 namespace voxray::ui {
 
+bool presetFitsMode(const std::string& preset, Mode mode) {
+  for (const Preset& p : builtinPresets())
+    if (p.name == preset) return parseMode(p.mode) == mode;
+  return false;
+}
+
+RenderStateModel::RenderStateModel() {
+  const QualityPreset& q = findQualityPreset(quality_.preset);
+  params_.interp = q.interp;
+  params_.gradient = q.gradient;
+}
+
 void RenderStateModel::update(unsigned what, const std::function<void(RenderParams&)>& edit) {
+  Mode before = params_.mode;
   edit(params_);
+  if (params_.mode != before && !params_.preset.empty() &&
+      !presetFitsMode(params_.preset, params_.mode)) {
+    params_.preset.clear();
+    params_.transferFunction.clear();
+    params_.presetShiftHu = 0.0;
+  }
   changed.notify(what);
 }
 

@@ -32,10 +32,16 @@ struct Quality {
 
 class RenderStateModel {
  public:
+  // Samples as the default quality preset was measured (its reconstruction and gradient), so
+  // that its label is true from the first frame.
+  RenderStateModel();
+
   const RenderParams& params() const { return params_; }
   const Quality& quality() const { return quality_; }
 
-  // Applies EDIT and notifies with WHAT (bits of Change).
+  // Applies EDIT and notifies with WHAT (bits of Change). An edit that changes the mode
+  // drops a transfer-function preset made for another mode (and its shift and custom
+  // table): the mode's default is what renders then, and what the preset box says.
   void update(unsigned what, const std::function<void(RenderParams&)>& edit);
   // Throws Error (Input) for an unknown quality preset, leaving the quality as it was.
   void setQuality(const Quality& q);
@@ -64,6 +70,10 @@ class RenderStateModel {
   RenderParams params_;
   Quality quality_;
 };
+
+// Whether the transfer-function preset PRESET (by its exact name) was made for MODE; false
+// for an unknown name.
+bool presetFitsMode(const std::string& preset, Mode mode);
 
 // The parameters of one frame: the size from the quality choice (or the view size), then
 // while INTERACTIVE everything the drag preset sets (step, reconstruction, gradient,

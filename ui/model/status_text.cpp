@@ -4,10 +4,14 @@
 
 namespace voxray::ui {
 
+namespace {
+constexpr double kFpsSmoothing = 0.3;  // weight of the newest frame in the fps average
+}
+
 std::string formatFrameStats(const FrameStats& s) {
   if (!s.any) return "no frame yet";
   char buf[64];
-  if (s.fps <= 0.0) {  // one frame so far: no rate to tell
+  if (s.fps <= 0.0) {  // no rate to tell
     std::snprintf(buf, sizeof buf, "%.0f ms%s", s.lastMs, s.interactive ? " (interactive)" : "");
     return buf;
   }
@@ -16,22 +20,20 @@ std::string formatFrameStats(const FrameStats& s) {
   return buf;
 }
 
-std::string formatWindowTitle(const std::string& name, const FrameStats& s,
-                              const std::string& device) {
-  std::string title;
-  auto add = [&title](const std::string& part) {
-    if (part.empty()) return;
-    if (!title.empty()) title += " — ";
-    title += part;
-  };
-  add(name);
-  // The title is read at a glance: the interactive marker stays in the status bar only.
-  FrameStats steady = s;
-  steady.interactive = false;
-  if (s.any) add(formatFrameStats(steady));
-  add(device);
-  add("Voxray");
-  return title;
+std::string formatWindowTitle(const std::string& name) {
+  return name.empty() ? "Voxray" : name + " — Voxray";
+}
+
+double FrameRateMeter::frameAt(double nowS) {
+  double gap = nowS - lastAt_;
+  if (lastAt_ < 0.0 || gap <= 0.0 || gap > kIdleGapS) {
+    fps_ = 0.0;
+  } else {
+    double instant = 1.0 / gap;
+    fps_ = fps_ <= 0.0 ? instant : kFpsSmoothing * instant + (1.0 - kFpsSmoothing) * fps_;
+  }
+  lastAt_ = nowS;
+  return fps_;
 }
 
 }  // namespace voxray::ui

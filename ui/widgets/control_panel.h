@@ -13,7 +13,7 @@ class VolumeView;
 QGroupBox* makeRenderGroup(RenderStateModel& m);
 QGroupBox* makeQualityGroup(RenderStateModel& m);
 QGroupBox* makeCameraGroup(RenderStateModel& m);
-QGroupBox* makeClipGroup(RenderStateModel& m, VolumeView& view);
+QGroupBox* makeClipGroup(AppModels& models, VolumeView& view);
 QGroupBox* makeLightGroup(AppModels& models, VolumeView& view);
 QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view);
 

@@ -42,8 +42,10 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
   height_->setObjectName("exportHeight");
   width_->setRange(16, 8192);
   height_->setRange(16, 8192);
-  width_->setValue(1920);
-  height_->setValue(1080);
+  // A chosen resolution starts from the 3D view's frame; the other choices show their size.
+  QSize start = capturedSize(0).isEmpty() ? QSize(1024, 768) : capturedSize(0);
+  width_->setValue(start.width());
+  height_->setValue(start.height());
   form->addRow("Width", width_);
   form->addRow("Height", height_);
   annotations_ = new QCheckBox("Burn in the cursor readout (value and position)");
@@ -53,15 +55,40 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
   connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::save);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   form->addRow(buttons);
+  // The size fields always show the size of the file to be written: editable for a chosen
+  // resolution, the capture's own size otherwise (they once showed 1920 x 1080 for a
+  // 763 x 519 view).
   auto sync = [this] {
     bool custom = what_->currentIndex() == 0 && size_->currentIndex() == 1;
     size_->setEnabled(what_->currentIndex() == 0);
     width_->setEnabled(custom);
     height_->setEnabled(custom);
+    if (custom) {
+      width_->setValue(chosen_.width());
+      height_->setValue(chosen_.height());
+      return;
+    }
+    QSize s = capturedSize(what_->currentIndex());
+    QSignalBlocker b1(width_), b2(height_);
+    width_->setValue(s.width());
+    height_->setValue(s.height());
   };
+  chosen_ = start;
+  connect(width_, &QSpinBox::valueChanged, this, [this](int w) {
+    if (width_->isEnabled()) chosen_.setWidth(w);
+  });
+  connect(height_, &QSpinBox::valueChanged, this, [this](int h) {
+    if (height_->isEnabled()) chosen_.setHeight(h);
+  });
   connect(what_, &QComboBox::currentIndexChanged, this, sync);
   connect(size_, &QComboBox::currentIndexChanged, this, sync);
   sync();
+}
+
+QSize ExportDialog::capturedSize(int what) const {
+  if (what == 0) return view_.lastFrame().size();  // the rendered pixels
+  QWidget* w = what == 4 ? window_ : static_cast<QWidget*>(slices_[size_t(what - 1)]);
+  return w->size() * w->devicePixelRatio();  // grab() keeps device pixels
 }
 
 QImage ExportDialog::capture() {

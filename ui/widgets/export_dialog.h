@@ -40,6 +40,8 @@ class ExportDialog : public QDialog {
   QString askPath();
   bool askOverwrite(const std::string& path);
   QImage capture();  // empty on failure (a dialog has said why)
+  // The size of what choice WHAT (the capture box's index) writes at its own size.
+  QSize capturedSize(int what) const;
 
   QWidget* window_;
   RenderScheduler& scheduler_;
@@ -50,6 +52,7 @@ class ExportDialog : public QDialog {
   QSpinBox* width_;
   QSpinBox* height_;
   QCheckBox* annotations_;
+  QSize chosen_;  // the chosen resolution, kept while the fields show another capture's size
   std::function<QString()> choose_;
   ConfirmOverwrite confirm_;
   std::function<void(const QString&)> error_;

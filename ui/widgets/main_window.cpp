@@ -15,7 +15,9 @@
 #include <QStatusBar>
 
 #include "control_panel.h"
+#include "coupling.h"
 #include "export_dialog.h"
+#include "gui_message.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
 #include "series_picker.h"
@@ -51,21 +53,21 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
 
   fpsLabel_ = new QLabel("no frame yet");
   fpsLabel_->setObjectName("fpsLabel");
+  fpsLabel_->setToolTip(
+      "Render time of the last 3D frame; frames per second while frames "
+      "follow each other (a drag), none after a pause");
   deviceLabel_ = new QLabel("starting OpenCL …");
   deviceLabel_->setObjectName("deviceLabel");
+  deviceLabel_->setToolTip("The OpenCL device that renders the 3D view");
   statusBar()->addPermanentWidget(fpsLabel_);
   statusBar()->addPermanentWidget(deviceLabel_);
   connect(scheduler_, &RenderScheduler::statsChanged, this,
           [this](double fps, double ms, bool interactive) {
             stats_ = {true, fps, ms, interactive};
             fpsLabel_->setText(QString::fromStdString(formatFrameStats(stats_)));
-            updateTitle();
           });
-  connect(scheduler_, &RenderScheduler::deviceReady, this, [this](const QString& name) {
-    device_ = name;
-    deviceLabel_->setText(name);
-    updateTitle();
-  });
+  connect(scheduler_, &RenderScheduler::deviceReady, this,
+          [this](const QString& name) { deviceLabel_->setText(name); });
   connect(scheduler_, &RenderScheduler::renderError, this,
           [this](const QString& message, bool rejected) {
             // The engine's message says what failed; the previous volume stays on screen.
@@ -89,7 +91,6 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
             }
             for (const auto& w : models_.document.volume()->warnings)
               statusBar()->showMessage(QString::fromStdString(w), 10000);
-            updateTitle();
             emit volumeShown();
           });
   connect(loader_, &LoadController::failed, this,
@@ -98,6 +99,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
           [this] { statusBar()->showMessage("Loading cancelled", 5000); });
   buildMenus();
   updateTitle();
+  onModelChange<>(this, models_.document.changed, [this] { updateTitle(); });
   resize(1400, 900);
 }
 
@@ -180,7 +182,9 @@ void MainWindow::exportScreenshot() {
   dialog.exec();
 }
 
-void MainWindow::showError(const QString& title, const QString& message) {
+void MainWindow::showError(const QString& title, const QString& cliMessage) {
+  // io and engine word their errors for voxray-cli: here the fields have other names.
+  QString message = QString::fromStdString(guiMessage(cliMessage.toStdString()));
   if (errorSink_) {
     errorSink_(title, message);
     return;
@@ -190,8 +194,7 @@ void MainWindow::showError(const QString& title, const QString& message) {
 }
 
 void MainWindow::updateTitle() {
-  setWindowTitle(QString::fromStdString(
-      formatWindowTitle(models_.document.name(), stats_, device_.toStdString())));
+  setWindowTitle(QString::fromStdString(formatWindowTitle(models_.document.name())));
 }
 
 void MainWindow::restoreSettings() {

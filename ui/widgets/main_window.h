@@ -71,7 +71,6 @@ class MainWindow : public QMainWindow {
   QLabel* deviceLabel_;
   QMenu* recentMenu_ = nullptr;
   FrameStats stats_;
-  QString device_;
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
 };

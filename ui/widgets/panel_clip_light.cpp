@@ -1,4 +1,6 @@
 // Clip box, light and slice display controls, and the panel that stacks all groups.
+#include <array>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -7,6 +9,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include "clip_box_math.h"
 #include "control_panel.h"
 #include "coupling.h"
 #include "light_gizmo.h"
@@ -28,15 +31,31 @@ QDoubleSpinBox* spin(double lo, double hi, double step, int decimals) {
 
 }  // namespace
 
-QGroupBox* makeClipGroup(RenderStateModel& m, VolumeView& view) {
+QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
+  RenderStateModel& m = models.render;
   auto* box = new QGroupBox("Clip box (% of extent)");
   auto* grid = new QGridLayout(box);
   const ParamSpec& clip = findRenderParamSpec("clip");
-  const char* axes[] = {"i (x)", "j (y)", "k (z)"};
   grid->addWidget(new QLabel("from"), 0, 1);
   grid->addWidget(new QLabel("to"), 0, 2);
+  // Each row names the patient directions its index axis runs between in this volume.
+  std::array<QLabel*, 3> axisLabels{};
   for (int a = 0; a < 3; ++a) {
-    grid->addWidget(new QLabel(axes[a]), a + 1, 0);
+    axisLabels[size_t(a)] = new QLabel;
+    axisLabels[size_t(a)]->setObjectName(QString("clipAxis%1").arg(a));
+    grid->addWidget(axisLabels[size_t(a)], a + 1, 0);
+  }
+  auto refreshAxes = [axisLabels, &models] {
+    const char* index[] = {"i", "j", "k"};
+    auto names = clipAxisLabels(models.document.empty() ? glm::dmat3(1.0)
+                                                        : models.document.volume()->direction);
+    for (size_t a = 0; a < 3; ++a) {
+      axisLabels[a]->setText(QString::fromStdString(names[a]));
+      axisLabels[a]->setToolTip(
+          QString("Index axis %1, from the box's low face to its high face").arg(index[a]));
+    }
+  };
+  for (int a = 0; a < 3; ++a) {
     for (int hi = 0; hi < 2; ++hi) {
       auto* s = makeSpin(clip, 100.0);  // fractions shown as percent
       s->setSuffix(" %");
@@ -62,6 +81,8 @@ QGroupBox* makeClipGroup(RenderStateModel& m, VolumeView& view) {
   QObject::connect(handles, &QCheckBox::toggled, &view, &VolumeView::setShowClipHandles);
   grid->addWidget(reset, 4, 0, 1, 3);
   grid->addWidget(handles, 5, 0, 1, 3);
+  refreshAxes();
+  onModelChange<>(box, models.document.changed, refreshAxes);
   return box;
 }
 
@@ -70,6 +91,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   auto* box = new QGroupBox("Light");
   auto* form = new QFormLayout(box);
   auto* follow = new QCheckBox("Follows the camera");
+  follow->setObjectName("lightFollowsCamera");
   auto refreshFollow = [follow, &m] {
     QSignalBlocker b(follow);
     follow->setChecked(m.params().light.followCamera);
@@ -90,14 +112,31 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
     m.update(kLight, [&](RenderParams& p) { p.light = l; });
   });
   form->addRow(follow);
-  const char* names[] = {"x", "y", "z"};
+  // The position's unit and axes depend on the frame: they change with the check box.
+  std::array<QDoubleSpinBox*, 3> position{};
+  std::array<QLabel*, 3> positionNames{};
   for (int a = 0; a < 3; ++a) {
     auto* s = makeSpin(findRenderParamSpec("light"));
+    s->setObjectName(QString("lightPosition%1").arg(a));
     bindSpin(
         s, m, kLight, [a](const RenderParams& p) { return p.light.position[a]; },
         [a](RenderParams& p, double v) { p.light.position[a] = v; });
-    form->addRow(QString("Position %1").arg(names[a]), s);
+    position[size_t(a)] = s;
+    positionNames[size_t(a)] = new QLabel;
+    form->addRow(positionNames[size_t(a)], s);
   }
+  auto refreshUnit = [position, positionNames, &m] {
+    LightPositionUnit u = lightPositionUnit(m.params().light.followCamera);
+    for (size_t a = 0; a < 3; ++a) {
+      positionNames[a]->setText(QString::fromStdString("Position " + u.axes[a]));
+      position[a]->setSuffix(QString::fromStdString(u.suffix));
+      position[a]->setToolTip(QString::fromStdString(u.tooltip));
+    }
+  };
+  refreshUnit();
+  onModelChange<unsigned>(box, m.changed, [refreshUnit](unsigned what) {
+    if (what & kLight) refreshUnit();
+  });
   struct Term {
     const char* name;
     const char* key;  // its render parameter: the range comes from the spec
@@ -177,7 +216,7 @@ QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
   layout->addWidget(makeQualityGroup(models.render));
   layout->addWidget(makeCameraGroup(models.render));
   layout->addWidget(makeSliceGroup(models.windowLevel, view));
-  layout->addWidget(makeClipGroup(models.render, view));
+  layout->addWidget(makeClipGroup(models, view));
   layout->addWidget(makeLightGroup(models, view));
   layout->addStretch();
   auto* scroll = new QScrollArea;

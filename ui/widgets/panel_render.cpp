@@ -56,6 +56,17 @@ QWidget* makePresetShiftRow(RenderStateModel& m) {
   return row;
 }
 
+// A spin box with the range of render parameter KEY, named NAME, bound to one FIELD of it.
+QDoubleSpinBox* fieldSpin(RenderStateModel& m, const char* key, const char* name,
+                          double RenderParams::*field) {
+  auto* spin = makeSpin(findRenderParamSpec(key));
+  spin->setObjectName(name);
+  bindSpin(
+      spin, m, kAppearance, [field](const RenderParams& p) { return p.*field; },
+      [field](RenderParams& p, double v) { p.*field = v; });
+  return spin;
+}
+
 }  // namespace
 
 QGroupBox* makeRenderGroup(RenderStateModel& m) {
@@ -64,12 +75,26 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
 
   form->addRow("Mode", makeParamCombo(m, kAppearance, "mode"));
 
+  // Only the presets made for the current mode: a dvr table named in MIP would be a label
+  // for something not rendered. The preset's name is each item's data.
   auto* preset = new QComboBox;
-  preset->addItem("(mode default)");
-  for (const auto& p : builtinPresets()) preset->addItem(QString::fromStdString(p.name));
+  preset->setObjectName("preset");
   auto refreshPreset = [preset, &m] {
     QSignalBlocker block(preset);
-    int i = preset->findText(QString::fromStdString(m.params().preset), Qt::MatchFixedString);
+    preset->clear();
+    preset->addItem("(mode default)", QString());
+    const std::string& current = m.params().preset;
+    for (const auto& p : builtinPresets()) {
+      bool fits = presetFitsMode(p.name, m.params().mode);
+      // The command line may pair a preset with another mode (--preset CT-Bone --mode
+      // iso colours the surface by CT-Bone): then it is listed, saying so.
+      if (!fits && p.name != current) continue;
+      preset->addItem(QString::fromStdString(fits ? p.name : p.name + " (" + p.mode + " preset)"),
+                      QString::fromStdString(p.name));
+      preset->setItemData(preset->count() - 1, QString::fromStdString(p.description),
+                          Qt::ToolTipRole);
+    }
+    int i = preset->findData(QString::fromStdString(current));
     preset->setCurrentIndex(std::max(i, 0));
   };
   refreshPreset();
@@ -77,12 +102,12 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
     if (what & kAppearance) refreshPreset();
   });
   QObject::connect(preset, &QComboBox::currentIndexChanged, preset, [preset, &m](int i) {
-    if (i == 0) {
+    if (i <= 0) {
       m.update(kAppearance, [](RenderParams& p) { p.preset.clear(); });
       return;
     }
     try {
-      m.applyPreset(preset->currentText().toStdString());
+      m.applyPreset(preset->currentData().toString().toStdString());
     } catch (const std::exception& e) {
       QMessageBox::warning(preset, "Preset", e.what());
     }
@@ -90,28 +115,29 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   form->addRow("Preset", preset);
   form->addRow("Shift", makePresetShiftRow(m));
 
-  const ParamSpec& iso = findRenderParamSpec("iso");
-  auto* isoLo = makeSpin(iso);
-  bindSpin(
-      isoLo, m, kAppearance, [](const RenderParams& p) { return p.isoLo; },
-      [](RenderParams& p, double v) { p.isoLo = v; });
-  auto* isoHi = makeSpin(iso);
-  bindSpin(
-      isoHi, m, kAppearance, [](const RenderParams& p) { return p.isoHi; },
-      [](RenderParams& p, double v) { p.isoHi = v; });
-  isoLo->setObjectName("isoLo");
-  isoHi->setObjectName("isoHi");
+  auto* isoLo = fieldSpin(m, "iso", "isoLo", &RenderParams::isoLo);
+  auto* isoHi = fieldSpin(m, "iso", "isoHi", &RenderParams::isoHi);
   form->addRow("Iso from", isoLo);
   form->addRow("Iso to", isoHi);
-  // The iso range means nothing to dvr and mip: its rows show in iso mode only.
-  auto showIsoRows = [form, isoLo, isoHi, &m] {
-    bool iso = m.params().mode == Mode::Iso;
-    form->setRowVisible(isoLo, iso);
-    form->setRowVisible(isoHi, iso);
+  // MIP's grey window (the --window parameter); width 0 = the volume's whole range.
+  auto* mipWidth = fieldSpin(m, "window", "mipWindow", &RenderParams::windowWidth);
+  mipWidth->setMinimum(0.0);
+  mipWidth->setSpecialValueText("whole range");
+  auto* mipLevel = fieldSpin(m, "window", "mipLevel", &RenderParams::windowLevel);
+  form->addRow("MIP window", mipWidth);
+  form->addRow("MIP level", mipLevel);
+  // The iso range means nothing to dvr and mip, the window nothing to iso and dvr: their
+  // rows show in their own mode only.
+  auto showModeRows = [form, isoLo, isoHi, mipWidth, mipLevel, &m] {
+    Mode mode = m.params().mode;
+    form->setRowVisible(isoLo, mode == Mode::Iso);
+    form->setRowVisible(isoHi, mode == Mode::Iso);
+    form->setRowVisible(mipWidth, mode == Mode::Mip);
+    form->setRowVisible(mipLevel, mode == Mode::Mip);
   };
-  showIsoRows();
-  onModelChange<unsigned>(box, m.changed, [showIsoRows](unsigned what) {
-    if (what & kAppearance) showIsoRows();
+  showModeRows();
+  onModelChange<unsigned>(box, m.changed, [showModeRows](unsigned what) {
+    if (what & kAppearance) showModeRows();
   });
 
   form->addRow("Gradient", makeParamCombo(m, kAppearance, "gradient"));
@@ -134,6 +160,7 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
   }
   auto* measured = new QLabel;
   measured->setObjectName("qualityMeasured");
+  measured->setWordWrap(true);
 
   static const QList<QSize> sizes = {{0, 0}, {512, 384}, {640, 480}, {800, 600}, {1024, 768}};
   auto* resolution = new QComboBox;
@@ -147,7 +174,10 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
     while (i + 1 < int(choices.size()) && choices[size_t(i)].preset != m.quality().preset) ++i;
     preset->setCurrentIndex(i);
     preset->setToolTip(QString::fromStdString(choices[size_t(i)].tooltip));
-    measured->setText(QString::fromStdString(choices[size_t(i)].measured));
+    // Figures that describe another rendering than this one are not shown as its own.
+    std::string mismatch = qualityMismatch(m.quality().preset, m.params());
+    measured->setText(
+        QString::fromStdString(mismatch.empty() ? choices[size_t(i)].measured : mismatch));
     measured->setToolTip(preset->toolTip());
     // A size from the command line or saved state that the list lacks gets its own entry
     // rather than showing as "Window size".
@@ -162,7 +192,7 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
   };
   refresh();
   onModelChange<unsigned>(box, m.changed, [refresh](unsigned what) {
-    if (what & kQuality) refresh();
+    if (what & (kQuality | kAppearance)) refresh();
   });
   QObject::connect(preset, &QComboBox::currentIndexChanged, box,
                    [&m](int i) { m.setQualityPreset(choices[size_t(i)].preset); });

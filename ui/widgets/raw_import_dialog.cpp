@@ -12,6 +12,7 @@
 #include <QRegularExpressionValidator>
 #include <QSpinBox>
 
+#include "gui_message.h"
 #include "qt_image.h"
 #include "raw_preview.h"
 #include "spec_widgets.h"
@@ -21,6 +22,9 @@
 namespace voxray::ui {
 
 namespace {
+
+// Field labels from the one table that also words the importer's messages for the GUI.
+QString field(const char* flag) { return QString::fromStdString(inputFieldLabel(flag)); }
 
 std::optional<glm::dmat3> axesDirection(const QString& code) {
   try {
@@ -86,20 +90,20 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
     spacingRow->addWidget(spacing_[a]);
   }
   dims_[2]->setSpecialValueText("from files");
-  form->addRow("Dimensions x, y, z", dimsRow);
+  form->addRow(field("raw-dims"), dimsRow);
   // The choices of voxray's --raw-type and --raw-endian, in the enums' order.
   type_ = makeCombo(findInputFlagSpec("raw-type"));
   type_->setObjectName("sampleType");
   type_->setCurrentIndex(int(RawLayout{}.type));
-  form->addRow("Sample type", type_);
+  form->addRow(field("raw-type"), type_);
   order_ = makeCombo(findInputFlagSpec("raw-endian"));
   order_->setObjectName("byteOrder");
-  form->addRow("Byte order", order_);
+  form->addRow(field("raw-endian"), order_);
   header_ = new QSpinBox;
   header_->setRange(0, 1 << 30);
   header_->setSuffix(" bytes");
-  form->addRow("Header offset", header_);
-  form->addRow("Spacing x, y, z", spacingRow);
+  form->addRow(field("raw-offset"), header_);
+  form->addRow(field("raw-spacing"), spacingRow);
   slope_ = new QDoubleSpinBox;
   slope_->setRange(-1e6, 1e6);
   slope_->setDecimals(4);
@@ -109,7 +113,7 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
   auto* rescaleRow = new QHBoxLayout;
   rescaleRow->addWidget(slope_);
   rescaleRow->addWidget(intercept_);
-  form->addRow("Rescale slope, intercept", rescaleRow);
+  form->addRow(field("raw-rescale"), rescaleRow);
   // Raw data carry no orientation: the code names the patient direction of x, y and z.
   axes_ = new QComboBox;
   axes_->setObjectName("axes");
@@ -125,7 +129,7 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
   axesCheck_ = new QLabel;
   axesCheck_->setObjectName("axesCheck");
   axesCheck_->setWordWrap(true);
-  form->addRow("Orientation (x, y, z)", axes_);
+  form->addRow(field("raw-axes"), axes_);
   form->addRow("", axesCheck_);  // its own row: an error message needs the width
   sizeCheck_ = new QLabel;
   sizeCheck_->setObjectName("sizeCheck");

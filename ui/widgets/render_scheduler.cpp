@@ -5,8 +5,7 @@
 namespace voxray::ui {
 
 namespace {
-constexpr int kSettleMs = 150;         // no movement for this long counts as "stopped"
-constexpr double kFpsSmoothing = 0.3;  // weight of the newest frame in the fps average
+constexpr int kSettleMs = 150;  // no movement for this long counts as "stopped"
 }  // namespace
 
 RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
@@ -90,14 +89,9 @@ void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
     emit exportReady(frame);
     return;
   }
-  double now = clock_.nsecsElapsed() * 1e-9;
-  if (lastFrameAt_ >= 0.0 && now > lastFrameAt_) {
-    double instant = 1.0 / (now - lastFrameAt_);
-    fps_ = fps_ <= 0.0 ? instant : kFpsSmoothing * instant + (1.0 - kFpsSmoothing) * fps_;
-  }
-  lastFrameAt_ = now;
+  double fps = rate_.frameAt(clock_.nsecsElapsed() * 1e-9);
   emit frameReady(frame);
-  emit statsChanged(fps_, frame->stats.totalMs, frame->interactive);
+  emit statsChanged(fps, frame->stats.totalMs, frame->interactive);
   if (!frame->interactive && !sawFullFrame_) {
     sawFullFrame_ = true;
     emit firstFullFrame();

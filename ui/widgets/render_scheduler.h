@@ -13,6 +13,7 @@
 
 #include "render_state_model.h"
 #include "render_worker.h"
+#include "status_text.h"
 #include "volume_document.h"
 
 namespace voxray::ui {
@@ -54,7 +55,7 @@ class RenderScheduler : public QObject {
   bool sawFullFrame_ = false;
   QTimer settle_;  // the mouse stopped: time to refine
   QElapsedTimer clock_;
-  double lastFrameAt_ = -1.0, fps_ = 0.0;
+  FrameRateMeter rate_;
   int stateConnection_ = 0, docConnection_ = 0;
 };
 

@@ -16,13 +16,18 @@ double niceLengthMm(double target) {
 
 namespace {
 
+// The orientation letters' colour: none of the plane colours (yellow, green, red) nor the
+// clip box's orange, so that a crosshair line is never read as part of a letter.
+const QColor kLetterColor(150, 215, 255);
+constexpr int kLetterMargin = 4;
+
 void drawLabels(QPainter& p, const SliceAxes& a, const QRect& r) {
   QFont f = p.font();
   f.setBold(true);
   p.setFont(f);
-  p.setPen(QColor(255, 220, 120));
+  p.setPen(kLetterColor);
   const auto& l = a.labels;  // left, right, top, bottom
-  int m = 4;
+  const int m = kLetterMargin;
   p.drawText(r.adjusted(m, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
              QString::fromStdString(l[0]));
   p.drawText(r.adjusted(0, 0, -m, 0), Qt::AlignRight | Qt::AlignVCenter,
@@ -48,15 +53,18 @@ void drawScaleBar(QPainter& p, double mmPerPixel, const QRect& r) {
 
 }  // namespace
 
+QRectF crosshairBounds(const QPainter& p, const QRect& r) {
+  QFont bold = p.font();
+  bold.setBold(true);
+  QFontMetrics fm(bold);
+  const double gapX = kLetterMargin + fm.horizontalAdvance("W") + 4;  // widest letter
+  const double gapY = kLetterMargin + fm.height() + 2;
+  return QRectF(r).adjusted(gapX, gapY, -gapX, -gapY);
+}
+
 void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
                       const SliceToWidget& toWidget) {
-  // Crosshair lines in the colours of the two other views' planes.
-  QPointF c = toWidget(o.crosshair.x, o.crosshair.y);
-  p.setPen(QPen(planeColor(o.axes.uAxis), 1));
-  p.drawLine(QPointF(c.x(), r.top()), QPointF(c.x(), r.bottom()));
-  p.setPen(QPen(planeColor(o.axes.vAxis), 1));
-  p.drawLine(QPointF(r.left(), c.y()), QPointF(r.right(), c.y()));
-
+  // The clip box first: the crosshair is what the user aims with, so it stays on top.
   if (o.showClip) {
     QPointF tl = toWidget(std::min(o.clipEdges[0].position, o.clipEdges[1].position),
                           std::min(o.clipEdges[2].position, o.clipEdges[3].position));
@@ -66,6 +74,15 @@ void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
     p.setBrush(Qt::NoBrush);
     p.drawRect(QRectF(tl, br));
   }
+
+  // Crosshair lines in the colours of the two other views' planes, stopping short of the
+  // band along each edge where the orientation letters sit.
+  QRectF inner = crosshairBounds(p, r);
+  QPointF c = toWidget(o.crosshair.x, o.crosshair.y);
+  p.setPen(QPen(planeColor(o.axes.uAxis), 1));
+  p.drawLine(QPointF(c.x(), inner.top()), QPointF(c.x(), inner.bottom()));
+  p.setPen(QPen(planeColor(o.axes.vAxis), 1));
+  p.drawLine(QPointF(inner.left(), c.y()), QPointF(inner.right(), c.y()));
 
   drawLabels(p, o.axes, r);
   p.setPen(QPen(planeColor(o.axes.nAxis), 2));

@@ -32,6 +32,10 @@ using SliceToWidget = std::function<QPointF(double u, double v)>;
 void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& widget,
                       const SliceToWidget& toWidget);
 
+// Where the crosshair lines may run in widget R: R less the bands of the orientation letters
+// (in P's font, bold), so that no line crosses a letter.
+QRectF crosshairBounds(const QPainter& p, const QRect& r);
+
 // A round scale-bar length (1, 2 or 5 times a power of ten) near TARGET_MM.
 double niceLengthMm(double targetMm);
 
