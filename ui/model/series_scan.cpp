@@ -6,6 +6,13 @@
 
 namespace voxray::ui {
 
+std::string notVolumeQuestion(const SeriesInfo& s) {
+  if (s.isVolume) return {};
+  return "Series " + s.selector + " is not a proper 3D volume: " + s.notVolumeReason +
+         ".\nIt would open as a flat or distorted stack, not as the anatomy measured. "
+         "Open it anyway?";
+}
+
 SeriesScan::SeriesScan(std::string input, SeriesScanEvents events, size_t budget,
                        BackgroundTask::Post post)
     : input_(std::move(input)),

@@ -26,6 +26,11 @@ struct SeriesScanEvents {
   std::function<void()> finished;                                    // after the last one
 };
 
+// The question to ask before opening S, or "" when S is a proper volume. The rule is the
+// importer's own (SeriesInfo::isVolume, as voxray-cli info refuses such a series by default):
+// the GUI asks instead of quietly loading a series that is no volume.
+std::string notVolumeQuestion(const SeriesInfo& s);
+
 class SeriesScan {
  public:
   // Starts at once. BUDGET: candidates with more voxels get an empty thumbnail. POST: where

@@ -147,7 +147,8 @@ void SeriesPickerDialog::showPatient() {
                         .arg(id.isEmpty() ? QString() : "   ID: " + id));
 }
 
-std::optional<LoadOptions> pickSeries(QWidget* parent, const std::string& folder) {
+std::optional<LoadOptions> pickSeries(QWidget* parent, const std::string& folder,
+                                      const Confirm& confirm) {
   SeriesPickerDialog dialog(parent, folder);
   QString error;
   int count = -1;
@@ -174,6 +175,15 @@ std::optional<LoadOptions> pickSeries(QWidget* parent, const std::string& folder
   }
   auto selector = dialog.chosenSelector();
   if (!accepted || !selector) return std::nullopt;
+  for (const SeriesInfo& s : dialog.listing().series) {
+    const std::string question = s.selector == *selector ? notVolumeQuestion(s) : std::string();
+    if (question.empty()) continue;
+    const bool yes =
+        confirm ? confirm(question)
+                : QMessageBox::question(parent, "Not a volume", QString::fromStdString(question)) ==
+                      QMessageBox::Yes;
+    if (!yes) return std::nullopt;
+  }
   LoadOptions o;
   o.series = *selector;
   return o;
@@ -181,7 +191,9 @@ std::optional<LoadOptions> pickSeries(QWidget* parent, const std::string& folder
 
 #else
 
-std::optional<LoadOptions> pickSeries(QWidget*, const std::string&) { return LoadOptions{}; }
+std::optional<LoadOptions> pickSeries(QWidget*, const std::string&, const Confirm&) {
+  return LoadOptions{};
+}
 
 #endif
 

@@ -5,6 +5,7 @@
 // the dialog opens at once and stays responsive. Patient name and ID appear in one labelled
 // field of this dialog only, for the user to check they have the right patient.
 // Without DICOM support in io, the folder is opened with the default choice.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -54,7 +55,13 @@ class SeriesPickerDialog : public QDialog {
 
 namespace voxray::ui {
 
-// nullopt: the user cancelled, or listing failed (a dialog has said why).
-std::optional<LoadOptions> pickSeries(QWidget* parent, const std::string& folder);
+// Answers a yes/no question (its text names the problem); true opens anyway. Tests pass
+// their own answer; the default asks the user in a message box.
+using Confirm = std::function<bool(const std::string& question)>;
+
+// nullopt: the user cancelled, declined to open a series that is not a volume, or listing
+// failed (a dialog has said why).
+std::optional<LoadOptions> pickSeries(QWidget* parent, const std::string& folder,
+                                      const Confirm& confirm = {});
 
 }  // namespace voxray::ui
