@@ -1,5 +1,7 @@
 #include "raw_import_dialog.h"
 
+#include <QAbstractButton>
+#include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -7,7 +9,9 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHash>
+#include <QKeyEvent>
 #include <QLineEdit>
+#include <QPainter>
 #include <QPushButton>
 #include <QRegularExpressionValidator>
 #include <QSpinBox>
@@ -51,6 +55,22 @@ std::pair<QString, QString> axesMessage(const QString& code) {
   return {
       QString("✓ x → %1, y → %2, z → %3").arg(words[upper[0]], words[upper[1]], words[upper[2]]),
       {}};
+}
+
+// The preview with the patient letters at its edges and the slice direction in a corner.
+QPixmap lettered(QPixmap pixmap, const EdgeLetters& e) {
+  QPainter p(&pixmap);
+  p.setPen(QColor(255, 220, 0));
+  QFont font = p.font();
+  font.setBold(true);
+  p.setFont(font);
+  const QRect r = pixmap.rect().adjusted(3, 1, -3, -1);
+  p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter, QString(e.left));
+  p.drawText(r, Qt::AlignRight | Qt::AlignVCenter, QString(e.right));
+  p.drawText(r, Qt::AlignHCenter | Qt::AlignTop, QString(e.top));
+  p.drawText(r, Qt::AlignHCenter | Qt::AlignBottom, QString(e.bottom));
+  p.drawText(r, Qt::AlignLeft | Qt::AlignBottom, QString("slices → %1").arg(e.slices));
+  return pixmap;
 }
 
 }  // namespace
@@ -114,6 +134,11 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
   rescaleRow->addWidget(slope_);
   rescaleRow->addWidget(intercept_);
   form->addRow(field("raw-rescale"), rescaleRow);
+  valueRange_ = new QLabel;
+  valueRange_->setObjectName("valueRange");
+  valueRange_->setWordWrap(true);
+  valueRange_->setMinimumHeight(2 * fontMetrics().lineSpacing());  // wrapped: no jump, no clip
+  form->addRow("", valueRange_);
   // Raw data carry no orientation: the code names the patient direction of x, y and z.
   axes_ = new QComboBox;
   axes_->setObjectName("axes");
@@ -131,9 +156,16 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
   axesCheck_->setWordWrap(true);
   form->addRow(field("raw-axes"), axes_);
   form->addRow("", axesCheck_);  // its own row: an error message needs the width
+  auto* assumption = new QLabel(
+      "The default LPS assumes slice 1 is nearest the feet; when slice 1 is the top of the head "
+      "(as in CThead) choose LPI. The preview's letters show the result.");
+  assumption->setObjectName("axesAssumption");
+  assumption->setWordWrap(true);
+  form->addRow("", assumption);
   sizeCheck_ = new QLabel;
   sizeCheck_->setObjectName("sizeCheck");
   sizeCheck_->setWordWrap(true);
+  sizeCheck_->setMinimumHeight(2 * fontMetrics().lineSpacing());
   form->addRow("File size", sizeCheck_);
   preview_ = new QLabel;
   preview_->setObjectName("preview");
@@ -157,6 +189,13 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
   connect(type_, &QComboBox::currentIndexChanged, this, &RawImportDialog::refresh);
   connect(order_, &QComboBox::currentIndexChanged, this, &RawImportDialog::refresh);
   connect(header_, &QSpinBox::valueChanged, this, &RawImportDialog::refresh);
+  connect(slope_, &QDoubleSpinBox::valueChanged, this, &RawImportDialog::refresh);
+  connect(intercept_, &QDoubleSpinBox::valueChanged, this, &RawImportDialog::refresh);
+  // Esc reverts the field being edited: the snapshot is taken when a field gets the focus.
+  connect(qApp, &QApplication::focusChanged, this, [this](QWidget*, QWidget* now) {
+    if (now && isAncestorOf(now))
+      snapshot_ = {path(), RawImportDialog::layout(), axes_->currentText()};
+  });
   refresh();
 }
 
@@ -192,7 +231,22 @@ QString RawImportDialog::path() const { return path_->text(); }
 void RawImportDialog::setPath(const QString& path) { path_->setText(path); }
 
 bool RawImportDialog::acceptable() const {
-  return !path().isEmpty() && axesDirection(axes_->currentText()).has_value();
+  return !path().isEmpty() && axesDirection(axes_->currentText()).has_value() &&
+         checkRawSize(path().toStdString(), layout()).matches();
+}
+
+void RawImportDialog::keyPressEvent(QKeyEvent* event) {
+  QWidget* focus = focusWidget();
+  const bool inField = focus && !qobject_cast<QAbstractButton*>(focus);
+  if (event->key() != Qt::Key_Escape || !inField) {
+    QDialog::keyPressEvent(event);
+    return;
+  }
+  // Esc in a field undoes that field's edit; it does not throw the whole dialog away.
+  if (snapshot_.path != path()) setPath(snapshot_.path);
+  setLayout(snapshot_.layout);
+  axes_->setCurrentText(snapshot_.axes);
+  event->accept();
 }
 
 void RawImportDialog::pathChanged() {
@@ -212,19 +266,24 @@ void RawImportDialog::refresh() {
     sizeCheck_->setText("choose a file or folder");
   } else {
     QString what = c.files > 1 ? QString("per file (%1 files)").arg(c.files) : QString();
+    QString off = QString::fromStdString(sizeMismatchText(c));
     sizeCheck_->setText(QString("expected %1 bytes, actual %2 %3 %4")
                             .arg(c.expectedBytes)
                             .arg(c.actualBytes)
                             .arg(what)
-                            .arg(c.matches() ? "✓" : "— does not match"));
+                            .arg(c.matches() ? "✓" : "— does not match: " + off));
   }
-  auto img = previewRawSlice(p, layout());
-  if (img)
+  auto shown = previewRawSlice(p, layout());
+  if (shown) {
     preview_->setPixmap(
-        QPixmap::fromImage(toQImage(*img))
-            .scaled(preview_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation));
-  else
+        lettered(QPixmap::fromImage(toQImage(shown->image))
+                     .scaled(preview_->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation),
+                 edgeLetters(layout().direction)));
+    valueRange_->setText(QString::fromStdString(valueRangeText(*shown, layout())));
+  } else {
     preview_->setText("no preview");
+    valueRange_->clear();
+  }
   auto [text, detail] = axesMessage(axes_->currentText());
   axesCheck_->setText(text);
   axesCheck_->setToolTip(detail);

@@ -1,7 +1,9 @@
 #pragma once
 // The raw-stack dialog: dims, sample type, byte order, header offset, spacing, rescale and
 // orientation (an axes code such as LPI), with the expected against the actual file size
-// and a preview slice before loading. A file opened before gets its saved layout back.
+// and a preview slice with patient letters and value range before loading; Open only when
+// the size matches, Esc in a field reverts that field. A file opened before gets its saved layout
+// back.
 #include <functional>
 #include <optional>
 #include <utility>
@@ -12,6 +14,7 @@
 #include "voxray/io/raw_import.h"
 
 class QComboBox;
+class QKeyEvent;
 class QPushButton;
 class QDoubleSpinBox;
 class QLineEdit;
@@ -30,11 +33,14 @@ class RawImportDialog : public QDialog {
   void setLayout(const RawLayout& l);
   QString path() const;
   void setPath(const QString& path);
-  bool acceptable() const;  // a path and a valid axes code
+  bool acceptable() const;  // a path, a valid axes code and a file size that matches
   // Shows the dialog; the chosen path and layout, or nullopt when cancelled.
   static std::optional<std::pair<QString, RawLayout>> ask(QWidget* parent,
                                                           const QString& startFolder,
                                                           LayoutLookup lookup = {});
+
+ protected:
+  void keyPressEvent(QKeyEvent* event) override;
 
  private:
   void refresh();  // size check, preview and axes check for the current fields
@@ -55,6 +61,12 @@ class RawImportDialog : public QDialog {
   LayoutLookup lookup_;
   QLabel* sizeCheck_;
   QLabel* preview_;
+  QLabel* valueRange_;
+  struct Snapshot {
+    QString path;
+    RawLayout layout;
+    QString axes;
+  } snapshot_;  // the fields when one of them got the focus: what Esc goes back to
 };
 
 }  // namespace voxray::ui
