@@ -90,6 +90,56 @@ class DialogTest : public QObject {
     QCOMPARE(axes->currentText(), QString("LP"));
   }
 
+  void rawDialogOpensOnlyWhatTheSizeMatches() {
+    RawImportDialog d(nullptr, kData);
+    d.show();
+    d.setPath(kData + "/stanford/CThead");  // 113 files of 256 x 256 x 16 bit
+    QPushButton* open = d.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Open);
+    auto* check = d.findChild<QLabel*>("sizeCheck");
+    QVERIFY2(open->isEnabled(), qPrintable(check->text()));
+    d.findChild<QSpinBox*>("dim1")->setValue(250);
+    QVERIFY(!open->isEnabled());
+    QVERIFY2(check->text().contains("3072 bytes too long"), qPrintable(check->text()));
+    d.findChild<QSpinBox*>("dim1")->setValue(256);
+    d.findChild<QSpinBox*>("dim2")->setValue(100);
+    QVERIFY(!open->isEnabled());
+    QVERIFY2(check->text().contains("13 file(s) too many"), qPrintable(check->text()));
+    d.findChild<QSpinBox*>("dim2")->setValue(0);
+    QVERIFY(open->isEnabled());
+    // The preview's values, and the hint that CThead's are not HU until rescaled.
+    d.findChild<QComboBox*>("byteOrder")->setCurrentText("big");
+    auto* range = d.findChild<QLabel*>("valueRange");
+    QVERIFY2(range->text().contains("not HU?"), qPrintable(range->text()));
+    d.findChild<QComboBox*>("axes")->setCurrentText("LPI");
+    saveShot(d, "raw_dialog_letters");
+  }
+
+  void rawDialogEscRevertsTheFieldAndStaysOpen() {
+    RawImportDialog d(nullptr, kData);
+    d.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&d));
+    d.setPath(kData + "/stanford/CThead");
+    auto* dim0 = d.findChild<QSpinBox*>("dim0");
+    dim0->setFocus();
+    QTRY_VERIFY(dim0->hasFocus());
+    dim0->selectAll();
+    QTest::keyClicks(dim0, "300");
+    QCOMPARE(dim0->value(), 300);
+    QTest::keyClick(dim0, Qt::Key_Escape);
+    QVERIFY(d.isVisible());
+    QCOMPARE(d.result(), int(QDialog::Rejected));
+    QCOMPARE(dim0->value(), 256);
+    auto* axes = d.findChild<QComboBox*>("axes");
+    axes->setFocus();
+    QTRY_VERIFY(axes->hasFocus());
+    axes->lineEdit()->selectAll();
+    QTest::keyClicks(axes->lineEdit(), "RL");  // no choice starts so: nothing completes it
+    QCOMPARE(axes->currentText(), QString("RL"));
+    QTest::keyClick(axes->lineEdit(), Qt::Key_Escape);
+    QVERIFY(d.isVisible());
+    QCOMPARE(axes->currentText(), QString("LPS"));
+  }
+
   void rawDialogRestoresSavedLayoutForAFile() {
     RawLayout saved;
     saved.dims = {256, 256, 0};
@@ -216,6 +266,31 @@ class DialogTest : public QObject {
           QVERIFY(!item->text().contains(QString::fromStdString(s.patientName)));
     QVERIFY(d.findChild<QLabel*>("patient")->text().startsWith("Patient: "));
     saveShot(d, "series_picker");
+  }
+
+  // voxray-cli info refuses these by default; the GUI asks, naming the problem, first.
+  void seriesPickerAsksBeforeOpeningWhatIsNoVolume() {
+    for (const char* folder : {"slicecount", "sliceorientation"}) {
+      std::string path = (kData + "/dicom/edge-cases/failing/" + folder).toStdString();
+      std::vector<std::string> asked;
+      auto no = [&](const std::string& q) {
+        asked.push_back(q);
+        return false;
+      };
+      QVERIFY2(!pickSeries(nullptr, path, no).has_value(), folder);
+      QCOMPARE(asked.size(), size_t(1));
+      QVERIFY2(asked[0].find("not a proper 3D volume: only 2 images") != std::string::npos,
+               asked[0].c_str());
+      auto yes = pickSeries(nullptr, path, [](const std::string&) { return true; });
+      QVERIFY(yes.has_value());
+      QVERIFY(!yes->series.empty());
+    }
+    // A proper volume opens without a question.
+    int questions = 0;
+    auto picked = pickSeries(nullptr, (kData + "/dicom/ct-ge-tilt").toStdString(),
+                             [&](const std::string&) { return ++questions > 0; });
+    QVERIFY(picked.has_value());
+    QCOMPARE(questions, 0);
   }
 #endif
 };
