@@ -1,9 +1,9 @@
 #pragma once
 // The raw-stack dialog: dims, sample type, byte order, header offset, spacing, rescale and
 // orientation (an axes code such as LPI), with the expected against the actual file size
-// and a preview slice with patient letters and value range before loading; Open only when
-// the size matches, Esc in a field reverts that field. A file opened before gets its saved layout
-// back.
+// and a preview slice with patient letters and value range before loading. Open only when
+// the size matches; Esc in a field reverts that field. A file opened before gets its saved
+// layout back.
 #include <functional>
 #include <optional>
 #include <utility>

@@ -39,6 +39,11 @@ QString notesText(const SeriesInfo& s) {
   return notes.join("; ");
 }
 
+bool askYes(QWidget* parent, const std::string& question) {
+  return QMessageBox::question(parent, "Not a volume", QString::fromStdString(question)) ==
+         QMessageBox::Yes;
+}
+
 }  // namespace
 
 SeriesPickerDialog::SeriesPickerDialog(QWidget* parent, const std::string& folder)
@@ -176,13 +181,10 @@ std::optional<LoadOptions> pickSeries(QWidget* parent, const std::string& folder
   auto selector = dialog.chosenSelector();
   if (!accepted || !selector) return std::nullopt;
   for (const SeriesInfo& s : dialog.listing().series) {
-    const std::string question = s.selector == *selector ? notVolumeQuestion(s) : std::string();
-    if (question.empty()) continue;
-    const bool yes =
-        confirm ? confirm(question)
-                : QMessageBox::question(parent, "Not a volume", QString::fromStdString(question)) ==
-                      QMessageBox::Yes;
-    if (!yes) return std::nullopt;
+    if (s.selector != *selector) continue;
+    const std::string question = notVolumeQuestion(s);
+    if (!question.empty() && !(confirm ? confirm(question) : askYes(parent, question)))
+      return std::nullopt;
   }
   LoadOptions o;
   o.series = *selector;
