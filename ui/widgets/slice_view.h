@@ -23,8 +23,9 @@ class SliceView : public QWidget {
 
   Orientation orientation() const { return orientation_; }
   const SliceAxes& axes() const { return axes_; }
-  const QImage& sliceImage() const { return image_; }  // one pixel per voxel, W/L applied
-  // Widget position of slice coordinates (u, v) and back.
+  // W/L applied, square pixels of the finer in-plane spacing (renderSlice).
+  const QImage& sliceImage() const { return image_; }
+  // Widget position of slice coordinates (u, v: voxel units, slice_geometry.h) and back.
   QPointF toWidget(double u, double v) const;
   glm::dvec2 toSlice(QPointF widget) const;
   // Hides the cursor readout and file name (screenshots carry no data unless asked).
