@@ -24,6 +24,7 @@ SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crossha
   docConnection_ = doc_.changed.connect([this] {
     zoom_ = 1.0;
     pan_ = {};
+    shown_.reset();
     rebuild();
   });
   crossConnection_ = crosshair_.changed.connect([this] { rebuild(); });
@@ -52,11 +53,17 @@ void SliceView::setAnnotations(bool on) {
 void SliceView::rebuild() {
   if (doc_.empty()) {
     image_ = {};
+    shown_.reset();
   } else {
     const Volume& v = *doc_.volume();
     axes_ = sliceAxes(v.direction, orientation_);
-    image_ = toQImage(
-        renderSlice(v, axes_, crosshair_.sliceOf(axes_), wl_.value(), state_.sliceInterp()));
+    // A crosshair move elsewhere often leaves this view's slice as it was: keep its image
+    // (resampling a large slice takes tens of milliseconds).
+    const Shown now{crosshair_.sliceOf(axes_), wl_.value(), state_.sliceInterp()};
+    if (!shown_ || !now.sameAs(*shown_)) {
+      image_ = toQImage(renderSlice(v, axes_, now.slice, now.wl, now.interp));
+      shown_ = now;
+    }
   }
   update();
 }

@@ -3,6 +3,8 @@
 // and render-state models. Left click/drag moves the crosshair (or a clip-box edge when
 // grabbed), right-drag changes window/level, middle-drag pans, wheel or arrow keys scroll
 // slices, Ctrl+wheel zooms, double-click maximises.
+#include <optional>
+
 #include <QImage>
 #include <QWidget>
 
@@ -58,6 +60,17 @@ class SliceView : public QWidget {
   RenderStateModel& state_;
   SliceAxes axes_;
   QImage image_;
+  // What image_ shows of the document's volume; none after a document change.
+  struct Shown {
+    int slice;
+    WindowLevel wl;
+    Interp interp;
+    bool sameAs(const Shown& o) const {
+      return slice == o.slice && wl.width == o.wl.width && wl.level == o.wl.level &&
+             interp == o.interp;
+    }
+  };
+  std::optional<Shown> shown_;
   double zoom_ = 1.0;
   QPointF pan_;
   Drag drag_ = Drag::None;
