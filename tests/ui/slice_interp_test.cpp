@@ -63,9 +63,10 @@ class SliceInterpTest : public QObject {
     QCOMPARE(int(nearest.size()), 40);
     // Nearest: one grey per slice, each held for 5 rows (superior, the highest, on top).
     QCOMPARE(int(std::set<int>(nearest.begin(), nearest.end()).size()), kSliceCount);
-    for (int y = 0; y < 40; ++y)
-      QCOMPARE(nearest[size_t(y)],
-               int(mapToGrey(100.0 * (kSliceCount - 1 - y / 5), m.windowLevel.value())));
+    for (int y = 0; y < 40; ++y) {
+      const int slice = kSliceCount - 1 - y / 5;
+      QCOMPARE(nearest[size_t(y)], int(mapToGrey(100.0 * slice, m.windowLevel.value())));
+    }
     // Trilinear: a ramp between slice centres, falling by 100 HU every 5 rows; the rows
     // at the slice centres (y = 2, 7, ...) keep the slice's own value.
     for (int y = 3; y < 37; ++y) {
