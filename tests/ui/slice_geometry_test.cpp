@@ -78,7 +78,7 @@ TEST(SliceImage, AppliesWindowAndScreenOrder) {
   v.intercept = -1000;
   v.voxels = {0, 1000, 2000, 1040, 0, 0};  // HU: -1000, 0, 1000 / 40, -1000, -1000
   auto axial = sliceAxes(v.direction, Orientation::Axial);
-  Image img = renderSlice(v, axial, 0, {80, 40});
+  Image img = renderSlice(v, axial, 0, {80, 40}, Interp::Linear);
   ASSERT_EQ(img.width, 3);
   ASSERT_EQ(img.height, 2);
   EXPECT_EQ(img.pixel(0, 0)[0], 0);

@@ -237,3 +237,21 @@ TEST(StudyState, DicomSeriesOpensWithItsWindowOrTheCtDefault) {
   EXPECT_NE(m.windowLevel.source().find("CT default"), std::string::npos);
 }
 #endif
+
+TEST(StudyState, SliceInterpolationIsAPreference) {
+  AppModels m;
+  EXPECT_EQ(m.render.sliceInterp(), Interp::Linear);  // the default: no staircases
+  unsigned heard = 0;
+  m.render.changed.connect([&](unsigned what) { heard = what; });
+  m.render.setSliceInterp(Interp::Nearest);
+  EXPECT_EQ(heard, unsigned(kSlices));  // the slice views hear it; no new 3D frame
+  openStudy(m, phantom(16), "A");
+  EXPECT_EQ(m.render.sliceInterp(), Interp::Nearest);  // carries over to the next study
+  const std::string saved = preferencesText(m.render);
+  EXPECT_NE(saved.find("ui-slice-interp=nearest\n"), std::string::npos) << saved;
+  AppModels restarted;
+  applyPreferences(restarted.render, saved);
+  EXPECT_EQ(restarted.render.sliceInterp(), Interp::Nearest);
+  applyPreferences(restarted.render, "ui-slice-interp=cubic\n");  // bad: kept as it was
+  EXPECT_EQ(restarted.render.sliceInterp(), Interp::Nearest);
+}

@@ -160,8 +160,8 @@ class WidgetTest : public QObject {
     QCOMPARE(models_->crosshair.sliceOf(coronal.axes()), int(s.y));   // y
     QCOMPARE(models_->crosshair.sliceOf(axial.axes()), axialSlice);
     const Volume& v = *models_->document.volume();
-    QImage expected =
-        toQImageForTest(renderSlice(v, coronal.axes(), int(s.y), models_->windowLevel.value()));
+    QImage expected = toQImageForTest(renderSlice(
+        v, coronal.axes(), int(s.y), models_->windowLevel.value(), models_->render.sliceInterp()));
     QCOMPARE(coronal.sliceImage(), expected);
     QVERIFY(coronal.sliceImage() != coronalBefore);
   }

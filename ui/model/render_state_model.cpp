@@ -41,6 +41,11 @@ void RenderStateModel::setQuality(const Quality& q) {
   changed.notify(kQuality);
 }
 
+void RenderStateModel::setSliceInterp(Interp i) {
+  sliceInterp_ = i;
+  changed.notify(kSlices);
+}
+
 void RenderStateModel::setQualityPreset(const std::string& name) {
   Quality q = quality_;
   q.preset = name;
@@ -86,6 +91,7 @@ std::string RenderStateModel::toText() const {
   out << voxray::toText(params_);
   out << "ui-resolution=" << quality_.resolution.x << "," << quality_.resolution.y << "\n";
   out << "ui-quality=" << quality_.preset << "\n";
+  out << "ui-slice-interp=" << voxray::toString(sliceInterp_) << "\n";
   return out.str();
 }
 
@@ -94,6 +100,7 @@ void RenderStateModel::fromText(const std::string& text) {
   std::string line;
   RenderParams p = params_;
   Quality q = quality_;
+  Interp sliceInterp = sliceInterp_;
   while (std::getline(in, line)) {
     auto eq = line.find('=');
     if (eq == std::string::npos) continue;
@@ -104,6 +111,8 @@ void RenderStateModel::fromText(const std::string& text) {
       } else if (key == "ui-quality") {
         if (!value.empty()) findQualityPreset(value);  // throws for an unknown name
         q.preset = value;
+      } else if (key == "ui-slice-interp") {
+        sliceInterp = parseInterp(value);
       } else if (key == "size" || key == "ui-step-scale") {
         // The view decides the size; ui-step-scale was an older version's quality.
       } else {
@@ -115,6 +124,7 @@ void RenderStateModel::fromText(const std::string& text) {
   }
   p.presetShiftHu = std::clamp(p.presetShiftHu, -kPresetShiftLimitHu, kPresetShiftLimitHu);
   params_ = p;
+  sliceInterp_ = sliceInterp;
   setQuality(q);
   changed.notify(kAll);
 }

@@ -1,6 +1,7 @@
 #pragma once
 // What the 3D view shows: the engine's RenderParams (declared once in render_params.h,
-// shared with voxray-cli) plus the workstation's quality choices. Edits go through
+// shared with voxray-cli) plus the workstation's quality choices and the slice views'
+// interpolation. Edits go through
 // update() so every bound widget and the render scheduler hear about them.
 #include <functional>
 #include <map>
@@ -17,7 +18,8 @@ enum Change : unsigned {
   kLight = 1u << 2,
   kAppearance = 1u << 3,  // mode, preset, iso range, gradient, interpolation, colours
   kQuality = 1u << 4,     // resolution and quality preset
-  kAll = 0x1fu,
+  kSlices = 1u << 5,      // the slice views' interpolation: no new 3D frame
+  kAll = 0x3fu,
 };
 
 constexpr double kPresetShiftLimitHu = 1000.0;
@@ -54,6 +56,9 @@ class RenderStateModel {
   // Moves the preset's transfer function along HU (the seed's shift slider), clamped to
   // +-kPresetShiftLimitHu so that a slider and saved state agree on the range.
   void setPresetShift(double hu);
+  // How the slice views reconstruct between voxels (linear unless the user picks nearest).
+  Interp sliceInterp() const { return sliceInterp_; }
+  void setSliceInterp(Interp i);  // notifies kSlices
   // Values by key from the command line, as voxray-cli reads them (applyRenderValues: a
   // preset first, then the values given); --size picks the resolution, and an explicit
   // step, refinement or jitter switches the quality preset to custom so that it wins.
@@ -69,6 +74,7 @@ class RenderStateModel {
  private:
   RenderParams params_;
   Quality quality_;
+  Interp sliceInterp_ = Interp::Linear;
 };
 
 // Whether the transfer-function preset PRESET (by its exact name) was made for MODE; false

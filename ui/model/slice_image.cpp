@@ -1,7 +1,6 @@
 #include "slice_image.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -9,25 +8,44 @@
 
 namespace voxray::ui {
 
-Image renderSlice(const Volume& v, const SliceAxes& a, int slice, const WindowLevel& wl) {
+PlaneGrid slicePlane(const Volume& v, const SliceAxes& a, int slice) {
+  const glm::dvec2 extentMm(v.dims[a.uAxis] * v.spacingMm[a.uAxis],
+                            v.dims[a.vAxis] * v.spacingMm[a.vAxis]);
+  // Square pixels of the finer spacing: a 5 mm axis gets several pixels per voxel to
+  // interpolate, rather than a stretched voxel-sized block.
+  const double pixelMm = std::max({std::min(v.spacingMm[a.uAxis], v.spacingMm[a.vAxis]),
+                                   extentMm.x / kMaxSlicePixels, extentMm.y / kMaxSlicePixels});
+  PlaneGrid g;
+  g.size = glm::max(glm::ivec2(glm::round(extentMm / pixelMm)), glm::ivec2(1));
+  // Pixel centres in slice coordinates (voxel units), mapped like any view position.
+  const glm::dvec2 voxelsPerPixel =
+      glm::dvec2(v.dims[a.uAxis], v.dims[a.vAxis]) / glm::dvec2(g.size);
+  auto at = [&](double x, double y) {
+    return voxelToPatientMm(
+        v, sliceToVoxel(a, v.dims, x * voxelsPerPixel.x, y * voxelsPerPixel.y, slice));
+  };
+  g.originMm = at(0.5, 0.5);
+  const glm::dvec3 u = at(1.5, 0.5) - g.originMm, w = at(0.5, 1.5) - g.originMm;
+  g.spacingMm = {glm::length(u), glm::length(w)};
+  g.uDir = u / g.spacingMm.x;
+  g.vDir = w / g.spacingMm.y;
+  return g;
+}
+
+Image renderSlice(const Volume& v, const SliceAxes& a, int slice, const WindowLevel& wl,
+                  Interp interp) {
   if (v.voxelCount() == 0) return {};
-  int w = v.dims[a.uAxis], h = v.dims[a.vAxis];
-  Image img(w, h);
-  // A table over all stored values turns the per-pixel work into one lookup.
-  std::array<uint8_t, 65536> lut;
-  for (int s = 0; s < 65536; ++s) lut[size_t(s)] = mapToGrey(v.toPhysical(s - 32768), wl);
-  glm::ivec3 voxel(0);
-  voxel[a.nAxis] = std::clamp(slice, 0, v.dims[a.nAxis] - 1);
-  for (int y = 0; y < h; ++y) {
-    voxel[a.vAxis] = a.vFlip ? h - 1 - y : y;
-    for (int x = 0; x < w; ++x) {
-      voxel[a.uAxis] = a.uFlip ? w - 1 - x : x;
-      uint8_t g = lut[size_t(int(v.at(voxel.x, voxel.y, voxel.z)) + 32768)];
+  const PlaneGrid g = slicePlane(v, a, std::clamp(slice, 0, v.dims[a.nAxis] - 1));
+  // Every pixel lies inside the volume: the background is never seen.
+  const std::vector<float> values = samplePlane(v, g, interp, std::numeric_limits<float>::lowest());
+  Image img(g.size.x, g.size.y);
+  for (int y = 0; y < g.size.y; ++y)
+    for (int x = 0; x < g.size.x; ++x) {
+      uint8_t grey = mapToGrey(values[size_t(y) * size_t(g.size.x) + size_t(x)], wl);
       uint8_t* p = img.pixel(x, y);
-      p[0] = p[1] = p[2] = g;
+      p[0] = p[1] = p[2] = grey;
       p[3] = 255;
     }
-  }
   return img;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // A slice of the volume as a grey image with window/level applied, in screen order
-// (see slice_geometry.h). One image pixel per voxel; the view scales by the spacing.
+// (see slice_geometry.h), resampled by the engine (plane_sampler.h) onto square pixels of
+// the smaller in-plane spacing, so that the image has the slice's physical aspect.
 #include "no_qt.h"
 #include "slice_geometry.h"
+#include "voxray/engine/plane_sampler.h"
 #include "voxray/io/image.h"
 #include "window_level.h"
 
@@ -12,8 +14,14 @@ struct Volume;
 
 namespace voxray::ui {
 
-// Width = dims[uAxis], height = dims[vAxis]. An empty image for an empty volume.
-Image renderSlice(const Volume& v, const SliceAxes& axes, int slice, const WindowLevel& wl);
+// The plane a view shows at SLICE: pixels over the whole slice, screen x along axes.uAxis
+// and y along axes.vAxis (flips applied), at most kMaxSlicePixels on a side.
+constexpr int kMaxSlicePixels = 4096;
+PlaneGrid slicePlane(const Volume& v, const SliceAxes& axes, int slice);
+
+// The slice's image (slicePlane's size); an empty image for an empty volume.
+Image renderSlice(const Volume& v, const SliceAxes& axes, int slice, const WindowLevel& wl,
+                  Interp interp);
 
 // Physical value at a voxel (nearest), or NaN outside the volume.
 double sampleValue(const Volume& v, const glm::dvec3& voxel);

@@ -10,7 +10,8 @@ namespace {
 
 constexpr WindowLevel kCtDefaultWindow{400.0, 40.0};
 
-// The quality choice's lines in RenderStateModel::toText: preferences too.
+// The quality choice's and slice interpolation's lines in RenderStateModel::toText:
+// preferences too.
 bool isQualityLine(const std::string& key) { return key.rfind("ui-", 0) == 0; }
 
 // The lines of TEXT (RenderStateModel::toText) that hold preferences.

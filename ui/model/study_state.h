@@ -2,12 +2,12 @@
 // What persists and what belongs to the study on screen, declared once.
 //
 // Preferences survive a restart and carry over from one study to the next: the render
-// parameters in preferenceKeys(), the quality choice (resolution and quality preset) and
-// the window layout (geometry, maximised view: MainWindow). Everything else the
-// workstation holds belongs to the volume on screen: the camera pose, the clip box, the
-// light position, the slice window/level and the crosshair. Opening a volume starts them
-// from that volume's defaults, and they are never saved as preferences (a session file
-// will keep them).
+// parameters in preferenceKeys(), the quality choice (resolution and quality preset), the
+// slice views' interpolation and the window layout (geometry, maximised view: MainWindow).
+// Everything else the workstation holds belongs to the volume on screen: the camera pose,
+// the clip box, the light position, the slice window/level and the crosshair. Opening a
+// volume starts them from that volume's defaults, and they are never saved as preferences
+// (a session file will keep them).
 #include <map>
 #include <memory>
 #include <string>

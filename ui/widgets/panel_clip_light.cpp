@@ -161,7 +161,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   return box;
 }
 
-QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
+QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeView& view) {
   auto* box = new QGroupBox("Slices");
   auto* form = new QFormLayout(box);
   auto* preset = new QComboBox;
@@ -202,6 +202,21 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
   form->addRow("Window", width);
   form->addRow("Level", level);
   form->addRow(source);
+  auto* smooth = new QCheckBox("Interpolate (trilinear)");
+  smooth->setObjectName("sliceInterp");
+  smooth->setToolTip("Off: each voxel is shown as a block (nearest neighbour)");
+  auto refreshSmooth = [smooth, &state] {
+    QSignalBlocker b(smooth);
+    smooth->setChecked(state.sliceInterp() == Interp::Linear);
+  };
+  refreshSmooth();
+  onModelChange<unsigned>(box, state.changed, [refreshSmooth](unsigned what) {
+    if (what & kSlices) refreshSmooth();
+  });
+  QObject::connect(smooth, &QCheckBox::toggled, box, [&state](bool on) {
+    state.setSliceInterp(on ? Interp::Linear : Interp::Nearest);
+  });
+  form->addRow(smooth);
   auto* planes = new QCheckBox("Show planes in 3D view");
   planes->setChecked(view.showPlanes());
   QObject::connect(planes, &QCheckBox::toggled, &view, &VolumeView::setShowPlanes);
@@ -215,7 +230,7 @@ QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
   layout->addWidget(makeRenderGroup(models.render));
   layout->addWidget(makeQualityGroup(models.render));
   layout->addWidget(makeCameraGroup(models.render));
-  layout->addWidget(makeSliceGroup(models.windowLevel, view));
+  layout->addWidget(makeSliceGroup(models.windowLevel, models.render, view));
   layout->addWidget(makeClipGroup(models, view));
   layout->addWidget(makeLightGroup(models, view));
   layout->addStretch();

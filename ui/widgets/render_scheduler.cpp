@@ -29,7 +29,9 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
     emit deviceReady(QString::fromStdString(name));
   };
   worker_ = std::make_unique<RenderWorker>(device.toStdString(), cb, postTo(this));
-  stateConnection_ = state_.changed.connect([this](unsigned) { requestFrame(); });
+  stateConnection_ = state_.changed.connect([this](unsigned what) {
+    if (what != kSlices) requestFrame();  // the slice views' interpolation is not in 3D
+  });
   docConnection_ = doc_.changed.connect([this] {
     sawFullFrame_ = false;
     worker_->setVolume(doc_.volume());

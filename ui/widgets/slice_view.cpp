@@ -24,12 +24,16 @@ SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crossha
   docConnection_ = doc_.changed.connect([this] {
     zoom_ = 1.0;
     pan_ = {};
+    shown_.reset();
     rebuild();
   });
   crossConnection_ = crosshair_.changed.connect([this] { rebuild(); });
   wlConnection_ = wl_.changed.connect([this] { rebuild(); });
   stateConnection_ = state_.changed.connect([this](unsigned what) {
-    if (what & kClip) update();
+    if (what & kSlices)
+      rebuild();
+    else if (what & kClip)
+      update();
   });
   rebuild();
 }
@@ -49,10 +53,17 @@ void SliceView::setAnnotations(bool on) {
 void SliceView::rebuild() {
   if (doc_.empty()) {
     image_ = {};
+    shown_.reset();
   } else {
     const Volume& v = *doc_.volume();
     axes_ = sliceAxes(v.direction, orientation_);
-    image_ = toQImage(renderSlice(v, axes_, crosshair_.sliceOf(axes_), wl_.value()));
+    // A crosshair move elsewhere often leaves this view's slice as it was: keep its image
+    // (resampling a large slice takes tens of milliseconds).
+    const Shown now{crosshair_.sliceOf(axes_), wl_.value(), state_.sliceInterp()};
+    if (!shown_ || !now.sameAs(*shown_)) {
+      image_ = toQImage(renderSlice(v, axes_, now.slice, now.wl, now.interp));
+      shown_ = now;
+    }
   }
   update();
 }
@@ -60,9 +71,9 @@ void SliceView::rebuild() {
 QRectF SliceView::sliceRect() const {
   if (doc_.empty() || image_.isNull()) return {};
   const Volume& v = *doc_.volume();
-  // Pixels are not square when the spacing differs: size the image in millimetres.
-  double wMm = image_.width() * v.spacingMm[axes_.uAxis];
-  double hMm = image_.height() * v.spacingMm[axes_.vAxis];
+  // The slice's size in millimetres (the image has its aspect, renderSlice).
+  double wMm = v.dims[axes_.uAxis] * v.spacingMm[axes_.uAxis];
+  double hMm = v.dims[axes_.vAxis] * v.spacingMm[axes_.vAxis];
   double scale = std::min(width() / wMm, height() / hMm) * zoom_;
   QSizeF s(wMm * scale, hMm * scale);
   QPointF topLeft((width() - s.width()) / 2 + pan_.x(), (height() - s.height()) / 2 + pan_.y());
@@ -72,14 +83,17 @@ QRectF SliceView::sliceRect() const {
 QPointF SliceView::toWidget(double u, double v) const {
   QRectF r = sliceRect();
   if (r.isEmpty()) return {};
-  return {r.left() + u / image_.width() * r.width(), r.top() + v / image_.height() * r.height()};
+  const glm::ivec3& dims = doc_.volume()->dims;
+  return {r.left() + u / dims[axes_.uAxis] * r.width(),
+          r.top() + v / dims[axes_.vAxis] * r.height()};
 }
 
 glm::dvec2 SliceView::toSlice(QPointF p) const {
   QRectF r = sliceRect();
   if (r.isEmpty()) return {0, 0};
-  return {(p.x() - r.left()) / r.width() * image_.width(),
-          (p.y() - r.top()) / r.height() * image_.height()};
+  const glm::ivec3& dims = doc_.volume()->dims;
+  return {(p.x() - r.left()) / r.width() * dims[axes_.uAxis],
+          (p.y() - r.top()) / r.height() * dims[axes_.vAxis]};
 }
 
 int SliceView::pickClipEdge(QPointF p) const {
@@ -117,7 +131,7 @@ void SliceView::paintOverlay(QPainter& p) {
   o.sliceCount = v.dims[axes_.nAxis];
   o.wl = wl_.value();
   o.wlSource = wl_.source();
-  o.mmPerWidgetPixel = image_.width() * v.spacingMm[axes_.uAxis] / sliceRect().width();
+  o.mmPerWidgetPixel = v.dims[axes_.uAxis] * v.spacingMm[axes_.uAxis] / sliceRect().width();
   if (annotations_ && rect().contains(hover_.toPoint())) {
     glm::dvec2 s = toSlice(hover_);
     glm::dvec3 voxel = sliceToVoxel(axes_, v.dims, s.x, s.y, o.slice);

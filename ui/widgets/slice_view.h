@@ -3,6 +3,8 @@
 // and render-state models. Left click/drag moves the crosshair (or a clip-box edge when
 // grabbed), right-drag changes window/level, middle-drag pans, wheel or arrow keys scroll
 // slices, Ctrl+wheel zooms, double-click maximises.
+#include <optional>
+
 #include <QImage>
 #include <QWidget>
 
@@ -23,8 +25,9 @@ class SliceView : public QWidget {
 
   Orientation orientation() const { return orientation_; }
   const SliceAxes& axes() const { return axes_; }
-  const QImage& sliceImage() const { return image_; }  // one pixel per voxel, W/L applied
-  // Widget position of slice coordinates (u, v) and back.
+  // W/L applied, square pixels of the finer in-plane spacing (renderSlice).
+  const QImage& sliceImage() const { return image_; }
+  // Widget position of slice coordinates (u, v: voxel units, slice_geometry.h) and back.
   QPointF toWidget(double u, double v) const;
   glm::dvec2 toSlice(QPointF widget) const;
   // Hides the cursor readout and file name (screenshots carry no data unless asked).
@@ -57,6 +60,17 @@ class SliceView : public QWidget {
   RenderStateModel& state_;
   SliceAxes axes_;
   QImage image_;
+  // What image_ shows of the document's volume; none after a document change.
+  struct Shown {
+    int slice;
+    WindowLevel wl;
+    Interp interp;
+    bool sameAs(const Shown& o) const {
+      return slice == o.slice && wl.width == o.wl.width && wl.level == o.wl.level &&
+             interp == o.interp;
+    }
+  };
+  std::optional<Shown> shown_;
   double zoom_ = 1.0;
   QPointF pan_;
   Drag drag_ = Drag::None;
