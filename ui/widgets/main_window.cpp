@@ -18,6 +18,7 @@
 #include "coupling.h"
 #include "export_dialog.h"
 #include "gui_message.h"
+#include "help_dialogs.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
 #include "series_picker.h"
@@ -29,7 +30,10 @@
 namespace voxray::ui {
 
 MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent)
-    : QMainWindow(parent), models_(models) {
+    : QMainWindow(parent),
+      models_(models),
+      history_(std::make_unique<ViewHistory>(models)),
+      historyListeners_(new QObject(this)) {
   setObjectName("mainWindow");
   setAcceptDrops(true);
   scheduler_ = new RenderScheduler(models.render, models.document, device, this);
@@ -98,12 +102,16 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   connect(loader_, &LoadController::cancelled, this,
           [this] { statusBar()->showMessage("Loading cancelled", 5000); });
   buildMenus();
+  qApp->installEventFilter(this);
   updateTitle();
   onModelChange<>(this, models_.document.changed, [this] { updateTitle(); });
   resize(1400, 900);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  qApp->removeEventFilter(this);
+  delete historyListeners_;
+}
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
@@ -122,6 +130,34 @@ void MainWindow::buildMenus() {
     QWidget* focused = QApplication::focusWidget();
     grid_->toggleMaximised(focused ? focused : volumeView_);
   });
+  QMenu* edit = menuBar()->addMenu("&Edit");
+  QAction* undo =
+      edit->addAction("&Undo view change", QKeySequence::Undo, this, [this] { history_->undo(); });
+  QAction* redo = edit->addAction("&Redo view change", QKeySequence("Ctrl+Shift+Z"), this,
+                                  [this] { history_->redo(); });
+  undo->setToolTip("Undo the last change of camera, clip box, light or window/level");
+  redo->setToolTip("Redo the change last undone");
+  auto enable = [this, undo, redo] {
+    undo->setEnabled(history_->canUndo());
+    redo->setEnabled(history_->canRedo());
+  };
+  enable();
+  onModelChange<>(historyListeners_, history_->changed, enable);
+  menuBar()->insertMenu(view->menuAction(), edit);
+  QMenu* help = menuBar()->addMenu("&Help");
+  help->addAction("&Keyboard shortcuts", QKeySequence::HelpContents, this,
+                  [this] { showShortcuts(this, *menuBar()); });
+  help->addAction("&About Voxray", this, [this] { showAbout(this, deviceLabel_->text()); });
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* e) {
+  // Only presses inside this window: a dialog's clicks are not view changes.
+  auto* w = qobject_cast<QWidget*>(watched);
+  if (w && w->window() == this) {
+    if (e->type() == QEvent::MouseButtonPress) history_->beginGesture();
+    if (e->type() == QEvent::MouseButtonRelease) history_->endGesture();
+  }
+  return QMainWindow::eventFilter(watched, e);
 }
 
 void MainWindow::rebuildRecentMenu() {
