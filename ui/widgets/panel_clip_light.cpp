@@ -59,6 +59,8 @@ QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
     for (int hi = 0; hi < 2; ++hi) {
       auto* s = makeSpin(clip, 100.0);  // fractions shown as percent
       s->setSuffix(" %");
+      s->setToolTip(hi ? "Where the box ends along this axis, in % of the volume's extent"
+                       : "Where the box starts along this axis, in % of the volume's extent");
       bindSpin(
           s, m, kClip,
           [a, hi](const RenderParams& p) { return 100.0 * (hi ? p.clip.hi[a] : p.clip.lo[a]); },
@@ -74,9 +76,11 @@ QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
     }
   }
   auto* reset = new QPushButton("Reset box");
+  reset->setToolTip("Back to the whole volume");
   QObject::connect(reset, &QPushButton::clicked, reset,
                    [&m] { m.update(kClip, [](RenderParams& p) { p.clip = ClipBox{}; }); });
   auto* handles = new QCheckBox("Handles in 3D view");
+  handles->setToolTip("Show the box's edges and face handles (drag a handle to move a face)");
   handles->setChecked(view.showClipHandles());
   QObject::connect(handles, &QCheckBox::toggled, &view, &VolumeView::setShowClipHandles);
   grid->addWidget(reset, 4, 0, 1, 3);
@@ -92,6 +96,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   auto* form = new QFormLayout(box);
   auto* follow = new QCheckBox("Follows the camera");
   follow->setObjectName("lightFollowsCamera");
+  follow->setToolTip("On: the light turns with the camera. Off: it stays fixed to the patient");
   auto refreshFollow = [follow, &m] {
     QSignalBlocker b(follow);
     follow->setChecked(m.params().light.followCamera);
@@ -155,6 +160,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
     form->addRow(t.name, s);
   }
   auto* gizmo = new QCheckBox("Light handle in 3D view");
+  gizmo->setToolTip("Show the light as a sun in the 3D view (drag it to move the light)");
   gizmo->setChecked(view.showLightGizmo());
   QObject::connect(gizmo, &QCheckBox::toggled, &view, &VolumeView::setShowLightGizmo);
   form->addRow(gizmo);
@@ -166,12 +172,15 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
   auto* form = new QFormLayout(box);
   auto* preset = new QComboBox;
   preset->setObjectName("windowLevelPreset");
+  preset->setToolTip("Window/level of the slice views (width/level in HU)");
   preset->addItem("(custom)");
   for (const auto& p : windowLevelPresets())
     preset->addItem(
         QString("%1 (%2/%3)").arg(QString::fromStdString(p.name)).arg(p.wl.width).arg(p.wl.level));
   auto* width = spin(1, 10000, 10, 0);
   auto* level = spin(-3000, 10000, 10, 0);
+  width->setToolTip("Window width of the slice views (right drag in a slice: left-right)");
+  level->setToolTip("Window level (centre) of the slice views (right drag in a slice: up-down)");
   auto* source = new QLabel;
   source->setObjectName("windowLevelSource");
   source->setWordWrap(true);
@@ -203,6 +212,7 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
   form->addRow("Level", level);
   form->addRow(source);
   auto* planes = new QCheckBox("Show planes in 3D view");
+  planes->setToolTip("Outline the three slice planes in the 3D view, in the slice views' colours");
   planes->setChecked(view.showPlanes());
   QObject::connect(planes, &QCheckBox::toggled, &view, &VolumeView::setShowPlanes);
   form->addRow(planes);
