@@ -5,9 +5,12 @@
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
 #include <QComboBox>
+#include <QGroupBox>
 #include <QMenuBar>
 #include <QPainter>
 #include <QScrollArea>
+#include <QScrollBar>
+#include <QToolButton>
 
 #include "help_dialogs.h"
 #include "orientation_marker.h"
@@ -123,6 +126,30 @@ class DesktopTest : public QObject {
       QVERIFY2(!w->toolTip().trimmed().isEmpty(),
                qPrintable(QString("%1 '%2' has no tooltip")
                               .arg(w->metaObject()->className(), w->objectName())));
+  }
+
+  // A maximised window on a 1920x1080 screen (less a title bar and a task bar) shows the
+  // whole panel unscrolled (the light and camera groups folded); the light opens from its
+  // header.
+  void panelFitsA1080ScreenUnscrolled() {
+    window_->resize(1920, 1000);
+    QApplication::processEvents();
+    auto* panel = window_->findChild<QScrollArea*>("controlPanel");
+    QVERIFY(panel);
+    QCOMPARE(panel->verticalScrollBar()->maximum(), 0);
+    auto* light = panel->findChild<QGroupBox*>("LightGroup");
+    auto* header = panel->findChild<QToolButton*>("foldLightGroup");
+    QVERIFY(light && header);
+    QVERIFY(!light->isVisible());
+    QVERIFY(!panel->findChild<QGroupBox*>("CameraGroup")->isVisible());
+    header->click();
+    QVERIFY(light->isVisible());
+    header->click();
+    QVERIFY(!light->isVisible());
+    for (const char* name : {"RenderingGroup", "QualityGroup", "SlicesGroup", "ClipGroup"}) {
+      auto* group = panel->findChild<QGroupBox*>(name);
+      QVERIFY2(group && group->isVisible(), name);
+    }
   }
 
   // Drawn through the engine's camera: from the patient's left-front (azimuth 45) the L arm

@@ -1,5 +1,7 @@
 // Clip box, light and slice display controls, and the panel that stacks all groups.
 #include <array>
+#include <iterator>
+#include <utility>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -7,6 +9,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include "clip_box_math.h"
@@ -27,6 +30,35 @@ QDoubleSpinBox* spin(double lo, double hi, double step, int decimals) {
   s->setDecimals(decimals);
   s->setKeyboardTracking(false);
   return s;
+}
+
+// GROUP under a header that folds it away, so that the panel fits a 1080-line screen with
+// the groups not in use folded. The whole box hides: rows the group itself shows or hides
+// (by mode) keep their own state.
+QWidget* foldable(QGroupBox* group, bool open) {
+  auto* section = new QWidget;
+  auto* layout = new QVBoxLayout(section);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(0);
+  auto* header = new QToolButton;
+  header->setObjectName("fold" + group->objectName());
+  header->setText(group->title());
+  header->setToolTip(QString("Show or hide the %1 controls").arg(group->title()));
+  header->setCheckable(true);
+  header->setChecked(open);
+  header->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  header->setAutoRaise(true);
+  header->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+  group->setTitle("");
+  auto show = [header, group](bool on) {
+    header->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+    group->setVisible(on);
+  };
+  show(open);
+  QObject::connect(header, &QToolButton::toggled, group, show);
+  layout->addWidget(header);
+  layout->addWidget(group);
+  return section;
 }
 
 }  // namespace
@@ -222,12 +254,17 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, VolumeView& view) {
 QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
   auto* column = new QWidget;
   auto* layout = new QVBoxLayout(column);
-  layout->addWidget(makeRenderGroup(models.render));
-  layout->addWidget(makeQualityGroup(models.render));
-  layout->addWidget(makeCameraGroup(models.render));
-  layout->addWidget(makeSliceGroup(models.windowLevel, view));
-  layout->addWidget(makeClipGroup(models, view));
-  layout->addWidget(makeLightGroup(models, view));
+  // Folded at start: the light (set once and left) and the standard views (the mouse and R
+  // do the same), so that the rest fits 1920x1080 unscrolled.
+  const std::pair<QGroupBox*, bool> groups[] = {
+      {makeRenderGroup(models.render), true},  {makeQualityGroup(models.render), true},
+      {makeCameraGroup(models.render), false}, {makeSliceGroup(models.windowLevel, view), true},
+      {makeClipGroup(models, view), true},     {makeLightGroup(models, view), false}};
+  const char* names[] = {"Rendering", "Quality", "Camera", "Slices", "Clip", "Light"};
+  for (size_t i = 0; i < std::size(groups); ++i) {
+    groups[i].first->setObjectName(QString(names[i]) + "Group");
+    layout->addWidget(foldable(groups[i].first, groups[i].second));
+  }
   layout->addStretch();
   auto* scroll = new QScrollArea;
   scroll->setObjectName("controlPanel");
