@@ -1,7 +1,5 @@
 #include "view_history.h"
 
-#include <utility>
-
 namespace voxray::ui {
 
 namespace {
@@ -87,7 +85,7 @@ void ViewHistory::apply(const ViewSnapshot& s) {
 void ViewHistory::undo() {
   if (undo_.empty()) return;
   redo_.push_back(current_);
-  ViewSnapshot s = std::move(undo_.back());
+  ViewSnapshot s = undo_.back();
   undo_.pop_back();
   apply(s);
 }
@@ -95,7 +93,7 @@ void ViewHistory::undo() {
 void ViewHistory::redo() {
   if (redo_.empty()) return;
   undo_.push_back(current_);
-  ViewSnapshot s = std::move(redo_.back());
+  ViewSnapshot s = redo_.back();
   redo_.pop_back();
   apply(s);
 }
