@@ -152,6 +152,25 @@ class DesktopTest : public QObject {
     }
   }
 
+  // View → Theme: Dark and Light override the platform's palette, System goes back to it.
+  void themeMenuSwitchesPaletteAndBack() {
+    const QPalette system = QApplication::palette();
+    auto pick = [this](const char* name) {
+      auto* a = window_->menuBar()->findChild<QAction*>(QString("theme") + name);
+      QVERIFY2(a, name);
+      a->trigger();
+      QVERIFY(a->isChecked());
+    };
+    pick("Dark");
+    QVERIFY(QApplication::palette().color(QPalette::Window).lightness() < 80);
+    QVERIFY(QApplication::palette().color(QPalette::WindowText).lightness() > 180);
+    pick("Light");
+    QVERIFY(QApplication::palette().color(QPalette::Window).lightness() > 180);
+    pick("System");
+    QCOMPARE(QApplication::palette().color(QPalette::Window), system.color(QPalette::Window));
+    QCOMPARE(QApplication::palette().color(QPalette::Text), system.color(QPalette::Text));
+  }
+
   // Drawn through the engine's camera: from the patient's left-front (azimuth 45) the L arm
   // comes towards the viewer on the right, drawn bright; R goes away on the left, dimmed.
   // From above-front (elevation 30) S comes towards the viewer, at the top.

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -25,6 +26,7 @@
 #include "settings_store.h"
 #include "slice_view.h"
 #include "study_state.h"
+#include "theme.h"
 #include "volume_view.h"
 
 namespace voxray::ui {
@@ -130,6 +132,18 @@ void MainWindow::buildMenus() {
     QWidget* focused = QApplication::focusWidget();
     grid_->toggleMaximised(focused ? focused : volumeView_);
   });
+  QMenu* theme = view->addMenu("&Theme");
+  auto* themes = new QActionGroup(theme);
+  for (const QString& name : themeNames()) {
+    QAction* a = theme->addAction(name, this, [this, name] {
+      theme_ = name;
+      applyTheme(name);
+    });
+    a->setCheckable(true);
+    a->setChecked(name == theme_);
+    a->setObjectName("theme" + name);
+    themes->addAction(a);
+  }
   QMenu* edit = menuBar()->addMenu("&Edit");
   QAction* undo =
       edit->addAction("&Undo view change", QKeySequence::Undo, this, [this] { history_->undo(); });
@@ -237,6 +251,9 @@ void MainWindow::restoreSettings() {
   QSettings s;
   restoreGeometry(s.value("window/geometry").toByteArray());
   grid_->setMaximised(s.value("window/maximisedView", -1).toInt());
+  theme_ = s.value("window/theme", themeNames().front()).toString();
+  applyTheme(theme_);
+  for (QAction* a : menuBar()->findChildren<QAction*>("theme" + theme_)) a->setChecked(true);
   loadModelSettings(s, models_);
 }
 
@@ -244,6 +261,7 @@ void MainWindow::closeEvent(QCloseEvent* e) {
   QSettings s;
   s.setValue("window/geometry", saveGeometry());
   s.setValue("window/maximisedView", grid_->maximisedIndex());
+  s.setValue("window/theme", theme_);
   saveModelSettings(s, models_);
   e->accept();
 }

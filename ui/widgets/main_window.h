@@ -75,6 +75,7 @@ class MainWindow : public QMainWindow {
   QLabel* fpsLabel_;
   QLabel* deviceLabel_;
   QMenu* recentMenu_ = nullptr;
+  QString theme_ = "System";  // View → Theme, saved with the window layout
   std::unique_ptr<ViewHistory> history_;
   // Owns the connections to history_; deleted before history_ (children go after members).
   QObject* historyListeners_;
