@@ -61,26 +61,20 @@ QImage markerImage(double azimuth, double elevation) {
 class DesktopTest : public QObject {
   Q_OBJECT
   test::PhantomWindow fixture_;
-  AppModels* models_ = nullptr;
-  MainWindow* window_ = nullptr;
 
  private slots:
-  void init() {
-    QVERIFY(fixture_.start());
-    models_ = fixture_.models.get();
-    window_ = fixture_.window.get();
-  }
+  void init() { QVERIFY(fixture_.start()); }
   void cleanup() { fixture_.stop(); }
 
   void undoRedoTakeBackADragAsOneStep() {
-    QAction* undo = menuAction(*window_->menuBar(), "Undo view change");
-    QAction* redo = menuAction(*window_->menuBar(), "Redo view change");
+    QAction* undo = menuAction(*fixture_.window->menuBar(), "Undo view change");
+    QAction* redo = menuAction(*fixture_.window->menuBar(), "Redo view change");
     QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
     QCOMPARE(redo->shortcut(), QKeySequence("Ctrl+Shift+Z"));
     QVERIFY(!undo->isEnabled());
-    const double zoom = models_->render.params().camera.zoom;
+    const double zoom = fixture_.models->render.params().camera.zoom;
     // A right drag zooms, one model change per move; the whole drag is one step.
-    QWidget* view = &window_->volumeView();
+    QWidget* view = &fixture_.window->volumeView();
     QPoint from(view->width() / 2, view->height() / 2);
     QTest::mousePress(view, Qt::RightButton, {}, from);
     for (int i = 1; i <= 6; ++i) {
@@ -89,23 +83,23 @@ class DesktopTest : public QObject {
       QApplication::sendEvent(view, &move);
     }
     QTest::mouseRelease(view, Qt::RightButton, {}, from - QPoint(0, 30));
-    const double zoomed = models_->render.params().camera.zoom;
+    const double zoomed = fixture_.models->render.params().camera.zoom;
     QVERIFY2(zoomed > zoom * 1.2, qPrintable(QString::number(zoomed)));
     QVERIFY(undo->isEnabled());
     undo->trigger();
-    QCOMPARE(models_->render.params().camera.zoom, zoom);
+    QCOMPARE(fixture_.models->render.params().camera.zoom, zoom);
     QVERIFY(!undo->isEnabled());
     QVERIFY(redo->isEnabled());
     redo->trigger();
-    QCOMPARE(models_->render.params().camera.zoom, zoomed);
+    QCOMPARE(fixture_.models->render.params().camera.zoom, zoomed);
   }
 
   void helpListsShortcutsAndAbout() {
-    QString shortcuts = shortcutsHtml(*window_->menuBar());
+    QString shortcuts = shortcutsHtml(*fixture_.window->menuBar());
     for (const char* expected : {"Ctrl+Z", "Ctrl+Shift+Z", "Ctrl+E", "Export screenshot",
                                  "Undo view change", "Ctrl+wheel", "reset the camera"})
       QVERIFY2(shortcuts.contains(expected), expected);
-    QVERIFY(menuAction(*window_->menuBar(), "About Voxray"));
+    QVERIFY(menuAction(*fixture_.window->menuBar(), "About Voxray"));
     QString about = aboutHtml("Test device 7");
     QVERIFY(about.contains("Test device 7"));
     QVERIFY(about.contains(QApplication::applicationVersion()));
@@ -114,7 +108,7 @@ class DesktopTest : public QObject {
   }
 
   void everyPanelControlHasATooltip() {
-    auto* panel = window_->findChild<QScrollArea*>("controlPanel");
+    auto* panel = fixture_.window->findChild<QScrollArea*>("controlPanel");
     QVERIFY(panel);
     QList<QWidget*> controls;
     for (QWidget* w : panel->widget()->findChildren<QWidget*>())
@@ -132,9 +126,9 @@ class DesktopTest : public QObject {
   // whole panel unscrolled (the light and camera groups folded); the light opens from its
   // header.
   void panelFitsA1080ScreenUnscrolled() {
-    window_->resize(1920, 1000);
+    fixture_.window->resize(1920, 1000);
     QApplication::processEvents();
-    auto* panel = window_->findChild<QScrollArea*>("controlPanel");
+    auto* panel = fixture_.window->findChild<QScrollArea*>("controlPanel");
     QVERIFY(panel);
     QCOMPARE(panel->verticalScrollBar()->maximum(), 0);
     auto* light = panel->findChild<QGroupBox*>("LightGroup");
@@ -156,7 +150,7 @@ class DesktopTest : public QObject {
   void themeMenuSwitchesPaletteAndBack() {
     const QPalette system = QApplication::palette();
     auto pick = [this](const char* name) {
-      auto* a = window_->menuBar()->findChild<QAction*>(QString("theme") + name);
+      auto* a = fixture_.window->menuBar()->findChild<QAction*>(QString("theme") + name);
       QVERIFY2(a, name);
       a->trigger();
       QVERIFY(a->isChecked());

@@ -82,20 +82,16 @@ void ViewHistory::apply(const ViewSnapshot& s) {
   changed.notify();
 }
 
-void ViewHistory::undo() {
-  if (undo_.empty()) return;
-  redo_.push_back(current_);
-  ViewSnapshot s = undo_.back();
-  undo_.pop_back();
+void ViewHistory::step(std::vector<ViewSnapshot>& from, std::vector<ViewSnapshot>& to) {
+  if (from.empty()) return;
+  to.push_back(current_);
+  ViewSnapshot s = from.back();
+  from.pop_back();
   apply(s);
 }
 
-void ViewHistory::redo() {
-  if (redo_.empty()) return;
-  undo_.push_back(current_);
-  ViewSnapshot s = redo_.back();
-  redo_.pop_back();
-  apply(s);
-}
+void ViewHistory::undo() { step(undo_, redo_); }
+
+void ViewHistory::redo() { step(redo_, undo_); }
 
 }  // namespace voxray::ui

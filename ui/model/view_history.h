@@ -49,6 +49,8 @@ class ViewHistory {
   void onChange();
   void restart();
   void apply(const ViewSnapshot& s);
+  // Moves the current state onto TO and goes back to the last of FROM.
+  void step(std::vector<ViewSnapshot>& from, std::vector<ViewSnapshot>& to);
 
   AppModels& m_;
   ViewSnapshot current_;
