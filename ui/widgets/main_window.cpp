@@ -165,11 +165,13 @@ void MainWindow::buildMenus() {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* e) {
-  // Only presses inside this window: a dialog's clicks are not view changes.
-  auto* w = qobject_cast<QWidget*>(watched);
-  if (w && w->window() == this) {
-    if (e->type() == QEvent::MouseButtonPress) history_->beginGesture();
-    if (e->type() == QEvent::MouseButtonRelease) history_->endGesture();
+  // Gestures start by presses inside this window only (a dialog's clicks are not view
+  // changes) but end at any release: a press on the menu bar is released in the menu.
+  if (e->type() == QEvent::MouseButtonPress) {
+    auto* w = qobject_cast<QWidget*>(watched);
+    if (w && w->window() == this) history_->beginGesture();
+  } else if (e->type() == QEvent::MouseButtonRelease) {
+    history_->endGesture();
   }
   return QMainWindow::eventFilter(watched, e);
 }
