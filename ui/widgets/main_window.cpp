@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -18,18 +19,23 @@
 #include "coupling.h"
 #include "export_dialog.h"
 #include "gui_message.h"
+#include "help_dialogs.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
 #include "series_picker.h"
 #include "settings_store.h"
 #include "slice_view.h"
 #include "study_state.h"
+#include "theme.h"
 #include "volume_view.h"
 
 namespace voxray::ui {
 
 MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent)
-    : QMainWindow(parent), models_(models) {
+    : QMainWindow(parent),
+      models_(models),
+      history_(std::make_unique<ViewHistory>(models)),
+      historyListeners_(new QObject(this)) {
   setObjectName("mainWindow");
   setAcceptDrops(true);
   scheduler_ = new RenderScheduler(models.render, models.document, device, this);
@@ -98,12 +104,16 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   connect(loader_, &LoadController::cancelled, this,
           [this] { statusBar()->showMessage("Loading cancelled", 5000); });
   buildMenus();
+  qApp->installEventFilter(this);
   updateTitle();
   onModelChange<>(this, models_.document.changed, [this] { updateTitle(); });
   resize(1400, 900);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  qApp->removeEventFilter(this);
+  delete historyListeners_;
+}
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
@@ -122,6 +132,48 @@ void MainWindow::buildMenus() {
     QWidget* focused = QApplication::focusWidget();
     grid_->toggleMaximised(focused ? focused : volumeView_);
   });
+  QMenu* theme = view->addMenu("&Theme");
+  auto* themes = new QActionGroup(theme);
+  for (const QString& name : themeNames()) {
+    QAction* a = theme->addAction(name, this, [this, name] {
+      theme_ = name;
+      applyTheme(name);
+    });
+    a->setCheckable(true);
+    a->setChecked(name == theme_);
+    a->setObjectName("theme" + name);
+    themes->addAction(a);
+  }
+  QMenu* edit = menuBar()->addMenu("&Edit");
+  QAction* undo =
+      edit->addAction("&Undo view change", QKeySequence::Undo, this, [this] { history_->undo(); });
+  QAction* redo = edit->addAction("&Redo view change", QKeySequence("Ctrl+Shift+Z"), this,
+                                  [this] { history_->redo(); });
+  undo->setToolTip("Undo the last change of camera, clip box, light or window/level");
+  redo->setToolTip("Redo the change last undone");
+  auto enable = [this, undo, redo] {
+    undo->setEnabled(history_->canUndo());
+    redo->setEnabled(history_->canRedo());
+  };
+  enable();
+  onModelChange<>(historyListeners_, history_->changed, enable);
+  menuBar()->insertMenu(view->menuAction(), edit);
+  QMenu* help = menuBar()->addMenu("&Help");
+  help->addAction("&Keyboard shortcuts", QKeySequence::HelpContents, this,
+                  [this] { showShortcuts(this, *menuBar()); });
+  help->addAction("&About Voxray", this, [this] { showAbout(this, deviceLabel_->text()); });
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* e) {
+  // Gestures start by presses inside this window only (a dialog's clicks are not view
+  // changes) but end at any release: a press on the menu bar is released in the menu.
+  if (e->type() == QEvent::MouseButtonPress) {
+    auto* w = qobject_cast<QWidget*>(watched);
+    if (w && w->window() == this) history_->beginGesture();
+  } else if (e->type() == QEvent::MouseButtonRelease) {
+    history_->endGesture();
+  }
+  return QMainWindow::eventFilter(watched, e);
 }
 
 void MainWindow::rebuildRecentMenu() {
@@ -201,6 +253,9 @@ void MainWindow::restoreSettings() {
   QSettings s;
   restoreGeometry(s.value("window/geometry").toByteArray());
   grid_->setMaximised(s.value("window/maximisedView", -1).toInt());
+  theme_ = s.value("window/theme", themeNames().front()).toString();
+  applyTheme(theme_);
+  for (QAction* a : menuBar()->findChildren<QAction*>("theme" + theme_)) a->setChecked(true);
   loadModelSettings(s, models_);
 }
 
@@ -208,6 +263,7 @@ void MainWindow::closeEvent(QCloseEvent* e) {
   QSettings s;
   s.setValue("window/geometry", saveGeometry());
   s.setValue("window/maximisedView", grid_->maximisedIndex());
+  s.setValue("window/theme", theme_);
   saveModelSettings(s, models_);
   e->accept();
 }

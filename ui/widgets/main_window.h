@@ -4,6 +4,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 
 #include <QLabel>
@@ -15,6 +16,7 @@
 #include "render_scheduler.h"
 #include "status_text.h"
 #include "view_grid.h"
+#include "view_history.h"
 
 namespace voxray::ui {
 
@@ -31,6 +33,7 @@ class MainWindow : public QMainWindow {
   SliceView& sliceView(int i) { return *slices_[size_t(i)]; }  // axial, coronal, sagittal
   RenderScheduler& scheduler() { return *scheduler_; }
   LoadController& loader() { return *loader_; }
+  ViewHistory& history() { return *history_; }
   ViewGrid& grid() { return *grid_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
@@ -48,6 +51,8 @@ class MainWindow : public QMainWindow {
   void volumeShown();  // a loaded volume became the document
 
  protected:
+  // Every mouse press to release in this window is one undo step (a drag, a slider pulled).
+  bool eventFilter(QObject* watched, QEvent* e) override;
   void closeEvent(QCloseEvent*) override;
   void dragEnterEvent(QDragEnterEvent*) override;
   void dropEvent(QDropEvent*) override;
@@ -70,6 +75,10 @@ class MainWindow : public QMainWindow {
   QLabel* fpsLabel_;
   QLabel* deviceLabel_;
   QMenu* recentMenu_ = nullptr;
+  QString theme_ = "System";  // View → Theme, saved with the window layout
+  std::unique_ptr<ViewHistory> history_;
+  // Owns the connections to history_; deleted before history_ (children go after members).
+  QObject* historyListeners_;
   FrameStats stats_;
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded

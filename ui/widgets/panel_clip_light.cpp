@@ -1,5 +1,7 @@
 // Clip box, light and slice display controls, and the panel that stacks all groups.
 #include <array>
+#include <iterator>
+#include <utility>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -7,6 +9,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include "clip_box_math.h"
@@ -27,6 +30,35 @@ QDoubleSpinBox* spin(double lo, double hi, double step, int decimals) {
   s->setDecimals(decimals);
   s->setKeyboardTracking(false);
   return s;
+}
+
+// GROUP under a header that folds it away, so that the panel fits a 1080-line screen with
+// the groups not in use folded. The whole box hides: rows the group itself shows or hides
+// (by mode) keep their own state.
+QWidget* foldable(QGroupBox* group, bool open) {
+  auto* section = new QWidget;
+  auto* layout = new QVBoxLayout(section);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(0);
+  auto* header = new QToolButton;
+  header->setObjectName("fold" + group->objectName());
+  header->setText(group->title());
+  header->setToolTip(QString("Show or hide the %1 controls").arg(group->title()));
+  header->setCheckable(true);
+  header->setChecked(open);
+  header->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  header->setAutoRaise(true);
+  header->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+  group->setTitle("");
+  auto show = [header, group](bool on) {
+    header->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+    group->setVisible(on);
+  };
+  show(open);
+  QObject::connect(header, &QToolButton::toggled, group, show);
+  layout->addWidget(header);
+  layout->addWidget(group);
+  return section;
 }
 
 }  // namespace
@@ -59,6 +91,8 @@ QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
     for (int hi = 0; hi < 2; ++hi) {
       auto* s = makeSpin(clip, 100.0);  // fractions shown as percent
       s->setSuffix(" %");
+      s->setToolTip(hi ? "Where the box ends along this axis, in % of the volume's extent"
+                       : "Where the box starts along this axis, in % of the volume's extent");
       bindSpin(
           s, m, kClip,
           [a, hi](const RenderParams& p) { return 100.0 * (hi ? p.clip.hi[a] : p.clip.lo[a]); },
@@ -74,9 +108,11 @@ QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
     }
   }
   auto* reset = new QPushButton("Reset box");
+  reset->setToolTip("Back to the whole volume");
   QObject::connect(reset, &QPushButton::clicked, reset,
                    [&m] { m.update(kClip, [](RenderParams& p) { p.clip = ClipBox{}; }); });
   auto* handles = new QCheckBox("Handles in 3D view");
+  handles->setToolTip("Show the box's edges and face handles (drag a handle to move a face)");
   handles->setChecked(view.showClipHandles());
   QObject::connect(handles, &QCheckBox::toggled, &view, &VolumeView::setShowClipHandles);
   grid->addWidget(reset, 4, 0, 1, 3);
@@ -92,6 +128,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   auto* form = new QFormLayout(box);
   auto* follow = new QCheckBox("Follows the camera");
   follow->setObjectName("lightFollowsCamera");
+  follow->setToolTip("On: the light turns with the camera. Off: it stays fixed to the patient");
   auto refreshFollow = [follow, &m] {
     QSignalBlocker b(follow);
     follow->setChecked(m.params().light.followCamera);
@@ -155,6 +192,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
     form->addRow(t.name, s);
   }
   auto* gizmo = new QCheckBox("Light handle in 3D view");
+  gizmo->setToolTip("Show the light as a sun in the 3D view (drag it to move the light)");
   gizmo->setChecked(view.showLightGizmo());
   QObject::connect(gizmo, &QCheckBox::toggled, &view, &VolumeView::setShowLightGizmo);
   form->addRow(gizmo);
@@ -166,12 +204,15 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeV
   auto* form = new QFormLayout(box);
   auto* preset = new QComboBox;
   preset->setObjectName("windowLevelPreset");
+  preset->setToolTip("Window/level of the slice views (width/level in HU)");
   preset->addItem("(custom)");
   for (const auto& p : windowLevelPresets())
     preset->addItem(
         QString("%1 (%2/%3)").arg(QString::fromStdString(p.name)).arg(p.wl.width).arg(p.wl.level));
   auto* width = spin(1, 10000, 10, 0);
   auto* level = spin(-3000, 10000, 10, 0);
+  width->setToolTip("Window width of the slice views (right drag in a slice: left-right)");
+  level->setToolTip("Window level (centre) of the slice views (right drag in a slice: up-down)");
   auto* source = new QLabel;
   source->setObjectName("windowLevelSource");
   source->setWordWrap(true);
@@ -218,6 +259,7 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeV
   });
   form->addRow(smooth);
   auto* planes = new QCheckBox("Show planes in 3D view");
+  planes->setToolTip("Outline the three slice planes in the 3D view, in the slice views' colours");
   planes->setChecked(view.showPlanes());
   QObject::connect(planes, &QCheckBox::toggled, &view, &VolumeView::setShowPlanes);
   form->addRow(planes);
@@ -227,12 +269,20 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeV
 QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
   auto* column = new QWidget;
   auto* layout = new QVBoxLayout(column);
-  layout->addWidget(makeRenderGroup(models.render));
-  layout->addWidget(makeQualityGroup(models.render));
-  layout->addWidget(makeCameraGroup(models.render));
-  layout->addWidget(makeSliceGroup(models.windowLevel, models.render, view));
-  layout->addWidget(makeClipGroup(models, view));
-  layout->addWidget(makeLightGroup(models, view));
+  // Folded at start: the light (set once and left) and the standard views (the mouse and R
+  // do the same), so that the rest fits 1920x1080 unscrolled.
+  const std::pair<QGroupBox*, bool> groups[] = {
+      {makeRenderGroup(models.render), true},
+      {makeQualityGroup(models.render), true},
+      {makeCameraGroup(models.render), false},
+      {makeSliceGroup(models.windowLevel, models.render, view), true},
+      {makeClipGroup(models, view), true},
+      {makeLightGroup(models, view), false}};
+  const char* names[] = {"Rendering", "Quality", "Camera", "Slices", "Clip", "Light"};
+  for (size_t i = 0; i < std::size(groups); ++i) {
+    groups[i].first->setObjectName(QString(names[i]) + "Group");
+    layout->addWidget(foldable(groups[i].first, groups[i].second));
+  }
   layout->addStretch();
   auto* scroll = new QScrollArea;
   scroll->setObjectName("controlPanel");

@@ -79,6 +79,7 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   // for something not rendered. The preset's name is each item's data.
   auto* preset = new QComboBox;
   preset->setObjectName("preset");
+  preset->setToolTip("Transfer-function preset: which HU ranges show, in which colours");
   auto refreshPreset = [preset, &m] {
     QSignalBlocker block(preset);
     preset->clear();
@@ -165,6 +166,7 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
   static const QList<QSize> sizes = {{0, 0}, {512, 384}, {640, 480}, {800, 600}, {1024, 768}};
   auto* resolution = new QComboBox;
   resolution->setObjectName("resolution");
+  resolution->setToolTip("Image size of the 3D frames (window size: as large as the view)");
   for (QSize s : sizes)
     resolution->addItem(QString::fromStdString(resolutionLabel({s.width(), s.height()})));
 
@@ -217,6 +219,8 @@ QGroupBox* makeCameraGroup(RenderStateModel& m) {
   int i = 0;
   for (StandardView v : views) {
     auto* b = new QPushButton(toString(v));
+    b->setToolTip(
+        QString("Look at the patient from the %1 side").arg(QString(toString(v)).toLower()));
     QObject::connect(b, &QPushButton::clicked, b, [&m, v] {
       m.update(kCamera, [v](RenderParams& p) { setStandardView(p.camera, v); });
     });
@@ -224,6 +228,7 @@ QGroupBox* makeCameraGroup(RenderStateModel& m) {
     ++i;
   }
   auto* reset = new QPushButton("Reset view");
+  reset->setToolTip("Front view of the whole volume (R in the 3D view)");
   QObject::connect(reset, &QPushButton::clicked, reset,
                    [&m] { m.update(kCamera, [](RenderParams& p) { resetCamera(p.camera); }); });
   grid->addWidget(reset, 2, 0, 1, 3);

@@ -13,7 +13,8 @@
 
 namespace voxray::ui {
 
-// The labels' titles, with their names as item data.
+// The labels' titles, with their names as item data. The Spec overloads also take the
+// tooltip from the spec's help (the text voxray-cli prints for the flag).
 QComboBox* makeCombo(const std::string& key, const ParamDomain& domain);
 // Shows value * SCALE (100: fractions as percent). An exclusive end moves in by the smallest
 // step shown; an open end takes the domain's uiMin or uiMax.
@@ -21,11 +22,15 @@ QDoubleSpinBox* makeSpin(const std::string& key, const ParamDomain& domain, doub
 
 template <class Target>
 QComboBox* makeCombo(const Spec<Target>& spec) {
-  return makeCombo(spec.key, spec.domain);
+  QComboBox* combo = makeCombo(spec.key, spec.domain);
+  combo->setToolTip(QString::fromStdString(spec.help));
+  return combo;
 }
 template <class Target>
 QDoubleSpinBox* makeSpin(const Spec<Target>& spec, double scale = 1.0) {
-  return makeSpin(spec.key, spec.domain, scale);
+  QDoubleSpinBox* spin = makeSpin(spec.key, spec.domain, scale);
+  spin->setToolTip(QString::fromStdString(spec.help));
+  return spin;
 }
 
 // A combo box for the render parameter KEY (an enumeration), bound to M through the spec's

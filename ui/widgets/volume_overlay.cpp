@@ -1,10 +1,12 @@
 #include "volume_overlay.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 
 #include "clip_box_math.h"
 #include "light_gizmo.h"
+#include "orientation_marker.h"
 #include "slice_geometry.h"
 #include "voxray/io/volume.h"
 
@@ -75,6 +77,26 @@ void drawLightHandle(QPainter& p, const Volume& v, const RenderParams& params,
     QLineF l = QLineF::fromPolar(kHandleRadius + 9, ray * 45.0);
     QLineF inner = QLineF::fromPolar(kHandleRadius + 5, ray * 45.0);
     p.drawLine(*handle + inner.p2(), *handle + l.p2());
+  }
+}
+
+void drawOrientationMarker(QPainter& p, const ViewGeometry& g, QSizeF size) {
+  const double arm = std::clamp(std::min(size.width(), size.height()) * 0.06, 18.0, 40.0);
+  const QPointF centre(arm + 14.0, size.height() - arm - 14.0);
+  for (const MarkerAxis& a : orientationMarker(g)) {
+    // The slice planes' colours: the L-R axis is the sagittal plane's normal, and so on.
+    const int axis = a.letter == 'L' || a.letter == 'R'   ? 0
+                     : a.letter == 'P' || a.letter == 'A' ? 1
+                                                          : 2;
+    QColor c = planeColor(axis);
+    if (a.towards < 0) c = c.darker(170);  // pointing away: behind the others
+    const QPointF tip = centre + QPointF(a.tip.x, a.tip.y) * arm;
+    p.setPen(QPen(c, 2.0));
+    p.drawLine(centre, tip);
+    if (glm::length(a.tip) < 0.3) continue;  // end-on: the letter would sit on the centre
+    const QPointF label = centre + QPointF(a.tip.x, a.tip.y) * (arm + 9.0);
+    p.drawText(QRectF(label.x() - 8.0, label.y() - 8.0, 16.0, 16.0), Qt::AlignCenter,
+               QString(QChar(a.letter)));
   }
 }
 

@@ -15,6 +15,10 @@ void drawLightHandle(QPainter& p, const Volume& v, const RenderParams& params,
 void drawCrosshairPlanes(QPainter& p, const Volume& v, const glm::ivec3& voxel,
                          const ViewProjection& view);
 
+// The patient axes (orientationMarker) as labelled arrows in the lower left corner of a view
+// of SIZE pixels.
+void drawOrientationMarker(QPainter& p, const ViewGeometry& g, QSizeF size);
+
 // The colours the slice views use for their frames, so the 3D planes can be matched.
 QColor planeColor(int normalAxis);
 

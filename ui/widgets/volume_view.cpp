@@ -86,6 +86,7 @@ void VolumeView::paintEvent(QPaintEvent*) {
   if (showPlanes_) drawCrosshairPlanes(painter, v, crosshair_.voxel(), *proj);
   if (showClip_) drawClipBox(painter, v, state_.params().clip, *proj, dragFace_);
   if (showLight_) drawLightHandle(painter, v, state_.params(), *proj, drag_ == Drag::Light);
+  drawOrientationMarker(painter, proj->g, r.size());
 }
 
 void VolumeView::resizeEvent(QResizeEvent*) { scheduler_.setViewSize(size()); }

@@ -1,0 +1,186 @@
+// Issue 18 item 11, what every desktop viewer has: undo/redo through the Edit menu with a
+// drag as one step, Help's shortcuts and About, a tooltip on every panel control, and the
+// 3D view's orientation marker.
+#include <QAbstractButton>
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
+#include <QComboBox>
+#include <QGroupBox>
+#include <QMenuBar>
+#include <QPainter>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QToolButton>
+
+#include "help_dialogs.h"
+#include "orientation_marker.h"
+#include "volume_overlay.h"
+#include "window_fixture.h"
+
+using namespace voxray;
+using namespace voxray::ui;
+
+namespace {
+
+QAction* menuAction(QMenuBar& bar, const QString& text) {
+  for (QAction* a : bar.findChildren<QAction*>())
+    if (a->text().remove('&') == text) return a;
+  qFatal("no menu action '%s'", qPrintable(text));
+}
+
+// Mean position of the pixels within 12 of COLOUR in each channel; (-1, -1) when none.
+QPointF meanOf(const QImage& img, QColor colour) {
+  QPointF sum;
+  int n = 0;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      QColor c = img.pixelColor(x, y);
+      if (std::abs(c.red() - colour.red()) <= 12 && std::abs(c.green() - colour.green()) <= 12 &&
+          std::abs(c.blue() - colour.blue()) <= 12) {
+        sum += QPointF(x, y);
+        ++n;
+      }
+    }
+  return n ? sum / n : QPointF(-1, -1);
+}
+
+QImage markerImage(double azimuth, double elevation) {
+  Volume v = makeHeadPhantom(16);
+  RenderParams p;
+  p.camera.azimuthDeg = azimuth;
+  p.camera.elevationDeg = elevation;
+  QImage img(700, 700, QImage::Format_RGB32);  // the marker at its largest
+  img.fill(Qt::black);
+  QPainter painter(&img);
+  drawOrientationMarker(painter, makeViewGeometry(v, p), img.size());
+  return img;
+}
+
+}  // namespace
+
+class DesktopTest : public QObject {
+  Q_OBJECT
+  test::PhantomWindow fixture_;
+
+ private slots:
+  void init() { QVERIFY(fixture_.start()); }
+  void cleanup() { fixture_.stop(); }
+
+  void undoRedoTakeBackADragAsOneStep() {
+    QAction* undo = menuAction(*fixture_.window->menuBar(), "Undo view change");
+    QAction* redo = menuAction(*fixture_.window->menuBar(), "Redo view change");
+    QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
+    QCOMPARE(redo->shortcut(), QKeySequence("Ctrl+Shift+Z"));
+    QVERIFY(!undo->isEnabled());
+    const double zoom = fixture_.models->render.params().camera.zoom;
+    // A right drag zooms, one model change per move; the whole drag is one step.
+    QWidget* view = &fixture_.window->volumeView();
+    QPoint from(view->width() / 2, view->height() / 2);
+    QTest::mousePress(view, Qt::RightButton, {}, from);
+    for (int i = 1; i <= 6; ++i) {
+      QMouseEvent move(QEvent::MouseMove, from - QPoint(0, 5 * i), view->mapToGlobal(from),
+                       Qt::NoButton, Qt::RightButton, Qt::NoModifier);
+      QApplication::sendEvent(view, &move);
+    }
+    QTest::mouseRelease(view, Qt::RightButton, {}, from - QPoint(0, 30));
+    const double zoomed = fixture_.models->render.params().camera.zoom;
+    QVERIFY2(zoomed > zoom * 1.2, qPrintable(QString::number(zoomed)));
+    QVERIFY(undo->isEnabled());
+    undo->trigger();
+    QCOMPARE(fixture_.models->render.params().camera.zoom, zoom);
+    QVERIFY(!undo->isEnabled());
+    QVERIFY(redo->isEnabled());
+    redo->trigger();
+    QCOMPARE(fixture_.models->render.params().camera.zoom, zoomed);
+  }
+
+  void helpListsShortcutsAndAbout() {
+    QString shortcuts = shortcutsHtml(*fixture_.window->menuBar());
+    for (const char* expected : {"Ctrl+Z", "Ctrl+Shift+Z", "Ctrl+E", "Export screenshot",
+                                 "Undo view change", "Ctrl+wheel", "reset the camera"})
+      QVERIFY2(shortcuts.contains(expected), expected);
+    QVERIFY(menuAction(*fixture_.window->menuBar(), "About Voxray"));
+    QString about = aboutHtml("Test device 7");
+    QVERIFY(about.contains("Test device 7"));
+    QVERIFY(about.contains(QApplication::applicationVersion()));
+    QVERIFY(about.contains("LGPL"));
+    QVERIFY(about.contains("Stanford"));
+  }
+
+  void everyPanelControlHasATooltip() {
+    auto* panel = fixture_.window->findChild<QScrollArea*>("controlPanel");
+    QVERIFY(panel);
+    QList<QWidget*> controls;
+    for (QWidget* w : panel->widget()->findChildren<QWidget*>())
+      if (qobject_cast<QAbstractButton*>(w) || qobject_cast<QComboBox*>(w) ||
+          qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QAbstractSlider*>(w))
+        controls << w;
+    QVERIFY2(controls.size() > 25, qPrintable(QString::number(controls.size())));
+    for (QWidget* w : controls)
+      QVERIFY2(!w->toolTip().trimmed().isEmpty(),
+               qPrintable(QString("%1 '%2' has no tooltip")
+                              .arg(w->metaObject()->className(), w->objectName())));
+  }
+
+  // A maximised window on a 1920x1080 screen (less a title bar and a task bar) shows the
+  // whole panel unscrolled (the light and camera groups folded); the light opens from its
+  // header.
+  void panelFitsA1080ScreenUnscrolled() {
+    fixture_.window->resize(1920, 1000);
+    QApplication::processEvents();
+    auto* panel = fixture_.window->findChild<QScrollArea*>("controlPanel");
+    QVERIFY(panel);
+    QCOMPARE(panel->verticalScrollBar()->maximum(), 0);
+    auto* light = panel->findChild<QGroupBox*>("LightGroup");
+    auto* header = panel->findChild<QToolButton*>("foldLightGroup");
+    QVERIFY(light && header);
+    QVERIFY(!light->isVisible());
+    QVERIFY(!panel->findChild<QGroupBox*>("CameraGroup")->isVisible());
+    header->click();
+    QVERIFY(light->isVisible());
+    header->click();
+    QVERIFY(!light->isVisible());
+    for (const char* name : {"RenderingGroup", "QualityGroup", "SlicesGroup", "ClipGroup"}) {
+      auto* group = panel->findChild<QGroupBox*>(name);
+      QVERIFY2(group && group->isVisible(), name);
+    }
+  }
+
+  // View → Theme: Dark and Light override the platform's palette, System goes back to it.
+  void themeMenuSwitchesPaletteAndBack() {
+    const QPalette system = QApplication::palette();
+    auto pick = [this](const char* name) {
+      auto* a = fixture_.window->menuBar()->findChild<QAction*>(QString("theme") + name);
+      QVERIFY2(a, name);
+      a->trigger();
+      QVERIFY(a->isChecked());
+    };
+    pick("Dark");
+    QVERIFY(QApplication::palette().color(QPalette::Window).lightness() < 80);
+    QVERIFY(QApplication::palette().color(QPalette::WindowText).lightness() > 180);
+    pick("Light");
+    QVERIFY(QApplication::palette().color(QPalette::Window).lightness() > 180);
+    pick("System");
+    QCOMPARE(QApplication::palette().color(QPalette::Window), system.color(QPalette::Window));
+    QCOMPARE(QApplication::palette().color(QPalette::Text), system.color(QPalette::Text));
+  }
+
+  // Drawn through the engine's camera: from the patient's left-front (azimuth 45) the L arm
+  // comes towards the viewer on the right, drawn bright; R goes away on the left, dimmed.
+  // From above-front (elevation 30) S comes towards the viewer, at the top.
+  void orientationMarkerFollowsTheCamera() {
+    const QColor lr = planeColor(0), si = planeColor(2);
+    QImage leftFront = markerImage(45.0, 0.0), rightFront = markerImage(-45.0, 0.0);
+    const QPointF l = meanOf(leftFront, lr), r = meanOf(leftFront, lr.darker(170));
+    QVERIFY2(l.x() > 0 && r.x() > 0, "marker arms missing");
+    QVERIFY2(l.x() > r.x() + 10, qPrintable(QString("%1 %2").arg(l.x()).arg(r.x())));
+    QVERIFY(meanOf(rightFront, lr).x() < meanOf(rightFront, lr.darker(170)).x() - 10);
+    QImage above = markerImage(0.0, 30.0);
+    const QPointF s = meanOf(above, si), i = meanOf(above, si.darker(170));
+    QVERIFY2(s.y() > 0 && i.y() > 0, "marker arms missing");
+    QVERIFY2(s.y() < i.y() - 10, qPrintable(QString("%1 %2").arg(s.y()).arg(i.y())));
+  }
+};
+
+QTEST_MAIN(DesktopTest)
+#include "desktop_test.moc"
