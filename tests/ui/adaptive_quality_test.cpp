@@ -102,10 +102,12 @@ TEST(AdaptiveQuality, TargetFrameRateIsAPreferenceDefaulting20) {
   RenderStateModel next;
   applyPreferences(next, preferencesText(m));
   EXPECT_DOUBLE_EQ(next.quality().dragFps, 30.0);
-  next.fromText("ui-drag-fps=0\n");  // clamped to something a drag can hold
-  EXPECT_DOUBLE_EQ(next.quality().dragFps, 1.0);
+  next.fromText("ui-drag-fps=0\n");  // clamped to the spin box's range
+  EXPECT_DOUBLE_EQ(next.quality().dragFps, kDragFpsMin);
   next.fromText("ui-drag-fps=nan\n");
-  EXPECT_DOUBLE_EQ(next.quality().dragFps, 1.0);
+  EXPECT_DOUBLE_EQ(next.quality().dragFps, kDragFpsMin);
+  next.fromText("ui-drag-fps=1000\n");
+  EXPECT_DOUBLE_EQ(next.quality().dragFps, kDragFpsMax);
 }
 
 }  // namespace

@@ -108,7 +108,7 @@ void RenderStateModel::fromText(const std::string& text) {
         q.preset = value;
       } else if (key == "ui-drag-fps") {
         const double fps = std::stod(value);
-        if (std::isfinite(fps)) q.dragFps = std::clamp(fps, 1.0, 120.0);
+        if (std::isfinite(fps)) q.dragFps = std::clamp(fps, kDragFpsMin, kDragFpsMax);
       } else if (key == "size" || key == "ui-step-scale") {
         // The view decides the size; ui-step-scale was an older version's quality.
       } else {

@@ -22,6 +22,8 @@ enum Change : unsigned {
 };
 
 constexpr double kPresetShiftLimitHu = 1000.0;
+// The drag frame rate's range, for the spin box and saved preferences alike.
+constexpr double kDragFpsMin = 5.0, kDragFpsMax = 60.0;
 
 struct Quality {
   glm::ivec2 resolution{0, 0};  // {0, 0} = the view's size (the "window size" choice)

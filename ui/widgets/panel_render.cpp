@@ -206,7 +206,7 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
   // Drag frames shrink (and coarsen) to hold this rate on this machine (AdaptiveQuality).
   auto* dragFps = new QSpinBox;
   dragFps->setObjectName("dragFps");
-  dragFps->setRange(5, 60);
+  dragFps->setRange(int(kDragFpsMin), int(kDragFpsMax));
   dragFps->setSuffix(" fps");
   dragFps->setKeyboardTracking(false);
   dragFps->setToolTip(
