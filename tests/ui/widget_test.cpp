@@ -178,6 +178,32 @@ class WidgetTest : public QObject {
     QCOMPARE(models_->render.params().clip.lo.y, 0.1);
   }
 
+  // A clip edge dragged in a slice view re-renders the 3D view as a drag does: drag frames
+  // (the adaptive size) while the button is held, a sharp frame once it is released.
+  void sliceEdgeDragRendersDragFrames() {
+    models_->render.update(kClip, [](RenderParams& p) { p.clip.lo = {0.1, 0.1, 0.1}; });
+    waitFullFrame();
+    SliceView& axial = window_->sliceView(0);
+    const Volume& v = *models_->document.volume();
+    QPointF edge = axial.toWidget(0.1 * v.dims.x, v.dims.y / 2.0);
+    QPointF to = axial.toWidget(0.3 * v.dims.x, v.dims.y / 2.0);
+    QSignalSpy frames(&window_->scheduler(), &RenderScheduler::frameReady);
+    auto send = [&axial](QEvent::Type type, QPointF at, Qt::MouseButton b, Qt::MouseButtons held) {
+      QMouseEvent e(type, at, axial.mapToGlobal(at), b, held, Qt::NoModifier);
+      QApplication::sendEvent(&axial, &e);
+    };
+    send(QEvent::MouseButtonPress, edge, Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseMove, to, Qt::NoButton, Qt::LeftButton);
+    QVERIFY(frames.wait(60000));
+    auto first = frames.takeFirst().at(0).value<std::shared_ptr<const Frame>>();
+    QVERIFY(first->interactive);
+    QVERIFY(std::abs(first->params.clip.lo.x - 0.3) < 0.02);
+    const DragSetting& s = window_->scheduler().dragSetting();
+    QCOMPARE(first->params.width, int(128 * s.scale + 0.5));
+    send(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
+    waitFullFrame();  // fails the test unless a sharp frame follows the release
+  }
+
   void presetShiftSliderChangesImage() {
     models_->render.applyPreset("CT-Bone");  // dvr: the shift moves what is opaque
     QImage before = waitFullFrame();

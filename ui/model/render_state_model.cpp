@@ -1,6 +1,7 @@
 #include "render_state_model.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -92,6 +93,7 @@ std::string RenderStateModel::toText() const {
   out << "ui-resolution=" << quality_.resolution.x << "," << quality_.resolution.y << "\n";
   out << "ui-quality=" << quality_.preset << "\n";
   out << "ui-slice-interp=" << voxray::toString(sliceInterp_) << "\n";
+  out << "ui-drag-fps=" << quality_.dragFps << "\n";
   return out.str();
 }
 
@@ -113,6 +115,9 @@ void RenderStateModel::fromText(const std::string& text) {
         q.preset = value;
       } else if (key == "ui-slice-interp") {
         sliceInterp = parseInterp(value);
+      } else if (key == "ui-drag-fps") {
+        const double fps = std::stod(value);
+        if (std::isfinite(fps)) q.dragFps = std::clamp(fps, kDragFpsMin, kDragFpsMax);
       } else if (key == "size" || key == "ui-step-scale") {
         // The view decides the size; ui-step-scale was an older version's quality.
       } else {
@@ -130,13 +135,18 @@ void RenderStateModel::fromText(const std::string& text) {
 }
 
 RenderParams planFrame(const RenderParams& base, const Quality& q, const glm::ivec2& viewSize,
-                       bool interactive, double minSpacingMm) {
+                       bool interactive, double minSpacingMm, const DragSetting* drag) {
   RenderParams p = base;
   glm::ivec2 size = q.resolution.x > 0 ? q.resolution : viewSize;
   p.width = size.x;
   p.height = size.y;
   if (interactive) {
-    p = applyQuality(p, findQualityPreset(kDragQualityPreset), minSpacingMm);
+    QualityPreset dragPreset = findQualityPreset(kDragQualityPreset);
+    if (drag) {
+      dragPreset.resolutionScale = drag->scale;
+      dragPreset.stepVoxels = drag->stepVoxels;
+    }
+    p = applyQuality(p, dragPreset, minSpacingMm);
     // Speed comes from the step and the size; the surfaces keep the user's look, so the
     // shading does not change the moment the camera moves.
     p.interp = base.interp;
@@ -151,6 +161,11 @@ RenderParams planFrame(const RenderParams& base, const Quality& q, const glm::iv
   p.width = std::max(p.width, 16);
   p.height = std::max(p.height, 16);
   return p;
+}
+
+DragSetting dragPresetSetting() {
+  const QualityPreset& q = findQualityPreset(kDragQualityPreset);
+  return {q.resolutionScale, q.stepVoxels};
 }
 
 }  // namespace voxray::ui

@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "adaptive_quality.h"
 #include "notifier.h"
 #include "voxray/engine/render_params.h"
 
@@ -23,6 +24,8 @@ enum Change : unsigned {
 };
 
 constexpr double kPresetShiftLimitHu = 1000.0;
+// The drag frame rate's range, for the spin box and saved preferences alike.
+constexpr double kDragFpsMin = 5.0, kDragFpsMax = 60.0;
 
 struct Quality {
   glm::ivec2 resolution{0, 0};  // {0, 0} = the view's size (the "window size" choice)
@@ -30,6 +33,8 @@ struct Quality {
   // refinement, jitter and image scale. Empty = custom: the render parameters' own step,
   // refinement and jitter. Frames while dragging use kDragQualityPreset whatever this is.
   std::string preset = "balanced";
+  // Frames per second that drag frames adapt their size and step to hold (AdaptiveQuality).
+  double dragFps = 20.0;
 };
 
 class RenderStateModel {
@@ -85,8 +90,12 @@ bool presetFitsMode(const std::string& preset, Mode mode);
 // while INTERACTIVE everything the drag preset sets (step, reconstruction, gradient,
 // refinement, jitter, image scale); otherwise the chosen preset's step, refinement, jitter
 // and image scale with the user's reconstruction and gradient, or for custom the
-// parameters as they are. minSpacingMm: the volume's smallest voxel spacing.
+// parameters as they are. minSpacingMm: the volume's smallest voxel spacing. DRAG: the
+// image scale and step of an interactive frame in place of the drag preset's (the
+// AdaptiveQuality controller's choice).
 RenderParams planFrame(const RenderParams& base, const Quality& q, const glm::ivec2& viewSize,
-                       bool interactive, double minSpacingMm);
+                       bool interactive, double minSpacingMm, const DragSetting* drag = nullptr);
+// The drag preset's own scale and step: where AdaptiveQuality starts.
+DragSetting dragPresetSetting();
 
 }  // namespace voxray::ui

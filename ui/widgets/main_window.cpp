@@ -48,8 +48,12 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   grid_ = new ViewGrid(volumeView_, slices_[0], slices_[1], slices_[2]);
   connect(volumeView_, &VolumeView::doubleClicked, this,
           [this] { grid_->toggleMaximised(volumeView_); });
-  for (SliceView* s : slices_)
+  for (SliceView* s : slices_) {
     connect(s, &SliceView::doubleClicked, this, [this, s] { grid_->toggleMaximised(s); });
+    // A clip edge dragged in a slice view is a drag of the 3D view's clip box too.
+    connect(s, &SliceView::clipDragged, scheduler_, &RenderScheduler::beginInteraction);
+    connect(s, &SliceView::clipDragEnded, scheduler_, &RenderScheduler::endInteraction);
+  }
 
   auto* splitter = new QSplitter;
   splitter->addWidget(grid_);

@@ -10,6 +10,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSlider>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include "camera_control.h"
@@ -204,9 +205,32 @@ QGroupBox* makeQualityGroup(RenderStateModel& m) {
     q.resolution = {sizes[i].width(), sizes[i].height()};
     m.setQuality(q);
   });
+  // Drag frames shrink (and coarsen) to hold this rate on this machine (AdaptiveQuality).
+  auto* dragFps = new QSpinBox;
+  dragFps->setObjectName("dragFps");
+  dragFps->setRange(int(kDragFpsMin), int(kDragFpsMax));
+  dragFps->setSuffix(" fps");
+  dragFps->setKeyboardTracking(false);
+  dragFps->setToolTip(
+      "Frame rate that frames while dragging hold: their size and ray step adapt to the "
+      "last frames' render times; the full-quality frame follows when the mouse rests");
+  auto refreshFps = [dragFps, &m] {
+    QSignalBlocker b(dragFps);
+    dragFps->setValue(int(std::lround(m.quality().dragFps)));
+  };
+  refreshFps();
+  onModelChange<unsigned>(dragFps, m.changed, [refreshFps](unsigned what) {
+    if (what & kQuality) refreshFps();
+  });
+  QObject::connect(dragFps, &QSpinBox::valueChanged, box, [&m](int fps) {
+    Quality q = m.quality();
+    q.dragFps = fps;
+    m.setQuality(q);
+  });
   form->addRow("Preset", preset);
   form->addRow("", measured);
   form->addRow("Resolution", resolution);
+  form->addRow("Drag frame rate", dragFps);
   return box;
 }
 

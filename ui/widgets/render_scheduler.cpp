@@ -10,7 +10,10 @@ constexpr int kSettleMs = 150;  // no movement for this long counts as "stopped"
 
 RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
                                  const QString& device, QObject* parent)
-    : QObject(parent), state_(state), doc_(doc) {
+    : QObject(parent),
+      state_(state),
+      doc_(doc),
+      adaptive_(state.quality().dragFps, dragPresetSetting()) {
   qRegisterMetaType<std::shared_ptr<const Frame>>("std::shared_ptr<const voxray::ui::Frame>");
   settle_.setSingleShot(true);
   settle_.setInterval(kSettleMs);
@@ -80,9 +83,10 @@ void RenderScheduler::requestExport(QSize size) {
 void RenderScheduler::requestFrame() {
   if (doc_.empty()) return;
   if (interacting_) settle_.start();  // restart: refine only once the mouse rests
+  adaptive_.setTargetFps(state_.quality().dragFps);
   worker_->request(
       planFrame(state_.params(), state_.quality(), {viewSize_.width(), viewSize_.height()},
-                interacting_, doc_.minSpacingMm()),
+                interacting_, doc_.minSpacingMm(), &adaptive_.setting()),
       interacting_);
 }
 
@@ -92,6 +96,13 @@ void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
     return;
   }
   double fps = rate_.frameAt(clock_.nsecsElapsed() * 1e-9);
+  if (frame->interactive) {
+    // The setting this frame was rendered with, read back from its size and step.
+    const glm::ivec2 r = state_.quality().resolution;
+    const int fullWidth = r.x > 0 ? r.x : viewSize_.width();
+    adaptive_.record(frame->stats.totalMs, {double(frame->params.width) / std::max(fullWidth, 1),
+                                            frame->params.stepMm / doc_.minSpacingMm()});
+  }
   emit frameReady(frame);
   emit statsChanged(fps, frame->stats.totalMs, frame->interactive);
   if (!frame->interactive && !sawFullFrame_) {

@@ -1,8 +1,9 @@
 #pragma once
 // Decides when the 3D view needs a frame and how good it must be: any change of the render
-// state asks the render thread for a frame; during a drag the frames are cheap (see
-// the interactive quality preset), and once the mouse has been still for a moment one frame
-// of the chosen quality follows.
+// state asks the render thread for a frame; during a drag the frames are cheap (the
+// interactive quality preset, its size and step adapted to hold the preferred drag frame
+// rate by AdaptiveQuality), and once the mouse has been still for a moment, or is
+// released, one frame of the chosen quality follows.
 // Also measures frames per second for the status bar.
 #include <memory>
 
@@ -27,11 +28,14 @@ class RenderScheduler : public QObject {
   ~RenderScheduler() override;
 
   void setViewSize(QSize size);
-  // Called by views while the user drags (cheap frames) and when the drag ends.
+  // Called by views while the user drags anything that changes the 3D image (camera, clip
+  // box, light: cheap frames) and when the drag ends.
   void beginInteraction();
   void endInteraction();
   // The full-quality parameters of the next frame (for overlays and exports).
   RenderParams fullParams() const;
+  // The size and step drag frames use now.
+  const DragSetting& dragSetting() const { return adaptive_.setting(); }
   // Renders once at SIZE for an export; the result arrives as exportReady.
   void requestExport(QSize size);
 
@@ -56,6 +60,7 @@ class RenderScheduler : public QObject {
   QTimer settle_;  // the mouse stopped: time to refine
   QElapsedTimer clock_;
   FrameRateMeter rate_;
+  AdaptiveQuality adaptive_;
   int stateConnection_ = 0, docConnection_ = 0;
 };
 

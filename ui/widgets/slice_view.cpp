@@ -176,6 +176,7 @@ void SliceView::mouseMoveEvent(QMouseEvent* e) {
       bool vertical = false;
       for (const auto& edge : edges)
         if (edge.face == dragFace_) vertical = edge.vertical;
+      emit clipDragged();  // before the change, so that its frame is already a drag frame
       state_.update(kClip, [&](RenderParams& p) {
         dragSliceClipEdge(p.clip, axes_, doc_.volume()->dims, dragFace_, vertical ? s.x : s.y);
       });
@@ -196,6 +197,7 @@ void SliceView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void SliceView::mouseReleaseEvent(QMouseEvent*) {
+  if (drag_ == Drag::ClipEdge) emit clipDragEnded();
   drag_ = Drag::None;
   dragFace_ = -1;
   update();

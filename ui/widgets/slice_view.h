@@ -35,6 +35,9 @@ class SliceView : public QWidget {
 
  signals:
   void doubleClicked();
+  // A clip-edge drag moved the box (the 3D view should render cheap drag frames), and ended.
+  void clipDragged();
+  void clipDragEnded();
 
  protected:
   void paintEvent(QPaintEvent*) override;
