@@ -35,6 +35,24 @@ TEST(DicomSeriesDiscovery, PhilipsPhantomChoosesThe28SliceVolume) {
   EXPECT_FALSE(anyContains(l.notes, "PLASTIC"));
 }
 
+// The loaded volume carries its study and series identity (for PACS send-back and the
+// opt-in corner text); the identifying fields are the same as the listing's.
+TEST(DicomSeriesDiscovery, VolumeCarriesItsStudyIdentity) {
+  DicomListing l = listDicomSeries(dicomPath("ct-philips-phantom"));
+  Volume v = importDicom(dicomPath("ct-philips-phantom"));
+  const SeriesInfo& chosen = l.series.front();
+  EXPECT_EQ(v.study.seriesInstanceUid, chosen.uid);
+  EXPECT_EQ(v.study.seriesNumber, 201);
+  EXPECT_EQ(v.study.patientName, "HEAD");
+  EXPECT_EQ(v.study.patientId, "PLASTIC");
+  // A UID is digits and dots, at least "1.2" and at most 64 characters (PS3.5 9.1).
+  EXPECT_GE(v.study.studyInstanceUid.size(), 3u);
+  EXPECT_LE(v.study.studyInstanceUid.size(), 64u);
+  EXPECT_EQ(v.study.studyInstanceUid.find_first_not_of("0123456789."), std::string::npos);
+  EXPECT_NE(v.study.studyInstanceUid, v.study.seriesInstanceUid);
+  EXPECT_FALSE(anyContains(v.warnings, "PLASTIC"));
+}
+
 TEST(DicomSeriesDiscovery, PhilipsScoutAndSummaryPagesAreListedNotChosen) {
   DicomListing l = listDicomSeries(dicomPath("ct-philips-phantom"));
   const SeriesInfo* scout = findNumber(l, 100);

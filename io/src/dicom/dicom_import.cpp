@@ -226,6 +226,23 @@ void checkPlausibleSize(const Candidate& c, size_t bytes) {
                      " KB; the data is damaged");
 }
 
+StudyIdentity studyIdentity(const FrameHeader& f) {
+  StudyIdentity id;
+  id.patientName = f.patientName;
+  id.patientId = f.patientId;
+  id.patientBirthDate = f.patientBirthDate;
+  id.studyInstanceUid = f.studyUid;
+  id.studyDate = f.studyDate;
+  id.studyTime = f.studyTime;
+  id.studyDescription = f.studyDescription;
+  id.accessionNumber = f.accession;
+  id.seriesInstanceUid = f.seriesUid;
+  id.seriesDescription = f.description;
+  id.frameOfReferenceUid = f.frameOfReferenceUid;
+  id.seriesNumber = f.seriesNumber;
+  return id;
+}
+
 std::string sampleTypeName(const FrameHeader& f) {
   return std::string(f.pixelRepresentation ? "i" : "u") + std::to_string(f.bitsStored);
 }
@@ -295,6 +312,7 @@ Volume importDicom(const std::string& input, const LoadOptions& options) {
   v.unit = f0.modality == "CT" ? "HU" : f0.modality + " signal (scanner units)";
   v.modality = f0.modality;
   v.window = f0.window;  // the first slice's: what a viewer shows when the series opens
+  v.study = studyIdentity(f0);
   v.sourceType = sampleTypeName(f0);
   v.warnings = c.warnings;
   v.warnings.insert(v.warnings.end(), g.warnings.begin(), g.warnings.end());

@@ -193,6 +193,12 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
   h.patientName = str(ds, DCM_PatientName, text, true);
   h.patientId = str(ds, DCM_PatientID, text);
   h.patientBirthDate = str(ds, DCM_PatientBirthDate, text);
+  h.studyUid = str(ds, DCM_StudyInstanceUID, text);
+  h.studyDate = str(ds, DCM_StudyDate, text);
+  h.studyTime = str(ds, DCM_StudyTime, text);
+  h.studyDescription = str(ds, DCM_StudyDescription, text, true);
+  h.accession = str(ds, DCM_AccessionNumber, text);
+  h.frameOfReferenceUid = str(ds, DCM_FrameOfReferenceUID, text);
 
   int frames = std::max(1, intValue(ds, DCM_NumberOfFrames, 1));
   if (frames > kMaxFramesPerFile) {

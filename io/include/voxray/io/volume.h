@@ -21,6 +21,16 @@ struct DisplayWindow {
   std::string explanation;  // WindowCenterWidthExplanation (its first value), may be empty
 };
 
+// Who and what the volume shows, from the source's headers (DICOM; empty for raw files).
+// Identifying fields are for display on the user's request only: never put them into logs,
+// messages, file names or exports by default.
+struct StudyIdentity {
+  std::string patientName, patientId, patientBirthDate;  // identifying
+  std::string studyInstanceUid, studyDate, studyTime, studyDescription, accessionNumber;
+  std::string seriesInstanceUid, seriesDescription, frameOfReferenceUid;
+  int seriesNumber = 0;
+};
+
 struct Volume {
   glm::ivec3 dims{0};         // columns (i), rows (j), slices (k)
   glm::dvec3 spacingMm{1.0};  // distance between voxel centres along i, j, k
@@ -31,8 +41,9 @@ struct Volume {
   std::string unit = "HU";
   std::string modality;                 // DICOM Modality ("CT", "MR", ...); empty: not known
   std::optional<DisplayWindow> window;  // none when the source gives no window
-  std::string sourceType = "i16";       // sample type it was read from
-  std::vector<std::string> warnings;    // things the user should know (clamping, NaN, ...)
+  StudyIdentity study;
+  std::string sourceType = "i16";     // sample type it was read from
+  std::vector<std::string> warnings;  // things the user should know (clamping, NaN, ...)
   std::vector<int16_t> voxels;
 
   size_t voxelCount() const { return size_t(dims.x) * size_t(dims.y) * size_t(dims.z); }
