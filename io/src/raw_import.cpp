@@ -17,6 +17,7 @@
 #include "file_kind.h"
 #include "raw_messages.h"
 #include "raw_samples.h"
+#include "raw_size_rule.h"
 #include "raw_slice_files.h"
 #include "voxray/io/error.h"
 #include "voxray/io/parallel.h"
@@ -82,7 +83,7 @@ size_t fileSize(const std::string& path) {
 
 // Slices of a folder or pattern: one file each, all header + one slice long.
 std::vector<SliceSource> stackSources(const std::vector<detail::SliceFile>& files,
-                                      const RawLayout& l, size_t sliceBytes, int& z) {
+                                      const RawLayout& l, int& z) {
   if (l.dims.z != 0 && size_t(l.dims.z) != files.size()) {
     throw inputError("the stack has " + std::to_string(files.size()) + " slice files but " +
                      "--raw-dims gives " + std::to_string(l.dims.z) +
@@ -93,9 +94,10 @@ std::vector<SliceSource> stackSources(const std::vector<detail::SliceFile>& file
   std::vector<SliceSource> sources;
   for (const auto& f : files) {
     const size_t found = fileSize(f.path);
-    if (found != l.headerBytes + sliceBytes) {
-      throw inputError(f.path + ": expected " + std::to_string(l.headerBytes + sliceBytes) +
-                       " bytes (" + dimsText(l.dims.x, l.dims.y) + " " + toString(l.type) + " + " +
+    const size_t expected = detail::rawFileBytes(l, found, true).expected;
+    if (found != expected) {
+      throw inputError(f.path + ": expected " + std::to_string(expected) + " bytes (" +
+                       dimsText(l.dims.x, l.dims.y) + " " + toString(l.type) + " + " +
                        std::to_string(l.headerBytes) + " header), found " + std::to_string(found) +
                        " — check " + kRawLayoutFlags);
     }
@@ -115,23 +117,18 @@ std::vector<SliceSource> fileSources(const std::string& path, const RawLayout& l
   std::string layout = " ";  // built by appending: GCC 12 warns falsely on a + chain here
   layout += toString(l.type);
   layout += " + " + std::to_string(l.headerBytes) + " header)";
-  if (l.dims.z == 0) {
-    const size_t data = found > l.headerBytes ? found - l.headerBytes : 0;
-    if (data == 0 || data % sliceBytes != 0) {
-      throw inputError(path + ": " + std::to_string(found) + " bytes are not a whole number of " +
-                       dimsText(l.dims.x, l.dims.y) + " slices (" + std::to_string(sliceBytes) +
-                       " bytes each" + layout + " — check " + kRawLayoutFlags);
-    }
-    checkVoxelCount(l.dims.x, l.dims.y, (long long)(data / sliceBytes));
-    z = int(data / sliceBytes);
-  } else {
-    z = l.dims.z;
-    const size_t expected = l.headerBytes + size_t(z) * sliceBytes;
-    if (found != expected) {
-      throw inputError(path + ": expected " + std::to_string(expected) + " bytes (" +
-                       dimsText(l.dims.x, l.dims.y) + "x" + std::to_string(z) + layout +
-                       ", found " + std::to_string(found) + " — check " + kRawLayoutFlags);
-    }
+  const auto rule = detail::rawFileBytes(l, found, false);
+  if (l.dims.z == 0 && rule.partialSlice) {
+    throw inputError(path + ": " + std::to_string(found) + " bytes are not a whole number of " +
+                     dimsText(l.dims.x, l.dims.y) + " slices (" + std::to_string(sliceBytes) +
+                     " bytes each" + layout + " — check " + kRawLayoutFlags);
+  }
+  if (l.dims.z == 0) checkVoxelCount(l.dims.x, l.dims.y, (long long)rule.slices);
+  z = int(rule.slices);
+  if (found != rule.expected) {
+    throw inputError(path + ": expected " + std::to_string(rule.expected) + " bytes (" +
+                     dimsText(l.dims.x, l.dims.y) + "x" + std::to_string(z) + layout + ", found " +
+                     std::to_string(found) + " — check " + kRawLayoutFlags);
   }
   std::vector<SliceSource> sources;
   for (int k = 0; k < z; ++k) sources.push_back({path, l.headerBytes + size_t(k) * sliceBytes});
@@ -181,14 +178,14 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   if (fs::is_directory(input, ec)) {
     if (layout.range)
       checkVoxelCount(layout.dims.x, layout.dims.y, detail::sliceCount(*layout.range));
-    sources = stackSources(detail::listSliceFolder(input, layout.range), layout, sliceBytes, z);
+    sources = stackSources(detail::listSliceFolder(input, layout.range), layout, z);
   } else if (fs::exists(input, ec)) {
     detail::refuseSpecialFile(input);
     sources = fileSources(input, layout, sliceBytes, z);
   } else if (input.find('%') != std::string::npos) {
     if (layout.range)
       checkVoxelCount(layout.dims.x, layout.dims.y, detail::sliceCount(*layout.range));
-    sources = stackSources(detail::listSlicePattern(input, layout.range), layout, sliceBytes, z);
+    sources = stackSources(detail::listSlicePattern(input, layout.range), layout, z);
   } else {
     throw inputError(input + ": no such file or folder");
   }

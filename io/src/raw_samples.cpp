@@ -121,6 +121,10 @@ Storage chooseStorage(const ValueStats& stats, const RawLayout& layout) {
   return st;
 }
 
+void decodeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, double* out) {
+  visitSamples(raw, count, layout, [&](size_t i, double v) { out[i] = v; });
+}
+
 void storeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, const Storage& storage,
                   int16_t* out) {
   const double inverse = 1.0 / storage.slope, offset = storage.intercept;

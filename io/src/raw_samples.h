@@ -28,6 +28,9 @@ struct Storage {
 // Chooses the storage for values described by `stats`, read as `layout`.
 Storage chooseStorage(const ValueStats& stats, const RawLayout& layout);
 
+// Decodes samples to doubles: raw * slope + intercept of LAYOUT.
+void decodeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, double* out);
+
 // Converts samples to stored voxels: round((hu - intercept) / slope).
 void storeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, const Storage& storage,
                   int16_t* out);

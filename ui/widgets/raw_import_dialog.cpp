@@ -263,7 +263,8 @@ void RawImportDialog::refresh() {
   std::string p = path().toStdString();
   RawSizeCheck c = checkRawSize(p, layout());
   if (c.files == 0) {
-    sizeCheck_->setText("choose a file or folder");
+    sizeCheck_->setText(p.empty() || c.problem.empty() ? QString("choose a file or folder")
+                                                       : QString::fromStdString(c.problem));
   } else {
     QString what = c.files > 1 ? QString("per file (%1 files)").arg(c.files) : QString();
     QString off = QString::fromStdString(sizeMismatchText(c));
