@@ -1,5 +1,6 @@
 // QTest on the offscreen platform: screenshot export and load errors, through the real
 // ExportDialog and LoadController of a MainWindow showing the 64^3 head phantom.
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
@@ -133,6 +134,54 @@ class ExportLoadTest : public QObject {
         differingPixels(view.convertToFormat(QImage::Format_RGB32),
                         window_->volumeView().lastFrame().convertToFormat(QImage::Format_RGB32)),
         0);
+  }
+
+  // Patient and study text: off until the user asks (View menu), then in every view but
+  // in no export unless ticked in the export dialog.
+  void studyTextIsShownOnRequestAndExportedOnlyWhenTicked() {
+    auto study = std::make_shared<Volume>(*models_->document.volume());
+    study->study.patientName = "DOE^JANE";
+    study->study.patientId = "1234567";
+    study->study.studyDate = "20190501";
+    models_->document.set(study, "study");
+    test::waitFullFrame(*window_);
+    QVERIFY(!models_->render.studyText());  // off by default
+    auto dialog = makeDialog();
+    auto* burnIn = dialog->findChild<QCheckBox*>("exportStudyText");
+    QVERIFY(burnIn && !burnIn->isChecked());
+    dialog->findChild<QComboBox*>("exportWhat")->setCurrentIndex(4);  // whole window
+    SliceView& axial = window_->sliceView(0);
+    QImage plainSlice = axial.grab().toImage().convertToFormat(QImage::Format_RGB32);
+    QImage plainView = window_->volumeView().grab().toImage().convertToFormat(QImage::Format_RGB32);
+    QVERIFY(dialog->exportTo(tempPath("window-off.png")));
+    QImage windowOff = toQImage(readImage(tempPath("window-off.png").toStdString()));
+
+    auto* action = window_->findChild<QAction*>("viewStudyText");
+    QVERIFY(action && !action->isChecked());
+    action->trigger();
+    QVERIFY(models_->render.studyText());
+    // Both kinds of view now show the text (three lines top-left): pixels differ.
+    QImage shownSlice = axial.grab().toImage().convertToFormat(QImage::Format_RGB32);
+    QImage shownView = window_->volumeView().grab().toImage().convertToFormat(QImage::Format_RGB32);
+    QVERIFY(differingPixels(shownSlice, plainSlice) > 50);
+    QVERIFY(differingPixels(shownView, plainView) > 50);
+    // An export with the box unticked equals the export made before the text was shown.
+    QVERIFY(dialog->exportTo(tempPath("window-hidden.png")));
+    QImage windowHidden = toQImage(readImage(tempPath("window-hidden.png").toStdString()));
+    QCOMPARE(differingPixels(windowHidden.convertToFormat(QImage::Format_RGB32),
+                             windowOff.convertToFormat(QImage::Format_RGB32)),
+             0);
+    // The views show it again after the export.
+    QCOMPARE(
+        differingPixels(axial.grab().toImage().convertToFormat(QImage::Format_RGB32), shownSlice),
+        0);
+    burnIn->setChecked(true);
+    QVERIFY(dialog->exportTo(tempPath("window-burnt.png")));
+    QImage burnt = toQImage(readImage(tempPath("window-burnt.png").toStdString()));
+    QVERIFY(differingPixels(burnt.convertToFormat(QImage::Format_RGB32),
+                            windowOff.convertToFormat(QImage::Format_RGB32)) > 200);
+    action->trigger();
+    QVERIFY(!models_->render.studyText());
   }
 
   void exportSizeFieldsShowWhatIsWritten() {

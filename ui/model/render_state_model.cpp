@@ -47,6 +47,11 @@ void RenderStateModel::setSliceInterp(Interp i) {
   changed.notify(kSlices);
 }
 
+void RenderStateModel::setStudyText(bool on) {
+  studyText_ = on;
+  changed.notify(kSlices);
+}
+
 void RenderStateModel::setQualityPreset(const std::string& name) {
   Quality q = quality_;
   q.preset = name;

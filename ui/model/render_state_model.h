@@ -64,6 +64,10 @@ class RenderStateModel {
   // How the slice views reconstruct between voxels (linear unless the user picks nearest).
   Interp sliceInterp() const { return sliceInterp_; }
   void setSliceInterp(Interp i);  // notifies kSlices
+  // Whether the views show the patient and study corner text (study_text.h). Off at every
+  // start: it identifies the patient, so it is shown only while the user asks for it.
+  bool studyText() const { return studyText_; }
+  void setStudyText(bool on);  // notifies kSlices (the views redraw; no new 3D frame)
   // Values by key from the command line, as voxray-cli reads them (applyRenderValues: a
   // preset first, then the values given); --size picks the resolution, and an explicit
   // step, refinement or jitter switches the quality preset to custom so that it wins.
@@ -80,6 +84,7 @@ class RenderStateModel {
   RenderParams params_;
   Quality quality_;
   Interp sliceInterp_ = Interp::Linear;
+  bool studyText_ = false;
 };
 
 // Whether the transfer-function preset PRESET (by its exact name) was made for MODE; false

@@ -51,6 +51,12 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
   annotations_ = new QCheckBox("Burn in the cursor readout (value and position)");
   annotations_->setObjectName("exportAnnotations");
   form->addRow(annotations_);
+  studyText_ = new QCheckBox("Burn in the patient and study text");
+  studyText_->setObjectName("exportStudyText");
+  studyText_->setToolTip(
+      "Off: the exported image leaves out the patient's name, ID and study text even while "
+      "the views show them (View > Patient and study text)");
+  form->addRow(studyText_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Save | QDialogButtonBox::Cancel);
   connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::save);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -109,10 +115,19 @@ QImage ExportDialog::capture() {
     return result;
   }
   if (what == 0) return view_.lastFrame();  // the rendered pixels, no overlays
-  for (SliceView* s : slices_) s->setAnnotations(annotate);
+  const bool hideStudy = !studyText_->isChecked();
+  for (SliceView* s : slices_) {
+    s->setAnnotations(annotate);
+    s->setStudyTextHidden(hideStudy);
+  }
+  view_.setStudyTextHidden(hideStudy);
   QImage image =
       (what == 4 ? window_ : static_cast<QWidget*>(slices_[size_t(what - 1)]))->grab().toImage();
-  for (SliceView* s : slices_) s->setAnnotations(true);
+  for (SliceView* s : slices_) {
+    s->setAnnotations(true);
+    s->setStudyTextHidden(false);
+  }
+  view_.setStudyTextHidden(false);
   return image;
 }
 

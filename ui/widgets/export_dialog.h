@@ -52,6 +52,7 @@ class ExportDialog : public QDialog {
   QSpinBox* width_;
   QSpinBox* height_;
   QCheckBox* annotations_;
+  QCheckBox* studyText_;
   QSize chosen_;  // the chosen resolution, kept while the fields show another capture's size
   std::function<QString()> choose_;
   ConfirmOverwrite confirm_;

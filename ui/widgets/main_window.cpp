@@ -136,6 +136,13 @@ void MainWindow::buildMenus() {
     QWidget* focused = QApplication::focusWidget();
     grid_->toggleMaximised(focused ? focused : volumeView_);
   });
+  QAction* studyText = view->addAction("&Patient and study text", this,
+                                       [this](bool on) { models_.render.setStudyText(on); });
+  studyText->setCheckable(true);
+  studyText->setObjectName("viewStudyText");
+  studyText->setToolTip(
+      "Show the patient's name, ID and the study in the views' corners "
+      "(never in exports unless ticked there)");
   QMenu* theme = view->addMenu("&Theme");
   auto* themes = new QActionGroup(theme);
   for (const QString& name : themeNames()) {

@@ -91,6 +91,7 @@ void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
   QRect text = r.adjusted(6, 4, -6, -4);
   p.drawText(text, Qt::AlignLeft | Qt::AlignTop,
              QString("%1 / %2").arg(o.slice + 1).arg(o.sliceCount));
+  drawCornerLines(p, o.studyLines, text.adjusted(0, p.fontMetrics().height(), 0, 0));
   p.drawText(text, Qt::AlignRight | Qt::AlignTop,
              QString::fromStdString(formatWindowLevel(o.wl, o.wlSource)));
   if (o.hasCursor) {

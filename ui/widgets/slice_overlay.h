@@ -4,6 +4,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <QPainter>
 
@@ -26,6 +27,7 @@ struct SliceOverlay {
   double cursorValue = 0.0;
   glm::dvec3 cursorMm{0.0};
   std::string unit;
+  std::vector<std::string> studyLines;  // patient and study text (study_text.h), when shown
 };
 
 using SliceToWidget = std::function<QPointF(double u, double v)>;

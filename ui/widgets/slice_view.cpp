@@ -8,6 +8,7 @@
 #include "slice_clip.h"
 #include "slice_image.h"
 #include "slice_overlay.h"
+#include "study_text.h"
 
 namespace voxray::ui {
 
@@ -47,6 +48,11 @@ SliceView::~SliceView() {
 
 void SliceView::setAnnotations(bool on) {
   annotations_ = on;
+  update();
+}
+
+void SliceView::setStudyTextHidden(bool hidden) {
+  studyTextHidden_ = hidden;
   update();
 }
 
@@ -131,6 +137,7 @@ void SliceView::paintOverlay(QPainter& p) {
   o.sliceCount = v.dims[axes_.nAxis];
   o.wl = wl_.value();
   o.wlSource = wl_.source();
+  if (state_.studyText() && !studyTextHidden_) o.studyLines = studyTextLines(v.study);
   o.mmPerWidgetPixel = v.dims[axes_.uAxis] * v.spacingMm[axes_.uAxis] / sliceRect().width();
   if (annotations_ && rect().contains(hover_.toPoint())) {
     glm::dvec2 s = toSlice(hover_);

@@ -32,6 +32,8 @@ class SliceView : public QWidget {
   glm::dvec2 toSlice(QPointF widget) const;
   // Hides the cursor readout and file name (screenshots carry no data unless asked).
   void setAnnotations(bool on);
+  // Leaves out the patient and study text while an export grabs the view (unless chosen).
+  void setStudyTextHidden(bool hidden);
 
  signals:
   void doubleClicked();
@@ -82,6 +84,7 @@ class SliceView : public QWidget {
   WindowLevel dragStartWl_;
   QPointF hover_{-1, -1};
   bool annotations_ = true;
+  bool studyTextHidden_ = false;
   int docConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0, stateConnection_ = 0;
 };
 

@@ -112,4 +112,13 @@ void drawCrosshairPlanes(QPainter& p, const Volume& v, const glm::ivec3& voxel,
   }
 }
 
+void drawCornerLines(QPainter& p, const std::vector<std::string>& lines, const QRect& r) {
+  QString text;
+  for (const auto& line : lines) text += QString::fromStdString(line) + "\n";
+  p.save();
+  p.setPen(Qt::white);
+  p.drawText(r, Qt::AlignLeft | Qt::AlignTop, text.trimmed());
+  p.restore();
+}
+
 }  // namespace voxray::ui

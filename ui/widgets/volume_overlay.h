@@ -1,6 +1,9 @@
 #pragma once
 // What the 3D view draws over the rendered image: the clip box with its face handles, the
 // light handle, and the outlines of the three slice planes. Coordinates are the image's.
+#include <string>
+#include <vector>
+
 #include <QPainter>
 
 #include "view_projection.h"
@@ -18,6 +21,9 @@ void drawCrosshairPlanes(QPainter& p, const Volume& v, const glm::ivec3& voxel,
 // The patient axes (orientationMarker) as labelled arrows in the lower left corner of a view
 // of SIZE pixels.
 void drawOrientationMarker(QPainter& p, const ViewGeometry& g, QSizeF size);
+
+// LINES top-left in R, one under the other (the patient and study text).
+void drawCornerLines(QPainter& p, const std::vector<std::string>& lines, const QRect& r);
 
 // The colours the slice views use for their frames, so the 3D planes can be matched.
 QColor planeColor(int normalAxis);

@@ -9,6 +9,7 @@
 #include "clip_box_math.h"
 #include "light_gizmo.h"
 #include "qt_image.h"
+#include "study_text.h"
 #include "volume_overlay.h"
 
 namespace voxray::ui {
@@ -87,6 +88,13 @@ void VolumeView::paintEvent(QPaintEvent*) {
   if (showClip_) drawClipBox(painter, v, state_.params().clip, *proj, dragFace_);
   if (showLight_) drawLightHandle(painter, v, state_.params(), *proj, drag_ == Drag::Light);
   drawOrientationMarker(painter, proj->g, r.size());
+  if (state_.studyText() && !studyTextHidden_)
+    drawCornerLines(painter, studyTextLines(v.study), QRect(QPoint(6, 4), r.size()));
+}
+
+void VolumeView::setStudyTextHidden(bool hidden) {
+  studyTextHidden_ = hidden;
+  update();
 }
 
 void VolumeView::resizeEvent(QResizeEvent*) { scheduler_.setViewSize(size()); }

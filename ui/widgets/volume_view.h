@@ -25,6 +25,8 @@ class VolumeView : public QWidget {
   void setShowClipHandles(bool on);
   void setShowLightGizmo(bool on);
   void setShowPlanes(bool on);
+  // Leaves out the patient and study text while an export grabs the view (unless chosen).
+  void setStudyTextHidden(bool hidden);
   bool showClipHandles() const { return showClip_; }
   bool showLightGizmo() const { return showLight_; }
   bool showPlanes() const { return showPlanes_; }
@@ -58,6 +60,7 @@ class VolumeView : public QWidget {
   QImage frame_;
   bool frameInteractive_ = false;
   bool showClip_ = true, showLight_ = true, showPlanes_ = false;
+  bool studyTextHidden_ = false;
   Drag drag_ = Drag::None;
   QPointF dragStart_, lastPos_;
   int dragFace_ = -1;
