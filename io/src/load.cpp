@@ -10,6 +10,7 @@
 #include "raw_messages.h"
 #include "voxray/io/error.h"
 #include "voxray/io/phantom.h"
+#include "voxray/io/sample_volume.h"
 
 #if __has_include("voxray/io/dicom_import.h") && defined(VOXRAY_HAS_DICOM)
 #include "voxray/io/dicom_import.h"
@@ -40,6 +41,7 @@ bool mayBeDicom(const fs::path& file) {
 
 Volume loadVolume(const std::string& input, const LoadOptions& options) {
   if (input.empty()) return makeHeadPhantom();
+  if (input == kSampleCtInput) return loadSampleCt();
   if (options.raw) return importRaw(input, *options.raw, {options.progress, options.cancel});
 
   std::error_code ec;

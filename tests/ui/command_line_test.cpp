@@ -13,6 +13,7 @@
 #include "voxray/engine/input_flags.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/orientation.h"
+#include "voxray/io/sample_volume.h"
 
 using namespace voxray;
 
@@ -125,3 +126,18 @@ TEST_F(CommandLine, CliAndGuiApplyAPresetFirstThenTheFlags) {
 }
 
 }  // namespace
+
+// Without a file the workstation opens the embedded sample CT (a real scan); --phantom
+// opens the synthetic phantom, and only without a file.
+TEST_F(CommandLine, NoInputOpensTheSampleCtAndPhantomOnRequest) {
+  EXPECT_EQ(readGui({}).input, kSampleCtInput);
+  EXPECT_EQ(readGui({"--size", "320x240"}).input, kSampleCtInput);
+  EXPECT_EQ(readGui({"--phantom"}).input, "");
+  EXPECT_EQ(readGui({"head.dcm"}).input, "head.dcm");
+  try {
+    readGui({"--phantom", "head.dcm"});
+    ADD_FAILURE() << "--phantom with a file must be refused";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("without an INPUT"), std::string::npos);
+  }
+}

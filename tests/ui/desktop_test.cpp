@@ -105,6 +105,9 @@ class DesktopTest : public QObject {
     QVERIFY(about.contains(QApplication::applicationVersion()));
     QVERIFY(about.contains("LGPL"));
     QVERIFY(about.contains("Stanford"));
+    // The sample CT is BSD-2-Clause: its copyright notice must reach the user.
+    QVERIFY(about.contains("Chris Rorden"));
+    QVERIFY(about.contains("BSD-2-Clause"));
   }
 
   void everyPanelControlHasATooltip() {

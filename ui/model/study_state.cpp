@@ -65,7 +65,7 @@ InitialWindow initialWindow(const Volume& v) {
   if (v.window) {
     const std::string& why = v.window->explanation;
     return {{v.window->width, v.window->level},
-            why.empty() ? "DICOM window" : why + " (DICOM window)"};
+            why.empty() ? v.window->origin : why + " (" + v.window->origin + ")"};
   }
   if (v.modality == "CT") return {kCtDefaultWindow, "CT default (no window given)"};
   const ValueRange r = storedRange(v);

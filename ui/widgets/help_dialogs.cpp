@@ -6,6 +6,8 @@
 #include <QMenuBar>
 #include <QMessageBox>
 
+#include "voxray/io/sample_volume.h"
+
 namespace voxray::ui {
 
 namespace {
@@ -58,12 +60,13 @@ QString aboutHtml(const QString& device) {
              "<p><b>OpenCL device:</b> %2</p>"
              "<p><b>Libraries and their licences:</b> Qt %3 (LGPL-3.0), DCMTK (BSD-3-Clause), "
              "OpenJPEG (BSD-2-Clause), OpenImageIO (Apache-2.0), GLM (MIT), CLI11 "
-             "(BSD-3-Clause), OpenCL headers (Apache-2.0); on CPUs PoCL (MIT).</p>"
-             "<p><b>Data:</b> the built-in head phantom is synthetic (made by Voxray). Test "
+             "(BSD-3-Clause), OpenCL headers (Apache-2.0), zlib (Zlib); on CPUs PoCL (MIT).</p>"
+             "<p><b>Data:</b> %4 Its licence: resources/sample/LICENSE-head-phantom-ct. "
+             "The built-in head phantom is synthetic (made by Voxray). Test "
              "scans: Stanford volume archive (CThead, MRbrain), InVesalius examples (GPL-2), "
              "visvis stent (BSD), DICOM sets from dcm_qa (BSD-2) and pydicom (MIT).</p>")
       .arg(QApplication::applicationVersion().toHtmlEscaped(), device.toHtmlEscaped(),
-           QString(qVersion()));
+           QString(qVersion()), QString::fromStdString(sampleCtAttribution()).toHtmlEscaped());
 }
 
 void showShortcuts(QWidget* parent, const QMenuBar& menus) {

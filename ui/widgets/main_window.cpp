@@ -28,6 +28,7 @@
 #include "study_state.h"
 #include "theme.h"
 #include "volume_view.h"
+#include "voxray/io/sample_volume.h"
 
 namespace voxray::ui {
 
@@ -123,6 +124,7 @@ void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
   file->addAction("Open &DICOM folder…", QKeySequence::Open, this, &MainWindow::openDicomFolder);
   file->addAction("Open &raw volume…", QKeySequence("Ctrl+R"), this, &MainWindow::openRaw);
+  file->addAction("Open &sample CT", this, [this] { open(kSampleCtInput, {}); });
   file->addAction("Open head &phantom", this, [this] { open("", {}); });
   recentMenu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();

@@ -4,6 +4,8 @@
 
 #include "voxray/engine/input_flags.h"
 #include "voxray/engine/render_params.h"
+#include "voxray/io/error.h"
+#include "voxray/io/sample_volume.h"
 
 namespace voxray::ui {
 
@@ -41,14 +43,20 @@ StartOptions parseStartOptions(const QStringList& arguments) {
       {"screenshot", "after the first full-quality frame, save the window to FILE", "file"},
       {"quit-after-first-frame", "quit after the first full-quality frame (tests)"},
       {"reset-settings", "ignore the saved window state and settings"},
+      {"phantom", "open the synthetic head phantom instead of the sample CT (no INPUT)"},
   });
   addSpecOptions(parser, inputFlagSpecs());
   addSpecOptions(parser, renderParamSpecs());
   parser.process(arguments);
 
   StartOptions o;
-  if (!parser.positionalArguments().isEmpty())
+  if (!parser.positionalArguments().isEmpty()) {
+    if (parser.isSet("phantom"))
+      throw inputError("--phantom opens the synthetic phantom: give it without an INPUT");
     o.input = parser.positionalArguments().first().toStdString();
+  } else if (!parser.isSet("phantom")) {
+    o.input = kSampleCtInput;
+  }
   o.load = loadOptionsFromFlags(givenValues(parser, inputFlagSpecs()));
   o.renderValues = givenValues(parser, renderParamSpecs());
   o.device = parser.value("device").toStdString();

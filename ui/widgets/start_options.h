@@ -13,7 +13,7 @@
 namespace voxray::ui {
 
 struct StartOptions {
-  std::string input;  // empty: the embedded head phantom
+  std::string input;  // kSampleCtInput without INPUT; empty (the head phantom) for --phantom
   LoadOptions load;   // raw layout and series (no progress or cancel yet)
   std::map<std::string, std::string> renderValues;  // --KEY VALUE of renderParamSpecs()
   std::string device;

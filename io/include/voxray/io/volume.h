@@ -19,6 +19,7 @@ struct DisplayWindow {
   double width = 0.0;
   double level = 0.0;
   std::string explanation;  // WindowCenterWidthExplanation (its first value), may be empty
+  std::string origin = "DICOM window";  // where it came from, as the UI names it
 };
 
 // Who and what the volume shows, from the source's headers (DICOM; empty for raw files).
