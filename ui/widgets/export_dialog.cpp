@@ -109,10 +109,16 @@ QImage ExportDialog::capture() {
     return result;
   }
   if (what == 0) return view_.lastFrame();  // the rendered pixels, no overlays
-  for (SliceView* s : slices_) s->setAnnotations(annotate);
+  for (SliceView* s : slices_) {
+    s->setAnnotations(annotate);
+    s->setExporting(true);  // measurements only when the user asked for them in exports
+  }
   QImage image =
       (what == 4 ? window_ : static_cast<QWidget*>(slices_[size_t(what - 1)]))->grab().toImage();
-  for (SliceView* s : slices_) s->setAnnotations(true);
+  for (SliceView* s : slices_) {
+    s->setAnnotations(true);
+    s->setExporting(false);
+  }
   return image;
 }
 
