@@ -333,13 +333,16 @@ TEST(Measure, PickedPointLiesOnTheSphereSurface) {
   const glm::ivec2 c = (lo + hi) / 2, r = (hi - lo) * 2 / 5;
   // The centre, and four pixels towards the rim, where rays meet the surface obliquely.
   int picked = 0;
+  double worst = 0.0;
   for (glm::ivec2 pixel : {c, c + glm::ivec2(r.x, 0), c - glm::ivec2(r.x, 0),
                            c + glm::ivec2(0, r.y), c - glm::ivec2(0, r.y)}) {
     auto hit = surfaceHitAt(hits, {p.width, p.height}, pixel);
     ASSERT_TRUE(hit) << pixel.x << "," << pixel.y;
     EXPECT_LT(std::abs(field.surfaceDistance(*hit)), 0.05) << pixel.x << "," << pixel.y;
+    worst = std::max(worst, std::abs(field.surfaceDistance(*hit)));
     ++picked;
   }
+  RecordProperty("worst_surface_distance_voxels", std::to_string(worst));
   EXPECT_EQ(picked, 5);
   EXPECT_FALSE(surfaceHitAt(hits, {p.width, p.height}, {1, 1}));    // background: no surface
   EXPECT_FALSE(surfaceHitAt(hits, {p.width, p.height}, {96, 10}));  // outside the frame
