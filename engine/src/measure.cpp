@@ -71,10 +71,12 @@ RoiStats roiStats(const Volume& v, const PlaneRoi& roi) {
   };
   // Welford's running mean and variance: stable for thousands of similar values.
   double mean = 0.0, m2 = 0.0, mn = 0.0, mx = 0.0;
-  const int x0 = std::max(0, int(std::ceil(lo.x - kInsideTolerance)));
-  const int x1 = std::min(v.dims[ua] - 1, int(std::floor(hi.x + kInsideTolerance)));
-  const int y0 = std::max(0, int(std::ceil(lo.y - kInsideTolerance)));
-  const int y1 = std::min(v.dims[va] - 1, int(std::floor(hi.y + kInsideTolerance)));
+  // The pixel range, clamped in floating point first: a far corner must not overflow an int.
+  const glm::dvec2 first = glm::clamp(glm::ceil(lo - kInsideTolerance), glm::dvec2(0.0),
+                                      glm::dvec2(v.dims[ua], v.dims[va]));
+  const glm::dvec2 last = glm::clamp(glm::floor(hi + kInsideTolerance), glm::dvec2(-1.0),
+                                     glm::dvec2(v.dims[ua] - 1, v.dims[va] - 1));
+  const int x0 = int(first.x), x1 = int(last.x), y0 = int(first.y), y1 = int(last.y);
   glm::ivec3 idx(0);
   idx[n] = int(slice);
   for (int y = y0; y <= y1; ++y)

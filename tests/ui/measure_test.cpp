@@ -205,6 +205,8 @@ TEST(Measure, BadInputReadsDashNeverNan) {
   // A point-sized rectangle has zero area: nothing, even on a voxel centre.
   const std::string one = text(MeasureKind::Rect, {{4, 4, 2}, {4, 4, 2}});
   EXPECT_EQ(one, "mean —  SD —  min —  max — HU, 0.0 mm², 0 px");
+  // A corner far outside (a hand-edited session, the CLI): the pixels inside still count.
+  EXPECT_EQ(roiStats(v, {RoiShape::Rect, 2, {-1e12, -1e12, 4}, {3, 2, 4}}).pixels, 4U * 3U);
   // A single pixel has a mean but no sample SD.
   const RoiStats single = roiStats(v, {RoiShape::Rect, 2, {3.6, 3.6, 2}, {4.4, 4.4, 2}});
   EXPECT_EQ(single.pixels, 1U);
@@ -288,6 +290,9 @@ TEST(Measure, JsonRoundTripAndBadEntries) {
       error(R"({"items":[{"kind":"distance","normal_axis":"z","points":[]}]})").find("normal_axis"),
       std::string::npos);
   EXPECT_NE(error(R"({"items":[{"kind":7}]})").find("unknown kind"), std::string::npos);
+  EXPECT_NE(error(R"({"items":[{"kind":"distance","points":[[1e300,0,0],[1,1,1]]}]})")
+                .find("within +-1e6 voxels"),
+            std::string::npos);
   EXPECT_NE(error(R"([1,2])").find("expected an object"), std::string::npos);
   EXPECT_EQ(back.items().size(), 4U);  // a bad file leaves the model as it was
 }

@@ -1,6 +1,5 @@
 #include "measurement_json.h"
 
-#include <cmath>
 #include <string>
 
 #include "voxray/io/error.h"
@@ -8,6 +7,8 @@
 namespace voxray::ui {
 
 namespace {
+
+constexpr double kMaxCoordinate = 1e6;  // voxels
 
 constexpr MeasureKind kKinds[] = {MeasureKind::Distance, MeasureKind::Angle, MeasureKind::Ellipse,
                                   MeasureKind::Rect};
@@ -44,8 +45,9 @@ Measurement parseItem(const nlohmann::json& item, size_t n) {
         !p[2].is_number())
       throw inputError(where + "a point must be [i, j, k] in voxels");
     glm::dvec3 v(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-      throw inputError(where + "a point coordinate is not a finite number");
+    // Far beyond any volume (and beyond exact integers in a double): a broken file.
+    if (!glm::all(glm::lessThan(glm::abs(v), glm::dvec3(kMaxCoordinate))))
+      throw inputError(where + "a point coordinate is not a number within +-1e6 voxels");
     m.points.push_back(v);
   }
   return m;
