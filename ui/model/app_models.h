@@ -2,6 +2,7 @@
 // All UI state of one workstation window, owned outside the widgets so that it outlives
 // them (widgets disconnect from the models when they are destroyed).
 #include "crosshair_model.h"
+#include "measurement_model.h"
 #include "no_qt.h"
 #include "render_state_model.h"
 #include "volume_document.h"
@@ -14,6 +15,7 @@ struct AppModels {
   RenderStateModel render;
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
+  MeasurementModel measurements;  // session: measurementsToJson / measurementsFromJson
 
   // The per-study state of the volume the document keeps as its previous one: openStudy
   // saves it, restorePreviousStudy (study_state.h) brings it back with that volume.

@@ -27,10 +27,10 @@ void RenderWorker::setVolume(std::shared_ptr<const Volume> volume) {
   wake_.notify_all();
 }
 
-void RenderWorker::request(const RenderParams& params, bool interactive, int tag) {
+void RenderWorker::request(const RenderParams& params, bool interactive, int tag, bool withHits) {
   {
     std::lock_guard lock(mutex_);
-    (tag == 0 ? pendingView_ : pendingExport_) = Request{params, interactive, tag};
+    (tag == 0 ? pendingView_ : pendingExport_) = Request{params, interactive, tag, withHits};
   }
   wake_.notify_all();
 }
@@ -86,7 +86,10 @@ void RenderWorker::run() {
     frame->interactive = req->interactive;
     frame->tag = req->tag;
     try {
-      raycaster->render(req->params, frame->image, &frame->stats);
+      if (req->withHits)
+        frame->image = raycaster->renderWithHits(req->params, frame->hits, &frame->stats);
+      else
+        raycaster->render(req->params, frame->image, &frame->stats);
       if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
     } catch (const std::exception& e) {
       reportError(e.what(), false);

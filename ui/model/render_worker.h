@@ -10,6 +10,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "background_task.h"
 #include "no_qt.h"
@@ -24,8 +25,9 @@ struct Frame {
   Image image;
   FrameStats stats;
   RenderParams params;
-  bool interactive = false;  // a cheap frame rendered during a drag
-  int tag = 0;               // the caller's label (0: the view; other values: exports)
+  bool interactive = false;     // a cheap frame rendered during a drag
+  int tag = 0;                  // the caller's label (0: the view; other values: exports)
+  std::vector<glm::vec4> hits;  // each pixel's iso hit, when asked for (renderWithHits)
 };
 
 struct RenderCallbacks {
@@ -46,7 +48,8 @@ class RenderWorker {
   RenderWorker& operator=(const RenderWorker&) = delete;
 
   void setVolume(std::shared_ptr<const Volume> volume);
-  void request(const RenderParams& params, bool interactive, int tag = 0);
+  // WITHHITS: also the iso first-hit of each pixel (Frame::hits), for picking in 3D.
+  void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
 
  private:
   void run();
@@ -61,6 +64,7 @@ class RenderWorker {
     RenderParams params;
     bool interactive;
     int tag;
+    bool withHits;
   };
   std::optional<Request> pendingView_;    // latest view frame wins
   std::optional<Request> pendingExport_;  // exports are never replaced by view frames

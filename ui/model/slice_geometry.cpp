@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "voxray/engine/measure.h"
 #include "voxray/io/volume.h"
 
 namespace voxray::ui {
@@ -95,7 +96,7 @@ glm::dvec2 voxelToSlice(const SliceAxes& a, const glm::ivec3& dims, const glm::d
 }
 
 glm::dvec3 voxelToPatientMm(const Volume& v, const glm::dvec3& voxel) {
-  return v.originMm + v.direction * (voxel * v.spacingMm);
+  return voxelToPatient(v, voxel);  // one mapping for the views and the measurements
 }
 
 glm::dvec3 voxelToWorldMm(const Volume& v, const glm::dvec3& voxel) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "voxray/engine/measure.h"
 #include "voxray/io/volume.h"
 
 namespace voxray::ui {
@@ -54,6 +55,26 @@ double sampleValue(const Volume& v, const glm::dvec3& voxel) {
   if (glm::any(glm::lessThan(i, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(i, v.dims)))
     return std::numeric_limits<double>::quiet_NaN();
   return v.toPhysical(v.at(i.x, i.y, i.z));
+}
+
+}  // namespace voxray::ui
+
+namespace voxray::ui {
+
+CursorProbe probeAt(const Volume& v, const glm::dvec3& voxel, Interp interp) {
+  CursorProbe p;
+  p.unit = v.unit;
+  p.voxel = glm::ivec3(glm::round(voxel));
+  const glm::dvec3 at = interp == Interp::Nearest ? glm::dvec3(p.voxel) : voxel;
+  p.patientMm = voxelToPatient(v, at);
+  p.inside = v.voxelCount() > 0 && insideVolume(v, at);
+  if (!p.inside) return p;
+  // A one-pixel plane through the point: the very sampler the slice image uses.
+  PlaneGrid g;
+  g.originMm = p.patientMm;
+  g.size = {1, 1};
+  p.value = samplePlane(v, g, interp, 0.0F).front();
+  return p;
 }
 
 }  // namespace voxray::ui

@@ -2,6 +2,8 @@
 // A slice of the volume as a grey image with window/level applied, in screen order
 // (see slice_geometry.h), resampled by the engine (plane_sampler.h) onto square pixels of
 // the smaller in-plane spacing, so that the image has the slice's physical aspect.
+#include <string>
+
 #include "no_qt.h"
 #include "slice_geometry.h"
 #include "voxray/engine/plane_sampler.h"
@@ -25,5 +27,17 @@ Image renderSlice(const Volume& v, const SliceAxes& axes, int slice, const Windo
 
 // Physical value at a voxel (nearest), or NaN outside the volume.
 double sampleValue(const Volume& v, const glm::dvec3& voxel);
+
+// The HU probe: what the cursor at VOXEL (continuous) reads in a view that samples with
+// INTERP, exactly as the slice image is resampled (samplePlane). Nearest reads and places
+// the nearest voxel; Linear reads the trilinear value at the cursor itself.
+struct CursorProbe {
+  bool inside = false;        // false: outside the volume, no value
+  double value = 0.0;         // physical units (Volume::unit)
+  glm::ivec3 voxel{0};        // nearest voxel index
+  glm::dvec3 patientMm{0.0};  // LPS position of the reading
+  std::string unit;
+};
+CursorProbe probeAt(const Volume& v, const glm::dvec3& voxel, Interp interp);
 
 }  // namespace voxray::ui

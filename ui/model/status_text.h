@@ -4,6 +4,8 @@
 // status bar).
 #include <string>
 
+#include <glm/glm.hpp>
+
 #include "no_qt.h"
 
 namespace voxray::ui {
@@ -18,6 +20,14 @@ struct FrameStats {
 // "12.5 fps · 80 ms", "12.5 fps · 80 ms (interactive)", "80 ms" when there is no rate (one
 // frame after a pause) or "no frame yet".
 std::string formatFrameStats(const FrameStats& s);
+
+// The HU probe's two lines: "-998 HU  [128, 200, 75]" and "R 12.3  A 45.6  S 78.9 mm"
+// (the user's convention: R/L, A/P, S/I letters rather than signed LPS). Outside the volume
+// the value reads "—" and the position is still given.
+struct CursorProbe;
+std::string formatCursorProbe(const CursorProbe& p);
+// A patient position as "R 12.3  A 45.6  S 78.9 mm".
+std::string formatPatientMm(const glm::dvec3& lpsMm);
 
 // "NAME — Voxray", or "Voxray" with no document. NAME is the document name (a file or
 // folder name, never patient data).

@@ -119,6 +119,7 @@ QImage ExportDialog::capture() {
   for (SliceView* s : slices_) {
     s->setAnnotations(annotate);
     s->setStudyTextHidden(hideStudy);
+    s->setExporting(true);  // measurements only when the user asked for them in exports
   }
   view_.setStudyTextHidden(hideStudy);
   QImage image =
@@ -126,6 +127,7 @@ QImage ExportDialog::capture() {
   for (SliceView* s : slices_) {
     s->setAnnotations(true);
     s->setStudyTextHidden(false);
+    s->setExporting(false);
   }
   view_.setStudyTextHidden(false);
   return image;

@@ -20,6 +20,7 @@
 #include "export_dialog.h"
 #include "gui_message.h"
 #include "help_dialogs.h"
+#include "measure_panel.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
 #include "series_picker.h"
@@ -108,6 +109,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
           [this](const QString& message) { showError("Cannot open", message); });
   connect(loader_, &LoadController::cancelled, this,
           [this] { statusBar()->showMessage("Loading cancelled", 5000); });
+  wireMeasurements();
   buildMenus();
   qApp->installEventFilter(this);
   updateTitle();
@@ -118,6 +120,17 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
 MainWindow::~MainWindow() {
   qApp->removeEventFilter(this);
   delete historyListeners_;
+}
+
+void MainWindow::wireMeasurements() {
+  for (SliceView* s : slices_) s->setMeasurements(&models_.measurements);
+  volumeView_->setMeasurements(&models_.measurements);
+  addDockWidget(Qt::RightDockWidgetArea,
+                makeMeasurementDock(models_.measurements, models_.document));
+  connect(volumeView_, &VolumeView::pickMissed, this,
+          [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+  // Measurements are voxel positions of one volume: another volume starts without them.
+  onModelChange<>(this, models_.document.changed, [this] { models_.measurements.clear(); });
 }
 
 void MainWindow::buildMenus() {

@@ -59,6 +59,7 @@ class MainWindow : public QMainWindow {
 
  private:
   void buildMenus();
+  void wireMeasurements();  // views, side panel and 3D picks share models_.measurements
   void rebuildRecentMenu();
   void openDicomFolder();
   void openRaw();

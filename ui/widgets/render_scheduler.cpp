@@ -6,6 +6,7 @@ namespace voxray::ui {
 
 namespace {
 constexpr int kSettleMs = 150;  // no movement for this long counts as "stopped"
+constexpr int kPickTag = 2;     // Frame::tag of a frame rendered for a 3D pick
 }  // namespace
 
 RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
@@ -80,6 +81,10 @@ void RenderScheduler::requestExport(QSize size) {
   worker_->request(p, false, 1);
 }
 
+void RenderScheduler::requestPick() {
+  if (!doc_.empty()) worker_->request(fullParams(), false, kPickTag, true);
+}
+
 void RenderScheduler::requestFrame() {
   if (doc_.empty()) return;
   if (interacting_) settle_.start();  // restart: refine only once the mouse rests
@@ -91,6 +96,10 @@ void RenderScheduler::requestFrame() {
 }
 
 void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
+  if (frame->tag == kPickTag) {
+    emit pickReady(frame);
+    return;
+  }
   if (frame->tag != 0) {
     emit exportReady(frame);
     return;

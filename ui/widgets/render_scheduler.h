@@ -38,10 +38,14 @@ class RenderScheduler : public QObject {
   const DragSetting& dragSetting() const { return adaptive_.setting(); }
   // Renders once at SIZE for an export; the result arrives as exportReady.
   void requestExport(QSize size);
+  // Renders the view's full-quality frame once more with each pixel's iso hit; the result
+  // arrives as pickReady (Frame::hits, the frame's own size).
+  void requestPick();
 
  signals:
   void frameReady(std::shared_ptr<const voxray::ui::Frame> frame);
   void exportReady(std::shared_ptr<const voxray::ui::Frame> frame);
+  void pickReady(std::shared_ptr<const voxray::ui::Frame> frame);
   void firstFullFrame();
   void statsChanged(double fps, double lastMs, bool interactive);
   void deviceReady(const QString& name);

@@ -94,18 +94,8 @@ void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
   drawCornerLines(p, o.studyLines, text.adjusted(0, p.fontMetrics().height(), 0, 0));
   p.drawText(text, Qt::AlignRight | Qt::AlignTop,
              QString::fromStdString(formatWindowLevel(o.wl, o.wlSource)));
-  if (o.hasCursor) {
-    QString value =
-        std::isnan(o.cursorValue)
-            ? QString("outside")
-            : QString("%1 %2").arg(o.cursorValue, 0, 'f', 0).arg(QString::fromStdString(o.unit));
-    p.drawText(text, Qt::AlignLeft | Qt::AlignBottom,
-               QString("%1\n(%2, %3, %4) mm")
-                   .arg(value)
-                   .arg(o.cursorMm.x, 0, 'f', 1)
-                   .arg(o.cursorMm.y, 0, 'f', 1)
-                   .arg(o.cursorMm.z, 0, 'f', 1));
-  }
+  if (o.hasCursor)
+    p.drawText(text, Qt::AlignLeft | Qt::AlignBottom, QString::fromStdString(o.cursorText));
   drawScaleBar(p, o.mmPerWidgetPixel, r);
 }
 

@@ -24,9 +24,7 @@ struct SliceOverlay {
   std::string wlSource;  // where the window came from (WindowLevelModel::source)
   double mmPerWidgetPixel = 1.0;
   bool hasCursor = false;
-  double cursorValue = 0.0;
-  glm::dvec3 cursorMm{0.0};
-  std::string unit;
+  std::string cursorText;               // the HU probe's lines (formatCursorProbe)
   std::vector<std::string> studyLines;  // patient and study text (study_text.h), when shown
 };
 

@@ -4,10 +4,12 @@
 #include <QPainter>
 #include <QWheelEvent>
 
+#include "measure_overlay.h"
 #include "qt_image.h"
 #include "slice_clip.h"
 #include "slice_image.h"
 #include "slice_overlay.h"
+#include "status_text.h"
 #include "study_text.h"
 
 namespace voxray::ui {
@@ -40,6 +42,7 @@ SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crossha
 }
 
 SliceView::~SliceView() {
+  if (measurements_) measurements_->changed.disconnect(measureConnection_);
   doc_.changed.disconnect(docConnection_);
   crosshair_.changed.disconnect(crossConnection_);
   wl_.changed.disconnect(wlConnection_);
@@ -54,6 +57,72 @@ void SliceView::setAnnotations(bool on) {
 void SliceView::setStudyTextHidden(bool hidden) {
   studyTextHidden_ = hidden;
   update();
+}
+
+void SliceView::setMeasurements(MeasurementModel* m) {
+  if (measurements_) measurements_->changed.disconnect(measureConnection_);
+  measurements_ = m;
+  if (m) measureConnection_ = m->changed.connect([this] { update(); });
+  update();
+}
+
+void SliceView::setExporting(bool on) {
+  exporting_ = on;
+  update();
+}
+
+QPointF SliceView::voxelToWidget(const glm::dvec3& voxel) const {
+  const glm::dvec2 s = voxelToSlice(axes_, doc_.volume()->dims, voxel);
+  return toWidget(s.x, s.y);
+}
+
+glm::dvec3 SliceView::widgetToVoxel(QPointF widget) const {
+  const glm::dvec2 s = toSlice(widget);
+  const glm::ivec3& dims = doc_.volume()->dims;
+  return clampToVolume(sliceToVoxel(axes_, dims, s.x, s.y, crosshair_.sliceOf(axes_)), dims);
+}
+
+bool SliceView::pressMeasure(QPointF at) {
+  if (!measurements_) return false;
+  const int slice = crosshair_.sliceOf(axes_);
+  // A handle under the cursor wins in any mode: the nearest one within reach.
+  double best = kHandlePickPixels;
+  dragId_ = 0;
+  for (const Measurement& m : measurements_->items()) {
+    if (!shownOnSlice(m, axes_, slice)) continue;
+    for (size_t i = 0; i < m.points.size(); ++i) {
+      const QPointF d = voxelToWidget(m.points[i]) - at;
+      const double dist = std::hypot(d.x(), d.y());
+      if (dist <= best) {
+        best = dist;
+        dragId_ = m.id;
+        dragIndex_ = int(i);
+      }
+    }
+  }
+  if (dragId_) {
+    measurements_->select(dragId_);
+    return true;
+  }
+  const glm::dvec3 p = widgetToVoxel(at);
+  if (angleToFinish_ && measurements_->find(angleToFinish_)) {
+    dragId_ = std::exchange(angleToFinish_, 0);
+    dragIndex_ = 2;
+    measurements_->movePoint(dragId_, dragIndex_, p);
+    return true;
+  }
+  angleToFinish_ = 0;
+  const MeasureTool tool = measurements_->tool();
+  if (tool == MeasureTool::None) return false;
+  const MeasureKind kind = tool == MeasureTool::Distance ? MeasureKind::Distance
+                           : tool == MeasureTool::Angle  ? MeasureKind::Angle
+                           : tool == MeasureTool::Rect   ? MeasureKind::Rect
+                                                         : MeasureKind::Ellipse;
+  dragId_ =
+      measurements_->add(kind, std::vector<glm::dvec3>(size_t(pointCount(kind)), p), axes_.nAxis);
+  dragIndex_ = 1;  // the far end, the vertex, or the opposite corner follows the drag
+  if (kind == MeasureKind::Angle) angleToFinish_ = dragId_;
+  return true;
 }
 
 void SliceView::rebuild() {
@@ -143,18 +212,22 @@ void SliceView::paintOverlay(QPainter& p) {
     glm::dvec2 s = toSlice(hover_);
     glm::dvec3 voxel = sliceToVoxel(axes_, v.dims, s.x, s.y, o.slice);
     o.hasCursor = true;
-    o.cursorValue = sampleValue(v, voxel);
-    o.cursorMm = voxelToPatientMm(v, glm::round(voxel));
-    o.unit = v.unit;
+    // Read as the view samples: the probe follows the slice interpolation setting.
+    o.cursorText = formatCursorProbe(probeAt(v, voxel, state_.sliceInterp()));
   }
   drawSliceOverlay(p, o, rect(), [this](double u, double vv) { return toWidget(u, vv); });
+  if (measurements_ && (!exporting_ || measurements_->showInExports()))
+    drawSliceMeasurements(p, v, *measurements_, axes_, o.slice,
+                          [this](const glm::dvec3& voxel) { return voxelToWidget(voxel); });
 }
 
 void SliceView::mousePressEvent(QMouseEvent* e) {
   lastPos_ = dragStart_ = e->position();
   drag_ = Drag::None;
   if (doc_.empty()) return;
-  if (e->button() == Qt::LeftButton) {
+  if (e->button() == Qt::LeftButton && pressMeasure(e->position())) {
+    drag_ = Drag::Handle;
+  } else if (e->button() == Qt::LeftButton) {
     dragFace_ = pickClipEdge(e->position());
     drag_ = dragFace_ >= 0 ? Drag::ClipEdge : Drag::Crosshair;
     if (drag_ == Drag::Crosshair) {
@@ -197,6 +270,9 @@ void SliceView::mouseMoveEvent(QMouseEvent* e) {
     case Drag::Pan:
       pan_ += d;
       break;
+    case Drag::Handle:
+      measurements_->movePoint(dragId_, dragIndex_, widgetToVoxel(e->position()));
+      break;
     case Drag::None:
       break;
   }
@@ -237,6 +313,15 @@ void SliceView::keyPressEvent(QKeyEvent* e) {
       break;
     case Qt::Key_PageDown:
       crosshair_.scrollView(axes_, -10);
+      break;
+    case Qt::Key_Delete:
+    case Qt::Key_Backspace:
+      if (measurements_ && measurements_->selected())
+        measurements_->remove(measurements_->selected());
+      break;
+    case Qt::Key_Escape:
+      angleToFinish_ = 0;
+      if (measurements_) measurements_->setTool(MeasureTool::None);
       break;
     default:
       QWidget::keyPressEvent(e);

@@ -2,13 +2,17 @@
 // One slice view (axial, coronal or sagittal) bound to the shared crosshair, window/level
 // and render-state models. Left click/drag moves the crosshair (or a clip-box edge when
 // grabbed), right-drag changes window/level, middle-drag pans, wheel or arrow keys scroll
-// slices, Ctrl+wheel zooms, double-click maximises.
+// slices, Ctrl+wheel zooms, double-click maximises. With a measuring tool chosen
+// (MeasurementModel::tool) a left drag draws a distance, ellipse or rectangle, an angle takes
+// a drag for its first arm and a click (or drag) for its end; a press on a handle drags that
+// point in any mode; Del removes the selected measurement.
 #include <optional>
 
 #include <QImage>
 #include <QWidget>
 
 #include "crosshair_model.h"
+#include "measurement_model.h"
 #include "render_state_model.h"
 #include "slice_geometry.h"
 #include "volume_document.h"
@@ -34,6 +38,10 @@ class SliceView : public QWidget {
   void setAnnotations(bool on);
   // Leaves out the patient and study text while an export grabs the view (unless chosen).
   void setStudyTextHidden(bool hidden);
+  // The measurements to draw and edit (none: the view measures nothing).
+  void setMeasurements(MeasurementModel* m);
+  // While exporting, measurements show only when the user asked for them in exports.
+  void setExporting(bool on);
 
  signals:
   void doubleClicked();
@@ -52,11 +60,14 @@ class SliceView : public QWidget {
   void leaveEvent(QEvent*) override;
 
  private:
-  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan };
+  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan, Handle };
   void rebuild();  // new volume, slice or window: redraw the slice image
   QRectF sliceRect() const;
   int pickClipEdge(QPointF widget) const;  // face number, or -1
   void paintOverlay(QPainter& p);
+  QPointF voxelToWidget(const glm::dvec3& voxel) const;
+  glm::dvec3 widgetToVoxel(QPointF widget) const;  // on this view's slice, clamped into the box
+  bool pressMeasure(QPointF widget);  // true: the press grabbed or started a measurement
 
   Orientation orientation_;
   VolumeDocument& doc_;
@@ -85,6 +96,11 @@ class SliceView : public QWidget {
   QPointF hover_{-1, -1};
   bool annotations_ = true;
   bool studyTextHidden_ = false;
+  MeasurementModel* measurements_ = nullptr;
+  bool exporting_ = false;
+  int dragId_ = 0, dragIndex_ = 0;
+  int angleToFinish_ = 0;  // an angle with its first arm drawn, waiting for its end point
+  int measureConnection_ = 0;
   int docConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0, stateConnection_ = 0;
 };
 

@@ -8,8 +8,10 @@
 #include "camera_control.h"
 #include "clip_box_math.h"
 #include "light_gizmo.h"
+#include "measure_overlay.h"
 #include "qt_image.h"
 #include "study_text.h"
+#include "surface_pick.h"
 #include "volume_overlay.h"
 
 namespace voxray::ui {
@@ -31,6 +33,8 @@ VolumeView::VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairMo
     frameInteractive_ = f->interactive;
     update();
   });
+  connect(&scheduler_, &RenderScheduler::pickReady, this,
+          [this](std::shared_ptr<const Frame> f) { onPickFrame(*f); });
   stateConnection_ = state_.changed.connect([this](unsigned) { update(); });
   crosshairConnection_ = crosshair_.changed.connect([this] {
     if (showPlanes_) update();
@@ -38,6 +42,7 @@ VolumeView::VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairMo
 }
 
 VolumeView::~VolumeView() {
+  if (measurements_) measurements_->changed.disconnect(measureConnection_);
   state_.changed.disconnect(stateConnection_);
   crosshair_.changed.disconnect(crosshairConnection_);
 }
@@ -53,6 +58,26 @@ void VolumeView::setShowLightGizmo(bool on) {
 void VolumeView::setShowPlanes(bool on) {
   showPlanes_ = on;
   update();
+}
+
+void VolumeView::setMeasurements(MeasurementModel* m) {
+  if (measurements_) measurements_->changed.disconnect(measureConnection_);
+  measurements_ = m;
+  if (m) measureConnection_ = m->changed.connect([this] { update(); });
+  update();
+}
+
+void VolumeView::onPickFrame(const Frame& f) {
+  if (!pickAt_ || !measurements_ || doc_.empty()) return;
+  const glm::ivec2 size(f.params.width, f.params.height);
+  const glm::ivec2 pixel(glm::floor(*pickAt_ * glm::dvec2(size)));
+  pickAt_.reset();
+  if (auto hit = surfaceHitAt(f.hits, size, pixel))
+    measurements_->addPick(*hit);
+  else
+    emit pickMissed(f.params.mode == Mode::Iso
+                        ? "No surface under the cursor to measure on"
+                        : "3D measuring picks the iso surface: switch the mode to iso");
 }
 
 QRect VolumeView::imageRect() const {
@@ -87,6 +112,13 @@ void VolumeView::paintEvent(QPaintEvent*) {
   if (showPlanes_) drawCrosshairPlanes(painter, v, crosshair_.voxel(), *proj);
   if (showClip_) drawClipBox(painter, v, state_.params().clip, *proj, dragFace_);
   if (showLight_) drawLightHandle(painter, v, state_.params(), *proj, drag_ == Drag::Light);
+  if (measurements_)
+    drawPickedMeasurements(painter, v, *measurements_,
+                           [&](const glm::dvec3& voxel) -> std::optional<QPointF> {
+                             auto at = proj->project(voxelToWorldMm(v, voxel));
+                             if (!at) return std::nullopt;
+                             return QPointF(at->x, at->y);
+                           });
   drawOrientationMarker(painter, proj->g, r.size());
   if (state_.studyText() && !studyTextHidden_)
     drawCornerLines(painter, studyTextLines(v.study), QRect(QPoint(6, 4), r.size()));
@@ -103,6 +135,14 @@ void VolumeView::mousePressEvent(QMouseEvent* e) {
   dragStart_ = lastPos_ = e->position();
   auto proj = projection();
   drag_ = Drag::None;
+  if (e->button() == Qt::LeftButton && (e->modifiers() & Qt::ControlModifier) && proj &&
+      measurements_) {
+    // A pick, not a drag: the hit arrives with a frame rendered for it (onPickFrame).
+    const QRect r = imageRect();
+    pickAt_ = toImage(e->position()) / glm::dvec2(std::max(r.width(), 1), std::max(r.height(), 1));
+    scheduler_.requestPick();
+    return;
+  }
   if (e->button() == Qt::LeftButton && proj && !(e->modifiers() & Qt::ShiftModifier)) {
     const Volume& v = *doc_.volume();
     glm::dvec2 at = toImage(e->position());

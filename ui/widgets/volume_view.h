@@ -2,7 +2,8 @@
 // The 3D raycast view: shows the render thread's latest frame and turns the mouse into
 // camera, clip-box and light edits on the RenderStateModel. Left-drag rotates, wheel or
 // right-drag zooms, middle-drag or Shift+left pans, arrow keys rotate; dragging a clip-box
-// face handle moves that face; dragging the sun-shaped handle moves the light.
+// face handle moves that face; dragging the sun-shaped handle moves the light. Ctrl+click
+// picks a point on the iso surface (two picks make a distance, MeasurementModel::addPick).
 #include <memory>
 #include <optional>
 
@@ -10,6 +11,7 @@
 #include <QWidget>
 
 #include "crosshair_model.h"
+#include "measurement_model.h"
 #include "render_scheduler.h"
 #include "view_projection.h"
 
@@ -35,9 +37,13 @@ class VolumeView : public QWidget {
   // Where the 3D image is drawn inside the widget, and its projection (for overlays, tests).
   QRect imageRect() const;
   std::optional<ViewProjection> projection() const;
+  // The measurements that 3D picks add to and that the view draws (none: no picking).
+  void setMeasurements(MeasurementModel* m);
 
  signals:
   void doubleClicked();
+  // A Ctrl+click found no surface: MESSAGE says why (for the status bar).
+  void pickMissed(const QString& message);
 
  protected:
   void paintEvent(QPaintEvent*) override;
@@ -65,7 +71,10 @@ class VolumeView : public QWidget {
   QPointF dragStart_, lastPos_;
   int dragFace_ = -1;
   ClipBox dragStartBox_;
-  int stateConnection_ = 0, crosshairConnection_ = 0;
+  int stateConnection_ = 0, crosshairConnection_ = 0, measureConnection_ = 0;
+  MeasurementModel* measurements_ = nullptr;
+  std::optional<glm::dvec2> pickAt_;  // the Ctrl+click waiting for its hit frame, 0..1 of the image
+  void onPickFrame(const Frame& f);
 };
 
 }  // namespace voxray::ui

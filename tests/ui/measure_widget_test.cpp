@@ -1,0 +1,124 @@
+// The measuring tools through the real widgets (offscreen): a distance drawn and its end
+// point dragged in a slice view, Del, the side panel's list, the export check box, and a
+// distance picked on the iso surface in the 3D view.
+#include <QListWidget>
+
+#include "slice_view.h"
+#include "volume_view.h"
+#include "voxray/engine/measure.h"
+#include "voxray/io/synthetic.h"
+#include "window_fixture.h"
+
+using namespace voxray;
+using namespace voxray::ui;
+using voxray::ui::test::differingPixels;
+
+class MeasureWidgetTest : public QObject {
+  Q_OBJECT
+  test::PhantomWindow fixture_;  // started afresh for each test function
+
+  // Widget pixel of voxel (I, J) on the axial view's slice.
+  QPoint at(SliceView& view, double i, double j) {
+    const Volume& v = *fixture_.models->document.volume();
+    const glm::dvec2 s = voxelToSlice(view.axes(), v.dims, {i, j, 0.0});
+    return view.toWidget(s.x, s.y).toPoint();
+  }
+  // Press, move in steps, release: QTest's own events, as a user's drag.
+  void dragMouse(QWidget* w, QPoint from, QPoint to) {
+    QTest::mousePress(w, Qt::LeftButton, Qt::NoModifier, from);
+    for (int step = 1; step <= 4; ++step) QTest::mouseMove(w, from + (to - from) * step / 4);
+    QTest::mouseRelease(w, Qt::LeftButton, Qt::NoModifier, to);
+  }
+  // Millimetres one widget pixel covers in the axial view (the tolerance of a mouse position).
+  double mmPerPixel(SliceView& view) {
+    const Volume& v = *fixture_.models->document.volume();
+    return v.spacingMm.x / (view.toWidget(1, 0).x() - view.toWidget(0, 0).x());
+  }
+
+ private slots:
+  void init() { QVERIFY(fixture_.start()); }
+  void cleanup() { fixture_.stop(); }
+
+  void distanceEndPointDragUpdatesValue() {
+    SliceView& axial = fixture_.window->sliceView(0);
+    const Volume& v = *fixture_.models->document.volume();
+    fixture_.models->measurements.setTool(MeasureTool::Distance);
+    dragMouse(&axial, at(axial, 10, 20), at(axial, 40, 20));
+    QCOMPARE(int(fixture_.models->measurements.items().size()), 1);
+    const Measurement& m = fixture_.models->measurements.items().front();
+    const double tol = 2 * mmPerPixel(axial);  // each end within a pixel of the voxel centre
+    QVERIFY2(std::abs(distanceMm(v, m.points[0], m.points[1]) - 30 * v.spacingMm.x) < tol,
+             measurementText(v, m).c_str());
+    const glm::dvec3 start = m.points[0];
+    // Grab the end handle and drag it 30 voxels down: the distance becomes the diagonal.
+    dragMouse(&axial, at(axial, 40, 20), at(axial, 40, 50));
+    QCOMPARE(int(fixture_.models->measurements.items().size()), 1);
+    const Measurement& moved = fixture_.models->measurements.items().front();
+    QCOMPARE(moved.points[0], start);  // the other end stays
+    const double diagonal = std::hypot(30 * v.spacingMm.x, 30 * v.spacingMm.y);
+    const double now = distanceMm(v, moved.points[0], moved.points[1]);
+    QVERIFY2(std::abs(now - diagonal) < tol, measurementText(v, moved).c_str());
+    // The side panel lists the new value.
+    auto* list = fixture_.window->findChild<QListWidget*>("measurementList");
+    QVERIFY(list);
+    QCOMPARE(list->count(), 1);
+    QVERIFY2(list->item(0)->text().contains(QString::fromStdString(measurementText(v, moved))),
+             qPrintable(list->item(0)->text()));
+    // Del in the view removes the selected measurement.
+    axial.setFocus();
+    QTest::keyClick(&axial, Qt::Key_Delete);
+    QCOMPARE(int(fixture_.models->measurements.items().size()), 0);
+    QCOMPARE(list->count(), 0);
+  }
+
+  void exportsShowMeasurementsOnlyWhenTicked() {
+    SliceView& axial = fixture_.window->sliceView(0);
+    axial.setAnnotations(false);  // no cursor readout in the comparison
+    axial.setExporting(true);
+    const QImage plain = axial.grab().toImage();
+    fixture_.models->measurements.add(MeasureKind::Ellipse, {{20, 20, 32}, {40, 44, 32}}, 2);
+    const QImage hidden = axial.grab().toImage();
+    QCOMPARE(fixture_.models->measurements.showInExports(), false);  // off by default
+    QCOMPARE(differingPixels(plain, hidden), 0);
+    fixture_.models->measurements.setShowInExports(true);
+    const QImage shown = axial.grab().toImage();
+    QVERIFY(differingPixels(plain, shown) > 50);
+    axial.setExporting(false);  // on screen they always show
+    fixture_.models->measurements.setShowInExports(false);
+    QVERIFY(differingPixels(plain, axial.grab().toImage()) > 50);
+  }
+
+  // Ctrl+click twice on the analytic sphere in iso mode: both picked points lie within 0.05
+  // voxel of the surface and make one distance, shown in the slice views too.
+  void ctrlClickPicksIsoSurfacePoints() {
+    const SyntheticSpec spec{SyntheticShape::Sphere, 48};
+    auto v = std::make_shared<const Volume>(makeSyntheticVolume(spec));
+    fixture_.models->crosshair.setDims(v->dims);
+    fixture_.models->document.set(v, "sphere");
+    fixture_.models->render.update(kAppearance, [](RenderParams& p) {
+      p.mode = Mode::Iso;
+      p.isoLo = 0.0;
+    });
+    test::waitFullFrame(*fixture_.window);
+    VolumeView& view = fixture_.window->volumeView();
+    const QRect r = view.imageRect();
+    QSignalSpy picks(&fixture_.window->scheduler(), &RenderScheduler::pickReady);
+    QSignalSpy missed(&view, &VolumeView::pickMissed);
+    for (QPoint click : {r.center(), r.center() + QPoint(r.width() / 16, -r.height() / 16)}) {
+      QTest::mouseClick(&view, Qt::LeftButton, Qt::ControlModifier, click);
+      QVERIFY(picks.wait(60000));
+    }
+    QVERIFY2(missed.isEmpty(), missed.isEmpty() ? "" : qPrintable(missed.first().at(0).toString()));
+    QCOMPARE(int(fixture_.models->measurements.items().size()), 1);
+    const Measurement& m = fixture_.models->measurements.items().front();
+    QCOMPARE(m.normalAxis, -1);
+    const AnalyticField field{spec};
+    for (const auto& p : m.points)
+      QVERIFY2(std::abs(field.surfaceDistance(p)) < 0.05,
+               qPrintable(QString::number(field.surfaceDistance(p))));
+    QVERIFY(distanceMm(*v, m.points[0], m.points[1]) > 3.0);
+  }
+};
+
+QTEST_MAIN(MeasureWidgetTest)
+#include "measure_widget_test.moc"
