@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -45,46 +46,47 @@ std::string readText(const std::string& path) {
   return s.str();
 }
 
-// Every field away from its default, with values that ten significant digits would not
-// keep (a dragged camera).
+// Every render parameter away from its default, as the declaration's text, with values ten
+// significant digits would not keep (a dragged camera): 1/3, 2/3, 1/7, 100/3.
+const std::map<std::string, std::string> kUnusual = {
+    {"size", "641x479"},
+    {"mode", "dvr"},
+    {"preset", "CT-Bone"},
+    {"tf", "-100.5:0.1:0.2:0.3:0,300.25:1:0.9:0.8:0.05"},
+    {"preset-shift", "-123.456789012345"},
+    {"iso", "150,2000"},
+    {"gradient", "sobel"},
+    {"interp", "nearest"},
+    {"step", "0.3"},
+    {"refine", "7"},
+    {"shading", "off"},
+    {"opacity-correction", "off"},
+    {"jitter", "on"},
+    {"early-termination", "0.95"},
+    {"window", "1500,-600"},
+    {"azimuth", "0.3333333333333333"},
+    {"elevation", "-21.234567890123"},
+    {"zoom", "0.6666666666666666"},
+    {"distance", "812.5"},
+    {"pan", "12.3456789012345,-0.1"},
+    {"projection", "orthographic"},
+    {"fov", "45"},
+    {"clip", "0.1,0.9,0.2,0.8,0.14285714285714285,0.7"},
+    {"light", "33.333333333333336,-5.5,20"},
+    {"light-follows-camera", "off"},
+    {"ambient", "0.2"},
+    {"diffuse", "0.6"},
+    {"specular", "0.4"},
+    {"shininess", "64"},
+    {"surface-color", "0.5,0.25,0.125"},
+    {"background", "0.1,0.2,0.3"}};
+
 Session unusualSession() {
   Session s;
-  RenderParams& p = s.render;
-  p.width = 641;
-  p.height = 479;
-  p.mode = Mode::Dvr;
-  p.preset = "CT-Bone";
-  p.presetShiftHu = -123.456789012345;
-  p.transferFunction = {{-100.5, {0.1, 0.2, 0.3, 0.0}}, {300.25, {1.0, 0.9, 0.8, 0.05}}};
-  p.isoLo = 150.0;
-  p.isoHi = 2000.0;
-  p.gradient = Gradient::Sobel;
-  p.interp = Interp::Nearest;
-  p.stepMm = 0.3;
-  p.refine = 7;
-  p.shading = false;
-  p.opacityCorrection = false;
-  p.jitter = true;
-  p.earlyTermination = 0.95;
-  p.windowWidth = 1500.0;
-  p.windowLevel = -600.0;
-  p.surfaceColor = {0.5, 0.25, 0.125};
-  p.background = {0.1, 0.2, 0.3};
-  p.camera.azimuthDeg = 1.0 / 3.0;
-  p.camera.elevationDeg = -21.234567890123;
-  p.camera.zoom = 2.0 / 3.0;
-  p.camera.distanceMm = 812.5;
-  p.camera.panMm = {12.3456789012345, -0.1};
-  p.camera.projection = Projection::Orthographic;
-  p.camera.fovDeg = 45.0;
-  p.clip.lo = {0.1, 0.2, 1.0 / 7.0};
-  p.clip.hi = {0.9, 0.8, 0.7};
-  p.light.position = {100.0 / 3.0, -5.5, 20.0};
-  p.light.followCamera = false;
-  p.light.ambient = 0.2;
-  p.light.diffuse = 0.6;
-  p.light.specular = 0.4;
-  p.light.shininess = 64.0;
+  for (const auto& spec : renderParamSpecs()) {  // a new parameter needs a value above
+    EXPECT_TRUE(kUnusual.count(spec.key)) << "no unusual value for " << spec.key;
+    if (kUnusual.count(spec.key)) spec.parse(s.render, kUnusual.at(spec.key));
+  }
   s.qualityPreset = "reference";
   s.resolution = {800, 600};
   s.windowWidth = 350.5;
@@ -134,9 +136,11 @@ TEST(Session, EveryFieldRoundTripsExactly) {
   EXPECT_EQ(toText(r.render), toText(s.render));
   // Exactly, not to ten digits: a reopened session renders the frame it was saved from.
   EXPECT_EQ(r.render.camera.azimuthDeg, 1.0 / 3.0);
+  EXPECT_EQ(r.render.camera.zoom, 2.0 / 3.0);
   EXPECT_EQ(r.render.camera.elevationDeg, -21.234567890123);
   EXPECT_EQ(r.render.clip.lo.z, 1.0 / 7.0);
   EXPECT_EQ(r.render.light.position.x, 100.0 / 3.0);
+  EXPECT_FALSE(r.render.light.followCamera);
   EXPECT_EQ(r.render.presetShiftHu, -123.456789012345);
   EXPECT_EQ(r.render.camera.panMm.x, 12.3456789012345);
   EXPECT_EQ(r.input.path, s.input.path);

@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <random>
 #include <sstream>
 
+#include "../io/test_support.h"
 #include "render_worker.h"
 #include "session_state.h"
 #include "study_state.h"
@@ -29,20 +29,6 @@ const std::string kCtHead = std::string(VOXRAY_DATA_DIR) + "/stanford/CThead";
 const std::map<std::string, std::string> kCtHeadFlags = {
     {"raw-dims", "256,256"},  {"raw-type", "i16"},        {"raw-endian", "big"},
     {"raw-spacing", "1,1,2"}, {"raw-rescale", "1,-1024"}, {"raw-axes", "LPI"}};
-
-struct Scratch {
-  fs::path root;
-  Scratch() {
-    std::random_device seed;
-    root = fs::temp_directory_path() / ("voxray-session-ui-test-" + std::to_string(seed()));
-    fs::create_directories(root);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(root, ec);
-  }
-  std::string file(const std::string& name) const { return (root / name).string(); }
-};
 
 std::string readText(const std::string& path) {
   std::ifstream in(path);
@@ -123,7 +109,7 @@ size_t differingBytes(const Image& a, const Image& b) {
 // Tolerance 0: the CLI and the view's RenderWorker run the same kernels on the same device
 // (VOXRAY_DEVICE=cpu) with the same parameters, so equal images are the only right answer.
 TEST(SessionRender, CliRendersTheViewsFramePixelForPixel) {
-  Scratch dir;
+  test::TempDir dir;
   AppModels m;
   openCtHeadAndLookAround(m);
   const glm::ivec2 viewSize{208, 150};
@@ -154,7 +140,7 @@ TEST(SessionRender, CliRendersTheViewsFramePixelForPixel) {
 }
 
 TEST(SessionRender, ReopenedSessionRestoresTheModelsState) {
-  Scratch dir;
+  test::TempDir dir;
   AppModels m;
   openCtHeadAndLookAround(m);
   Quality q = m.render.quality();
@@ -185,9 +171,9 @@ TEST(SessionRender, ReopenedSessionRestoresTheModelsState) {
 }
 
 TEST(SessionRender, CliSaysWhereMovedDataWasLookedForAndTakesItsNewPlace) {
-  Scratch dir;
+  test::TempDir dir;
   Session s;
-  s.input = {(dir.root / "gone" / "CThead").string(), kCtHeadFlags};
+  s.input = {(dir.path() / "gone" / "CThead").string(), kCtHeadFlags};
   s.render.width = 64;
   s.render.height = 48;
   const std::string session = dir.file("moved.json");
@@ -206,7 +192,7 @@ TEST(SessionRender, CliSaysWhereMovedDataWasLookedForAndTakesItsNewPlace) {
 }
 
 TEST(SessionRender, CliKeepsAnExistingSessionUnlessForced) {
-  Scratch dir;
+  test::TempDir dir;
   const std::string session = dir.file("kept.json"), out = dir.file("x.png"), log = dir.file("log");
   std::ofstream(session) << "{}";
   const std::string args = "render --size 32x24 -o '" + out + "' --save-session '" + session + "'";

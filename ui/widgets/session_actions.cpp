@@ -43,19 +43,22 @@ void SessionActions::say(const QString& title, const QString& text) {
     QMessageBox::warning(&window_, title, text);
 }
 
+QString SessionActions::askPath(bool forSaving) {
+  if (choosePath) return choosePath();
+  QSettings s;
+  const QString folder = s.value("lastSessionFolder").toString();
+  // saveTo asks about replacing, with the name as it will be written.
+  const QString path =
+      forSaving ? QFileDialog::getSaveFileName(&window_, "Save session", folder, kFilter, nullptr,
+                                               QFileDialog::DontConfirmOverwrite)
+                : QFileDialog::getOpenFileName(&window_, "Open session", folder, kFilter);
+  if (!path.isEmpty()) s.setValue("lastSessionFolder", QFileInfo(path).absolutePath());
+  return path;
+}
+
 void SessionActions::save() {
   if (models_.document.empty()) return;
-  QString path;
-  if (choosePath) {
-    path = choosePath();
-  } else {
-    QSettings s;
-    // saveTo asks about replacing, with the name as it will be written.
-    path = QFileDialog::getSaveFileName(&window_, "Save session",
-                                        s.value("lastSessionFolder").toString(), kFilter, nullptr,
-                                        QFileDialog::DontConfirmOverwrite);
-    if (!path.isEmpty()) s.setValue("lastSessionFolder", QFileInfo(path).absolutePath());
-  }
+  const QString path = askPath(true);
   if (!path.isEmpty()) saveTo(path);
 }
 
@@ -86,15 +89,7 @@ bool SessionActions::saveTo(const QString& chosen) {
 }
 
 void SessionActions::open() {
-  QString path;
-  if (choosePath) {
-    path = choosePath();
-  } else {
-    QSettings s;
-    path = QFileDialog::getOpenFileName(&window_, "Open session",
-                                        s.value("lastSessionFolder").toString(), kFilter);
-    if (!path.isEmpty()) s.setValue("lastSessionFolder", QFileInfo(path).absolutePath());
-  }
+  const QString path = askPath(false);
   if (!path.isEmpty()) openFile(path.toStdString());
 }
 

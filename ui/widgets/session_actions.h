@@ -38,6 +38,7 @@ class SessionActions : public QObject {
 
  private:
   void say(const QString& title, const QString& text);
+  QString askPath(bool forSaving);  // choosePath, else a file dialog; "" = cancelled
   QString askLocation(const QString& message);
   void remember(const std::string& path);  // the recent-files list
 
