@@ -97,7 +97,9 @@ Run addRenderCommand(CLI::App& app) {
     Volume v = input.load();
     const RenderParams p = frameToRender(*o, s, v);
     if (!o->saveSession.empty()) {  // before rendering: a kept file stops the command early
-      writeSessionFile(o->saveSession, s, o->force);
+      Session saved = s;
+      saved.crosshair = v.dims / 2;  // the slice views at the centre, as a study opens
+      writeSessionFile(o->saveSession, saved, o->force);
       std::cerr << "session saved -> " << o->saveSession << "\n";
     }
     ClContext ctx(o->device);

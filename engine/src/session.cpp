@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -98,8 +99,15 @@ Json inputJson(const SessionInput& in, const std::string& sessionPath) {
   if (in.path.empty()) {
     j["path"] = "";
   } else {
-    const fs::path absolute = normalAbsolute(in.path);
-    const fs::path relative = absolute.lexically_relative(folderOf(sessionPath));
+    const fs::path absolute = normalAbsolute(in.path), folder = folderOf(sessionPath);
+    // Relative when the two share a folder below the root ("/data/study" beside
+    // "/data/sessions"): such trees move together; "../../../work/..." would not.
+    auto top = [](const fs::path& p) {
+      return std::next(p.begin()) == p.end() ? fs::path() : *std::next(p.begin());
+    };
+    const fs::path relative = top(absolute) == top(folder) && !top(folder).empty()
+                                  ? absolute.lexically_relative(folder)
+                                  : fs::path();
     j["path"] = (relative.empty() ? absolute : relative).string();
     j["absolute-path"] = absolute.string();
   }

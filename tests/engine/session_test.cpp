@@ -173,6 +173,11 @@ TEST(Session, InputIsStoredRelativeToTheSessionAndFollowsAMovedFolder) {
   EXPECT_EQ(j["input"]["path"], "../data/volume.raw");
   EXPECT_EQ(j["input"]["absolute-path"], s.input.path);
 
+  // Nothing in common below the root: the absolute path (a "../../.." path would not move).
+  Session far;
+  far.input.path = "/voxray-elsewhere/data/volume.raw";
+  EXPECT_EQ(jsonOf(far, (dir.root / "a.json").string())["input"]["path"], far.input.path);
+
   // The whole study folder moved (another machine): found beside the session.
   fs::rename(dir.root / "study", dir.root / "moved");
   SessionRead read = readSessionFile((dir.root / "moved/sessions/a.json").string());
