@@ -19,6 +19,7 @@ using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
 constexpr const char* kVersionKey = "voxray-session";
+constexpr int kMaxDepth = 256;
 
 // Reads one session's JSON, naming the file and the field in every error, and collecting
 // the warnings about fields it ignores or misses.
@@ -211,7 +212,13 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
 SessionRead sessionFromJson(const std::string& text, const std::string& sessionPath) {
   Json root;
   try {
-    root = Json::parse(text);
+    // Writing measurements back recurses once per level: a hostile nesting stops here.
+    root = Json::parse(text, [&](int depth, Json::parse_event_t, Json&) {
+      if (depth > kMaxDepth)
+        throw inputError("session " + sessionPath + ": nested deeper than " +
+                         std::to_string(kMaxDepth) + " levels; not a Voxray session");
+      return true;
+    });
   } catch (const Json::exception& e) {
     throw inputError("session " + sessionPath + ": not a JSON file (" + e.what() +
                      "); choose a session saved by Voxray");

@@ -285,6 +285,17 @@ TEST(Session, MissingOrWrongFieldsAreErrorsNamingTheField) {
   EXPECT_TRUE(read.render.jitter);
 
   EXPECT_NE(readError(Json::parse("[1, 2]")).find("not a Voxray session"), std::string::npos);
+  // Measurements nested 100,000 deep (hostile input) are refused, not written back recursively.
+  std::string deep = good.dump();
+  deep.replace(deep.find("\"measurements\":[]"), 17,
+               "\"measurements\":" + std::string(100000, '[') + std::string(100000, ']'));
+  try {
+    sessionFromJson(deep, "s.json");
+    ADD_FAILURE() << "100,000 levels read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("nested deeper than 256 levels"), std::string::npos)
+        << e.what();
+  }
   try {
     sessionFromJson("{\"voxray-session\": 1,", "s.json");
     ADD_FAILURE() << "truncated JSON read";
