@@ -9,6 +9,7 @@
 
 #include "main_window.h"
 #include "qt_image.h"
+#include "session_state.h"
 #include "start_options.h"
 #include "voxray/io/error.h"
 
@@ -74,7 +75,10 @@ int main(int argc, char** argv) {
   window->show();
   // The camera, clip and light values given belong to the volume opened here: it starts
   // from its own defaults, then takes them (the preferences among them are applied above).
-  window->open(options.input, options.load, options.renderValues);
+  if (isSessionPath(options.input))
+    window->sessions().openFile(options.input);  // a session file: its own state
+  else
+    window->open(options.input, options.load, options.renderValues);
   int rc = app.exec();
   window.reset();  // widgets go before the models they are bound to
   return rc != 0 ? rc : exitCode;

@@ -1,10 +1,14 @@
+#include <algorithm>
 #include <iostream>
 
 #include "commands.h"
 #include "input_options.h"
 #include "render_flags.h"
 #include "voxray/engine/cl_context.h"
+#include "voxray/engine/quality.h"
 #include "voxray/engine/raycaster.h"
+#include "voxray/engine/session.h"
+#include "voxray/io/error.h"
 
 namespace voxray::cli {
 
@@ -14,7 +18,48 @@ struct RenderOptions {
   RenderFlags flags;
   std::string output, device, storage = "auto";
   size_t slabMib = 0;
+  std::string session, quality, saveSession;
+  bool force = false;
 };
+
+// What this command line renders: the session's state (when --session is given) with what
+// was given here on top. INPUT, input flags, --quality and render flags win over the session.
+Session sessionToRender(const RenderOptions& o) {
+  Session s;
+  s.qualityPreset.clear();  // no session: the parameters as given (custom)
+  if (!o.session.empty()) {
+    SessionRead read = readSessionFile(o.session);
+    for (const auto& w : read.warnings)
+      std::cerr << "voxray-cli: warning: session " << o.session << ": " << w << "\n";
+    if (o.input.input.empty() && !read.missingInput.empty())
+      throw inputError(movedDataMessage(
+          o.session, read.missingInput,
+          "Move it back, or give its new location as INPUT: voxray-cli render NEW_LOCATION "
+          "--session " +
+              o.session + " -o " + o.output));
+    s = std::move(read.session);
+  }
+  if (!o.input.input.empty()) s.input.path = o.input.input;
+  for (const auto& [key, value] : o.input.flags) s.input.flags[key] = value;
+  if (!o.quality.empty()) s.qualityPreset = findQualityPreset(o.quality).name;
+  applyRenderValues(s.render, o.flags.given);
+  return s;
+}
+
+// The frame to render: with a session or --quality, as the workstation's view at rest
+// (settledFrame); the size is --size when given, else the session's view size at its
+// quality's image scale, else the default.
+RenderParams frameToRender(const RenderOptions& o, const Session& s, const Volume& v) {
+  if (o.session.empty() && o.quality.empty()) return s.render;
+  const double minSpacing = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
+  RenderParams p = settledFrame(s.render, s.qualityPreset, s.resolution,
+                                {s.render.width, s.render.height}, minSpacing);
+  if (o.session.empty() || o.flags.given.count("size")) {
+    p.width = s.render.width;
+    p.height = s.render.height;
+  }
+  return p;
+}
 }  // namespace
 
 VolumeStorage parseStorage(const std::string& s) {
@@ -34,10 +79,29 @@ Run addRenderCommand(CLI::App& app) {
   cmd->add_option("--slab-mib", o->slabMib,
                   "split the volume into z slabs of at most this many MiB on the device "
                   "(default: only when it exceeds the largest allocation)");
+  cmd->add_option("--session", o->session,
+                  "render a saved session's 3D view: its input, parameters, view size and "
+                  "quality; INPUT, input flags, --quality and render flags given here win");
+  cmd->add_option("--quality", o->quality,
+                  "quality preset: interactive, balanced or reference (default: the "
+                  "session's; none without a session)");
+  cmd->add_option("--save-session", o->saveSession,
+                  "also save this render's input, parameters and quality as a session file");
+  cmd->add_flag("--force", o->force, "--save-session may replace an existing file");
   o->flags.add(*cmd);
   return [o] {
-    RenderParams p = o->flags.params();
-    Volume v = o->input.load();
+    const Session s = sessionToRender(*o);
+    InputOptions input = o->input;
+    input.input = s.input.path;
+    input.flags = s.input.flags;
+    Volume v = input.load();
+    const RenderParams p = frameToRender(*o, s, v);
+    if (!o->saveSession.empty()) {  // before rendering: a kept file stops the command early
+      Session saved = s;
+      saved.crosshair = v.dims / 2;  // the slice views at the centre, as a study opens
+      writeSessionFile(o->saveSession, saved, o->force);
+      std::cerr << "session saved -> " << o->saveSession << "\n";
+    }
     ClContext ctx(o->device);
     Raycaster rc(ctx, v, parseStorage(o->storage));
     RaycasterOptions ro;

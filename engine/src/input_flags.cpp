@@ -138,4 +138,11 @@ LoadOptions loadOptionsFromFlags(const std::map<std::string, std::string>& given
   return o;
 }
 
+std::map<std::string, std::string> flagsFromLoadOptions(const LoadOptions& o) {
+  std::map<std::string, std::string> flags;
+  for (const auto& spec : inputFlagSpecs())
+    if (std::string text = spec.format(o); !text.empty()) flags.emplace(spec.key, text);
+  return flags;
+}
+
 }  // namespace voxray

@@ -85,4 +85,23 @@ RenderParams applyQuality(RenderParams p, const QualityPreset& q, const Volume& 
   return applyQuality(std::move(p), q, std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z}));
 }
 
+RenderParams settledFrame(const RenderParams& base, const std::string& qualityPreset,
+                          const glm::ivec2& resolution, const glm::ivec2& viewSize,
+                          double minSpacingMm) {
+  RenderParams p = base;
+  const glm::ivec2 size = resolution.x > 0 ? resolution : viewSize;
+  p.width = size.x;
+  p.height = size.y;
+  if (!qualityPreset.empty()) {
+    p = applyQuality(p, findQualityPreset(qualityPreset), minSpacingMm);
+    p.interp = base.interp;  // the user's, set to the preset's when it was picked
+    p.gradient = base.gradient;
+  } else {
+    p.stepMm = effectiveStepMm(base, minSpacingMm);
+  }
+  p.width = std::max(p.width, 16);
+  p.height = std::max(p.height, 16);
+  return p;
+}
+
 }  // namespace voxray

@@ -69,11 +69,13 @@ glm::dvec3 toVec3(const std::string& key, const std::string& s) {
   return {v[0], v[1], v[2]};
 }
 
+// The shortest text that reads back as exactly V: saved state (a session) must reproduce
+// the frame it was saved from bit for bit, and a camera dragged to 31.23456789012 degrees
+// would not survive ten digits.
 std::string fmt(double v) {
-  std::ostringstream ss;
-  ss.precision(10);
-  ss << v;
-  return ss.str();
+  char buffer[32];
+  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return ec == std::errc() ? std::string(buffer, end) : std::string("nan");
 }
 
 std::string fmt(const glm::dvec3& v) { return fmt(v.x) + "," + fmt(v.y) + "," + fmt(v.z); }

@@ -6,6 +6,7 @@
 #include "no_qt.h"
 #include "render_state_model.h"
 #include "volume_document.h"
+#include "voxray/engine/session.h"
 #include "window_level.h"
 
 namespace voxray::ui {
@@ -15,7 +16,9 @@ struct AppModels {
   RenderStateModel render;
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
-  MeasurementModel measurements;  // session: measurementsToJson / measurementsFromJson
+  MeasurementModel measurements;  // a session keeps them (session_state.cpp)
+  // Where the document's volume came from (path and input flags), for a session to save.
+  SessionInput source;
 
   // The per-study state of the volume the document keeps as its previous one: openStudy
   // saves it, restorePreviousStudy (study_state.h) brings it back with that volume.
@@ -25,6 +28,7 @@ struct AppModels {
     WindowLevel wl;
     std::string wlSource;
     glm::ivec3 dims{1}, crosshair{0};
+    SessionInput source;
   } previousStudy;
 };
 

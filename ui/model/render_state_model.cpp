@@ -141,28 +141,19 @@ void RenderStateModel::fromText(const std::string& text) {
 
 RenderParams planFrame(const RenderParams& base, const Quality& q, const glm::ivec2& viewSize,
                        bool interactive, double minSpacingMm, const DragSetting* drag) {
-  RenderParams p = base;
-  glm::ivec2 size = q.resolution.x > 0 ? q.resolution : viewSize;
-  p.width = size.x;
-  p.height = size.y;
-  if (interactive) {
-    QualityPreset dragPreset = findQualityPreset(kDragQualityPreset);
-    if (drag) {
-      dragPreset.resolutionScale = drag->scale;
-      dragPreset.stepVoxels = drag->stepVoxels;
-    }
-    p = applyQuality(p, dragPreset, minSpacingMm);
-    // Speed comes from the step and the size; the surfaces keep the user's look, so the
-    // shading does not change the moment the camera moves.
-    p.interp = base.interp;
-    p.gradient = base.gradient;
-  } else if (!q.preset.empty()) {
-    p = applyQuality(p, findQualityPreset(q.preset), minSpacingMm);
-    p.interp = base.interp;  // the user's, set to the preset's when it was picked
-    p.gradient = base.gradient;
-  } else {
-    p.stepMm = effectiveStepMm(base, minSpacingMm);
+  if (!interactive) return settledFrame(base, q.preset, q.resolution, viewSize, minSpacingMm);
+  QualityPreset dragPreset = findQualityPreset(kDragQualityPreset);
+  if (drag) {
+    dragPreset.resolutionScale = drag->scale;
+    dragPreset.stepVoxels = drag->stepVoxels;
   }
+  // The custom frame at full size, then the drag preset's (or controller's) scale and step.
+  RenderParams p = applyQuality(settledFrame(base, "", q.resolution, viewSize, minSpacingMm),
+                                dragPreset, minSpacingMm);
+  // Speed comes from the step and the size; the surfaces keep the user's look, so the
+  // shading does not change the moment the camera moves.
+  p.interp = base.interp;
+  p.gradient = base.gradient;
   p.width = std::max(p.width, 16);
   p.height = std::max(p.height, 16);
   return p;

@@ -88,6 +88,7 @@ void openStudy(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
     previous.wlSource = m.windowLevel.source();
     previous.dims = m.crosshair.dims();
     previous.crosshair = m.crosshair.voxel();
+    previous.source = m.source;
   }
   m.render.update(kCamera | kClip | kLight,
                   [](RenderParams& p) { copyStudyParams(RenderParams{}, p); });
@@ -95,6 +96,7 @@ void openStudy(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
   const InitialWindow w = initialWindow(*v);
   m.windowLevel.reset(w.wl, w.source);
   m.crosshair.setDims(v->dims);
+  m.measurements.clear();  // a study's own; a session brings them back
   // Last: whoever hears the document change sees the new study's state with it.
   m.document.set(std::move(v), std::move(name));
 }
@@ -108,6 +110,7 @@ void restorePreviousStudy(AppModels& m) {
     m.windowLevel.reset(previous.wl, previous.wlSource);
     m.crosshair.setDims(previous.dims);
     m.crosshair.setVoxel(previous.crosshair);
+    m.source = previous.source;
   }
   m.document.restorePrevious();
 }

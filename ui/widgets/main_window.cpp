@@ -24,11 +24,13 @@
 #include "raw_import_dialog.h"
 #include "recent_files.h"
 #include "series_picker.h"
+#include "session_state.h"
 #include "settings_store.h"
 #include "slice_view.h"
 #include "study_state.h"
 #include "theme.h"
 #include "volume_view.h"
+#include "voxray/engine/input_flags.h"
 #include "voxray/io/sample_volume.h"
 
 namespace voxray::ui {
@@ -96,11 +98,8 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
               showError("Cannot open", QString::fromStdString(e.what()));
               return;
             }
-            if (!input.isEmpty()) {
-              QSettings s;
-              saveRecent(s, pushRecent(loadRecent(s), input.toStdString()));
-              rebuildRecentMenu();
-            }
+            models_.source = std::exchange(loading_, {});
+            if (!input.isEmpty()) addRecent(input.toStdString());
             for (const auto& w : models_.document.volume()->warnings)
               statusBar()->showMessage(QString::fromStdString(w), 10000);
             emit volumeShown();
@@ -110,6 +109,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   connect(loader_, &LoadController::cancelled, this,
           [this] { statusBar()->showMessage("Loading cancelled", 5000); });
   wireMeasurements();
+  sessions_ = new SessionActions(*this, models_);
   buildMenus();
   qApp->installEventFilter(this);
   updateTitle();
@@ -139,9 +139,11 @@ void MainWindow::buildMenus() {
   file->addAction("Open &raw volume…", QKeySequence("Ctrl+R"), this, &MainWindow::openRaw);
   file->addAction("Open &sample CT", this, [this] { open(kSampleCtInput, {}); });
   file->addAction("Open head &phantom", this, [this] { open("", {}); });
+  file->addAction("Open &session…", QKeySequence("Ctrl+Shift+O"), sessions_, &SessionActions::open);
   recentMenu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();
   file->addSeparator();
+  file->addAction("Sa&ve session…", QKeySequence::Save, sessions_, &SessionActions::save);
   file->addAction("&Export screenshot…", QKeySequence("Ctrl+E"), this,
                   &MainWindow::exportScreenshot);
   file->addSeparator();
@@ -208,6 +210,10 @@ void MainWindow::rebuildRecentMenu() {
   for (const auto& entry : loadRecent(s)) {
     QString path = QString::fromStdString(entry);
     recentMenu_->addAction(path, this, [this, entry] {
+      if (isSessionPath(entry)) {
+        sessions_->openFile(entry);
+        return;
+      }
       QSettings settings;
       LoadOptions o;
       o.raw = loadRawLayoutFor(settings, entry);
@@ -217,10 +223,17 @@ void MainWindow::rebuildRecentMenu() {
   recentMenu_->setEnabled(!recentMenu_->isEmpty());
 }
 
+void MainWindow::addRecent(const std::string& path) {
+  QSettings s;
+  saveRecent(s, pushRecent(loadRecent(s), path));
+  rebuildRecentMenu();
+}
+
 void MainWindow::open(const std::string& input, const LoadOptions& options,
                       const std::map<std::string, std::string>& studyValues) {
   if (loader_->busy()) return;  // the loader ignores it too: keep the running load's values
   studyValues_ = studyValues;
+  loading_ = {input, flagsFromLoadOptions(options)};
   QString name =
       input.empty() ? QString("head phantom") : QFileInfo(QString::fromStdString(input)).fileName();
   if (options.raw) {

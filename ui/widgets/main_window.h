@@ -14,6 +14,7 @@
 #include "app_models.h"
 #include "load_controller.h"
 #include "render_scheduler.h"
+#include "session_actions.h"
 #include "status_text.h"
 #include "view_grid.h"
 #include "view_history.h"
@@ -35,12 +36,15 @@ class MainWindow : public QMainWindow {
   LoadController& loader() { return *loader_; }
   ViewHistory& history() { return *history_; }
   ViewGrid& grid() { return *grid_; }
+  SessionActions& sessions() { return *sessions_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
   void open(const std::string& input, const LoadOptions& options,
             const std::map<std::string, std::string>& studyValues = {});
   void restoreSettings();
+  // PATH (a volume or a session) at the top of File → Open recent.
+  void addRecent(const std::string& path);
 
   // Where load, render and export errors go: a modal message box unless a test (or an
   // embedding) sets its own sink.
@@ -83,6 +87,8 @@ class MainWindow : public QMainWindow {
   FrameStats stats_;
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
+  SessionActions* sessions_ = nullptr;
+  SessionInput loading_;  // the input being loaded, for AppModels::source
 };
 
 }  // namespace voxray::ui

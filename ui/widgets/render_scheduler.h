@@ -28,6 +28,7 @@ class RenderScheduler : public QObject {
   ~RenderScheduler() override;
 
   void setViewSize(QSize size);
+  QSize viewSize() const { return viewSize_; }  // what the view's frames are planned for
   // Called by views while the user drags anything that changes the 3D image (camera, clip
   // box, light: cheap frames) and when the drag ends.
   void beginInteraction();

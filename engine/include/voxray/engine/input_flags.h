@@ -19,5 +19,7 @@ const InputFlagSpec& findInputFlagSpec(const std::string& key);
 // The load options for the flags GIVEN (by key, without "--"). Throws Error (Input) for a
 // bad value, an unknown key, or raw flags without --raw-dims.
 LoadOptions loadOptionsFromFlags(const std::map<std::string, std::string>& given);
+// The flags that give O back through loadOptionsFromFlags (those with a value), by key.
+std::map<std::string, std::string> flagsFromLoadOptions(const LoadOptions& o);
 
 }  // namespace voxray

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "voxray/engine/render_params.h"
 
 namespace voxray {
@@ -39,5 +41,13 @@ const QualityPreset& findQualityPreset(const std::string& name);
 // p with the preset's step, reconstruction, gradient, refinement, jitter and image size.
 RenderParams applyQuality(RenderParams p, const QualityPreset& q, double minSpacingMm);
 RenderParams applyQuality(RenderParams p, const QualityPreset& q, const Volume& v);
+
+// The frame a view shows at rest, as the workstation plans it: BASE at the resolution
+// choice (else VIEWSIZE), then QUALITYPRESET's step, refinement, jitter and image scale with
+// BASE's reconstruction and gradient; custom (""): BASE's own effective step. At least
+// 16x16. Throws Error (Input) for an unknown preset.
+RenderParams settledFrame(const RenderParams& base, const std::string& qualityPreset,
+                          const glm::ivec2& resolution, const glm::ivec2& viewSize,
+                          double minSpacingMm);
 
 }  // namespace voxray

@@ -1,0 +1,71 @@
+#pragma once
+// A session file: what the workstation shows, saved as one versioned JSON file that the
+// workstation opens again and `voxray-cli render --session` renders. Qt-free and here (not
+// in ui/) so that voxray-cli, which links no Qt, reads the same schema.
+//
+// Render parameters are written and read through renderParamSpecs() (the one declaration),
+// the input's raw layout and series through inputFlagSpecs(): a parameter added there is
+// saved without a change here. Measurements are kept as JSON text, untouched.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "voxray/engine/render_params.h"
+
+namespace voxray {
+
+// The schema version this build writes, and the newest it reads.
+inline constexpr int kSessionVersion = 1;
+
+struct SessionInput {
+  std::string path;                          // absolute once read; empty: the embedded head phantom
+  std::map<std::string, std::string> flags;  // keys of inputFlagSpecs(): raw layout, series
+};
+
+// The slice views' layout names, in the workstation's grid order ("grid": none maximised).
+const std::vector<std::string>& sessionLayouts();
+
+struct Session {
+  SessionInput input;
+  // Every render parameter; "size" is the 3D view's size in pixels when it was saved.
+  RenderParams render;
+  std::string qualityPreset = "balanced";  // resources/quality name; empty: custom
+  glm::ivec2 resolution{0, 0};             // the resolution choice; {0, 0}: the view's size
+  double windowWidth = 400.0;              // the slice views' window/level (HU for CT)
+  double windowLevel = 40.0;
+  glm::ivec3 crosshair{0};  // the slice views' voxel (i, j, k): the three slice positions
+  Interp sliceInterp = Interp::Linear;
+  std::string layout = "grid";      // one of sessionLayouts()
+  std::string measurements = "[]";  // a JSON array owned by the measuring tools, kept as read
+};
+
+struct SessionRead {
+  Session session;
+  // Fields this version does not know (ignored) and render parameters the file lacks (left
+  // at their defaults), each as one line naming the field.
+  std::vector<std::string> warnings;
+  // Non-empty when the input is at none of these paths (the session's folder first, then
+  // where it was saved from): the data moved. session.input.path is the first of them.
+  std::vector<std::string> missingInput;
+};
+
+// S as JSON. SESSIONPATH: where it will be written; the input is stored relative to its
+// folder, with the absolute path beside it as a fallback.
+std::string sessionToJson(const Session& s, const std::string& sessionPath);
+// Throws Error (Input) naming SESSIONPATH and the field: not JSON, a missing required field,
+// a wrong type or bad value, a newer schema version.
+SessionRead sessionFromJson(const std::string& json, const std::string& sessionPath);
+
+SessionRead readSessionFile(const std::string& path);  // throws Error (Input)
+// Writes atomically. An existing file is replaced only with REPLACE (the user said yes, or
+// --force); otherwise Error (Output) says so. Throws Error (Output) when it cannot write.
+void writeSessionFile(const std::string& path, const Session& s, bool replace);
+
+// What to tell a user whose session data moved (SessionRead::missingInput): which paths
+// were tried and what to do. FIX: the way to give the new location in this front end.
+std::string movedDataMessage(const std::string& sessionPath, const std::vector<std::string>& tried,
+                             const std::string& fix);
+
+}  // namespace voxray
