@@ -33,11 +33,17 @@ glm::dmat3 CrosshairModel::voxelToMm() const {
                                  glm::dvec3(0, 0, spacing_.z));
 }
 
-void CrosshairModel::clickInView(const SliceAxes& axes, double u, double v) {
+glm::dvec3 CrosshairModel::viewToVoxel(const SliceAxes& axes, double u, double v) const {
   const glm::dvec3 base = sliceToVoxel(axes, dims_, u, v, centre_[axes.nAxis]);
+  const glm::dmat3& r = rotation(axes.orientation);
+  if (isIdentity(r)) return base;
   // The acquisition plane's point turned about the crosshair with the view's plane.
   const glm::dmat3 m = voxelToMm();
-  moveTo(centre_ + glm::inverse(m) * (rotation(axes.orientation) * (m * (base - centre_))));
+  return centre_ + glm::inverse(m) * (r * (m * (base - centre_)));
+}
+
+void CrosshairModel::clickInView(const SliceAxes& axes, double u, double v) {
+  moveTo(viewToVoxel(axes, u, v));
 }
 
 void CrosshairModel::scrollView(const SliceAxes& axes, int steps) {

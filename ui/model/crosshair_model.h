@@ -33,6 +33,9 @@ class CrosshairModel {
   const glm::dvec3& centre() const { return centre_; }  // voxel coordinates, continuous
   void setVoxel(const glm::ivec3& voxel);               // clamped into the volume
 
+  // The voxel position (continuous) at slice coordinates (u, v) of a view, on the plane it
+  // shows (turned about the crosshair when oblique).
+  glm::dvec3 viewToVoxel(const SliceAxes& axes, double u, double v) const;
   // A click at slice coordinates (u, v) of a view: moves within that view's plane.
   void clickInView(const SliceAxes& axes, double u, double v);
   // Wheel or arrow keys in a view: moves along that view's normal by STEPS slices.

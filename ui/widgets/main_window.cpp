@@ -136,6 +136,9 @@ void MainWindow::buildMenus() {
     QWidget* focused = QApplication::focusWidget();
     grid_->toggleMaximised(focused ? focused : volumeView_);
   });
+  view->addAction("Reset slice &planes", QKeySequence("Ctrl+Shift+R"), this,
+                  [this] { models_.crosshair.resetRotation(); })
+      ->setToolTip("Turn the slice views back to the acquisition planes");
   QMenu* theme = view->addMenu("&Theme");
   auto* themes = new QActionGroup(theme);
   for (const QString& name : themeNames()) {
