@@ -74,9 +74,9 @@ Chosen choosePlane(const Volume& v, const SliceOptions& o) {
 }  // namespace
 
 Run addSliceCommand(CLI::App& app) {
+  auto o = std::make_shared<SliceOptions>();
   auto* cmd = app.add_subcommand(
       "slice", "Write one plane of a volume (axial, coronal, sagittal or oblique; thin or a slab)");
-  auto o = std::make_shared<SliceOptions>();
   o->input.add(*cmd);
   cmd->add_option("-o,--output", o->output, "image file to write (PNG, TIFF or EXR)")->required();
   auto* plane = cmd->add_option("--plane", o->plane, "axial, coronal or sagittal (default axial)");

@@ -61,15 +61,8 @@ std::vector<float> samplePlane(const Volume& v, const PlaneGrid& g, Interp inter
 }
 
 const char* toString(SlabMode m) {
-  switch (m) {
-    case SlabMode::Mip:
-      return "mip";
-    case SlabMode::MinIp:
-      return "minip";
-    case SlabMode::Mean:
-      return "mean";
-  }
-  return "?";
+  static const char* const kNames[] = {"mip", "minip", "mean"};  // SlabMode's order
+  return kNames[size_t(m)];
 }
 
 SlabMode parseSlabMode(const std::string& s) {

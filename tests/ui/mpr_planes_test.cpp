@@ -32,10 +32,10 @@ Volume ramp() {
   v.spacingMm = {0.8, 0.9, 1.2};
   v.originMm = {-12.0, 7.0, 30.0};
   v.voxels.resize(v.voxelCount());
-  for (int k = 0; k < v.dims.z; ++k)
-    for (int j = 0; j < v.dims.y; ++j)
-      for (int i = 0; i < v.dims.x; ++i)
-        v.voxels[v.index(i, j, k)] = int16_t(3 * i + 5 * j + 7 * k);
+  for (size_t n = 0; n < v.voxels.size(); ++n) {  // x fastest, then y, then z
+    const size_t i = n % 40, j = n / 40 % 36, k = n / (40 * 36);
+    v.voxels[n] = int16_t(3 * i + 5 * j + 7 * k);
+  }
   return v;
 }
 
