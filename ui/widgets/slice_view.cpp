@@ -135,8 +135,9 @@ std::array<QPointF, 4> SliceView::rotationHandles() const {
 }
 
 bool SliceView::onRotationHandle(QPointF p) const {
+  const QRectF shown = crosshairBounds(font(), rect());  // where the overlay draws them
   for (const QPointF& h : rotationHandles())
-    if (QLineF(h, p).length() <= kRotateHandleRadius + 3.0) return true;
+    if (shown.contains(h) && QLineF(h, p).length() <= kRotateHandleRadius + 3.0) return true;
   return false;
 }
 
@@ -156,7 +157,7 @@ void SliceView::paintOverlay(QPainter& p) {
   if (oblique) o.axes.labels = frameLabels(crosshair_.frame(axes_));
   o.crosshair = voxelToSlice(axes_, v.dims, crosshair_.centre());
   o.traces = crosshairTraces();
-  o.rotateHandles = true;
+  o.rotateHandles = annotations_;  // screenshots carry no controls
   const Slab& slab = crosshair_.slab(orientation_);
   o.planeNote = oblique ? "oblique" : "";
   if (slab.thicknessMm > 0) {
