@@ -157,7 +157,7 @@ void SliceView::paintOverlay(QPainter& p) {
   if (oblique) o.axes.labels = frameLabels(crosshair_.frame(axes_));
   o.crosshair = voxelToSlice(axes_, v.dims, crosshair_.centre());
   o.traces = crosshairTraces();
-  o.rotateHandles = annotations_;  // screenshots carry no controls
+  o.rotateHandles = true;
   const Slab& slab = crosshair_.slab(orientation_);
   o.planeNote = oblique ? "oblique" : "";
   if (slab.thicknessMm > 0) {

@@ -36,8 +36,7 @@ class SliceView : public QWidget {
   // Widget position of slice coordinates (u, v: voxel units, slice_geometry.h) and back.
   QPointF toWidget(double u, double v) const;
   glm::dvec2 toSlice(QPointF widget) const;
-  // Hides the cursor readout, file name and rotation handles (screenshots carry no data or
-  // controls unless asked).
+  // Hides the cursor readout and file name (screenshots carry no data unless asked).
   void setAnnotations(bool on);
 
  signals:
