@@ -62,8 +62,12 @@ Chosen choosePlane(const Volume& v, const SliceOptions& o) {
                          " plane has slices 0 to " + std::to_string(count - 1));
       c.centre[c.axes.nAxis] = o.index;
     } else if (o.hasMm) {
-      // Along the view's normal: the plane whose points lie at *o.mm on that LPS direction.
-      const glm::dvec3 normal = v.direction[c.axes.nAxis];
+      // On the positive LPS axis nearest the view's normal (axial: S, even for slices
+      // stored head to feet), the plane whose points lie at o.mm.
+      glm::dvec3 normal = v.direction[c.axes.nAxis];
+      const glm::dvec3 size = glm::abs(normal);
+      const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+      if (normal[axis] < 0) normal = -normal;
       const glm::dvec3 at = ui::voxelToPatientMm(v, c.centre);
       c.centre = ui::patientMmToVoxel(v, at + normal * (o.mm - glm::dot(normal, at)));
     }

@@ -82,6 +82,12 @@ TEST(CliSlice, MillimetresPickTheSliceAtThatPatientPosition) {
       0);
   ASSERT_EQ(slice(kCthead + " --plane coronal --index 100", "coronal100", &byIndex).exitCode, 0);
   expectSameImage(byMm, byIndex);
+  // Axial positions are S (up) even though CThead's slices run head to feet (LPI).
+  const double z = voxelToPatientMm(v, {0, 0, 40}).z;
+  ASSERT_EQ(slice(kCthead + " --plane axial --mm " + std::to_string(z), "axialMm", &byMm).exitCode,
+            0);
+  ASSERT_EQ(slice(kCthead + " --plane axial --index 40", "axial40", &byIndex).exitCode, 0);
+  expectSameImage(byMm, byIndex);
 }
 
 TEST(CliSlice, AnObliqueSlabIsTheModelsPlaneAndSlab) {
