@@ -16,5 +16,6 @@ Run addPresetsCommand(CLI::App& app);
 Run addBenchCommand(CLI::App& app);
 Run addAccuracyCommand(CLI::App& app);
 Run addMeasureCommand(CLI::App& app);
+Run addSliceCommand(CLI::App& app);
 
 }  // namespace voxray::cli

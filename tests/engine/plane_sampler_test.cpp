@@ -3,9 +3,11 @@
 // reconstruction reproduces exactly), voxel values, and the stated background.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "voxray/engine/plane_sampler.h"
+#include "voxray/io/error.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -140,6 +142,104 @@ TEST(PlaneSampler, EdgesClampInsideTheBoxAndTakeTheBackgroundOutside) {
             std::vector<float>(6, kBackground));
   g.size = {0, 5};
   EXPECT_TRUE(samplePlane(v, g, Interp::Linear, kBackground).empty());
+}
+
+}  // namespace voxray
+
+// Slabs (samplePlane with a Slab): a bright or dark line across the slab, means of known
+// sets, and the thin plane for a thickness of 0.
+namespace voxray {
+
+namespace {
+
+// 12^3 voxels of 1 mm, physical value 100 everywhere but one line along x at (j, k) = (7, 5).
+Volume lineVolume(int16_t line) {
+  Volume v;
+  v.dims = {12, 12, 12};
+  v.voxels.assign(v.voxelCount(), 100);
+  for (int i = 0; i < v.dims.x; ++i) v.voxels[v.index(i, 7, 5)] = line;
+  return v;
+}
+
+// A coronal-like plane (x along i, y along k) through j = J, one voxel per pixel.
+PlaneGrid planeAcrossJ(const Volume& v, double j) {
+  PlaneGrid g;
+  g.originMm = {0.0, j, 0.0};
+  g.uDir = {1, 0, 0};
+  g.vDir = {0, 0, 1};  // uDir x vDir = -y: the slab runs along j
+  g.size = {v.dims.x, v.dims.z};
+  return g;
+}
+
+}  // namespace
+
+TEST(PlaneSampler, SlabMipOfABrightLineIsTheLine) {
+  const Volume v = lineVolume(2000);
+  // 6 mm around j = 5: samples at j = 2 ... 8, one on the line's voxel centres.
+  const std::vector<float> mip =
+      samplePlane(v, planeAcrossJ(v, 5.0), Interp::Linear, kBackground, {6.0, SlabMode::Mip});
+  EXPECT_EQ(slabSamples(v, {6.0, SlabMode::Mip}), 7);
+  for (int k = 0; k < v.dims.z; ++k)
+    for (int i = 0; i < v.dims.x; ++i)
+      ASSERT_EQ(mip[size_t(k * v.dims.x + i)], k == 5 ? 2000.0f : 100.0f) << i << "," << k;
+  // A slab that stops short of the line (j = 2 ... 6) does not see it.
+  const std::vector<float> shortOf =
+      samplePlane(v, planeAcrossJ(v, 4.0), Interp::Linear, kBackground, {4.0, SlabMode::Mip});
+  EXPECT_EQ(*std::max_element(shortOf.begin(), shortOf.end()), 100.0f);
+}
+
+TEST(PlaneSampler, SlabMinIpOfADarkLineAndMeanOfALine) {
+  const Volume dark = lineVolume(-900);
+  const std::vector<float> minip = samplePlane(dark, planeAcrossJ(dark, 6.0), Interp::Linear,
+                                               kBackground, {2.0, SlabMode::MinIp});  // j = 5, 6, 7
+  for (int i = 0; i < dark.dims.x; ++i) {
+    EXPECT_EQ(minip[size_t(5 * dark.dims.x + i)], -900.0f) << i;
+    EXPECT_EQ(minip[size_t(4 * dark.dims.x + i)], 100.0f) << i;
+  }
+  // Mean over 7 samples (j = 4 ... 10), one on the line: (2000 + 6 * 100) / 7.
+  const Volume bright = lineVolume(2000);
+  const std::vector<float> mean = samplePlane(bright, planeAcrossJ(bright, 7.0), Interp::Linear,
+                                              kBackground, {6.0, SlabMode::Mean});
+  EXPECT_FLOAT_EQ(mean[size_t(5 * bright.dims.x + 3)], float((2000.0 + 6 * 100.0) / 7.0));
+  EXPECT_EQ(mean[size_t(4 * bright.dims.x + 3)], 100.0f);
+}
+
+TEST(PlaneSampler, SlabMeanOfARampIsTheRampAtTheCentre) {
+  // A linear ramp's mean over samples placed symmetrically about a point is its value there:
+  // an oblique slab well inside the volume gives the thin plane's analytic values.
+  const Volume v = ramp();
+  PlaneGrid g;
+  g.originMm = patientMm(v, {2.2, 1.9, 1.6});
+  g.uDir = glm::normalize(glm::dvec3(1.0, 1.0, 0.0));
+  g.vDir = glm::normalize(glm::dvec3(-1.0, 1.0, 0.5));
+  g.vDir = glm::normalize(g.vDir - glm::dot(g.vDir, g.uDir) * g.uDir);
+  g.spacingMm = {0.2, 0.2};
+  g.size = {3, 3};
+  const std::vector<float> mean =
+      samplePlane(v, g, Interp::Linear, kBackground, {1.0, SlabMode::Mean});
+  const std::vector<float> thin = samplePlane(v, g, Interp::Linear, kBackground);
+  for (size_t i = 0; i < mean.size(); ++i) EXPECT_NEAR(mean[i], thin[i], 1e-3) << i;
+}
+
+TEST(PlaneSampler, SlabOfZeroIsTheThinPlaneAndModesHaveNames) {
+  Volume v = ramp();
+  for (size_t i = 0; i < v.voxels.size(); ++i) v.voxels[i] = int16_t((i * 7919) % 2000 - 1000);
+  PlaneGrid g;
+  g.originMm = patientMm(v, {0.3, 0.2, 0.4});
+  g.uDir = glm::normalize(glm::dvec3(1.0, 0.3, 0.0));
+  g.vDir = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), g.uDir));
+  g.spacingMm = {0.4, 0.4};
+  g.size = {9, 7};
+  const std::vector<float> thin = samplePlane(v, g, Interp::Linear, kBackground);
+  for (SlabMode m : {SlabMode::Mip, SlabMode::MinIp, SlabMode::Mean}) {
+    EXPECT_EQ(samplePlane(v, g, Interp::Linear, kBackground, {0.0, m}), thin) << toString(m);
+    EXPECT_EQ(parseSlabMode(toString(m)), m);
+  }
+  EXPECT_EQ(slabSamples(v, {0.0, SlabMode::Mip}), 1);
+  EXPECT_EQ(slabSamples(v, {-3.0, SlabMode::Mip}), 1);
+  EXPECT_EQ(slabSamples(v, {1.0, SlabMode::Mip}), 3);     // every 0.5 mm: 0, 0.5, 1
+  EXPECT_EQ(slabSamples(v, {1e9, SlabMode::Mip}), 4096);  // bounded
+  EXPECT_THROW(parseSlabMode("max"), Error);
 }
 
 }  // namespace voxray

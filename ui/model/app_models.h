@@ -29,6 +29,8 @@ struct AppModels {
     std::string wlSource;
     glm::ivec3 dims{1}, crosshair{0};
     SessionInput source;
+    glm::dvec3 spacingMm{1.0};  // the crosshair's geometry (oblique planes turn in mm)
+    glm::dmat3 direction{1.0};
   } previousStudy;
 };
 

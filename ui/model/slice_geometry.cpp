@@ -69,6 +69,7 @@ const char* toString(Orientation o) {
 SliceAxes sliceAxes(const glm::dmat3& direction, Orientation o) {
   ViewAxes w = wanted(o);
   SliceAxes a;
+  a.orientation = o;
   a.nAxis = closestVoxelAxis(direction, w.n.axis, -1, -1);
   a.uAxis = closestVoxelAxis(direction, w.u.axis, a.nAxis, -1);
   a.vAxis = closestVoxelAxis(direction, w.v.axis, a.nAxis, a.uAxis);

@@ -21,9 +21,10 @@ enum class Orientation { Axial, Coronal, Sagittal };
 const char* toString(Orientation o);
 
 struct SliceAxes {
-  int uAxis = 0;       // voxel axis along the screen's x (left to right)
-  int vAxis = 1;       // voxel axis along the screen's y (top to bottom)
-  int nAxis = 2;       // voxel axis across the slice: the slice index
+  Orientation orientation = Orientation::Axial;  // the view these axes belong to
+  int uAxis = 0;                                 // voxel axis along the screen's x (left to right)
+  int vAxis = 1;                                 // voxel axis along the screen's y (top to bottom)
+  int nAxis = 2;                                 // voxel axis across the slice: the slice index
   bool uFlip = false;  // true: voxel index grows towards the screen's left
   bool vFlip = false;  // true: voxel index grows towards the screen's top
   // Patient orientation letters at the screen's left, right, top and bottom edges.
@@ -33,7 +34,9 @@ struct SliceAxes {
 SliceAxes sliceAxes(const glm::dmat3& direction, Orientation o);
 
 // Slice-pixel coordinates (u, v in voxel units from the screen's top left, continuous,
-// pixel centres at k + 0.5) to a voxel position with the given slice index.
+// pixel centres at k + 0.5) to a voxel position with the given slice index. On a rotated
+// (oblique) view these are the coordinates of the acquisition plane before the rotation
+// about the crosshair (crosshair_model.h).
 glm::dvec3 sliceToVoxel(const SliceAxes& a, const glm::ivec3& dims, double u, double v,
                         double slice);
 // The inverse, ignoring the slice coordinate: where a voxel position appears in a view.

@@ -9,7 +9,7 @@
 
 namespace voxray::ui {
 
-PlaneGrid slicePlane(const Volume& v, const SliceAxes& a, int slice) {
+PlaneGrid slicePlane(const Volume& v, const SliceAxes& a, double slice) {
   const glm::dvec2 extentMm(v.dims[a.uAxis] * v.spacingMm[a.uAxis],
                             v.dims[a.vAxis] * v.spacingMm[a.vAxis]);
   // Square pixels of the finer spacing: a 5 mm axis gets several pixels per voxel to
@@ -33,12 +33,29 @@ PlaneGrid slicePlane(const Volume& v, const SliceAxes& a, int slice) {
   return g;
 }
 
+PlaneGrid viewPlane(const Volume& v, const SliceAxes& a, const glm::dvec3& centreVoxel,
+                    const glm::dmat3& rotation) {
+  PlaneGrid g = slicePlane(v, a, centreVoxel[a.nAxis]);
+  if (rotation == glm::dmat3(1.0)) return g;
+  const glm::dvec3 centre = voxelToPatientMm(v, centreVoxel);
+  g.originMm = centre + rotation * (g.originMm - centre);
+  g.uDir = rotation * g.uDir;
+  g.vDir = rotation * g.vDir;
+  return g;
+}
+
 Image renderSlice(const Volume& v, const SliceAxes& a, int slice, const WindowLevel& wl,
                   Interp interp) {
   if (v.voxelCount() == 0) return {};
-  const PlaneGrid g = slicePlane(v, a, std::clamp(slice, 0, v.dims[a.nAxis] - 1));
-  // Every pixel lies inside the volume: the background is never seen.
-  const std::vector<float> values = samplePlane(v, g, interp, std::numeric_limits<float>::lowest());
+  return renderPlane(v, slicePlane(v, a, std::clamp(slice, 0, v.dims[a.nAxis] - 1)), wl, interp);
+}
+
+Image renderPlane(const Volume& v, const PlaneGrid& g, const WindowLevel& wl, Interp interp,
+                  const Slab& slab) {
+  if (v.voxelCount() == 0) return {};
+  // The lowest value maps to black: outside the volume (an oblique plane's corners).
+  const std::vector<float> values =
+      samplePlane(v, g, interp, std::numeric_limits<float>::lowest(), slab);
   Image img(g.size.x, g.size.y);
   for (int y = 0; y < g.size.y; ++y)
     for (int x = 0; x < g.size.x; ++x) {

@@ -17,13 +17,23 @@ struct Volume;
 namespace voxray::ui {
 
 // The plane a view shows at SLICE: pixels over the whole slice, screen x along axes.uAxis
-// and y along axes.vAxis (flips applied), at most kMaxSlicePixels on a side.
+// and y along axes.vAxis (flips applied), at most kMaxSlicePixels on a side. A fractional
+// SLICE lies between two slices (an oblique view's crosshair between voxel centres).
 constexpr int kMaxSlicePixels = 4096;
-PlaneGrid slicePlane(const Volume& v, const SliceAxes& axes, int slice);
+PlaneGrid slicePlane(const Volume& v, const SliceAxes& axes, double slice);
+
+// The plane a view shows through the crosshair at CENTREVOXEL: slicePlane through it, turned
+// by ROTATION (LPS) about it; slicePlane itself for the identity. Same size and pixel
+// spacing, so slice coordinates, zoom and the scale bar mean the same on an oblique plane.
+PlaneGrid viewPlane(const Volume& v, const SliceAxes& axes, const glm::dvec3& centreVoxel,
+                    const glm::dmat3& rotation);
 
 // The slice's image (slicePlane's size); an empty image for an empty volume.
 Image renderSlice(const Volume& v, const SliceAxes& axes, int slice, const WindowLevel& wl,
                   Interp interp);
+// Any plane's image, thin or a slab; what lies outside the volume is black.
+Image renderPlane(const Volume& v, const PlaneGrid& g, const WindowLevel& wl, Interp interp,
+                  const Slab& slab = {});
 
 // Physical value at a voxel (nearest), or NaN outside the volume.
 double sampleValue(const Volume& v, const glm::dvec3& voxel);

@@ -89,13 +89,15 @@ void openStudy(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
     previous.dims = m.crosshair.dims();
     previous.crosshair = m.crosshair.voxel();
     previous.source = m.source;
+    previous.spacingMm = m.crosshair.spacingMm();
+    previous.direction = m.crosshair.direction();
   }
   m.render.update(kCamera | kClip | kLight,
                   [](RenderParams& p) { copyStudyParams(RenderParams{}, p); });
   if (!forStudy.empty()) m.render.applyValues(forStudy);
   const InitialWindow w = initialWindow(*v);
   m.windowLevel.reset(w.wl, w.source);
-  m.crosshair.setDims(v->dims);
+  m.crosshair.setGeometry(v->dims, v->spacingMm, v->direction);
   m.measurements.clear();  // a study's own; a session brings them back
   // Last: whoever hears the document change sees the new study's state with it.
   m.document.set(std::move(v), std::move(name));
@@ -108,7 +110,7 @@ void restorePreviousStudy(AppModels& m) {
     m.render.update(kCamera | kClip | kLight,
                     [&](RenderParams& p) { copyStudyParams(previous.render, p); });
     m.windowLevel.reset(previous.wl, previous.wlSource);
-    m.crosshair.setDims(previous.dims);
+    m.crosshair.setGeometry(previous.dims, previous.spacingMm, previous.direction);
     m.crosshair.setVoxel(previous.crosshair);
     m.source = previous.source;
   }

@@ -16,6 +16,7 @@ QGroupBox* makeCameraGroup(RenderStateModel& m);
 QGroupBox* makeClipGroup(AppModels& models, VolumeView& view);
 QGroupBox* makeLightGroup(AppModels& models, VolumeView& view);
 QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeView& view);
+QGroupBox* makeMprGroup(CrosshairModel& crosshair, VolumeView& view);  // panel_mpr.cpp
 
 // All groups in a scrollable column.
 QScrollArea* makeControlPanel(AppModels& models, VolumeView& view);

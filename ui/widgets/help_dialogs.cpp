@@ -21,6 +21,8 @@ constexpr const char* kViewControls[][2] = {
     {"3D view: arrow keys", "rotate by a step"},
     {"3D view: R", "reset the camera"},
     {"Slice view: left click or drag", "move the crosshair; on a clip edge: move that edge"},
+    {"Slice view: drag a round handle on a crosshair line",
+     "turn the other two planes about this view's normal (oblique MPR)"},
     {"Slice view: right drag", "window (left-right) and level (up-down)"},
     {"Slice view: middle drag", "pan"},
     {"Slice view: wheel, arrow keys, Page Up/Down", "next slice (Page: 10 slices)"},

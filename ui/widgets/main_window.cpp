@@ -160,6 +160,9 @@ void MainWindow::buildMenus() {
   studyText->setToolTip(
       "Show the patient's name, ID and the study in the views' corners "
       "(never in exports unless ticked there)");
+  view->addAction("Reset slice &planes", QKeySequence("Ctrl+Shift+R"), this,
+                  [this] { models_.crosshair.resetRotation(); })
+      ->setToolTip("Turn the slice views back to the acquisition planes");
   QMenu* theme = view->addMenu("&Theme");
   auto* themes = new QActionGroup(theme);
   for (const QString& name : themeNames()) {

@@ -258,11 +258,6 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeV
     state.setSliceInterp(on ? Interp::Linear : Interp::Nearest);
   });
   form->addRow(smooth);
-  auto* planes = new QCheckBox("Show planes in 3D view");
-  planes->setToolTip("Outline the three slice planes in the 3D view, in the slice views' colours");
-  planes->setChecked(view.showPlanes());
-  QObject::connect(planes, &QCheckBox::toggled, &view, &VolumeView::setShowPlanes);
-  form->addRow(planes);
   return box;
 }
 
@@ -277,8 +272,9 @@ QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
       {makeCameraGroup(models.render), false},
       {makeSliceGroup(models.windowLevel, models.render, view), true},
       {makeClipGroup(models, view), true},
-      {makeLightGroup(models, view), false}};
-  const char* names[] = {"Rendering", "Quality", "Camera", "Slices", "Clip", "Light"};
+      {makeLightGroup(models, view), false},
+      {makeMprGroup(models.crosshair, view), false}};
+  const char* names[] = {"Rendering", "Quality", "Camera", "Slices", "Clip", "Light", "Mpr"};
   for (size_t i = 0; i < std::size(groups); ++i) {
     groups[i].first->setObjectName(QString(names[i]) + "Group");
     layout->addWidget(foldable(groups[i].first, groups[i].second));

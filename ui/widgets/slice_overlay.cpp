@@ -1,5 +1,6 @@
 #include "slice_overlay.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "volume_overlay.h"
@@ -51,10 +52,44 @@ void drawScaleBar(QPainter& p, double mmPerPixel, const QRect& r) {
   p.drawText(QRectF(start.x(), end.y() + 2, px, 16), Qt::AlignHCenter, QString("%1 mm").arg(mm));
 }
 
+// The part of the line through C along D inside R (Liang-Barsky); false if it misses.
+bool clipLine(const QRectF& r, QPointF c, glm::dvec2 d, QLineF& out) {
+  double t0 = -1e18, t1 = 1e18;
+  const double lo[2] = {r.left(), r.top()}, hi[2] = {r.right(), r.bottom()};
+  const double at[2] = {c.x(), c.y()};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (std::abs(d[axis]) < 1e-12) {
+      if (at[axis] < lo[axis] || at[axis] > hi[axis]) return false;
+      continue;
+    }
+    double a = (lo[axis] - at[axis]) / d[axis], b = (hi[axis] - at[axis]) / d[axis];
+    t0 = std::max(t0, std::min(a, b));
+    t1 = std::min(t1, std::max(a, b));
+  }
+  if (t0 > t1) return false;
+  out = QLineF(c + QPointF(d.x, d.y) * t0, c + QPointF(d.x, d.y) * t1);
+  return true;
+}
+
 }  // namespace
 
-QRectF crosshairBounds(const QPainter& p, const QRect& r) {
-  QFont bold = p.font();
+std::array<QPointF, 4> rotationHandles(const QFont& font, const QRect& r, QPointF centre,
+                                       const std::array<glm::dvec2, 2>& traces) {
+  const QRectF inner = crosshairBounds(font, r);
+  const double distance = 0.35 * std::min(inner.width(), inner.height());
+  std::array<QPointF, 4> h;
+  for (size_t i = 0; i < 2; ++i) {
+    const QPointF d(traces[i].x * distance, traces[i].y * distance);
+    h[2 * i] = centre - d;
+    h[2 * i + 1] = centre + d;
+  }
+  return h;
+}
+
+QRectF crosshairBounds(const QPainter& p, const QRect& r) { return crosshairBounds(p.font(), r); }
+
+QRectF crosshairBounds(const QFont& font, const QRect& r) {
+  QFont bold = font;
   bold.setBold(true);
   QFontMetrics fm(bold);
   const double gapX = kLetterMargin + fm.horizontalAdvance("W") + 4;  // widest letter
@@ -79,19 +114,34 @@ void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
   // band along each edge where the orientation letters sit.
   QRectF inner = crosshairBounds(p, r);
   QPointF c = toWidget(o.crosshair.x, o.crosshair.y);
-  p.setPen(QPen(planeColor(o.axes.uAxis), 1));
-  p.drawLine(QPointF(c.x(), inner.top()), QPointF(c.x(), inner.bottom()));
-  p.setPen(QPen(planeColor(o.axes.vAxis), 1));
-  p.drawLine(QPointF(inner.left(), c.y()), QPointF(inner.right(), c.y()));
+  const QColor lineColor[2] = {planeColor(o.axes.uAxis), planeColor(o.axes.vAxis)};
+  for (size_t i = 0; i < 2; ++i) {
+    QLineF line;
+    if (!clipLine(inner, c, o.traces[i], line)) continue;
+    p.setPen(QPen(lineColor[i], 1));
+    p.drawLine(line);
+  }
+  if (o.rotateHandles) {
+    const auto handles = rotationHandles(p.font(), r, c, o.traces);
+    for (size_t i = 0; i < handles.size(); ++i) {
+      if (!inner.contains(handles[i])) continue;
+      p.setPen(QPen(Qt::black, 1));
+      p.setBrush(lineColor[i / 2]);
+      p.drawEllipse(handles[i], kRotateHandleRadius, kRotateHandleRadius);
+    }
+    p.setBrush(Qt::NoBrush);
+  }
 
   drawLabels(p, o.axes, r);
   p.setPen(QPen(planeColor(o.axes.nAxis), 2));
   p.drawRect(r.adjusted(0, 0, -1, -1));
   p.setPen(Qt::white);
   QRect text = r.adjusted(6, 4, -6, -4);
-  p.drawText(text, Qt::AlignLeft | Qt::AlignTop,
-             QString("%1 / %2").arg(o.slice + 1).arg(o.sliceCount));
-  drawCornerLines(p, o.studyLines, text.adjusted(0, p.fontMetrics().height(), 0, 0));
+  QString slice = QString("%1 / %2").arg(o.slice + 1).arg(o.sliceCount);
+  if (!o.planeNote.empty()) slice += "\n" + QString::fromStdString(o.planeNote);
+  p.drawText(text, Qt::AlignLeft | Qt::AlignTop, slice);
+  const int sliceLines = o.planeNote.empty() ? 1 : 2;
+  drawCornerLines(p, o.studyLines, text.adjusted(0, sliceLines * p.fontMetrics().height(), 0, 0));
   p.drawText(text, Qt::AlignRight | Qt::AlignTop,
              QString::fromStdString(formatWindowLevel(o.wl, o.wlSource)));
   if (o.hasCursor)

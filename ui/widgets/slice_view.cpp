@@ -1,5 +1,7 @@
 #include "slice_view.h"
 
+#include <cmath>
+
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
@@ -82,8 +84,13 @@ glm::dvec3 SliceView::widgetToVoxel(QPointF widget) const {
   return clampToVolume(sliceToVoxel(axes_, dims, s.x, s.y, crosshair_.sliceOf(axes_)), dims);
 }
 
+bool SliceView::measurable() const {
+  return isIdentity(crosshair_.rotation(orientation_)) &&
+         crosshair_.slab(orientation_).thicknessMm == 0;
+}
+
 bool SliceView::pressMeasure(QPointF at) {
-  if (!measurements_) return false;
+  if (!measurements_ || !measurable()) return false;
   const int slice = crosshair_.sliceOf(axes_);
   // A handle under the cursor wins in any mode: the nearest one within reach.
   double best = kHandlePickPixels;
@@ -134,9 +141,10 @@ void SliceView::rebuild() {
     axes_ = sliceAxes(v.direction, orientation_);
     // A crosshair move elsewhere often leaves this view's slice as it was: keep its image
     // (resampling a large slice takes tens of milliseconds).
-    const Shown now{crosshair_.sliceOf(axes_), wl_.value(), state_.sliceInterp()};
+    const Shown now{viewPlane(v, axes_, crosshair_.centre(), crosshair_.rotation(orientation_)),
+                    crosshair_.slab(orientation_), wl_.value(), state_.sliceInterp()};
     if (!shown_ || !now.sameAs(*shown_)) {
-      image_ = toQImage(renderSlice(v, axes_, now.slice, now.wl, now.interp));
+      image_ = toQImage(renderPlane(v, now.plane, now.wl, now.interp, now.slab));
       shown_ = now;
     }
   }
@@ -186,6 +194,34 @@ int SliceView::pickClipEdge(QPointF p) const {
   return best;
 }
 
+std::array<glm::dvec2, 2> SliceView::crosshairTraces() const {
+  if (!crosshair_.rotated()) return SliceOverlay{}.traces;
+  // The other planes' traces: the one whose normal lies nearer this view's screen x is the
+  // upright line (drawn in the colour of that axis while nothing is turned).
+  const PlaneFrame mine = crosshair_.frame(axes_);
+  std::array<glm::dvec3, 2> normals;
+  size_t n = 0;
+  for (Orientation o : {Orientation::Axial, Orientation::Coronal, Orientation::Sagittal})
+    if (o != orientation_)
+      normals[n++] = crosshair_.frame(sliceAxes(crosshair_.direction(), o)).normal;
+  if (std::abs(glm::dot(normals[1], mine.right)) > std::abs(glm::dot(normals[0], mine.right)))
+    std::swap(normals[0], normals[1]);
+  return {traceOnScreen(mine, normals[0]), traceOnScreen(mine, normals[1])};
+}
+
+std::array<QPointF, 4> SliceView::rotationHandles() const {
+  if (doc_.empty()) return {};
+  const glm::dvec2 c = voxelToSlice(axes_, doc_.volume()->dims, crosshair_.centre());
+  return ui::rotationHandles(font(), rect(), toWidget(c.x, c.y), crosshairTraces());
+}
+
+bool SliceView::onRotationHandle(QPointF p) const {
+  const QRectF shown = crosshairBounds(font(), rect());  // where the overlay draws them
+  for (const QPointF& h : rotationHandles())
+    if (shown.contains(h) && QLineF(h, p).length() <= kRotateHandleRadius + 3.0) return true;
+  return false;
+}
+
 void SliceView::paintEvent(QPaintEvent*) {
   QPainter p(this);
   p.fillRect(rect(), Qt::black);
@@ -198,7 +234,18 @@ void SliceView::paintOverlay(QPainter& p) {
   const Volume& v = *doc_.volume();
   SliceOverlay o;
   o.axes = axes_;
-  o.crosshair = voxelToSlice(axes_, v.dims, glm::dvec3(crosshair_.voxel()));
+  const bool oblique = !isIdentity(crosshair_.rotation(orientation_));
+  if (oblique) o.axes.labels = frameLabels(crosshair_.frame(axes_));
+  o.crosshair = voxelToSlice(axes_, v.dims, crosshair_.centre());
+  o.traces = crosshairTraces();
+  o.rotateHandles = true;
+  const Slab& slab = crosshair_.slab(orientation_);
+  o.planeNote = oblique ? "oblique" : "";
+  if (slab.thicknessMm > 0) {
+    const std::string mode = QString(toString(slab.mode)).toUpper().toStdString();
+    o.planeNote += (o.planeNote.empty() ? "" : ", ") + mode + " " +
+                   QString::number(slab.thicknessMm).toStdString() + " mm";
+  }
   o.clipEdges = sliceClipEdges(axes_, v.dims, state_.params().clip);
   o.showClip = !state_.params().clip.isFull() || dragFace_ >= 0;
   o.clipActive = sliceInsideClip(axes_, v.dims, state_.params().clip, crosshair_.sliceOf(axes_));
@@ -210,13 +257,13 @@ void SliceView::paintOverlay(QPainter& p) {
   o.mmPerWidgetPixel = v.dims[axes_.uAxis] * v.spacingMm[axes_.uAxis] / sliceRect().width();
   if (annotations_ && rect().contains(hover_.toPoint())) {
     glm::dvec2 s = toSlice(hover_);
-    glm::dvec3 voxel = sliceToVoxel(axes_, v.dims, s.x, s.y, o.slice);
+    glm::dvec3 voxel = crosshair_.viewToVoxel(axes_, s.x, s.y);
     o.hasCursor = true;
     // Read as the view samples: the probe follows the slice interpolation setting.
     o.cursorText = formatCursorProbe(probeAt(v, voxel, state_.sliceInterp()));
   }
   drawSliceOverlay(p, o, rect(), [this](double u, double vv) { return toWidget(u, vv); });
-  if (measurements_ && (!exporting_ || measurements_->showInExports()))
+  if (measurements_ && measurable() && (!exporting_ || measurements_->showInExports()))
     drawSliceMeasurements(p, v, *measurements_, axes_, o.slice,
                           [this](const glm::dvec3& voxel) { return voxelToWidget(voxel); });
 }
@@ -229,7 +276,9 @@ void SliceView::mousePressEvent(QMouseEvent* e) {
     drag_ = Drag::Handle;
   } else if (e->button() == Qt::LeftButton) {
     dragFace_ = pickClipEdge(e->position());
-    drag_ = dragFace_ >= 0 ? Drag::ClipEdge : Drag::Crosshair;
+    drag_ = dragFace_ >= 0                    ? Drag::ClipEdge
+            : onRotationHandle(e->position()) ? Drag::Rotate
+                                              : Drag::Crosshair;
     if (drag_ == Drag::Crosshair) {
       glm::dvec2 s = toSlice(e->position());
       crosshair_.clickInView(axes_, s.x, s.y);
@@ -273,6 +322,16 @@ void SliceView::mouseMoveEvent(QMouseEvent* e) {
     case Drag::Handle:
       measurements_->movePoint(dragId_, dragIndex_, widgetToVoxel(e->position()));
       break;
+    case Drag::Rotate: {
+      // The angle swept about the crosshair, clockwise positive on this y-down screen; the
+      // screen shows millimetres square, so it is the angle in the patient too.
+      const glm::dvec2 c = voxelToSlice(axes_, doc_.volume()->dims, crosshair_.centre());
+      const QPointF at = toWidget(c.x, c.y);
+      const QPointF a = e->position() - d - at, b = e->position() - at;
+      crosshair_.rotateInView(
+          axes_, std::atan2(a.x() * b.y() - a.y() * b.x(), a.x() * b.x() + a.y() * b.y()));
+      break;
+    }
     case Drag::None:
       break;
   }

@@ -1,11 +1,13 @@
 #pragma once
 // One slice view (axial, coronal or sagittal) bound to the shared crosshair, window/level
 // and render-state models. Left click/drag moves the crosshair (or a clip-box edge when
-// grabbed), right-drag changes window/level, middle-drag pans, wheel or arrow keys scroll
-// slices, Ctrl+wheel zooms, double-click maximises. With a measuring tool chosen
+// grabbed; or, on a round handle near a crosshair line's end, turns the other two planes:
+// oblique MPR), right-drag changes window/level, middle-drag pans, wheel or arrow keys
+// scroll slices, Ctrl+wheel zooms, double-click maximises. With a measuring tool chosen
 // (MeasurementModel::tool) a left drag draws a distance, ellipse or rectangle, an angle takes
 // a drag for its first arm and a click (or drag) for its end; a press on a handle drags that
-// point in any mode; Del removes the selected measurement.
+// point in any mode; Del removes the selected measurement. Measurements live in the
+// acquisition planes: a turned or slab view neither shows nor takes them.
 #include <optional>
 
 #include <QImage>
@@ -15,6 +17,7 @@
 #include "measurement_model.h"
 #include "render_state_model.h"
 #include "slice_geometry.h"
+#include "slice_overlay.h"
 #include "volume_document.h"
 #include "window_level.h"
 
@@ -29,8 +32,12 @@ class SliceView : public QWidget {
 
   Orientation orientation() const { return orientation_; }
   const SliceAxes& axes() const { return axes_; }
-  // W/L applied, square pixels of the finer in-plane spacing (renderSlice).
+  // W/L applied, square pixels of the finer in-plane spacing (renderSlice; renderPlane of
+  // viewPlane when turned or a slab).
   const QImage& sliceImage() const { return image_; }
+  // The crosshair's two lines on screen and the handles that turn them (widget pixels).
+  std::array<glm::dvec2, 2> crosshairTraces() const;
+  std::array<QPointF, 4> rotationHandles() const;
   // Widget position of slice coordinates (u, v: voxel units, slice_geometry.h) and back.
   QPointF toWidget(double u, double v) const;
   glm::dvec2 toSlice(QPointF widget) const;
@@ -60,14 +67,18 @@ class SliceView : public QWidget {
   void leaveEvent(QEvent*) override;
 
  private:
-  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan, Handle };
+  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan, Handle, Rotate };
   void rebuild();  // new volume, slice or window: redraw the slice image
   QRectF sliceRect() const;
   int pickClipEdge(QPointF widget) const;  // face number, or -1
+  bool onRotationHandle(QPointF widget) const;
   void paintOverlay(QPainter& p);
   QPointF voxelToWidget(const glm::dvec3& voxel) const;
   glm::dvec3 widgetToVoxel(QPointF widget) const;  // on this view's slice, clamped into the box
   bool pressMeasure(QPointF widget);  // true: the press grabbed or started a measurement
+  // Measurements are drawn and taken in the acquisition planes only: not on a turned view or
+  // a slab (their points and ROI pixels are index-plane ones).
+  bool measurable() const;
 
   Orientation orientation_;
   VolumeDocument& doc_;
@@ -78,11 +89,15 @@ class SliceView : public QWidget {
   QImage image_;
   // What image_ shows of the document's volume; none after a document change.
   struct Shown {
-    int slice;
+    PlaneGrid plane;
+    Slab slab;
     WindowLevel wl;
     Interp interp;
     bool sameAs(const Shown& o) const {
-      return slice == o.slice && wl.width == o.wl.width && wl.level == o.wl.level &&
+      return plane.originMm == o.plane.originMm && plane.uDir == o.plane.uDir &&
+             plane.vDir == o.plane.vDir && plane.spacingMm == o.plane.spacingMm &&
+             plane.size == o.plane.size && slab.thicknessMm == o.slab.thicknessMm &&
+             slab.mode == o.slab.mode && wl.width == o.wl.width && wl.level == o.wl.level &&
              interp == o.interp;
     }
   };

@@ -6,6 +6,7 @@
 
 #include "clip_box_math.h"
 #include "light_gizmo.h"
+#include "mpr_planes.h"
 #include "orientation_marker.h"
 #include "slice_geometry.h"
 #include "voxray/io/volume.h"
@@ -100,15 +101,18 @@ void drawOrientationMarker(QPainter& p, const ViewGeometry& g, QSizeF size) {
   }
 }
 
-void drawCrosshairPlanes(QPainter& p, const Volume& v, const glm::ivec3& voxel,
+void drawCrosshairPlanes(QPainter& p, const Volume& v, const CrosshairModel& crosshair,
                          const ViewProjection& view) {
-  glm::dvec3 lo(-0.5), hi = glm::dvec3(v.dims) - 0.5;
   p.setBrush(Qt::NoBrush);
-  for (int axis = 0; axis < 3; ++axis) {
-    glm::dvec3 a = lo, b = hi;
-    a[axis] = b[axis] = voxel[axis];
-    p.setPen(QPen(planeColor(axis), 1.0));
-    drawVoxelBox(p, v, a, b, view);
+  for (Orientation o : {Orientation::Axial, Orientation::Coronal, Orientation::Sagittal}) {
+    const SliceAxes a = sliceAxes(v.direction, o);
+    const auto polygon = planeInBox(v, crosshair.centre(), crosshair.frame(a).normal);
+    p.setPen(QPen(planeColor(a.nAxis), 1.0));
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      auto from = screen(view, voxelToWorldMm(v, polygon[i]));
+      auto to = screen(view, voxelToWorldMm(v, polygon[(i + 1) % polygon.size()]));
+      if (from && to) p.drawLine(*from, *to);
+    }
   }
 }
 

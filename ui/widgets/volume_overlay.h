@@ -6,6 +6,7 @@
 
 #include <QPainter>
 
+#include "crosshair_model.h"
 #include "view_projection.h"
 #include "voxray/engine/render_params.h"
 
@@ -15,7 +16,8 @@ void drawClipBox(QPainter& p, const Volume& v, const ClipBox& box, const ViewPro
                  int activeFace);
 void drawLightHandle(QPainter& p, const Volume& v, const RenderParams& params,
                      const ViewProjection& view, bool active);
-void drawCrosshairPlanes(QPainter& p, const Volume& v, const glm::ivec3& voxel,
+// The three slice views' planes (turned ones too) where they cut the volume's box.
+void drawCrosshairPlanes(QPainter& p, const Volume& v, const CrosshairModel& crosshair,
                          const ViewProjection& view);
 
 // The patient axes (orientationMarker) as labelled arrows in the lower left corner of a view

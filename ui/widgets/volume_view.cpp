@@ -109,7 +109,7 @@ void VolumeView::paintEvent(QPaintEvent*) {
   painter.translate(r.topLeft());
   painter.setRenderHint(QPainter::Antialiasing);
   const Volume& v = *doc_.volume();
-  if (showPlanes_) drawCrosshairPlanes(painter, v, crosshair_.voxel(), *proj);
+  if (showPlanes_) drawCrosshairPlanes(painter, v, crosshair_, *proj);
   if (showClip_) drawClipBox(painter, v, state_.params().clip, *proj, dragFace_);
   if (showLight_) drawLightHandle(painter, v, state_.params(), *proj, drag_ == Drag::Light);
   if (measurements_)
