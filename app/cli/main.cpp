@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
   std::vector<voxray::cli::Run> runs = {
       voxray::cli::addDevicesCommand(app), voxray::cli::addInfoCommand(app),
       voxray::cli::addRenderCommand(app),  voxray::cli::addPresetsCommand(app),
-      voxray::cli::addBenchCommand(app),   voxray::cli::addAccuracyCommand(app)};
+      voxray::cli::addBenchCommand(app),   voxray::cli::addAccuracyCommand(app),
+      voxray::cli::addPacsCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
