@@ -20,6 +20,7 @@
 #include "export_dialog.h"
 #include "gui_message.h"
 #include "help_dialogs.h"
+#include "pacs_dialog.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
 #include "series_picker.h"
@@ -124,6 +125,8 @@ void MainWindow::buildMenus() {
   file->addAction("Open &DICOM folder…", QKeySequence::Open, this, &MainWindow::openDicomFolder);
   file->addAction("Open &raw volume…", QKeySequence("Ctrl+R"), this, &MainWindow::openRaw);
   file->addAction("Open head &phantom", this, [this] { open("", {}); });
+  file->addAction("Open from &PACS…", QKeySequence("Ctrl+Shift+O"), this,
+                  &MainWindow::openFromPacs);
   recentMenu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();
   file->addSeparator();
@@ -216,6 +219,16 @@ void MainWindow::openDicomFolder() {
   s.setValue("lastFolder", dir);
   auto choice = pickSeries(this, dir.toStdString());
   if (choice) open(dir.toStdString(), *choice);
+}
+
+void MainWindow::openFromPacs() {
+#ifdef VOXRAY_HAS_DICOM
+  PacsDialog dialog(this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  LoadOptions options;
+  options.series = dialog.chosen().seriesUid;
+  open(dialog.chosen().folder, options);
+#endif
 }
 
 void MainWindow::openRaw() {
