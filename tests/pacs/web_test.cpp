@@ -141,6 +141,13 @@ TEST(WebFaultTest, GarbageInsteadOfMultipartIsReported) {
   EXPECT_THAT(m, HasSubstr("text/html, not multipart/related"));
 }
 
+TEST(WebFaultTest, TlsFailureIsShownNotIgnored) {
+  CannedHttpServer server("HTTP/1.1 200 OK\r\nContent-Length: 0\r\n\r\n");  // no TLS at all
+  PacsNode node = server.node();
+  node.baseUrl = "https://127.0.0.1:" + std::to_string(server.port) + "/dicom-web";
+  EXPECT_THAT(echoFailure(node), HasSubstr("TLS failed"));
+}
+
 TEST(WebFaultTest, Http500IsReported) {
   CannedHttpServer server("HTTP/1.1 500 Internal Server Error\r\nContent-Length: 0\r\n\r\n");
   std::string m = retrieveFailure(server.node());

@@ -111,7 +111,6 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
   curl_easy_setopt(curl, CURLOPT_LOW_SPEED_TIME, long(node_.timeoutSec));
   curl_easy_setopt(curl, CURLOPT_SSL_VERIFYPEER, 1L);
   curl_easy_setopt(curl, CURLOPT_SSL_VERIFYHOST, 2L);
-  curl_easy_setopt(curl, CURLOPT_ACCEPT_ENCODING, "");
   if (!node_.caFile.empty()) curl_easy_setopt(curl, CURLOPT_CAINFO, node_.caFile.c_str());
   if (!node_.bearerToken.empty()) {
     curl_easy_setopt(curl, CURLOPT_HTTPAUTH, CURLAUTH_BEARER);
