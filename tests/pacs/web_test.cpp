@@ -5,6 +5,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <stdexcept>
 #include <thread>
 
 #include <gmock/gmock.h>
@@ -75,10 +76,10 @@ class CannedHttpServer {
     addr.sin_family = AF_INET;
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     socklen_t len = sizeof addr;
-    bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr);
-    getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len);
+    if (bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
+        getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len) != 0 || listen(fd_, 1) != 0)
+      throw std::runtime_error("cannot listen on 127.0.0.1");
     port = ntohs(addr.sin_port);
-    listen(fd_, 1);
     thread_ = std::thread([this] {
       int c = accept(fd_, nullptr, nullptr);
       char request[4096];

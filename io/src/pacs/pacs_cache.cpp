@@ -69,7 +69,7 @@ std::vector<CachedSeries> PacsCache::load() const {
   if (!in) return out;
   try {
     const nlohmann::json index = nlohmann::json::parse(in);
-    for (auto s : index.at("series").get<std::vector<CachedSeries>>()) {
+    for (const auto& s : index.at("series").get<std::vector<CachedSeries>>()) {
       if (fs::is_directory(s.folder)) out.push_back(s);  // a folder removed by hand is gone
     }
   } catch (const nlohmann::json::exception&) {
