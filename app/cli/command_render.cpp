@@ -9,6 +9,7 @@
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/session.h"
 #include "voxray/io/error.h"
+#include "voxray/io/secondary_capture.h"
 
 namespace voxray::cli {
 
@@ -68,11 +69,27 @@ VolumeStorage parseStorage(const std::string& s) {
                         : VolumeStorage::Auto;
 }
 
+namespace {
+// PNG, TIFF or EXR; or, for a .dcm name, a DICOM Secondary Capture in the volume's study.
+void writeRenderOutput(const std::string& path, const Image& img, const Volume& v) {
+#ifdef VOXRAY_HAS_DICOM
+  if (path.size() > 4 && path.compare(path.size() - 4, 4, ".dcm") == 0) {
+    SecondaryCaptureInfo info;
+    info.study = v.study;
+    writeSecondaryCapture(path, {img}, info);
+    return;
+  }
+#endif
+  writeImage(path, img);
+}
+}  // namespace
+
 Run addRenderCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("render", "Render a volume to an image (PNG, TIFF or EXR)");
+  auto* cmd = app.add_subcommand(
+      "render", "Render a volume to an image (PNG, TIFF, EXR; .dcm: DICOM Secondary Capture)");
   auto o = std::make_shared<RenderOptions>();
   o->input.add(*cmd);
-  cmd->add_option("-o,--output", o->output, "image file to write")->required();
+  cmd->add_option("-o,--output", o->output, "image file to write (.dcm: DICOM SC)")->required();
   cmd->add_option("--device", o->device, "auto, cpu, gpu or a device number ($VOXRAY_DEVICE)");
   cmd->add_option("--storage", o->storage, "volume on the device: auto, buffer or image")
       ->check(CLI::IsMember({"auto", "buffer", "image"}));
@@ -109,7 +126,7 @@ Run addRenderCommand(CLI::App& app) {
     rc.setOptions(ro);
     FrameStats stats;
     Image img = rc.render(p, &stats);
-    writeImage(o->output, img);
+    writeRenderOutput(o->output, img, v);
     std::cerr << "rendered " << p.width << "x" << p.height << " " << toString(p.mode) << " on "
               << ctx.device().name << " in " << stats.totalMs << " ms (kernel " << stats.kernelMs
               << " ms, first frame includes the kernel build";

@@ -17,5 +17,6 @@ Run addBenchCommand(CLI::App& app);
 Run addAccuracyCommand(CLI::App& app);
 Run addMeasureCommand(CLI::App& app);
 Run addSliceCommand(CLI::App& app);
+Run addPacsCommand(CLI::App& app);
 
 }  // namespace voxray::cli

@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
       voxray::cli::addDevicesCommand(app), voxray::cli::addInfoCommand(app),
       voxray::cli::addRenderCommand(app),  voxray::cli::addPresetsCommand(app),
       voxray::cli::addBenchCommand(app),   voxray::cli::addAccuracyCommand(app),
-      voxray::cli::addMeasureCommand(app), voxray::cli::addSliceCommand(app)};
+      voxray::cli::addMeasureCommand(app), voxray::cli::addSliceCommand(app),
+      voxray::cli::addPacsCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -21,6 +21,7 @@
 #include "gui_message.h"
 #include "help_dialogs.h"
 #include "measure_panel.h"
+#include "pacs_dialog.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
 #include "series_picker.h"
@@ -140,6 +141,8 @@ void MainWindow::buildMenus() {
   file->addAction("Open &sample CT", this, [this] { open(kSampleCtInput, {}); });
   file->addAction("Open head &phantom", this, [this] { open("", {}); });
   file->addAction("Open &session…", QKeySequence("Ctrl+Shift+O"), sessions_, &SessionActions::open);
+  file->addAction("Open from &PACS…", QKeySequence("Ctrl+Shift+P"), this,
+                  &MainWindow::openFromPacs);
   recentMenu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();
   file->addSeparator();
@@ -254,6 +257,16 @@ void MainWindow::openDicomFolder() {
   s.setValue("lastFolder", dir);
   auto choice = pickSeries(this, dir.toStdString());
   if (choice) open(dir.toStdString(), *choice);
+}
+
+void MainWindow::openFromPacs() {
+#ifdef VOXRAY_HAS_DICOM
+  PacsDialog dialog(this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  LoadOptions options;
+  options.series = dialog.chosen().seriesUid;
+  open(dialog.chosen().folder, options);
+#endif
 }
 
 void MainWindow::openRaw() {

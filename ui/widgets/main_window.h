@@ -67,6 +67,7 @@ class MainWindow : public QMainWindow {
   void rebuildRecentMenu();
   void openDicomFolder();
   void openRaw();
+  void openFromPacs();
   void exportScreenshot();
   void showError(const QString& title, const QString& message);
   void updateTitle();

@@ -1,0 +1,175 @@
+// voxray-cli pacs echo|find|get|send NODE ...: the PACS client, scriptable. NODE is a name
+// from the node configuration or an address (dicom://AE@host:port, http(s)://host/path).
+// Patient names and IDs are printed only with --show-patient.
+#include <chrono>
+#include <iostream>
+
+#include "commands.h"
+#include "info_json.h"
+#include "json_text.h"
+#include "progress.h"
+#include "voxray/io/error.h"
+
+#ifdef VOXRAY_HAS_DICOM  // lean builds (VOXRAY_WITH_DICOM=OFF) have no PACS client
+#include "voxray/io/load.h"
+#include "voxray/io/pacs.h"
+#include "voxray/io/pacs_cache.h"
+
+namespace voxray::cli {
+namespace {
+
+struct PacsOptions {
+  std::string node;
+  bool json = false;
+  bool showPatient = false;
+  PacsQuery query;
+  std::string level = "study", dates, study, series, cacheDir;
+  std::vector<std::string> files;
+};
+
+nlohmann::json matchJson(const PacsMatch& m, bool showPatient) {
+  nlohmann::json j = {{"study_uid", m.studyInstanceUid},   {"study_date", m.studyDate},
+                      {"description", m.studyDescription}, {"accession", m.accessionNumber},
+                      {"modalities", m.modalities},        {"series", m.numberOfSeries},
+                      {"images", m.numberOfInstances}};
+  if (!m.seriesInstanceUid.empty()) {
+    j["series_uid"] = m.seriesInstanceUid;
+    j["series_number"] = m.seriesNumber;
+    j["series_description"] = m.seriesDescription;
+  }
+  if (showPatient) {
+    j["patient_name"] = m.patientName;
+    j["patient_id"] = m.patientId;
+  }
+  return j;
+}
+
+int runFind(const PacsOptions& o) {
+  PacsQuery q = o.query;
+  q.level = o.level == "series" ? QueryLevel::Series : QueryLevel::Study;
+  q.studyInstanceUid = o.study;
+  if (!o.dates.empty()) {
+    size_t dash = o.dates.find('-');
+    q.dateFrom = o.dates.substr(0, dash);
+    q.dateTo = dash == std::string::npos ? q.dateFrom : o.dates.substr(dash + 1);
+  }
+  auto matches = makePacsClient(resolvePacsNode(o.node))->find(q);
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& m : matches) list.push_back(matchJson(m, o.showPatient));
+  if (o.json) {
+    std::cout << jsonText(list) << "\n";
+    return 0;
+  }
+  for (const auto& j : list) {
+    std::cout << j.value("study_date", "") << "  " << j.value("modalities", "") << "  "
+              << j.value("series", 0) << " series  " << j.value("images", 0) << " images  "
+              << j.value(q.level == QueryLevel::Series ? "series_uid" : "study_uid", "") << "  "
+              << j.value(q.level == QueryLevel::Series ? "series_description" : "description", "");
+    if (o.showPatient) std::cout << "  " << j.value("patient_name", "");
+    std::cout << "\n";
+  }
+  return 0;
+}
+
+int runGet(const PacsOptions& o) {
+  if (o.study.empty() || o.series.empty())
+    throw inputError("pacs get needs --study UID and --series UID (find them with pacs find)");
+  auto client = makePacsClient(resolvePacsNode(o.node));
+  PacsCache cache(o.cacheDir.empty() ? defaultPacsCacheFolder() : o.cacheDir);
+  auto report = terminalProgress("Retrieving");
+  RetrieveOptions options;
+  options.progress = [&](const RetrieveProgress& p) {
+    if (report)
+      report(p.total > 0 ? double(p.received) / p.total : 0.0,
+             std::to_string(p.received) + " images");
+  };
+  auto start = std::chrono::steady_clock::now();
+  CachedSeries entry = cache.retrieve(*client, o.study, o.series, options);
+  auto retrieved = std::chrono::steady_clock::now();
+  LoadOptions load;
+  load.series = o.series;
+  Volume v = loadVolume(entry.folder, load);
+  auto ready = std::chrono::steady_clock::now();
+  double retrieveS = std::chrono::duration<double>(retrieved - start).count();
+  double readyS = std::chrono::duration<double>(ready - start).count();
+  nlohmann::json j = infoJson(v, nullptr);
+  j["cache_folder"] = entry.folder;
+  j["images"] = entry.images;
+  j["megabytes"] = double(entry.bytes) / 1e6;
+  j["retrieve_s"] = retrieveS;
+  j["ready_s"] = readyS;
+  j["mb_per_s"] = double(entry.bytes) / 1e6 / readyS;
+  if (o.json) {
+    std::cout << jsonText(j) << "\n";
+    return 0;
+  }
+  std::cout << "cached      " << entry.folder << " (" << entry.images << " images, "
+            << double(entry.bytes) / 1e6 << " MB)\n"
+            << "dims        " << v.dims.x << " x " << v.dims.y << " x " << v.dims.z << "\n"
+            << "ready in    " << readyS << " s (retrieval " << retrieveS << " s, "
+            << j["mb_per_s"].get<double>() << " MB/s)\n";
+  return 0;
+}
+
+}  // namespace
+
+Run addPacsCommand(CLI::App& app) {
+  auto* pacs = app.add_subcommand("pacs", "Search, retrieve and send studies (DIMSE, DICOMweb)");
+  pacs->require_subcommand(1);
+  auto o = std::make_shared<PacsOptions>();
+  auto nodeHelp = "node name from " + pacsConfigPath() +
+                  ", or dicom://AE@host:port, or http(s)://host/dicom-web";
+  auto* echo = pacs->add_subcommand("echo", "Check that a node answers (C-ECHO; QIDO-RS)");
+  auto* find = pacs->add_subcommand("find", "Search studies (or the series of one study)");
+  auto* get = pacs->add_subcommand("get", "Retrieve a series into the cache and open it");
+  auto* send = pacs->add_subcommand("send", "Send DICOM files (C-STORE; STOW-RS)");
+  for (auto* cmd : {echo, find, get, send}) {
+    cmd->add_option("NODE", o->node, nodeHelp)->required();
+    cmd->add_flag("--json", o->json, "machine-readable output on stdout");
+  }
+  find->add_option("--name", o->query.patientName, "patient name (wildcards * ?)");
+  find->add_option("--id", o->query.patientId, "patient ID");
+  find->add_option("--date", o->dates, "study date YYYYMMDD or range FROM-TO");
+  find->add_option("--modality", o->query.modality, "modality (CT, MR, ...)");
+  find->add_option("--accession", o->query.accessionNumber, "accession number");
+  find->add_option("--level", o->level, "study or series (series needs --study)")
+      ->check(CLI::IsMember({"study", "series"}));
+  find->add_option("--study", o->study, "Study Instance UID (series level)");
+  find->add_option("--limit", o->query.limit, "at most this many matches");
+  find->add_option("--offset", o->query.offset, "skip this many (DICOMweb paging)");
+  find->add_flag("--show-patient", o->showPatient, "print patient names and IDs");
+  get->add_option("--study", o->study, "Study Instance UID")->required();
+  get->add_option("--series", o->series, "Series Instance UID")->required();
+  get->add_option("--cache", o->cacheDir,
+                  "cache folder (default " + defaultPacsCacheFolder() + ")");
+  send->add_option("FILES", o->files, "DICOM files to send")->required();
+  return [o, echo, find, get] {
+    if (echo->parsed()) {
+      PacsNode node = resolvePacsNode(o->node);
+      makePacsClient(node)->echo();
+      if (o->json)
+        std::cout << jsonText({{"node", node.label()}, {"ok", true}}) << "\n";
+      else
+        std::cout << node.label() << " answers\n";
+      return 0;
+    }
+    if (find->parsed()) return runFind(*o);
+    if (get->parsed()) return runGet(*o);
+    makePacsClient(resolvePacsNode(o->node))->store(o->files);
+    if (o->json)
+      std::cout << jsonText({{"sent", o->files.size()}}) << "\n";
+    else
+      std::cout << "sent " << o->files.size() << " files\n";
+    return 0;
+  };
+}
+
+}  // namespace voxray::cli
+#else
+namespace voxray::cli {
+Run addPacsCommand(CLI::App& app) {
+  app.add_subcommand("pacs", "PACS client (not in this build)")->allow_extras();
+  return []() -> int { throw inputError("this voxray-cli was built without DICOM and PACS"); };
+}
+}  // namespace voxray::cli
+#endif

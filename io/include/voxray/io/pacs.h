@@ -1,0 +1,91 @@
+#pragma once
+// A PACS client, Qt-free, with two transports behind one interface: DIMSE (DCMTK dcmnet)
+// and DICOMweb (libcurl). Studies are searched, series retrieved into a folder (the cache
+// stages them, see pacs_cache.h) and files sent. Every failure throws voxray::Error with a
+// message naming the node (never a password) and what to do.
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace voxray {
+
+// Where a PACS lives. DIMSE: dicom://CALLED_AE@host:port; DICOMweb: http(s)://host/prefix.
+struct PacsNode {
+  enum class Transport { Dimse, Web };
+  std::string name;  // the configured name; for an inline node, its address
+  Transport transport = Transport::Dimse;
+  // DIMSE
+  std::string calledAe, host, callingAe = "VOXRAY";
+  int port = 104;
+  int receivePort = 0;  // C-MOVE: the port of Voxray's own C-STORE receiver; 0 = use C-GET
+  // DICOMweb
+  std::string baseUrl;  // without a trailing '/', e.g. https://pacs.example/dicom-web
+  std::string user, password, bearerToken;
+  std::string caFile;   // extra CA bundle; empty = the system store
+  int timeoutSec = 30;  // connect and idle (no byte for this long) timeout
+  // For messages: the address without credentials.
+  std::string label() const;
+};
+
+// Parses an inline node ("dicom://AE@host:port", "http(s)://host/prefix"); throws Input.
+PacsNode parsePacsNode(const std::string& address);
+
+// The configured nodes, from $XDG_CONFIG_HOME/voxray/pacs-nodes.json (or ~/.config/...); a
+// missing file is no nodes. JSON: {"nodes": {"NAME": {"url": "...", "callingAe": "...",
+// "receivePort": 11113, "user": "...", "password": "...", "bearerToken": "...",
+// "caFile": "...", "timeout": 30}}}.
+std::string pacsConfigPath();
+std::vector<PacsNode> loadPacsNodes(const std::string& path = pacsConfigPath());
+// NAME from the configuration, else an inline address. Throws Input naming both options.
+PacsNode resolvePacsNode(const std::string& nameOrAddress,
+                         const std::string& configPath = pacsConfigPath());
+
+enum class QueryLevel { Patient, Study, Series };
+
+// Empty fields are not matched. Names may use DICOM wildcards (*, ?); dates are YYYYMMDD.
+struct PacsQuery {
+  QueryLevel level = QueryLevel::Study;
+  std::string patientName, patientId, dateFrom, dateTo, modality, accessionNumber;
+  std::string studyInstanceUid;  // required for the series level
+  size_t limit = 0;              // most matches to return; 0 = no limit
+  size_t offset = 0;             // DICOMweb paging; DIMSE ignores it (no paging in C-FIND)
+};
+
+struct PacsMatch {
+  std::string patientName, patientId;  // identifying: display on request only
+  std::string studyInstanceUid, studyDate, studyDescription, accessionNumber, modalities;
+  std::string seriesInstanceUid, seriesDescription;
+  int seriesNumber = 0, numberOfSeries = 0, numberOfInstances = 0;
+};
+
+struct RetrieveProgress {
+  int received = 0;  // images so far
+  int total = 0;     // 0 when the server does not say
+  double megabytes = 0.0;
+};
+
+struct RetrieveOptions {
+  std::function<void(const RetrieveProgress&)> progress;  // may be empty
+  const std::atomic<bool>* cancel = nullptr;              // true: stop, throw Cancelled
+};
+
+class PacsClient {
+ public:
+  virtual ~PacsClient() = default;
+  // Throws unless the node answers (C-ECHO; DICOMweb: a QIDO search with limit 1).
+  virtual void echo() = 0;
+  virtual std::vector<PacsMatch> find(const PacsQuery& query) = 0;
+  // Writes every instance of the series into FOLDER (which exists); returns the files.
+  virtual std::vector<std::string> retrieveSeries(const std::string& studyUid,
+                                                  const std::string& seriesUid,
+                                                  const std::string& folder,
+                                                  const RetrieveOptions& options) = 0;
+  // Sends DICOM files (C-STORE; STOW-RS). Throws naming the first file refused.
+  virtual void store(const std::vector<std::string>& files) = 0;
+};
+
+std::unique_ptr<PacsClient> makePacsClient(const PacsNode& node);
+
+}  // namespace voxray

@@ -1,0 +1,51 @@
+#pragma once
+// The local cache of retrieved series: one folder per complete series under the user's cache
+// folder, an index of them, least recently used evicted over a size cap. A retrieval is
+// staged in a folder of its own and enters the index only when complete, so a cancelled or
+// failed one leaves no half series behind. Never under the user's data folders.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "voxray/io/pacs.h"
+
+namespace voxray {
+
+struct CachedSeries {
+  std::string studyUid, seriesUid;
+  std::string folder;  // absolute; loadVolume() opens it
+  uint64_t bytes = 0;
+  int64_t lastUsed = 0;  // seconds since the epoch
+  int images = 0;
+};
+
+// $VOXRAY_CACHE_DIR, else $XDG_CACHE_HOME/voxray, else ~/.cache/voxray.
+std::string defaultPacsCacheFolder();
+
+class PacsCache {
+ public:
+  static constexpr uint64_t kDefaultCapBytes = uint64_t(8) << 30;
+  explicit PacsCache(std::string root = defaultPacsCacheFolder(),
+                     uint64_t capBytes = kDefaultCapBytes);
+
+  // The cached series (and marks it used), or nothing.
+  std::optional<CachedSeries> find(const std::string& seriesUid);
+  // The series from the cache, else retrieved from CLIENT first. Throws Cancelled on cancel
+  // and the client's error on failure; in both cases the cache is as before.
+  CachedSeries retrieve(PacsClient& client, const std::string& studyUid,
+                        const std::string& seriesUid, const RetrieveOptions& options = {});
+  std::vector<CachedSeries> entries() const;
+  void remove(const std::string& seriesUid);
+  const std::string& root() const { return root_; }
+
+ private:
+  std::vector<CachedSeries> load() const;
+  void save(const std::vector<CachedSeries>& entries) const;
+  void evict(std::vector<CachedSeries>& entries, const std::string& keep) const;
+
+  std::string root_;
+  uint64_t capBytes_;
+};
+
+}  // namespace voxray

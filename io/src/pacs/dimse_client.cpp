@@ -1,0 +1,320 @@
+// The DIMSE transport: C-ECHO, C-FIND, C-GET, C-MOVE (into Voxray's own receiver) and
+// C-STORE through DCMTK's DcmSCU.
+#include <algorithm>
+#include <functional>
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmnet/scu.h>
+
+#include "dimse_support.h"
+#include "move_receiver.h"
+#include "transports.h"
+#include "voxray/io/error.h"
+#include "voxray/io/pacs.h"
+
+namespace voxray::pacs {
+namespace {
+
+// All sub-operations of a retrieval, done and to do: the number of images.
+int subops(const RetrieveResponse& r) {
+  return int(r.m_numberOfRemainingSubops) + int(r.m_numberOfCompletedSubops) +
+         int(r.m_numberOfFailedSubops) + int(r.m_numberOfWarningSubops);
+}
+
+// A DcmSCU that stores C-GET's incoming instances into a folder, reports progress, stops on
+// cancel and returns at most LIMIT C-FIND matches (then asks the node to stop with C-CANCEL).
+class Scu : public DcmSCU {
+ public:
+  std::string folder;
+  std::vector<std::string> files;
+  RetrieveOptions retrieve;
+  RetrieveProgress progress;
+  size_t findLimit = 0;
+  size_t findMatches = 0;
+  bool cancelled = false;
+  std::string storeError;
+
+  OFCondition handleSTORERequest(const T_ASC_PresentationContextID, DcmDataset* incoming,
+                                 OFBool& continueSession, Uint16& status) override {
+    DcmFileFormat file(incoming, OFFalse);  // takes ownership
+    status = STATUS_Success;
+    continueSession = OFTrue;
+    if (retrieve.cancel && retrieve.cancel->load()) {
+      cancelled = true;
+      continueSession = OFFalse;
+      status = STATUS_STORE_Refused_OutOfResources;
+      return EC_Normal;
+    }
+    OFString uid;
+    incoming->findAndGetOFString(DCM_SOPInstanceUID, uid);
+    std::string name = uid.c_str();
+    name.erase(std::remove_if(name.begin(), name.end(),
+                              [](char c) { return !(std::isdigit(uchar(c)) || c == '.'); }),
+               name.end());
+    if (name.empty()) name = "instance-" + std::to_string(files.size());
+    std::string path = folder + "/" + name + ".dcm";
+    OFCondition cond = file.saveFile(path.c_str(), incoming->getOriginalXfer());
+    if (cond.bad()) {
+      storeError = "cannot write " + path + " (" + cond.text() + "): check free space";
+      status = STATUS_STORE_Refused_OutOfResources;
+      continueSession = OFFalse;
+      return EC_Normal;
+    }
+    files.push_back(path);
+    progress.received = int(files.size());
+    progress.total = std::max(progress.total, progress.received);
+    if (retrieve.progress) retrieve.progress(progress);
+    return EC_Normal;
+  }
+
+  OFCondition handleCGETResponse(const T_ASC_PresentationContextID id, RetrieveResponse* response,
+                                 OFBool& continueSession) override {
+    progress.total = std::max(progress.total, subops(*response));
+    return DcmSCU::handleCGETResponse(id, response, continueSession);
+  }
+
+  std::function<void(int)> onMoveTotal;
+  OFCondition handleMOVEResponse(const T_ASC_PresentationContextID id, RetrieveResponse* response,
+                                 OFBool& waitForNext) override {
+    if (onMoveTotal) onMoveTotal(subops(*response));
+    return DcmSCU::handleMOVEResponse(id, response, waitForNext);
+  }
+
+  OFCondition handleFINDResponse(const T_ASC_PresentationContextID id, QRResponse* response,
+                                 OFBool& waitForNext) override {
+    if (response->m_dataset && ++findMatches == findLimit) sendCANCELRequest(id);
+    return DcmSCU::handleFINDResponse(id, response, waitForNext);
+  }
+};
+
+// QueryRetrieveLevel, in the order of QueryLevel.
+const char* levelName(QueryLevel level) {
+  static const char* const names[] = {"PATIENT", "STUDY", "SERIES"};
+  return names[int(level)];
+}
+
+std::string text(DcmDataset& d, const DcmTagKey& tag) {
+  OFString value;
+  d.findAndGetOFStringArray(tag, value);
+  return value.c_str();
+}
+
+int number(DcmDataset& d, const DcmTagKey& tag) {
+  try {
+    return std::stoi(text(d, tag));
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+class DimseClient : public PacsClient {
+  PacsNode node_;
+
+ public:
+  explicit DimseClient(PacsNode node) : node_(std::move(node)) {}
+
+  void echo() override {
+    auto scu = connect("C-ECHO", [](Scu& s) {
+      s.addPresentationContext(UID_VerificationSOPClass, acceptedTransferSyntaxes());
+    });
+    check("C-ECHO", scu->sendECHORequest(0));
+    scu->releaseAssociation();
+  }
+
+  std::vector<PacsMatch> find(const PacsQuery& q) override {
+    const char* model = q.level == QueryLevel::Patient
+                            ? UID_FINDPatientRootQueryRetrieveInformationModel
+                            : UID_FINDStudyRootQueryRetrieveInformationModel;
+    auto scu = connect(
+        "C-FIND", [&](Scu& s) { s.addPresentationContext(model, acceptedTransferSyntaxes()); });
+    scu->findLimit = q.limit;
+    DcmDataset keys;
+    keys.putAndInsertString(DCM_QueryRetrieveLevel, levelName(q.level));
+    keys.putAndInsertString(DCM_PatientName, q.patientName.c_str());
+    keys.putAndInsertString(DCM_PatientID, q.patientId.c_str());
+    if (q.level != QueryLevel::Patient) {
+      std::string dates = q.dateFrom.empty() && q.dateTo.empty() ? "" : q.dateFrom + "-" + q.dateTo;
+      keys.putAndInsertString(DCM_StudyDate, dates.c_str());
+      keys.putAndInsertString(DCM_StudyInstanceUID, q.studyInstanceUid.c_str());
+      keys.putAndInsertString(DCM_StudyDescription, "");
+      keys.putAndInsertString(DCM_AccessionNumber, q.accessionNumber.c_str());
+    }
+    if (q.level == QueryLevel::Study) {
+      keys.putAndInsertString(DCM_ModalitiesInStudy, q.modality.c_str());
+      keys.putAndInsertString(DCM_NumberOfStudyRelatedSeries, "");
+      keys.putAndInsertString(DCM_NumberOfStudyRelatedInstances, "");
+    } else if (q.level == QueryLevel::Series) {
+      keys.putAndInsertString(DCM_Modality, q.modality.c_str());
+      keys.putAndInsertString(DCM_SeriesInstanceUID, "");
+      keys.putAndInsertString(DCM_SeriesDescription, "");
+      keys.putAndInsertString(DCM_SeriesNumber, "");
+      keys.putAndInsertString(DCM_NumberOfSeriesRelatedInstances, "");
+    }
+    OFList<QRResponse*> responses;
+    OFCondition cond =
+        scu->sendFINDRequest(scu->findPresentationContextID(model, ""), &keys, &responses);
+    std::vector<PacsMatch> matches;
+    for (QRResponse* r : responses) {
+      if (r->m_dataset && (q.limit == 0 || matches.size() < q.limit))
+        matches.push_back(toMatch(*r->m_dataset, q.level));
+      delete r;
+    }
+    check("C-FIND", cond);
+    scu->releaseAssociation();
+    return matches;
+  }
+
+  std::vector<std::string> retrieveSeries(const std::string& studyUid, const std::string& seriesUid,
+                                          const std::string& folder,
+                                          const RetrieveOptions& options) override {
+    DcmDataset keys;
+    keys.putAndInsertString(DCM_QueryRetrieveLevel, "SERIES");
+    keys.putAndInsertString(DCM_StudyInstanceUID, studyUid.c_str());
+    keys.putAndInsertString(DCM_SeriesInstanceUID, seriesUid.c_str());
+    if (node_.receivePort > 0) return move(keys, folder, options);
+    auto scu = connect("C-GET", [](Scu& s) {
+      s.addPresentationContext(UID_GETStudyRootQueryRetrieveInformationModel,
+                               acceptedTransferSyntaxes());
+      for (int i = 0; i < storageSopClassCount(); ++i)
+        s.addPresentationContext(storageSopClass(i), acceptedTransferSyntaxes(), ASC_SC_ROLE_SCP);
+    });
+    scu->folder = folder;
+    scu->retrieve = options;
+    OFList<RetrieveResponse*> responses;
+    OFCondition cond = scu->sendCGETRequest(
+        scu->findPresentationContextID(UID_GETStudyRootQueryRetrieveInformationModel, ""), &keys,
+        &responses);
+    int failed = 0;
+    for (RetrieveResponse* r : responses) {
+      failed = std::max(failed, int(r->m_numberOfFailedSubops));
+      delete r;
+    }
+    if (scu->cancelled) {
+      scu->abortAssociation();
+      throw cancelledError("Retrieval cancelled");
+    }
+    if (!scu->storeError.empty()) throw outputError(scu->storeError);
+    check("C-GET", cond);
+    scu->releaseAssociation();
+    finish("C-GET", scu->files, failed);
+    return scu->files;
+  }
+
+  void store(const std::vector<std::string>& files) override {
+    std::vector<DcmFileFormat> loaded(files.size());
+    for (size_t i = 0; i < files.size(); ++i)
+      if (loaded[i].loadFile(files[i].c_str()).bad())
+        throw inputError(files[i] + " is not a DICOM file Voxray can read; nothing was sent");
+    auto scu = connect("C-STORE", [&](Scu& s) {
+      for (auto& f : loaded) {
+        OFString sopClass;
+        f.getDataset()->findAndGetOFString(DCM_SOPClassUID, sopClass);
+        OFList<OFString> xfer;
+        xfer.push_back(DcmXfer(f.getDataset()->getOriginalXfer()).getXferID());
+        if (s.findPresentationContextID(sopClass, xfer.front()) == 0)
+          s.addPresentationContext(sopClass, xfer);
+      }
+    });
+    for (size_t i = 0; i < files.size(); ++i) {
+      Uint16 status = 0;
+      OFCondition cond = scu->sendSTORERequest(0, "", loaded[i].getDataset(), status);
+      check("C-STORE of " + files[i], cond);
+      if (status != STATUS_Success)
+        throw inputError("PACS " + node_.label() + " refused " + files[i] + " (status 0x" +
+                         hexStatus(status) + "); nothing after it was sent");
+    }
+    scu->releaseAssociation();
+  }
+
+ private:
+  template <class Setup>
+  std::unique_ptr<Scu> connect(const std::string& what, Setup setup) {
+    auto scu = std::make_unique<Scu>();
+    scu->setAETitle(node_.callingAe.c_str());
+    scu->setPeerAETitle(node_.calledAe.c_str());
+    scu->setPeerHostName(node_.host.c_str());
+    scu->setPeerPort(Uint16(node_.port));
+    scu->setConnectionTimeout(node_.timeoutSec);
+    scu->setACSETimeout(Uint32(node_.timeoutSec));
+    scu->setDIMSETimeout(Uint32(node_.timeoutSec));
+    scu->setDIMSEBlockingMode(DIMSE_NONBLOCKING);
+    scu->setMaxReceivePDULength(ASC_MAXIMUMPDUSIZE);
+    setup(*scu);
+    check(what + ": network setup", scu->initNetwork());
+    check(what + ": cannot associate", scu->negotiateAssociation());
+    return scu;
+  }
+
+  void check(const std::string& what, const OFCondition& cond) const {
+    if (cond.bad()) throw inputError(dimseFailure(node_, what, cond));
+  }
+
+  void finish(const std::string& what, const std::vector<std::string>& files, int failed) const {
+    if (failed > 0 || files.empty())
+      throw inputError("PACS " + node_.label() + ": " + what + " delivered " +
+                       std::to_string(files.size()) + " images" +
+                       (failed ? ", " + std::to_string(failed) + " failed" : std::string()) +
+                       ": the series is incomplete and was not kept; try again");
+  }
+
+  std::vector<std::string> move(DcmDataset& keys, const std::string& folder,
+                                const RetrieveOptions& options) {
+    MoveReceiver receiver(node_, folder, options);
+    auto scu = connect("C-MOVE", [](Scu& s) {
+      s.addPresentationContext(UID_MOVEStudyRootQueryRetrieveInformationModel,
+                               acceptedTransferSyntaxes());
+    });
+    scu->onMoveTotal = [&](int total) { receiver.setTotal(total); };
+    OFList<RetrieveResponse*> responses;
+    OFCondition cond = scu->sendMOVERequest(
+        scu->findPresentationContextID(UID_MOVEStudyRootQueryRetrieveInformationModel, ""),
+        node_.callingAe.c_str(), &keys, &responses);
+    int failed = 0;
+    for (RetrieveResponse* r : responses) {
+      failed = std::max(failed, int(r->m_numberOfFailedSubops));
+      delete r;
+    }
+    std::vector<std::string> files = receiver.finish();
+    check("C-MOVE", cond);
+    scu->releaseAssociation();
+    finish("C-MOVE to AE " + node_.callingAe + " port " + std::to_string(node_.receivePort), files,
+           failed);
+    return files;
+  }
+
+  static std::string hexStatus(Uint16 status) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "%04X", unsigned(status));
+    return buf;
+  }
+
+  static PacsMatch toMatch(DcmDataset& d, QueryLevel level) {
+    PacsMatch m;
+    m.patientName = text(d, DCM_PatientName);
+    m.patientId = text(d, DCM_PatientID);
+    m.studyInstanceUid = text(d, DCM_StudyInstanceUID);
+    m.studyDate = text(d, DCM_StudyDate);
+    m.studyDescription = text(d, DCM_StudyDescription);
+    m.accessionNumber = text(d, DCM_AccessionNumber);
+    m.modalities = text(d, level == QueryLevel::Series ? DCM_Modality : DCM_ModalitiesInStudy);
+    m.numberOfSeries = number(d, DCM_NumberOfStudyRelatedSeries);
+    m.numberOfInstances =
+        number(d, level == QueryLevel::Series ? DCM_NumberOfSeriesRelatedInstances
+                                              : DCM_NumberOfStudyRelatedInstances);
+    m.seriesInstanceUid = text(d, DCM_SeriesInstanceUID);
+    m.seriesDescription = text(d, DCM_SeriesDescription);
+    m.seriesNumber = number(d, DCM_SeriesNumber);
+    return m;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<PacsClient> makeDimseClient(const PacsNode& node) {
+  return std::make_unique<DimseClient>(node);
+}
+
+}  // namespace voxray::pacs

@@ -1,0 +1,152 @@
+#include "http_session.h"
+
+#include <curl/curl.h>
+
+#include "voxray/io/error.h"
+
+namespace voxray::pacs {
+namespace {
+
+struct Transfer {
+  const HttpSession::Sink* sink = nullptr;
+  const std::atomic<bool>* cancel = nullptr;
+  HttpResponse* response = nullptr;
+  CURL* curl = nullptr;
+  std::string sinkError;
+};
+
+size_t onBody(char* data, size_t size, size_t n, void* user) {
+  auto* t = static_cast<Transfer*>(user);
+  if (t->sink && *t->sink) {
+    long status = 0;
+    curl_easy_getinfo(t->curl, CURLINFO_RESPONSE_CODE, &status);
+    if (status < 400) {  // error bodies are kept for the message
+      char* type = nullptr;
+      curl_easy_getinfo(t->curl, CURLINFO_CONTENT_TYPE, &type);
+      try {
+        (*t->sink)(data, size * n, type ? type : "");
+      } catch (const std::exception& e) {
+        t->sinkError = e.what();
+        return 0;  // aborts the transfer
+      }
+      return size * n;
+    }
+  }
+  t->response->body.append(data, size * n);
+  return size * n;
+}
+
+int onProgress(void* user, curl_off_t, curl_off_t, curl_off_t, curl_off_t) {
+  auto* t = static_cast<Transfer*>(user);
+  return t->cancel && t->cancel->load() ? 1 : 0;
+}
+
+std::string httpHint(long status) {
+  if (status == 401)
+    return "the server wants credentials: set user and password (or bearerToken) for this node";
+  if (status == 403) return "the credentials are not allowed to do this";
+  if (status == 404) return "not found: check the node's base URL (e.g. .../dicom-web)";
+  if (status >= 500) return "the server failed; try again later or ask its administrator";
+  return "the server refused the request";
+}
+
+}  // namespace
+
+HttpSession::HttpSession(PacsNode node) : node_(std::move(node)), curl_(curl_easy_init()) {
+  if (!curl_) throw inputError("Cannot start libcurl for " + node_.label());
+}
+
+HttpSession::~HttpSession() { curl_easy_cleanup(static_cast<CURL*>(curl_)); }
+
+std::string HttpSession::escape(const std::string& value) {
+  char* out = curl_easy_escape(static_cast<CURL*>(curl_), value.c_str(), int(value.size()));
+  std::string escaped = out ? out : "";
+  curl_free(out);
+  // DICOM wildcards stay as typed: '*' is legal in a query (RFC 3986) and Orthanc's QIDO
+  // matches an escaped %2A literally.
+  std::string s;
+  for (size_t i = 0; i < escaped.size(); ++i) {
+    bool star = escaped.compare(i, 3, "%2A") == 0;
+    s += star ? '*' : escaped[i];
+    if (star) i += 2;
+  }
+  return s;
+}
+
+HttpResponse HttpSession::get(const std::string& url, const std::string& accept, const Sink& sink,
+                              const std::atomic<bool>* cancel) {
+  CURL* curl = static_cast<CURL*>(curl_);
+  curl_easy_setopt(curl, CURLOPT_HTTPGET, 1L);
+  return perform("GET", url, {"Accept: " + accept}, sink, cancel);
+}
+
+HttpResponse HttpSession::post(const std::string& url, const std::string& contentType,
+                               const std::string& body, const std::string& accept) {
+  CURL* curl = static_cast<CURL*>(curl_);
+  curl_easy_setopt(curl, CURLOPT_POSTFIELDS, body.data());
+  curl_easy_setopt(curl, CURLOPT_POSTFIELDSIZE_LARGE, curl_off_t(body.size()));
+  return perform("POST", url, {"Content-Type: " + contentType, "Accept: " + accept}, {}, nullptr);
+}
+
+HttpResponse HttpSession::perform(const std::string& what, const std::string& url,
+                                  const std::vector<std::string>& headers, const Sink& sink,
+                                  const std::atomic<bool>* cancel) {
+  CURL* curl = static_cast<CURL*>(curl_);
+  HttpResponse response;
+  Transfer transfer{&sink, cancel, &response, curl, {}};
+  curl_slist* list = nullptr;
+  for (const auto& h : headers) list = curl_slist_append(list, h.c_str());
+  char errorText[CURL_ERROR_SIZE] = {};
+  curl_easy_setopt(curl, CURLOPT_URL, url.c_str());
+  curl_easy_setopt(curl, CURLOPT_HTTPHEADER, list);
+  curl_easy_setopt(curl, CURLOPT_ERRORBUFFER, errorText);
+  curl_easy_setopt(curl, CURLOPT_WRITEFUNCTION, onBody);
+  curl_easy_setopt(curl, CURLOPT_WRITEDATA, &transfer);
+  curl_easy_setopt(curl, CURLOPT_NOPROGRESS, 0L);
+  curl_easy_setopt(curl, CURLOPT_XFERINFOFUNCTION, onProgress);
+  curl_easy_setopt(curl, CURLOPT_XFERINFODATA, &transfer);
+  curl_easy_setopt(curl, CURLOPT_CONNECTTIMEOUT, long(node_.timeoutSec));
+  // No byte for timeoutSec: the server has stopped (a large series may take long overall).
+  curl_easy_setopt(curl, CURLOPT_LOW_SPEED_LIMIT, 1L);
+  curl_easy_setopt(curl, CURLOPT_LOW_SPEED_TIME, long(node_.timeoutSec));
+  curl_easy_setopt(curl, CURLOPT_BUFFERSIZE, 512L << 10);  // fewer, larger writes (a series)
+  curl_easy_setopt(curl, CURLOPT_SSL_VERIFYPEER, 1L);
+  curl_easy_setopt(curl, CURLOPT_SSL_VERIFYHOST, 2L);
+  if (!node_.caFile.empty()) curl_easy_setopt(curl, CURLOPT_CAINFO, node_.caFile.c_str());
+  if (!node_.bearerToken.empty()) {
+    curl_easy_setopt(curl, CURLOPT_HTTPAUTH, CURLAUTH_BEARER);
+    curl_easy_setopt(curl, CURLOPT_XOAUTH2_BEARER, node_.bearerToken.c_str());
+  } else if (!node_.user.empty()) {
+    curl_easy_setopt(curl, CURLOPT_HTTPAUTH, CURLAUTH_BASIC);
+    curl_easy_setopt(curl, CURLOPT_USERNAME, node_.user.c_str());
+    curl_easy_setopt(curl, CURLOPT_PASSWORD, node_.password.c_str());
+  }
+  CURLcode code = curl_easy_perform(curl);
+  curl_slist_free_all(list);
+  curl_easy_setopt(curl, CURLOPT_HTTPHEADER, nullptr);
+  curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &response.status);
+  char* type = nullptr;
+  curl_easy_getinfo(curl, CURLINFO_CONTENT_TYPE, &type);
+  response.contentType = type ? type : "";
+  std::string where = "DICOMweb " + what + " " + url;
+  if (cancel && cancel->load()) throw cancelledError("Retrieval cancelled");
+  if (!transfer.sinkError.empty()) throw inputError(where + ": " + transfer.sinkError);
+  if (code == CURLE_PEER_FAILED_VERIFICATION || code == CURLE_SSL_CACERT_BADFILE ||
+      code == CURLE_SSL_CONNECT_ERROR || code == CURLE_SSL_CERTPROBLEM)
+    throw inputError(where + ": TLS failed (" +
+                     (*errorText ? errorText : curl_easy_strerror(code)) +
+                     "): the server's certificate is not trusted; give the node a caFile with "
+                     "its CA, or fix the server's certificate");
+  if (code != CURLE_OK)
+    throw inputError(where + ": " + (*errorText ? errorText : curl_easy_strerror(code)) +
+                     (code == CURLE_OPERATION_TIMEDOUT ? ": the server stopped answering"
+                      : code == CURLE_PARTIAL_FILE     ? ": the server closed the connection "
+                                                         "before the end; try again"
+                                                       : ": check the node's URL and network"));
+  if (response.status >= 400)
+    throw inputError(where + ": HTTP " + std::to_string(response.status) + ": " +
+                     httpHint(response.status));
+  return response;
+}
+
+}  // namespace voxray::pacs

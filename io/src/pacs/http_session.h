@@ -1,0 +1,46 @@
+#pragma once
+// HTTP for DICOMweb through libcurl: authentication (basic, bearer), TLS with the system CA
+// store (or the node's caFile), timeouts, cancel, and HTTP failures worded for the user.
+// Passwords and tokens go to libcurl only, never into a message.
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "voxray/io/pacs.h"
+
+namespace voxray::pacs {
+
+struct HttpResponse {
+  long status = 0;
+  std::string contentType;
+  std::string body;  // empty when the body went to a sink
+};
+
+class HttpSession {
+ public:
+  explicit HttpSession(PacsNode node);
+  ~HttpSession();
+  HttpSession(const HttpSession&) = delete;
+  HttpSession& operator=(const HttpSession&) = delete;
+
+  // GET; with SINK, the body is handed over as it arrives (after the headers). Throws Input
+  // for connection, TLS and HTTP >= 400 failures, Cancelled when *cancel becomes true.
+  using Sink = std::function<void(const char*, size_t, const std::string& contentType)>;
+  HttpResponse get(const std::string& url, const std::string& accept, const Sink& sink = {},
+                   const std::atomic<bool>* cancel = nullptr);
+  HttpResponse post(const std::string& url, const std::string& contentType, const std::string& body,
+                    const std::string& accept);
+  // Percent-encodes a query value (keeping the wildcard *).
+  std::string escape(const std::string& value);
+
+ private:
+  HttpResponse perform(const std::string& what, const std::string& url,
+                       const std::vector<std::string>& headers, const Sink& sink,
+                       const std::atomic<bool>* cancel);
+
+  PacsNode node_;
+  void* curl_;
+};
+
+}  // namespace voxray::pacs

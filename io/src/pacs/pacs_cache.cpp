@@ -1,0 +1,165 @@
+#include "voxray/io/pacs_cache.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "voxray/io/error.h"
+
+namespace fs = std::filesystem;
+
+namespace voxray {
+namespace {
+
+int64_t now() {
+  return std::chrono::duration_cast<std::chrono::seconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// A folder name for a UID: the UID itself when it is one (digits and dots), else a hash.
+std::string folderName(const std::string& uid) {
+  bool plain = !uid.empty() && uid.size() <= 64 &&
+               uid.find_first_not_of("0123456789.") == std::string::npos && uid[0] != '.';
+  return plain ? uid : std::string("h").append(std::to_string(std::hash<std::string>{}(uid)));
+}
+
+// Removes a staging folder whatever happens to the retrieval.
+struct Staging {
+  fs::path path;
+  ~Staging() {
+    std::error_code ignored;
+    if (!path.empty()) fs::remove_all(path, ignored);
+  }
+};
+
+}  // namespace
+
+// The index's form (index.json: {"series": [...]}), for nlohmann-json.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CachedSeries, studyUid, seriesUid, folder, bytes, lastUsed,
+                                   images)
+
+std::string defaultPacsCacheFolder() {
+  if (const char* dir = std::getenv("VOXRAY_CACHE_DIR"); dir && *dir) return dir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return std::string(xdg) + "/voxray";
+  const char* home = std::getenv("HOME");
+  return std::string(home ? home : ".") + "/.cache/voxray";
+}
+
+PacsCache::PacsCache(std::string root, uint64_t capBytes)
+    : root_(fs::absolute(root).lexically_normal().string()), capBytes_(capBytes) {
+  std::error_code ec;
+  fs::create_directories(fs::path(root_) / "series", ec);
+  fs::create_directories(fs::path(root_) / "staging", ec);
+  if (ec)
+    throw outputError("Cannot create the PACS cache " + root_ + " (" + ec.message() +
+                      "): set VOXRAY_CACHE_DIR to a writable folder");
+}
+
+std::vector<CachedSeries> PacsCache::load() const {
+  std::ifstream in(fs::path(root_) / "index.json");
+  std::vector<CachedSeries> out;
+  if (!in) return out;
+  try {
+    const nlohmann::json index = nlohmann::json::parse(in);
+    for (const auto& s : index.at("series").get<std::vector<CachedSeries>>()) {
+      if (fs::is_directory(s.folder)) out.push_back(s);  // a folder removed by hand is gone
+    }
+  } catch (const nlohmann::json::exception&) {
+    return {};  // a broken index forgets the cache; the folders are fetched again
+  }
+  return out;
+}
+
+void PacsCache::save(const std::vector<CachedSeries>& entries) const {
+  // Written aside and renamed: a full disk leaves the previous index whole.
+  fs::path tmp = fs::path(root_) / ("index.json." + std::to_string(getpid()));
+  {
+    std::ofstream out(tmp);
+    out << nlohmann::json{{"series", entries}}.dump(1);
+    if (!out.flush())
+      throw outputError("Cannot write the PACS cache index in " + root_ +
+                        ": the disk may be full; free space or set VOXRAY_CACHE_DIR");
+  }
+  fs::rename(tmp, fs::path(root_) / "index.json");
+}
+
+std::vector<CachedSeries> PacsCache::entries() const { return load(); }
+
+std::optional<CachedSeries> PacsCache::find(const std::string& seriesUid) {
+  auto all = load();
+  for (auto& s : all)
+    if (s.seriesUid == seriesUid) {
+      s.lastUsed = now();
+      save(all);
+      return s;
+    }
+  return std::nullopt;
+}
+
+void PacsCache::remove(const std::string& seriesUid) {
+  auto all = load();
+  auto it = std::find_if(all.begin(), all.end(),
+                         [&](const CachedSeries& s) { return s.seriesUid == seriesUid; });
+  if (it == all.end()) return;
+  std::string folder = it->folder;
+  all.erase(it);
+  save(all);
+  std::error_code ignored;
+  fs::remove_all(folder, ignored);
+}
+
+void PacsCache::evict(std::vector<CachedSeries>& entries, const std::string& keep) const {
+  std::sort(entries.begin(), entries.end(),
+            [](const CachedSeries& a, const CachedSeries& b) { return a.lastUsed > b.lastUsed; });
+  uint64_t total = 0;
+  std::vector<CachedSeries> kept;
+  for (const auto& s : entries) {
+    total += s.bytes;
+    if (total <= capBytes_ || s.seriesUid == keep) {
+      kept.push_back(s);
+    } else {
+      std::error_code ignored;
+      fs::remove_all(s.folder, ignored);
+    }
+  }
+  entries = kept;
+}
+
+CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid,
+                                 const std::string& seriesUid, const RetrieveOptions& options) {
+  if (auto hit = find(seriesUid)) return *hit;
+  Staging staging;
+  std::string pattern = root_ + "/staging/" + folderName(seriesUid) + "-XXXXXX";
+  if (!mkdtemp(pattern.data()))
+    throw outputError("Cannot create a folder in the PACS cache " + root_ +
+                      ": the disk may be full; free space or set VOXRAY_CACHE_DIR");
+  staging.path = pattern;
+  std::vector<std::string> files = client.retrieveSeries(studyUid, seriesUid, pattern, options);
+  if (options.cancel && options.cancel->load()) throw cancelledError("Retrieval cancelled");
+  CachedSeries entry{studyUid, seriesUid, root_ + "/series/" + folderName(seriesUid),
+                     0,        now(),     int(files.size())};
+  for (const auto& f : fs::directory_iterator(staging.path))
+    if (f.is_regular_file()) entry.bytes += f.file_size();
+  std::error_code ec;
+  fs::remove_all(entry.folder, ec);  // a stale folder the index no longer knows
+  fs::rename(staging.path, entry.folder, ec);
+  if (ec)
+    throw outputError("Cannot move the retrieved series into " + entry.folder + " (" +
+                      ec.message() + ")");
+  staging.path.clear();
+  auto all = load();
+  all.push_back(entry);
+  evict(all, seriesUid);
+  save(all);
+  return entry;
+}
+
+}  // namespace voxray

@@ -1,0 +1,112 @@
+#include "voxray/io/secondary_capture.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <ctime>
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcuid.h>
+
+#include "voxray/io/error.h"
+
+namespace voxray {
+namespace {
+
+std::string newUid(const char* root) {
+  char uid[100];
+  dcmGenerateUniqueIdentifier(uid, root);
+  return uid;
+}
+
+std::string now(const char* format) {
+  char text[32];
+  std::time_t t = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&t, &local);
+  std::strftime(text, sizeof text, format, &local);
+  return text;
+}
+
+}  // namespace
+
+std::string writeSecondaryCapture(const std::string& path, const std::vector<Image>& frames,
+                                  const SecondaryCaptureInfo& info) {
+  if (frames.empty() || frames[0].width <= 0 || frames[0].height <= 0 || frames[0].width > 65535 ||
+      frames[0].height > 65535)
+    throw inputError("A Secondary Capture needs at least one image of 1..65535 pixels a side");
+  const int w = frames[0].width, h = frames[0].height;
+  std::vector<Uint8> rgb;
+  rgb.reserve(size_t(w) * size_t(h) * 3 * frames.size());
+  for (const Image& f : frames) {
+    if (f.width != w || f.height != h)
+      throw inputError("The frames of a Secondary Capture must all be " + std::to_string(w) + "x" +
+                       std::to_string(h) + " pixels");
+    for (size_t i = 0; i < f.rgba.size(); i += 4) rgb.insert(rgb.end(), &f.rgba[i], &f.rgba[i + 3]);
+  }
+  const StudyIdentity& s = info.study;
+  std::string sopUid = newUid(SITE_INSTANCE_UID_ROOT);
+  DcmFileFormat file;
+  DcmDataset* d = file.getDataset();
+  auto put = [&](const DcmTagKey& tag, const std::string& value) {
+    d->putAndInsertString(tag, value.c_str());
+  };
+  put(DCM_SpecificCharacterSet, "ISO_IR 192");  // StudyIdentity holds UTF-8
+  put(DCM_SOPClassUID, UID_MultiframeTrueColorSecondaryCaptureImageStorage);
+  put(DCM_SOPInstanceUID, sopUid);
+  put(DCM_PatientName, s.patientName);
+  put(DCM_PatientID, s.patientId);
+  put(DCM_PatientBirthDate, s.patientBirthDate);
+  put(DCM_PatientSex, "");
+  put(DCM_StudyInstanceUID,
+      s.studyInstanceUid.empty() ? newUid(SITE_STUDY_UID_ROOT) : s.studyInstanceUid);
+  put(DCM_StudyDate, s.studyDate);
+  put(DCM_StudyTime, s.studyTime);
+  put(DCM_StudyDescription, s.studyDescription);
+  put(DCM_AccessionNumber, s.accessionNumber);
+  put(DCM_ReferringPhysicianName, "");
+  put(DCM_StudyID, "");
+  put(DCM_Modality, "OT");
+  put(DCM_SeriesInstanceUID,
+      info.seriesInstanceUid.empty() ? newUid(SITE_SERIES_UID_ROOT) : info.seriesInstanceUid);
+  put(DCM_SeriesNumber, "9000");
+  put(DCM_SeriesDescription, info.seriesDescription);
+  put(DCM_Manufacturer, "Voxray");
+  put(DCM_ConversionType, "WSD");  // workstation
+  put(DCM_InstanceNumber, "1");
+  put(DCM_PatientOrientation, "");
+  put(DCM_ContentDate, now("%Y%m%d"));
+  put(DCM_ContentTime, now("%H%M%S"));
+  put(DCM_BurnedInAnnotation, info.burnedInAnnotation ? "YES" : "NO");
+  put(DCM_ImageType, "DERIVED\\SECONDARY");
+  if (!s.frameOfReferenceUid.empty()) put(DCM_FrameOfReferenceUID, s.frameOfReferenceUid);
+  put(DCM_NumberOfFrames, std::to_string(frames.size()));
+  // Frame Increment Pointer (Type 1C for more than one frame): frames follow one another
+  // in time, FrameTime apart.
+  d->putAndInsertTagKey(DCM_FrameIncrementPointer, DCM_FrameTime);
+  put(DCM_FrameTime, "100");
+  d->putAndInsertUint16(DCM_SamplesPerPixel, 3);
+  put(DCM_PhotometricInterpretation, "RGB");
+  d->putAndInsertUint16(DCM_PlanarConfiguration, 0);
+  d->putAndInsertUint16(DCM_Rows, Uint16(h));
+  d->putAndInsertUint16(DCM_Columns, Uint16(w));
+  d->putAndInsertUint16(DCM_BitsAllocated, 8);
+  d->putAndInsertUint16(DCM_BitsStored, 8);
+  d->putAndInsertUint16(DCM_HighBit, 7);
+  d->putAndInsertUint16(DCM_PixelRepresentation, 0);
+  d->putAndInsertUint8Array(DCM_PixelData, rgb.data(), rgb.size());
+  // Written aside, then renamed: an interrupted write never leaves half a file at PATH.
+  std::string tmp = path + ".part" + std::to_string(getpid());
+  OFCondition cond = file.saveFile(tmp.c_str(), EXS_LittleEndianExplicit);
+  if (cond.bad() || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw outputError("Cannot write the Secondary Capture " + path + " (" +
+                      (cond.bad() ? cond.text() : "rename failed") +
+                      "): check the folder exists and has free space");
+  }
+  return sopUid;
+}
+
+}  // namespace voxray

@@ -1,0 +1,109 @@
+// Screenshots sent back: a Multi-frame True Color SC in the source's study, readable by
+// dcmdump, found by a new C-FIND (or QIDO) after C-STORE (or STOW-RS), pixels unchanged.
+#include <sys/wait.h>
+
+#include <cstdio>
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <gmock/gmock.h>
+
+#include "pacs_test_support.h"
+#include "voxray/io/secondary_capture.h"
+
+namespace voxray::test {
+namespace {
+
+using testing::HasSubstr;
+
+// Two 64x48 frames of a pattern no codec or colour conversion would leave as it is.
+std::vector<Image> frames() {
+  std::vector<Image> out(2, Image(64, 48));
+  for (int f = 0; f < 2; ++f)
+    for (int y = 0; y < 48; ++y)
+      for (int x = 0; x < 64; ++x) {
+        uint8_t* p = out[f].pixel(x, y);
+        p[0] = uint8_t(x * 4), p[1] = uint8_t(y * 5), p[2] = uint8_t(f * 200 + (x ^ y)), p[3] = 255;
+      }
+  return out;
+}
+
+std::vector<uint8_t> rgbOf(const std::vector<Image>& images) {
+  std::vector<uint8_t> rgb;
+  for (const auto& im : images)
+    for (size_t i = 0; i < im.rgba.size(); i += 4)
+      rgb.insert(rgb.end(), &im.rgba[i], &im.rgba[i + 3]);
+  return rgb;
+}
+
+std::string writeShot(const std::string& folder) {
+  SecondaryCaptureInfo info;
+  info.study = loadVolume(dicomPath("ct-philips-phantom/S2010")).study;
+  std::string path = folder + "/shot.dcm";
+  writeSecondaryCapture(path, frames(), info);
+  return path;
+}
+
+TEST(SecondaryCaptureTest, DcmdumpReadsItAsAMultiframeTrueColorScInTheSourceStudy) {
+  std::string path = writeShot(tempFolder("sc"));
+  FILE* p = popen(("dcmdump " + path + " 2>&1").c_str(), "r");
+  std::string dump;
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) dump.append(buf, n);
+  ASSERT_EQ(WEXITSTATUS(pclose(p)), 0) << dump;
+  EXPECT_THAT(dump, HasSubstr("=MultiframeTrueColorSecondaryCaptureImageStorage"));
+  EXPECT_THAT(dump, HasSubstr(std::string("[") + kPhantomStudy + "]"));
+  EXPECT_THAT(dump, HasSubstr("[Voxray 3D]"));
+  EXPECT_THAT(dump, HasSubstr("(0028,0301) CS [NO]"));  // BurnedInAnnotation
+  EXPECT_THAT(dump, HasSubstr("(0028,0008) IS [2]"));   // NumberOfFrames
+}
+
+TEST(SecondaryCaptureTest, UnequalFramesAreRefused) {
+  std::vector<Image> two = {Image(4, 4), Image(4, 5)};
+  EXPECT_THROW(writeSecondaryCapture(tempFolder("sc") + "/x.dcm", two, {}), Error);
+}
+
+// Sends the SC, finds its new series in the phantom study, retrieves it, compares pixels.
+void expectSentScComesBack(const PacsNode& node) {
+  auto client = makePacsClient(node);
+  PacsQuery q;
+  q.level = QueryLevel::Series;
+  q.studyInstanceUid = kPhantomStudy;
+  auto before = client->find(q);
+  client->store({writeShot(tempFolder("sc"))});
+  auto series = client->find(q);
+  ASSERT_EQ(series.size(), before.size() + 1);  // one new series in the same study
+  auto sc = std::find_if(series.begin(), series.end(), [&](const PacsMatch& m) {
+    return std::none_of(before.begin(), before.end(), [&](const PacsMatch& b) {
+      return b.seriesInstanceUid == m.seriesInstanceUid;
+    });
+  });
+  ASSERT_NE(sc, series.end());
+  EXPECT_EQ(sc->seriesDescription, "Voxray 3D");
+  EXPECT_EQ(sc->modalities, "OT");
+  std::string folder = tempFolder("sc-back");
+  auto files = client->retrieveSeries(kPhantomStudy, sc->seriesInstanceUid, folder, {});
+  ASSERT_EQ(files.size(), 1u);
+  DcmFileFormat back;
+  ASSERT_TRUE(back.loadFile(files[0].c_str()).good());
+  const Uint8* pixels = nullptr;
+  unsigned long count = 0;
+  ASSERT_TRUE(back.getDataset()->findAndGetUint8Array(DCM_PixelData, pixels, &count).good());
+  std::vector<uint8_t> expected = rgbOf(frames());
+  ASSERT_EQ(count, expected.size());
+  EXPECT_TRUE(std::equal(expected.begin(), expected.end(), pixels));  // exact: lossless path
+}
+
+using ScSendTest = PacsTest;
+
+// C-STORE then C-FIND and C-GET; STOW-RS then QIDO-RS and WADO-RS.
+TEST_F(ScSendTest, SentOverEitherTransportItIsFoundWithTheExportedPixels) {
+  for (const PacsNode& node : {server().dimseNode(), server().webNode()}) {
+    SCOPED_TRACE(node.label());
+    expectSentScComesBack(node);
+  }
+}
+
+}  // namespace
+}  // namespace voxray::test

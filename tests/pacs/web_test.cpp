@@ -1,0 +1,160 @@
+// DICOMweb against a real Orthanc (its DICOMweb plugin): QIDO-RS, WADO-RS, STOW-RS, HTTP
+// faults; and a tiny local HTTP server for what Orthanc will not do (cut a transfer short,
+// send garbage, fail with 500).
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <stdexcept>
+#include <thread>
+
+#include <gmock/gmock.h>
+
+#include "pacs_test_support.h"
+
+namespace voxray::test {
+namespace {
+
+using testing::HasSubstr;
+using WebTest = PacsTest;
+
+TEST_F(WebTest, EchoAnswersWithTheRightPassword) {
+  EXPECT_NO_THROW(makePacsClient(server().webNode())->echo());
+}
+
+TEST_F(WebTest, WrongPasswordIsHttp401WithAHint) {
+  PacsNode node = server().webNode();
+  node.password = "wrong-secret";
+  std::string m = echoFailure(node);
+  EXPECT_THAT(m, HasSubstr("HTTP 401"));
+  EXPECT_THAT(m, HasSubstr("set user and password"));
+  EXPECT_THAT(m, testing::Not(HasSubstr("wrong-secret")));  // never a password in a message
+}
+
+TEST_F(WebTest, WrongBaseUrlIsHttp404WithAHint) {
+  PacsNode node = server().webNode();
+  node.baseUrl += "-nowhere";
+  std::string m = echoFailure(node);
+  EXPECT_THAT(m, HasSubstr("HTTP 404"));
+  EXPECT_THAT(m, HasSubstr("check the node's base URL"));
+}
+
+TEST_F(WebTest, QidoByNameDateAndModalityReturnsTheRightStudies) {
+  expectStudyQueries(server().webNode());
+  auto client = makePacsClient(server().webNode());
+  PacsQuery q;
+  // Paging: two pages of one study each, different studies.
+  q.limit = 1;
+  auto first = client->find(q);
+  q.offset = 1;
+  auto second = client->find(q);
+  ASSERT_EQ(first.size(), 1u);
+  ASSERT_EQ(second.size(), 1u);
+  EXPECT_NE(first[0].studyInstanceUid, second[0].studyInstanceUid);
+}
+
+TEST_F(WebTest, WadoRsDeliversTheSeriesAsOnDisk) { expectRetrievalMatchesDisk(server().webNode()); }
+
+TEST_F(WebTest, CancelDuringWadoRsLeavesNoHalfSeries) {
+  expectCancelLeavesNothing(server().webNode());
+}
+
+TEST_F(WebTest, StowRsStoresAFileThatQidoThenFinds) {
+  auto client = makePacsClient(server().webNode());
+  client->store({dicomPath("transfer-syntaxes/1.dcm")});
+  PacsQuery q;
+  q.modality = "MR";
+  EXPECT_EQ(client->find(q).size(), 1u);
+}
+
+// Serves one canned HTTP answer to the first connection, then closes it.
+class CannedHttpServer {
+ public:
+  explicit CannedHttpServer(std::string answer) : answer_(std::move(answer)) {
+    fd_ = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t len = sizeof addr;
+    if (bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
+        getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len) != 0 || listen(fd_, 1) != 0)
+      throw std::runtime_error("cannot listen on 127.0.0.1");
+    port = ntohs(addr.sin_port);
+    thread_ = std::thread([this] {
+      int c = accept(fd_, nullptr, nullptr);
+      char request[4096];
+      (void)!read(c, request, sizeof request);
+      (void)!write(c, answer_.data(), answer_.size());
+      close(c);
+    });
+  }
+  ~CannedHttpServer() {
+    thread_.join();
+    close(fd_);
+  }
+  PacsNode node() const {
+    PacsNode n = parsePacsNode("http://127.0.0.1:" + std::to_string(port) + "/dicom-web");
+    n.timeoutSec = 5;
+    return n;
+  }
+  int port = 0;
+
+ private:
+  std::string answer_;
+  int fd_ = -1;
+  std::thread thread_;
+};
+
+std::string retrieveFailure(const PacsNode& node) {
+  return failure([&] {
+    PacsCache cache(tempFolder("cache"));
+    auto client = makePacsClient(node);
+    cache.retrieve(*client, "1.2.3", "1.2.3.4");
+  });
+}
+
+TEST(WebFaultTest, ServerStoppingMidTransferIsReportedAndNothingIsKept) {
+  std::string part = "--b1\r\nContent-Type: application/dicom\r\n\r\n" + std::string(1000, 'x');
+  CannedHttpServer server(
+      "HTTP/1.1 200 OK\r\nContent-Type: multipart/related; type=\"application/dicom\"; "
+      "boundary=b1\r\nContent-Length: 100000\r\n\r\n" +
+      part);
+  std::string m = retrieveFailure(server.node());
+  EXPECT_THAT(m, HasSubstr("closed the connection before the end"));
+}
+
+TEST(WebFaultTest, TruncatedMultipartBodyIsReported) {
+  std::string body =
+      "--b1\r\nContent-Type: application/dicom\r\n\r\nabc\r\n--b1\r\n"
+      "Content-Type: application/dicom\r\n\r\ndef";
+  CannedHttpServer server(
+      "HTTP/1.1 200 OK\r\nContent-Type: multipart/related; boundary=b1\r\nContent-Length: " +
+      std::to_string(body.size()) + "\r\n\r\n" + body);
+  std::string m = retrieveFailure(server.node());
+  EXPECT_THAT(m, HasSubstr("ended before its closing boundary (1 parts complete)"));
+}
+
+TEST(WebFaultTest, GarbageInsteadOfMultipartIsReported) {
+  std::string body = "<html>hello</html>";
+  CannedHttpServer server("HTTP/1.1 200 OK\r\nContent-Type: text/html\r\nContent-Length: " +
+                          std::to_string(body.size()) + "\r\n\r\n" + body);
+  std::string m = retrieveFailure(server.node());
+  EXPECT_THAT(m, HasSubstr("text/html, not multipart/related"));
+}
+
+TEST(WebFaultTest, TlsFailureIsShownNotIgnored) {
+  CannedHttpServer server("HTTP/1.1 200 OK\r\nContent-Length: 0\r\n\r\n");  // no TLS at all
+  PacsNode node = server.node();
+  node.baseUrl = "https://127.0.0.1:" + std::to_string(server.port) + "/dicom-web";
+  EXPECT_THAT(echoFailure(node), HasSubstr("TLS failed"));
+}
+
+TEST(WebFaultTest, Http500IsReported) {
+  CannedHttpServer server("HTTP/1.1 500 Internal Server Error\r\nContent-Length: 0\r\n\r\n");
+  std::string m = retrieveFailure(server.node());
+  EXPECT_THAT(m, HasSubstr("HTTP 500"));
+  EXPECT_THAT(m, HasSubstr("the server failed"));
+}
+
+}  // namespace
+}  // namespace voxray::test

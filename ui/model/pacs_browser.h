@@ -1,0 +1,60 @@
+#pragma once
+// The study browser's state and work (File > Open from PACS...), Qt-free: the configured
+// nodes, a search, the series of an expanded study, and a retrieval into the cache with
+// progress and cancel. Network work runs as a BackgroundTask; events arrive through POST
+// (the dialog's GUI thread). A retrieval that fails or is cancelled leaves nothing to open.
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "background_task.h"
+#include "no_qt.h"
+
+#ifdef VOXRAY_HAS_DICOM
+#include "voxray/io/pacs.h"
+#include "voxray/io/pacs_cache.h"
+
+namespace voxray::ui {
+
+struct PacsBrowserEvents {
+  std::function<void(const std::vector<PacsMatch>& studies)> found;
+  std::function<void(const std::string& studyUid, const std::vector<PacsMatch>& series)> series;
+  std::function<void(const RetrieveProgress&)> progress;
+  std::function<void(const CachedSeries&)> retrieved;  // open entry.folder, series seriesUid
+  std::function<void(const std::string& message)> failed;
+  std::function<void()> cancelled;
+};
+
+class PacsBrowser {
+ public:
+  // Most studies one search shows; the user narrows the query for more (a PACS that holds
+  // 10,000 matching studies is not listed whole).
+  static constexpr size_t kPageSize = 200;
+
+  PacsBrowser(PacsBrowserEvents events, std::string cacheFolder = defaultPacsCacheFolder(),
+              BackgroundTask::Post post = {});
+  ~PacsBrowser();  // cancels and waits
+
+  // The configured nodes (names), then any address typed by the user works too.
+  static std::vector<std::string> configuredNodes();
+
+  // Each starts at once on the browser's thread, after the previous job (cancelled first).
+  void search(const std::string& node, PacsQuery query);
+  void listSeries(const std::string& node, const std::string& studyUid);
+  void retrieve(const std::string& node, const std::string& studyUid, const std::string& seriesUid);
+  void cancel() { task_.cancel(); }
+  bool busy() const { return busy_; }
+
+ private:
+  void run(std::function<void()> job);
+
+  PacsBrowserEvents events_;
+  std::string cacheFolder_;
+  std::atomic<bool> busy_{false};
+  BackgroundTask task_;  // last member: its thread stops before the rest goes
+};
+
+}  // namespace voxray::ui
+#endif

@@ -1,0 +1,182 @@
+#include "pacs_dialog.h"
+
+#ifdef VOXRAY_HAS_DICOM
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include "gui_post.h"
+
+namespace voxray::ui {
+namespace {
+
+// The query fields: object name (for field()), label, placeholder.
+const char* const kFields[][3] = {
+    {"name", "Patient name", "e.g. DOE^J*"}, {"id", "Patient ID", ""},
+    {"from", "Study date from", "YYYYMMDD"}, {"to", "Study date to", "YYYYMMDD"},
+    {"modality", "Modality", "CT, MR, ..."}, {"accession", "Accession", ""}};
+
+enum Column { Date, Description, Modality, Series, Images, Patient, PatientId, Accession };
+constexpr int kUidRole = Qt::UserRole, kStudyUidRole = Qt::UserRole + 1;
+
+QString q(const std::string& s) { return QString::fromStdString(s); }
+
+}  // namespace
+
+PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialog(parent) {
+  setWindowTitle("Open from PACS");
+  auto* form = new QFormLayout;
+  node_ = new QComboBox;
+  node_->setEditable(true);
+  for (const auto& n : PacsBrowser::configuredNodes()) node_->addItem(q(n));
+  node_->setToolTip("A node from " + q(pacsConfigPath()) +
+                    ", or dicom://AE@host:port, or https://host/dicom-web");
+  form->addRow("Node", node_);
+  for (const auto& f : kFields) {
+    auto* edit = new QLineEdit;
+    edit->setObjectName(f[0]);
+    edit->setPlaceholderText(f[2]);
+    connect(edit, &QLineEdit::returnPressed, this, &PacsDialog::search);
+    form->addRow(f[1], edit);
+  }
+  results_ = new QTreeWidget;
+  results_->setHeaderLabels({"Date", "Description", "Modality", "Series", "Images", "Patient",
+                             "Patient ID", "Accession"});
+  results_->header()->setSectionResizeMode(Description, QHeaderView::Stretch);
+  connect(results_, &QTreeWidget::itemExpanded, this, [this](QTreeWidgetItem* item) {
+    if (item->parent() || item->childCount() != 1 || !item->child(0)->data(0, kUidRole).isNull())
+      return;  // a series, or a study already listed
+    setBusy(true, "Listing series…");
+    browser_->listSeries(node_->currentText().toStdString(),
+                         item->data(0, kUidRole).toString().toStdString());
+  });
+  connect(results_, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+    if (item->parent()) retrieve(item);
+  });
+  status_ = new QLabel(
+      "Search a node; expand a study for its series; double-click a series "
+      "to open it");
+  progress_ = new QProgressBar;
+  progress_->setVisible(false);
+  searchButton_ = new QPushButton("&Search");
+  connect(searchButton_, &QPushButton::clicked, this, &PacsDialog::search);
+  cancelButton_ = new QPushButton("Cancel retrieval");
+  cancelButton_->setEnabled(false);
+  connect(cancelButton_, &QPushButton::clicked, this, [this] { browser_->cancel(); });
+  auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
+  connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(searchButton_);
+  buttons->addWidget(cancelButton_);
+  buttons->addStretch();
+  buttons->addWidget(close);
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(form);
+  layout->addWidget(results_, 1);
+  layout->addWidget(progress_);
+  layout->addWidget(status_);
+  layout->addLayout(buttons);
+  resize(900, 600);
+
+  PacsBrowserEvents events;
+  events.found = [this](const std::vector<PacsMatch>& s) { showStudies(s); };
+  events.series = [this](const std::string& uid, const std::vector<PacsMatch>& s) {
+    showSeries(uid, s);
+  };
+  events.progress = [this](const RetrieveProgress& p) {
+    progress_->setRange(0, p.total);  // total 0 (not known): a busy bar
+    progress_->setValue(p.received);
+    status_->setText(QString("Retrieving: %1 images").arg(p.received));
+  };
+  events.retrieved = [this](const CachedSeries& entry) {
+    chosen_ = entry;
+    setBusy(false, "Retrieved");
+    accept();
+  };
+  events.failed = [this](const std::string& message) {
+    setBusy(false, q(message));
+    emit failed(q(message));
+  };
+  events.cancelled = [this] { setBusy(false, "Retrieval cancelled; nothing was kept"); };
+  browser_ = std::make_unique<PacsBrowser>(events, cacheFolder, postTo(this));
+}
+
+PacsDialog::~PacsDialog() { browser_.reset(); }
+
+QLineEdit* PacsDialog::field(const QString& name) const { return findChild<QLineEdit*>(name); }
+
+void PacsDialog::search() {
+  PacsQuery query;
+  query.patientName = field("name")->text().toStdString();
+  query.patientId = field("id")->text().toStdString();
+  query.dateFrom = field("from")->text().toStdString();
+  query.dateTo = field("to")->text().toStdString();
+  query.modality = field("modality")->text().toStdString();
+  query.accessionNumber = field("accession")->text().toStdString();
+  setBusy(true, "Searching…");
+  browser_->search(node_->currentText().toStdString(), query);
+}
+
+void PacsDialog::retrieve(QTreeWidgetItem* item) {
+  setBusy(true, "Retrieving…");
+  cancelButton_->setEnabled(true);
+  progress_->setVisible(true);
+  progress_->setRange(0, 0);
+  browser_->retrieve(node_->currentText().toStdString(),
+                     item->data(0, kStudyUidRole).toString().toStdString(),
+                     item->data(0, kUidRole).toString().toStdString());
+}
+
+void PacsDialog::setBusy(bool busy, const QString& status) {
+  searchButton_->setEnabled(!busy);
+  if (!busy) {
+    cancelButton_->setEnabled(false);
+    progress_->setVisible(false);
+  }
+  status_->setText(status);
+}
+
+void PacsDialog::showStudies(const std::vector<PacsMatch>& studies) {
+  results_->clear();
+  for (const auto& s : studies) {
+    auto* item = new QTreeWidgetItem(
+        results_, {q(s.studyDate), q(s.studyDescription), q(s.modalities),
+                   QString::number(s.numberOfSeries), QString::number(s.numberOfInstances),
+                   q(s.patientName), q(s.patientId), q(s.accessionNumber)});
+    item->setData(0, kUidRole, q(s.studyInstanceUid));
+    new QTreeWidgetItem(item, {"", "…"});  // makes it expandable; replaced by its series
+  }
+  setBusy(false, studies.size() >= PacsBrowser::kPageSize
+                     ? QString("The first %1 studies: narrow the search for others")
+                           .arg(PacsBrowser::kPageSize)
+                     : QString("%1 studies").arg(studies.size()));
+  emit searched(int(studies.size()));
+}
+
+void PacsDialog::showSeries(const std::string& studyUid, const std::vector<PacsMatch>& series) {
+  for (int i = 0; i < results_->topLevelItemCount(); ++i) {
+    QTreeWidgetItem* study = results_->topLevelItem(i);
+    if (study->data(0, kUidRole).toString() != q(studyUid)) continue;
+    qDeleteAll(study->takeChildren());
+    for (const auto& s : series) {
+      auto* item = new QTreeWidgetItem(
+          study, {"", QString("#%1 %2").arg(s.seriesNumber).arg(q(s.seriesDescription)),
+                  q(s.modalities), "", QString::number(s.numberOfInstances)});
+      item->setData(0, kUidRole, q(s.seriesInstanceUid));
+      item->setData(0, kStudyUidRole, q(studyUid));
+    }
+  }
+  setBusy(false, QString("%1 series").arg(series.size()));
+  emit seriesListed(int(series.size()));
+}
+
+}  // namespace voxray::ui
+#endif
