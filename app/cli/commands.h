@@ -15,5 +15,6 @@ Run addRenderCommand(CLI::App& app);
 Run addPresetsCommand(CLI::App& app);
 Run addBenchCommand(CLI::App& app);
 Run addAccuracyCommand(CLI::App& app);
+Run addMovieCommand(CLI::App& app);
 
 }  // namespace voxray::cli

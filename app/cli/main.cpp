@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
       voxray::cli::addDevicesCommand(app), voxray::cli::addInfoCommand(app),
       voxray::cli::addRenderCommand(app),  voxray::cli::addPresetsCommand(app),
       voxray::cli::addBenchCommand(app),   voxray::cli::addAccuracyCommand(app)};
+  runs.push_back(voxray::cli::addMovieCommand(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
