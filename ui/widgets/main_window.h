@@ -13,6 +13,7 @@
 
 #include "app_models.h"
 #include "load_controller.h"
+#include "movie_controller.h"
 #include "render_scheduler.h"
 #include "status_text.h"
 #include "view_grid.h"
@@ -35,6 +36,8 @@ class MainWindow : public QMainWindow {
   LoadController& loader() { return *loader_; }
   ViewHistory& history() { return *history_; }
   ViewGrid& grid() { return *grid_; }
+  MovieController& movies() { return *movies_; }
+  const QString& device() const { return device_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
@@ -63,6 +66,7 @@ class MainWindow : public QMainWindow {
   void openDicomFolder();
   void openRaw();
   void exportScreenshot();
+  void exportMovie();
   void showError(const QString& title, const QString& message);
   void updateTitle();
 
@@ -82,6 +86,8 @@ class MainWindow : public QMainWindow {
   FrameStats stats_;
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
+  QString device_;                     // the OpenCL selector, for exports' own contexts
+  MovieController* movies_ = nullptr;  // File → Export movie, in the background
 };
 
 }  // namespace voxray::ui
