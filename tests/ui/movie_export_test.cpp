@@ -17,12 +17,11 @@ using namespace voxray::ui;
 class MovieExportTest : public QObject {
   Q_OBJECT
   test::PhantomWindow fixture_;
-  AppModels* models_ = nullptr;
-  MainWindow* window_ = nullptr;
   QTemporaryDir dir_;
 
   std::unique_ptr<MovieDialog> makeDialog(int kind, int frames, QSize size) {
-    auto d = std::make_unique<MovieDialog>(window_, *models_, window_->movies(), "cpu");
+    auto d = std::make_unique<MovieDialog>(fixture_.window.get(), *fixture_.models,
+                                           fixture_.window->movies(), "cpu");
     d->setErrorSink([](const QString& m) { QFAIL(qPrintable("movie error: " + m)); });
     d->findChild<QComboBox*>("movieKind")->setCurrentIndex(kind);
     d->findChild<QSpinBox*>("movieFrames")->setValue(frames);
@@ -32,8 +31,8 @@ class MovieExportTest : public QObject {
   }
   // Exports and waits for the outcome; true when written.
   bool exportAndWait(MovieDialog& d, const QString& path) {
-    QSignalSpy written(&window_->movies(), &MovieController::written);
-    QSignalSpy failed(&window_->movies(), &MovieController::failed);
+    QSignalSpy written(&fixture_.window->movies(), &MovieController::written);
+    QSignalSpy failed(&fixture_.window->movies(), &MovieController::failed);
     if (!d.exportTo(path)) return false;
     for (int i = 0; i < 1200 && written.isEmpty() && failed.isEmpty(); ++i) written.wait(100);
     if (!failed.isEmpty()) qWarning() << failed.first().at(0).toString();
@@ -44,25 +43,20 @@ class MovieExportTest : public QObject {
   }
 
  private slots:
-  void init() {
-    QVERIFY(dir_.isValid());
-    QVERIFY(fixture_.start());
-    models_ = fixture_.models.get();
-    window_ = fixture_.window.get();
-  }
+  void init() { QVERIFY(fixture_.start()); }
   void cleanup() { fixture_.stop(); }
 
   // A cine frame is the axial slice view's image at that slice, window and interpolation.
   void cineFramesAreTheSliceViewsImages() {
-    models_->windowLevel.set({600.0, 100.0});
+    fixture_.models->windowLevel.set({600.0, 100.0});
     auto d = makeDialog(2, 3, {0, 0});  // axial, three slices, the slice's own size
     QVERIFY(exportAndWait(*d, dir_.filePath("cine/")));
-    const Volume& v = *models_->document.volume();
+    const Volume& v = *fixture_.models->document.volume();
     const SliceAxes axes = sliceAxes(v.direction, Orientation::Axial);
     const int slices[] = {0, 32, 63};  // three of 64, spread from the first to the last
     for (int k = 0; k < 3; ++k) {
-      const Image shown = renderSlice(v, axes, slices[k], models_->windowLevel.value(),
-                                      models_->render.sliceInterp());
+      const Image shown = renderSlice(v, axes, slices[k], fixture_.models->windowLevel.value(),
+                                      fixture_.models->render.sliceInterp());
       const Image written = readImage(frame("cine", k).toStdString());
       QCOMPARE(written.width, shown.width);
       QCOMPARE(written.height, shown.height);
@@ -74,13 +68,13 @@ class MovieExportTest : public QObject {
   // Frame 0 of an orbit is the screenshot export at the same quality, although the view is
   // in the middle of a drag (whose frames are cheaper): the movie renders at export quality.
   void orbitFrameIsTheExportQualityFrameEvenDuringADrag() {
-    models_->render.setQualityPreset("reference");
-    window_->scheduler().beginInteraction();
+    fixture_.models->render.setQualityPreset("reference");
+    fixture_.window->scheduler().beginInteraction();
     auto d = makeDialog(0, 2, {96, 64});
     QVERIFY(exportAndWait(*d, dir_.filePath("orbit/")));
-    window_->scheduler().endInteraction();
-    QSignalSpy ready(&window_->scheduler(), &RenderScheduler::exportReady);
-    window_->scheduler().requestExport(QSize(96, 64));
+    fixture_.window->scheduler().endInteraction();
+    QSignalSpy ready(&fixture_.window->scheduler(), &RenderScheduler::exportReady);
+    fixture_.window->scheduler().requestExport(QSize(96, 64));
     QVERIFY(ready.wait(60000));
     const auto still = ready.first().at(0).value<std::shared_ptr<const Frame>>();
     QCOMPARE(still->params.camera.azimuthDeg, 0.0);
@@ -104,7 +98,7 @@ class MovieExportTest : public QObject {
     });
     QVERIFY(!d->exportTo(path));
     QCOMPARE(QString::fromStdString(asked), path + " x1");
-    QVERIFY(!window_->movies().busy());
+    QVERIFY(!fixture_.window->movies().busy());
     QFile check(path);
     QVERIFY(check.open(QIODevice::ReadOnly));
     QCOMPARE(check.readAll(), QByteArray("keep me"));
@@ -117,9 +111,9 @@ class MovieExportTest : public QObject {
   // Cancel in the middle: no error, and nothing left (no frames, no temporaries, no folder).
   void cancelLeavesNothingAndShowsNoError() {
     QString error;
-    window_->setErrorSink([&](const QString&, const QString& m) { error = m; });
+    fixture_.window->setErrorSink([&](const QString&, const QString& m) { error = m; });
     auto d = makeDialog(0, 400, {128, 96});
-    QSignalSpy cancelled(&window_->movies(), &MovieController::cancelled);
+    QSignalSpy cancelled(&fixture_.window->movies(), &MovieController::cancelled);
     QVERIFY(d->exportTo(dir_.filePath("long/")));
     // Wait for the first frame on disk (a hidden temporary name), then cancel.
     QDir folder(dir_.filePath("long"));
@@ -129,7 +123,7 @@ class MovieExportTest : public QObject {
         break;
       QTest::qWait(50);
     }
-    window_->movies().cancel();
+    fixture_.window->movies().cancel();
     QVERIFY(cancelled.wait(60000));
     QVERIFY(!QDir(dir_.filePath("long")).exists());
     QVERIFY(error.isEmpty());

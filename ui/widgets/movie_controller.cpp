@@ -7,8 +7,6 @@ namespace voxray::ui {
 MovieController::MovieController(QWidget* dialogParent)
     : QObject(dialogParent), dialogParent_(dialogParent), task_(postTo(this)) {}
 
-MovieController::~MovieController() = default;  // task_ cancels and waits
-
 void MovieController::start(std::shared_ptr<const Volume> volume, const std::string& device,
                             MoviePlan plan, const QString& path, MovieSettings settings) {
   if (busy()) return;

@@ -16,13 +16,12 @@ namespace voxray::ui {
 class MovieController : public QObject {
   Q_OBJECT
  public:
+  // Destroyed, it cancels and waits for an export in progress (task_'s BackgroundTask).
   explicit MovieController(QWidget* dialogParent);
-  ~MovieController() override;  // cancels and waits for an export in progress
-
-  bool busy() const { return task_.busy(); }
   void start(std::shared_ptr<const Volume> volume, const std::string& device, MoviePlan plan,
              const QString& path, MovieSettings settings);
   void cancel() { task_.cancel(); }
+  bool busy() const { return task_.busy(); }
 
  signals:
   void written(const QString& path);
