@@ -55,7 +55,10 @@ MoviePlan plan(const MovieOptions& o, const Volume& v) {
   if (o.quality != "custom") p = applyQuality(p, findQualityPreset(o.quality), v);
   applyRenderValues(p, o.flags.given);
   if (plan.cine && !o.flags.given.count("size")) p.width = p.height = 0;  // the slice's own
-  if (!plan.cine && !o.flags.given.count("size")) p.width = 1024, p.height = 768;
+  if (!plan.cine && !o.flags.given.count("size")) {
+    p.width = 1024;
+    p.height = 768;
+  }
   plan.params = p;
   return plan;
 }
@@ -114,11 +117,13 @@ Run addMovieCommand(CLI::App& app) {
     auto bar = terminalProgress("movie");
     catchInterrupts();
     MovieProgress last;
+    double firstS = 0.0;  // the first frame, with the kernel build
     try {
       writeMovie(
           frames, o->output, o->settings,
           [&](const MovieProgress& at) {
             last = at;
+            if (at.done == 1) firstS = at.elapsedS;
             if (bar && at.done > 0) bar(double(at.done) / at.total, describeProgress(at));
           },
           &interrupted);
@@ -129,9 +134,14 @@ Run addMovieCommand(CLI::App& app) {
       return 130;
     }
     std::cerr << "wrote " << last.total << " frames of " << p.params.width << "x" << p.params.height
-              << " in " << last.elapsedS << " s (" << last.elapsedS / last.total << " s per frame"
-              << (p.cine ? "" : ", the first includes the kernel build") << ") -> " << o->output
-              << "\n";
+              << " in " << last.elapsedS << " s";
+    if (!p.cine && last.total > 1) {
+      std::cerr << " (the first " << firstS << " s with the kernel build, then "
+                << (last.elapsedS - firstS) / (last.total - 1) << " s per frame)";
+    } else {
+      std::cerr << " (" << last.elapsedS / last.total << " s per frame)";
+    }
+    std::cerr << " -> " << o->output << "\n";
     return 0;
   };
 }
