@@ -21,16 +21,6 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-void orbitCamera(CameraParams& c, const BenchRun& run, int i) {
-  double angle = 360.0 * std::max(i, 0) / run.frames;
-  if (run.orbit == Orbit::Azimuth) {
-    c.azimuthDeg = angle;
-    return;
-  }
-  c.azimuthDeg = 90.0;
-  c.elevationDeg = angle - 90.0;
-}
-
 BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
   RaycasterOptions opts = rc.options();
   opts.countSamples = false;
@@ -39,7 +29,7 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
   std::vector<double> wall, kernel;
   std::string variant;
   for (int i = -run.warmup; i < run.frames; ++i) {
-    orbitCamera(p.camera, run, i);
+    orbitCamera(p.camera, run.orbit, std::max(i, 0), run.frames);
     FrameStats s;
     rc.render(p, img, &s);
     if (i < 0) continue;
@@ -80,7 +70,7 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
     rc.setOptions(opts);
     double samples = 0, ms = 0;
     for (int i = -1; i < run.frames; ++i) {  // the first builds the kernel
-      orbitCamera(p.camera, run, i);
+      orbitCamera(p.camera, run.orbit, std::max(i, 0), run.frames);
       FrameStats s;
       rc.render(p, img, &s);
       if (i >= 0) samples += s.samples;

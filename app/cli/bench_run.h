@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "voxray/engine/orbit.h"
 #include "voxray/engine/raycaster.h"
 
 namespace voxray::cli {
@@ -19,20 +20,11 @@ struct BenchRow {
   double coarseMs = 0;     // a quarter-size frame: what progressive rendering shows first
 };
 
-// Azimuth: around the patient's long axis, from anterior. Elevation: around the
-// anterior-posterior axis, from inferior through the patient's left and superior, which
-// is the orbit VTK's Camera::Azimuth makes around an axial stack given to it without
-// orientation with slice 1 at the top (the peer benchmark, docs/bench).
-enum class Orbit { Azimuth, Elevation };
-
 struct BenchRun {
   int frames = 12, warmup = 2;
   bool countSamples = true;  // one more orbit with the counting kernel, untimed for fps
   Orbit orbit = Orbit::Azimuth;
 };
-
-// The camera of frame i (< 0: a warm-up frame, at the orbit's start).
-void orbitCamera(CameraParams& c, const BenchRun& run, int i);
 
 // Renders p over the orbit (0 ... 360 degrees) and measures it.
 BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run);

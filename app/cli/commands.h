@@ -18,5 +18,6 @@ Run addAccuracyCommand(CLI::App& app);
 Run addMeasureCommand(CLI::App& app);
 Run addSliceCommand(CLI::App& app);
 Run addPacsCommand(CLI::App& app);
+Run addMovieCommand(CLI::App& app);
 
 }  // namespace voxray::cli

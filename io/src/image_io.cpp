@@ -1,13 +1,11 @@
-#include <unistd.h>
-
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <filesystem>
 #include <system_error>
 
+#include "temporary_file.h"
 #include "voxray/io/error.h"
 #include "voxray/io/image.h"
 
@@ -19,16 +17,6 @@ namespace {
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
   return s;
-}
-
-// Hidden, unique per process and call, and with the real extension so that OpenImageIO
-// picks the format from it: "shot.png" -> ".shot.tmp4711-3.png".
-fs::path temporaryBeside(const fs::path& target) {
-  static std::atomic<unsigned> counter{0};
-  std::string name = ".";  // appended, not "." + ...: GCC 12 warns falsely on that
-  name += target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
-          std::to_string(counter++) + target.extension().string();
-  return target.parent_path() / name;
 }
 
 std::string orUnknown(std::string reason) { return reason.empty() ? "unknown error" : reason; }

@@ -21,6 +21,7 @@
 #include "gui_message.h"
 #include "help_dialogs.h"
 #include "measure_panel.h"
+#include "movie_dialog.h"
 #include "pacs_dialog.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
@@ -90,6 +91,14 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
             showError(rejected ? "Cannot show this volume" : "Rendering failed", message);
           });
 
+  device_ = device;
+  movies_ = new MovieController(this);
+  connect(movies_, &MovieController::written, this,
+          [this](const QString& path) { statusBar()->showMessage("Movie saved: " + path, 10000); });
+  connect(movies_, &MovieController::cancelled, this,
+          [this] { statusBar()->showMessage("Movie export cancelled", 5000); });
+  connect(movies_, &MovieController::failed, this,
+          [this](const QString& message) { showError("Movie export failed", message); });
   loader_ = new LoadController(this);
   connect(loader_, &LoadController::loaded, this,
           [this](std::shared_ptr<const Volume> v, const QString& name, const QString& input) {
@@ -149,6 +158,7 @@ void MainWindow::buildMenus() {
   file->addAction("Sa&ve session…", QKeySequence::Save, sessions_, &SessionActions::save);
   file->addAction("&Export screenshot…", QKeySequence("Ctrl+E"), this,
                   &MainWindow::exportScreenshot);
+  file->addAction("Export &movie…", this, &MainWindow::exportMovie);
   file->addSeparator();
   file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
   QMenu* view = menuBar()->addMenu("&View");
@@ -286,6 +296,13 @@ void MainWindow::openRaw() {
 void MainWindow::exportScreenshot() {
   ExportDialog dialog(this, *scheduler_, *volumeView_, slices_);
   if (errorSink_) dialog.setErrorSink([this](const QString& m) { errorSink_("Export failed", m); });
+  dialog.exec();
+}
+
+void MainWindow::exportMovie() {
+  MovieDialog dialog(this, models_, *movies_, device_);
+  if (errorSink_)
+    dialog.setErrorSink([this](const QString& m) { errorSink_("Cannot export the movie", m); });
   dialog.exec();
 }
 

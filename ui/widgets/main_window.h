@@ -13,6 +13,7 @@
 
 #include "app_models.h"
 #include "load_controller.h"
+#include "movie_controller.h"
 #include "render_scheduler.h"
 #include "session_actions.h"
 #include "status_text.h"
@@ -37,6 +38,8 @@ class MainWindow : public QMainWindow {
   ViewHistory& history() { return *history_; }
   ViewGrid& grid() { return *grid_; }
   SessionActions& sessions() { return *sessions_; }
+  MovieController& movies() { return *movies_; }
+  const QString& device() const { return device_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
@@ -69,6 +72,7 @@ class MainWindow : public QMainWindow {
   void openRaw();
   void openFromPacs();
   void exportScreenshot();
+  void exportMovie();
   void showError(const QString& title, const QString& message);
   void updateTitle();
 
@@ -89,7 +93,9 @@ class MainWindow : public QMainWindow {
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
   SessionActions* sessions_ = nullptr;
-  SessionInput loading_;  // the input being loaded, for AppModels::source
+  SessionInput loading_;               // the input being loaded, for AppModels::source
+  QString device_;                     // the OpenCL selector, for exports' own contexts
+  MovieController* movies_ = nullptr;  // File → Export movie, in the background
 };
 
 }  // namespace voxray::ui
