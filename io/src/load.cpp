@@ -15,6 +15,9 @@
 #include "voxray/io/dicom_import.h"
 #define VOXRAY_LOAD_DICOM 1
 #endif
+#if defined(VOXRAY_HAS_FORMATS)
+#include "voxray/io/volume_file.h"
+#endif
 
 namespace fs = std::filesystem;
 
@@ -45,6 +48,9 @@ Volume loadVolume(const std::string& input, const LoadOptions& options) {
   std::error_code ec;
   if (!fs::exists(input, ec)) throw inputError(input + ": no such file or folder");
   detail::refuseSpecialFile(input);
+#if defined(VOXRAY_HAS_FORMATS)
+  if (isVolumeFile(input)) return importVolumeFile(input, options);
+#endif
   if (fs::is_regular_file(input, ec) && !mayBeDicom(input)) {
     throw inputError(input + ": not a DICOM file; " + detail::kRawUsage);
   }
