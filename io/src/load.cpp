@@ -15,9 +15,7 @@
 #include "voxray/io/dicom_import.h"
 #define VOXRAY_LOAD_DICOM 1
 #endif
-#if defined(VOXRAY_HAS_FORMATS)
 #include "voxray/io/volume_file.h"
-#endif
 
 namespace fs = std::filesystem;
 
@@ -48,9 +46,14 @@ Volume loadVolume(const std::string& input, const LoadOptions& options) {
   std::error_code ec;
   if (!fs::exists(input, ec)) throw inputError(input + ": no such file or folder");
   detail::refuseSpecialFile(input);
+  if (isVolumeFile(input)) {
 #if defined(VOXRAY_HAS_FORMATS)
-  if (isVolumeFile(input)) return importVolumeFile(input, options);
+    return importVolumeFile(input, options);
+#else
+    throw inputError(input + ": this build of Voxray cannot read NIfTI, NRRD or MetaImage (it " +
+                     "was built with VOXRAY_WITH_FORMATS=OFF)");
 #endif
+  }
   if (fs::is_regular_file(input, ec) && !mayBeDicom(input)) {
     throw inputError(input + ": not a DICOM file; " + detail::kRawUsage);
   }

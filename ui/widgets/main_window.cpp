@@ -28,6 +28,7 @@
 #include "study_state.h"
 #include "theme.h"
 #include "volume_view.h"
+#include "voxray/io/volume_file.h"
 
 namespace voxray::ui {
 
@@ -123,6 +124,8 @@ void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
   file->addAction("Open &DICOM folder…", QKeySequence::Open, this, &MainWindow::openDicomFolder);
   file->addAction("Open &raw volume…", QKeySequence("Ctrl+R"), this, &MainWindow::openRaw);
+  file->addAction("Open volume &file (NIfTI, NRRD, MetaImage)…", QKeySequence("Ctrl+Shift+O"), this,
+                  &MainWindow::openVolumeFile);
   file->addAction("Open head &phantom", this, [this] { open("", {}); });
   recentMenu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();
@@ -230,6 +233,18 @@ void MainWindow::openRaw() {
   LoadOptions o;
   o.raw = request->second;
   open(request->first.toStdString(), o);
+}
+
+void MainWindow::openVolumeFile() {
+  QSettings s;
+  QStringList patterns;  // the extensions io declares, so a new format needs no edit here
+  for (const auto& e : volumeFileExtensions()) patterns << "*" + QString::fromStdString(e);
+  const QString file = QFileDialog::getOpenFileName(
+      this, "Open volume file", s.value("lastFolder", QDir::homePath()).toString(),
+      "NIfTI, NRRD, MetaImage (" + patterns.join(' ') + ");;All files (*)");
+  if (file.isEmpty()) return;
+  s.setValue("lastFolder", QFileInfo(file).absolutePath());
+  open(file.toStdString(), {});
 }
 
 void MainWindow::exportScreenshot() {

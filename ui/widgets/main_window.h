@@ -62,6 +62,7 @@ class MainWindow : public QMainWindow {
   void rebuildRecentMenu();
   void openDicomFolder();
   void openRaw();
+  void openVolumeFile();
   void exportScreenshot();
   void showError(const QString& title, const QString& message);
   void updateTitle();

@@ -66,7 +66,7 @@ void applyAffine(SampleGrid& g, const nifti_dmat44& a, double mm, const std::str
   glm::dmat3 steps;
   for (int c = 0; c < 3; ++c) steps[c] = glm::dvec3(-a.m[0][c], -a.m[1][c], a.m[2][c]) * mm;
   setAxes(g, steps, path);
-  g.originMm = glm::dvec3(-a.m[0][3], -a.m[1][3], a.m[2][3]) * mm;
+  g.originMm = glm::dvec3(-a.m[0][3], -a.m[1][3], a.m[2][3]) * mm + glm::dvec3(0.0);  // no -0
   if (!std::isfinite(g.originMm.x + g.originMm.y + g.originMm.z))
     throw inputError(path + ": the origin in the header is not a number; the file is damaged");
 }

@@ -134,7 +134,9 @@ void setGeometry(SampleGrid& g, const Nrrd& n, const Layout& l, const std::strin
   g.originMm = glm::dvec3(0.0);
   if (n.spaceDim > 0 && !std::isnan(n.spaceOrigin[0])) {
     g.originMm =
-        glm::dvec3(n.spaceOrigin[0], n.spaceOrigin[1], n.spaceDim > 2 ? n.spaceOrigin[2] : 0.0) * s;
+        glm::dvec3(n.spaceOrigin[0], n.spaceOrigin[1], n.spaceDim > 2 ? n.spaceOrigin[2] : 0.0) *
+            s +
+        glm::dvec3(0.0);  // + 0: no -0 in JSON output
     if (!std::isfinite(g.originMm.x + g.originMm.y + g.originMm.z))
       throw inputError(path + ": the space origin is not a number; the file is damaged");
   }

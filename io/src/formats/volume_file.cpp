@@ -38,7 +38,7 @@ void setAxes(SampleGrid& g, const glm::dmat3& stepsLps, const std::string& path)
                                               : "a spacing or direction that is not a number") +
                        "; the file is damaged (its geometry cannot be shown in millimetres)");
     g.spacingMm[a] = length;
-    g.direction[a] = stepsLps[a] / length;
+    g.direction[a] = stepsLps[a] / length + glm::dvec3(0.0);  // + 0: no -0 in JSON output
   }
   if (std::abs(glm::determinant(g.direction)) < 1e-3)
     throw inputError(path + ": the header's axis directions are parallel; the file is damaged");
@@ -63,19 +63,13 @@ void checkDims(const std::array<uint64_t, 3>& dims, uint64_t extra, const std::s
 
 namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-bool endsWith(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
+// PATH ends in one of volumeFileExtensions(): ".gz" can only be ".nii.gz".
 formats::SampleGrid readGrid(const std::string& path) {
-  const std::string name = lower(fs::path(path).filename().string());
-  if (endsWith(name, ".nii") || endsWith(name, ".nii.gz")) return formats::readNifti(path);
-  if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr")) return formats::readNrrd(path);
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext == ".nii" || ext == ".gz") return formats::readNifti(path);
+  if (ext == ".nrrd" || ext == ".nhdr") return formats::readNrrd(path);
   return formats::readMetaImage(path);
 }
 
@@ -115,18 +109,6 @@ void throwIfCancelled(const LoadOptions& o) {
 }
 
 }  // namespace
-
-const std::vector<std::string>& volumeFileExtensions() {
-  static const std::vector<std::string> extensions = {".nii",  ".nii.gz", ".nrrd",
-                                                      ".nhdr", ".mha",    ".mhd"};
-  return extensions;
-}
-
-bool isVolumeFile(const std::string& path) {
-  const std::string name = lower(fs::path(path).filename().string());
-  return std::any_of(volumeFileExtensions().begin(), volumeFileExtensions().end(),
-                     [&](const std::string& e) { return endsWith(name, e); });
-}
 
 Volume importVolumeFile(const std::string& path, const LoadOptions& options) {
   std::error_code ec;
