@@ -40,24 +40,12 @@ void visitAs(const uint8_t* raw, size_t count, const SampleDecoding& d, F& f) {
 // Calls f(i, hu) for every sample; one instantiation per type keeps the loops tight.
 template <class F>
 void visitSamples(const uint8_t* raw, size_t count, const SampleDecoding& d, F&& f) {
-  switch (d.kind) {
-    case SampleKind::U8:
-      return visitAs<uint8_t>(raw, count, d, f);
-    case SampleKind::I8:
-      return visitAs<int8_t>(raw, count, d, f);
-    case SampleKind::U16:
-      return visitAs<uint16_t>(raw, count, d, f);
-    case SampleKind::I16:
-      return visitAs<int16_t>(raw, count, d, f);
-    case SampleKind::U32:
-      return visitAs<uint32_t>(raw, count, d, f);
-    case SampleKind::I32:
-      return visitAs<int32_t>(raw, count, d, f);
-    case SampleKind::F32:
-      return visitAs<float>(raw, count, d, f);
-    case SampleKind::F64:
-      return visitAs<double>(raw, count, d, f);
-  }
+  using Visit = void (*)(const uint8_t*, size_t, const SampleDecoding&, F&);
+  static constexpr Visit visits[] = {visitAs<uint8_t, F>,  visitAs<int8_t, F>,  // SampleKind order
+                                     visitAs<uint16_t, F>, visitAs<int16_t, F>,
+                                     visitAs<uint32_t, F>, visitAs<int32_t, F>,
+                                     visitAs<float, F>,    visitAs<double, F>};
+  visits[int(d.kind)](raw, count, d, f);
 }
 
 std::string number(double v) {
@@ -68,22 +56,23 @@ std::string number(double v) {
 
 }  // namespace
 
-SampleDecoding decodingOf(const RawLayout& layout) {
-  SampleDecoding d;
-  switch (layout.type) {
+SampleKind kindOf(SampleType type) {
+  switch (type) {
     case SampleType::U8:
-      d.kind = SampleKind::U8;
-      break;
-    case SampleType::I16:
-      d.kind = SampleKind::I16;
-      break;
+      return SampleKind::U8;
     case SampleType::U16:
-      d.kind = SampleKind::U16;
-      break;
+      return SampleKind::U16;
     case SampleType::F32:
-      d.kind = SampleKind::F32;
+      return SampleKind::F32;
+    case SampleType::I16:
       break;
   }
+  return SampleKind::I16;
+}
+
+SampleDecoding decodingOf(const RawLayout& layout) {
+  SampleDecoding d;
+  d.kind = kindOf(layout.type);
   d.swap = (layout.order == ByteOrder::Big) != (std::endian::native == std::endian::big);
   d.slope = layout.slope;
   d.intercept = layout.intercept;
@@ -91,21 +80,8 @@ SampleDecoding decodingOf(const RawLayout& layout) {
 }
 
 size_t sampleBytes(SampleKind kind) {
-  switch (kind) {
-    case SampleKind::U8:
-    case SampleKind::I8:
-      return 1;
-    case SampleKind::U16:
-    case SampleKind::I16:
-      return 2;
-    case SampleKind::U32:
-    case SampleKind::I32:
-    case SampleKind::F32:
-      return 4;
-    case SampleKind::F64:
-      return 8;
-  }
-  return 0;
+  static constexpr size_t bytes[] = {1, 1, 2, 2, 4, 4, 4, 8};  // in SampleKind order
+  return bytes[int(kind)];
 }
 
 bool isIntegerKind(SampleKind kind) { return kind != SampleKind::F32 && kind != SampleKind::F64; }
@@ -192,17 +168,6 @@ void storeSamples(const uint8_t* raw, size_t count, const SampleDecoding& decodi
 
 namespace voxray {
 
-size_t sampleBytes(SampleType t) {
-  switch (t) {
-    case SampleType::U8:
-      return 1;
-    case SampleType::I16:
-    case SampleType::U16:
-      return 2;
-    case SampleType::F32:
-      return 4;
-  }
-  return 0;
-}
+size_t sampleBytes(SampleType t) { return detail::sampleBytes(detail::kindOf(t)); }
 
 }  // namespace voxray

@@ -17,6 +17,7 @@ struct SampleDecoding {
   bool swap = false;  // bytes are in the other order than this machine's
   double slope = 1.0, intercept = 0.0;
 };
+SampleKind kindOf(SampleType type);
 SampleDecoding decodingOf(const RawLayout& layout);
 size_t sampleBytes(SampleKind kind);
 bool isIntegerKind(SampleKind kind);

@@ -10,33 +10,11 @@
 namespace voxray::formats {
 namespace {
 
-using detail::SampleKind;
 using Component = itk::IOComponentEnum;
 
-SampleKind kindOf(const itk::ImageIOBase& io, const std::string& path) {
-  switch (io.GetComponentType()) {
-    case Component::UCHAR:
-      return SampleKind::U8;
-    case Component::CHAR:
-      return SampleKind::I8;
-    case Component::USHORT:
-      return SampleKind::U16;
-    case Component::SHORT:
-      return SampleKind::I16;
-    case Component::UINT:
-      return SampleKind::U32;
-    case Component::INT:
-      return SampleKind::I32;
-    case Component::FLOAT:
-      return SampleKind::F32;
-    case Component::DOUBLE:
-      return SampleKind::F64;
-    default:
-      throw inputError(path + ": holds " +
-                       itk::ImageIOBase::GetComponentTypeAsString(io.GetComponentType()) +
-                       " samples; Voxray opens u8, i8, u16, i16, u32, i32, f32 and f64 volumes");
-  }
-}
+constexpr KindCodes kItkTypes = {
+    int(Component::UCHAR), int(Component::CHAR), int(Component::USHORT), int(Component::SHORT),
+    int(Component::UINT),  int(Component::INT),  int(Component::FLOAT),  int(Component::DOUBLE)};
 
 // The acronym MetaIO writers derive from the directions (ITK's convention: the side each axis
 // comes from, "RAI" for L, P, S), to compare with the file's AnatomicalOrientation.
@@ -98,7 +76,9 @@ SampleGrid read(const std::string& path) {
   if (!std::isfinite(g.originMm.x + g.originMm.y + g.originMm.z))
     throw inputError(path + ": the origin in the header is not a number; the file is damaged");
   checkAnatomicalOrientation(g, *io);
-  g.decoding.kind = kindOf(*io, path);
+  g.decoding.kind =
+      kindOfCode(kItkTypes, int(io->GetComponentType()),
+                 itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType()), path);
   g.sourceType = kindName(g.decoding.kind);
 
   itk::ImageIORegion region(n);

@@ -11,37 +11,13 @@
 namespace voxray::formats {
 namespace {
 
-using detail::SampleKind;
-
 struct NiftiFree {
   void operator()(nifti_image* n) const { nifti_image_free(n); }
 };
 using NiftiPtr = std::unique_ptr<nifti_image, NiftiFree>;
 
-SampleKind kindOf(const nifti_image& n, const std::string& path) {
-  switch (n.datatype) {
-    case DT_UINT8:
-      return SampleKind::U8;
-    case DT_INT8:
-      return SampleKind::I8;
-    case DT_UINT16:
-      return SampleKind::U16;
-    case DT_INT16:
-      return SampleKind::I16;
-    case DT_UINT32:
-      return SampleKind::U32;
-    case DT_INT32:
-      return SampleKind::I32;
-    case DT_FLOAT32:
-      return SampleKind::F32;
-    case DT_FLOAT64:
-      return SampleKind::F64;
-    default:
-      throw inputError(path + ": holds " + nifti_datatype_string(n.datatype) +
-                       " samples; Voxray opens scalar u8, i8, u16, i16, u32, i32, f32 and f64 " +
-                       "volumes (convert it, e.g. with fslmaths -odt float)");
-  }
-}
+constexpr KindCodes kNiftiTypes = {DT_UINT8,  DT_INT8,  DT_UINT16,  DT_INT16,
+                                   DT_UINT32, DT_INT32, DT_FLOAT32, DT_FLOAT64};
 
 // Millimetres per unit of the file's xyz_units (unknown: millimetres, as NIfTI tools assume).
 double mmPerUnit(int units) {
@@ -110,7 +86,7 @@ SampleGrid readNifti(const std::string& path) {
     volumes *= uint64_t(n.dim[a]);
   }
   checkDims(g.dims, volumes, path);
-  g.decoding.kind = kindOf(n, path);
+  g.decoding.kind = kindOfCode(kNiftiTypes, n.datatype, nifti_datatype_string(n.datatype), path);
   g.sourceType = kindName(g.decoding.kind);
   if (n.scl_slope != 0.0 && std::isfinite(n.scl_slope) && std::isfinite(n.scl_inter)) {
     g.decoding.slope = n.scl_slope;

@@ -13,8 +13,6 @@
 namespace voxray::formats {
 namespace {
 
-using detail::SampleKind;
-
 struct NrrdNuke {
   void operator()(Nrrd* n) const { nrrdNuke(n); }
 };
@@ -34,29 +32,8 @@ std::string teemReason() {
   return colon == std::string::npos ? last : last.substr(colon + 2);
 }
 
-SampleKind kindOf(int type, const std::string& path) {
-  switch (type) {
-    case nrrdTypeUChar:
-      return SampleKind::U8;
-    case nrrdTypeChar:
-      return SampleKind::I8;
-    case nrrdTypeUShort:
-      return SampleKind::U16;
-    case nrrdTypeShort:
-      return SampleKind::I16;
-    case nrrdTypeUInt:
-      return SampleKind::U32;
-    case nrrdTypeInt:
-      return SampleKind::I32;
-    case nrrdTypeFloat:
-      return SampleKind::F32;
-    case nrrdTypeDouble:
-      return SampleKind::F64;
-    default:
-      throw inputError(path + ": holds " + airEnumStr(nrrdType, type) +
-                       " samples; Voxray opens u8, i8, u16, i16, u32, i32, f32 and f64 volumes");
-  }
-}
+constexpr KindCodes kNrrdTypes = {nrrdTypeUChar, nrrdTypeChar, nrrdTypeUShort, nrrdTypeShort,
+                                  nrrdTypeUInt,  nrrdTypeInt,  nrrdTypeFloat,  nrrdTypeDouble};
 
 // Sign of each world axis when it becomes LPS; zero for spaces without anatomical meaning.
 glm::dvec3 toLps(int space) {
@@ -156,7 +133,7 @@ SampleGrid readNrrd(const std::string& path) {
   SampleGrid g;
   for (unsigned a = 0; a < 3; ++a) g.dims[a] = a < l.spatial ? h.axis[l.axes[a]].size : 1;
   checkDims(g.dims, l.components * l.volumes, path);
-  g.decoding.kind = kindOf(h.type, path);
+  g.decoding.kind = kindOfCode(kNrrdTypes, h.type, airEnumStr(nrrdType, h.type), path);
   g.sourceType = kindName(g.decoding.kind);
   setGeometry(g, h, l, path);
   if (l.components > 1)

@@ -29,6 +29,13 @@ struct SampleGrid {
   std::vector<std::string> warnings;
 };
 
+// A format's type codes of the kinds Voxray reads, in SampleKind order (u8, i8, u16, i16,
+// u32, i32, f32, f64). Returns the kind of CODE; throws Error (Input) naming TYPE_NAME when
+// the code is not in the table.
+using KindCodes = std::array<int, 8>;
+detail::SampleKind kindOfCode(const KindCodes& codes, int code, const std::string& typeName,
+                              const std::string& path);
+
 // Name of a sample kind as Volume::sourceType spells it.
 std::string kindName(detail::SampleKind kind);
 

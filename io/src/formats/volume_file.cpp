@@ -28,6 +28,15 @@ std::string kindName(detail::SampleKind kind) {
   return names[int(kind)];
 }
 
+detail::SampleKind kindOfCode(const KindCodes& codes, int code, const std::string& typeName,
+                              const std::string& path) {
+  for (size_t k = 0; k < codes.size(); ++k)
+    if (codes[k] == code) return detail::SampleKind(k);
+  throw inputError(path + ": holds " + typeName +
+                   " samples; Voxray opens scalar u8, i8, u16, i16, u32, i32, f32 and f64 " +
+                   "volumes (convert it to one of those)");
+}
+
 void setAxes(SampleGrid& g, const glm::dmat3& stepsLps, const std::string& path) {
   static const char* const axis[] = {"i (first)", "j (second)", "k (third)"};
   for (int a = 0; a < 3; ++a) {

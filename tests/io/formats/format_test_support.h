@@ -34,6 +34,14 @@ inline std::string dcm2niix(const std::string& dicomDir, const std::filesystem::
   return {};
 }
 
+// A text header followed by DATA (a hand-made NRRD or MetaImage file).
+inline void writeHeaderFile(const std::string& path, const std::string& header,
+                            const std::vector<uint8_t>& data = {}) {
+  std::vector<uint8_t> bytes(header.begin(), header.end());
+  bytes.insert(bytes.end(), data.begin(), data.end());
+  writeBytes(path, bytes);
+}
+
 inline double physicalMax(const Volume& v) {
   return v.toPhysical(*std::max_element(v.voxels.begin(), v.voxels.end()));
 }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 namespace voxray::test {
 namespace {
@@ -15,26 +16,14 @@ void fill(void* data, const std::vector<double>& values) {
 }
 
 void fillData(nifti_image* nim, const std::vector<double>& values) {
-  switch (nim->datatype) {
-    case DT_UINT8:
-      return fill<uint8_t>(nim->data, values);
-    case DT_INT8:
-      return fill<int8_t>(nim->data, values);
-    case DT_UINT16:
-      return fill<uint16_t>(nim->data, values);
-    case DT_INT16:
-      return fill<int16_t>(nim->data, values);
-    case DT_UINT32:
-      return fill<uint32_t>(nim->data, values);
-    case DT_INT32:
-      return fill<int32_t>(nim->data, values);
-    case DT_FLOAT32:
-      return fill<float>(nim->data, values);
-    case DT_FLOAT64:
-      return fill<double>(nim->data, values);
-    default:
-      throw std::runtime_error("writeNifti: no test filler for this datatype");
-  }
+  using Fill = void (*)(void*, const std::vector<double>&);
+  static const std::pair<int, Fill> fills[] = {
+      {DT_UINT8, fill<uint8_t>}, {DT_INT8, fill<int8_t>},     {DT_UINT16, fill<uint16_t>},
+      {DT_INT16, fill<int16_t>}, {DT_UINT32, fill<uint32_t>}, {DT_INT32, fill<int32_t>},
+      {DT_FLOAT32, fill<float>}, {DT_FLOAT64, fill<double>}};
+  for (const auto& [type, f] : fills)
+    if (type == nim->datatype) return f(nim->data, values);
+  throw std::runtime_error("writeNifti: no test filler for this datatype");
 }
 
 }  // namespace

@@ -41,12 +41,12 @@ TEST(FormatsMetaImage, ObliqueMhdZraw) { expectRoundTrip(kOblique, "o.mhd", 1, t
 
 // A 4x3x2 int16 volume holding its voxel index, after a text header.
 void writeWithHeader(const std::string& path, const std::string& header) {
-  std::vector<uint8_t> bytes(header.begin(), header.end());
+  std::vector<uint8_t> data;
   for (int16_t i = 0; i < 24; ++i) {
-    bytes.push_back(uint8_t(i & 0xff));
-    bytes.push_back(uint8_t(uint16_t(i) >> 8));
+    data.push_back(uint8_t(i & 0xff));
+    data.push_back(uint8_t(uint16_t(i) >> 8));
   }
-  test::writeBytes(path, bytes);
+  test::writeHeaderFile(path, header, data);
 }
 
 std::string nrrdHeader(const std::string& space) {
