@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 #include "voxray/io/error.h"
 
@@ -42,6 +43,20 @@ void checkAnatomicalOrientation(SampleGrid& g, itk::MetaImageIO& io) {
                          "); the TransformMatrix is used, as ITK and 3D Slicer do");
 }
 
+// A detached data file that is not there: said plainly before MetaIO tries it (MetaIO's own
+// failure there also leaks the stream it opened).
+void checkDataFile(const std::string& path, itk::MetaImageIO& io) {
+  const std::string data = io.GetMetaImagePointer()->ElementDataFileName();
+  if (data.empty() || data == "LOCAL" || data == "Local" || data == "local" ||
+      data.find_first_of("% ") != std::string::npos || data.rfind("LIST", 0) == 0)
+    return;  // inline data, or a list or pattern of slice files that MetaIO resolves itself
+  const std::filesystem::path file = std::filesystem::path(path).parent_path() / data;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(data, ec) && !std::filesystem::is_regular_file(file, ec))
+    throw inputError(path + ": its data file " + data +
+                     " is missing; keep the .mhd and its data file in one folder");
+}
+
 // Reads the header and every sample; the caller keeps the first 3D volume and component.
 SampleGrid read(const std::string& path) {
   itk::MetaImageIO::Pointer io = itk::MetaImageIO::New();
@@ -76,6 +91,7 @@ SampleGrid read(const std::string& path) {
   if (!std::isfinite(g.originMm.x + g.originMm.y + g.originMm.z))
     throw inputError(path + ": the origin in the header is not a number; the file is damaged");
   checkAnatomicalOrientation(g, *io);
+  checkDataFile(path, *io);
   g.decoding.kind =
       kindOfCode(kItkTypes, int(io->GetComponentType()),
                  itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType()), path);

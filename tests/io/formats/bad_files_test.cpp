@@ -72,7 +72,7 @@ TEST(FormatsBadFiles, MetaImageDataFileMissing) {
   EXPECT_THAT(headerError("t.mhd",
                           "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\n"
                           "ElementType = MET_SHORT\nElementDataFile = gone.raw\n"),
-              HasSubstr("cannot be read"));
+              HasSubstr("its data file gone.raw is missing"));
 }
 
 TEST(FormatsBadFiles, NanSpacing) {
