@@ -1,9 +1,10 @@
 # NIfTI, NRRD and MetaImage import (issue 13), each through the library made for it:
 # NIfTI through the NIfTI C library (libnifti2: NIfTI-1 and NIfTI-2, the sform/qform fields as
 # the header has them), NRRD through Teem (ITK 5.2's NRRD reader gets left-anterior-superior
-# wrong), MetaImage through ITK's MetaImageIO. An object library of its own: ITK's include
-# folder carries its own openjpeg.h and nifti1_io.h, which must not shadow the system ones for
-# the rest of io. Nothing of any of them leaks out of io.
+# wrong), MetaImage through MetaIO (ITK's MetaIO library on its own: Debian's ITK headers
+# refuse any compiler but GCC, which would break clang-tidy and the clang fuzz build). An
+# object library of its own: ITK's include folder carries its own openjpeg.h and nifti1_io.h,
+# which must not shadow the system ones for the rest of io. Nothing leaks out of io.
 find_package(ZLIB REQUIRED)
 # Debian 12's NIFTIConfig.cmake names /usr/lib/libznz.so.3.0.0, which the package installs
 # under the multiarch folder: find the library and its headers directly instead.
@@ -15,9 +16,8 @@ if(NOT TARGET voxray_nifti2)
   target_include_directories(voxray_nifti2 SYSTEM INTERFACE ${NIFTI2_INCLUDE_DIR})
   target_link_libraries(voxray_nifti2 INTERFACE ${NIFTI2_LIBRARY} ${ZNZ_LIBRARY} ZLIB::ZLIB m)
 endif()
-# ITK's config looks for its HDF5 with a C test program, whichever modules are asked for.
-enable_language(C)
-find_package(ITK REQUIRED COMPONENTS ITKIOMeta)
+find_path(METAIO_INCLUDE_DIR metaImage.h PATH_SUFFIXES ITK-5.2 REQUIRED)
+find_library(METAIO_LIBRARY NAMES ITKMetaIO-5.2 REQUIRED)
 # Teem's CMake config (TeemUse.cmake) sets global flags; the library and headers suffice.
 find_path(TEEM_INCLUDE_DIR teem/nrrd.h REQUIRED)
 find_library(TEEM_LIBRARY teem REQUIRED)
@@ -28,11 +28,11 @@ add_library(voxray_io_formats OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/nrrd_read.cpp
   ${CMAKE_CURRENT_LIST_DIR}/volume_file.cpp)
 target_include_directories(voxray_io_formats PRIVATE include)
-# SYSTEM: ITK's headers are not ours to keep warning-free.
-target_include_directories(voxray_io_formats SYSTEM PRIVATE ${ITK_INCLUDE_DIRS})
-target_include_directories(voxray_io_formats SYSTEM PRIVATE ${TEEM_INCLUDE_DIR})
-target_link_libraries(voxray_io_formats PRIVATE glm::glm voxray_nifti2 ${ITK_LIBRARIES}
+# SYSTEM: the libraries' headers are not ours to keep warning-free.
+target_include_directories(voxray_io_formats SYSTEM PRIVATE ${METAIO_INCLUDE_DIR}
+  ${TEEM_INCLUDE_DIR})
+target_link_libraries(voxray_io_formats PRIVATE glm::glm voxray_nifti2 ${METAIO_LIBRARY}
   ${TEEM_LIBRARY})
-target_link_libraries(voxray_io PRIVATE voxray_io_formats voxray_nifti2 ${ITK_LIBRARIES}
+target_link_libraries(voxray_io PRIVATE voxray_io_formats voxray_nifti2 ${METAIO_LIBRARY}
   ${TEEM_LIBRARY})
 target_compile_definitions(voxray_io PUBLIC VOXRAY_HAS_FORMATS)

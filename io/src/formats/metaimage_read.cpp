@@ -1,21 +1,19 @@
 #include "metaimage_read.h"
 
-#include <itkMetaImageIO.h>
+#include <metaImage.h>
 
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 
 #include "voxray/io/error.h"
 
 namespace voxray::formats {
 namespace {
 
-using Component = itk::IOComponentEnum;
-
-constexpr KindCodes kItkTypes = {
-    int(Component::UCHAR), int(Component::CHAR), int(Component::USHORT), int(Component::SHORT),
-    int(Component::UINT),  int(Component::INT),  int(Component::FLOAT),  int(Component::DOUBLE)};
+constexpr KindCodes kMetaTypes = {MET_UCHAR, MET_CHAR, MET_USHORT, MET_SHORT,
+                                  MET_UINT,  MET_INT,  MET_FLOAT,  MET_DOUBLE};
 
 // The acronym MetaIO writers derive from the directions (ITK's convention: the side each axis
 // comes from, "RAI" for L, P, S), to compare with the file's AnatomicalOrientation.
@@ -32,8 +30,8 @@ std::string orientationAcronym(const glm::dmat3& direction) {
   return code;
 }
 
-void checkAnatomicalOrientation(SampleGrid& g, itk::MetaImageIO& io) {
-  const char* given = io.GetMetaImagePointer()->AnatomicalOrientationAcronym();
+void checkAnatomicalOrientation(SampleGrid& g, const MetaImage& image) {
+  const char* given = image.AnatomicalOrientationAcronym();
   const std::string file = given ? given : "";
   if (file.size() < 3 || file.find('?') != std::string::npos) return;
   const std::string matrix = orientationAcronym(g.direction);
@@ -44,9 +42,9 @@ void checkAnatomicalOrientation(SampleGrid& g, itk::MetaImageIO& io) {
 }
 
 // A detached data file that is not there: said plainly before MetaIO tries it (MetaIO's own
-// failure there also leaks the stream it opened).
-void checkDataFile(const std::string& path, itk::MetaImageIO& io) {
-  const std::string data = io.GetMetaImagePointer()->ElementDataFileName();
+// failure there is vague and leaks the stream it opened).
+void checkDataFile(const std::string& path, const MetaImage& image) {
+  const std::string data = image.ElementDataFileName();
   if (data.empty() || data == "LOCAL" || data == "Local" || data == "local" ||
       data.find_first_of("% ") != std::string::npos || data.rfind("LIST", 0) == 0)
     return;  // inline data, or a list or pattern of slice files that MetaIO resolves itself
@@ -57,29 +55,30 @@ void checkDataFile(const std::string& path, itk::MetaImageIO& io) {
                      " is missing; keep the .mhd and its data file in one folder");
 }
 
-// Reads the header and every sample; the caller keeps the first 3D volume and component.
-SampleGrid read(const std::string& path) {
-  itk::MetaImageIO::Pointer io = itk::MetaImageIO::New();
-  if (!io->CanReadFile(path.c_str()))
+}  // namespace
+
+SampleGrid readMetaImage(const std::string& path) {
+  MetaImage image;
+  if (!image.Read(path.c_str(), false))
     throw inputError(path + ": not a readable MetaImage file (its header is missing or damaged)");
-  io->SetFileName(path);
-  io->ReadImageInformation();
-  const unsigned n = io->GetNumberOfDimensions();
-  if (n < 2)
+  const int n = image.NDims();
+  if (n < 2 || n > 10)
     throw inputError(path + ": holds a " + std::to_string(n) + "D image; Voxray opens volumes");
   SampleGrid g;
-  uint64_t extra = io->GetNumberOfComponents();
+  uint64_t extra = uint64_t(std::max(image.ElementNumberOfChannels(), 1));
   glm::dmat3 steps(0.0);
-  for (unsigned a = 0; a < n; ++a) {
+  for (int a = 0; a < n; ++a) {
+    if (image.DimSize(a) < 1)
+      throw inputError(path + ": the header gives a dimension of size " +
+                       std::to_string(image.DimSize(a)) + "; the file is damaged");
     if (a >= 3) {
-      extra *= std::max<uint64_t>(io->GetDimensions(a), 1);
+      extra *= uint64_t(image.DimSize(a));
       continue;
     }
-    g.dims[a] = io->GetDimensions(a);
-    const std::vector<double> d = io->GetDirection(a);
-    for (unsigned r = 0; r < 3 && r < d.size(); ++r)
-      steps[int(a)][int(r)] = d[r] * io->GetSpacing(a);
-    g.originMm[int(a)] = io->GetOrigin(a);
+    g.dims[size_t(a)] = uint64_t(image.DimSize(a));
+    for (int r = 0; r < 3 && r < n; ++r)
+      steps[a][r] = image.TransformMatrix(a, r) * image.ElementSpacing(a);
+    g.originMm[a] = image.Position(a);
   }
   if (n == 2) {
     g.dims[2] = 1;
@@ -90,56 +89,33 @@ SampleGrid read(const std::string& path) {
   setAxes(g, steps, path);
   if (!std::isfinite(g.originMm.x + g.originMm.y + g.originMm.z))
     throw inputError(path + ": the origin in the header is not a number; the file is damaged");
-  checkAnatomicalOrientation(g, *io);
-  checkDataFile(path, *io);
-  g.decoding.kind =
-      kindOfCode(kItkTypes, int(io->GetComponentType()),
-                 itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType()), path);
+  checkAnatomicalOrientation(g, image);
+  g.decoding.kind = kindOfCode(kMetaTypes, image.ElementType(),
+                               "MetaImage type " + std::to_string(int(image.ElementType())), path);
   g.sourceType = kindName(g.decoding.kind);
+  checkDataFile(path, image);
 
-  itk::ImageIORegion region(n);
-  for (unsigned a = 0; a < n; ++a) {
-    region.SetIndex(a, 0);
-    region.SetSize(a, io->GetDimensions(a));
-  }
-  io->SetIORegion(region);
-  const size_t total = size_t(io->GetImageSizeInBytes());
-  auto buffer = std::shared_ptr<uint8_t[]>(new uint8_t[total]);
-  io->Read(buffer.get());
-
-  const unsigned components = io->GetNumberOfComponents();
-  const uint64_t volumes = extra / components;
-  if (components > 1) {
-    // Keep component 0 of each voxel, packed in place.
-    const size_t s = detail::sampleBytes(g.decoding.kind);
-    const size_t count = g.dims[0] * g.dims[1] * g.dims[2];
+  const size_t channels = size_t(std::max(image.ElementNumberOfChannels(), 1));
+  const size_t s = detail::sampleBytes(g.decoding.kind);
+  const size_t count = g.dims[0] * g.dims[1] * g.dims[2];
+  auto buffer = std::shared_ptr<uint8_t[]>(new uint8_t[count * s * extra]);
+  MetaImage full;
+  if (!full.Read(path.c_str(), true, buffer.get()))
+    throw inputError(path + ": the data cannot be read; the file or its data file is damaged, " +
+                     "truncated or missing");
+  if (channels > 1) {  // keep channel 0 of each voxel, packed in place
     for (size_t i = 1; i < count; ++i)
-      std::memmove(buffer.get() + i * s, buffer.get() + i * components * s, s);
-    g.warnings.push_back("each voxel holds " + std::to_string(components) +
+      std::memmove(buffer.get() + i * s, buffer.get() + i * channels * s, s);
+    g.warnings.push_back("each voxel holds " + std::to_string(channels) +
                          " values (a vector or list axis); the first is shown");
   }
-  if (volumes > 1)
-    g.warnings.push_back("the file holds " + std::to_string(volumes) +
+  if (extra / channels > 1)
+    g.warnings.push_back("the file holds " + std::to_string(extra / channels) +
                          " volumes (4D: time points, phases or diffusion directions); this is " +
-                         "volume 1 of " + std::to_string(volumes));
+                         "volume 1 of " + std::to_string(extra / channels));
   g.samples = buffer.get();
   g.storage = std::move(buffer);
   return g;
-}
-
-}  // namespace
-
-SampleGrid readMetaImage(const std::string& path) {
-  try {
-    return read(path);
-  } catch (const itk::ExceptionObject& e) {
-    // ITK's text names its source file and line; keep only its description.
-    const std::string what = e.GetDescription();
-    throw inputError(path + ": cannot be read (" + what +
-                     "); the file or its data file is damaged, truncated or missing");
-  } catch (const std::bad_alloc&) {
-    throw inputError(path + ": not enough memory to read this volume");
-  }
 }
 
 }  // namespace voxray::formats

@@ -1,10 +1,10 @@
-// NRRD and MetaImage: shared DICOM series written by ITK's own writers (with an axis
+// NRRD and MetaImage: shared DICOM series written by Teem's and MetaIO's own writers (with an axis
 // reversed, so the file's grid differs from the DICOM's) open as the same volume in space;
 // small headers written here check NRRD spaces other than LPS and MetaImage's TransformMatrix.
 #include <cmath>
 
 #include "format_test_support.h"
-#include "itk_writer.h"
+#include "volume_writer.h"
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/load.h"
 
@@ -22,7 +22,7 @@ void expectRoundTrip(const std::string& series, const std::string& name, int fli
   SCOPED_TRACE(series + " as " + name);
   TempDir dir;
   const Volume truth = importDicom(dicomData(series));
-  test::writeWithItk(truth, dir.file(name), flipAxis, compress);
+  test::writeVolumeFile(truth, dir.file(name), flipAxis, compress);
   const Volume got = loadVolume(dir.file(name));
   // int16 written, int16 read: exact. Physical values written as float32 (a volume with a
   // non-integral rescale) come back within float32 rounding plus half a storage step.
