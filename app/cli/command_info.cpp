@@ -7,6 +7,7 @@
 #include "json_text.h"
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/error.h"
+#include "voxray/io/volume_file.h"
 
 namespace voxray::cli {
 
@@ -19,7 +20,7 @@ Run addInfoCommand(CLI::App& app) {
   return [in, json] {
     std::optional<DicomListing> listing;
 #ifdef VOXRAY_HAS_DICOM  // lean builds (VOXRAY_WITH_DICOM=OFF) read raw data only
-    if (!in->input.empty() && !in->flags.count("raw-dims")) {
+    if (!in->input.empty() && !in->flags.count("raw-dims") && !isVolumeFile(in->input)) {
       try {
         listing = listDicomSeries(in->input);
       } catch (const Error&) {

@@ -16,6 +16,7 @@
 #include "voxray/io/dicom_import.h"
 #define VOXRAY_LOAD_DICOM 1
 #endif
+#include "voxray/io/volume_file.h"
 
 namespace fs = std::filesystem;
 
@@ -47,6 +48,14 @@ Volume loadVolume(const std::string& input, const LoadOptions& options) {
   std::error_code ec;
   if (!fs::exists(input, ec)) throw inputError(input + ": no such file or folder");
   detail::refuseSpecialFile(input);
+  if (isVolumeFile(input)) {
+#if defined(VOXRAY_HAS_FORMATS)
+    return importVolumeFile(input, options);
+#else
+    throw inputError(input + ": this build of Voxray cannot read NIfTI, NRRD or MetaImage (it " +
+                     "was built with VOXRAY_WITH_FORMATS=OFF)");
+#endif
+  }
   if (fs::is_regular_file(input, ec) && !mayBeDicom(input)) {
     throw inputError(input + ": not a DICOM file; " + detail::kRawUsage);
   }

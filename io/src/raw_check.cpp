@@ -130,7 +130,7 @@ std::optional<std::vector<double>> readMiddleRawSlice(const std::string& input,
   raw.slope = 1.0;
   raw.intercept = 0.0;
   std::vector<double> values(count);
-  detail::decodeSamples(bytes.data(), count, raw, values.data());
+  detail::decodeSamples(bytes.data(), count, detail::decodingOf(raw), values.data());
   return values;
 }
 

@@ -204,13 +204,14 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   std::vector<uint8_t> rawCopy(inPlace ? 0 : sliceBytes * static_cast<size_t>(z));
   uint8_t* const raw = inPlace ? reinterpret_cast<uint8_t*>(voxels.data()) : rawCopy.data();
   std::vector<detail::ValueStats> stats(static_cast<size_t>(z));
+  const detail::SampleDecoding decoding = detail::decodingOf(layout);
   std::atomic<int> slicesRead{0};
   parallelFor(
       size_t(z),
       [&](size_t k) {
         uint8_t* slice = raw + k * sliceBytes;
         readExactly(sources[k], slice, sliceBytes);
-        stats[k] = detail::scanSamples(slice, sliceVoxels, layout);
+        stats[k] = detail::scanSamples(slice, sliceVoxels, decoding);
         const int done = ++slicesRead;
         report(0.9 * done / z,
                "Reading slice " + std::to_string(done) + " of " + std::to_string(z));
@@ -220,7 +221,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
 
   detail::ValueStats all;
   for (const auto& s : stats) all.merge(s);
-  const detail::Storage storage = detail::chooseStorage(all, layout);
+  const detail::Storage storage = detail::chooseStorage(all, decoding);
 
   Volume v;
   v.dims = {layout.dims.x, layout.dims.y, z};
@@ -239,7 +240,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   parallelFor(
       size_t(z),
       [&](size_t k) {
-        detail::storeSamples(raw + k * sliceBytes, sliceVoxels, layout, storage,
+        detail::storeSamples(raw + k * sliceBytes, sliceVoxels, decoding, storage,
                              v.voxels.data() + k * sliceVoxels);
       },
       feedback.cancel);

@@ -13,38 +13,39 @@ constexpr double kStoredMin = -32768.0, kStoredMax = 32767.0;
 
 template <class T>
 T load(const uint8_t* p, bool swap) {
-  using Bits = std::conditional_t<sizeof(T) == 2, uint16_t, uint32_t>;
+  using Bits = std::conditional_t<
+      sizeof(T) == 1, uint8_t,
+      std::conditional_t<sizeof(T) == 2, uint16_t,
+                         std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>>>;
   Bits bits;
   std::memcpy(&bits, p, sizeof bits);
   if (swap) {
     if constexpr (sizeof(T) == 2) {
       bits = __builtin_bswap16(bits);
-    } else {
+    } else if constexpr (sizeof(T) == 4) {
       bits = __builtin_bswap32(bits);
+    } else if constexpr (sizeof(T) == 8) {
+      bits = __builtin_bswap64(bits);
     }
   }
   return std::bit_cast<T>(bits);
 }
 
+template <class T, class F>
+void visitAs(const uint8_t* raw, size_t count, const SampleDecoding& d, F& f) {
+  const double a = d.slope, b = d.intercept;
+  for (size_t i = 0; i < count; ++i) f(i, double(load<T>(raw + sizeof(T) * i, d.swap)) * a + b);
+}
+
 // Calls f(i, hu) for every sample; one instantiation per type keeps the loops tight.
 template <class F>
-void visitSamples(const uint8_t* raw, size_t count, const RawLayout& layout, F&& f) {
-  const bool swap = (layout.order == ByteOrder::Big) != (std::endian::native == std::endian::big);
-  const double a = layout.slope, b = layout.intercept;
-  switch (layout.type) {
-    case SampleType::U8:
-      for (size_t i = 0; i < count; ++i) f(i, raw[i] * a + b);
-      break;
-    case SampleType::I16:
-      for (size_t i = 0; i < count; ++i) f(i, load<int16_t>(raw + 2 * i, swap) * a + b);
-      break;
-    case SampleType::U16:
-      for (size_t i = 0; i < count; ++i) f(i, load<uint16_t>(raw + 2 * i, swap) * a + b);
-      break;
-    case SampleType::F32:
-      for (size_t i = 0; i < count; ++i) f(i, double(load<float>(raw + 4 * i, swap)) * a + b);
-      break;
-  }
+void visitSamples(const uint8_t* raw, size_t count, const SampleDecoding& d, F&& f) {
+  using Visit = void (*)(const uint8_t*, size_t, const SampleDecoding&, F&);
+  static constexpr Visit visits[] = {visitAs<uint8_t, F>,  visitAs<int8_t, F>,  // SampleKind order
+                                     visitAs<uint16_t, F>, visitAs<int16_t, F>,
+                                     visitAs<uint32_t, F>, visitAs<int32_t, F>,
+                                     visitAs<float, F>,    visitAs<double, F>};
+  visits[int(d.kind)](raw, count, d, f);
 }
 
 std::string number(double v) {
@@ -55,6 +56,36 @@ std::string number(double v) {
 
 }  // namespace
 
+SampleKind kindOf(SampleType type) {
+  switch (type) {
+    case SampleType::U8:
+      return SampleKind::U8;
+    case SampleType::U16:
+      return SampleKind::U16;
+    case SampleType::F32:
+      return SampleKind::F32;
+    case SampleType::I16:
+      break;
+  }
+  return SampleKind::I16;
+}
+
+SampleDecoding decodingOf(const RawLayout& layout) {
+  SampleDecoding d;
+  d.kind = kindOf(layout.type);
+  d.swap = (layout.order == ByteOrder::Big) != (std::endian::native == std::endian::big);
+  d.slope = layout.slope;
+  d.intercept = layout.intercept;
+  return d;
+}
+
+size_t sampleBytes(SampleKind kind) {
+  static constexpr size_t bytes[] = {1, 1, 2, 2, 4, 4, 4, 8};  // in SampleKind order
+  return bytes[int(kind)];
+}
+
+bool isIntegerKind(SampleKind kind) { return kind != SampleKind::F32 && kind != SampleKind::F64; }
+
 void ValueStats::merge(const ValueStats& o) {
   nonFinite += o.nonFinite;
   integral = integral && o.integral;
@@ -64,10 +95,10 @@ void ValueStats::merge(const ValueStats& o) {
   any = true;
 }
 
-ValueStats scanSamples(const uint8_t* raw, size_t count, const RawLayout& layout) {
+ValueStats scanSamples(const uint8_t* raw, size_t count, const SampleDecoding& decoding) {
   ValueStats s;
   double lo = INFINITY, hi = -INFINITY;
-  visitSamples(raw, count, layout, [&](size_t, double v) {
+  visitSamples(raw, count, decoding, [&](size_t, double v) {
     if (!std::isfinite(v)) {
       ++s.nonFinite;
       return;
@@ -84,7 +115,7 @@ ValueStats scanSamples(const uint8_t* raw, size_t count, const RawLayout& layout
   return s;
 }
 
-Storage chooseStorage(const ValueStats& stats, const RawLayout& layout) {
+Storage chooseStorage(const ValueStats& stats, const SampleDecoding& decoding) {
   Storage st;
   const double lo = stats.any ? stats.min : 0.0, hi = stats.any ? stats.max : 0.0;
   st.fill = lo;  // NaN and infinities become the lowest value: empty space, like air
@@ -96,8 +127,8 @@ Storage chooseStorage(const ValueStats& stats, const RawLayout& layout) {
   // Rounding to whole units is harmless when it cannot merge two raw values: integer
   // samples with |slope| >= 1, or values that are whole already. Otherwise (f32 data, a
   // fine slope) a power-of-two step below 1 keeps the precision the data has.
-  const bool integerSamples = layout.type != SampleType::F32;
-  const bool roundable = stats.integral || (integerSamples && std::abs(layout.slope) >= 1.0);
+  const bool roundable =
+      stats.integral || (isIntegerKind(decoding.kind) && std::abs(decoding.slope) >= 1.0);
   const bool fitsAsIs = std::round(lo) >= kStoredMin && std::round(hi) <= kStoredMax;
   if (roundable && fitsAsIs) return st;
 
@@ -121,19 +152,19 @@ Storage chooseStorage(const ValueStats& stats, const RawLayout& layout) {
   return st;
 }
 
-void decodeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, double* out) {
-  visitSamples(raw, count, layout, [&](size_t i, double v) { out[i] = v; });
+void decodeSamples(const uint8_t* raw, size_t count, const SampleDecoding& decoding, double* out) {
+  visitSamples(raw, count, decoding, [&](size_t i, double v) { out[i] = v; });
 }
 
-void storeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, const Storage& storage,
-                  int16_t* out) {
+void storeSamples(const uint8_t* raw, size_t count, const SampleDecoding& decoding,
+                  const Storage& storage, int16_t* out) {
   const double inverse = 1.0 / storage.slope, offset = storage.intercept;
   const auto toStored = [&](double v) {
     const double s = std::nearbyint((v - offset) * inverse);
     return int16_t(std::clamp(s, kStoredMin, kStoredMax));
   };
   const int16_t fill = toStored(storage.fill);
-  visitSamples(raw, count, layout,
+  visitSamples(raw, count, decoding,
                [&](size_t i, double v) { out[i] = std::isfinite(v) ? toStored(v) : fill; });
 }
 
@@ -141,17 +172,6 @@ void storeSamples(const uint8_t* raw, size_t count, const RawLayout& layout, con
 
 namespace voxray {
 
-size_t sampleBytes(SampleType t) {
-  switch (t) {
-    case SampleType::U8:
-      return 1;
-    case SampleType::I16:
-    case SampleType::U16:
-      return 2;
-    case SampleType::F32:
-      return 4;
-  }
-  return 0;
-}
+size_t sampleBytes(SampleType t) { return detail::sampleBytes(detail::kindOf(t)); }
 
 }  // namespace voxray

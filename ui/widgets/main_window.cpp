@@ -34,6 +34,7 @@
 #include "volume_view.h"
 #include "voxray/engine/input_flags.h"
 #include "voxray/io/sample_volume.h"
+#include "voxray/io/volume_file.h"
 
 namespace voxray::ui {
 
@@ -148,8 +149,10 @@ void MainWindow::buildMenus() {
   file->addAction("Open &DICOM folder…", QKeySequence::Open, this, &MainWindow::openDicomFolder);
   file->addAction("Open &raw volume…", QKeySequence("Ctrl+R"), this, &MainWindow::openRaw);
   file->addAction("Open &sample CT", this, [this] { open(kSampleCtInput, {}); });
+  file->addAction("Open volume &file (NIfTI, NRRD, MetaImage)…", QKeySequence("Ctrl+Shift+O"), this,
+                  &MainWindow::openVolumeFile);
   file->addAction("Open head &phantom", this, [this] { open("", {}); });
-  file->addAction("Open &session…", QKeySequence("Ctrl+Shift+O"), sessions_, &SessionActions::open);
+  file->addAction("Open &session…", QKeySequence("Ctrl+Alt+O"), sessions_, &SessionActions::open);
   file->addAction("Open from &PACS…", QKeySequence("Ctrl+Shift+P"), this,
                   &MainWindow::openFromPacs);
   recentMenu_ = file->addMenu("Open &recent");
@@ -291,6 +294,18 @@ void MainWindow::openRaw() {
   LoadOptions o;
   o.raw = request->second;
   open(request->first.toStdString(), o);
+}
+
+void MainWindow::openVolumeFile() {
+  QSettings s;
+  QStringList patterns;  // the extensions io declares, so a new format needs no edit here
+  for (const auto& e : volumeFileExtensions()) patterns << "*" + QString::fromStdString(e);
+  const QString file = QFileDialog::getOpenFileName(
+      this, "Open volume file", s.value("lastFolder", QDir::homePath()).toString(),
+      "NIfTI, NRRD, MetaImage (" + patterns.join(' ') + ");;All files (*)");
+  if (file.isEmpty()) return;
+  s.setValue("lastFolder", QFileInfo(file).absolutePath());
+  open(file.toStdString(), {});
 }
 
 void MainWindow::exportScreenshot() {

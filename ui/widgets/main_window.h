@@ -71,6 +71,7 @@ class MainWindow : public QMainWindow {
   void openDicomFolder();
   void openRaw();
   void openFromPacs();
+  void openVolumeFile();
   void exportScreenshot();
   void exportMovie();
   void showError(const QString& title, const QString& message);

@@ -1,0 +1,136 @@
+// Damaged and hostile volume files: each gives a voxray::Error (Input) that names the file
+// and says what is wrong, never a crash, a hang or a silently wrong volume.
+#include <filesystem>
+
+#include "format_test_support.h"
+#include "nifti_writer.h"
+#include "voxray/io/load.h"
+
+namespace voxray {
+namespace {
+
+using test::TempDir;
+using testing::HasSubstr;
+
+std::string loadError(const std::string& path) {
+  const std::string m = test::errorMessage([&] { loadVolume(path); });
+  EXPECT_THAT(m, HasSubstr(path));
+  return m;
+}
+
+// Writes a hand-made header (then DATA_BYTES zero bytes) as NAME; returns loadVolume's error.
+std::string headerError(const std::string& name, const std::string& header, size_t dataBytes = 0) {
+  TempDir dir;
+  test::writeHeaderFile(dir.file(name), header, std::vector<uint8_t>(dataBytes));
+  return loadError(dir.file(name));
+}
+
+// Writes SPEC with the NIfTI library's writer; returns loadVolume's error.
+std::string niftiError(const test::NiftiSpec& spec) {
+  TempDir dir;
+  test::writeNifti(dir.file("bad.nii"), spec);
+  return loadError(dir.file("bad.nii"));
+}
+
+void truncate(const std::string& path, size_t keep) {
+  std::vector<uint8_t> bytes = test::readBytes(path);
+  ASSERT_GT(bytes.size(), keep);
+  bytes.resize(keep);
+  test::writeBytes(path, bytes);
+}
+
+test::NiftiSpec bigSpec() {
+  test::NiftiSpec s;
+  s.dims = {64, 64, 16};
+  s.sformCode = 1;
+  return s;
+}
+
+TEST(FormatsBadFiles, TruncatedGzip) {
+  TempDir dir;
+  test::writeNifti(dir.file("t.nii.gz"), bigSpec());
+  truncate(dir.file("t.nii.gz"), test::readBytes(dir.file("t.nii.gz")).size() / 2);
+  EXPECT_THAT(loadError(dir.file("t.nii.gz")), HasSubstr("shorter than the header says"));
+}
+
+TEST(FormatsBadFiles, NiftiDataShorterThanTheHeader) {
+  TempDir dir;
+  test::writeNifti(dir.file("t.nii"), bigSpec());
+  truncate(dir.file("t.nii"), 352 + 1000);
+  EXPECT_THAT(loadError(dir.file("t.nii")), HasSubstr("shorter than the header says"));
+}
+
+TEST(FormatsBadFiles, NrrdDataShorterThanTheHeader) {
+  EXPECT_THAT(headerError("t.nrrd",
+                          "NRRD0004\ntype: short\ndimension: 3\nsizes: 64 64 16\nendian: "
+                          "little\nencoding: raw\n\n",
+                          1000),
+              HasSubstr("the data cannot be read"));
+}
+
+TEST(FormatsBadFiles, MetaImageDataFileMissing) {
+  EXPECT_THAT(headerError("t.mhd",
+                          "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\n"
+                          "ElementType = MET_SHORT\nElementDataFile = gone.raw\n"),
+              HasSubstr("its data file gone.raw is missing"));
+}
+
+TEST(FormatsBadFiles, NanSpacing) {
+  test::NiftiSpec s;
+  s.sformCode = 1;
+  s.sform[1][1] = std::nan("");
+  EXPECT_THAT(niftiError(s), HasSubstr("not a number"));
+  EXPECT_THAT(headerError("n.nrrd",
+                          "NRRD0004\ntype: short\ndimension: 3\nspace: left-posterior-superior\n"
+                          "sizes: 4 3 2\nspace directions: (nan,0,0) (0,1,0) (0,0,1)\n"
+                          "endian: little\nencoding: raw\n\n",
+                          48),
+              HasSubstr("not a readable NRRD file"));  // Teem: "existance of ... coefficients"
+}
+
+TEST(FormatsBadFiles, ZeroDirectionMatrix) {
+  test::NiftiSpec s;
+  s.sformCode = 1;
+  for (auto& row : s.sform)
+    for (double& x : row) x = 0;
+  EXPECT_THAT(niftiError(s), HasSubstr("zero direction or spacing"));
+  EXPECT_THAT(headerError("z.mha",
+                          "ObjectType = Image\nNDims = 3\nBinaryData = True\n"
+                          "TransformMatrix = 0 0 0 0 0 0 0 0 0\nDimSize = 4 3 2\n"
+                          "ElementType = MET_SHORT\nElementDataFile = LOCAL\n",
+                          48),
+              HasSubstr("zero direction or spacing"));
+}
+
+TEST(FormatsBadFiles, DimsOverflowingSizeT) {
+  TempDir dir;
+  EXPECT_THAT(headerError("o.nrrd",
+                          "NRRD0004\ntype: short\ndimension: 3\nsizes: 4294967296 "
+                          "4294967296 4294967296\nendian: little\nencoding: raw\n\n"),
+              HasSubstr("too large"));  // Teem: "too large to be represented in type size_t"
+  // NIfTI-1 dims are int16: 32767^3 voxels is more than Voxray holds.
+  test::writeNifti(dir.file("o.nii"), test::NiftiSpec{});
+  std::vector<uint8_t> bytes = test::readBytes(dir.file("o.nii"));
+  for (size_t at : {42u, 44u, 46u}) bytes[at] = 0xff, bytes[at + 1] = 0x7f;
+  test::writeBytes(dir.file("o.nii"), bytes);
+  EXPECT_THAT(loadError(dir.file("o.nii")), HasSubstr("more voxels than Voxray can hold"));
+}
+
+TEST(FormatsBadFiles, EmptyFileAndFolder) {
+  TempDir dir;
+  test::writeBytes(dir.file("e.nii.gz"), {});
+  EXPECT_THAT(loadError(dir.file("e.nii.gz")), HasSubstr("empty"));
+  std::filesystem::create_directory(dir.file("x.nii"));
+  EXPECT_THAT(loadError(dir.file("x.nii")), HasSubstr("is a folder"));
+}
+
+TEST(FormatsBadFiles, NotNiftiAtAll) {
+  TempDir dir;
+  test::writeBytes(dir.file("junk.nii"), std::vector<uint8_t>(400, 'x'));
+  EXPECT_THAT(loadError(dir.file("junk.nii")), HasSubstr("not a readable NIfTI file"));
+  test::writeBytes(dir.file("junk.nrrd"), std::vector<uint8_t>(400, 'x'));
+  EXPECT_THAT(loadError(dir.file("junk.nrrd")), HasSubstr("not a readable NRRD file"));
+}
+
+}  // namespace
+}  // namespace voxray
