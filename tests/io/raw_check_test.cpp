@@ -13,14 +13,6 @@ using test::TempDir;
 
 const std::string kCtHead = dataPath("stanford/CThead");
 
-RawLayout ctHeadLayout() {
-  RawLayout l;
-  l.dims = {256, 256, 0};
-  l.type = SampleType::I16;
-  l.order = ByteOrder::Big;
-  return l;
-}
-
 std::string zeros(const TempDir& dir, const std::string& name, size_t n) {
   test::writeBytes(dir.file(name), std::vector<uint8_t>(n, 0));
   return dir.file(name);
@@ -38,7 +30,7 @@ bool importerAccepts(const std::string& input, const RawLayout& l) {
 
 TEST(RawSizeCheck, SaysByHowManyBytesAndSlicesAFileIsOff) {
   TempDir dir;
-  RawLayout l = ctHeadLayout();
+  RawLayout l = test::ctHeadFolderLayout();
   l.dims.z = 4;  // 4 slices of 131072 bytes; the file holds 3 and a half
   std::string file = zeros(dir, "size_check.raw", 131072 * 3 + 65536);
   RawSizeCheck c = checkRawSize(file, l);
@@ -58,7 +50,7 @@ TEST(RawSizeCheck, SaysByHowManyBytesAndSlicesAFileIsOff) {
 }
 
 TEST(RawSizeCheck, AFolderWithOtherThanZFilesDoesNotMatch) {
-  RawLayout l = ctHeadLayout();
+  RawLayout l = test::ctHeadFolderLayout();
   EXPECT_TRUE(checkRawSize(kCtHead, l).matches());
   l.dims.z = 110;
   RawSizeCheck c = checkRawSize(kCtHead, l);
@@ -130,7 +122,7 @@ TEST(RawSizeCheck, AgreesWithTheImporterOnEveryLayout) {
 }
 
 TEST(RawMiddleSlice, ReadsTheMiddleSliceBeforeTheRescale) {
-  RawLayout l = ctHeadLayout();
+  RawLayout l = test::ctHeadFolderLayout();
   l.slope = 2.0;  // must not apply: the preview shows the raw values
   auto values = readMiddleRawSlice(kCtHead, l);
   ASSERT_TRUE(values.has_value());
@@ -140,7 +132,7 @@ TEST(RawMiddleSlice, ReadsTheMiddleSliceBeforeTheRescale) {
   EXPECT_GE(*lo, 0.0);
   EXPECT_LE(*hi, 3272.0);
   EXPECT_GT(*hi, 1000.0);
-  Volume v = importRaw(kCtHead, ctHeadLayout());
+  Volume v = importRaw(kCtHead, test::ctHeadFolderLayout());
   const int mid = v.dims.z / 2;
   EXPECT_EQ((*values)[size_t(128) * 256 + 100], double(v.at(100, 128, mid)));
   l.dims.x = 257;  // longer than a slice file

@@ -12,12 +12,23 @@
 #include <vector>
 
 #include "voxray/io/error.h"
+#include "voxray/io/raw_import.h"
 #include "voxray/io/volume.h"
 
 namespace voxray::test {
 
 inline std::string dataPath(const std::string& relative) {
   return std::string(VOXRAY_DATA_DIR) + "/" + relative;
+}
+
+// The Stanford CThead slice folder as its layout is known: 256 x 256 int16 big-endian,
+// Z = 0 (every file).
+inline RawLayout ctHeadFolderLayout() {
+  RawLayout l;
+  l.dims = {256, 256, 0};
+  l.type = SampleType::I16;
+  l.order = ByteOrder::Big;
+  return l;
 }
 
 // A fresh folder under the system temp folder, removed with everything in it at the end.

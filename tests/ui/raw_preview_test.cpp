@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "../io/test_support.h"
 #include "raw_preview.h"
 #include "voxray/io/orientation.h"
 
@@ -12,20 +13,12 @@ using namespace voxray::ui;
 
 namespace {
 
-const std::string kCtHead = std::string(VOXRAY_DATA_DIR) + "/stanford/CThead";
-
-RawLayout ctHeadLayout() {
-  RawLayout l;
-  l.dims = {256, 256, 0};
-  l.type = SampleType::I16;
-  l.order = ByteOrder::Big;
-  return l;
-}
+const std::string kCtHead = voxray::test::dataPath("stanford/CThead");
 
 }  // namespace
 
 TEST(RawPreview, ValueRangeIsRescaledAndHintsWhenItIsNotHu) {
-  RawLayout l = ctHeadLayout();
+  RawLayout l = voxray::test::ctHeadFolderLayout();
   auto p = previewRawSlice(kCtHead, l);
   ASSERT_TRUE(p.has_value());
   EXPECT_EQ(p->image.width, 256);
