@@ -2,7 +2,7 @@
 // thick slices between blocks (nearest) and a ramp (trilinear), at the physical aspect.
 // Oblique and thick-slab MPR: a crosshair handle dragged by a known angle turns the other
 // planes by it, the panel's slab settings and reset drive the views, and the views show
-// what the models' planes say, pixel for pixel.
+// what the models' planes say, pixel for pixel (a slab once its background render arrives).
 #include <cmath>
 #include <set>
 
@@ -156,8 +156,15 @@ class SliceInterpTest : public QObject {
     mode->setCurrentIndex(int(SlabMode::MinIp));
     QCOMPARE(m.crosshair.slab(Orientation::Axial).thicknessMm, 20.0);
     QCOMPARE(m.crosshair.slab(Orientation::Axial).mode, SlabMode::MinIp);
+    // The slab renders in the background: both changes returned before any slab image, the
+    // thin slice stands in, and the image that arrives is the newest request's (MinIP).
+    QVERIFY(axial.slabPending());
+    QCOMPARE(axial.sliceImage(), thin);
+    QTRY_VERIFY_WITH_TIMEOUT(!axial.slabPending(), 30000);
     QCOMPARE(axial.sliceImage(), expectedImage(m, axial));
     QVERIFY(axial.sliceImage() != thin);
+    QTest::qWait(200);  // a stale MIP image arriving late would replace it: none does
+    QCOMPARE(axial.sliceImage(), expectedImage(m, axial));
     thickness->setValue(0.0);  // thin again: today's slice
     QCOMPARE(axial.sliceImage(), thin);
 

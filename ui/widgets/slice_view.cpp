@@ -6,6 +6,7 @@
 #include <QPainter>
 #include <QWheelEvent>
 
+#include "gui_post.h"
 #include "measure_overlay.h"
 #include "qt_image.h"
 #include "slice_clip.h"
@@ -22,7 +23,13 @@ constexpr double kEdgePickPixels = 6.0;
 
 SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crosshair,
                      WindowLevelModel& wl, RenderStateModel& state, QWidget* parent)
-    : QWidget(parent), orientation_(o), doc_(doc), crosshair_(crosshair), wl_(wl), state_(state) {
+    : QWidget(parent),
+      orientation_(o),
+      doc_(doc),
+      crosshair_(crosshair),
+      wl_(wl),
+      state_(state),
+      slabs_([this](Image image) { slabArrived(std::move(image)); }, postTo(this)) {
   setFocusPolicy(Qt::StrongFocus);
   setMouseTracking(true);
   setMinimumSize(120, 120);
@@ -136,6 +143,8 @@ void SliceView::rebuild() {
   if (doc_.empty()) {
     image_ = {};
     shown_.reset();
+    wanted_.reset();
+    slabs_.drop();
   } else {
     const Volume& v = *doc_.volume();
     axes_ = sliceAxes(v.direction, orientation_);
@@ -143,11 +152,39 @@ void SliceView::rebuild() {
     // (resampling a large slice takes tens of milliseconds).
     const Shown now{viewPlane(v, axes_, crosshair_.centre(), crosshair_.rotation(orientation_)),
                     crosshair_.slab(orientation_), wl_.value(), state_.sliceInterp()};
-    if (!shown_ || !now.sameAs(*shown_)) {
+    if (shown_ && now.sameAs(*shown_)) {
+      wanted_.reset();  // back to what is shown: a slab still rendering is stale
+      slabs_.drop();
+    } else if (now.slab.thicknessMm > 0) {
+      // A slab takes up to a second: render it in the background, newest request wins.
+      if (!wanted_ || !now.sameAs(*wanted_)) {
+        wanted_ = now;
+        slabs_.request({doc_.volume(), now.plane, now.wl, now.interp, now.slab});
+      }
+      // Meanwhile the last slab image stays; with none (a slab just switched on, a new
+      // volume, another size) the thin slice stands in.
+      if (!shown_ || shown_->slab.thicknessMm == 0 || shown_->plane.size != now.plane.size) {
+        Shown thin = now;
+        thin.slab = {};
+        if (!shown_ || !thin.sameAs(*shown_)) {
+          image_ = toQImage(renderPlane(v, thin.plane, thin.wl, thin.interp));
+          shown_ = thin;
+        }
+      }
+    } else {
+      wanted_.reset();
+      slabs_.drop();
       image_ = toQImage(renderPlane(v, now.plane, now.wl, now.interp, now.slab));
       shown_ = now;
     }
   }
+  update();
+}
+
+void SliceView::slabArrived(Image image) {
+  if (!wanted_) return;
+  image_ = toQImage(image);
+  shown_ = std::exchange(wanted_, std::nullopt);
   update();
 }
 

@@ -16,6 +16,7 @@
 #include "crosshair_model.h"
 #include "measurement_model.h"
 #include "render_state_model.h"
+#include "slab_render.h"
 #include "slice_geometry.h"
 #include "slice_overlay.h"
 #include "volume_document.h"
@@ -33,8 +34,10 @@ class SliceView : public QWidget {
   Orientation orientation() const { return orientation_; }
   const SliceAxes& axes() const { return axes_; }
   // W/L applied, square pixels of the finer in-plane spacing (renderSlice; renderPlane of
-  // viewPlane when turned or a slab).
+  // viewPlane when turned or a slab). A slab renders in the background (SlabRenderer): until
+  // it arrives the view shows the last slab image, or the thin slice when it has none.
   const QImage& sliceImage() const { return image_; }
+  bool slabPending() const { return wanted_.has_value(); }
   // The crosshair's two lines on screen and the handles that turn them (widget pixels).
   std::array<glm::dvec2, 2> crosshairTraces() const;
   std::array<QPointF, 4> rotationHandles() const;
@@ -69,6 +72,7 @@ class SliceView : public QWidget {
  private:
   enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan, Handle, Rotate };
   void rebuild();  // new volume, slice or window: redraw the slice image
+  void slabArrived(Image image);
   QRectF sliceRect() const;
   int pickClipEdge(QPointF widget) const;  // face number, or -1
   bool onRotationHandle(QPointF widget) const;
@@ -102,6 +106,7 @@ class SliceView : public QWidget {
     }
   };
   std::optional<Shown> shown_;
+  std::optional<Shown> wanted_;  // the slab image asked of slabs_ and not yet shown
   double zoom_ = 1.0;
   QPointF pan_;
   Drag drag_ = Drag::None;
@@ -117,6 +122,7 @@ class SliceView : public QWidget {
   int angleToFinish_ = 0;  // an angle with its first arm drawn, waiting for its end point
   int measureConnection_ = 0;
   int docConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0, stateConnection_ = 0;
+  SlabRenderer slabs_;  // last member: its thread stops before the rest goes
 };
 
 }  // namespace voxray::ui
