@@ -1,6 +1,7 @@
 #include "voxray/engine/session.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iterator>
 
@@ -19,6 +20,7 @@ using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
 constexpr const char* kVersionKey = "voxray-session";
+constexpr std::array<const char*, 3> kViewNames = {"axial", "coronal", "sagittal"};
 constexpr int kMaxDepth = 256;
 
 // Reads one session's JSON, naming the file and the field in every error, and collecting
@@ -61,6 +63,13 @@ class Reader {
       if (!n.is_number_integer()) fail(field, want);
       out.push_back(n.get<int>());
     }
+    return out;
+  }
+  std::vector<double> numbers(const Json& v, const std::string& field, size_t count) const {
+    const std::string want = "must be an array of " + std::to_string(count) + " numbers";
+    if (!v.is_array() || v.size() != count) fail(field, want);
+    std::vector<double> out;
+    for (const Json& n : v) out.push_back(number(n, field));
     return out;
   }
   // A declared value as its text: strings as they are, numbers and booleans as a hand
@@ -180,6 +189,66 @@ void readRender(Reader& r, const Json& root, RenderParams& p) {
   r.warnUnknown(render, "render.", known);
 }
 
+// The views that are turned or thick, by name; absent views are acquisition planes, thin.
+Json viewsJson(const std::array<SessionView, 3>& views) {
+  Json j = Json::object();
+  for (size_t o = 0; o < views.size(); ++o) {
+    const SessionView& v = views[o];
+    if (v.rotation == glm::dmat3(1.0) && v.slab.thicknessMm == 0.0) continue;
+    Json rows = Json::array();  // row by row, as the matrix is written on paper
+    for (int r = 0; r < 3; ++r)
+      rows.push_back({v.rotation[0][r], v.rotation[1][r], v.rotation[2][r]});
+    j[kViewNames[o]] = {
+        {"rotation", rows}, {"slab-mm", v.slab.thicknessMm}, {"slab-mode", toString(v.slab.mode)}};
+  }
+  return j;
+}
+
+void readViews(Reader& r, const Json& slices, Session& s) {
+  if (!slices.contains("views")) return;
+  const Json& views = r.object(slices, "slices.views", "views");
+  r.warnUnknown(views, "slices.views.", {kViewNames.begin(), kViewNames.end()});
+  for (size_t o = 0; o < kViewNames.size(); ++o) {
+    if (!views.contains(kViewNames[o])) continue;
+    const std::string field = std::string("slices.views.") + kViewNames[o];
+    const Json& view = r.object(views, field, kViewNames[o]);
+    r.warnUnknown(view, field + ".", {"rotation", "slab-mm", "slab-mode"});
+    SessionView& v = s.views[o];
+    if (view.contains("rotation")) {
+      const Json& rows = view.at("rotation");
+      const std::string want = "must be 3 rows of 3 numbers: a rotation";
+      if (!rows.is_array() || rows.size() != 3) r.fail(field + ".rotation", want);
+      for (int row = 0; row < 3; ++row) {
+        auto n = r.numbers(rows.at(size_t(row)), field + ".rotation", 3);
+        for (int col = 0; col < 3; ++col) v.rotation[col][row] = n[size_t(col)];
+      }
+      // A hand-edited matrix that is no rotation would shear the planes: refuse it.
+      const glm::dmat3 error = glm::transpose(v.rotation) * v.rotation - glm::dmat3(1.0);
+      double worst = 0.0;
+      for (int c = 0; c < 3; ++c)
+        for (int rr = 0; rr < 3; ++rr) worst = std::max(worst, std::abs(error[c][rr]));
+      if (!(worst < 1e-6) || glm::determinant(v.rotation) < 0.0)
+        r.fail(field + ".rotation", "is not a rotation (orthonormal, determinant 1)");
+    }
+    if (view.contains("slab-mm")) {
+      v.slab.thicknessMm = r.number(view.at("slab-mm"), field + ".slab-mm");
+      if (!(v.slab.thicknessMm >= 0.0) || !std::isfinite(v.slab.thicknessMm))
+        r.fail(field + ".slab-mm", "must be 0 (a thin slice) or more millimetres");
+    }
+    if (view.contains("slab-mode")) {
+      try {
+        v.slab.mode = parseSlabMode(r.text(view.at("slab-mode"), field + ".slab-mode"));
+      } catch (const Error& e) {
+        r.fail(field + ".slab-mode", std::string("is wrong: ") + e.what());
+      }
+    }
+  }
+  if (slices.contains("centre")) {
+    auto c = r.numbers(slices.at("centre"), "slices.centre", 3);
+    s.centre = glm::dvec3(c[0], c[1], c[2]);
+  }
+}
+
 }  // namespace
 
 const std::vector<std::string>& sessionLayouts() {
@@ -199,6 +268,8 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
                  {"window-level", s.windowLevel},
                  {"crosshair", {s.crosshair.x, s.crosshair.y, s.crosshair.z}},
                  {"interp", toString(s.sliceInterp)}};
+  if (s.centre) j["slices"]["centre"] = {s.centre->x, s.centre->y, s.centre->z};
+  if (Json views = viewsJson(s.views); !views.empty()) j["slices"]["views"] = views;
   j["layout"] = s.layout;
   try {
     j["measurements"] = Json::parse(s.measurements);
@@ -258,7 +329,8 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   s.resolution = {res[0], res[1]};
 
   const Json& slices = r.object(root, "slices", "slices");
-  r.warnUnknown(slices, "slices.", {"window-width", "window-level", "crosshair", "interp"});
+  r.warnUnknown(slices, "slices.",
+                {"window-width", "window-level", "crosshair", "interp", "centre", "views"});
   s.windowWidth =
       r.number(r.require(slices, "slices.window-width", "window-width"), "slices.window-width");
   if (!(s.windowWidth > 0.0)) r.fail("slices.window-width", "must be greater than 0");
@@ -272,6 +344,7 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   } catch (const Error& e) {
     r.fail("slices.interp", std::string("is wrong: ") + e.what());
   }
+  readViews(r, slices, s);
 
   s.layout = r.text(r.require(root, "layout", "layout"), "layout");
   const auto& layouts = sessionLayouts();

@@ -3,6 +3,7 @@
 // without being allowed to.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -331,4 +332,58 @@ TEST(Session, AnExistingFileIsReplacedOnlyWhenAllowed) {
   EXPECT_EQ(readSessionFile(file).session.layout, "grid");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.root), fs::directory_iterator()), 1)
       << "no temporary file is left";
+}
+
+TEST(Session, TurnedAndSlabViewsRoundTripAndAbsentMeansAcquisitionPlanesThin) {
+  Session s;
+  const double a = 1.0 / 3.0;  // radians about the S axis, then a tilt about L
+  const glm::dmat3 aboutS(glm::dvec3(std::cos(a), std::sin(a), 0),
+                          glm::dvec3(-std::sin(a), std::cos(a), 0), glm::dvec3(0, 0, 1));
+  const glm::dmat3 aboutL(glm::dvec3(1, 0, 0), glm::dvec3(0, std::cos(0.2), std::sin(0.2)),
+                          glm::dvec3(0, -std::sin(0.2), std::cos(0.2)));
+  s.views[0].rotation = aboutS;
+  s.views[1].slab = {12.5, SlabMode::MinIp};
+  s.views[2] = {aboutL * aboutS, {20.0 / 3.0, SlabMode::Mean}};
+  s.centre = glm::dvec3(12.25, 34.0 / 3.0, 56.125);
+  const Json j = jsonOf(s, "s.json");
+  const Session r = sessionFromJson(j.dump(), "s.json").session;
+  for (size_t o = 0; o < 3; ++o) {
+    EXPECT_EQ(r.views[o].rotation, s.views[o].rotation) << o;  // exactly: the same planes
+    EXPECT_EQ(r.views[o].slab.thicknessMm, s.views[o].slab.thicknessMm) << o;
+    EXPECT_EQ(r.views[o].slab.mode, s.views[o].slab.mode) << o;
+  }
+  ASSERT_TRUE(r.centre.has_value());
+  EXPECT_EQ(*r.centre, *s.centre);
+  EXPECT_EQ(j["slices"]["views"]["coronal"]["slab-mode"], "minip");
+
+  // Untouched views are not written, and a session without them (older files) reads as the
+  // acquisition planes, thin, the crosshair on its voxel.
+  const Json plain = jsonOf(Session{}, "s.json");
+  EXPECT_FALSE(plain["slices"].contains("views"));
+  EXPECT_FALSE(plain["slices"].contains("centre"));
+  const Session p = sessionFromJson(plain.dump(), "s.json").session;
+  EXPECT_FALSE(p.centre.has_value());
+  for (const SessionView& v : p.views) {
+    EXPECT_EQ(v.rotation, glm::dmat3(1.0));
+    EXPECT_EQ(v.slab.thicknessMm, 0.0);
+  }
+
+  auto withView = [&](const Json& view) {
+    Json bad = plain;
+    bad["slices"]["views"]["axial"] = view;
+    return readError(bad);
+  };
+  EXPECT_NE(withView({{"rotation", {{1, 0, 0}, {0, 1, 0}, {0, 0.5, 1}}}})
+                .find("field 'slices.views.axial.rotation' is not a rotation"),
+            std::string::npos);
+  EXPECT_NE(withView({{"rotation", {{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}})  // a mirror
+                .find("field 'slices.views.axial.rotation' is not a rotation"),
+            std::string::npos);
+  EXPECT_NE(withView({{"rotation", {{1, 0}, {0, 1}}}})
+                .find("field 'slices.views.axial.rotation' must be 3 rows of 3 numbers"),
+            std::string::npos);
+  EXPECT_NE(withView({{"slab-mm", -2}}).find("field 'slices.views.axial.slab-mm' must be 0"),
+            std::string::npos);
+  EXPECT_NE(withView({{"slab-mode", "max"}}).find("field 'slices.views.axial.slab-mode' is wrong"),
+            std::string::npos);
 }

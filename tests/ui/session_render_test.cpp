@@ -150,6 +150,12 @@ TEST(SessionRender, ReopenedSessionRestoresTheModelsState) {
   q.resolution = {320, 240};
   m.render.setQuality(q);
   m.render.setSliceInterp(Interp::Nearest);
+  // Oblique and slab MPR: the axial view turned (the other two planes turn), a coronal slab.
+  m.crosshair.rotateInView(sliceAxes(m.document.volume()->direction, Orientation::Axial), 0.3);
+  m.crosshair.clickInView(sliceAxes(m.document.volume()->direction, Orientation::Coronal), 101.5,
+                          33.25);  // off voxel centres, as a turned crosshair moves
+  m.crosshair.setSlab(Orientation::Coronal, {15.0, SlabMode::MinIp});
+  const glm::dvec3 centre = m.crosshair.centre();
   const std::string file = dir.file("a.json");
   writeSessionFile(file, sessionFromModels(m, {640, 480}, "coronal"), false);
 
@@ -163,7 +169,14 @@ TEST(SessionRender, ReopenedSessionRestoresTheModelsState) {
   EXPECT_EQ(reopened.render.sliceInterp(), Interp::Nearest);
   EXPECT_EQ(reopened.windowLevel.value().width, 1800.0);
   EXPECT_EQ(reopened.windowLevel.value().level, 400.0);
-  EXPECT_EQ(reopened.crosshair.voxel(), glm::ivec3(100, 140, 60));
+  EXPECT_EQ(reopened.crosshair.centre(), centre);
+  for (Orientation o : {Orientation::Axial, Orientation::Coronal, Orientation::Sagittal}) {
+    EXPECT_EQ(reopened.crosshair.rotation(o), m.crosshair.rotation(o)) << toString(o);
+    EXPECT_EQ(reopened.crosshair.slab(o).thicknessMm, m.crosshair.slab(o).thicknessMm);
+    EXPECT_EQ(reopened.crosshair.slab(o).mode, m.crosshair.slab(o).mode);
+  }
+  EXPECT_TRUE(reopened.crosshair.rotated());
+  EXPECT_EQ(reopened.crosshair.slab(Orientation::Coronal).mode, SlabMode::MinIp);
   EXPECT_EQ(reopened.source.path, fs::absolute(kCtHead).lexically_normal().string());
   EXPECT_EQ(reopened.source.flags, kCtHeadFlags);
   EXPECT_EQ(measurementsToJson(reopened.measurements), measurementsToJson(m.measurements));

@@ -86,6 +86,14 @@ void CrosshairModel::resetRotation() {
   changed.notify();
 }
 
+void CrosshairModel::setPlanes(const glm::dvec3& centre,
+                               const std::array<glm::dmat3, 3>& rotations) {
+  const bool turned = rotations != rotation_;
+  rotation_ = rotations;
+  if (turned) centre_ = glm::dvec3(-1.0);  // moveTo notifies even if the centre stays
+  moveTo(centre);
+}
+
 void CrosshairModel::setSlab(Orientation o, const Slab& slab) {
   Slab s = slab;
   if (!(s.thicknessMm > 0.0)) s.thicknessMm = 0.0;  // NaN or negative: a thin slice

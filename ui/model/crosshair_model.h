@@ -51,6 +51,8 @@ class CrosshairModel {
   void rotateInView(const SliceAxes& axes, double angleRad);
   // Back to the acquisition planes, the crosshair on the nearest voxel centre.
   void resetRotation();
+  // The three views' rotations and the crosshair at once (an opened session): one change.
+  void setPlanes(const glm::dvec3& centre, const std::array<glm::dmat3, 3>& rotations);
 
   const Slab& slab(Orientation o) const { return slab_[size_t(o)]; }
   void setSlab(Orientation o, const Slab& slab);

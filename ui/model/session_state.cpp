@@ -17,6 +17,9 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   s.windowWidth = m.windowLevel.value().width;
   s.windowLevel = m.windowLevel.value().level;
   s.crosshair = m.crosshair.voxel();
+  if (m.crosshair.rotated()) s.centre = m.crosshair.centre();
+  for (size_t o = 0; o < s.views.size(); ++o)
+    s.views[o] = {m.crosshair.rotation(Orientation(o)), m.crosshair.slab(Orientation(o))};
   s.sliceInterp = m.render.sliceInterp();
   s.layout = layout;
   s.measurements = measurementsToJson(m.measurements).at("items").dump();
@@ -48,7 +51,12 @@ void applySession(AppModels& m, const Session& s) {
   });
   m.render.setSliceInterp(s.sliceInterp);
   m.windowLevel.set({s.windowWidth, s.windowLevel});
-  m.crosshair.setVoxel(s.crosshair);
+  std::array<glm::dmat3, 3> rotations;
+  for (size_t o = 0; o < s.views.size(); ++o) {
+    rotations[o] = s.views[o].rotation;
+    m.crosshair.setSlab(Orientation(o), s.views[o].slab);
+  }
+  m.crosshair.setPlanes(s.centre.value_or(glm::dvec3(s.crosshair)), rotations);
 }
 
 bool isSessionPath(const std::string& path) {

@@ -6,12 +6,15 @@
 // Render parameters are written and read through renderParamSpecs() (the one declaration),
 // the input's raw layout and series through inputFlagSpecs(): a parameter added there is
 // saved without a change here. Measurements are kept as JSON text, untouched.
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "voxray/engine/plane_sampler.h"
 #include "voxray/engine/render_params.h"
 
 namespace voxray {
@@ -27,6 +30,12 @@ struct SessionInput {
 // The slice views' layout names, in the workstation's grid order ("grid": none maximised).
 const std::vector<std::string>& sessionLayouts();
 
+// One slice view's plane (axial, coronal, sagittal): turned about the crosshair, and its slab.
+struct SessionView {
+  glm::dmat3 rotation{1.0};  // LPS, a proper rotation; the identity: the acquisition plane
+  Slab slab;                 // thickness 0: a thin slice
+};
+
 struct Session {
   SessionInput input;
   // Every render parameter; "size" is the 3D view's size in pixels when it was saved.
@@ -36,6 +45,10 @@ struct Session {
   double windowWidth = 400.0;              // the slice views' window/level (HU for CT)
   double windowLevel = 40.0;
   glm::ivec3 crosshair{0};  // the slice views' voxel (i, j, k): the three slice positions
+  // While a view is turned the crosshair moves off voxel centres: its continuous voxel
+  // position (none: the crosshair voxel). Optional in the file, as are the views.
+  std::optional<glm::dvec3> centre;
+  std::array<SessionView, 3> views{};  // axial, coronal, sagittal
   Interp sliceInterp = Interp::Linear;
   std::string layout = "grid";      // one of sessionLayouts()
   std::string measurements = "[]";  // a JSON array owned by the measuring tools, kept as read
