@@ -136,6 +136,25 @@ class ExportLoadTest : public QObject {
         0);
   }
 
+  // A slab renders in the background (SlabRenderer): an export asked for while it renders
+  // waits for it and writes the slab, not the thin slice standing in.
+  void exportWaitsForASlabStillRendering() {
+    auto dialog = makeDialog();
+    dialog->findChild<QComboBox*>("exportWhat")->setCurrentIndex(1);  // axial
+    SliceView& axial = window_->sliceView(0);
+    const QImage thin = axial.grab().toImage().convertToFormat(QImage::Format_RGB32);
+    models_->crosshair.setSlab(Orientation::Axial, {30.0, SlabMode::Mip});
+    QVERIFY(axial.slabPending());
+    QVERIFY(dialog->exportTo(tempPath("slab.png")));
+    QVERIFY(!axial.slabPending());
+    const QImage slab = toQImage(readImage(tempPath("slab.png").toStdString()))
+                            .convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(differingPixels(slab, axial.grab().toImage().convertToFormat(QImage::Format_RGB32)),
+             0);
+    QVERIFY(differingPixels(slab, thin) > 100);  // the MIP brightens the head's slice
+    models_->crosshair.setSlab(Orientation::Axial, {});
+  }
+
   // Patient and study text: off until the user asks (View menu), then in every view but
   // in no export unless ticked in the export dialog.
   void studyTextIsShownOnRequestAndExportedOnlyWhenTicked() {

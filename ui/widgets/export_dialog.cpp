@@ -21,7 +21,16 @@ namespace voxray::ui {
 
 namespace {
 constexpr int kExportTimeoutMs = 120000;  // a 4K frame through PoCL on two cores is slow
+
+// An export shows what the view was asked to show: a slab still rendering is waited for.
+void waitForSlab(SliceView* s) {
+  if (!s->slabPending()) return;
+  QEventLoop loop;
+  QObject::connect(s, &SliceView::slabShown, &loop, &QEventLoop::quit);
+  QTimer::singleShot(kExportTimeoutMs, &loop, &QEventLoop::quit);
+  loop.exec();
 }
+}  // namespace
 
 ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeView& view,
                            const std::array<SliceView*, 3>& slices)
@@ -117,6 +126,7 @@ QImage ExportDialog::capture() {
   if (what == 0) return view_.lastFrame();  // the rendered pixels, no overlays
   const bool hideStudy = !studyText_->isChecked();
   for (SliceView* s : slices_) {
+    waitForSlab(s);
     s->setAnnotations(annotate);
     s->setStudyTextHidden(hideStudy);
     s->setExporting(true);  // measurements only when the user asked for them in exports

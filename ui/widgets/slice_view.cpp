@@ -186,6 +186,7 @@ void SliceView::slabArrived(Image image) {
   image_ = toQImage(image);
   shown_ = std::exchange(wanted_, std::nullopt);
   update();
+  emit slabShown();
 }
 
 QRectF SliceView::sliceRect() const {

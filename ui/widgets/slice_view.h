@@ -58,6 +58,8 @@ class SliceView : public QWidget {
   // A clip-edge drag moved the box (the 3D view should render cheap drag frames), and ended.
   void clipDragged();
   void clipDragEnded();
+  // A slab image rendered in the background is now shown (slabPending() is false).
+  void slabShown();
 
  protected:
   void paintEvent(QPaintEvent*) override;
