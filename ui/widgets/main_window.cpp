@@ -278,6 +278,11 @@ void MainWindow::openFromPacs() {
   if (dialog.exec() != QDialog::Accepted) return;
   LoadOptions options;
   options.series = dialog.chosen().seriesUid;
+  if (options.series.empty()) {  // a whole study: its series go to the picker
+    auto choice = pickSeries(this, dialog.chosen().folder);
+    if (!choice) return;
+    options = *choice;
+  }
   open(dialog.chosen().folder, options);
 #endif
 }
