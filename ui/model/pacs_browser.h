@@ -27,6 +27,7 @@ struct PacsBrowserEvents {
   std::function<void(const CachedSeries&)> retrieved;
   std::function<void(const std::string& message)> failed;
   std::function<void()> cancelled;
+  std::function<void()> sent;  // send(): the node took every file
 };
 
 class PacsBrowser {
@@ -49,6 +50,8 @@ class PacsBrowser {
   // Every series of the study into the cache (progress over the whole study), then one
   // folder showing them all (PacsCache::studyFolder).
   void retrieveStudy(const std::string& node, const std::string& studyUid);
+  // Sends FILES (C-STORE; STOW-RS): the screenshot export's "Send to". Failure: failed().
+  void send(const std::string& node, std::vector<std::string> files);
   void cancel() { task_.cancel(); }
   bool busy() const { return busy_; }
 

@@ -315,6 +315,7 @@ void MainWindow::openVolumeFile() {
 
 void MainWindow::exportScreenshot() {
   ExportDialog dialog(this, *scheduler_, *volumeView_, slices_);
+  if (models_.document.volume()) dialog.setStudy(models_.document.volume()->study);
   if (errorSink_) dialog.setErrorSink([this](const QString& m) { errorSink_("Export failed", m); });
   dialog.exec();
 }
