@@ -27,6 +27,13 @@ TEST_F(DimseTest, WrongCalledAeIsRejectedWithAMessageNamingTheAeTitles) {
               testing::AllOf(HasSubstr("refused Voxray"), HasSubstr("NOT_ORTHANC")));
 }
 
+// The test Orthanc serves DIMSE only to VOXRAY at 127.0.0.1 (orthanc_server.cpp says why).
+TEST_F(DimseTest, UnknownCallingAeIsRefused) {
+  PacsNode node = server().dimseNode();
+  node.callingAe = "STRANGER";
+  EXPECT_THAT(echoFailure(node), HasSubstr("refused Voxray"));
+}
+
 TEST_F(DimseTest, UnreachableNodeSaysSo) {
   PacsNode node = parsePacsNode("dicom://ORTHANC@127.0.0.1:" + std::to_string(freePort()));
   node.timeoutSec = 5;
