@@ -150,9 +150,9 @@ OrthancServer::~OrthancServer() {
   fs::remove_all(folder, ignored);
 }
 
-void OrthancServer::stop() {
+void OrthancServer::stop(int signal) {
   if (pid_ <= 0) return;
-  kill(pid_, SIGTERM);
+  kill(pid_, signal);
   int status = 0;
   waitpid(pid_, &status, 0);
   pid_ = -1;

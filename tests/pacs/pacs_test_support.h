@@ -126,6 +126,13 @@ inline void expectRetrievalMatchesDisk(const PacsNode& node) {
   expectSameVolume(retrieved, disk);
 }
 
+// No series in the index, no folder staged or kept.
+inline void expectNothingCached(const PacsCache& cache) {
+  EXPECT_TRUE(cache.entries().empty());
+  EXPECT_TRUE(std::filesystem::is_empty(cache.root() + "/staging"));
+  EXPECT_TRUE(std::filesystem::is_empty(cache.root() + "/series"));
+}
+
 inline void expectCancelLeavesNothing(const PacsNode& node) {
   PacsCache cache(tempFolder("cache"));
   std::atomic<bool> cancel{false};
@@ -141,9 +148,7 @@ inline void expectCancelLeavesNothing(const PacsNode& node) {
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), Error::Kind::Cancelled) << e.what();
   }
-  EXPECT_TRUE(cache.entries().empty());
-  EXPECT_TRUE(std::filesystem::is_empty(cache.root() + "/staging"));
-  EXPECT_TRUE(std::filesystem::is_empty(cache.root() + "/series"));
+  expectNothingCached(cache);
 }
 
 class PacsTest : public testing::Test {
