@@ -66,7 +66,7 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
       "Off: the exported image leaves out the patient's name, ID and study text even while "
       "the views show them (View > Patient and study text)");
   form->addRow(studyText_);
-  sendTo_ = new QComboBox;
+  sendTo_ = new QComboBox(this);  // parented: without DICOM it is never laid out
   sendTo_->setObjectName("exportSendTo");
   sendTo_->setEditable(true);  // a configured node, or dicom://AE@host:port, https://...
   sendTo_->addItem("");
@@ -205,7 +205,7 @@ bool ExportDialog::exportTo(const QString& chosen) {
                                     [this](const std::string& p) { return askOverwrite(p); });
   if (!target) return false;
   const bool dicom = isDicomName(*target);
-  if (!sendTo_->currentText().isEmpty() && !dicom)
+  if (!sendTo_->currentText().trimmed().isEmpty() && !dicom)
     return fail(
         "Only a DICOM Secondary Capture can be sent to a PACS: save as .dcm, or leave "
         "\"Send to PACS node\" empty.");
@@ -216,8 +216,9 @@ bool ExportDialog::exportTo(const QString& chosen) {
     if (dicom) {
       SecondaryCaptureInfo info;
       info.study = study_;
-      // The 3D view's frame carries no text; the others show the readout or study text when
-      // ticked, and the slice views' orientation labels always.
+      // The 3D view's frame is rendered pixels only; the other captures are grabs of
+      // widgets that draw text over the image (orientation letters; readout and study text
+      // when ticked).
       info.burnedInAnnotation = what_->currentIndex() != 0;
       writeSecondaryCapture(*target, {fromQImage(image)}, info);
     } else
