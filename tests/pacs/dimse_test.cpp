@@ -1,5 +1,6 @@
 // DIMSE against a real Orthanc: C-ECHO, C-FIND, C-GET, C-MOVE, faults.
 #include <algorithm>
+#include <csignal>
 #include <filesystem>
 
 #include <gmock/gmock.h>
@@ -25,6 +26,13 @@ TEST_F(DimseTest, WrongCalledAeIsRejectedWithAMessageNamingTheAeTitles) {
   node.calledAe = "NOT_ORTHANC";
   EXPECT_THAT(echoFailure(node),
               testing::AllOf(HasSubstr("refused Voxray"), HasSubstr("NOT_ORTHANC")));
+}
+
+// The test Orthanc serves DIMSE only to VOXRAY at 127.0.0.1 (orthanc_server.cpp says why).
+TEST_F(DimseTest, UnknownCallingAeIsRefused) {
+  PacsNode node = server().dimseNode();
+  node.callingAe = "STRANGER";
+  EXPECT_THAT(echoFailure(node), HasSubstr("refused Voxray"));
 }
 
 TEST_F(DimseTest, UnreachableNodeSaysSo) {
@@ -69,6 +77,32 @@ TEST_F(DimseTest, CancelDuringCGetLeavesNoHalfSeries) {
 
 TEST_F(DimseTest, CancelDuringCMoveLeavesNoHalfSeries) {
   expectCancelLeavesNothing(server().moveNode());
+}
+
+// A server that dies mid C-GET (SIGKILL after 5 of 28 images): a clear error, not a
+// cancellation, and no half series in the cache. Its own Orthanc: the suite's stays up.
+TEST(DimseFaultTest, ServerKilledDuringCGetLeavesNoHalfSeries) {
+  OrthancServer server;
+  server.upload(dicomPath("ct-philips-phantom/S2010"));
+  PacsCache cache(tempFolder("killed-cache"));
+  RetrieveOptions options;
+  options.progress = [&](const RetrieveProgress& p) {
+    if (p.received == 5) server.stop(SIGKILL);
+  };
+  auto client = makePacsClient(server.dimseNode());
+  std::string message;
+  try {
+    cache.retrieve(*client, kPhantomStudy, kPhantomSeries, options);
+    ADD_FAILURE() << "a retrieval from a killed server returned";
+  } catch (const Error& e) {
+    EXPECT_NE(e.kind(), Error::Kind::Cancelled) << e.what();
+    message = e.what();
+  }
+  // Which of the two the socket reports (a broken pipe, or the peer gone) is a race.
+  EXPECT_THAT(message, testing::AllOf(HasSubstr(server.dimseNode().label()), HasSubstr("C-GET"),
+                                      testing::AnyOf(HasSubstr("check that the node is running"),
+                                                     HasSubstr("the node ended the connection"))));
+  expectNothingCached(cache);
 }
 
 }  // namespace

@@ -105,8 +105,16 @@ OrthancServer::OrthancServer() {
                            {"AuthenticationEnabled", true},
                            {"RegisteredUsers", {{kUser, kPassword}}},
                            {"DicomModalities", {{"voxray", {"VOXRAY", "127.0.0.1", movePort}}}},
-                           {"DicomAlwaysAllowFind", true},
-                           {"DicomAlwaysAllowGet", true},
+                           // Orthanc 1.10 has no option for the listening address (its
+                           // sockets take every interface), so it serves only loopback:
+                           // HTTP by RemoteAccessAllowed, DIMSE to the one modality known,
+                           // VOXRAY at 127.0.0.1 (its host checked).
+                           {"DicomCheckModalityHost", true},
+                           {"DicomAlwaysAllowEcho", false},
+                           {"DicomAlwaysAllowStore", false},
+                           {"DicomAlwaysAllowFind", false},
+                           {"DicomAlwaysAllowGet", false},
+                           {"DicomAlwaysAllowMove", false},
                            {"SaveJobs", false},
                            {"StableAge", 1},
                            {"Plugins", {kDicomWebPlugin}},
@@ -142,9 +150,9 @@ OrthancServer::~OrthancServer() {
   fs::remove_all(folder, ignored);
 }
 
-void OrthancServer::stop() {
+void OrthancServer::stop(int signal) {
   if (pid_ <= 0) return;
-  kill(pid_, SIGTERM);
+  kill(pid_, signal);
   int status = 0;
   waitpid(pid_, &status, 0);
   pid_ = -1;

@@ -26,8 +26,8 @@ class OrthancServer {
   int upload(const std::string& path);
   // GET on the REST API (with the test user); returns the body, throws on HTTP >= 400.
   std::string get(const std::string& path) const;
-  // Stops the server now (for "server went away" tests).
-  void stop();
+  // Stops the server now (for "server went away" tests); SIGKILL: it dies mid-transfer.
+  void stop(int signal = 15 /* SIGTERM */);
 
   int httpPort = 0, dicomPort = 0, movePort = 0;
   std::string folder;  // storage, configuration and log

@@ -27,6 +27,14 @@ constexpr const char* kPhantomStudy =
 constexpr const char* kPhantomSeries =
     "1.3.46.670589.33.1.6002432791750815306.26862469513794233732";
 
+// An Orthanc holding the Philips phantom study, for the QTest classes. Throws (fails the
+// test) with the reason when it does not start.
+inline std::unique_ptr<OrthancServer> phantomServer() {
+  auto server = std::make_unique<OrthancServer>();
+  server->upload(dicomPath("ct-philips-phantom"));
+  return server;
+}
+
 // FNV-1a over the stored voxels: equal volumes, equal sums.
 inline uint64_t voxelChecksum(const Volume& v) {
   uint64_t h = 1469598103934665603ull;
@@ -118,6 +126,13 @@ inline void expectRetrievalMatchesDisk(const PacsNode& node) {
   expectSameVolume(retrieved, disk);
 }
 
+// No series in the index, no folder staged or kept.
+inline void expectNothingCached(const PacsCache& cache) {
+  EXPECT_TRUE(cache.entries().empty());
+  EXPECT_TRUE(std::filesystem::is_empty(cache.root() + "/staging"));
+  EXPECT_TRUE(std::filesystem::is_empty(cache.root() + "/series"));
+}
+
 inline void expectCancelLeavesNothing(const PacsNode& node) {
   PacsCache cache(tempFolder("cache"));
   std::atomic<bool> cancel{false};
@@ -133,9 +148,7 @@ inline void expectCancelLeavesNothing(const PacsNode& node) {
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), Error::Kind::Cancelled) << e.what();
   }
-  EXPECT_TRUE(cache.entries().empty());
-  EXPECT_TRUE(std::filesystem::is_empty(cache.root() + "/staging"));
-  EXPECT_TRUE(std::filesystem::is_empty(cache.root() + "/series"));
+  expectNothingCached(cache);
 }
 
 class PacsTest : public testing::Test {

@@ -59,6 +59,25 @@ TEST(SecondaryCaptureTest, DcmdumpReadsItAsAMultiframeTrueColorScInTheSourceStud
   EXPECT_THAT(dump, HasSubstr("(0028,0008) IS [2]"));   // NumberOfFrames
 }
 
+// "Opens in Voxray": the importer loads an uncompressed RGB SC as its luminance (Rec. 601,
+// rounded: exact integers, no tolerance), one slice per frame, saying so in a warning.
+TEST(SecondaryCaptureTest, VoxrayOpensItAsItsLuminanceOneSlicePerFrame) {
+  Volume v = loadVolume(writeShot(tempFolder("sc")));
+  ASSERT_EQ(v.dims, glm::ivec3(64, 48, 2));
+  EXPECT_THAT(testing::PrintToString(v.warnings), HasSubstr("shown as their luminance"));
+  const std::vector<Image> shot = frames();
+  int wrong = 0;
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 48; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const uint8_t* p = shot[size_t(z)].pixel(x, y);
+        int luma = (299 * p[0] + 587 * p[1] + 114 * p[2] + 500) / 1000;
+        double stored = v.voxels[(size_t(z) * 48 + size_t(y)) * 64 + size_t(x)];
+        wrong += stored * v.slope + v.intercept != luma;
+      }
+  EXPECT_EQ(wrong, 0);
+}
+
 TEST(SecondaryCaptureTest, UnequalFramesAreRefused) {
   std::vector<Image> two = {Image(4, 4), Image(4, 5)};
   EXPECT_THROW(writeSecondaryCapture(tempFolder("sc") + "/x.dcm", two, {}), Error);

@@ -53,16 +53,37 @@ void PacsBrowser::search(const std::string& node, PacsQuery query) {
   });
 }
 
+namespace {
+
+std::vector<PacsMatch> findSeries(PacsClient& client, const std::string& studyUid) {
+  PacsQuery q;
+  q.level = QueryLevel::Series;
+  q.studyInstanceUid = studyUid;
+  return client.find(q);
+}
+
+}  // namespace
+
 void PacsBrowser::listSeries(const std::string& node, const std::string& studyUid) {
   run([this, node, studyUid] {
-    PacsQuery q;
-    q.level = QueryLevel::Series;
-    q.studyInstanceUid = studyUid;
-    auto series = makePacsClient(resolvePacsNode(node))->find(q);
+    auto series = findSeries(*makePacsClient(resolvePacsNode(node)), studyUid);
     task_.post([events = events_, studyUid, series] {
       if (events.series) events.series(studyUid, series);
     });
   });
+}
+
+RetrieveOptions PacsBrowser::retrieveOptions(int receivedBefore, int total) {
+  RetrieveOptions options;
+  options.cancel = task_.cancelFlag();
+  options.progress = [this, receivedBefore, total](RetrieveProgress p) {
+    p.received += receivedBefore;
+    if (total > 0) p.total = total;
+    task_.post([events = events_, p] {
+      if (events.progress) events.progress(p);
+    });
+  };
+  return options;
 }
 
 void PacsBrowser::retrieve(const std::string& node, const std::string& studyUid,
@@ -70,16 +91,44 @@ void PacsBrowser::retrieve(const std::string& node, const std::string& studyUid,
   run([this, node, studyUid, seriesUid] {
     auto client = makePacsClient(resolvePacsNode(node));
     PacsCache cache(cacheFolder_);
-    RetrieveOptions options;
-    options.cancel = task_.cancelFlag();
-    options.progress = [this](const RetrieveProgress& p) {
-      task_.post([events = events_, p] {
-        if (events.progress) events.progress(p);
-      });
-    };
-    CachedSeries entry = cache.retrieve(*client, studyUid, seriesUid, options);
+    CachedSeries entry = cache.retrieve(*client, studyUid, seriesUid, retrieveOptions(0, 0));
     task_.post([events = events_, entry] {
       if (events.retrieved) events.retrieved(entry);
+    });
+  });
+}
+
+void PacsBrowser::retrieveStudy(const std::string& node, const std::string& studyUid) {
+  run([this, node, studyUid] {
+    auto client = makePacsClient(resolvePacsNode(node));
+    auto series = findSeries(*client, studyUid);
+    if (series.empty())
+      throw inputError(
+          "The node lists no series in this study: search again, or ask the "
+          "PACS administrator");
+    int total = 0;
+    for (const auto& s : series) total += s.numberOfInstances;
+    PacsCache cache(cacheFolder_);
+    std::vector<CachedSeries> got;
+    CachedSeries study{studyUid, "", "", 0, 0, 0};
+    for (const auto& s : series) {
+      got.push_back(cache.retrieve(*client, studyUid, s.seriesInstanceUid,
+                                   retrieveOptions(study.images, total)));
+      study.bytes += got.back().bytes;
+      study.images += got.back().images;
+    }
+    study.folder = cache.studyFolder(studyUid, got);
+    task_.post([events = events_, study] {
+      if (events.retrieved) events.retrieved(study);
+    });
+  });
+}
+
+void PacsBrowser::send(const std::string& node, std::vector<std::string> files) {
+  run([this, node, files = std::move(files)] {
+    makePacsClient(resolvePacsNode(node))->store(files);
+    task_.post([events = events_] {
+      if (events.sent) events.sent();
     });
   });
 }

@@ -22,9 +22,12 @@ struct PacsBrowserEvents {
   std::function<void(const std::vector<PacsMatch>& studies)> found;
   std::function<void(const std::string& studyUid, const std::vector<PacsMatch>& series)> series;
   std::function<void(const RetrieveProgress&)> progress;
-  std::function<void(const CachedSeries&)> retrieved;  // open entry.folder, series seriesUid
+  // Open entry.folder with series seriesUid; a whole study (seriesUid empty): the folder
+  // holds all its series, for the series picker.
+  std::function<void(const CachedSeries&)> retrieved;
   std::function<void(const std::string& message)> failed;
   std::function<void()> cancelled;
+  std::function<void()> sent;  // send(): the node took every file
 };
 
 class PacsBrowser {
@@ -44,11 +47,17 @@ class PacsBrowser {
   void search(const std::string& node, PacsQuery query);
   void listSeries(const std::string& node, const std::string& studyUid);
   void retrieve(const std::string& node, const std::string& studyUid, const std::string& seriesUid);
+  // Every series of the study into the cache (progress over the whole study), then one
+  // folder showing them all (PacsCache::studyFolder).
+  void retrieveStudy(const std::string& node, const std::string& studyUid);
+  // Sends FILES (C-STORE; STOW-RS): the screenshot export's "Send to". Failure: failed().
+  void send(const std::string& node, std::vector<std::string> files);
   void cancel() { task_.cancel(); }
   bool busy() const { return busy_; }
 
  private:
   void run(std::function<void()> job);
+  RetrieveOptions retrieveOptions(int receivedBefore, int total);
 
   PacsBrowserEvents events_;
   std::string cacheFolder_;

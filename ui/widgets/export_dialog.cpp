@@ -7,15 +7,20 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QLabel>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSpinBox>
 #include <QTimer>
 
+#include "gui_post.h"
 #include "qt_image.h"
 #include "slice_view.h"
 #include "volume_view.h"
 #include "voxray/io/error.h"
+#ifdef VOXRAY_HAS_DICOM
+#include "voxray/io/secondary_capture.h"
+#endif
 
 namespace voxray::ui {
 
@@ -29,6 +34,10 @@ void waitForSlab(SliceView* s) {
   QObject::connect(s, &SliceView::slabShown, &loop, &QEventLoop::quit);
   QTimer::singleShot(kExportTimeoutMs, &loop, &QEventLoop::quit);
   loop.exec();
+}
+
+bool isDicomName(const std::string& path) {
+  return path.size() > 4 && QString::fromStdString(path).endsWith(".dcm", Qt::CaseInsensitive);
 }
 }  // namespace
 
@@ -66,6 +75,35 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
       "Off: the exported image leaves out the patient's name, ID and study text even while "
       "the views show them (View > Patient and study text)");
   form->addRow(studyText_);
+  sendTo_ = new QComboBox(this);  // parented: without DICOM it is never laid out
+  sendTo_->setObjectName("exportSendTo");
+  sendTo_->setEditable(true);  // a configured node, or dicom://AE@host:port, https://...
+  sendTo_->addItem("");
+  status_ = new QLabel;
+#ifdef VOXRAY_HAS_DICOM
+  for (const auto& n : PacsBrowser::configuredNodes()) sendTo_->addItem(QString::fromStdString(n));
+  sendTo_->setToolTip("Empty: keep the file only. A DICOM Secondary Capture (.dcm) can be sent");
+  form->addRow("Send to PACS node", sendTo_);
+  PacsBrowserEvents events;
+  events.sent = [this] {
+    status_->setText("Sent");
+    emit sent();
+    accept();
+  };
+  events.failed = [this](const std::string& m) {
+    status_->setText("Not sent");
+    QString message =
+        QString::fromStdString(m) + "\nThe file was kept: " + QString::fromStdString(written_);
+    if (error_)
+      error_(message);
+    else
+      QMessageBox::warning(this, "Sending failed", message);
+  };
+  pacs_ = std::make_unique<PacsBrowser>(events, std::string(), postTo(this));
+#else
+  sendTo_->setVisible(false);
+#endif
+  form->addRow(status_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Save | QDialogButtonBox::Cancel);
   connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::save);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -149,8 +187,9 @@ QString ExportDialog::askPath() {
   // resolveExportTarget asks about replacing, with the name as it will be written.
   QString path = QFileDialog::getSaveFileName(
       this, "Export screenshot", s.value("lastExportFolder").toString(),
-      "PNG image (*.png);;TIFF image (*.tif *.tiff);;OpenEXR image (*.exr)", nullptr,
-      QFileDialog::DontConfirmOverwrite);
+      "PNG image (*.png);;TIFF image (*.tif *.tiff);;OpenEXR image (*.exr);;"
+      "DICOM Secondary Capture (*.dcm)",
+      nullptr, QFileDialog::DontConfirmOverwrite);
   if (!path.isEmpty()) s.setValue("lastExportFolder", QFileInfo(path).absolutePath());
   return path;
 }
@@ -175,19 +214,51 @@ bool ExportDialog::exportTo(const QString& chosen) {
   auto target = resolveExportTarget(chosen.toStdString(),
                                     [this](const std::string& p) { return askOverwrite(p); });
   if (!target) return false;
+  const bool dicom = isDicomName(*target);
+  if (!sendTo_->currentText().trimmed().isEmpty() && !dicom)
+    return fail(
+        "Only a DICOM Secondary Capture can be sent to a PACS: save as .dcm, or leave "
+        "\"Send to PACS node\" empty.");
   QImage image = capture();
   if (image.isNull()) return fail("No image to export yet (no frame rendered).");
   try {
-    writeImage(*target, fromQImage(image));
+#ifdef VOXRAY_HAS_DICOM
+    if (dicom) {
+      SecondaryCaptureInfo info;
+      info.study = study_;
+      // The 3D view's frame is rendered pixels only; the other captures are grabs of
+      // widgets that draw text over the image (orientation letters; readout and study text
+      // when ticked).
+      info.burnedInAnnotation = what_->currentIndex() != 0;
+      writeSecondaryCapture(*target, {fromQImage(image)}, info);
+    } else
+#endif
+      writeImage(*target, fromQImage(image));
   } catch (const std::exception& e) {
     return fail(e.what());
   }
+  written_ = *target;
   return true;
+}
+
+bool ExportDialog::sendExported() {
+#ifdef VOXRAY_HAS_DICOM
+  QString node = sendTo_->currentText().trimmed();
+  if (node.isEmpty() || written_.empty()) return false;
+  status_->setText("Sending to " + node + "…");
+  pacs_->send(node.toStdString(), {written_});
+  return true;
+#else
+  return false;
+#endif
 }
 
 void ExportDialog::save() {
   QString path = askPath();
-  if (!path.isEmpty() && exportTo(path)) accept();
+  if (path.isEmpty() || !exportTo(path)) return;
+  if (!sendExported()) accept();  // else it closes when the node took the file
 }
+
+ExportDialog::~ExportDialog() = default;
 
 }  // namespace voxray::ui

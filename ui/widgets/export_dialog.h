@@ -1,19 +1,28 @@
 #pragma once
 // Screenshot export (Ctrl+E): the 3D view at view size or a chosen resolution, a slice
-// view, or the whole window, written as PNG, TIFF or EXR through writeImage. An existing
+// view, or the whole window, written as PNG, TIFF or EXR through writeImage, or (.dcm) as a
+// DICOM Secondary Capture in the volume's study, which "Send to" then sends to a PACS node
+// in the background (the dialog closes once the node took it, else says why). An existing
 // file is replaced only after a yes (resolveExportTarget, asked with the final name); the
 // cursor readout is left out unless the user ticks it. The 3D view exports its rendered
 // pixels only, never the handles drawn over them.
 #include <array>
 #include <functional>
+#include <memory>
 
 #include <QDialog>
 
 #include "export_target.h"
 #include "render_scheduler.h"
+#include "voxray/io/volume.h"
+
+#ifdef VOXRAY_HAS_DICOM
+#include "pacs_browser.h"
+#endif
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QSpinBox;
 
 namespace voxray::ui {
@@ -26,6 +35,10 @@ class ExportDialog : public QDialog {
  public:
   ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeView& view,
                const std::array<SliceView*, 3>& slices);
+  ~ExportDialog() override;
+
+  // The study a Secondary Capture joins (the shown volume's).
+  void setStudy(const StudyIdentity& study) { study_ = study; }
 
   // What the Save button asks for; tests replace the file and message dialogs.
   void setPathChooser(std::function<QString()> choose) { choose_ = std::move(choose); }
@@ -34,6 +47,12 @@ class ExportDialog : public QDialog {
   // Writes the current choice to CHOSEN (".png" added when it has no suffix). False when
   // nothing was written: the user kept an existing file, or capturing or writing failed.
   bool exportTo(const QString& chosen);
+  // After exportTo wrote a .dcm: sends it to the node in "Send to" (if any) in the
+  // background; sent() or the error sink follows. False when nothing is to be sent.
+  bool sendExported();
+
+ signals:
+  void sent();
 
  private:
   void save();
@@ -53,10 +72,17 @@ class ExportDialog : public QDialog {
   QSpinBox* height_;
   QCheckBox* annotations_;
   QCheckBox* studyText_;
+  QComboBox* sendTo_;
+  QLabel* status_;
+  std::string written_;  // the last file exportTo wrote
+  StudyIdentity study_;
   QSize chosen_;  // the chosen resolution, kept while the fields show another capture's size
   std::function<QString()> choose_;
   ConfirmOverwrite confirm_;
   std::function<void(const QString&)> error_;
+#ifdef VOXRAY_HAS_DICOM
+  std::unique_ptr<PacsBrowser> pacs_;  // last member: its thread stops before the rest goes
+#endif
 };
 
 }  // namespace voxray::ui

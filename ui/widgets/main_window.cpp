@@ -278,6 +278,11 @@ void MainWindow::openFromPacs() {
   if (dialog.exec() != QDialog::Accepted) return;
   LoadOptions options;
   options.series = dialog.chosen().seriesUid;
+  if (options.series.empty()) {  // a whole study: its series go to the picker
+    auto choice = pickSeries(this, dialog.chosen().folder);
+    if (!choice) return;
+    options = *choice;
+  }
   open(dialog.chosen().folder, options);
 #endif
 }
@@ -310,6 +315,7 @@ void MainWindow::openVolumeFile() {
 
 void MainWindow::exportScreenshot() {
   ExportDialog dialog(this, *scheduler_, *volumeView_, slices_);
+  if (models_.document.volume()) dialog.setStudy(models_.document.volume()->study);
   if (errorSink_) dialog.setErrorSink([this](const QString& m) { errorSink_("Export failed", m); });
   dialog.exec();
 }

@@ -58,12 +58,11 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
     browser_->listSeries(node_->currentText().toStdString(),
                          item->data(0, kUidRole).toString().toStdString());
   });
-  connect(results_, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
-    if (item->parent()) retrieve(item);
-  });
+  results_->setExpandsOnDoubleClick(false);  // a double-click retrieves; the arrow expands
+  connect(results_, &QTreeWidget::itemDoubleClicked, this, &PacsDialog::retrieve);
   status_ = new QLabel(
       "Search a node; expand a study for its series; double-click a series "
-      "to open it");
+      "to open it, or a study to choose among its series");
   progress_ = new QProgressBar;
   progress_->setVisible(false);
   searchButton_ = new QPushButton("&Search");
@@ -130,9 +129,11 @@ void PacsDialog::retrieve(QTreeWidgetItem* item) {
   cancelButton_->setEnabled(true);
   progress_->setVisible(true);
   progress_->setRange(0, 0);
-  browser_->retrieve(node_->currentText().toStdString(),
-                     item->data(0, kStudyUidRole).toString().toStdString(),
-                     item->data(0, kUidRole).toString().toStdString());
+  const std::string node = node_->currentText().toStdString();
+  const std::string uid = item->data(0, kUidRole).toString().toStdString();
+  if (!item->parent()) return browser_->retrieveStudy(node, uid);
+  if (uid.empty()) return setBusy(false, "");  // the placeholder of a study not yet listed
+  browser_->retrieve(node, item->data(0, kStudyUidRole).toString().toStdString(), uid);
 }
 
 void PacsDialog::setBusy(bool busy, const QString& status) {

@@ -4,7 +4,9 @@
 // modalities, series and image counts, and the patient fields (shown because the user asked
 // for them: they never go into logs, titles, file names or exports). Expanding a study lists
 // its series; double-clicking a series retrieves it into the cache (progress, Cancel) and
-// closes the dialog with it. The work is PacsBrowser's (ui/model/pacs_browser.h).
+// closes the dialog with it; double-clicking a study retrieves all its series and closes
+// with a folder of them (chosen().seriesUid empty), for the series picker. The work is
+// PacsBrowser's (ui/model/pacs_browser.h).
 #include <memory>
 #include <string>
 
@@ -37,7 +39,7 @@ class PacsDialog : public QDialog {
   QLineEdit* field(const QString& name) const;
   QTreeWidget* results() const { return results_; }
   void search();
-  void retrieve(QTreeWidgetItem* seriesItem);
+  void retrieve(QTreeWidgetItem* studyOrSeriesItem);
 
  signals:
   void searched(int studies);

@@ -317,6 +317,8 @@ Volume importDicom(const std::string& input, const LoadOptions& options) {
   v.warnings = c.warnings;
   v.warnings.insert(v.warnings.end(), g.warnings.begin(), g.warnings.end());
   v.warnings.insert(v.warnings.end(), warnings.begin(), warnings.end());
+  if (isLuminanceRgb(f0))
+    v.warnings.push_back("colour (RGB) images: shown as their luminance, greyscale 0-255");
   for (auto& note : s.notes) v.warnings.push_back(note);
   report(options, 1.0, "Loaded");
   return v;

@@ -180,6 +180,7 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
   h.acquisitionNumber = intValue(ds, DCM_AcquisitionNumber);
   h.temporalIndex = intValue(ds, DCM_TemporalPositionIdentifier);
   h.samplesPerPixel = intValue(ds, DCM_SamplesPerPixel, 1);
+  h.planarConfiguration = intValue(ds, DCM_PlanarConfiguration, 0);
   h.bitsAllocated = intValue(ds, DCM_BitsAllocated, 16);
   h.bitsStored = intValue(ds, DCM_BitsStored, h.bitsAllocated);
   h.pixelRepresentation = intValue(ds, DCM_PixelRepresentation, 0);

@@ -22,6 +22,7 @@ struct FrameHeader {
   int temporalIndex = 0;  // TemporalPositionIndex / DimensionIndexValues, 0 when absent
   int stackId = 0;
   int rows = 0, columns = 0, samplesPerPixel = 1;
+  int planarConfiguration = 0;  // colour: 0 = RGBRGB..., 1 = RR..GG..BB..
   int bitsAllocated = 16, bitsStored = 16, pixelRepresentation = 0;
   bool hasPosition = false, hasOrientation = false, hasPixelSpacing = false;
   glm::dvec3 position{0.0};

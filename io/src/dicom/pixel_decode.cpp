@@ -154,7 +154,15 @@ struct PixelFile::Impl {
     }
     out.resize(n);
     const size_t step = size_t(h.samplesPerPixel);
-    if (bytesPerSample == 1) {
+    if (isLuminanceRgb(h)) {
+      // Rec. 601 luma, the greyscale a colour screenshot is shown as (rounded, 0-255).
+      const size_t plane = h.planarConfiguration == 1 ? n : 1;
+      const size_t pixel = h.planarConfiguration == 1 ? 1 : 3;
+      for (size_t i = 0; i < n; ++i) {
+        const uint8_t* p = src + i * pixel;
+        out[i] = int32_t((299 * p[0] + 587 * p[plane] + 114 * p[2 * plane] + 500) / 1000);
+      }
+    } else if (bytesPerSample == 1) {
       for (size_t i = 0; i < n; ++i) out[i] = fmt(src[i * step]);
     } else if (step == 1 && fmt.bits == 16) {
       // The common case, without masking: a straight (vectorised) widening copy.
@@ -199,7 +207,13 @@ void PixelFile::frameValues(const FrameHeader& h, std::vector<int32_t>& out) {
     impl_->decodeOther(h, out);
 }
 
+bool isLuminanceRgb(const FrameHeader& h) {
+  return h.samplesPerPixel == 3 && h.photometric == "RGB" && h.bitsAllocated == 8 &&
+         !DcmXfer(h.transferSyntaxUid.c_str()).isEncapsulated();
+}
+
 std::string unsupportedReason(const FrameHeader& h) {
+  if (isLuminanceRgb(h)) return {};
   if (h.samplesPerPixel != 1 ||
       (h.photometric != "MONOCHROME1" && h.photometric != "MONOCHROME2" && !h.photometric.empty()))
     return "is a colour image (" + (h.photometric.empty() ? "RGB" : h.photometric) +

@@ -27,6 +27,9 @@ class PixelFile {
   std::unique_ptr<Impl> impl_;
 };
 
+// Uncompressed 8-bit RGB (a Secondary Capture, such as Voxray's own screenshots): loaded
+// as its luminance, with a warning. Compressed colour stays refused.
+bool isLuminanceRgb(const FrameHeader& h);
 // Empty when frames with this header can be decoded; otherwise why not, naming the cause.
 std::string unsupportedReason(const FrameHeader& h);
 

@@ -162,4 +162,27 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   return entry;
 }
 
+std::string PacsCache::studyFolder(const std::string& studyUid,
+                                   const std::vector<CachedSeries>& series) {
+  // Links to files, not folders: the importer's scan does not follow folder links.
+  fs::path study = fs::path(root_) / "studies" / folderName(studyUid);
+  std::error_code ec;
+  fs::remove_all(study, ec);
+  for (const auto& s : series) {
+    fs::path dir = study / fs::path(s.folder).filename();
+    fs::create_directories(dir, ec);
+    for (const auto& f : fs::directory_iterator(s.folder, ec)) {
+      if (ec) break;
+      fs::create_symlink(f.path(), dir / f.path().filename(), ec);
+      if (ec) break;
+    }
+    if (ec)
+      throw outputError("Cannot gather the retrieved study in " + study.string() + " (" +
+                        ec.message() +
+                        "): the disk may be full; free space or set "
+                        "VOXRAY_CACHE_DIR");
+  }
+  return study.string();
+}
+
 }  // namespace voxray

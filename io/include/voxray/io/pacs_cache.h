@@ -36,6 +36,9 @@ class PacsCache {
   CachedSeries retrieve(PacsClient& client, const std::string& studyUid,
                         const std::string& seriesUid, const RetrieveOptions& options = {});
   std::vector<CachedSeries> entries() const;
+  // A folder under studies/ that shows the cached SERIES of one study together (links to
+  // their files, made afresh), so the series picker lists them as it lists a study folder.
+  std::string studyFolder(const std::string& studyUid, const std::vector<CachedSeries>& series);
   void remove(const std::string& seriesUid);
   const std::string& root() const { return root_; }
 
