@@ -15,7 +15,7 @@ QGroupBox* makeQualityGroup(RenderStateModel& m);
 QGroupBox* makeCameraGroup(RenderStateModel& m);
 QGroupBox* makeClipGroup(AppModels& models, VolumeView& view);
 QGroupBox* makeLightGroup(AppModels& models, VolumeView& view);
-QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeView& view);
+QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state);
 QGroupBox* makeMprGroup(CrosshairModel& crosshair, VolumeView& view);  // panel_mpr.cpp
 
 // All groups in a scrollable column.

@@ -199,7 +199,7 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   return box;
 }
 
-QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeView& view) {
+QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state) {
   auto* box = new QGroupBox("Slices");
   auto* form = new QFormLayout(box);
   auto* preset = new QComboBox;
@@ -270,7 +270,7 @@ QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
       {makeRenderGroup(models.render), true},
       {makeQualityGroup(models.render), true},
       {makeCameraGroup(models.render), false},
-      {makeSliceGroup(models.windowLevel, models.render, view), true},
+      {makeSliceGroup(models.windowLevel, models.render), true},
       {makeClipGroup(models, view), true},
       {makeLightGroup(models, view), false},
       {makeMprGroup(models.crosshair, view), false}};
