@@ -171,6 +171,9 @@ Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
 
 void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = std::chrono::steady_clock::now();
+  if (p.lighting != Lighting::Phong)  // the other models arrive with issue 15
+    throw inputError(std::string("lighting '") + toString(p.lighting) +
+                     "' is not available in this build; use --lighting phong");
   Impl& m = *impl_;
   const Volume& v = m.volume;
   m.updateSetup(p);

@@ -36,6 +36,13 @@ const std::vector<EnumLabel>& projectionLabels() {
                                            {"orthographic", "Orthographic", {"ortho"}}};
   return l;
 }
+const std::vector<EnumLabel>& lightingLabels() {
+  static const std::vector<EnumLabel> l = {{"phong", "Phong", {}},
+                                           {"shadows", "Shadows", {}},
+                                           {"ao", "Ambient occlusion", {}},
+                                           {"cinematic", "Cinematic (path tracer)", {}}};
+  return l;
+}
 
 const char* name(const std::vector<EnumLabel>& labels, int value) {
   return value >= 0 && size_t(value) < labels.size() ? labels[size_t(value)].name.c_str() : "?";
@@ -46,11 +53,15 @@ const char* name(const std::vector<EnumLabel>& labels, int value) {
 const char* toString(Mode m) { return name(modeLabels(), int(m)); }
 const char* toString(Gradient g) { return name(gradientLabels(), int(g)); }
 const char* toString(Interp i) { return name(interpLabels(), int(i)); }
+const char* toString(Lighting l) { return name(lightingLabels(), int(l)); }
 Mode parseMode(const std::string& s) { return Mode(labelIndex("mode", modeLabels(), s)); }
 Gradient parseGradient(const std::string& s) {
   return Gradient(labelIndex("gradient", gradientLabels(), s));
 }
 Interp parseInterp(const std::string& s) { return Interp(labelIndex("interp", interpLabels(), s)); }
+Lighting parseLighting(const std::string& s) {
+  return Lighting(labelIndex("lighting", lightingLabels(), s));
+}
 
 namespace {
 
@@ -266,6 +277,7 @@ std::vector<ParamSpec> makeSpecs() {
       // highlight a CT surface shows.
       number("shininess", "N", "specular exponent", ParamDomain().above(0).offer({}, 1024),
              FIELD(light.shininess)),
+      choice("lighting", "lighting model", lightingLabels(), FIELD(lighting)),
       {"surface-color", "R,G,B", "iso surface colour 0 ... 1", none,
        [](P& p, S s) { p.surfaceColor = glm::clamp(toVec3("surface-color", s), 0.0, 1.0); },
        [](const P& p) { return fmt(p.surfaceColor); }},

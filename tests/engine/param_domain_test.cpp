@@ -59,7 +59,7 @@ TEST(ParamDomain, EveryEnumSpecRoundTripsEveryLabel) {
     EXPECT_EQ(renderError(spec.key, "nonsense"),
               "--" + spec.key + ": 'nonsense' is not one of " + labelNames(labels, ", "));
   }
-  EXPECT_EQ(enums, 4);  // mode, gradient, interp, projection
+  EXPECT_EQ(enums, 5);  // mode, gradient, interp, projection, lighting
 }
 
 TEST(ParamDomain, EnumNamesComeFromTheSpecTables) {

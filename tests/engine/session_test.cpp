@@ -79,6 +79,7 @@ const std::map<std::string, std::string> kUnusual = {
     {"diffuse", "0.6"},
     {"specular", "0.4"},
     {"shininess", "64"},
+    {"lighting", "shadows"},
     {"surface-color", "0.5,0.25,0.125"},
     {"background", "0.1,0.2,0.3"}};
 

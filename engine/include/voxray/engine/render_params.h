@@ -17,6 +17,9 @@ enum class Mode { Iso, Dvr, Mip };
 enum class Gradient { Central, Sobel, ZuckerHummel };
 enum class Interp { Nearest, Linear };
 enum class Projection { Perspective, Orthographic };
+// How samples are lit (issue 15): local Blinn-Phong, Phong attenuated by the volume between
+// sample and light, Phong with ambient occlusion, or the progressive path tracer.
+enum class Lighting { Phong, Shadows, Ao, Cinematic };
 
 struct CameraParams {
   double azimuthDeg = 0.0;    // 0 = anterior view; 90 = from the patient's left
@@ -73,6 +76,7 @@ struct RenderParams {
   CameraParams camera;
   ClipBox clip;
   LightParams light;
+  Lighting lighting = Lighting::Phong;
 };
 
 // One declared render parameter: its key (the CLI flag without "--"), help, domain (enum
@@ -95,9 +99,11 @@ void fromText(RenderParams& p, const std::string& text);  // throws Error (Input
 const char* toString(Mode m);
 const char* toString(Gradient g);
 const char* toString(Interp i);
+const char* toString(Lighting l);
 Mode parseMode(const std::string& s);
 Gradient parseGradient(const std::string& s);
 Interp parseInterp(const std::string& s);
+Lighting parseLighting(const std::string& s);
 
 // The step actually used for a volume with this smallest spacing.
 double effectiveStepMm(const RenderParams& p, double minSpacingMm);
