@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/kernel_variant.h"
@@ -53,7 +54,7 @@ Diff compare(const Image& a, const Image& b) {
 }
 
 ClContext& context() {
-  static ClContext ctx("cpu");
+  static ClContext ctx(test::testDeviceSelector());  // PoCL, or the GPU certificate's
   return ctx;
 }
 

@@ -1,6 +1,7 @@
 // Shading at the extremes of the inputs: never NaN, values where the maths says.
 #include <gtest/gtest.h>
 
+#include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
@@ -10,7 +11,7 @@ namespace voxray {
 
 namespace {
 ClContext& context() {
-  static ClContext ctx("cpu");
+  static ClContext ctx(test::testDeviceSelector());  // PoCL, or the GPU certificate's
   return ctx;
 }
 }  // namespace

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "cl_context_impl.h"
+#include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/error.h"
@@ -13,7 +14,7 @@
 namespace voxray {
 
 TEST(StabilityDeviceLimits, VolumeLargerThanTheLargestAllocationIsAClearDeviceError) {
-  ClContext ctx("cpu");
+  ClContext ctx(test::testDeviceSelector());
   ctx.impl().info.maxAllocBytes = 1000;  // the 16^3 volume needs 8192 bytes
   Volume v = test::constant({16, 16, 16}, 0);
   try {
@@ -28,7 +29,7 @@ TEST(StabilityDeviceLimits, VolumeLargerThanTheLargestAllocationIsAClearDeviceEr
 }
 
 TEST(StabilityDeviceLimits, VolumeLargerThanTheLargestAllocationIsSplitIntoSlabs) {
-  ClContext ctx("cpu");
+  ClContext ctx(test::testDeviceSelector());
   ctx.impl().info.maxAllocBytes = 8 * 16 * 16 * 2;  // 8 of the 16 slices
   Volume v = test::constant({16, 16, 16}, 0);
   Raycaster rc(ctx, v, VolumeStorage::Buffer);
@@ -36,7 +37,7 @@ TEST(StabilityDeviceLimits, VolumeLargerThanTheLargestAllocationIsSplitIntoSlabs
 }
 
 TEST(StabilityDeviceLimits, VolumeDeeperThanTheLargest3dImageIsSplitIntoSlabs) {
-  ClContext ctx("cpu");
+  ClContext ctx(test::testDeviceSelector());
   if (!ctx.device().imageSupport) GTEST_SKIP() << "no image support";
   ctx.impl().info.maxImage3d[2] = 10;
   Volume v = test::constant({4, 4, 16}, 0);
@@ -45,7 +46,7 @@ TEST(StabilityDeviceLimits, VolumeDeeperThanTheLargest3dImageIsSplitIntoSlabs) {
 }
 
 TEST(StabilityDeviceLimits, VolumeLargerThanTheLargest3dImageIsAClearDeviceError) {
-  ClContext ctx("cpu");
+  ClContext ctx(test::testDeviceSelector());
   ctx.impl().info.imageSupport = true;
   ctx.impl().info.maxImage3d[0] = 8;
   Volume v = test::constant({16, 4, 4}, 0);

@@ -19,8 +19,22 @@ int maxDiff(const Image& a, const Image& b) {
 }
 
 ClContext& pocl() {
-  static ClContext ctx("cpu");
+  static ClContext ctx(testDeviceSelector());
   return ctx;
+}
+
+std::string testDeviceSelector() {
+  const char* env = std::getenv("VOXRAY_TEST_DEVICE");
+  return env && *env ? env : "cpu";
+}
+
+std::vector<VolumeStorage> testStorages() {
+  const char* env = std::getenv("VOXRAY_TEST_STORAGES");
+  std::string list = env && *env ? env : "buffer";
+  std::vector<VolumeStorage> out;
+  if (list.find("buffer") != std::string::npos) out.push_back(VolumeStorage::Buffer);
+  if (list.find("image") != std::string::npos) out.push_back(VolumeStorage::Image3d);
+  return out;
 }
 
 RenderParams tinyParams(Mode mode, int width, int height) {
@@ -48,12 +62,18 @@ void expectStable(const Volume& v, const RenderParams& p, const std::string& wha
   FloatImage ref2 = renderReferenceFloat(v, p);
   EXPECT_TRUE(ref.rgb == ref2.rgb) << "reference not deterministic";
 
-  Raycaster rc(pocl(), v, VolumeStorage::Buffer);
+  Image q = quantise(ref);
+  for (VolumeStorage storage : testStorages()) expectAgrees(v, p, q, storage, tol);
+}
+
+void expectAgrees(const Volume& v, const RenderParams& p, const Image& q, VolumeStorage storage,
+                  Agreement tol) {
+  SCOPED_TRACE(storage == VolumeStorage::Buffer ? "buffer" : "image3d");
+  Raycaster rc(pocl(), v, storage);
   Image a = rc.render(p), b = rc.render(p);
   ASSERT_EQ(a.width, p.width);
   ASSERT_EQ(a.height, p.height);
   EXPECT_TRUE(a.rgba == b.rgba) << "kernel not deterministic: " << rc.variantOptions(p);
-  Image q = quantise(ref);
   size_t n = size_t(p.width) * size_t(p.height), over = 0, badAlpha = 0;
   double sum = 0.0;
   int worst = 0;

@@ -4,15 +4,23 @@
 // image twice from each renderer, and agreement within a stated tolerance. Also the PoCL
 // context and image difference other engine tests share.
 #include <string>
+#include <vector>
 
 #include "voxray/engine/cl_context.h"
+#include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
 #include "voxray/io/volume.h"
 
 namespace voxray::test {
 
+// The test device: PoCL ("cpu") unless VOXRAY_TEST_DEVICE names another (the GPU stability
+// certificate, docs/stability/gpu-stability.sh, runs this suite on an NVIDIA GPU).
 ClContext& pocl();
+std::string testDeviceSelector();
+// The volume storages expectStable renders with: VOXRAY_TEST_STORAGES ("buffer", "image" or
+// both, comma-separated); buffer alone by default, which is what the CPU kernels use.
+std::vector<VolumeStorage> testStorages();
 
 // The largest difference between two images of the same size, in 8-bit levels.
 int maxDiff(const Image& a, const Image& b);
@@ -27,6 +35,9 @@ struct Agreement {
 
 void expectStable(const Volume& v, const RenderParams& p, const std::string& what,
                   Agreement tol = {});
+// One storage's half of expectStable: two kernel frames against the quantised reference Q.
+void expectAgrees(const Volume& v, const RenderParams& p, const Image& q, VolumeStorage storage,
+                  Agreement tol);
 
 // A small iso/dvr/mip parameter set that sees the whole volume.
 RenderParams tinyParams(Mode mode, int width = 32, int height = 24);
