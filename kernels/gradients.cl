@@ -24,7 +24,6 @@ inline float3 zero_if_cancelled(float3 g, float largest_voxel) {
   return m <= GRADIENT_ZERO_REL * largest_voxel ? (float3)(0.0f) : g;
 }
 
-#if !STORAGE_IMAGE
 // The 27 trilinear samples at p + {-1, 0, 1}^3 share p's fractional offset, so they come
 // from one clamped 4x4x4 block of voxels interpolated along x, then y, then z (the order
 // sample_volume uses): 64 loads instead of 216, the same values. *largest: the largest
@@ -40,9 +39,9 @@ inline void neighbourhood_trilinear(SLAB_TYPE vol, int4 dims, float3 p, float* s
   float m = 0.0f;
   for (int z = 0; z < 4; ++z)
     for (int y = 0; y < 4; ++y) {
-      size_t row = ((size_t)clamp(i0.z + z, 0, hi.z) * dims.y + clamp(i0.y + y, 0, hi.y)) * dims.x;
-      float v0 = vol[row + xs[0]], v1 = vol[row + xs[1]], v2 = vol[row + xs[2]];
-      float v3 = vol[row + xs[3]];
+      int zr = clamp(i0.z + z, 0, hi.z), yr = clamp(i0.y + y, 0, hi.y);
+      float v0 = voxel_at(vol, dims, xs[0], yr, zr), v1 = voxel_at(vol, dims, xs[1], yr, zr);
+      float v2 = voxel_at(vol, dims, xs[2], yr, zr), v3 = voxel_at(vol, dims, xs[3], yr, zr);
       m = fmax(m, fmax(fmax(fabs(v0), fabs(v1)), fmax(fabs(v2), fabs(v3))));
       x[z][y][0] = mix(v0, v1, f.x);
       x[z][y][1] = mix(v1, v2, f.x);
@@ -72,7 +71,7 @@ inline void cross_trilinear(SLAB_TYPE vol, int4 dims, float3 p, float* s, float*
     ys[k] = clamp(i0.y + k, 0, hi.y);
     zs[k] = clamp(i0.z + k, 0, hi.z);
   }
-#define VOXEL(tz, ty, tx) ((float)vol[((size_t)zs[tz] * dims.y + ys[ty]) * dims.x + xs[tx]])
+#define VOXEL(tz, ty, tx) voxel_at(vol, dims, xs[tx], ys[ty], zs[tz])
   float m = 0.0f;
   float c[2][2][3];  // centre rows (y, z taps 1..2) along x at offsets -1, 0, +1
   for (int z = 0; z < 2; ++z)
@@ -102,7 +101,6 @@ inline void cross_trilinear(SLAB_TYPE vol, int4 dims, float3 p, float* s, float*
   s[5] = mix(mix(c[1][0][1], c[1][1][1], f.y), mix(ez[1][0], ez[1][1], f.y), f.z);
   *largest = m;
 }
-#endif
 
 // The gradient at p in one slab (the whole volume when SLABS is 1) of extent dims.
 inline float3 volume_gradient_slab(SLAB_TYPE vol, int4 dims, __constant RaycastParams* P,
@@ -110,15 +108,13 @@ inline float3 volume_gradient_slab(SLAB_TYPE vol, int4 dims, __constant RaycastP
   float largest = 0.0f;  // the largest |voxel| the stencil read (see GRADIENT_ZERO_REL)
   if (GRADIENT == 0) {
     float s[6];  // p - x, p + x, p - y, p + y, p - z, p + z
-#if !STORAGE_IMAGE
     if (INTERP)
       cross_trilinear(vol, dims, p, s, &largest);
     else
-#endif
       for (int k = 0; k < 6; ++k) {
         float3 e = (float3)(k / 2 == 0, k / 2 == 1, k / 2 == 2);
         s[k] = sample_slab(vol, dims, P, k % 2 ? p + e : p - e);
-        // Nearest samples are voxels; filtered image samples stand in for theirs.
+        // Nearest samples are voxels.
         largest = fmax(largest, fabs(s[k]));
       }
     return zero_if_cancelled(0.5f * (float3)(s[1] - s[0], s[3] - s[2], s[5] - s[4]), largest);
@@ -133,11 +129,9 @@ inline float3 volume_gradient_slab(SLAB_TYPE vol, int4 dims, __constant RaycastP
     w_sum = 22.0f;
   }
   float s[27];  // the samples at p + (dx, dy, dz), index (dz + 1) * 9 + (dy + 1) * 3 + dx + 1
-#if !STORAGE_IMAGE
   if (INTERP)
     neighbourhood_trilinear(vol, dims, p, s, &largest);
   else
-#endif
     for (int k = 0; k < 27; ++k) {  // the centre (13) has weight 0
       float3 q = p + (float3)(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
       s[k] = k == 13 ? 0.0f : sample_slab(vol, dims, P, q);
