@@ -11,7 +11,10 @@ inline int intersect_box(float3 o, float3 d, float3 lo, float3 hi, float* t_ente
   float loa[3] = {lo.x, lo.y, lo.z}, hia[3] = {hi.x, hi.y, hi.z};
   for (int a = 0; a < 3; ++a) {
     if (da[a] == 0.0f) {
-      if (oa[a] < loa[a] || oa[a] > hia[a]) return -2;
+      // A ray in a face's plane is inside: float rounding of its origin (FMA on GPUs) must
+      // not decide it (engine/src/camera.cpp intersectBox uses the same margin).
+      float margin = 1e-5f * (1.0f + fabs(loa[a]) + fabs(hia[a]));
+      if (oa[a] < loa[a] - margin || oa[a] > hia[a] + margin) return -2;
       continue;
     }
     float inv = 1.0f / da[a];

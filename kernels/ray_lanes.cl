@@ -96,7 +96,8 @@ inline intN pixel_raysN(__constant RaycastParams* P, int gx, int gy, RayPacket* 
   intN axis = -1, miss = (px >= width) | (py >= height);
   for (int a = 0; a < 3; ++a) {
     intN flat = d[a] == 0.0f;
-    miss |= flat & ((o[a] < lo[a]) | (o[a] > hi[a]));
+    float margin = 1e-5f * (1.0f + fabs(lo[a]) + fabs(hi[a]));  // as intersect_box's
+    miss |= flat & ((o[a] < lo[a] - margin) | (o[a] > hi[a] + margin));
     floatN inv = 1.0f / d[a];
     floatN ta = (lo[a] - o[a]) * inv, tb = (hi[a] - o[a]) * inv;
     floatN near = select(fmin(ta, tb), (floatN)(-INFINITY), flat);

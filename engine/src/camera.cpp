@@ -74,8 +74,10 @@ bool intersectBox(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& lo
   enterAxis = -1;
   for (int a = 0; a < 3; ++a) {
     if (d[a] == 0.0) {
-      // Parallel to this slab: inside it everywhere or nowhere.
-      if (o[a] < lo[a] || o[a] > hi[a]) return false;
+      // Parallel to this slab: inside it everywhere or nowhere. A ray in a face's plane is
+      // inside, within the kernel's margin (kernels/intersect.cl), so float and double agree.
+      double margin = 1e-5 * (1.0 + std::abs(lo[a]) + std::abs(hi[a]));
+      if (o[a] < lo[a] - margin || o[a] > hi[a] + margin) return false;
       continue;
     }
     double inv = 1.0 / d[a];
