@@ -9,13 +9,14 @@
 OLD=${B/bin\/voxray-cli/base\/voxray-cli}
 python3 docs/bench/make_ct512.py build-gpu/gdata/raw/cranium-ct/cranium_256x256x108_s16le.raw \
   /tmp/ct512.raw
+$B bench $V --device gpu --mode mip --sizes 64x48 --frames 2 --no-count 2>&1 | head -1
 for round in 1 2 3; do
   for st in image buffer; do
     for m in "--mode iso --iso 300" "--mode dvr --preset CT-Bone" "--mode mip"; do
       for bin in "$OLD" "$B"; do
-        echo "# round $round, $st, $m, ${bin##* }"
-        $bin bench $V --device gpu $m --storage $st --sizes 1920x1080 --frames 36 --no-count \
-          2>&1 | tail -2
+        row=$($bin bench $V --device gpu $m --storage $st --sizes 1920x1080 --frames 36 \
+          --no-count 2>&1 | sed -n 2p)
+        echo "round $round $st ${bin##* } | $row"
       done
     done
   done
