@@ -6,6 +6,8 @@
 #include <cstring>
 #include <sstream>
 
+#include "voxray/io/error.h"
+
 namespace voxray::detail {
 namespace {
 
@@ -135,8 +137,14 @@ Storage chooseStorage(const ValueStats& stats, const SampleDecoding& decoding) {
   // Smallest power-of-two step that spans [lo, hi] in 65535 steps; fractional values keep
   // one step spare for rounding.
   const double span = roundable ? std::round(hi) - std::round(lo) : hi - lo;
+  if (!std::isfinite(span))  // e.g. doubles near +-1.8e308, or a damaged scaling in a header
+    throw inputError("values " + number(lo) + " to " + number(hi) +
+                     " span more than a double can hold; the data or its scaling is damaged");
   const double steps = roundable ? 65535.0 : 65534.0;
-  int exponent = span > 0 ? int(std::ceil(std::log2(span / steps))) : 0;
+  // Steps finer than 2^-1000 would make 1 / slope infinite (denormal data, a damaged
+  // scaling; span / steps may even round to 0): the exponent stays at -1000 or above.
+  const double wanted = span > 0 ? std::ceil(std::log2(span / steps)) : 0.0;
+  int exponent = int(std::clamp(wanted, -1000.0, 1024.0));
   if (roundable) exponent = std::max(exponent, 0);
   st.slope = std::ldexp(1.0, exponent);
   const bool centred = lo / st.slope >= kStoredMin && hi / st.slope <= kStoredMax;

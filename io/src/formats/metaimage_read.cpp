@@ -3,9 +3,13 @@
 #include <metaImage.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <regex>
+#include <sstream>
 
 #include "voxray/io/error.h"
 
@@ -41,16 +45,61 @@ void checkAnatomicalOrientation(SampleGrid& g, const MetaImage& image) {
                          "); the TransformMatrix is used, as ITK and 3D Slicer do");
 }
 
+// True when NAME is a file beside the header (or a path that exists as given).
+bool dataFileExists(const std::string& path, const std::string& name) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(name, ec) ||
+         std::filesystem::is_regular_file(std::filesystem::path(path).parent_path() / name, ec);
+}
+
+// "NAME%03d.raw MIN MAX STEP": MetaIO formats NAME with the file's own text as a printf
+// format, so only one integer conversion is allowed, and every file must exist.
+void checkPattern(const std::string& path, const std::string& data) {
+  std::istringstream in(data);
+  std::string pattern;
+  long first = 0, last = 0, step = 1;
+  in >> pattern >> first >> last;
+  if (!(in >> step)) step = 1;
+  const std::regex oneInteger("[^%]*%0?[0-9]{0,2}d[^%]*");
+  if (!in.eof() || !std::regex_match(pattern, oneInteger) || step < 1 || last < first ||
+      (last - first) / step > 100000)
+    throw inputError(path + ": its ElementDataFile '" + data +
+                     "' is not a slice pattern Voxray reads (NAME%03d.raw FIRST LAST STEP)");
+  char name[4096];
+  for (long k = first; k <= last; k += step) {
+    std::snprintf(name, sizeof name, pattern.c_str(), int(k));
+    if (!dataFileExists(path, name))
+      throw inputError(path + ": its data file " + name +
+                       " is missing; keep the .mhd and its data files in one folder");
+  }
+}
+
+// "LIST": the slice files are named on the header's following lines, one per line.
+void checkList(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  bool listed = false;
+  while (std::getline(in, line)) {
+    if (!listed) {
+      listed = line.rfind("ElementDataFile", 0) == 0;
+      continue;
+    }
+    const size_t a = line.find_first_not_of(" \t\r"), b = line.find_last_not_of(" \t\r");
+    if (a != std::string::npos && !dataFileExists(path, line.substr(a, b - a + 1)))
+      throw inputError(path + ": its listed data file " + line.substr(a, b - a + 1) +
+                       " is missing; keep the .mhd and its data files in one folder");
+  }
+}
+
 // A detached data file that is not there: said plainly before MetaIO tries it (MetaIO's own
-// failure there is vague and leaks the stream it opened).
+// failure there is vague and leaks the stream it opened, for single files, patterns and lists
+// alike; libFuzzer's leak check found the pattern case).
 void checkDataFile(const std::string& path, const MetaImage& image) {
   const std::string data = image.ElementDataFileName();
-  if (data.empty() || data == "LOCAL" || data == "Local" || data == "local" ||
-      data.find_first_of("% ") != std::string::npos || data.rfind("LIST", 0) == 0)
-    return;  // inline data, or a list or pattern of slice files that MetaIO resolves itself
-  const std::filesystem::path file = std::filesystem::path(path).parent_path() / data;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(data, ec) && !std::filesystem::is_regular_file(file, ec))
+  if (data.empty() || data == "LOCAL" || data == "Local" || data == "local") return;
+  if (data.rfind("LIST", 0) == 0) return checkList(path);
+  if (data.find(' ') != std::string::npos) return checkPattern(path, data);
+  if (!dataFileExists(path, data))
     throw inputError(path + ": its data file " + data +
                      " is missing; keep the .mhd and its data file in one folder");
 }

@@ -1,9 +1,13 @@
 #include "nifti_read.h"
 
+#include "nifti_header_check.h"
+
 #include <nifti2_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 
 #include "voxray/io/error.h"
@@ -64,10 +68,29 @@ void chooseGeometry(SampleGrid& g, const nifti_image& n, const std::string& path
   applyAffine(g, n.qto_xyz, mm, path);  // the library builds it from pixdim when not set
 }
 
+// The library allocates the whole volume before it reads a byte: a header claiming 13 GB in
+// a 600-byte file must be refused first. Deflate expands at most about 1032:1, which bounds
+// what a .nii.gz can hold.
+void checkDataFits(const std::string& path, const nifti_image& n, uint64_t volumeBytes) {
+  std::error_code ec;
+  const uint64_t have = n.iname ? std::filesystem::file_size(n.iname, ec) : 0;
+  if (ec) throw inputError(path + ": its image data file cannot be read (" + ec.message() + ")");
+  const bool gz = nifti_is_gzfile(n.iname) != 0;
+  const uint64_t offset = uint64_t(std::max<int64_t>(n.iname_offset, 0));
+  const uint64_t holds = gz ? have * 1032 : (have > offset ? have - offset : 0);
+  if (volumeBytes > holds)
+    throw inputError(path + ": the header claims " + std::to_string(volumeBytes) +
+                     " bytes of image data, more than the file can hold (" + std::to_string(have) +
+                     " bytes" + (gz ? ", compressed" : "") +
+                     "); the header or the file is damaged or truncated");
+}
+
 }  // namespace
 
 SampleGrid readNifti(const std::string& path) {
   nifti_set_debug_level(0);  // the library would print to stderr; our messages say it all
+  if (const std::string problem = niftiHeaderProblem(path); !problem.empty())
+    throw inputError(path + ": not a readable NIfTI file (" + problem + ")");
   NiftiPtr header(nifti_image_read(path.c_str(), 0));
   if (!header)
     throw inputError(path + ": not a readable NIfTI file (the header is missing, truncated or " +
@@ -98,6 +121,7 @@ SampleGrid readNifti(const std::string& path) {
                          " volumes (4D: time points, phases or diffusion directions); this is " +
                          "volume 1 of " + std::to_string(volumes));
 
+  checkDataFits(path, n, g.dims[0] * g.dims[1] * g.dims[2] * detail::sampleBytes(g.decoding.kind));
   // Only the first 3D volume is read (a 4D file can be many times larger).
   const int64_t first[1] = {0};
   nifti_brick_list bricks{};

@@ -94,7 +94,9 @@ std::string number(double v) {
 // else follows raw input's rule (a power-of-two step, with a warning).
 detail::Storage storageFor(const detail::ValueStats& stats, const detail::SampleDecoding& d) {
   const bool rescaled = d.slope != 1.0 || d.intercept != 0.0;
-  if (isIntegerKind(d.kind) && rescaled && stats.any && !stats.integral) {
+  // A denormal slope (a damaged header) has no finite inverse: chooseStorage picks one.
+  if (isIntegerKind(d.kind) && rescaled && stats.any && !stats.integral &&
+      std::isfinite(1.0 / d.slope)) {
     const double a = (stats.min - d.intercept) / d.slope, b = (stats.max - d.intercept) / d.slope;
     if (std::min(a, b) >= -32768.5 && std::max(a, b) <= 32767.5) {
       detail::Storage keep;
