@@ -136,9 +136,10 @@ bool hasNrrdMagic(const std::string& path) {
 
 SampleGrid readNrrd(const std::string& path) {
   if (!hasNrrdMagic(path))
-    throw inputError(path +
-                     ": not a NRRD file (it does not start with NRRD0001 ... NRRD0009); "
-                     "check the file or its name ending");
+    throw inputError(
+        path +
+        ": not a readable NRRD file (it does not start with a NRRD0001 ... NRRD0009 line); "
+        "check the file or its name ending");
   // The header first: sizes are checked before Teem allocates what they claim.
   std::unique_ptr<Nrrd, NrrdNuke> header(nrrdNew());
   std::unique_ptr<NrrdIoState, IoNix> io(nrrdIoStateNew());

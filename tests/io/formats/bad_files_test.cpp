@@ -1,6 +1,8 @@
 // Damaged and hostile volume files: each gives a voxray::Error (Input) that names the file
 // and says what is wrong, never a crash, a hang or a silently wrong volume.
+#include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include "format_test_support.h"
 #include "nifti_writer.h"
@@ -130,6 +132,25 @@ TEST(FormatsBadFiles, NotNiftiAtAll) {
   EXPECT_THAT(loadError(dir.file("junk.nii")), HasSubstr("not a readable NIfTI file"));
   test::writeBytes(dir.file("junk.nrrd"), std::vector<uint8_t>(400, 'x'));
   EXPECT_THAT(loadError(dir.file("junk.nrrd")), HasSubstr("not a readable NRRD file"));
+}
+
+// The inputs voxray_volume_file_fuzzer broke the readers with (tests/fuzz/regressions/README.md):
+// each now ends in the message for what is wrong, not a crash, a leak or NaN voxels.
+TEST(FormatsBadFiles, FuzzerRegressionsEndInTheirMessages) {
+  const std::filesystem::path dir = VOXRAY_FUZZ_REGRESSIONS;
+  const std::pair<const char*, const char*> cases[] = {
+      {"nifti2-swapped-header-stack-overrun.nii", "not a readable NIfTI file (dim[0] is"},
+      {"nifti2-claims-13gb.nii", "more than the file can hold"},
+      {"nrrd-bad-magic-teem-leak.nrrd", "does not start with a NRRD0001"},
+      {"mhd-pattern-metaio-leak.mha", "is not a slice pattern Voxray reads"}};
+  for (const auto& [name, message] : cases)
+    EXPECT_THAT(loadError((dir / name).string()), HasSubstr(message)) << name;
+  // Denormal scaling: the volume loads, with finite voxels and a usable storage scale.
+  for (const char* name : {"nifti2-denormal-slope.nii", "nifti2-tiny-span.nii"}) {
+    const Volume v = loadVolume((dir / name).string());
+    EXPECT_EQ(v.voxels.size(), v.voxelCount()) << name;
+    EXPECT_TRUE(std::isfinite(1.0 / v.slope) && v.slope > 0.0) << name;
+  }
 }
 
 }  // namespace
