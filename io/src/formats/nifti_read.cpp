@@ -79,10 +79,9 @@ void checkDataFits(const std::string& path, const nifti_image& n, uint64_t volum
   const uint64_t offset = uint64_t(std::max<int64_t>(n.iname_offset, 0));
   const uint64_t holds = gz ? have * 1032 : (have > offset ? have - offset : 0);
   if (volumeBytes > holds)
-    throw inputError(path + ": the header claims " + std::to_string(volumeBytes) +
-                     " bytes of image data, more than the file can hold (" + std::to_string(have) +
-                     " bytes" + (gz ? ", compressed" : "") +
-                     "); the header or the file is damaged or truncated");
+    throw inputError(path + ": the image data is shorter than the header says (it claims " +
+                     std::to_string(volumeBytes) + " bytes; the file has " + std::to_string(have) +
+                     (gz ? ", compressed" : "") + "); the file is damaged or truncated");
 }
 
 }  // namespace
