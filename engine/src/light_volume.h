@@ -39,11 +39,16 @@ class LightVolume {
   double lastMs() const { return lastMs_; }
 
  private:
+  // shadows: the axis to sweep the grid along slice by slice (light_sweep), or -1 where the
+  // light lies within the grid's extent on every axis (then each point marches, light_shadow).
+  int sweepAxis(const RaycastParams& k) const;
+
   glm::ivec3 dims_{0};
   int cell_ = 1;
   size_t points_ = 0;
   double minSpacingMm_ = 1.0, shadowOffsetMm_ = 1.0;
-  cl::Buffer sigma_, grid_;
+  glm::dvec3 spacingMm_{1.0};
+  cl::Buffer sigma_, swept_, grid_;
   std::vector<float> key_;  // what the grid was built for; equal keys skip the work
   int builds_ = 0;
   double lastMs_ = 0.0;

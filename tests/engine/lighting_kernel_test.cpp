@@ -130,19 +130,9 @@ TEST(LightingKernel, ShadowsAndAoMatchTheMonteCarloReferenceOnTheAnalyticScene) 
 }
 
 TEST(LightingKernel, LightBehindAnOpaqueSlabLeavesTheRegionAmbient) {
-  Volume v = test::sdfVolume({32, 32, 48}, [](const glm::dvec3& q) {
-    return std::abs(q.z - 33.0) - 3.0 < 0.0 ? -1.0 : 0.5 + 0.01 * q.z;  // as the reference test
-  });
-  std::vector<ControlPoint> tf = {{-1000.0, {1, 1, 1, 0.05}},
-                                  {-1.0, {1, 1, 1, 0.05}},
-                                  {0.0, {1, 1, 1, 1}},
-                                  {1000.0, {1, 1, 1, 1}}};
-  RenderParams above = test::litParams(Lighting::Shadows, tf, glm::dvec3(0.0, 0.0, 300.0));
-  RenderParams ambientOnly = above;
-  ambientOnly.lighting = Lighting::Phong;
-  ambientOnly.light.diffuse = ambientOnly.light.specular = 0.0;
-  RenderParams below = above;
-  below.light.position = glm::dvec3(0.0, 0.0, -300.0);
+  test::SlabScene scene = test::slabScene();  // as the reference's test
+  const Volume& v = scene.volume;
+  const RenderParams &above = scene.above, &ambientOnly = scene.ambientOnly, &below = scene.below;
   for (bool packets : {true, false}) {
     Image dark = renderKernel(v, above, packets), ambient = renderKernel(v, ambientOnly, packets);
     Image lit = renderKernel(v, below, packets);

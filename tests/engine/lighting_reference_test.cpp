@@ -103,27 +103,15 @@ TEST(MonteCarloReference, SphereAbovePlaneShadowedFraction) {
 }
 
 TEST(MonteCarloReference, LightBehindAnOpaqueSlabLeavesTheRegionAmbient) {
-  // A faint medium (opacity 0.05 per mm) under an opaque slab (z 30..36). With the light
+  // A faint medium under an opaque slab (lighting_scenes.h). With the light
   // above the slab the medium below gets only the ambient term: the image equals the one
   // with diffuse and specular off, within 4 standard errors. With the light below, the
   // same pixels are clearly brighter (so the comparison can fail).
-  Volume v = test::sdfVolume({32, 32, 48}, [](const glm::dvec3& q) {
-    // slab 1000 HU; the medium from -500 HU falling 10 HU per mm upward, so that its
-    // gradient (the shading normal) points down, toward the light below
-    return std::abs(q.z - 33.0) - 3.0 < 0.0 ? -1.0 : 0.5 + 0.01 * q.z;
-  });
-  std::vector<ControlPoint> tf = {{-1000.0, {1, 1, 1, 0.05}},
-                                  {-1.0, {1, 1, 1, 0.05}},
-                                  {0.0, {1, 1, 1, 1}},
-                                  {1000.0, {1, 1, 1, 1}}};
+  test::SlabScene scene = test::slabScene();
+  const Volume& v = scene.volume;
+  const RenderParams &above = scene.above, &ambientOnly = scene.ambientOnly, &below = scene.below;
   MonteCarloOptions o;
   o.samples = 16;
-  RenderParams above = test::litParams(Lighting::Shadows, tf, glm::dvec3(0.0, 0.0, 300.0));
-  RenderParams ambientOnly = above;
-  ambientOnly.lighting = Lighting::Phong;
-  ambientOnly.light.diffuse = ambientOnly.light.specular = 0.0;
-  RenderParams below = above;
-  below.light.position = glm::dvec3(0.0, 0.0, -300.0);
   MonteCarloImage dark = renderMonteCarlo(v, above, o);
   MonteCarloImage ambient = renderMonteCarlo(v, ambientOnly, o);
   MonteCarloImage lit = renderMonteCarlo(v, below, o);

@@ -50,6 +50,24 @@ RenderParams litParams(Lighting lighting, const std::vector<ControlPoint>& tf,
   return p;
 }
 
+SlabScene slabScene() {
+  SlabScene s;
+  s.volume = sdfVolume({32, 32, 48}, [](const glm::dvec3& q) {
+    return std::abs(q.z - 33.0) - 3.0 < 0.0 ? -1.0 : 0.5 + 0.01 * q.z;
+  });
+  std::vector<ControlPoint> tf = {{-1000.0, {1, 1, 1, 0.05}},
+                                  {-1.0, {1, 1, 1, 0.05}},
+                                  {0.0, {1, 1, 1, 1}},
+                                  {1000.0, {1, 1, 1, 1}}};
+  s.above = litParams(Lighting::Shadows, tf, glm::dvec3(0.0, 0.0, 300.0));
+  s.ambientOnly = s.above;
+  s.ambientOnly.lighting = Lighting::Phong;
+  s.ambientOnly.light.diffuse = s.ambientOnly.light.specular = 0.0;
+  s.below = s.above;
+  s.below.light.position = glm::dvec3(0.0, 0.0, -300.0);
+  return s;
+}
+
 double psnr(const std::vector<float>& a, const std::vector<float>& b) {
   double sq = 0.0;
   for (size_t i = 0; i < a.size(); ++i) sq += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);

@@ -27,6 +27,16 @@ glm::dvec3 worldOf(const Volume& v, const glm::dvec3& pv);
 RenderParams litParams(Lighting lighting, const std::vector<ControlPoint>& tf,
                        glm::dvec3 lightWorld, int width = 48, int height = 36);
 
+// A faint medium (opacity 0.05 per mm; -500 HU falling 10 HU per mm upward, so that its
+// gradient, the shading normal, points down) under an opaque slab (z 30..36, 1000 HU),
+// 32x32x48 voxels, with three frames: shadows with the light above the slab, the same with
+// phong's ambient term only, and shadows with the light below.
+struct SlabScene {
+  Volume volume;
+  RenderParams above, ambientOnly, below;
+};
+SlabScene slabScene();
+
 // Peak signal-to-noise ratio of a against b, 0..1 channels (infinite when equal).
 double psnr(const std::vector<float>& a, const std::vector<float>& b);
 // The same for an 8-bit kernel image against a float reference.
