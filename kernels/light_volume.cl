@@ -31,8 +31,24 @@ inline float voxel_mm(__constant RaycastParams* P, float3 du) {
   return length(w);
 }
 
+// Whether any macro cell (CELL voxels, skip.cl) that voxel positions lo..hi reach is
+// occupied for this frame's table (leap 0).
+inline bool block_occupied(__constant RaycastParams* P, __global const uchar* leap, float3 lo,
+                           float3 hi) {
+  int3 a = clamp(convert_int3(floor(lo)) / CELL, (int3)(0), P->cells.xyz - 1);
+  int3 b = clamp(convert_int3(floor(hi)) / CELL + 1, (int3)(0), P->cells.xyz - 1);
+  for (int z = a.z; z <= b.z; ++z)
+    for (int y = a.y; y <= b.y; ++y)
+      for (int x = a.x; x <= b.x; ++x)
+        if (leap[(z * P->cells.y + y) * P->cells.x + x] == 0) return true;
+  return false;
+}
+
+// use_leap: dvr frames with empty-space skipping, whose occupancy (leap) is that of this
+// table's opacities: a cell only transparent voxels reach has sigma 0 without reading them.
 __kernel void light_sigma(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
-                          __global float* sigma, int points) {
+                          __global const uchar* leap, int use_leap, __global float* sigma,
+                          int points) {
   int gid = get_global_id(0);
   if (gid >= points) return;
   float cell = (float)P->light_grid.w;
@@ -43,6 +59,10 @@ __kernel void light_sigma(VOLUME_ARG, __constant RaycastParams* P, __global cons
   float3 base = convert_float3(grid_point(P, gid)) * cell - 0.5f * cell + 0.5f * spacing - shift;
   float3 hi = convert_float3(P->dims.xyz - 1);
   float sum = 0.0f;
+  if (use_leap && !block_occupied(P, leap, base - 1.0f, base + cell + 1.0f)) {
+    sigma[gid] = 0.0f;
+    return;
+  }
   for (int z = 0; z < sub; ++z)
     for (int y = 0; y < sub; ++y)
       for (int x = 0; x < sub; ++x) {

@@ -79,7 +79,8 @@ void LightVolume::prepare(const FrameSetup& s, RaycastParams& k) const {
 
 bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::string& options,
                          int model, const cl::Buffer& params, const cl::Buffer& lut,
-                         const RaycastParams& k, const std::vector<glm::vec4>& table) {
+                         const cl::Buffer* leap, const RaycastParams& k,
+                         const std::vector<glm::vec4>& table) {
   // Everything the grid depends on: the model, where the table sits in stored units and its
   // opacities, the reference step, the clip box, the march; the light for shadows only.
   std::vector<float> key = {float(model),   k.values.s[2],  k.values.s[3],      k.view.s[3],
@@ -99,8 +100,11 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
     cl::NDRange global((points_ + 63) / 64 * 64);
     cl::Kernel sigma = cl.kernel("light_volume.cl", "light_sigma", options);
     cl_uint arg = dev.setArgs(sigma, 0);  // vol, or vol0 .. per slab
-    for (const cl::Buffer* b : {&params, &lut, static_cast<const cl::Buffer*>(&sigma_)})
-      sigma.setArg(arg++, *b);
+    sigma.setArg(arg++, params);
+    sigma.setArg(arg++, lut);
+    sigma.setArg(arg++, leap ? *leap : sigma_);  // unread without use_leap
+    sigma.setArg(arg++, cl_int(leap != nullptr));
+    sigma.setArg(arg++, sigma_);
     sigma.setArg(arg, n);
     cl.queue.enqueueNDRangeKernel(sigma, cl::NullRange, global, cl::NullRange);
     // The optical depth toward the light or along dir (w 1), slice by slice.

@@ -244,22 +244,25 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       m.lutUploaded = s.lut.rgba;  // the asynchronous write reads this copy
       q.enqueueWriteBuffer(m.lutBuffer, CL_FALSE, 0, lutBytes, m.lutUploaded.data());
     }
+    // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
+    bool leaps = p.mode != Mode::Mip || m.packets();
+    if (m.opts.emptySpaceSkipping && leaps)
+      m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
     if (sw.LIGHTING) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
       storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;
       storage.SLABS = sw.SLABS;
-      if (m.light.update(m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false),
-                         sw.LIGHTING, m.paramsBuffer, m.lutBuffer, k, s.lut.rgba)) {
+      if (m.light.update(
+              m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false), sw.LIGHTING,
+              m.paramsBuffer, m.lutBuffer,
+              m.opts.emptySpaceSkipping && p.mode == Mode::Dvr ? &m.space.leap() : nullptr, k,
+              s.lut.rgba)) {
         lightingMs = m.light.lastMs();
         m.lightCopied = false;
       }
       if (!m.lightCopied) m.light.copyInto(m.cl, m.lutBuffer, lutBytes);
       m.lightCopied = true;
     }
-    // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
-    bool leaps = p.mode != Mode::Mip || m.packets();
-    if (m.opts.emptySpaceSkipping && leaps)
-      m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
     if (m.opts.countSamples)
       q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     cl_uint arg = m.device.setArgs(kernel, 0);  // vol, or vol0 .. per slab
