@@ -68,7 +68,7 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
     n_w = world_gradient(VOLUME, P, p_v);
     *count += GRADIENT_TAPS;
   }
-  return shade(c.xyz, n_w, origin_w + t_hit * dir_w, -dir_w, P->light_w, P->light);
+  return shade(c.xyz, n_w, origin_w + t_hit * dir_w, -dir_w, P->light_w, frame_light(lut, P, p_v));
 }
 
 // Front-to-back emission-absorption over segments, each sampled at its midpoint.
@@ -93,7 +93,7 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
     float3 rgb = c.xyz;
     if (SHADING) {
       rgb = shade(rgb, world_gradient(VOLUME, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
-                  P->light);
+                  frame_light(lut, P, p_v));
       *count += GRADIENT_TAPS;
     }
     acc += (1.0f - alpha) * a * rgb;

@@ -112,7 +112,7 @@ inline void iso_packet(PACKET_ARGS) {
       VecN pos = {world[0] + t_hit * world[3], world[1] + t_hit * world[4],
                   world[2] + t_hit * world[5]};
       VecN view = {-world[3], -world[4], -world[5]};
-      surface = shadeN(surface, normal, pos, view, P->light_w, P->light);
+      surface = shade_frameN(lut, P, at, surface, normal, pos, view);
     }
     color.x = select(color.x, surface.x, has_hit);
     color.y = select(color.y, surface.y, has_hit);

@@ -65,7 +65,7 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
   lutN(lut, P, vloadN(0, q->value), c);
   VecN color = {c[0], c[1], c[2]};
   VecN normal = gradient_to_worldN(P, volume_gradientN(vol, P, at));
-  VecN lit = shadeN(color, normal, pos, view, P->light_w, P->light);
+  VecN lit = shade_frameN(lut, P, at, color, normal, pos, view);
   floatN w = vloadN(0, q->weight);
   float add[3][LANES];
   vstoreN(w * lit.x, 0, add[0]);

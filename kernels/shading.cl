@@ -3,6 +3,7 @@
 #define VOXRAY_SHADING_CL
 
 #include "math.cl"
+#include "params.cl"
 
 // s^w for s >= 0 by EXP2(w LOG2(s)), keeping pow's value at s = 0 (0, or 1 for w = 0).
 // A macro so that float (native_) and the floatN lanes of shadeN (math_lanes.cl) share it;
@@ -25,6 +26,39 @@ inline float3 shade(float3 color, float3 normal_w, float3 pos_w, float3 view_w, 
     specular = SPECULAR_POWER(fmax(dot(n, h), 0.0f), k.w);
   }
   return color * (k.x + k.y * diffuse) + (float3)(k.z * specular);
+}
+
+// A grid of n.xyz floats (x fastest), trilinear at grid position q, clamped to the grid.
+inline float grid_trilinear(__global const float* g, int4 n, float3 q) {
+  q = clamp(q, (float3)(0.0f), convert_float3(n.xyz - 1));
+  float3 f = floor(q);
+  int3 i = convert_int3(f), j = min(i + 1, n.xyz - 1);
+  float3 w = q - f;
+  int sy = n.x, sz = n.x * n.y;
+#define LG(x, y, z) g[(z)*sz + (y)*sy + (x)]
+  float c00 = mix(LG(i.x, i.y, i.z), LG(j.x, i.y, i.z), w.x);
+  float c10 = mix(LG(i.x, j.y, i.z), LG(j.x, j.y, i.z), w.x);
+  float c01 = mix(LG(i.x, i.y, j.z), LG(j.x, i.y, j.z), w.x);
+  float c11 = mix(LG(i.x, j.y, j.z), LG(j.x, j.y, j.z), w.x);
+#undef LG
+  return mix(mix(c00, c10, w.y), mix(c01, c11, w.y), w.z);
+}
+
+// LIGHTING 1 or 2: the light grid (light_volume.cl) behind the table's P->dims.w entries, at
+// voxel position p_v (grid point g sits at voxel g * cell).
+inline float light_grid(__global const float4* lut, __constant RaycastParams* P, float3 p_v) {
+  __global const float* g = (__global const float*)(lut + P->dims.w);
+  return grid_trilinear(g, P->light_grid, p_v * P->light_march.z);
+}
+
+// The light coefficients (ambient, diffuse, specular, shininess) of a sample at p_v: the
+// frame's for phong; shadows scale diffuse and specular by the transmittance toward the
+// light, ao the ambient by the ambient visibility. Phong compiles to P->light alone.
+inline float4 frame_light(__global const float4* lut, __constant RaycastParams* P, float3 p_v) {
+  float4 k = P->light;
+  if (LIGHTING == 0) return k;
+  float f = light_grid(lut, P, p_v);
+  return LIGHTING == 1 ? (float4)(k.x, k.y * f, k.z * f, k.w) : (float4)(k.x * f, k.yzw);
 }
 
 inline uchar4 to_rgba8(float3 color) {

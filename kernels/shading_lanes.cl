@@ -29,8 +29,10 @@ inline VecN safe_normalizeN(VecN v, VecN fallback) {
   return n;
 }
 
-// shade for every lane at once: the same formulas.
-inline VecN shadeN(VecN color, VecN normal_w, VecN pos_w, VecN view_w, float4 light_w, float4 k) {
+// shade for every lane at once: the same formulas; the ambient term scaled by ambient_scale,
+// diffuse and specular by light_scale, per lane (frame_light's factors; 1 for phong).
+inline VecN shade_scaledN(VecN color, VecN normal_w, VecN pos_w, VecN view_w, float4 light_w,
+                          float4 k, floatN ambient_scale, floatN light_scale) {
   VecN n = safe_normalizeN(normal_w, view_w);
   floatN flip = select((floatN)(1.0f), (floatN)(-1.0f), dotN(n, view_w) < 0.0f);
   n.x *= flip, n.y *= flip, n.z *= flip;
@@ -46,9 +48,25 @@ inline VecN shadeN(VecN color, VecN normal_w, VecN pos_w, VecN view_w, float4 li
   nh = select(nh, (floatN)(1.0f), no_half);
   floatN specular = SPECULAR_POWER_BY(fmax(nh, 0.0f), k.w, fast_log2N, fast_exp2N);
   specular = select((floatN)(0.0f), specular, diffuse > 0.0f);
-  floatN f = k.x + k.y * diffuse, s = k.z * specular;
+  floatN f = k.x * ambient_scale + k.y * diffuse * light_scale, s = k.z * specular * light_scale;
   VecN out = {color.x * f + s, color.y * f + s, color.z * f + s};
   return out;
+}
+
+inline VecN shadeN(VecN color, VecN normal_w, VecN pos_w, VecN view_w, float4 light_w, float4 k) {
+  return shade_scaledN(color, normal_w, pos_w, view_w, light_w, k, (floatN)(1.0f), (floatN)(1.0f));
+}
+
+// shadeN with the frame's lighting model at voxel positions at (frame_light, lane by lane).
+inline VecN shade_frameN(__global const float4* lut, __constant RaycastParams* P, VecN at,
+                         VecN color, VecN normal_w, VecN pos_w, VecN view_w) {
+  if (LIGHTING == 0) return shadeN(color, normal_w, pos_w, view_w, P->light_w, P->light);
+  float x[LANES], y[LANES], z[LANES], f[LANES];
+  vstoreN(at.x, 0, x), vstoreN(at.y, 0, y), vstoreN(at.z, 0, z);
+  for (int l = 0; l < LANES; ++l) f[l] = light_grid(lut, P, (float3)(x[l], y[l], z[l]));
+  floatN g = vloadN(0, f), one = 1.0f;
+  return shade_scaledN(color, normal_w, pos_w, view_w, P->light_w, P->light,
+                       LIGHTING == 2 ? g : one, LIGHTING == 1 ? g : one);
 }
 
 #endif

@@ -45,3 +45,7 @@ VOXRAY_SWITCH(HIT_OUTPUT, 0, BUILD, "|hits")
 // CPUs: a work-item marches LANES rays in SIMD (march_lanes.cl); LANES 8 (4x2) or 16 (4x4).
 VOXRAY_SWITCH(PACKET, 0, BUILD, "|packet")
 VOXRAY_SWITCH(LANES, 8, BUILD, "")
+// Lighting beyond Phong (issue 15): 0 phong, 1 shadows (diffuse and specular times the
+// transmittance toward the light), 2 ao (ambient times the ambient visibility), both read
+// from the light grid that rides behind the table in its buffer (light_volume.cl).
+VOXRAY_SWITCH(LIGHTING, 0, FRAME, "|shadows|ao")

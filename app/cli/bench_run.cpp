@@ -26,7 +26,7 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
   opts.countSamples = false;
   rc.setOptions(opts);
   Image img;
-  std::vector<double> wall, kernel;
+  std::vector<double> wall, kernel, light;
   std::string variant;
   for (int i = -run.warmup; i < run.frames; ++i) {
     orbitCamera(p.camera, run.orbit, std::max(i, 0), run.frames);
@@ -36,6 +36,7 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
     wall.push_back(s.totalMs);
     variant = s.variant;
     kernel.push_back(s.kernelMs);
+    light.push_back(s.lightingMs);
   }
   BenchRow r;
   r.size = std::to_string(p.width) + "x" + std::to_string(p.height);
@@ -51,6 +52,20 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
   r.fps = 1000.0 / r.medianMs;
   r.kernelMs = median(kernel);
   r.raysPerS = r.pixels / (r.medianMs * 1e-3);
+  r.lighting = toString(p.lighting);
+  r.lightFrameMs = median(light);
+  if (p.lighting != Lighting::Phong) {
+    // The grid alone: the clip box nudged (invisibly) forces a rebuild per frame.
+    std::vector<double> builds;
+    RenderParams q = p;
+    for (int i = 0; i < 3; ++i) {
+      q.clip.hi.x = 1.0 - 1e-6 * (i + 1);
+      FrameStats s;
+      rc.render(q, img, &s);
+      builds.push_back(s.lightingMs);
+    }
+    r.lightBuildMs = median(builds);
+  }
   // Time to the first coarse frame: a quarter of the size each way (1/16 of the rays),
   // as an interactive view shows while the camera moves before refining at rest.
   RenderParams coarse = p;
@@ -86,7 +101,8 @@ BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
 void printHeader(BenchFormat f) {
   if (f == BenchFormat::Csv)
     std::cout << "input,size,mode,gradient,kernel,median_ms,min_ms,max_ms,fps,kernel_ms,"
-                 "mrays_s,gsamples_s,coarse_ms,seed_fps,ratio\n";
+                 "mrays_s,gsamples_s,coarse_ms,seed_fps,ratio,lighting,light_build_ms,"
+                 "light_frame_ms\n";
   else if (f == BenchFormat::Text)
     std::printf("%-10s %-10s %-4s %-13s %-5s %9s %8s %8s %8s %9s %8s %8s %9s %8s %6s\n", "input",
                 "size", "mode", "gradient", "kern", "median_ms", "min_ms", "max_ms", "fps",
@@ -100,7 +116,8 @@ void printRow(BenchFormat f, const BenchRow& r) {
     std::cout << r.input << "," << r.size << "," << r.mode << "," << r.gradient << "," << r.kernel
               << "," << r.medianMs << "," << r.minMs << "," << r.maxMs << "," << r.fps << ","
               << r.kernelMs << "," << r.raysPerS * 1e-6 << "," << r.samplesPerS * 1e-9 << ","
-              << r.coarseMs << "," << r.seedFps << "," << ratio << std::endl;
+              << r.coarseMs << "," << r.seedFps << "," << ratio << "," << r.lighting << ","
+              << r.lightBuildMs << "," << r.lightFrameMs << std::endl;
   else if (f == BenchFormat::Text) {
     std::printf("%-10s %-10s %-4s %-13s %-5s %9.1f %8.1f %8.1f %8.2f %9.1f %8.2f %8.3f %9.1f",
                 r.input.c_str(), r.size.c_str(), r.mode.c_str(), r.gradient.c_str(), kern.c_str(),
@@ -110,6 +127,9 @@ void printRow(BenchFormat f, const BenchRow& r) {
       std::printf(" %8.2f %6.2f\n", r.seedFps, ratio);
     else
       std::printf(" %8s %6s\n", "-", "-");
+    if (r.lighting != "phong")
+      std::printf("%-10s lighting %s: light grid %.1f ms to build, %.1f ms per frame (median)\n",
+                  "", r.lighting.c_str(), r.lightBuildMs, r.lightFrameMs);
     std::fflush(stdout);
   }
 }
@@ -132,6 +152,9 @@ void printFooter(BenchFormat f, const std::vector<BenchRow>& rows, const std::st
                      {"rays_per_s", r.raysPerS},
                      {"samples_per_s", r.samplesPerS},
                      {"seed_fps", r.seedFps},
+                     {"lighting", r.lighting},
+                     {"light_build_ms", r.lightBuildMs},
+                     {"light_frame_ms", r.lightFrameMs},
                      {"device", device}});
     std::cout << jsonText(out) << "\n";
   } else if (f == BenchFormat::Text) {

@@ -18,6 +18,10 @@ struct BenchRow {
   double samplesPerS = 0;  // counted samples of the orbit / their wall time; 0 = not counted
   double seedFps = 0;      // the seed paper's figure for this cell, 0 if none
   double coarseMs = 0;     // a quarter-size frame: what progressive rendering shows first
+  // shadows, ao: the light grid's precomputation (the kernels already built; a median of 3)
+  // and its median cost per timed frame (0 while only the camera moves: a fixed --light).
+  std::string lighting = "phong";
+  double lightBuildMs = 0, lightFrameMs = 0;
 };
 
 struct BenchRun {

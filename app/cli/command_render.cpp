@@ -130,6 +130,8 @@ Run addRenderCommand(CLI::App& app) {
     std::cerr << "rendered " << p.width << "x" << p.height << " " << toString(p.mode) << " on "
               << ctx.device().name << " in " << stats.totalMs << " ms (kernel " << stats.kernelMs
               << " ms, first frame includes the kernel build";
+    if (stats.lightingMs > 0.0)  // shadows, ao: the light grid, inside the total
+      std::cerr << "; " << toString(p.lighting) << " precomputation " << stats.lightingMs << " ms";
     if (rc.slabCount() > 1) std::cerr << "; " << rc.slabCount() << " z slabs";
     std::cerr << ") -> " << o->output << "\n";
     return 0;

@@ -52,6 +52,9 @@ KernelSwitches kernelSwitches(const RenderParams& p) {
   if (p.mode == Mode::Dvr) s.OPACITY_CORRECTION = p.opacityCorrection;
   s.JITTER = p.jitter;
   if (p.mode == Mode::Iso) s.REFINE_STEPS = p.refine;
+  // shadows and ao change the shading only; cinematic is the path tracer's (not a switch).
+  if (s.SHADING && (p.lighting == Lighting::Shadows || p.lighting == Lighting::Ao))
+    s.LIGHTING = int(p.lighting);
   return s;
 }
 

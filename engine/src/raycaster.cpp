@@ -11,6 +11,7 @@
 #include "frame_setup.h"
 #include "kernel_params.h"
 #include "kernel_switches.h"
+#include "light_volume.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -38,7 +39,9 @@ struct Raycaster::Impl {
   size_t outCapacity = 0;
   std::vector<glm::vec4> lutUploaded;  // the table on the device: uploaded on change only
   EmptySpace space;
-  cl::Buffer countBuffer;                     // 64 sample counters (COUNT_SAMPLES)
+  LightVolume light;         // shadows, ao (issue 15): the light grid behind the table
+  bool lightCopied = false;  // the table's buffer holds the current grid
+  cl::Buffer countBuffer;    // 64 sample counters (COUNT_SAMPLES)
   std::vector<glm::vec4>* hitsOut = nullptr;  // set by renderWithHits (HIT_OUTPUT)
   cl::Buffer hitBuffer;
   size_t hitCapacity = 0;
@@ -49,7 +52,8 @@ struct Raycaster::Impl {
   FrameSetup setup;
   std::string setupKey;
 
-  Impl(ClContext& ctx, const Volume& v, VolumeStorage s) : cl(ctx.impl()), volume(v), storage(s) {}
+  Impl(ClContext& ctx, const Volume& v, VolumeStorage s)
+      : cl(ctx.impl()), volume(v), storage(s), light(v) {}
 
   void upload();
   KernelSwitches switches(const RenderParams& p) const;
@@ -163,6 +167,8 @@ const RaycasterOptions& Raycaster::options() const { return impl_->opts; }
 
 int Raycaster::classifications() const { return impl_->space.classifications(); }
 
+int Raycaster::lightingBuilds() const { return impl_->light.builds(); }
+
 Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
   Image out;
   render(params, out, stats);
@@ -171,7 +177,7 @@ Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
 
 void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = std::chrono::steady_clock::now();
-  if (p.lighting != Lighting::Phong)  // the other models arrive with issue 15
+  if (p.lighting == Lighting::Cinematic)  // the path tracer's, not the raycaster's
     throw inputError(std::string("lighting '") + toString(p.lighting) +
                      "' is not available in this build; use --lighting phong");
   Impl& m = *impl_;
@@ -207,6 +213,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   k.cells = {{cells.x, cells.y, cells.z, 0}};
   KernelSwitches sw = m.switches(p);
   packSwitches(sw, k);
+  if (sw.LIGHTING) m.light.prepare(s, k);
   k.slabs = {{m.device.plan().depth, 0, 0, 0}};
 
   size_t pixels = size_t(p.width) * size_t(p.height);
@@ -217,12 +224,15 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   cl::Kernel kernel = m.cl.kernel("raycast.cl", "raycast", opts);
   cl::Event done;
   std::array<cl_uint, 64> counts{};
+  double lightingMs = 0.0;
   clCall([&] {
     size_t lutBytes = s.lut.rgba.size() * sizeof(cl_float4);
-    if (lutBytes > m.lutCapacity) {
-      m.lutBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, lutBytes);
-      m.lutCapacity = lutBytes;
+    size_t bufferBytes = lutBytes + (sw.LIGHTING ? m.light.bytes() : 0);  // the grid behind
+    if (bufferBytes > m.lutCapacity) {
+      m.lutBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, bufferBytes);
+      m.lutCapacity = bufferBytes;
       m.lutUploaded.clear();
+      m.lightCopied = false;
     }
     if (pixels * 4 > m.outCapacity) {
       m.outBuffer = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * 4);
@@ -238,6 +248,21 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
       m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
+    if (sw.LIGHTING) {
+      KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
+      storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;
+      storage.SLABS = sw.SLABS;
+      if (m.light.update(
+              m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false), sw.LIGHTING,
+              m.paramsBuffer, m.lutBuffer,
+              m.opts.emptySpaceSkipping && p.mode == Mode::Dvr ? &m.space.leap() : nullptr, k,
+              s.lut.rgba)) {
+        lightingMs = m.light.lastMs();
+        m.lightCopied = false;
+      }
+      if (!m.lightCopied) m.light.copyInto(m.cl, m.lutBuffer, lutBytes);
+      m.lightCopied = true;
+    }
     if (m.opts.countSamples)
       q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     cl_uint arg = m.device.setArgs(kernel, 0);  // vol, or vol0 .. per slab
@@ -276,6 +301,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   });
   if (stats) {
     stats->variant = opts;
+    stats->lightingMs = lightingMs;
     stats->samples = 0.0;
     for (cl_uint c : counts) stats->samples += double(c);
     try {

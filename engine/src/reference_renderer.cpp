@@ -7,6 +7,7 @@
 
 #include "frame_setup.h"
 #include "kernel_switches.h"
+#include "reference_hooks.h"
 #include "reference_sampling.h"
 #include "voxray/io/parallel.h"
 #include "voxray/io/volume.h"
@@ -49,6 +50,12 @@ struct Marcher {
   const FrameSetup& s;
   bool shading = kernelSwitches(p).SHADING != 0;  // the kernels' rule
   double gradSamples = double(gradientSamples(p.gradient));
+  const ReferenceHooks* hooks = nullptr;
+
+  // The light coefficients at world position w: the frame's, or the Monte Carlo estimator's.
+  LightParams lightAt(const glm::dvec3& w, Rng& rng) const {
+    return hooks ? hooks->light(w, rng) : p.light;
+  }
 
   double sample(const glm::dvec3& pv, PixelOut& o) const {
     o.samples += 1.0;
@@ -70,10 +77,15 @@ struct Marcher {
     if (!intersectBox(ov, dv, s.view.clipLo, s.view.clipHi, t0, t1, axis)) return p.background;
     double step = s.stepMm, len = t1 - t0;
     int n = int(std::clamp(std::ceil(len / step), 0.0, 16777216.0));
+    Rng rng;
     double j = p.jitter ? double(jitterFraction(px, py)) : 0.0;
+    if (hooks) {  // a realisation: its own jitter, uniform in [0, 1)
+      rng.seed(hooks->stream * 0x9E3779B97F4A7C15ull ^ (uint64_t(py) << 32 | uint64_t(px)));
+      j = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+    }
     auto at = [&](int i) { return std::min(t0 + (i + j) * step, t1); };
     glm::dvec3 view = -dw;
-    if (p.mode == Mode::Iso) return iso(ov, dv, ow, dw, at, n, axis, o);
+    if (p.mode == Mode::Iso) return iso(ov, dv, ow, dw, at, n, axis, o, rng);
     if (p.mode == Mode::Dvr) {
       glm::dvec3 acc(0.0);
       double alpha = 0.0;
@@ -89,7 +101,8 @@ struct Marcher {
         double al = p.opacityCorrection ? 1.0 - std::pow(1.0 - c.a, seg / s.referenceStepMm) : c.a;
         glm::dvec3 rgb(c);
         if (shading)
-          rgb = shade(rgb, worldGradient(pv, o), ow + t * dw, view, s.view.lightWorld, p.light);
+          rgb = shade(rgb, worldGradient(pv, o), ow + t * dw, view, s.view.lightWorld,
+                      lightAt(ow + t * dw, rng));
         acc += (1.0 - alpha) * al * rgb;
         alpha += (1.0 - alpha) * al;
         if (alpha >= p.earlyTermination) break;
@@ -103,7 +116,7 @@ struct Marcher {
 
   template <class At>
   glm::dvec3 iso(const glm::dvec3& ov, const glm::dvec3& dv, const glm::dvec3& ow,
-                 const glm::dvec3& dw, At at, int n, int axis, PixelOut& o) const {
+                 const glm::dvec3& dw, At at, int n, int axis, PixelOut& o, Rng& rng) const {
     int hit = -1;
     double tHit = 0.0;
     for (int i = 0; i <= n; ++i) {
@@ -144,7 +157,7 @@ struct Marcher {
     }
     o.normal = safeNormalize(nw, glm::dvec3(0.0));
     if (!shading) return c;
-    return shade(c, nw, ow + tHit * dw, -dw, s.view.lightWorld, p.light);
+    return shade(c, nw, ow + tHit * dw, -dw, s.view.lightWorld, lightAt(ow + tHit * dw, rng));
   }
 };
 
@@ -155,8 +168,14 @@ FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p) {
 }
 
 FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, ReferenceHits* hits) {
+  return renderReferenceFloat(v, p, hits, nullptr);
+}
+
+FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, ReferenceHits* hits,
+                                const ReferenceHooks* hooks) {
   FrameSetup s = makeFrameSetup(v, p);
   Marcher m{v, p, s};
+  m.hooks = hooks;
   FloatImage out;
   out.width = p.width;
   out.height = p.height;

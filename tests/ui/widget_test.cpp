@@ -262,7 +262,7 @@ class WidgetTest : public QObject {
 
   void panelTakesChoicesAndRangesFromSpecs() {
     // Each combo box lists its spec's labels in the enum's order, and picks by them.
-    for (const char* key : {"mode", "gradient", "interp"}) {
+    for (const char* key : {"mode", "gradient", "interp", "lighting"}) {
       const ParamSpec& spec = findRenderParamSpec(key);
       auto* combo = window_->findChild<QComboBox*>(key);
       QVERIFY2(combo, key);

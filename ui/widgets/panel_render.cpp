@@ -144,6 +144,7 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
 
   form->addRow("Gradient", makeParamCombo(m, kAppearance, "gradient"));
   form->addRow("Interpolation", makeParamCombo(m, kAppearance, "interp"));
+  form->addRow("Lighting", makeParamCombo(m, kAppearance, "lighting"));  // issue 15
   return box;
 }
 

@@ -6,6 +6,7 @@
 
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/kernel_variant.h"
+#include "voxray/engine/monte_carlo_reference.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/volume.h"
 
@@ -108,6 +109,14 @@ std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
     if (o.progress) o.progress(scene.name + ": fine reference " + settingLabel(f, h));
     Fine r;
     r.image = renderReferenceFloat(v, f, &r.hits);
+    if (f.lighting == Lighting::Shadows || f.lighting == Lighting::Ao) {
+      // Their ground truth is the Monte Carlo reference (the hits stay the plain one's:
+      // lighting moves no surface). Shadow and occlusion rays at half a voxel.
+      MonteCarloOptions mc;
+      mc.samples = 4;
+      mc.stepMm = 0.5 * h;
+      r.image = renderMonteCarlo(v, f, mc).mean;
+    }
     return fine.emplace(key, std::move(r)).first->second;
   };
 

@@ -43,6 +43,9 @@ struct FrameStats {
   double totalMs = 0.0;   // wall time including upload of parameters and read-back
   double samples = 0.0;   // volume samples taken (0 unless RaycasterOptions::countSamples)
   std::string variant;    // the -D options of the kernel that ran
+  // shadows, ao: wall time of the light grid's precomputation in this frame (0 when the
+  // grid was reused), included in totalMs.
+  double lightingMs = 0.0;
 };
 
 class Raycaster {
@@ -75,6 +78,9 @@ class Raycaster {
   const RaycasterOptions& options() const;
   // Times the occupancy grid was classified (it should follow TF / iso changes only).
   int classifications() const;
+  // Times the shadows / ao light grid was built (it should follow the light, the transfer
+  // function, the clip box and the model only; never a camera move or a phong frame).
+  int lightingBuilds() const;
 
  private:
   struct Impl;

@@ -1,0 +1,164 @@
+#include "light_volume.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "cl_context_impl.h"
+#include "device_volume.h"
+#include "voxray/engine/monte_carlo_reference.h"
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+namespace {
+
+// ao's directions: a Fibonacci sphere (kernels/light_volume.cl: AO_DIRECTIONS).
+constexpr int kAoDirections = 16;
+
+// Direction i of ao in voxels per mm: the world direction through the rows of the frame's
+// gradient matrix, which are worldToVoxel's columns.
+glm::dvec3 aoDirection(const RaycastParams& k, int i) {
+  double z = 1.0 - (2.0 * i + 1.0) / kAoDirections, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  double phi = 2.39996322972865332 * i;
+  glm::dvec3 w(r * std::cos(phi), r * std::sin(phi), z);
+  auto col = [&](const cl_float4& row) { return glm::dvec3(row.s[0], row.s[1], row.s[2]); };
+  return w.x * col(k.grad_x) + w.y * col(k.grad_y) + w.z * col(k.grad_z);
+}
+
+// Sets a kernel's arguments from the first, in order.
+template <class... Args>
+void setArgs(cl::Kernel& kernel, const Args&... args) {
+  cl_uint i = 0;
+  (kernel.setArg(i++, args), ...);
+}
+
+cl_float4 row(const glm::dmat3& m, int r) {
+  return {{float(m[0][r]), float(m[1][r]), float(m[2][r]), 0.0f}};
+}
+
+}  // namespace
+
+LightVolume::LightVolume(const Volume& v) {
+  cell_ = lightGridCell(v);
+  shadowOffsetMm_ = shadowOffsetMm(v);
+  dims_ = (glm::max(v.dims, glm::ivec3(1)) - 1) / cell_ + 1;
+  points_ = size_t(dims_.x) * size_t(dims_.y) * size_t(dims_.z);
+  minSpacingMm_ = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
+  spacingMm_ = v.spacingMm;
+}
+
+int LightVolume::sweepAxis(const RaycastParams& k) const {
+  // Valid along an axis when the light lies a cell or more beyond the grid's end slices
+  // there: then every point's step toward the light crosses to the slice before. Of those,
+  // the axis the light lies farthest along (mm from the centre) keeps the steps steepest.
+  int best = -1;
+  double bestMm = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    double l = k.light_v.s[a], last = double(dims_[a] - 1) * cell_;
+    if (!std::isfinite(l) || (l > -cell_ && l < last + cell_)) continue;
+    double mm = std::abs(l - 0.5 * last) * spacingMm_[a];
+    if (mm > bestMm) best = a, bestMm = mm;
+  }
+  return best;
+}
+
+void LightVolume::prepare(const FrameSetup& s, RaycastParams& k) const {
+  const ViewGeometry& g = s.view;
+  glm::dvec3 lv = g.toVoxel(g.lightWorld);
+  k.light_v = {{float(lv.x), float(lv.y), float(lv.z), 0.0f}};
+  glm::dmat3 toWorld = glm::inverse(g.worldToVoxel);
+  k.to_world_x = row(toWorld, 0);
+  k.to_world_y = row(toWorld, 1);
+  k.to_world_z = row(toWorld, 2);
+  k.light_grid = {{dims_.x, dims_.y, dims_.z, cell_}};
+  // March one cell per step: the extinction grid holds nothing finer.
+  double step = double(cell_) * minSpacingMm_;
+  k.light_march = {{float(kAoRadiusMm), float(step), float(1.0 / cell_), float(shadowOffsetMm_)}};
+}
+
+bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::string& options,
+                         int model, const cl::Buffer& params, const cl::Buffer& lut,
+                         const cl::Buffer* leap, const RaycastParams& k,
+                         const std::vector<glm::vec4>& table) {
+  // Everything the grid depends on: the model, where the table sits in stored units and its
+  // opacities, the reference step, the clip box, the march; the light for shadows only.
+  std::vector<float> key = {float(model),   k.values.s[2],  k.values.s[3],      k.view.s[3],
+                            k.clip_lo.s[0], k.clip_lo.s[1], k.clip_lo.s[2],     k.clip_hi.s[0],
+                            k.clip_hi.s[1], k.clip_hi.s[2], k.light_march.s[0], k.light_march.s[1]};
+  if (model == 1) key.insert(key.end(), {k.light_v.s[0], k.light_v.s[1], k.light_v.s[2]});
+  for (const glm::vec4& e : table) key.push_back(e.a);
+  if (key == key_) return false;
+  auto start = std::chrono::steady_clock::now();
+  clCall([&] {
+    if (!sigma_()) {
+      sigma_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, bytes());
+      grid_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, bytes());
+      swept_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, bytes());
+    }
+    cl_int n = cl_int(points_);
+    cl::NDRange global((points_ + 63) / 64 * 64);
+    cl::Kernel sigma = cl.kernel("light_volume.cl", "light_sigma", options);
+    cl_uint arg = dev.setArgs(sigma, 0);  // vol, or vol0 .. per slab
+    sigma.setArg(arg++, params);
+    sigma.setArg(arg++, lut);
+    sigma.setArg(arg++, leap ? *leap : sigma_);  // unread without use_leap
+    sigma.setArg(arg++, cl_int(leap != nullptr));
+    sigma.setArg(arg++, sigma_);
+    sigma.setArg(arg, n);
+    cl.queue.enqueueNDRangeKernel(sigma, cl::NullRange, global, cl::NullRange);
+    // The optical depth toward the light or along dir (w 1), slice by slice.
+    auto sweep = [&](int axis, int toward, cl_float4 dir) {
+      glm::ivec3 d = dims_;
+      size_t across = size_t(d[(axis + 1) % 3]) * size_t(d[(axis + 2) % 3]);
+      cl::Kernel kernel = cl.kernel("light_volume.cl", "light_sweep", options);
+      setArgs(kernel, params, sigma_, swept_, cl_int(axis), cl_int(0), cl_int(toward), dir);
+      for (int i = 0; i < d[axis]; ++i) {
+        kernel.setArg(4, cl_int(toward > 0 ? d[axis] - 1 - i : i));
+        cl.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange((across + 63) / 64 * 64),
+                                      cl::NullRange);
+      }
+    };
+    // A kernel (params, from, grid, points) over the grid's points.
+    auto perPoint = [&](const char* name, const cl::Buffer& from) {
+      cl::Kernel kernel = cl.kernel("light_volume.cl", name, options);
+      setArgs(kernel, params, from, grid_, n);
+      cl.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global, cl::NullRange);
+    };
+    int axis = model == 1 ? sweepAxis(k) : -1;
+    if (model == 1 && axis >= 0) {
+      sweep(axis, k.light_v.s[axis] > 0.0f ? 1 : -1, {{0.0f, 0.0f, 0.0f, 0.0f}});
+      perPoint("light_offset", swept_);
+    } else if (model == 1) {  // the light within the grid's extent: march per point
+      perPoint("light_shadow", sigma_);
+    } else {
+      cl::Kernel add = cl.kernel("light_volume.cl", "light_ao_add", options);
+      for (int i = 0; i < kAoDirections; ++i) {
+        glm::dvec3 dv = aoDirection(k, i);
+        int a = 0;
+        for (int c = 1; c < 3; ++c)
+          if (std::abs(dv[c]) > std::abs(dv[a])) a = c;
+        sweep(a, dv[a] > 0.0 ? 1 : -1, {{float(dv.x), float(dv.y), float(dv.z), 1.0f}});
+        setArgs(add, params, swept_, grid_,
+                cl_float4{{float(dv.x), float(dv.y), float(dv.z), 0.0f}}, n, cl_int(i == 0));
+        cl.queue.enqueueNDRangeKernel(add, cl::NullRange, global, cl::NullRange);
+      }
+    }
+    cl.queue.finish();  // the build's own time, apart from the frame's
+    return 0;
+  });
+  lastMs_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  key_ = std::move(key);
+  ++builds_;
+  return true;
+}
+
+void LightVolume::copyInto(ContextImpl& cl, const cl::Buffer& buf, size_t offset) const {
+  clCall([&] {
+    cl.queue.enqueueCopyBuffer(grid_, buf, 0, offset, bytes());
+    return 0;
+  });
+}
+
+}  // namespace voxray

@@ -1,0 +1,201 @@
+// The light grid of LIGHTING 1 (shadows) and 2 (ao): one float per grid point on a coarse
+// grid (a point every `cell` voxels, P->light_grid), computed on the device when the light,
+// the table, the clip box or the model changes (engine/src/light_volume.cpp), then read per
+// shaded sample by frame_light (shading.cl). The models are those of the Monte Carlo
+// reference (engine/include/voxray/engine/monte_carlo_reference.h):
+//   sigma    the extinction per mm of the classified volume, -ln(1 - a) / reference step,
+//            averaged over each grid cell (extinction is what integrates along a ray).
+//   shadow   exp(-optical depth) toward the light, from the shadow offset past the grid
+//            point (P->light_march.w: no surface shadows itself) to the light, in the clip box.
+//   ao       the mean over 16 directions (a Fibonacci sphere) of exp(-optical depth) to
+//            P->light_march.x mm, inside the clip box.
+// Both sweep the sigma grid slice by slice (light_sweep); a light within the grid's extent
+// on every axis is marched per point instead (light_shadow, at P->light_march.y mm).
+#include "intersect.cl"
+#include "lut.cl"
+#include "sampling.cl"
+#include "shading.cl"
+
+#define LIGHT_MAX_DEPTH 20.0f  // exp(-20) = 2e-9: the rest of the ray cannot matter
+#define AO_DIRECTIONS 16       // engine/src/light_volume.cpp: kAoDirections
+
+inline int3 grid_point(__constant RaycastParams* P, int gid) {
+  int4 n = P->light_grid;
+  return (int3)(gid % n.x, (gid / n.x) % n.y, gid / (n.x * n.y));
+}
+
+// Length in mm of a step du in voxel coordinates.
+inline float voxel_mm(__constant RaycastParams* P, float3 du) {
+  float3 w =
+      (float3)(dot(P->to_world_x.xyz, du), dot(P->to_world_y.xyz, du), dot(P->to_world_z.xyz, du));
+  return length(w);
+}
+
+// Whether any macro cell (CELL voxels, skip.cl) that voxel positions lo..hi reach is
+// occupied for this frame's table (leap 0).
+inline bool block_occupied(__constant RaycastParams* P, __global const uchar* leap, float3 lo,
+                           float3 hi) {
+  int3 a = clamp(convert_int3(floor(lo)) / CELL, (int3)(0), P->cells.xyz - 1);
+  int3 b = clamp(convert_int3(floor(hi)) / CELL + 1, (int3)(0), P->cells.xyz - 1);
+  for (int z = a.z; z <= b.z; ++z)
+    for (int y = a.y; y <= b.y; ++y)
+      for (int x = a.x; x <= b.x; ++x)
+        if (leap[(z * P->cells.y + y) * P->cells.x + x] == 0) return true;
+  return false;
+}
+
+// use_leap: dvr frames with empty-space skipping, whose occupancy (leap) is that of this
+// table's opacities: a cell only transparent voxels reach has sigma 0 without reading them.
+__kernel void light_sigma(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
+                          __global const uchar* leap, int use_leap, __global float* sigma,
+                          int points) {
+  int gid = get_global_id(0);
+  if (gid >= points) return;
+  float cell = (float)P->light_grid.w;
+  // 2 sub-samples per axis at most: placed between voxels, each trilinear sample is the mean
+  // of a 2x2x2 block, so 8 reads cover a cell of 4 voxels (64 voxel reads cost 8x the time).
+  int sub = min(P->light_grid.w, 2);
+  float spacing = cell / (float)sub, shift = spacing >= 2.0f ? 0.5f : 0.0f;
+  float3 base = convert_float3(grid_point(P, gid)) * cell - 0.5f * cell + 0.5f * spacing - shift;
+  float3 hi = convert_float3(P->dims.xyz - 1);
+  float sum = 0.0f;
+  if (use_leap && !block_occupied(P, leap, base - 1.0f, base + cell + 1.0f)) {
+    sigma[gid] = 0.0f;
+    return;
+  }
+  for (int z = 0; z < sub; ++z)
+    for (int y = 0; y < sub; ++y)
+      for (int x = 0; x < sub; ++x) {
+        float3 p = clamp(base + (float3)(x, y, z) * spacing, (float3)(0.0f), hi);
+        float a = clamp(lut_lookup(lut, P, sample_volume(VOLUME, P, p)).w, 0.0f, 0.999999f);
+        sum += -log(1.0f - a);
+      }
+  // What the clip box removes casts no shadow (at the grid's resolution for the sweep).
+  float3 g = convert_float3(grid_point(P, gid)) * cell;
+  bool kept = all(g >= P->clip_lo.xyz - 0.5f * cell) && all(g <= P->clip_hi.xyz + 0.5f * cell);
+  sigma[gid] = kept ? sum / ((float)(sub * sub * sub) * P->view.w) : 0.0f;
+}
+
+// exp(-optical depth) from voxel position p along dv (voxels per mm), from `skip` to
+// `length` mm.
+inline float grid_transmittance(__constant RaycastParams* P, __global const float* sigma, float3 p,
+                                float3 dv, float skip, float length) {
+  float t0, t1;
+  if (intersect_box(p, dv, P->clip_lo.xyz, P->clip_hi.xyz, &t0, &t1) < -1) return 1.0f;
+  float a = fmax(t0, skip), b = fmin(t1, length);
+  if (!(b > a)) return 1.0f;
+  int n = (int)clamp(ceil((b - a) / P->light_march.y), 1.0f, 65536.0f);
+  float h = (b - a) / (float)n, depth = 0.0f;
+  for (int k = 0; k < n && depth < LIGHT_MAX_DEPTH; ++k)
+    depth += h * grid_trilinear(sigma, P->light_grid,
+                                (p + (a + ((float)k + 0.5f) * h) * dv) * P->light_march.z);
+  return exp(-depth);
+}
+
+// The light seen from voxel position p: its distance in mm (0 where it sits at p or is not
+// finite), *dv voxels per mm toward it. Scaled first: a light far away ("at infinity") must
+// not overflow the length.
+inline float toward_light(__constant RaycastParams* P, float3 p, float3* dv) {
+  float3 du = P->light_v.xyz - p;
+  float m = fmax(fabs(du.x), fmax(fabs(du.y), fabs(du.z)));
+  if (!(m > 1e-6f) || !isfinite(m)) return 0.0f;
+  float len = voxel_mm(P, du / m);
+  *dv = du / (m * len);
+  return m * len;
+}
+
+__kernel void light_shadow(__constant RaycastParams* P, __global const float* sigma,
+                           __global float* out, int points) {
+  int gid = get_global_id(0);
+  if (gid >= points) return;
+  float3 p = convert_float3(grid_point(P, gid)) * (float)P->light_grid.w, dv;
+  float len = toward_light(P, p, &dv);
+  out[gid] = len > 0.0f ? grid_transmittance(P, sigma, p, dv, P->light_march.w, len) : 1.0f;
+}
+
+// The grid's value at grid coordinates (u, v) of slice `slice` across axis `axis`, bilinear,
+// or `outside` beyond the slice's edge (the path toward the light leaves the volume there).
+inline float slice_bilinear(__global const float* t, int4 n, int axis, int slice, float u, float v,
+                            float outside) {
+  int na[3] = {n.x, n.y, n.z};
+  int au = (axis + 1) % 3, av = (axis + 2) % 3;
+  float hu = (float)(na[au] - 1), hv = (float)(na[av] - 1);
+  if (!(u >= -0.5f && u <= hu + 0.5f && v >= -0.5f && v <= hv + 0.5f)) return outside;
+  u = clamp(u, 0.0f, hu), v = clamp(v, 0.0f, hv);
+  int u0 = (int)floor(u), v0 = (int)floor(v);
+  int u1 = min(u0 + 1, na[au] - 1), v1 = min(v0 + 1, na[av] - 1);
+  float fu = u - (float)u0, fv = v - (float)v0;
+  int st[3] = {1, n.x, n.x * n.y};
+  int base = slice * st[axis];
+  float a = t[base + u0 * st[au] + v0 * st[av]], b = t[base + u1 * st[au] + v0 * st[av]];
+  float c = t[base + u0 * st[au] + v1 * st[av]], d = t[base + u1 * st[au] + v1 * st[av]];
+  return mix(mix(a, b, fu), mix(c, d, fu), fv);
+}
+
+// dir.w 0: the transmittance from each grid point to the grid's edge toward the light (which
+// lies beyond the grid along `axis`); dir.w 1: the optical depth along direction dir.xyz
+// (voxels). Slice by slice from that side (one launch per slice, `toward` the side along the
+// axis): a point's value is its neighbour's toward the light (bilinear in the slice before)
+// with the segment's own depth, mean sigma x length, added or attenuating. O(points) instead
+// of a march per point. Transmittance interpolates across a shadow's edge as the grid should
+// (depth would darken every point next to an opaque one); ao needs depth, to subtract the
+// part beyond its radius (light_ao_add). light_offset applies the shadow offset.
+__kernel void light_sweep(__constant RaycastParams* P, __global const float* sigma,
+                          __global float* t, int axis, int slice, int toward, float4 dir) {
+  int4 n = P->light_grid;
+  int na[3] = {n.x, n.y, n.z};
+  int au = (axis + 1) % 3, av = (axis + 2) % 3;
+  int gid = get_global_id(0);
+  if (gid >= na[au] * na[av]) return;
+  int g[3];
+  g[axis] = slice, g[au] = gid % na[au], g[av] = gid / na[au];
+  int index = g[2] * n.x * n.y + g[1] * n.x + g[0];
+  int prev = slice + toward;
+  bool depth = dir.w > 0.0f;
+  if (prev < 0 || prev >= na[axis]) {
+    t[index] = depth ? 0.0f : 1.0f;  // the slice nearest the light: nothing lies before it
+    return;
+  }
+  float cell = (float)n.w;
+  float3 p = (float3)(g[0], g[1], g[2]) * cell;
+  float3 du = dir.w > 0.0f ? dir.xyz : P->light_v.xyz - p;  // a direction, or toward the light
+  float d[3] = {du.x, du.y, du.z};
+  // du / |d_axis| cell: the step to the slice before, in voxels (finite for a light at
+  // "infinity": both factors are scaled by the same huge length).
+  float3 step = du * (cell / fabs(d[axis]));
+  float3 q = (p + step) / cell;  // grid coordinates, on slice prev
+  float qa[3] = {q.x, q.y, q.z};
+  float tq = slice_bilinear(t, n, axis, prev, qa[au], qa[av], depth ? 0.0f : 1.0f);
+  float sq = slice_bilinear(sigma, n, axis, prev, qa[au], qa[av], 0.0f);
+  float segment = 0.5f * (sigma[index] + sq) * voxel_mm(P, step);
+  t[index] = depth ? tq + segment : tq * exp(-segment);
+}
+
+// The swept transmittance, moved by the shadow offset toward the light (the model's T).
+__kernel void light_offset(__constant RaycastParams* P, __global const float* swept,
+                           __global float* out, int points) {
+  int gid = get_global_id(0);
+  if (gid >= points) return;
+  float3 p = convert_float3(grid_point(P, gid)) * (float)P->light_grid.w, dv;
+  float len = toward_light(P, p, &dv), offset = P->light_march.w;
+  out[gid] = len > offset
+                 ? grid_trilinear(swept, P->light_grid, (p + dv * offset) * P->light_march.z)
+                 : 1.0f;
+}
+
+// ao: adds one direction's share to each point's visibility, exp(-depth to R mm), the swept
+// depth to the edge less the depth from R mm on (dir: voxels per mm along the direction).
+// first: the first direction, which writes instead of adding.
+__kernel void light_ao_add(__constant RaycastParams* P, __global const float* swept,
+                           __global float* out, float4 dir, int points, int first) {
+  int gid = get_global_id(0);
+  if (gid >= points) return;
+  float3 p = convert_float3(grid_point(P, gid)) * (float)P->light_grid.w;
+  float3 far = (p + dir.xyz * P->light_march.x) * P->light_march.z;
+  int4 n = P->light_grid;
+  // Beyond the grid nothing occludes: the depth from there on is 0.
+  bool inside = all(far >= -0.5f) && all(far <= convert_float3(n.xyz) - 0.5f);
+  float rest = inside ? grid_trilinear(swept, n, far) : 0.0f;
+  float share = exp(-fmax(swept[gid] - rest, 0.0f)) / (float)AO_DIRECTIONS;
+  out[gid] = first ? share : out[gid] + share;
+}
