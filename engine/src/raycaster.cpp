@@ -11,6 +11,8 @@
 #include "frame_setup.h"
 #include "kernel_params.h"
 #include "kernel_switches.h"
+#include "raycaster_access.h"
+#include "voxray/engine/path_tracer.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -58,6 +60,12 @@ struct Raycaster::Impl {
   int lanes(const RenderParams& p) const;
   cl::NDRange local() const;
   void updateSetup(const RenderParams& p);
+  // The frame's kernel parameters from the current setup; the parameters and table to the
+  // device (the table only when it changed). Shared with the path tracer.
+  RaycastParams frameParams(const RenderParams& p, const KernelSwitches& sw) const;
+  void uploadFrame(const RaycastParams& k);
+  RaycastParams paramsUploaded{};
+  std::unique_ptr<PathTracer> pathTracer;  // lighting cinematic, made on first use
 };
 
 void Raycaster::Impl::updateSetup(const RenderParams& p) {
@@ -71,6 +79,56 @@ void Raycaster::Impl::updateSetup(const RenderParams& p) {
   }
   setup = makeFrameSetup(volume, p);
   setupKey = std::move(key);
+}
+
+RaycastParams Raycaster::Impl::frameParams(const RenderParams& p, const KernelSwitches& sw) const {
+  const Volume& v = volume;
+  const FrameSetup& s = setup;
+  const ViewGeometry& g = s.view;
+  RaycastParams k{};
+  k.eye_w = f4(g.eye);
+  k.forward_w = f4(g.forward);
+  k.right_w = f4(g.right);
+  k.up_w = f4(g.up);
+  k.eye_v = f4(g.toVoxel(g.eye));
+  k.forward_v = f4(g.dirToVoxel(g.forward));
+  k.right_v = f4(g.dirToVoxel(g.right));
+  k.up_v = f4(g.dirToVoxel(g.up));
+  k.clip_lo = f4(g.clipLo);
+  k.clip_hi = f4(g.clipHi);
+  glm::dmat3 gw = g.gradToWorld;  // glm is column-major: row r is (gw[0][r], gw[1][r], gw[2][r])
+  k.grad_x = f4(gw[0][0], gw[1][0], gw[2][0], 0);
+  k.grad_y = f4(gw[0][1], gw[1][1], gw[2][1], 0);
+  k.grad_z = f4(gw[0][2], gw[1][2], gw[2][2], 0);
+  k.light_w = f4(g.lightWorld);
+  k.light = f4(p.light.ambient, p.light.diffuse, p.light.specular, p.light.shininess);
+  k.background = f4(p.background);
+  k.view = f4(g.halfHeight, g.aspect, s.stepMm, s.referenceStepMm);
+  k.values = f4(s.isoLoStored, s.isoHiStored, s.lut.storedMin, s.lut.scale);
+  k.dvr = f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, 0);
+  k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
+  k.image = {{p.width, p.height, 0, 0}};
+  glm::ivec3 cells = space.dims();
+  k.cells = {{cells.x, cells.y, cells.z, 0}};
+  packSwitches(sw, k);
+  k.slabs = {{device.plan().depth, 0, 0, 0}};
+  return k;
+}
+
+void Raycaster::Impl::uploadFrame(const RaycastParams& k) {
+  size_t lutBytes = setup.lut.rgba.size() * sizeof(cl_float4);
+  if (lutBytes > lutCapacity) {
+    lutBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, lutBytes);
+    lutCapacity = lutBytes;
+    lutUploaded.clear();
+  }
+  cl::CommandQueue& q = cl.queue;
+  paramsUploaded = k;  // the asynchronous write reads this copy, which outlives the caller's
+  q.enqueueWriteBuffer(paramsBuffer, CL_FALSE, 0, sizeof(k), &paramsUploaded);
+  if (setup.lut.rgba != lutUploaded) {
+    lutUploaded = setup.lut.rgba;  // the asynchronous write reads this copy
+    q.enqueueWriteBuffer(lutBuffer, CL_FALSE, 0, lutBytes, lutUploaded.data());
+  }
 }
 
 void Raycaster::Impl::upload() {
@@ -171,43 +229,16 @@ Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
 
 void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = std::chrono::steady_clock::now();
+  if (p.lighting == Lighting::Cinematic) return renderCinematic(*this, p, out, stats);
   if (p.lighting != Lighting::Phong)  // the other models arrive with issue 15
     throw inputError(std::string("lighting '") + toString(p.lighting) +
                      "' is not available in this build; use --lighting phong");
   Impl& m = *impl_;
-  const Volume& v = m.volume;
   m.updateSetup(p);
   const FrameSetup& s = m.setup;
-  const ViewGeometry& g = s.view;
 
-  RaycastParams k{};
-  k.eye_w = f4(g.eye);
-  k.forward_w = f4(g.forward);
-  k.right_w = f4(g.right);
-  k.up_w = f4(g.up);
-  k.eye_v = f4(g.toVoxel(g.eye));
-  k.forward_v = f4(g.dirToVoxel(g.forward));
-  k.right_v = f4(g.dirToVoxel(g.right));
-  k.up_v = f4(g.dirToVoxel(g.up));
-  k.clip_lo = f4(g.clipLo);
-  k.clip_hi = f4(g.clipHi);
-  glm::dmat3 gw = g.gradToWorld;  // glm is column-major: row r is (gw[0][r], gw[1][r], gw[2][r])
-  k.grad_x = f4(gw[0][0], gw[1][0], gw[2][0], 0);
-  k.grad_y = f4(gw[0][1], gw[1][1], gw[2][1], 0);
-  k.grad_z = f4(gw[0][2], gw[1][2], gw[2][2], 0);
-  k.light_w = f4(g.lightWorld);
-  k.light = f4(p.light.ambient, p.light.diffuse, p.light.specular, p.light.shininess);
-  k.background = f4(p.background);
-  k.view = f4(g.halfHeight, g.aspect, s.stepMm, s.referenceStepMm);
-  k.values = f4(s.isoLoStored, s.isoHiStored, s.lut.storedMin, s.lut.scale);
-  k.dvr = f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, 0);
-  k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
-  k.image = {{p.width, p.height, 0, 0}};
-  glm::ivec3 cells = m.space.dims();
-  k.cells = {{cells.x, cells.y, cells.z, 0}};
   KernelSwitches sw = m.switches(p);
-  packSwitches(sw, k);
-  k.slabs = {{m.device.plan().depth, 0, 0, 0}};
+  RaycastParams k = m.frameParams(p, sw);
 
   size_t pixels = size_t(p.width) * size_t(p.height);
   out.width = p.width;
@@ -218,22 +249,12 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   cl::Event done;
   std::array<cl_uint, 64> counts{};
   clCall([&] {
-    size_t lutBytes = s.lut.rgba.size() * sizeof(cl_float4);
-    if (lutBytes > m.lutCapacity) {
-      m.lutBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, lutBytes);
-      m.lutCapacity = lutBytes;
-      m.lutUploaded.clear();
-    }
     if (pixels * 4 > m.outCapacity) {
       m.outBuffer = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * 4);
       m.outCapacity = pixels * 4;
     }
     cl::CommandQueue& q = m.cl.queue;
-    q.enqueueWriteBuffer(m.paramsBuffer, CL_FALSE, 0, sizeof(k), &k);
-    if (s.lut.rgba != m.lutUploaded) {
-      m.lutUploaded = s.lut.rgba;  // the asynchronous write reads this copy
-      q.enqueueWriteBuffer(m.lutBuffer, CL_FALSE, 0, lutBytes, m.lutUploaded.data());
-    }
+    m.uploadFrame(k);
     // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
     bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
@@ -288,6 +309,26 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     stats->totalMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
+}
+
+SharedFrame RaycasterAccess::prepare(Raycaster& r, const RenderParams& p) {
+  Raycaster::Impl& m = *r.impl_;
+  m.updateSetup(p);
+  KernelSwitches sw = kernelSwitches(p);  // one ray per work-item: no packets, no leaps
+  sw.STORAGE_IMAGE = m.storage == VolumeStorage::Image3d;
+  sw.SLABS = m.device.plan().count();
+  RaycastParams k = m.frameParams(p, sw);
+  clCall([&] {
+    m.uploadFrame(k);
+    return 0;
+  });
+  return SharedFrame{m.cl, m.volume, m.device, m.setup, m.paramsBuffer, m.lutBuffer, sw};
+}
+
+PathTracer& RaycasterAccess::cinematic(Raycaster& r) {
+  Raycaster::Impl& m = *r.impl_;
+  if (!m.pathTracer) m.pathTracer = std::make_unique<PathTracer>(r);
+  return *m.pathTracer;
 }
 
 Image Raycaster::renderWithHits(const RenderParams& params, std::vector<glm::vec4>& hits,

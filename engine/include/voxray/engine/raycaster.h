@@ -43,6 +43,10 @@ struct FrameStats {
   double totalMs = 0.0;   // wall time including upload of parameters and read-back
   double samples = 0.0;   // volume samples taken (0 unless RaycasterOptions::countSamples)
   std::string variant;    // the -D options of the kernel that ran
+  // lighting cinematic (path_tracer.h): samples per pixel accumulated so far, and the
+  // seconds they took since the last restart.
+  int pathSamples = 0;
+  double pathSeconds = 0.0;
 };
 
 class Raycaster {
@@ -57,6 +61,8 @@ class Raycaster {
   Raycaster(const Raycaster&) = delete;
   Raycaster& operator=(const Raycaster&) = delete;
 
+  // Lighting cinematic adds one pass of path samples per call to the raycaster's own
+  // PathTracer (restarting it when the frame changed) and returns the mean so far.
   Image render(const RenderParams& params, FrameStats* stats = nullptr);
   // The same, into a caller's image (reused between frames: no allocation per frame).
   void render(const RenderParams& params, Image& out, FrameStats* stats = nullptr);
@@ -77,6 +83,7 @@ class Raycaster {
   int classifications() const;
 
  private:
+  friend struct RaycasterAccess;  // the path tracer shares the device volume and setup
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
