@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "path_majorants.h"
 #include "raycaster_access.h"
 #include "voxray/io/volume.h"
 
@@ -48,9 +49,39 @@ struct PathTracer::Impl {
   size_t pixels = 0;
   int width = 0, height = 0;
   ContextImpl* cl = nullptr;  // the raycaster's, known from the first frame
+  PathMajorants majorants;
+  bool volumeScanned = false;
+  Lut majorantLut;  // the table (and step, cap) the grid on the device was made for
+  double majorantStep = 0.0, majorantCap = 0.0;
+  cl::Buffer majorantBuffer;
+
+  // The majorant grid for this frame's table, rebuilt and uploaded when it changed.
+  void updateMajorants(const SharedFrame& f);
 
   explicit Impl(Raycaster& r) : raycaster(r) {}
 };
+
+void PathTracer::Impl::updateMajorants(const SharedFrame& f) {
+  const Lut& lut = f.setup.lut;
+  if (!volumeScanned) {
+    majorants.setVolume(f.volume);
+    volumeScanned = true;
+  } else if (lut.rgba == majorantLut.rgba && lut.storedMin == majorantLut.storedMin &&
+             lut.scale == majorantLut.scale && f.setup.referenceStepMm == majorantStep &&
+             opts.opacityCap == majorantCap) {
+    return;
+  }
+  const std::vector<float>& sigma = majorants.update(lut, f.setup.referenceStepMm, opts.opacityCap);
+  clCall([&] {
+    majorantBuffer = cl::Buffer(f.cl.context, CL_MEM_READ_ONLY, sigma.size() * sizeof(float));
+    f.cl.queue.enqueueWriteBuffer(majorantBuffer, CL_TRUE, 0, sigma.size() * sizeof(float),
+                                  sigma.data());
+    return 0;
+  });
+  majorantLut = lut;
+  majorantStep = f.setup.referenceStepMm;
+  majorantCap = opts.opacityCap;
+}
 
 PathTracer::PathTracer(Raycaster& raycaster) : impl_(std::make_unique<Impl>(raycaster)) {}
 PathTracer::~PathTracer() = default;
@@ -88,6 +119,8 @@ PathProgress PathTracer::accumulate(const RenderParams& params, int samples, Ima
   const FrameSetup& s = f.setup;
   const glm::dmat3& w2v = s.view.worldToVoxel;
   double majorant = pathMajorant(s.lut, s.referenceStepMm, m.opts.opacityCap);
+  m.updateMajorants(f);
+  glm::ivec3 cells = m.majorants.dims();
   cl_float4 lights = {{float(params.light.diffuse), float(params.light.ambient), float(majorant),
                        float(m.opts.opacityCap)}};
   cl_uint4 counters = {{cl_uint(m.opts.seed), cl_uint(m.progress.samples), cl_uint(samples),
@@ -109,6 +142,8 @@ PathProgress PathTracer::accumulate(const RenderParams& params, int samples, Ima
     kernel.setArg(arg++, f.lut);
     kernel.setArg(arg++, m.accum);
     kernel.setArg(arg++, m.out);
+    kernel.setArg(arg++, m.majorantBuffer);
+    kernel.setArg(arg++, cl_int4{{cells.x, cells.y, cells.z, 0}});
     kernel.setArg(arg++, row(w2v, 0));
     kernel.setArg(arg++, row(w2v, 1));
     kernel.setArg(arg++, row(w2v, 2));
