@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <iostream>
 #include <sstream>
 
@@ -121,17 +122,20 @@ std::vector<ConvergencePoint> cinematicConvergence(Raycaster& rc, const RenderPa
   pt.setOptions(f.tracer);
   std::vector<ConvergencePoint> out;
   int batch = 1;
+  double cpu = 0.0;
   for (double checkpoint : checkpoints) {
     // Launches sized from the last so that the checkpoint is not overshot by much.
     while (pt.progress().seconds < checkpoint) {
       PathProgress before = pt.progress();
+      std::clock_t c0 = std::clock();
       PathProgress now = pt.accumulate(p, batch, img);
+      cpu += double(std::clock() - c0) / CLOCKS_PER_SEC;
       double perSample = (now.seconds - before.seconds) / batch;
       double left = checkpoint - now.seconds;
       batch = int(std::clamp(left / std::max(perSample, 1e-9), 1.0, 65536.0));
     }
     ImageError e = compareImages(displayed(pt.radiance()), reference);
-    out.push_back({pt.progress().seconds, pt.progress().samples, e.psnrDb, e.ssim});
+    out.push_back({pt.progress().seconds, cpu, pt.progress().samples, e.psnrDb, e.ssim});
     log << "  " << out.back().seconds << " s: " << out.back().samples << " spp, PSNR " << e.psnrDb
         << " dB\n";
   }
@@ -140,24 +144,27 @@ std::vector<ConvergencePoint> cinematicConvergence(Raycaster& rc, const RenderPa
 
 void printConvergence(const std::vector<ConvergencePoint>& points, const RenderParams& p,
                       const std::string& device, int convergedSpp, bool json) {
-  if (json) {  // one object: the setting, then [seconds, spp, psnr_db, ssim] per checkpoint
+  if (json) {  // one object: the setting, then a row per checkpoint (columns)
     nlohmann::json rows = nlohmann::json::array();
-    for (const auto& c : points) rows.push_back({c.seconds, c.samples, c.psnrDb, c.ssim});
+    for (const auto& c : points)
+      rows.push_back({c.seconds, c.cpuSeconds, c.samples, c.psnrDb, c.ssim});
     std::cout << jsonText({{"device", device},
                            {"size", std::to_string(p.width) + "x" + std::to_string(p.height)},
                            {"converged_spp", convergedSpp},
-                           {"columns", {"seconds", "spp", "psnr_db", "ssim"}},
+                           {"columns", {"seconds", "cpu_s", "spp", "psnr_db", "ssim"}},
                            {"points", rows}})
               << "\n";
     return;
   }
-  std::printf("%10s %8s %8s %7s\n", "seconds", "spp", "psnr_db", "ssim");
+  std::printf("%10s %10s %8s %8s %7s\n", "seconds", "cpu_s", "spp", "psnr_db", "ssim");
   for (const auto& c : points)
-    std::printf("%10.2f %8d %8.2f %7.4f\n", c.seconds, c.samples, c.psnrDb, c.ssim);
+    std::printf("%10.2f %10.2f %8d %8.2f %7.4f\n", c.seconds, c.cpuSeconds, c.samples, c.psnrDb,
+                c.ssim);
   std::printf(
       "device: %s. %dx%d, lighting cinematic: the image after accumulating that long (kernel "
       "launches and read-back) against the same frame at %d spp under another seed, both "
-      "clamped to 0 ... 1 as displayed; PSNR peak 1, SSIM of luma\n",
+      "clamped to 0 ... 1 as displayed; PSNR peak 1, SSIM of luma; cpu_s: this process's CPU "
+      "time over those launches\n",
       device.c_str(), p.width, p.height, convergedSpp);
 }
 

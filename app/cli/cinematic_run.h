@@ -40,6 +40,9 @@ struct ConvergenceFlags {
 
 struct ConvergencePoint {
   double seconds = 0.0;  // accumulating time when measured (kernel launches and reads)
+  // This process's CPU time (all threads) over the same launches: on a CPU device, what
+  // they cost when other load shares the cores (seconds on N idle cores: cpuSeconds / N).
+  double cpuSeconds = 0.0;
   int samples = 0;
   double psnrDb = 0.0, ssim = 0.0;
 };
