@@ -229,7 +229,12 @@ Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
 
 void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = std::chrono::steady_clock::now();
-  if (p.lighting == Lighting::Cinematic) return renderCinematic(*this, p, out, stats);
+  if (p.lighting == Lighting::Cinematic) {
+    if (!impl_->hitsOut) return renderCinematic(*this, p, out, stats);
+    RenderParams phong = p;  // a pick's hits come from the phong frame: paths find no surface
+    phong.lighting = Lighting::Phong;
+    return render(phong, out, stats);
+  }
   if (p.lighting != Lighting::Phong)  // the other models arrive with issue 15
     throw inputError(std::string("lighting '") + toString(p.lighting) +
                      "' is not available in this build; use --lighting phong");

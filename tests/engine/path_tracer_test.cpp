@@ -153,6 +153,15 @@ TEST(PathTracer, RestartsWhenTheFrameChanges) {
   rc.render(p, img, &s);
   EXPECT_EQ(s.pathSamples, 2);
   EXPECT_GT(s.pathSeconds, 0.0);
+  // A pick's frame with hits is the phong frame's (one hit record per pixel) and leaves
+  // the accumulation alone.
+  std::vector<glm::vec4> hits;
+  FrameStats h;
+  rc.renderWithHits(p, hits, &h);
+  EXPECT_EQ(hits.size(), size_t(p.width) * size_t(p.height));
+  EXPECT_EQ(h.pathSamples, 0);
+  rc.render(p, img, &s);
+  EXPECT_EQ(s.pathSamples, 3);
 }
 
 }  // namespace voxray
