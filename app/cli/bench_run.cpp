@@ -111,7 +111,10 @@ void printHeader(BenchFormat f) {
 
 void printRow(BenchFormat f, const BenchRow& r) {
   double ratio = r.seedFps > 0 ? r.fps / r.seedFps : 0.0;
-  std::string kern = r.kernel == "specialised" ? "spec" : r.kernel == "packet" ? "pack" : "uber";
+  std::string kern = r.kernel == "specialised" ? "spec"
+                     : r.kernel == "packet"    ? "pack"
+                     : r.kernel == "path"      ? "path"
+                                               : "uber";
   if (f == BenchFormat::Csv)
     std::cout << r.input << "," << r.size << "," << r.mode << "," << r.gradient << "," << r.kernel
               << "," << r.medianMs << "," << r.minMs << "," << r.maxMs << "," << r.fps << ","

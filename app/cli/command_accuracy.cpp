@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
 #include "json_text.h"
@@ -30,6 +31,8 @@ struct AccuracyOptions {
   std::string syntheticSize = "128x128", device, plot;
   int frames = 3;
   bool json = false, quiet = false;
+  CinematicFlags cinematic;
+  ConvergenceFlags convergence;
 };
 
 // "ml41-iso/r": shape, voxels per axis, mode, and /r for the reduced set of cases.
@@ -152,8 +155,19 @@ Run addAccuracyCommand(CLI::App& app) {
   cmd->add_flag("--json", o->json, "machine-readable output");
   cmd->add_flag("--quiet", o->quiet, "no progress lines on stderr");
   o->flags.add(*cmd, {"step", "interp", "gradient", "refine", "jitter"});
+  o->cinematic.add(*cmd);
+  o->convergence.add(*cmd);
   return [o] {
     ClContext ctx(o->device);
+    if (o->flags.params().lighting == Lighting::Cinematic) {
+      // The path tracer against its own converged image (INPUT, or the phantom), by time.
+      Volume v = o->input.load();
+      Raycaster rc(ctx, v);
+      RenderParams p = o->flags.params();
+      auto points = cinematicConvergence(rc, p, o->cinematic, o->convergence, std::cerr);
+      printConvergence(points, p, ctx.device().name, o->convergence.convergedSpp, o->json);
+      return 0;
+    }
     SweepOptions so;
     so.frames = o->frames;
     if (!o->quiet) so.progress = [](const std::string& s) { std::cerr << "  " << s << "\n"; };

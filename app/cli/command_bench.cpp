@@ -9,6 +9,7 @@
 #include "bench_plot.h"
 #include "bench_run.h"
 #include "bench_seed.h"
+#include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
 #include "render_flags.h"
@@ -31,6 +32,7 @@ struct BenchOptions {
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
   int lanes = 0;
+  CinematicFlags cinematic;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -106,6 +108,7 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_flag("--json", o->json, "machine-readable output");
   cmd->add_flag("--csv", o->csv, "CSV output");
   o->flags.add(*cmd, {"size", "gradient", "azimuth"});
+  o->cinematic.add(*cmd);
   return [o, sizesOption] {
     BenchFormat f = o->json ? BenchFormat::Json : o->csv ? BenchFormat::Csv : BenchFormat::Text;
     o->run.countSamples = !o->noCount;
@@ -132,7 +135,9 @@ Run addBenchCommand(CLI::App& app) {
                                        : RaycasterOptions::Kernel::Specialised;
             ro.packets = kern != "per-ray";
             rc.setOptions(ro);
-            BenchRow r = benchCase(rc, p, o->run);
+            BenchRow r = p.lighting == Lighting::Cinematic
+                             ? benchCinematic(rc, p, o->run, o->cinematic)
+                             : benchCase(rc, p, o->run);
             r.input = name;
             if (rc.slabCount() > 1) r.input += "/" + std::to_string(rc.slabCount()) + "slabs";
             const double* seed = p.gradient == Gradient::Central        ? seedCentral

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
 #include "render_flags.h"
@@ -21,6 +22,7 @@ struct RenderOptions {
   size_t slabMib = 0;
   std::string session, quality, saveSession;
   bool force = false;
+  CinematicFlags cinematic;
 };
 
 // What this command line renders: the session's state (when --session is given) with what
@@ -106,6 +108,7 @@ Run addRenderCommand(CLI::App& app) {
                   "also save this render's input, parameters and quality as a session file");
   cmd->add_flag("--force", o->force, "--save-session may replace an existing file");
   o->flags.add(*cmd);
+  o->cinematic.add(*cmd);
   return [o] {
     const Session s = sessionToRender(*o);
     InputOptions input = o->input;
@@ -125,7 +128,9 @@ Run addRenderCommand(CLI::App& app) {
     ro.maxSlabBytes = o->slabMib << 20;
     rc.setOptions(ro);
     FrameStats stats;
-    Image img = rc.render(p, &stats);
+    Image img = p.lighting == Lighting::Cinematic
+                    ? renderCinematic(rc, p, o->cinematic, std::cerr, stats)
+                    : rc.render(p, &stats);
     writeRenderOutput(o->output, img, v);
     std::cerr << "rendered " << p.width << "x" << p.height << " " << toString(p.mode) << " on "
               << ctx.device().name << " in " << stats.totalMs << " ms (kernel " << stats.kernelMs

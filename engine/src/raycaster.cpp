@@ -12,6 +12,8 @@
 #include "kernel_params.h"
 #include "kernel_switches.h"
 #include "light_volume.h"
+#include "raycaster_access.h"
+#include "voxray/engine/path_tracer.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -62,6 +64,13 @@ struct Raycaster::Impl {
   int lanes(const RenderParams& p) const;
   cl::NDRange local() const;
   void updateSetup(const RenderParams& p);
+  // The frame's kernel parameters from the current setup; the parameters and table to the
+  // device (the table only when it changed). Shared with the path tracer.
+  RaycastParams frameParams(const RenderParams& p, const KernelSwitches& sw) const;
+  // EXTRA: bytes after the table in its buffer (the shadows / ao light grid).
+  void uploadFrame(const RaycastParams& k, size_t extraBytes = 0);
+  RaycastParams paramsUploaded{};
+  std::unique_ptr<PathTracer> pathTracer;  // lighting cinematic, made on first use
 };
 
 void Raycaster::Impl::updateSetup(const RenderParams& p) {
@@ -75,6 +84,57 @@ void Raycaster::Impl::updateSetup(const RenderParams& p) {
   }
   setup = makeFrameSetup(volume, p);
   setupKey = std::move(key);
+}
+
+RaycastParams Raycaster::Impl::frameParams(const RenderParams& p, const KernelSwitches& sw) const {
+  const Volume& v = volume;
+  const FrameSetup& s = setup;
+  const ViewGeometry& g = s.view;
+  RaycastParams k{};
+  k.eye_w = f4(g.eye);
+  k.forward_w = f4(g.forward);
+  k.right_w = f4(g.right);
+  k.up_w = f4(g.up);
+  k.eye_v = f4(g.toVoxel(g.eye));
+  k.forward_v = f4(g.dirToVoxel(g.forward));
+  k.right_v = f4(g.dirToVoxel(g.right));
+  k.up_v = f4(g.dirToVoxel(g.up));
+  k.clip_lo = f4(g.clipLo);
+  k.clip_hi = f4(g.clipHi);
+  glm::dmat3 gw = g.gradToWorld;  // glm is column-major: row r is (gw[0][r], gw[1][r], gw[2][r])
+  k.grad_x = f4(gw[0][0], gw[1][0], gw[2][0], 0);
+  k.grad_y = f4(gw[0][1], gw[1][1], gw[2][1], 0);
+  k.grad_z = f4(gw[0][2], gw[1][2], gw[2][2], 0);
+  k.light_w = f4(g.lightWorld);
+  k.light = f4(p.light.ambient, p.light.diffuse, p.light.specular, p.light.shininess);
+  k.background = f4(p.background);
+  k.view = f4(g.halfHeight, g.aspect, s.stepMm, s.referenceStepMm);
+  k.values = f4(s.isoLoStored, s.isoHiStored, s.lut.storedMin, s.lut.scale);
+  k.dvr = f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, 0);
+  k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
+  k.image = {{p.width, p.height, 0, 0}};
+  glm::ivec3 cells = space.dims();
+  k.cells = {{cells.x, cells.y, cells.z, 0}};
+  packSwitches(sw, k);
+  k.slabs = {{device.plan().depth, 0, 0, 0}};
+  return k;
+}
+
+void Raycaster::Impl::uploadFrame(const RaycastParams& k, size_t extraBytes) {
+  size_t lutBytes = setup.lut.rgba.size() * sizeof(cl_float4);
+  if (lutBytes + extraBytes > lutCapacity) {
+    lutBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, lutBytes + extraBytes);
+    lutCapacity = lutBytes + extraBytes;
+    lutUploaded.clear();
+    lightCopied = false;
+  }
+  cl::CommandQueue& q = cl.queue;
+  paramsUploaded = k;  // the asynchronous write reads this copy, which outlives the caller's
+  q.enqueueWriteBuffer(paramsBuffer, CL_FALSE, 0, sizeof(k), &paramsUploaded);
+  if (setup.lut.rgba != lutUploaded) {
+    lutUploaded = setup.lut.rgba;  // the asynchronous write reads this copy
+    q.enqueueWriteBuffer(lutBuffer, CL_FALSE, 0, lutBytes, lutUploaded.data());
+  }
 }
 
 void Raycaster::Impl::upload() {
@@ -177,44 +237,19 @@ Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
 
 void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = std::chrono::steady_clock::now();
-  if (p.lighting == Lighting::Cinematic)  // the path tracer's, not the raycaster's
-    throw inputError(std::string("lighting '") + toString(p.lighting) +
-                     "' is not available in this build; use --lighting phong");
+  if (p.lighting == Lighting::Cinematic) {
+    if (!impl_->hitsOut) return renderCinematic(*this, p, out, stats);
+    RenderParams phong = p;  // a pick's hits come from the phong frame: paths find no surface
+    phong.lighting = Lighting::Phong;
+    return render(phong, out, stats);
+  }
   Impl& m = *impl_;
-  const Volume& v = m.volume;
   m.updateSetup(p);
   const FrameSetup& s = m.setup;
-  const ViewGeometry& g = s.view;
 
-  RaycastParams k{};
-  k.eye_w = f4(g.eye);
-  k.forward_w = f4(g.forward);
-  k.right_w = f4(g.right);
-  k.up_w = f4(g.up);
-  k.eye_v = f4(g.toVoxel(g.eye));
-  k.forward_v = f4(g.dirToVoxel(g.forward));
-  k.right_v = f4(g.dirToVoxel(g.right));
-  k.up_v = f4(g.dirToVoxel(g.up));
-  k.clip_lo = f4(g.clipLo);
-  k.clip_hi = f4(g.clipHi);
-  glm::dmat3 gw = g.gradToWorld;  // glm is column-major: row r is (gw[0][r], gw[1][r], gw[2][r])
-  k.grad_x = f4(gw[0][0], gw[1][0], gw[2][0], 0);
-  k.grad_y = f4(gw[0][1], gw[1][1], gw[2][1], 0);
-  k.grad_z = f4(gw[0][2], gw[1][2], gw[2][2], 0);
-  k.light_w = f4(g.lightWorld);
-  k.light = f4(p.light.ambient, p.light.diffuse, p.light.specular, p.light.shininess);
-  k.background = f4(p.background);
-  k.view = f4(g.halfHeight, g.aspect, s.stepMm, s.referenceStepMm);
-  k.values = f4(s.isoLoStored, s.isoHiStored, s.lut.storedMin, s.lut.scale);
-  k.dvr = f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, 0);
-  k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
-  k.image = {{p.width, p.height, 0, 0}};
-  glm::ivec3 cells = m.space.dims();
-  k.cells = {{cells.x, cells.y, cells.z, 0}};
   KernelSwitches sw = m.switches(p);
-  packSwitches(sw, k);
+  RaycastParams k = m.frameParams(p, sw);
   if (sw.LIGHTING) m.light.prepare(s, k);
-  k.slabs = {{m.device.plan().depth, 0, 0, 0}};
 
   size_t pixels = size_t(p.width) * size_t(p.height);
   out.width = p.width;
@@ -227,23 +262,12 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   double lightingMs = 0.0;
   clCall([&] {
     size_t lutBytes = s.lut.rgba.size() * sizeof(cl_float4);
-    size_t bufferBytes = lutBytes + (sw.LIGHTING ? m.light.bytes() : 0);  // the grid behind
-    if (bufferBytes > m.lutCapacity) {
-      m.lutBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, bufferBytes);
-      m.lutCapacity = bufferBytes;
-      m.lutUploaded.clear();
-      m.lightCopied = false;
-    }
     if (pixels * 4 > m.outCapacity) {
       m.outBuffer = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * 4);
       m.outCapacity = pixels * 4;
     }
     cl::CommandQueue& q = m.cl.queue;
-    q.enqueueWriteBuffer(m.paramsBuffer, CL_FALSE, 0, sizeof(k), &k);
-    if (s.lut.rgba != m.lutUploaded) {
-      m.lutUploaded = s.lut.rgba;  // the asynchronous write reads this copy
-      q.enqueueWriteBuffer(m.lutBuffer, CL_FALSE, 0, lutBytes, m.lutUploaded.data());
-    }
+    m.uploadFrame(k, sw.LIGHTING ? m.light.bytes() : 0);
     // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
     bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
@@ -314,6 +338,26 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     stats->totalMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
+}
+
+SharedFrame RaycasterAccess::prepare(Raycaster& r, const RenderParams& p) {
+  Raycaster::Impl& m = *r.impl_;
+  m.updateSetup(p);
+  KernelSwitches sw = kernelSwitches(p);  // one ray per work-item: no packets, no leaps
+  sw.STORAGE_IMAGE = m.storage == VolumeStorage::Image3d;
+  sw.SLABS = m.device.plan().count();
+  RaycastParams k = m.frameParams(p, sw);
+  clCall([&] {
+    m.uploadFrame(k);
+    return 0;
+  });
+  return SharedFrame{m.cl, m.volume, m.device, m.setup, m.paramsBuffer, m.lutBuffer, sw};
+}
+
+PathTracer& RaycasterAccess::cinematic(Raycaster& r) {
+  Raycaster::Impl& m = *r.impl_;
+  if (!m.pathTracer) m.pathTracer = std::make_unique<PathTracer>(r);
+  return *m.pathTracer;
 }
 
 Image Raycaster::renderWithHits(const RenderParams& params, std::vector<glm::vec4>& hits,

@@ -16,13 +16,6 @@ namespace voxray {
 
 namespace {
 
-glm::dvec3 safeNormalize(glm::dvec3 v, const glm::dvec3& fallback) {
-  double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-  if (!(m > 1e-6) || std::isinf(m)) return fallback;
-  v /= m;
-  return v / std::sqrt(glm::dot(v, v));
-}
-
 glm::dvec3 shade(const glm::dvec3& color, const glm::dvec3& normal, const glm::dvec3& pos,
                  const glm::dvec3& view, const glm::dvec3& light, const LightParams& k) {
   glm::dvec3 n = safeNormalize(normal, view);
@@ -69,12 +62,11 @@ struct Marcher {
 
   // The jitter placement of kernels/raycast.cl: samples shift forward by j steps.
   glm::dvec3 pixel(int px, int py, PixelOut& o) const {
-    glm::dvec3 ow, dw;
-    s.view.ray(px, py, p.width, p.height, ow, dw);
-    glm::dvec3 ov = s.view.toVoxel(ow), dv = s.view.dirToVoxel(dw);
-    double t0, t1;
-    int axis;
-    if (!intersectBox(ov, dv, s.view.clipLo, s.view.clipHi, t0, t1, axis)) return p.background;
+    PixelRay r;
+    if (!pixelRay(s.view, px, py, p.width, p.height, r)) return p.background;
+    const glm::dvec3 &ow = r.ow, &dw = r.dw, &ov = r.ov, &dv = r.dv;
+    double t0 = r.t0, t1 = r.t1;
+    int axis = r.axis;
     double step = s.stepMm, len = t1 - t0;
     int n = int(std::clamp(std::ceil(len / step), 0.0, 16777216.0));
     Rng rng;

@@ -85,4 +85,18 @@ float jitterFraction(int px, int py) {
   return float(VOXRAY_JITTER_HASH(uint32_t(px), uint32_t(py))) / VOXRAY_JITTER_RANGE;
 }
 
+bool pixelRay(const ViewGeometry& g, int px, int py, int width, int height, PixelRay& r) {
+  g.ray(px, py, width, height, r.ow, r.dw);
+  r.ov = g.toVoxel(r.ow);
+  r.dv = g.dirToVoxel(r.dw);
+  return intersectBox(r.ov, r.dv, g.clipLo, g.clipHi, r.t0, r.t1, r.axis);
+}
+
+glm::dvec3 safeNormalize(glm::dvec3 v, const glm::dvec3& fallback) {
+  double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  if (!(m > 1e-6) || std::isinf(m)) return fallback;
+  v /= m;
+  return v / std::sqrt(glm::dot(v, v));
+}
+
 }  // namespace voxray

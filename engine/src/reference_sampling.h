@@ -3,6 +3,7 @@
 // kernels/gradients.cl (the same clamping, rounding and operator weights).
 #include <glm/glm.hpp>
 
+#include "voxray/engine/camera.h"
 #include "voxray/engine/render_params.h"
 
 namespace voxray {
@@ -18,5 +19,17 @@ int gradientSamples(Gradient op);
 
 // The kernel's per-pixel jitter fraction in [0, 1), bit-exact (kernels/jitter_hash.h).
 float jitterFraction(int px, int py);
+
+// Pixel (px, py)'s ray in world (ow, dw; dw unit) and voxel coordinates (ov, dv per mm),
+// clipped to the clip box [t0, t1] in mm, as kernels/ray.cl's pixel_ray. False on a miss.
+struct PixelRay {
+  glm::dvec3 ow, dw, ov, dv;
+  double t0 = 0.0, t1 = 0.0;
+  int axis = -1;  // the clip box's entry axis, -1 when the eye is inside it
+};
+bool pixelRay(const ViewGeometry& g, int px, int py, int width, int height, PixelRay& r);
+
+// v / |v|, or fallback when v is zero, tiny or not finite (kernels/math.cl's safe_normalize).
+glm::dvec3 safeNormalize(glm::dvec3 v, const glm::dvec3& fallback);
 
 }  // namespace voxray

@@ -78,6 +78,10 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   deviceLabel_->setToolTip("The OpenCL device that renders the 3D view");
   statusBar()->addPermanentWidget(fpsLabel_);
   statusBar()->addPermanentWidget(deviceLabel_);
+  auto* progressLabel = new QLabel;  // lighting cinematic: samples and seconds so far
+  progressLabel->setObjectName("progressLabel");
+  statusBar()->addPermanentWidget(progressLabel);
+  connect(scheduler_, &RenderScheduler::progressChanged, progressLabel, &QLabel::setText);
   connect(scheduler_, &RenderScheduler::statsChanged, this,
           [this](double fps, double ms, bool interactive) {
             stats_ = {true, fps, ms, interactive};

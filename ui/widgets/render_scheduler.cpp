@@ -114,6 +114,11 @@ void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
   }
   emit frameReady(frame);
   emit statsChanged(fps, frame->stats.totalMs, frame->interactive);
+  const auto& s = frame->stats;
+  if (progressive_.onFrame(frame->params, frame->interactive, s.pathSamples, s.pathSeconds) &&
+      !interacting_)
+    requestFrame();  // the same frame again: one more pass of path samples
+  emit progressChanged(QString::fromStdString(progressive_.statusText()));
   if (!frame->interactive && !sawFullFrame_) {
     sawFullFrame_ = true;
     emit firstFullFrame();

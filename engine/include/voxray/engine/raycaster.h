@@ -46,6 +46,10 @@ struct FrameStats {
   // shadows, ao: wall time of the light grid's precomputation in this frame (0 when the
   // grid was reused), included in totalMs.
   double lightingMs = 0.0;
+  // lighting cinematic (path_tracer.h): samples per pixel accumulated so far, and the
+  // seconds they took since the last restart.
+  int pathSamples = 0;
+  double pathSeconds = 0.0;
 };
 
 class Raycaster {
@@ -60,6 +64,8 @@ class Raycaster {
   Raycaster(const Raycaster&) = delete;
   Raycaster& operator=(const Raycaster&) = delete;
 
+  // Lighting cinematic adds one pass of path samples per call to the raycaster's own
+  // PathTracer (restarting it when the frame changed) and returns the mean so far.
   Image render(const RenderParams& params, FrameStats* stats = nullptr);
   // The same, into a caller's image (reused between frames: no allocation per frame).
   void render(const RenderParams& params, Image& out, FrameStats* stats = nullptr);
@@ -83,6 +89,7 @@ class Raycaster {
   int lightingBuilds() const;
 
  private:
+  friend struct RaycasterAccess;  // the path tracer shares the device volume and setup
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
