@@ -1,8 +1,9 @@
 // The dvr pick (Raycaster::renderWithHits in dvr mode): each pixel's point where the
 // accumulated opacity first reaches 0.5 (kernels/hit_output.cl), from the CPU packets
-// (march_lanes.cl) and from one ray per work-item (the GPUs' kernel), against the analytic
-// answer: the same point on the same ray, found by integrating the transfer function of
-// the analytic field (not of the voxels) in steps of 1e-3 voxel.
+// (march_lanes.cl) and from one ray per work-item (the GPUs' kernel; on a buffer and on
+// image3d_t), against the analytic answer: the same point on the same ray, found by
+// integrating the transfer function of the analytic field (not of the voxels) in steps of
+// 1e-3 voxel.
 //
 // The phantom is the synthetic sphere (48^3, 1 mm voxels, radius R = 16.45 voxels, value
 // 100 HU per voxel of depth inside the surface), seen from the front left above in
@@ -115,46 +116,56 @@ PickCheck checkPicks(const Volume& v, const RenderParams& p, const std::vector<g
   return c;
 }
 
-// Renders with hits from the packets (the CPU default) and from one ray per work-item;
-// checks that the hit output changes no pixel and that the variant is the one meant.
-std::vector<std::vector<glm::vec4>> renderBothKernels(const Volume& v, const RenderParams& p) {
+// The kernels renderKernels runs, in its order.
+const char* const kKernels[] = {"packets", "one ray per work-item", "one ray, image3d_t"};
+
+// Renders with hits from the packets (the CPU default), from one ray per work-item on a
+// buffer, and from one ray per work-item on image3d_t (the GPUs' kernel and storage, here on
+// PoCL); checks that the hit output changes no pixel and that the variant is the one meant.
+std::vector<std::vector<glm::vec4>> renderKernels(const Volume& v, const RenderParams& p) {
   ClContext ctx("cpu");
-  Raycaster rc(ctx, v, VolumeStorage::Buffer);
   std::vector<std::vector<glm::vec4>> out;
-  for (bool packets : {true, false}) {
-    RaycasterOptions o;
-    o.packets = packets;
-    rc.setOptions(o);
-    std::vector<glm::vec4> hits;
-    FrameStats stats;
-    const Image img = rc.renderWithHits(p, hits, &stats);
-    EXPECT_NE(stats.variant.find("HIT_OUTPUT=1"), std::string::npos) << stats.variant;
-    EXPECT_EQ(stats.variant.find("PACKET=1") != std::string::npos, packets) << stats.variant;
-    EXPECT_EQ(rc.render(p).rgba, img.rgba) << "packets " << packets;
-    EXPECT_EQ(hits.size(), size_t(p.width) * size_t(p.height));
-    out.push_back(std::move(hits));
+  for (VolumeStorage storage : {VolumeStorage::Buffer, VolumeStorage::Image3d}) {
+    Raycaster rc(ctx, v, storage);
+    for (bool packets : {true, false}) {
+      if (packets && storage == VolumeStorage::Image3d) continue;  // packets read buffers
+      RaycasterOptions o;
+      o.packets = packets;
+      rc.setOptions(o);
+      std::vector<glm::vec4> hits;
+      FrameStats stats;
+      const Image img = rc.renderWithHits(p, hits, &stats);
+      SCOPED_TRACE(stats.variant);
+      EXPECT_NE(stats.variant.find("HIT_OUTPUT=1"), std::string::npos);
+      EXPECT_EQ(stats.variant.find("PACKET=1") != std::string::npos, packets);
+      EXPECT_EQ(stats.variant.find("STORAGE_IMAGE=1") != std::string::npos,
+                storage == VolumeStorage::Image3d);
+      EXPECT_EQ(rc.render(p).rgba, img.rgba);
+      EXPECT_EQ(hits.size(), size_t(p.width) * size_t(p.height));
+      out.push_back(std::move(hits));
+    }
   }
   return out;
 }
 
-// Both kernels' picks of P's frame against the analytic ones (checkPicks: every ray that
+// Each kernel's picks of P's frame against the analytic ones (checkPicks: every ray that
 // meets the surface within 37 degrees of its normal picks, within 0.05 voxel; no pick
 // without an analytic one), and the centre pixel's ray, nearly along the normal, picks
 // CENTREDEPTH voxels inside the surface.
 void expectAnalyticPicks(const RenderParams& p, double centreDepth) {
   const Volume v = makeSyntheticVolume(kSphere);
-  const auto both = renderBothKernels(v, p);
-  for (size_t k = 0; k < both.size(); ++k) {
-    SCOPED_TRACE(k == 0 ? "packets" : "one ray per work-item");
-    const PickCheck c = checkPicks(v, p, both[k]);
+  const auto kernels = renderKernels(v, p);
+  for (size_t k = 0; k < kernels.size(); ++k) {
+    SCOPED_TRACE(kKernels[k]);
+    const PickCheck c = checkPicks(v, p, kernels[k]);
     EXPECT_GT(c.expected, 300);  // 348 of the 96 x 72 pixels
     EXPECT_EQ(c.picked, c.expected);
     EXPECT_EQ(c.spurious, 0);
     EXPECT_EQ(c.nonFinite, 0);
     EXPECT_LT(c.worst, 0.05);
-    ::testing::Test::RecordProperty(k == 0 ? "packets_worst_voxels" : "per_ray_worst_voxels",
+    ::testing::Test::RecordProperty(std::string(kKernels[k]) + " worst voxels",
                                     std::to_string(c.worst));
-    const glm::vec4 mid = both[k][size_t(p.height / 2) * size_t(p.width) + size_t(p.width / 2)];
+    const glm::vec4 mid = kernels[k][size_t(p.height / 2) * size_t(p.width) + size_t(p.width / 2)];
     ASSERT_GE(mid.w, 0.0F);
     EXPECT_NEAR(glm::distance(glm::dvec3(mid), kCentre), kRadius - centreDepth, 0.05);
   }
@@ -164,7 +175,7 @@ void expectAnalyticPicks(const RenderParams& p, double centreDepth) {
 // opacity reaches 0.5 where the integral of -ln(1 - x) over the depth x equals ln 2, at
 // x = 0.910 voxel for a ray along the normal, so the picked points of central rays lie on
 // the sphere of radius R - 0.910; obliquely the point lies on the ray at the same optical
-// depth, shallower (analyticPick). Measured worst: 0.045 voxel, both kernels, at the most
+// depth, shallower (analyticPick). Measured worst: 0.045 voxel, every kernel, at the most
 // oblique rays counted, the picked point deeper than the truth (half-voxel steps sample the
 // ramp's rising opacity at segment midpoints, so a little late).
 TEST(DvrPick, OpaqueSphereWithinFiveHundredthsOfAVoxel) {
@@ -188,8 +199,8 @@ TEST(DvrPick, RayBelowHalfOpacityHasNoHit) {
   const Volume v = makeSyntheticVolume(kSphere);
   const RenderParams p = dvrParams(
       opacityRamp({{0.0, 0.0}, {100.0, 0.015}, {1200.0, 0.015}, {1200.0, 0.0}, {1700.0, 0.0}}));
-  const auto both = renderBothKernels(v, p);
-  for (const auto& hits : both) {
+  const auto kernels = renderKernels(v, p);
+  for (const auto& hits : kernels) {
     int none = 0;
     for (const glm::vec4& h : hits) none += h == glm::vec4(0.0F, 0.0F, 0.0F, -1.0F);
     EXPECT_EQ(none, p.width * p.height);
@@ -207,12 +218,12 @@ TEST(DvrPick, RayBelowHalfOpacityHasNoHit) {
   EXPECT_GT(int(img.rgba[mid]), 40);
 }
 
-// mip has no pick: every pixel says so, from both kernels.
+// mip has no pick: every pixel says so, from every kernel.
 TEST(DvrPick, MipFramesHaveNoHits) {
   const Volume v = makeSyntheticVolume(kSphere);
   RenderParams p = dvrParams({});
   p.mode = Mode::Mip;
-  for (const auto& hits : renderBothKernels(v, p))
+  for (const auto& hits : renderKernels(v, p))
     for (const glm::vec4& h : hits) ASSERT_EQ(h, glm::vec4(0.0F, 0.0F, 0.0F, -1.0F));
 }
 
