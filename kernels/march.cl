@@ -10,6 +10,9 @@
 #include "sampling.cl"
 #include "shading.cl"
 #include "skip.cl"
+#if HIT_OUTPUT
+#include "hit_output.cl"
+#endif
 
 // Normal at p (voxel coordinates) in world space; not normalised.
 inline float3 world_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
@@ -72,8 +75,15 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
 }
 
 // Front-to-back emission-absorption over segments, each sampled at its midpoint.
+// *hit_out (HIT_OUTPUT variants): where the accumulated opacity reaches DVR_HIT_ALPHA
+// (hit_output.cl); untouched where it does not.
 inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
-                        CELL_ARGS, const Ray* r, float3 origin_w, float3 dir_w, uint* count) {
+                        CELL_ARGS, const Ray* r, float3 origin_w, float3 dir_w, uint* count
+#if HIT_OUTPUT
+                        ,
+                        float4* hit_out
+#endif
+) {
   float3 acc = (float3)(0.0f);
   float alpha = 0.0f;
   for (int i = 0, check = 0; i <= r->n; ++i) {
@@ -97,7 +107,13 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
       *count += GRADIENT_TAPS;
     }
     acc += (1.0f - alpha) * a * rgb;
+#if HIT_OUTPUT
+    float before = alpha;
+#endif
     alpha += (1.0f - alpha) * a;
+#if HIT_OUTPUT
+    dvr_hit_crossing(before, alpha, s, r, hit_out);
+#endif
     if (alpha >= P->dvr.z) break;
   }
   return acc + (1.0f - alpha) * P->background.xyz;

@@ -14,11 +14,20 @@
 #include "ray_lanes.cl"
 #include "shade_queue.cl"
 #include "skip_lanes.cl"
+#if HIT_OUTPUT
+#include "hit_output_lanes.cl"
+// The kernel's hits, passed on to iso and dvr packets (PACKET_ARGS).
+#define PACKET_HITS , __global float4* hits
+#define PACKET_HITS_ARG , hits
+#else
+#define PACKET_HITS
+#define PACKET_HITS_ARG
+#endif
 
 // What iso and dvr packets take: the kernel's arguments and the packet's place (gx, gy).
 #define PACKET_ARGS                                                                            \
   __global const short *restrict vol, __constant RaycastParams *P, __global const float4 *lut, \
-      __global uchar4 *out, CELL_ARGS, __global uint *count, int gx, int gy
+      __global uchar4 *out, CELL_ARGS, __global uint *count, int gx, int gy PACKET_HITS
 
 // Writes the packet's pixels that lie inside the image, and adds its samples to a counter.
 inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __global uint* count,
@@ -118,6 +127,10 @@ inline void iso_packet(PACKET_ARGS) {
     color.y = select(color.y, surface.y, has_hit);
     color.z = select(color.z, surface.z, has_hit);
   }
+#if HIT_OUTPUT  // march_iso's w: 1 a crossing, 0 the first sample, -1 none
+  floatN hit_w = select(select((floatN)(0.0f), (floatN)(1.0f), hit > 0), (floatN)(-1.0f), hit < 0);
+  write_hits_packet(P, hits, gx, gy, hx, hy, hz, hit_w);
+#endif
   write_packet(P, out, count, gx, gy, color, samples);
 }
 
@@ -163,6 +176,10 @@ inline void dvr_packet(PACKET_ARGS) {
   intN active = r.n >= 0;
   ShadeQueue queue;
   if (SHADING) shade_queue_init(&queue, &r, world);
+#if HIT_OUTPUT
+  floatN t_hit = 0.0f;
+  intN found = 0;
+#endif
   while (any(active)) {
     if (ESS) {
       // Waiting for every lane took 3 % less CPU time than iso's half (CThead, VTK's
@@ -183,9 +200,16 @@ inline void dvr_packet(PACKET_ARGS) {
       else
         lutN(lut, P, value[k], c[k]);
     }
-    for (int k = 0; k < DVR_BATCH; ++k)
+    for (int k = 0; k < DVR_BATCH; ++k) {
+#if HIT_OUTPUT
+      floatN before = alpha;
+#endif
       dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
                      sb[k] - sa[k], t[k], value[k], c[k]);
+#if HIT_OUTPUT
+      dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
+#endif
+    }
     i += DVR_BATCH;
     active &= i <= r.n;
   }
@@ -196,6 +220,10 @@ inline void dvr_packet(PACKET_ARGS) {
   VecN color = {acc[0] + (1.0f - alpha) * P->background.x,
                 acc[1] + (1.0f - alpha) * P->background.y,
                 acc[2] + (1.0f - alpha) * P->background.z};
+#if HIT_OUTPUT
+  write_hits_packet(P, hits, gx, gy, r.ox + t_hit * r.dx, r.oy + t_hit * r.dy, r.oz + t_hit * r.dz,
+                    select((floatN)(-1.0f), (floatN)(1.0f), found));
+#endif
   write_packet(P, out, count, gx, gy, color, samples);
 }
 

@@ -34,11 +34,17 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
 ) {
 #if PACKET
   if (MODE == 0)
-    iso_packet(vol, P, lut, out, leap, range, count, get_global_id(0), get_global_id(1));
+    iso_packet(vol, P, lut, out, leap, range, count, get_global_id(0),
+               get_global_id(1) PACKET_HITS_ARG);
   else if (MODE == 1)
-    dvr_packet(vol, P, lut, out, leap, range, count, get_global_id(0), get_global_id(1));
+    dvr_packet(vol, P, lut, out, leap, range, count, get_global_id(0),
+               get_global_id(1) PACKET_HITS_ARG);
   else
     mip_packet(vol, P, out, leap, range, count, get_global_id(0), get_global_id(1));
+#if HIT_OUTPUT
+  if (MODE == 2)  // no pixel of a mip frame has a hit
+    write_hits_packet(P, hits, get_global_id(0), get_global_id(1), 0.0f, 0.0f, 0.0f, -1.0f);
+#endif
 #else
   int px = get_global_id(0), py = get_global_id(1);
   int width = P->image.x, height = P->image.y;
@@ -53,7 +59,12 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
     if (MODE == 0)
       color = march_iso(VOLUME, P, lut, leap, range, &r, origin_w, dir_w, axis, &samples, &hit);
     else if (MODE == 1)
-      color = march_dvr(VOLUME, P, lut, leap, range, &r, origin_w, dir_w, &samples);
+      color = march_dvr(VOLUME, P, lut, leap, range, &r, origin_w, dir_w, &samples
+#if HIT_OUTPUT
+                        ,
+                        &hit
+#endif
+      );
     else
       color = march_mip(VOLUME, P, leap, range, &r, &samples);
   }

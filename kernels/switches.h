@@ -40,7 +40,7 @@ VOXRAY_SWITCH(STORAGE_IMAGE, 0, BUILD, "|image")
 VOXRAY_SWITCH(SLABS, 1, BUILD, "")
 // Each ray's samples added to one of 64 counters (FrameStats::samples).
 VOXRAY_SWITCH(COUNT_SAMPLES, 0, BUILD, "|counted")
-// iso, one ray per work-item: each pixel's hit point to an extra output (march_iso).
+// iso and dvr: each pixel's hit point to an extra output (march_iso, hit_output.cl).
 VOXRAY_SWITCH(HIT_OUTPUT, 0, BUILD, "|hits")
 // CPUs: a work-item marches LANES rays in SIMD (march_lanes.cl); LANES 8 (4x2) or 16 (4x4).
 VOXRAY_SWITCH(PACKET, 0, BUILD, "|packet")

@@ -172,7 +172,7 @@ std::string Raycaster::Impl::options(const KernelSwitches& s) const {
 
 bool Raycaster::Impl::packets() const {
   // march_lanes.cl reads one volume argument and indexes voxels with int.
-  return opts.packets && !hitsOut && opts.kernel == RaycasterOptions::Kernel::Specialised &&
+  return opts.packets && opts.kernel == RaycasterOptions::Kernel::Specialised &&
          storage == VolumeStorage::Buffer && !cl.info.isGpu && device.plan().count() == 1 &&
          volume.voxelCount() < (size_t(1) << 31);
 }

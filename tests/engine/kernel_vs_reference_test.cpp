@@ -154,7 +154,8 @@ namespace voxray {
 TEST(KernelVsReferenceExtras, KernelHitPointsMatchTheReferences) {
   // The HIT_OUTPUT variant's hit points against the reference renderer's, on the sphere
   // distance field (64^3, step 0.5, 8 bisections): the same crossing to float precision,
-  // and the same error against the analytic surface.
+  // and the same error against the analytic surface; from the CPU packets and from one ray
+  // per work-item.
   SyntheticSpec spec{SyntheticShape::Sphere, 64};
   Volume v = makeSyntheticVolume(spec);
   RenderParams p;
@@ -169,39 +170,43 @@ TEST(KernelVsReferenceExtras, KernelHitPointsMatchTheReferences) {
   Raycaster rc(context(), v, VolumeStorage::Buffer);
   std::vector<glm::vec4> raw;
   FrameStats stats;
-  Image img = rc.renderWithHits(p, raw, &stats);
-  EXPECT_NE(stats.variant.find("HIT_OUTPUT=1"), std::string::npos) << stats.variant;
-  // The extra output changes no pixel of the kernel it extends, one ray per work-item
-  // (CPU packets take their own polynomial log2/exp2 for the specular: within a level,
-  // empty_space_test.cpp).
-  RaycasterOptions perRay;
-  perRay.packets = false;
-  rc.setOptions(perRay);
-  EXPECT_EQ(rc.render(p).rgba, img.rgba);
-  ASSERT_EQ(raw.size(), size_t(64 * 64));
-  ReferenceHits kernel = kernelHits(raw, p.width, p.height), ref;
+  Image img;
+  ReferenceHits ref;
   renderReferenceFloat(v, p, &ref);
-  int both = 0, kindDiffers = 0;
-  double worst = 0.0;
-  for (size_t i = 0; i < raw.size(); ++i) {
-    kindDiffers += kernel.kind[i] != ref.kind[i];
-    if (kernel.kind[i] != HitKind::Surface || ref.kind[i] != HitKind::Surface) continue;
-    ++both;
-    worst = std::max(worst, glm::distance(kernel.voxel[i], ref.voxel[i]));
+  for (bool packets : {true, false}) {
+    SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
+    RaycasterOptions o;
+    o.packets = packets;
+    rc.setOptions(o);
+    img = rc.renderWithHits(p, raw, &stats);
+    EXPECT_NE(stats.variant.find("HIT_OUTPUT=1"), std::string::npos) << stats.variant;
+    // The extra output changes no pixel of the kernel it extends.
+    EXPECT_EQ(rc.render(p).rgba, img.rgba);
+    ASSERT_EQ(raw.size(), size_t(64 * 64));
+    ReferenceHits kernel = kernelHits(raw, p.width, p.height);
+    int both = 0, kindDiffers = 0;
+    double worst = 0.0;
+    for (size_t i = 0; i < raw.size(); ++i) {
+      kindDiffers += kernel.kind[i] != ref.kind[i];
+      if (kernel.kind[i] != HitKind::Surface || ref.kind[i] != HitKind::Surface) continue;
+      ++both;
+      worst = std::max(worst, glm::distance(kernel.voxel[i], ref.voxel[i]));
+    }
+    EXPECT_GT(both, 300);       // 432 of 64 x 64 see the sphere
+    EXPECT_LE(kindDiffers, 2);  // float vs double may flip a grazing ray
+    // A last bisection decided the other way moves the hit by step / 2^8 = 0.002 voxel.
+    EXPECT_LT(worst, 0.0025);
+    double kernelErr = surfaceError(kernel, AnalyticField{spec}).positionVoxels.mean;
+    double refErr = surfaceError(ref, AnalyticField{spec}).positionVoxels.mean;
+    std::string kind = packets ? "packets_" : "";
+    RecordProperty(kind + "kernel_surface_mean", std::to_string(kernelErr));
+    RecordProperty("reference_surface_mean", std::to_string(refErr));
+    RecordProperty(kind + "worst_hit_distance", std::to_string(worst));
+    EXPECT_NEAR(kernelErr, refErr, 0.05 * refErr);
+    EXPECT_LT(kernelErr, 0.02);
   }
-  EXPECT_GT(both, 300);       // 432 of 64 x 64 see the sphere
-  EXPECT_LE(kindDiffers, 2);  // float vs double may flip a grazing ray
-  // A last bisection decided the other way moves the hit by step / 2^8 = 0.002 voxel.
-  EXPECT_LT(worst, 0.0025);
-  double kernelErr = surfaceError(kernel, AnalyticField{spec}).positionVoxels.mean;
-  double refErr = surfaceError(ref, AnalyticField{spec}).positionVoxels.mean;
-  RecordProperty("kernel_surface_mean", std::to_string(kernelErr));
-  RecordProperty("reference_surface_mean", std::to_string(refErr));
-  RecordProperty("worst_hit_distance", std::to_string(worst));
-  EXPECT_NEAR(kernelErr, refErr, 0.05 * refErr);
-  EXPECT_LT(kernelErr, 0.02);
 
-  // Other modes leave every pixel without a hit.
+  // mip leaves every pixel without a hit (dvr picks: dvr_pick_test.cpp).
   p.mode = Mode::Mip;
   rc.renderWithHits(p, raw);
   EXPECT_TRUE(std::all_of(raw.begin(), raw.end(), [](const glm::vec4& h) { return h.w == -1.0f; }));

@@ -361,3 +361,35 @@ TEST(Measure, PickedPointLiesOnTheSphereSurface) {
   EXPECT_EQ(m.find(*id)->normalAxis, -1);
   EXPECT_GT(distanceMm(v, m.find(*id)->points[0], m.find(*id)->points[1]), 5.0);
 }
+
+// dvr picks march at most half a voxel per step (the balanced preset's 1.5 voxels would
+// move the point by up to a step); finer steps and iso frames are left as they are.
+TEST(Measure, DvrPickFramesStepHalfAVoxelAtMost) {
+  RenderParams p;
+  p.mode = Mode::Dvr;
+  p.stepMm = 1.5 * 0.7;
+  EXPECT_EQ(pickFrameParams(p, 0.7).stepMm, 0.35);
+  p.stepMm = 0.25 * 0.7;
+  EXPECT_EQ(pickFrameParams(p, 0.7).stepMm, 0.25 * 0.7);
+  p.stepMm = 0.0;  // half the smallest spacing already
+  EXPECT_EQ(pickFrameParams(p, 0.7).stepMm, 0.0);
+  p.mode = Mode::Iso;
+  p.stepMm = 1.5 * 0.7;
+  EXPECT_EQ(pickFrameParams(p, 0.7).stepMm, 1.5 * 0.7);
+}
+
+// A pick that finds nothing says why, by mode: mip has no pick point; dvr's needs rays to
+// reach 50 % opacity, which early termination below it forbids.
+TEST(Measure, PickMissSaysWhy) {
+  RenderParams p;
+  p.mode = Mode::Iso;
+  EXPECT_EQ(pickMissMessage(p), "No surface under the cursor to measure on");
+  p.mode = Mode::Dvr;
+  EXPECT_EQ(pickMissMessage(p), "Nothing under the cursor reaches 50 % opacity to measure on");
+  p.earlyTermination = 0.3;
+  EXPECT_EQ(pickMissMessage(p),
+            "Early termination stops rays at 30 % opacity, before the 50 % a 3D pick needs: "
+            "raise it to measure in 3D");
+  p.mode = Mode::Mip;
+  EXPECT_NE(pickMissMessage(p).find("switch the mode to iso or dvr"), std::string::npos);
+}

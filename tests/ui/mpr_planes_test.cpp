@@ -137,6 +137,26 @@ TEST(Mpr, AnUnturnedViewIsTodaysSlicePixelForPixel) {
   }
 }
 
+// The scale bar reads the view's pixel spacing (slice_view.cpp): a turned plane keeps the
+// acquisition plane's size and spacing, on unit directions, so a pixel still spans the same mm.
+TEST(Mpr, ATurnedPlaneKeepsThePixelSpacingTheScaleBarReads) {
+  const Volume v = ramp();
+  CrosshairModel m = modelFor(v);
+  m.rotateInView(sliceAxes(v.direction, Orientation::Axial), 45 * kDeg);
+  m.rotateInView(sliceAxes(v.direction, Orientation::Sagittal), -20 * kDeg);
+  for (Orientation o : kViews) {
+    const SliceAxes a = sliceAxes(v.direction, o);
+    const PlaneGrid turned = viewPlane(v, a, m.centre(), m.rotation(o));
+    const PlaneGrid acquisition = slicePlane(v, a, m.centre()[a.nAxis]);
+    EXPECT_EQ(turned.size, acquisition.size) << toString(o);
+    EXPECT_EQ(turned.spacingMm, acquisition.spacingMm) << toString(o);
+    EXPECT_NEAR(glm::length(turned.uDir), 1.0, 1e-12);
+    EXPECT_NEAR(glm::length(turned.vDir), 1.0, 1e-12);
+    EXPECT_NEAR(glm::dot(turned.uDir, turned.vDir), 0.0, 1e-12);
+    EXPECT_FALSE(isIdentity(m.rotation(o)));  // every view turned (by one drag or both)
+  }
+}
+
 TEST(Mpr, A45DegreePlaneThroughARampHasTheAnalyticValues) {
   const Volume v = ramp();
   CrosshairModel m = modelFor(v);

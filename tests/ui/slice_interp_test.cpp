@@ -141,6 +141,12 @@ class SliceInterpTest : public QObject {
     QVERIFY(coronal.sliceImage() != coronalBefore);
     const glm::dvec2 upright = axial.crosshairTraces()[0];
     QVERIFY(std::abs(std::abs(std::atan2(upright.x, upright.y)) - 30 * kDeg) < 1e-6);
+    // The drag is one undo step: Edit > Undo turns the planes back at once, exactly.
+    fixture_.window->history().undo();
+    QCOMPARE(m.crosshair.frame(sagittal).normal, glm::dvec3(1, 0, 0));
+    QVERIFY(!m.crosshair.rotated());
+    QVERIFY(!fixture_.window->history().canUndo());
+    QCOMPARE(coronal.sliceImage(), coronalBefore);
   }
 
   void panelSlabAndResetDriveTheViews() {

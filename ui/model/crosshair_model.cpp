@@ -88,10 +88,11 @@ void CrosshairModel::resetRotation() {
 
 void CrosshairModel::setPlanes(const glm::dvec3& centre,
                                const std::array<glm::dmat3, 3>& rotations) {
+  const glm::dvec3 to = centre;  // a copy: CENTRE may be centre() itself, overwritten below
   const bool turned = rotations != rotation_;
   rotation_ = rotations;
   if (turned) centre_ = glm::dvec3(-1.0);  // moveTo notifies even if the centre stays
-  moveTo(centre);
+  moveTo(to);
 }
 
 void CrosshairModel::setSlab(Orientation o, const Slab& slab) {

@@ -27,7 +27,7 @@ struct Frame {
   RenderParams params;
   bool interactive = false;     // a cheap frame rendered during a drag
   int tag = 0;                  // the caller's label (0: the view; other values: exports)
-  std::vector<glm::vec4> hits;  // each pixel's iso hit, when asked for (renderWithHits)
+  std::vector<glm::vec4> hits;  // each pixel's iso or dvr hit, when asked for (renderWithHits)
 };
 
 struct RenderCallbacks {
@@ -48,7 +48,8 @@ class RenderWorker {
   RenderWorker& operator=(const RenderWorker&) = delete;
 
   void setVolume(std::shared_ptr<const Volume> volume);
-  // WITHHITS: also the iso first-hit of each pixel (Frame::hits), for picking in 3D.
+  // WITHHITS: also each pixel's iso first hit or dvr first opaque point (Frame::hits), for
+  // picking in 3D.
   void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
 
  private:

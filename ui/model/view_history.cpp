@@ -12,29 +12,42 @@ bool sameLight(const LightParams& a, const LightParams& b) {
   return a.position == b.position && a.followCamera == b.followCamera && a.ambient == b.ambient &&
          a.diffuse == b.diffuse && a.specular == b.specular && a.shininess == b.shininess;
 }
+bool sameSlabs(const std::array<Slab, 3>& a, const std::array<Slab, 3>& b) {
+  for (size_t o = 0; o < a.size(); ++o)
+    if (a[o].thicknessMm != b[o].thicknessMm || a[o].mode != b[o].mode) return false;
+  return true;
+}
 }  // namespace
 
 ViewSnapshot takeViewSnapshot(const AppModels& m) {
   const RenderParams& p = m.render.params();
-  return {p.camera, p.clip, p.light, p.windowWidth, p.windowLevel, m.windowLevel.value()};
+  ViewSnapshot s{p.camera, p.clip, p.light, p.windowWidth, p.windowLevel, m.windowLevel.value()};
+  for (size_t o = 0; o < s.planes.size(); ++o) {
+    s.planes[o] = m.crosshair.rotation(Orientation(o));
+    s.slabs[o] = m.crosshair.slab(Orientation(o));
+  }
+  return s;
 }
 
 bool sameView(const ViewSnapshot& a, const ViewSnapshot& b) {
   return sameCamera(a.camera, b.camera) && a.clip.lo == b.clip.lo && a.clip.hi == b.clip.hi &&
          sameLight(a.light, b.light) && a.mipWidth == b.mipWidth && a.mipLevel == b.mipLevel &&
-         a.wl.width == b.wl.width && a.wl.level == b.wl.level;
+         a.wl.width == b.wl.width && a.wl.level == b.wl.level && a.planes == b.planes &&
+         sameSlabs(a.slabs, b.slabs);
 }
 
 ViewHistory::ViewHistory(AppModels& m) : m_(m), current_(takeViewSnapshot(m)) {
   renderConnection_ = m_.render.changed.connect([this](unsigned) { onChange(); });
   wlConnection_ = m_.windowLevel.changed.connect([this] { onChange(); });
   docConnection_ = m_.document.changed.connect([this] { restart(); });
+  crosshairConnection_ = m_.crosshair.changed.connect([this] { onChange(); });
 }
 
 ViewHistory::~ViewHistory() {
   m_.render.changed.disconnect(renderConnection_);
   m_.windowLevel.changed.disconnect(wlConnection_);
   m_.document.changed.disconnect(docConnection_);
+  m_.crosshair.changed.disconnect(crosshairConnection_);
 }
 
 void ViewHistory::beginGesture() {
@@ -77,6 +90,9 @@ void ViewHistory::apply(const ViewSnapshot& s) {
   });
   const WindowLevel& wl = m_.windowLevel.value();
   if (wl.width != s.wl.width || wl.level != s.wl.level) m_.windowLevel.set(s.wl);
+  // The planes turn back about where the crosshair is now (its position is not recorded).
+  for (size_t o = 0; o < s.slabs.size(); ++o) m_.crosshair.setSlab(Orientation(o), s.slabs[o]);
+  m_.crosshair.setPlanes(m_.crosshair.centre(), s.planes);
   applying_ = false;
   current_ = takeViewSnapshot(m_);
   changed.notify();

@@ -1,9 +1,12 @@
 #pragma once
 // Undo/redo of what the user does to the view of a study: camera, clip box, light, the mip
-// window and the slice window/level. It listens to the models, so every edit (mouse, panel,
-// keys) is recorded without the widgets knowing. Appearance and quality are not recorded:
-// they are choices made in the panel, where they stay visible, and quality is a preference.
-// Opening a study starts a new history (that study's defaults are the first state).
+// window, the slice window/level, and the slice views' turned planes and slabs (not where the
+// crosshair is: moving through the slices is reading, not editing). It listens to the models,
+// so every edit (mouse, panel, keys) is recorded without the widgets knowing. Appearance and
+// quality are not recorded: they are choices made in the panel, where they stay visible, and
+// quality is a preference. Opening a study starts a new history (that study's defaults are the
+// first state).
+#include <array>
 #include <vector>
 
 #include "app_models.h"
@@ -19,6 +22,9 @@ struct ViewSnapshot {
   LightParams light;
   double mipWidth = 0.0, mipLevel = 0.0;
   WindowLevel wl;
+  // The slice views' rotations and slabs by Orientation (CrosshairModel).
+  std::array<glm::dmat3, 3> planes{glm::dmat3(1.0), glm::dmat3(1.0), glm::dmat3(1.0)};
+  std::array<Slab, 3> slabs{};
 };
 ViewSnapshot takeViewSnapshot(const AppModels& m);
 bool sameView(const ViewSnapshot& a, const ViewSnapshot& b);
@@ -56,7 +62,7 @@ class ViewHistory {
   ViewSnapshot current_;
   std::vector<ViewSnapshot> undo_, redo_;
   bool inGesture_ = false, gestureRecorded_ = false, applying_ = false;
-  int renderConnection_ = 0, wlConnection_ = 0, docConnection_ = 0;
+  int renderConnection_ = 0, wlConnection_ = 0, docConnection_ = 0, crosshairConnection_ = 0;
 };
 
 }  // namespace voxray::ui

@@ -28,7 +28,8 @@ constexpr const char* kViewControls[][2] = {
     {"Slice view: wheel, arrow keys, Page Up/Down", "next slice (Page: 10 slices)"},
     {"Slice view: Ctrl+wheel", "zoom"},
     {"Any view: double click", "maximise or restore it"},
-    {"3D view: Ctrl+click (iso)", "pick a surface point; two make a distance"},
+    {"3D view: Ctrl+click (iso, dvr)",
+     "pick a surface point (dvr: where opacity reaches 50 %); two make a distance"},
     {"Slice view: left drag with a measuring tool", "draw it; on a handle: move that point"},
     {"Slice view: Del / Esc", "delete the selected measurement / back to the pointer"},
 };

@@ -1,6 +1,7 @@
 #include "render_scheduler.h"
 
 #include "gui_post.h"
+#include "surface_pick.h"
 
 namespace voxray::ui {
 
@@ -82,7 +83,8 @@ void RenderScheduler::requestExport(QSize size) {
 }
 
 void RenderScheduler::requestPick() {
-  if (!doc_.empty()) worker_->request(fullParams(), false, kPickTag, true);
+  if (!doc_.empty())
+    worker_->request(pickFrameParams(fullParams(), doc_.minSpacingMm()), false, kPickTag, true);
 }
 
 void RenderScheduler::requestFrame() {

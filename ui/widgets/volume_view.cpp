@@ -75,9 +75,7 @@ void VolumeView::onPickFrame(const Frame& f) {
   if (auto hit = surfaceHitAt(f.hits, size, pixel))
     measurements_->addPick(*hit);
   else
-    emit pickMissed(f.params.mode == Mode::Iso
-                        ? "No surface under the cursor to measure on"
-                        : "3D measuring picks the iso surface: switch the mode to iso");
+    emit pickMissed(QString::fromStdString(pickMissMessage(f.params)));
 }
 
 QRect VolumeView::imageRect() const {

@@ -3,7 +3,8 @@
 // camera, clip-box and light edits on the RenderStateModel. Left-drag rotates, wheel or
 // right-drag zooms, middle-drag or Shift+left pans, arrow keys rotate; dragging a clip-box
 // face handle moves that face; dragging the sun-shaped handle moves the light. Ctrl+click
-// picks a point on the iso surface (two picks make a distance, MeasurementModel::addPick).
+// picks a point on the iso surface, or in dvr where the ray's opacity reaches 0.5 (two picks
+// make a distance, MeasurementModel::addPick).
 #include <memory>
 #include <optional>
 

@@ -69,9 +69,12 @@ class Raycaster {
   Image render(const RenderParams& params, FrameStats* stats = nullptr);
   // The same, into a caller's image (reused between frames: no allocation per frame).
   void render(const RenderParams& params, Image& out, FrameStats* stats = nullptr);
-  // A frame from the -D HIT_OUTPUT=1 variant that also gives each pixel's iso hit (row by
-  // row): xyz the hit point in voxel coordinates, w 1 for a surface crossing, 0 for a hit
-  // at the first sample (entry face or clip cap), -1 for none (and for dvr and mip).
+  // A frame from the -D HIT_OUTPUT=1 variant that also gives each pixel's hit (row by row):
+  // xyz the hit point in voxel coordinates, w 1 for an iso surface crossing or where dvr's
+  // accumulated opacity reaches 0.5 (DVR_HIT_ALPHA, kernels/hit_output.cl: interpolated
+  // within the segment that crosses it), 0 for an iso hit at the first sample (entry face
+  // or clip cap), -1 for none (a dvr ray that stays below 0.5 or stops earlier by early
+  // termination, and every mip pixel).
   Image renderWithHits(const RenderParams& params, std::vector<glm::vec4>& hits,
                        FrameStats* stats = nullptr);
 
