@@ -1,7 +1,14 @@
 // The DICOMweb transport: QIDO-RS search, WADO-RS retrieve (multipart/related, streamed to
 // files as parts arrive, transfer syntaxes as stored), STOW-RS send.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -64,6 +71,40 @@ PacsMatch toMatch(const json& o) {
   return m;
 }
 
+// One retrieved instance, written as its part streams in (unbuffered: pieces are 16-64 KB).
+class InstanceFile {
+ public:
+  ~InstanceFile() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  void open(const std::string& path) {
+    path_ = path;
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd_ < 0) fail();
+  }
+  void write(std::string_view piece) {
+    while (!piece.empty()) {
+      ssize_t n = ::write(fd_, piece.data(), piece.size());
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) fail();
+      piece.remove_prefix(size_t(n));
+    }
+  }
+  std::string close() {
+    int fd = std::exchange(fd_, -1);
+    if (::close(fd) != 0) fail();
+    return path_;
+  }
+
+ private:
+  [[noreturn]] void fail() {
+    throw outputError("cannot write " + path_ + " (" + std::strerror(errno) +
+                      "): the disk may be full; free space");
+  }
+  std::string path_;
+  int fd_ = -1;
+};
+
 std::string fileName(const std::string& folder, int index) {
   char name[32];
   std::snprintf(name, sizeof name, "/%06d.dcm", index);
@@ -76,7 +117,28 @@ class WebClient : public PacsClient {
 
   void echo() override { http_.get(node_.baseUrl + "/studies?limit=1", kDicomJson); }
 
-  std::vector<PacsMatch> find(const PacsQuery& q) override {
+  // QIDO-RS pages by limit and offset: one request per page until a short page (or the
+  // query's limit, asked one past to learn whether there are more).
+  FindResult findPages(const PacsQuery& q, const FindOptions& options) override {
+    FindResult result;
+    const size_t pageSize = std::max<size_t>(options.pageSize, 1);
+    for (PacsQuery page = q;; page.offset += page.limit) {
+      if (options.cancel && options.cancel->load()) throw cancelledError("Search cancelled");
+      size_t wanted = q.limit ? q.limit + 1 - result.matches.size() : pageSize;
+      page.limit = std::min(pageSize, wanted);
+      std::vector<PacsMatch> got = findOnce(page);
+      if (q.limit && result.matches.size() + got.size() > q.limit) {
+        result.more = true;
+        got.resize(q.limit - result.matches.size());
+      }
+      result.matches.insert(result.matches.end(), got.begin(), got.end());
+      if (options.page && !got.empty()) options.page(got);
+      if (result.more || got.size() < page.limit) return result;
+    }
+  }
+
+ private:
+  std::vector<PacsMatch> findOnce(const PacsQuery& q) {
     if (q.level == QueryLevel::Patient)
       throw inputError("DICOMweb (QIDO-RS) has no patient-level search: search studies instead");
     std::string url = node_.baseUrl + "/studies";
@@ -112,29 +174,36 @@ class WebClient : public PacsClient {
     return matches;
   }
 
+ public:
   std::vector<std::string> retrieveSeries(const std::string& studyUid, const std::string& seriesUid,
                                           const std::string& folder,
                                           const RetrieveOptions& options) override {
     std::vector<std::string> files;
     RetrieveProgress progress;
     std::unique_ptr<MultipartSplitter> splitter;
-    auto onPart = [&](const std::string& headers, std::string_view content) {
+    // Each instance is written piece by piece as it arrives: one copy, from data still in
+    // the CPU's cache (gathering a 0.5 MB part first and writing it from cold memory made
+    // WADO-RS 2-3x slower than curl on a loaded machine).
+    InstanceFile file;
+    PartStream stream;
+    stream.begin = [&](const std::string& headers) {
       if (headers.find("content-type") != std::string::npos &&
           headers.find("application/dicom") == std::string::npos)
         throw inputError("a part of the answer is not application/dicom");
-      std::string path = fileName(folder, int(files.size()));
-      std::ofstream out(path, std::ios::binary);
-      out.write(content.data(), std::streamsize(content.size()));
-      if (!out.flush())
-        throw outputError("cannot write " + path + ": the disk may be full; free space");
-      files.push_back(path);
+      file.open(fileName(folder, int(files.size())));
+    };
+    stream.content = [&](std::string_view piece) {
+      file.write(piece);
+      progress.megabytes += double(piece.size()) / 1e6;
+    };
+    stream.end = [&] {
+      files.push_back(file.close());
       progress.received = int(files.size());
-      progress.megabytes += double(content.size()) / 1e6;
       if (options.progress) options.progress(progress);
     };
     auto sink = [&](const char* data, size_t size, const std::string& type) {
       if (!splitter)
-        splitter = std::make_unique<MultipartSplitter>(multipartBoundary(type), onPart);
+        splitter = std::make_unique<MultipartSplitter>(multipartBoundary(type), stream);
       splitter->feed(data, size);
     };
     std::string url =
