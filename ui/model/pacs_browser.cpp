@@ -44,11 +44,19 @@ void PacsBrowser::run(std::function<void()> job) {
 
 void PacsBrowser::search(const std::string& node, PacsQuery query) {
   query.level = QueryLevel::Study;
-  if (query.limit == 0 || query.limit > kPageSize) query.limit = kPageSize;
+  if (query.limit == 0 || query.limit > kMaxStudies) query.limit = kMaxStudies;
   run([this, node, query] {
-    auto studies = makePacsClient(resolvePacsNode(node))->find(query);
-    task_.post([events = events_, studies] {
-      if (events.found) events.found(studies);
+    FindOptions options;
+    options.pageSize = kPageSize;
+    options.cancel = task_.cancelFlag();
+    options.page = [this](const std::vector<PacsMatch>& page) {
+      task_.post([events = events_, page] {
+        if (events.studies) events.studies(page);
+      });
+    };
+    FindResult result = makePacsClient(resolvePacsNode(node))->findPages(query, options);
+    task_.post([events = events_, count = result.matches.size(), more = result.more] {
+      if (events.found) events.found(count, more);
     });
   });
 }

@@ -19,7 +19,11 @@
 namespace voxray::ui {
 
 struct PacsBrowserEvents {
-  std::function<void(const std::vector<PacsMatch>& studies)> found;
+  // A search's studies arrive in pages as the node answers (append them; the first page
+  // follows a search at once), then found() with their number and whether the node holds
+  // more than kMaxStudies.
+  std::function<void(const std::vector<PacsMatch>& page)> studies;
+  std::function<void(size_t count, bool more)> found;
   std::function<void(const std::string& studyUid, const std::vector<PacsMatch>& series)> series;
   std::function<void(const RetrieveProgress&)> progress;
   // Open entry.folder with series seriesUid; a whole study (seriesUid empty): the folder
@@ -32,9 +36,10 @@ struct PacsBrowserEvents {
 
 class PacsBrowser {
  public:
-  // Most studies one search shows; the user narrows the query for more (a PACS that holds
-  // 10,000 matching studies is not listed whole).
+  // Studies per page: the list fills page by page while the node still answers. Past
+  // kMaxStudies a search stops and says so; the user narrows it.
   static constexpr size_t kPageSize = 200;
+  static constexpr size_t kMaxStudies = 10000;
 
   PacsBrowser(PacsBrowserEvents events, std::string cacheFolder = defaultPacsCacheFolder(),
               BackgroundTask::Post post = {});
