@@ -134,7 +134,7 @@ void PacsBrowser::retrieveStudy(const std::string& node, const std::string& stud
 
 void PacsBrowser::send(const std::string& node, std::vector<std::string> files) {
   run([this, node, files = std::move(files)] {
-    makePacsClient(resolvePacsNode(node))->store(files);
+    makePacsClient(resolvePacsNode(node))->store(files, task_.cancelFlag());
     task_.post([events = events_] {
       if (events.sent) events.sent();
     });

@@ -55,7 +55,8 @@ class PacsBrowser {
   // Every series of the study into the cache (progress over the whole study), then one
   // folder showing them all (PacsCache::studyFolder).
   void retrieveStudy(const std::string& node, const std::string& studyUid);
-  // Sends FILES (C-STORE; STOW-RS): the screenshot export's "Send to". Failure: failed().
+  // Sends FILES (C-STORE; STOW-RS): the screenshot export's "Send to". Failure: failed();
+  // cancel(): cancelled() (STOW-RS at once; C-STORE once a blocked connect or file returns).
   void send(const std::string& node, std::vector<std::string> files);
   void cancel() { task_.cancel(); }
   bool busy() const { return busy_; }

@@ -224,7 +224,7 @@ class DimseClient : public PacsClient {
     return scu->files;
   }
 
-  void store(const std::vector<std::string>& files) override {
+  void store(const std::vector<std::string>& files, const std::atomic<bool>* cancel) override {
     std::vector<DcmFileFormat> loaded(files.size());
     for (size_t i = 0; i < files.size(); ++i)
       if (loaded[i].loadFile(files[i].c_str()).bad())
@@ -240,6 +240,11 @@ class DimseClient : public PacsClient {
       }
     });
     for (size_t i = 0; i < files.size(); ++i) {
+      if (cancel && cancel->load()) {
+        scu->abortAssociation();
+        throw cancelledError("Sending cancelled after " + std::to_string(i) + " of " +
+                             std::to_string(files.size()) + " files");
+      }
       Uint16 status = 0;
       OFCondition cond = scu->sendSTORERequest(0, "", loaded[i].getDataset(), status);
       check("C-STORE of " + files[i], cond);

@@ -221,7 +221,7 @@ class WebClient : public PacsClient {
     return files;
   }
 
-  void store(const std::vector<std::string>& files) override {
+  void store(const std::vector<std::string>& files, const std::atomic<bool>* cancel) override {
     const std::string boundary = "voxray-stow-7d0c1e5a";
     std::string body;
     for (const auto& f : files) {
@@ -233,9 +233,10 @@ class WebClient : public PacsClient {
           "--" + boundary + "\r\nContent-Type: application/dicom\r\n\r\n" + content.str() + "\r\n";
     }
     body += "--" + boundary + "--\r\n";
-    HttpResponse r = http_.post(
-        node_.baseUrl + "/studies",
-        "multipart/related; type=\"application/dicom\"; boundary=" + boundary, body, kDicomJson);
+    HttpResponse r =
+        http_.post(node_.baseUrl + "/studies",
+                   "multipart/related; type=\"application/dicom\"; boundary=" + boundary, body,
+                   kDicomJson, cancel);
     try {
       json answer = r.body.empty() ? json::object() : json::parse(r.body);
       if (answer.contains("00081198") && answer["00081198"].contains("Value") &&

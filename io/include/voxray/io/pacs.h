@@ -98,8 +98,10 @@ class PacsClient {
                                                   const std::string& seriesUid,
                                                   const std::string& folder,
                                                   const RetrieveOptions& options) = 0;
-  // Sends DICOM files (C-STORE; STOW-RS). Throws naming the first file refused.
-  virtual void store(const std::vector<std::string>& files) = 0;
+  // Sends DICOM files (C-STORE; STOW-RS). Throws naming the first file refused, Cancelled
+  // when *cancel becomes true (DIMSE: checked before each file and after the association).
+  virtual void store(const std::vector<std::string>& files,
+                     const std::atomic<bool>* cancel = nullptr) = 0;
 };
 
 std::unique_ptr<PacsClient> makePacsClient(const PacsNode& node);
