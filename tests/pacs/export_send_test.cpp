@@ -1,8 +1,6 @@
 // File > Export screenshot as a DICOM Secondary Capture, sent to a real Orthanc from the
 // dialog's "Send to PACS node": a new C-FIND finds it in the study of the shown volume, with
 // the exported pixels; an unreachable node says why and keeps the file.
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <QComboBox>
@@ -101,17 +99,11 @@ class ExportSendTest : public QObject {
   // A node that takes the connection and never answers: the send would hang until the
   // node's timeout; the dialog's Cancel button stops it, keeps the file and the dialog.
   void cancelStopsASendThatHangs() {
-    int listener = socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t len = sizeof addr;
-    QVERIFY(bind(listener, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
-    QVERIFY(listen(listener, 4) == 0);  // connections wait in the backlog, never answered
-    QVERIFY(getsockname(listener, reinterpret_cast<sockaddr*>(&addr), &len) == 0);
+    int port = 0;
+    int listener = loopbackSocket(port, true);  // connections wait in the backlog
     auto dialog = makeDialog();
     dialog->findChild<QComboBox*>("exportSendTo")
-        ->setEditText(QString("http://127.0.0.1:%1/dicom-web").arg(ntohs(addr.sin_port)));
+        ->setEditText(QString("http://127.0.0.1:%1/dicom-web").arg(port));
     const std::string path = tempFolder("export-sc") + "/shot.dcm";
     QVERIFY(dialog->exportTo(QString::fromStdString(path)));
     QSignalSpy cancelled(dialog.get(), &ui::ExportDialog::sendCancelled);

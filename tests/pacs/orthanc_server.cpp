@@ -66,19 +66,26 @@ bool isDicomdir(const fs::path& p) {
 
 }  // namespace
 
-int freePort() {
+int loopbackSocket(int& port, bool listening) {
   int s = socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in addr{};
   addr.sin_family = AF_INET;
   addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   socklen_t len = sizeof addr;
   if (bind(s, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
+      (listening && listen(s, 4) != 0) ||
       getsockname(s, reinterpret_cast<sockaddr*>(&addr), &len) != 0) {
     close(s);
     throw std::runtime_error("no free TCP port on 127.0.0.1");
   }
-  close(s);
-  return ntohs(addr.sin_port);
+  port = ntohs(addr.sin_port);
+  return s;
+}
+
+int freePort() {
+  int port = 0;
+  close(loopbackSocket(port, false));
+  return port;
 }
 
 std::string tempFolder(const std::string& tag) {

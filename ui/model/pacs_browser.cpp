@@ -95,11 +95,11 @@ RetrieveOptions PacsBrowser::retrieveOptions(int receivedBefore, int total) {
 }
 
 void PacsBrowser::retrieve(const std::string& node, const std::string& studyUid,
-                           const std::string& seriesUid) {
-  run([this, node, studyUid, seriesUid] {
+                           const std::string& seriesUid, int images) {
+  run([this, node, studyUid, seriesUid, images] {
     auto client = makePacsClient(resolvePacsNode(node));
     PacsCache cache(cacheFolder_);
-    CachedSeries entry = cache.retrieve(*client, studyUid, seriesUid, retrieveOptions(0, 0));
+    CachedSeries entry = cache.retrieve(*client, studyUid, seriesUid, retrieveOptions(0, images));
     task_.post([events = events_, entry] {
       if (events.retrieved) events.retrieved(entry);
     });

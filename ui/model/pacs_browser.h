@@ -51,7 +51,10 @@ class PacsBrowser {
   // Each starts at once on the browser's thread, after the previous job (cancelled first).
   void search(const std::string& node, PacsQuery query);
   void listSeries(const std::string& node, const std::string& studyUid);
-  void retrieve(const std::string& node, const std::string& studyUid, const std::string& seriesUid);
+  // IMAGES (the series' count from its search, 0: not known) is the progress' total when the
+  // transport does not say (WADO-RS).
+  void retrieve(const std::string& node, const std::string& studyUid, const std::string& seriesUid,
+                int images = 0);
   // Every series of the study into the cache (progress over the whole study), then one
   // folder showing them all (PacsCache::studyFolder).
   void retrieveStudy(const std::string& node, const std::string& studyUid);

@@ -146,7 +146,8 @@ void PacsDialog::retrieve(QTreeWidgetItem* item) {
   const std::string uid = item->data(0, kUidRole).toString().toStdString();
   if (!item->parent()) return browser_->retrieveStudy(node, uid);
   if (uid.empty()) return setBusy(false, "");  // the placeholder of a study not yet listed
-  browser_->retrieve(node, item->data(0, kStudyUidRole).toString().toStdString(), uid);
+  browser_->retrieve(node, item->data(0, kStudyUidRole).toString().toStdString(), uid,
+                     item->text(Images).toInt());
 }
 
 void PacsDialog::setBusy(bool busy, const QString& status) {
