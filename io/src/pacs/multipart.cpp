@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <memory>
-#include <utility>
 
 #include "voxray/io/error.h"
 
@@ -40,17 +38,9 @@ std::string multipartBoundary(const std::string& contentType) {
   return b;
 }
 
-MultipartSplitter::MultipartSplitter(const std::string& boundary, PartStream stream)
-    : delimiter_("\r\n--" + boundary), stream_(std::move(stream)) {
+MultipartSplitter::MultipartSplitter(const std::string& boundary, OnPart onPart)
+    : delimiter_("\r\n--" + boundary), onPart_(std::move(onPart)) {
   buffer_ = "\r\n";  // the first delimiter may open the body without a CRLF before it
-}
-
-MultipartSplitter::MultipartSplitter(const std::string& boundary, const OnPart& onPart)
-    : MultipartSplitter(boundary, PartStream{}) {
-  auto part = std::make_shared<std::pair<std::string, std::string>>();
-  stream_.begin = [part](const std::string& headers) { *part = {headers, {}}; };
-  stream_.content = [part](std::string_view piece) { part->second.append(piece); };
-  stream_.end = [part, onPart] { onPart(part->first, part->second); };
 }
 
 void MultipartSplitter::feed(const char* data, size_t size) {
@@ -63,23 +53,15 @@ void MultipartSplitter::parse() {
   for (;;) {
     if (state_ == State::Preamble || state_ == State::Content) {
       size_t at = buffer_.find(delimiter_, scanFrom_);
-      // Up to here no delimiter can start: content there is handed over at once.
-      size_t settled =
-          buffer_.size() >= delimiter_.size() ? buffer_.size() - delimiter_.size() + 1 : 0;
       if (at == std::string::npos) {
         if (state_ == State::Preamble && buffer_.size() > kMaxPreambleBytes)
           throw inputError("the multipart body does not start with its boundary");
-        scanFrom_ = settled;
-        if (state_ == State::Content && settled > 0) {
-          if (stream_.content) stream_.content(std::string_view(buffer_).substr(0, settled));
-          buffer_.erase(0, settled);
-          scanFrom_ = 0;
-        }
+        scanFrom_ =
+            buffer_.size() >= delimiter_.size() ? buffer_.size() - delimiter_.size() + 1 : 0;
         return;
       }
       if (state_ == State::Content) {
-        if (stream_.content && at > 0) stream_.content(std::string_view(buffer_).substr(0, at));
-        if (stream_.end) stream_.end();
+        onPart_(headers_, std::string_view(buffer_).substr(0, at));
         ++parts_;
       }
       buffer_.erase(0, at + delimiter_.size());
@@ -113,7 +95,6 @@ void MultipartSplitter::parse() {
       buffer_.erase(0, end == 0 ? 2 : end + 4);
       scanFrom_ = 0;
       state_ = State::Content;
-      if (stream_.begin) stream_.begin(headers_);
     } else {
       return;
     }

@@ -12,21 +12,11 @@ namespace voxray::pacs {
 // The boundary parameter of a multipart Content-Type; throws Input when there is none.
 std::string multipartBoundary(const std::string& contentType);
 
-// Each part as it streams in: its headers (as sent, lower-cased), its content in pieces as
-// they arrive (a series' instances go to disk without being gathered first: a part is held
-// back only by the delimiter's length), then its end.
-struct PartStream {
-  std::function<void(const std::string& headers)> begin;
-  std::function<void(std::string_view piece)> content;
-  std::function<void()> end;
-};
-
 class MultipartSplitter {
  public:
-  MultipartSplitter(const std::string& boundary, PartStream stream);
-  // ON_PART gets each whole part's headers and content (gathered from the stream).
+  // ON_PART gets each part's headers (as sent, lower-cased names) and its content.
   using OnPart = std::function<void(const std::string& headers, std::string_view content)>;
-  MultipartSplitter(const std::string& boundary, const OnPart& onPart);
+  MultipartSplitter(const std::string& boundary, OnPart onPart);
   void feed(const char* data, size_t size);
   // Throws Input when the body ended before its close delimiter (truncated).
   void finish();
@@ -37,7 +27,7 @@ class MultipartSplitter {
 
   enum class State { Preamble, AfterDelimiter, Headers, Content, Done };
   std::string delimiter_;  // "\r\n--" + boundary
-  PartStream stream_;
+  OnPart onPart_;
   std::string buffer_;
   size_t scanFrom_ = 0;
   State state_ = State::Preamble;

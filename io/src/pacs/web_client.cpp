@@ -1,14 +1,8 @@
 // The DICOMweb transport: QIDO-RS search, WADO-RS retrieve (multipart/related, streamed to
 // files as parts arrive, transfer syntaxes as stored), STOW-RS send.
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <sstream>
-#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -70,40 +64,6 @@ PacsMatch toMatch(const json& o) {
   m.seriesNumber = number(o, "00200011");
   return m;
 }
-
-// One retrieved instance, written as its part streams in (unbuffered: pieces are 16-64 KB).
-class InstanceFile {
- public:
-  ~InstanceFile() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  void open(const std::string& path) {
-    path_ = path;
-    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd_ < 0) fail();
-  }
-  void write(std::string_view piece) {
-    while (!piece.empty()) {
-      ssize_t n = ::write(fd_, piece.data(), piece.size());
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) fail();
-      piece.remove_prefix(size_t(n));
-    }
-  }
-  std::string close() {
-    int fd = std::exchange(fd_, -1);
-    if (::close(fd) != 0) fail();
-    return path_;
-  }
-
- private:
-  [[noreturn]] void fail() {
-    throw outputError("cannot write " + path_ + " (" + std::strerror(errno) +
-                      "): the disk may be full; free space");
-  }
-  std::string path_;
-  int fd_ = -1;
-};
 
 std::string fileName(const std::string& folder, int index) {
   char name[32];
@@ -181,29 +141,23 @@ class WebClient : public PacsClient {
     std::vector<std::string> files;
     RetrieveProgress progress;
     std::unique_ptr<MultipartSplitter> splitter;
-    // Each instance is written piece by piece as it arrives: one copy, from data still in
-    // the CPU's cache (gathering a 0.5 MB part first and writing it from cold memory made
-    // WADO-RS 2-3x slower than curl on a loaded machine).
-    InstanceFile file;
-    PartStream stream;
-    stream.begin = [&](const std::string& headers) {
+    auto onPart = [&](const std::string& headers, std::string_view content) {
       if (headers.find("content-type") != std::string::npos &&
           headers.find("application/dicom") == std::string::npos)
         throw inputError("a part of the answer is not application/dicom");
-      file.open(fileName(folder, int(files.size())));
-    };
-    stream.content = [&](std::string_view piece) {
-      file.write(piece);
-      progress.megabytes += double(piece.size()) / 1e6;
-    };
-    stream.end = [&] {
-      files.push_back(file.close());
+      std::string path = fileName(folder, int(files.size()));
+      std::ofstream out(path, std::ios::binary);
+      out.write(content.data(), std::streamsize(content.size()));
+      if (!out.flush())
+        throw outputError("cannot write " + path + ": the disk may be full; free space");
+      files.push_back(path);
       progress.received = int(files.size());
+      progress.megabytes += double(content.size()) / 1e6;
       if (options.progress) options.progress(progress);
     };
     auto sink = [&](const char* data, size_t size, const std::string& type) {
       if (!splitter)
-        splitter = std::make_unique<MultipartSplitter>(multipartBoundary(type), stream);
+        splitter = std::make_unique<MultipartSplitter>(multipartBoundary(type), onPart);
       splitter->feed(data, size);
     };
     std::string url =
