@@ -53,21 +53,30 @@ int runFind(const PacsOptions& o) {
     q.dateFrom = o.dates.substr(0, dash);
     q.dateTo = dash == std::string::npos ? q.dateFrom : o.dates.substr(dash + 1);
   }
-  auto matches = makePacsClient(resolvePacsNode(o.node))->find(q);
-  nlohmann::json list = nlohmann::json::array();
-  for (const auto& m : matches) list.push_back(matchJson(m, o.showPatient));
-  if (o.json) {
-    std::cout << jsonText(list) << "\n";
-    return 0;
-  }
-  for (const auto& j : list) {
+  // Text is printed page by page as the node answers (a search with 10,000 matches shows
+  // its first ones at once); JSON is one array at the end.
+  auto line = [&](const nlohmann::json& j) {
     std::cout << j.value("study_date", "") << "  " << j.value("modalities", "") << "  "
               << j.value("series", 0) << " series  " << j.value("images", 0) << " images  "
               << j.value(q.level == QueryLevel::Series ? "series_uid" : "study_uid", "") << "  "
               << j.value(q.level == QueryLevel::Series ? "series_description" : "description", "");
     if (o.showPatient) std::cout << "  " << j.value("patient_name", "");
     std::cout << "\n";
-  }
+  };
+  FindOptions options;
+  nlohmann::json list = nlohmann::json::array();
+  options.page = [&](const std::vector<PacsMatch>& page) {
+    for (const auto& m : page) {
+      list.push_back(matchJson(m, o.showPatient));
+      if (!o.json) line(list.back());
+    }
+    if (!o.json) std::cout.flush();
+  };
+  FindResult result = makePacsClient(resolvePacsNode(o.node))->findPages(q, options);
+  if (o.json) std::cout << jsonText(list) << "\n";
+  if (result.more)
+    std::cerr << "more: the node holds more than " << q.limit
+              << " matches; narrow the search, raise --limit or page with --offset\n";
   return 0;
 }
 

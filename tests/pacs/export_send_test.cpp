@@ -1,7 +1,11 @@
 // File > Export screenshot as a DICOM Secondary Capture, sent to a real Orthanc from the
 // dialog's "Send to PACS node": a new C-FIND finds it in the study of the shown volume, with
 // the exported pixels; an unreachable node says why and keeps the file.
+#include <unistd.h>
+
 #include <QComboBox>
+#include <QDialogButtonBox>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -90,6 +94,30 @@ class ExportSendTest : public QObject {
     QVERIFY(!dialog->exportTo(QString::fromStdString(png)));
     QVERIFY(error.contains("Only a DICOM Secondary Capture"));
     QVERIFY(!std::filesystem::exists(png));
+  }
+
+  // A node that takes the connection and never answers: the send would hang until the
+  // node's timeout; the dialog's Cancel button stops it, keeps the file and the dialog.
+  void cancelStopsASendThatHangs() {
+    int port = 0;
+    int listener = loopbackSocket(port, true);  // connections wait in the backlog
+    auto dialog = makeDialog();
+    dialog->findChild<QComboBox*>("exportSendTo")
+        ->setEditText(QString("http://127.0.0.1:%1/dicom-web").arg(port));
+    const std::string path = tempFolder("export-sc") + "/shot.dcm";
+    QVERIFY(dialog->exportTo(QString::fromStdString(path)));
+    QSignalSpy cancelled(dialog.get(), &ui::ExportDialog::sendCancelled);
+    QSignalSpy sent(dialog.get(), &ui::ExportDialog::sent);
+    QVERIFY(dialog->sendExported());
+    QTest::qWait(500);
+    QVERIFY(dialog->sending());  // still waiting for the node
+    dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Cancel)->click();
+    QVERIFY(cancelled.wait(5000));  // the node's timeout is 30 s
+    QVERIFY(!dialog->sending());
+    QCOMPARE(sent.count(), 0);
+    QCOMPARE(dialog->result(), 0);  // Cancel stopped the send; it did not close the dialog
+    QVERIFY(std::filesystem::exists(path));
+    close(listener);
   }
 
   void cleanupTestCase() {

@@ -45,6 +45,9 @@ class OrthancServer {
 
 // A TCP port on 127.0.0.1 that is free now.
 int freePort();
+// A socket bound to a free port on 127.0.0.1 (PORT), listening when LISTENING: a node that
+// takes connections and never answers. Throws when there is none; the caller closes it.
+int loopbackSocket(int& port, bool listening);
 // A fresh folder under the build tree's test area.
 std::string tempFolder(const std::string& tag);
 

@@ -1,15 +1,20 @@
-// Retrieval benchmark (issue 12's closing note; not a test): the largest shared CT series from
-// a local Orthanc over C-GET and WADO-RS, seconds to a ready volume (retrieved into a fresh
-// cache and imported), against DCMTK's getscu and curl fetching the same series, in the same
-// run. Usage: voxray_pacs_bench [REPEATS] (default 3; medians are printed).
+// Retrieval benchmark (issue 12's closing note; not a test): one CT series from a local
+// Orthanc over C-GET and WADO-RS, seconds to a ready volume (retrieved into a fresh cache and
+// imported), against DCMTK's getscu and curl fetching the same series, in the same run.
+// Usage: voxray_pacs_bench [REPEATS [SERIES_FOLDER [web|dimse|both]]] (defaults: 3, the shared
+// pelvis CT, both; the issue's 512x512x400 CT: docs/bench/make-ct400.sh OUT, then OUT/ct400).
+// Medians are printed.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "orthanc_server.h"
 #include "voxray/io/load.h"
@@ -19,9 +24,6 @@ namespace fs = std::filesystem;
 using voxray::test::OrthancServer;
 
 namespace {
-
-const char* kSeries = "1.2.826.0.1.3680043.2.1125.1.75064541463040.2005072610384286453";
-const char* kStudy = "1.2.826.0.1.3680043.2.1125.1.75064541463040.2005072610384286421";
 
 double seconds(const std::function<void()>& f) {
   auto t0 = std::chrono::steady_clock::now();
@@ -52,9 +54,16 @@ void shell(const std::string& command) {
 
 int main(int argc, char** argv) {
   int repeats = argc > 1 ? std::atoi(argv[1]) : 3;
+  const std::string which = argc > 3 ? argv[3] : "both";
+  std::string series =
+      argc > 2 ? argv[2] : std::string(VOXRAY_DATA_DIR) + "/dicom/ct-visible-human-pelvis";
+  // The UIDs and slice count to retrieve, from the files themselves.
+  const voxray::Volume disk = voxray::loadVolume(series);
+  const std::string studyUid = disk.study.studyInstanceUid,
+                    seriesUid = disk.study.seriesInstanceUid;
   OrthancServer server;
-  int uploaded = server.upload(std::string(VOXRAY_DATA_DIR) + "/dicom/ct-visible-human-pelvis");
-  std::cout << "ct-visible-human-pelvis: " << uploaded << " files uploaded\n";
+  int uploaded = server.upload(series);
+  std::cout << series << ": " << uploaded << " files uploaded\n";
   struct Row {
     std::string what;
     std::vector<double> s;
@@ -65,44 +74,59 @@ int main(int argc, char** argv) {
       {"getscu (DCMTK), to files", {}},       {"voxray WADO-RS, to ready volume", {}},
       {"voxray WADO-RS, retrieval only", {}}, {"curl WADO-RS, to one file", {}}};
   std::string area = voxray::test::tempFolder("bench");
-  for (int r = 0; r < repeats; ++r) {
-    // The raw tools first, Voxray after: neither profits from the other's warm caches more.
+  auto curl = [&](int r) {
     std::string file = area + "/curl-" + std::to_string(r);
     rows[5].s.push_back(seconds([&] {
       shell("curl -sf -u " + std::string(OrthancServer::kUser) + ":" + OrthancServer::kPassword +
             " -H 'Accept: multipart/related; type=\"application/dicom\"; transfer-syntax=*' " +
-            server.webNode().baseUrl + "/studies/" + kStudy + "/series/" + kSeries + " -o " + file);
+            server.webNode().baseUrl + "/studies/" + studyUid + "/series/" + seriesUid + " -o " +
+            file);
     }));
     rows[5].bytes = fs::file_size(file);
-    for (auto node : {server.dimseNode(), server.webNode()}) {
-      bool web = node.transport == voxray::PacsNode::Transport::Web;
-      std::string cache = area + "/cache-" + std::to_string(r) + (web ? "w" : "d");
-      voxray::CachedSeries entry;
-      double retrieve = 0;
-      double ready = seconds([&] {
-        voxray::PacsCache c(cache);
-        auto client = voxray::makePacsClient(node);
-        retrieve = seconds([&] { entry = c.retrieve(*client, kStudy, kSeries); });
-        voxray::Volume v = voxray::loadVolume(entry.folder);
-        if (v.dims.z != 150) std::exit(1);
-      });
-      rows[web ? 3 : 0].s.push_back(ready);
-      rows[web ? 4 : 1].s.push_back(retrieve);
-      rows[web ? 3 : 0].bytes = rows[web ? 4 : 1].bytes = entry.bytes;
-    }
+  };
+  auto getscu = [&](int r) {
     std::string out = area + "/getscu-" + std::to_string(r);
     fs::create_directories(out);
     rows[2].s.push_back(seconds([&] {
       shell("getscu -aet VOXRAY -aec ORTHANC 127.0.0.1 " + std::to_string(server.dicomPort) +
-            " -S -k QueryRetrieveLevel=SERIES -k StudyInstanceUID=" + kStudy +
-            " -k SeriesInstanceUID=" + kSeries + " -od " + out);
+            " -S -k QueryRetrieveLevel=SERIES -k StudyInstanceUID=" + studyUid +
+            " -k SeriesInstanceUID=" + seriesUid + " -od " + out);
     }));
     rows[2].bytes = folderBytes(out);
-  }
+  };
+  auto voxray = [&](int r, const voxray::PacsNode& node) {
+    bool web = node.transport == voxray::PacsNode::Transport::Web;
+    std::string cache = area + "/cache-" + std::to_string(r) + (web ? "w" : "d");
+    voxray::CachedSeries entry;
+    double retrieve = 0;
+    double ready = seconds([&] {
+      voxray::PacsCache c(cache);
+      auto client = voxray::makePacsClient(node);
+      retrieve = seconds([&] { entry = c.retrieve(*client, studyUid, seriesUid); });
+      voxray::Volume v = voxray::loadVolume(entry.folder);
+      if (v.dims != disk.dims) std::exit(1);
+    });
+    rows[web ? 3 : 0].s.push_back(ready);
+    rows[web ? 4 : 1].s.push_back(retrieve);
+    rows[web ? 3 : 0].bytes = rows[web ? 4 : 1].bytes = entry.bytes;
+  };
+  // Each timed step starts with no dirty pages left by the one before (sync), and the raw
+  // tool and Voxray take turns going first, so neither pays for the other's writes more.
+  using Step = std::function<void(int)>;
+  std::vector<std::pair<Step, Step>> pairs;
+  if (which != "dimse") pairs.push_back({curl, [&](int r) { voxray(r, server.webNode()); }});
+  if (which != "web") pairs.push_back({getscu, [&](int r) { voxray(r, server.dimseNode()); }});
+  for (int r = 0; r < repeats; ++r)
+    for (const auto& [raw, ours] : pairs)
+      for (const Step& step : r % 2 ? std::vector<Step>{ours, raw} : std::vector<Step>{raw, ours}) {
+        sync();
+        step(r);
+      }
   std::printf("%-34s %9s %9s %8s\n", "median of runs", "seconds", "MB", "MB/s");
   for (const auto& row : rows)
-    std::printf("%-34s %9.3f %9.1f %8.1f\n", row.what.c_str(), median(row.s), row.bytes / 1e6,
-                row.bytes / 1e6 / median(row.s));
+    if (!row.s.empty())
+      std::printf("%-34s %9.3f %9.1f %8.1f\n", row.what.c_str(), median(row.s), row.bytes / 1e6,
+                  row.bytes / 1e6 / median(row.s));
   fs::remove_all(area);
   return 0;
 }

@@ -44,11 +44,19 @@ void PacsBrowser::run(std::function<void()> job) {
 
 void PacsBrowser::search(const std::string& node, PacsQuery query) {
   query.level = QueryLevel::Study;
-  if (query.limit == 0 || query.limit > kPageSize) query.limit = kPageSize;
+  if (query.limit == 0 || query.limit > kMaxStudies) query.limit = kMaxStudies;
   run([this, node, query] {
-    auto studies = makePacsClient(resolvePacsNode(node))->find(query);
-    task_.post([events = events_, studies] {
-      if (events.found) events.found(studies);
+    FindOptions options;
+    options.pageSize = kPageSize;
+    options.cancel = task_.cancelFlag();
+    options.page = [this](const std::vector<PacsMatch>& page) {
+      task_.post([events = events_, page] {
+        if (events.studies) events.studies(page);
+      });
+    };
+    FindResult result = makePacsClient(resolvePacsNode(node))->findPages(query, options);
+    task_.post([events = events_, count = result.matches.size(), more = result.more] {
+      if (events.found) events.found(count, more);
     });
   });
 }
@@ -87,11 +95,11 @@ RetrieveOptions PacsBrowser::retrieveOptions(int receivedBefore, int total) {
 }
 
 void PacsBrowser::retrieve(const std::string& node, const std::string& studyUid,
-                           const std::string& seriesUid) {
-  run([this, node, studyUid, seriesUid] {
+                           const std::string& seriesUid, int images) {
+  run([this, node, studyUid, seriesUid, images] {
     auto client = makePacsClient(resolvePacsNode(node));
     PacsCache cache(cacheFolder_);
-    CachedSeries entry = cache.retrieve(*client, studyUid, seriesUid, retrieveOptions(0, 0));
+    CachedSeries entry = cache.retrieve(*client, studyUid, seriesUid, retrieveOptions(0, images));
     task_.post([events = events_, entry] {
       if (events.retrieved) events.retrieved(entry);
     });
@@ -126,7 +134,7 @@ void PacsBrowser::retrieveStudy(const std::string& node, const std::string& stud
 
 void PacsBrowser::send(const std::string& node, std::vector<std::string> files) {
   run([this, node, files = std::move(files)] {
-    makePacsClient(resolvePacsNode(node))->store(files);
+    makePacsClient(resolvePacsNode(node))->store(files, task_.cancelFlag());
     task_.post([events = events_] {
       if (events.sent) events.sent();
     });

@@ -19,7 +19,11 @@
 namespace voxray::ui {
 
 struct PacsBrowserEvents {
-  std::function<void(const std::vector<PacsMatch>& studies)> found;
+  // A search's studies arrive in pages as the node answers (append them; the first page
+  // follows a search at once), then found() with their number and whether the node holds
+  // more than kMaxStudies.
+  std::function<void(const std::vector<PacsMatch>& page)> studies;
+  std::function<void(size_t count, bool more)> found;
   std::function<void(const std::string& studyUid, const std::vector<PacsMatch>& series)> series;
   std::function<void(const RetrieveProgress&)> progress;
   // Open entry.folder with series seriesUid; a whole study (seriesUid empty): the folder
@@ -32,9 +36,10 @@ struct PacsBrowserEvents {
 
 class PacsBrowser {
  public:
-  // Most studies one search shows; the user narrows the query for more (a PACS that holds
-  // 10,000 matching studies is not listed whole).
+  // Studies per page: the list fills page by page while the node still answers. Past
+  // kMaxStudies a search stops and says so; the user narrows it.
   static constexpr size_t kPageSize = 200;
+  static constexpr size_t kMaxStudies = 10000;
 
   PacsBrowser(PacsBrowserEvents events, std::string cacheFolder = defaultPacsCacheFolder(),
               BackgroundTask::Post post = {});
@@ -46,11 +51,15 @@ class PacsBrowser {
   // Each starts at once on the browser's thread, after the previous job (cancelled first).
   void search(const std::string& node, PacsQuery query);
   void listSeries(const std::string& node, const std::string& studyUid);
-  void retrieve(const std::string& node, const std::string& studyUid, const std::string& seriesUid);
+  // IMAGES (the series' count from its search, 0: not known) is the progress' total when the
+  // transport does not say (WADO-RS).
+  void retrieve(const std::string& node, const std::string& studyUid, const std::string& seriesUid,
+                int images = 0);
   // Every series of the study into the cache (progress over the whole study), then one
   // folder showing them all (PacsCache::studyFolder).
   void retrieveStudy(const std::string& node, const std::string& studyUid);
-  // Sends FILES (C-STORE; STOW-RS): the screenshot export's "Send to". Failure: failed().
+  // Sends FILES (C-STORE; STOW-RS): the screenshot export's "Send to". Failure: failed();
+  // cancel(): cancelled() (STOW-RS at once; C-STORE once a blocked connect or file returns).
   void send(const std::string& node, std::vector<std::string> files);
   void cancel() { task_.cancel(); }
   bool busy() const { return busy_; }

@@ -86,11 +86,18 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
   form->addRow("Send to PACS node", sendTo_);
   PacsBrowserEvents events;
   events.sent = [this] {
+    sending_ = false;
     status_->setText("Sent");
     emit sent();
     accept();
   };
+  events.cancelled = [this] {
+    sending_ = false;
+    status_->setText("Sending cancelled; the file was kept: " + QString::fromStdString(written_));
+    emit sendCancelled();
+  };
   events.failed = [this](const std::string& m) {
+    sending_ = false;
     status_->setText("Not sent");
     QString message =
         QString::fromStdString(m) + "\nThe file was kept: " + QString::fromStdString(written_);
@@ -245,7 +252,8 @@ bool ExportDialog::sendExported() {
 #ifdef VOXRAY_HAS_DICOM
   QString node = sendTo_->currentText().trimmed();
   if (node.isEmpty() || written_.empty()) return false;
-  status_->setText("Sending to " + node + "…");
+  status_->setText("Sending to " + node + "… (Cancel stops it)");
+  sending_ = true;
   pacs_->send(node.toStdString(), {written_});
   return true;
 #else
@@ -257,6 +265,17 @@ void ExportDialog::save() {
   QString path = askPath();
   if (path.isEmpty() || !exportTo(path)) return;
   if (!sendExported()) accept();  // else it closes when the node took the file
+}
+
+void ExportDialog::reject() {
+#ifdef VOXRAY_HAS_DICOM
+  if (sending_) {
+    status_->setText("Cancelling the send…");
+    pacs_->cancel();
+    return;
+  }
+#endif
+  QDialog::reject();
 }
 
 ExportDialog::~ExportDialog() = default;

@@ -50,9 +50,14 @@ class ExportDialog : public QDialog {
   // After exportTo wrote a .dcm: sends it to the node in "Send to" (if any) in the
   // background; sent() or the error sink follows. False when nothing is to be sent.
   bool sendExported();
+  bool sending() const { return sending_; }
+  // While sending, Cancel (the button, Esc, closing) cancels the send and keeps the dialog
+  // open with the file; otherwise it closes the dialog.
+  void reject() override;
 
  signals:
   void sent();
+  void sendCancelled();
 
  private:
   void save();
@@ -75,6 +80,7 @@ class ExportDialog : public QDialog {
   QComboBox* sendTo_;
   QLabel* status_;
   std::string written_;  // the last file exportTo wrote
+  bool sending_ = false;
   StudyIdentity study_;
   QSize chosen_;  // the chosen resolution, kept while the fields show another capture's size
   std::function<QString()> choose_;

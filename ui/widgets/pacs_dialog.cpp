@@ -67,7 +67,7 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
   progress_->setVisible(false);
   searchButton_ = new QPushButton("&Search");
   connect(searchButton_, &QPushButton::clicked, this, &PacsDialog::search);
-  cancelButton_ = new QPushButton("Cancel retrieval");
+  cancelButton_ = new QPushButton("Cancel");  // a search (10,000 studies) or a retrieval
   cancelButton_->setEnabled(false);
   connect(cancelButton_, &QPushButton::clicked, this, [this] { browser_->cancel(); });
   auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
@@ -86,7 +86,12 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
   resize(900, 600);
 
   PacsBrowserEvents events;
-  events.found = [this](const std::vector<PacsMatch>& s) { showStudies(s); };
+  events.studies = [this](const std::vector<PacsMatch>& page) { showStudies(page); };
+  events.found = [this](size_t count, bool more) {
+    setBusy(false, more ? QString("The first %1 studies: narrow the search for others").arg(count)
+                        : QString("%1 studies").arg(count));
+    emit searched(int(count));
+  };
   events.series = [this](const std::string& uid, const std::vector<PacsMatch>& s) {
     showSeries(uid, s);
   };
@@ -104,7 +109,13 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
     setBusy(false, q(message));
     emit failed(q(message));
   };
-  events.cancelled = [this] { setBusy(false, "Retrieval cancelled; nothing was kept"); };
+  events.cancelled = [this] {
+    setBusy(
+        false,
+        progress_->isVisible()
+            ? "Retrieval cancelled; nothing was kept"
+            : QString("Search cancelled: %1 studies listed").arg(results_->topLevelItemCount()));
+  };
   browser_ = std::make_unique<PacsBrowser>(events, cacheFolder, postTo(this));
 }
 
@@ -121,6 +132,8 @@ void PacsDialog::search() {
   query.modality = field("modality")->text().toStdString();
   query.accessionNumber = field("accession")->text().toStdString();
   setBusy(true, "Searching…");
+  cancelButton_->setEnabled(true);
+  results_->clear();
   browser_->search(node_->currentText().toStdString(), query);
 }
 
@@ -133,7 +146,8 @@ void PacsDialog::retrieve(QTreeWidgetItem* item) {
   const std::string uid = item->data(0, kUidRole).toString().toStdString();
   if (!item->parent()) return browser_->retrieveStudy(node, uid);
   if (uid.empty()) return setBusy(false, "");  // the placeholder of a study not yet listed
-  browser_->retrieve(node, item->data(0, kStudyUidRole).toString().toStdString(), uid);
+  browser_->retrieve(node, item->data(0, kStudyUidRole).toString().toStdString(), uid,
+                     item->text(Images).toInt());
 }
 
 void PacsDialog::setBusy(bool busy, const QString& status) {
@@ -146,7 +160,6 @@ void PacsDialog::setBusy(bool busy, const QString& status) {
 }
 
 void PacsDialog::showStudies(const std::vector<PacsMatch>& studies) {
-  results_->clear();
   for (const auto& s : studies) {
     auto* item = new QTreeWidgetItem(
         results_, {q(s.studyDate), q(s.studyDescription), q(s.modalities),
@@ -155,11 +168,7 @@ void PacsDialog::showStudies(const std::vector<PacsMatch>& studies) {
     item->setData(0, kUidRole, q(s.studyInstanceUid));
     new QTreeWidgetItem(item, {"", "…"});  // makes it expandable; replaced by its series
   }
-  setBusy(false, studies.size() >= PacsBrowser::kPageSize
-                     ? QString("The first %1 studies: narrow the search for others")
-                           .arg(PacsBrowser::kPageSize)
-                     : QString("%1 studies").arg(studies.size()));
-  emit searched(int(studies.size()));
+  status_->setText(QString("Searching… %1 studies so far").arg(results_->topLevelItemCount()));
 }
 
 void PacsDialog::showSeries(const std::string& studyUid, const std::vector<PacsMatch>& series) {

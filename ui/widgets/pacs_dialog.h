@@ -47,7 +47,7 @@ class PacsDialog : public QDialog {
   void failed(const QString& message);
 
  private:
-  void showStudies(const std::vector<PacsMatch>& studies);
+  void showStudies(const std::vector<PacsMatch>& studies);  // appends a page
   void showSeries(const std::string& studyUid, const std::vector<PacsMatch>& series);
   void setBusy(bool busy, const QString& status);
 

@@ -25,15 +25,16 @@ int subops(const RetrieveResponse& r) {
 }
 
 // A DcmSCU that stores C-GET's incoming instances into a folder, reports progress, stops on
-// cancel and returns at most LIMIT C-FIND matches (then asks the node to stop with C-CANCEL).
+// cancel and hands C-FIND matches to a callback as they come (which may ask the node to stop
+// with C-CANCEL by returning false).
 class Scu : public DcmSCU {
  public:
+  std::function<bool(DcmDataset&)> onFindMatch;
   std::string folder;
   std::vector<std::string> files;
   RetrieveOptions retrieve;
   RetrieveProgress progress;
-  size_t findLimit = 0;
-  size_t findMatches = 0;
+  bool findCancelSent = false;
   bool cancelled = false;
   std::string storeError;
 
@@ -85,7 +86,11 @@ class Scu : public DcmSCU {
 
   OFCondition handleFINDResponse(const T_ASC_PresentationContextID id, QRResponse* response,
                                  OFBool& waitForNext) override {
-    if (response->m_dataset && ++findMatches == findLimit) sendCANCELRequest(id);
+    if (response->m_dataset && onFindMatch && !findCancelSent &&
+        !onFindMatch(*response->m_dataset)) {
+      findCancelSent = true;
+      sendCANCELRequest(id);
+    }
     return DcmSCU::handleFINDResponse(id, response, waitForNext);
   }
 };
@@ -124,13 +129,12 @@ class DimseClient : public PacsClient {
     scu->releaseAssociation();
   }
 
-  std::vector<PacsMatch> find(const PacsQuery& q) override {
+  FindResult findPages(const PacsQuery& q, const FindOptions& options) override {
     const char* model = q.level == QueryLevel::Patient
                             ? UID_FINDPatientRootQueryRetrieveInformationModel
                             : UID_FINDStudyRootQueryRetrieveInformationModel;
     auto scu = connect(
         "C-FIND", [&](Scu& s) { s.addPresentationContext(model, acceptedTransferSyntaxes()); });
-    scu->findLimit = q.limit;
     DcmDataset keys;
     keys.putAndInsertString(DCM_QueryRetrieveLevel, levelName(q.level));
     keys.putAndInsertString(DCM_PatientName, q.patientName.c_str());
@@ -153,18 +157,35 @@ class DimseClient : public PacsClient {
       keys.putAndInsertString(DCM_SeriesNumber, "");
       keys.putAndInsertString(DCM_NumberOfSeriesRelatedInstances, "");
     }
-    OFList<QRResponse*> responses;
+    // C-FIND has no paging: matches arrive one by one and are handed over in pages. One
+    // match past the limit tells that the node holds more; then C-CANCEL stops it.
+    FindResult result;
+    std::vector<PacsMatch> page;
+    auto flush = [&] {
+      if (options.page && !page.empty()) options.page(page);
+      page.clear();
+    };
+    scu->onFindMatch = [&](DcmDataset& d) {
+      if (options.cancel && options.cancel->load()) return false;
+      if (q.limit && result.matches.size() == q.limit) {
+        result.more = true;
+        return false;
+      }
+      result.matches.push_back(toMatch(d, q.level));
+      page.push_back(result.matches.back());
+      if (page.size() >= std::max<size_t>(options.pageSize, 1)) flush();
+      return true;
+    };
     OFCondition cond =
-        scu->sendFINDRequest(scu->findPresentationContextID(model, ""), &keys, &responses);
-    std::vector<PacsMatch> matches;
-    for (QRResponse* r : responses) {
-      if (r->m_dataset && (q.limit == 0 || matches.size() < q.limit))
-        matches.push_back(toMatch(*r->m_dataset, q.level));
-      delete r;
+        scu->sendFINDRequest(scu->findPresentationContextID(model, ""), &keys, nullptr);
+    if (options.cancel && options.cancel->load()) {
+      scu->abortAssociation();
+      throw cancelledError("Search cancelled");
     }
     check("C-FIND", cond);
     scu->releaseAssociation();
-    return matches;
+    flush();
+    return result;
   }
 
   std::vector<std::string> retrieveSeries(const std::string& studyUid, const std::string& seriesUid,
@@ -203,7 +224,7 @@ class DimseClient : public PacsClient {
     return scu->files;
   }
 
-  void store(const std::vector<std::string>& files) override {
+  void store(const std::vector<std::string>& files, const std::atomic<bool>* cancel) override {
     std::vector<DcmFileFormat> loaded(files.size());
     for (size_t i = 0; i < files.size(); ++i)
       if (loaded[i].loadFile(files[i].c_str()).bad())
@@ -219,6 +240,11 @@ class DimseClient : public PacsClient {
       }
     });
     for (size_t i = 0; i < files.size(); ++i) {
+      if (cancel && cancel->load()) {
+        scu->abortAssociation();
+        throw cancelledError("Sending cancelled after " + std::to_string(i) + " of " +
+                             std::to_string(files.size()) + " files");
+      }
       Uint16 status = 0;
       OFCondition cond = scu->sendSTORERequest(0, "", loaded[i].getDataset(), status);
       check("C-STORE of " + files[i], cond);

@@ -81,11 +81,12 @@ HttpResponse HttpSession::get(const std::string& url, const std::string& accept,
 }
 
 HttpResponse HttpSession::post(const std::string& url, const std::string& contentType,
-                               const std::string& body, const std::string& accept) {
+                               const std::string& body, const std::string& accept,
+                               const std::atomic<bool>* cancel) {
   CURL* curl = static_cast<CURL*>(curl_);
   curl_easy_setopt(curl, CURLOPT_POSTFIELDS, body.data());
   curl_easy_setopt(curl, CURLOPT_POSTFIELDSIZE_LARGE, curl_off_t(body.size()));
-  return perform("POST", url, {"Content-Type: " + contentType, "Accept: " + accept}, {}, nullptr);
+  return perform("POST", url, {"Content-Type: " + contentType, "Accept: " + accept}, {}, cancel);
 }
 
 HttpResponse HttpSession::perform(const std::string& what, const std::string& url,
@@ -129,7 +130,8 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
   curl_easy_getinfo(curl, CURLINFO_CONTENT_TYPE, &type);
   response.contentType = type ? type : "";
   std::string where = "DICOMweb " + what + " " + url;
-  if (cancel && cancel->load()) throw cancelledError("Retrieval cancelled");
+  if (cancel && cancel->load())
+    throw cancelledError(what == "POST" ? "Sending cancelled" : "Retrieval cancelled");
   if (!transfer.sinkError.empty()) throw inputError(where + ": " + transfer.sinkError);
   if (code == CURLE_PEER_FAILED_VERIFICATION || code == CURLE_SSL_CACERT_BADFILE ||
       code == CURLE_SSL_CONNECT_ERROR || code == CURLE_SSL_CERTPROBLEM)

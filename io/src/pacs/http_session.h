@@ -30,7 +30,7 @@ class HttpSession {
   HttpResponse get(const std::string& url, const std::string& accept, const Sink& sink = {},
                    const std::atomic<bool>* cancel = nullptr);
   HttpResponse post(const std::string& url, const std::string& contentType, const std::string& body,
-                    const std::string& accept);
+                    const std::string& accept, const std::atomic<bool>* cancel = nullptr);
   // Percent-encodes a query value (keeping the wildcard *).
   std::string escape(const std::string& value);
 

@@ -30,6 +30,16 @@ std::string folderName(const std::string& uid) {
   return plain ? uid : std::string("h").append(std::to_string(std::hash<std::string>{}(uid)));
 }
 
+// Below this much free space where a write failed, the cache's file system counts as full
+// (a CT instance is about 0.5 MB; a write that failed with more room left failed otherwise).
+constexpr uintmax_t kFullBelowBytes = 4u << 20;
+
+bool fileSystemFull(const std::string& folder) {
+  std::error_code ec;
+  fs::space_info space = fs::space(folder, ec);
+  return !ec && space.available < kFullBelowBytes;
+}
+
 // Removes a staging folder whatever happens to the retrieval.
 struct Staging {
   fs::path path;
@@ -84,14 +94,23 @@ void PacsCache::save(const std::vector<CachedSeries>& entries) const {
   {
     std::ofstream out(tmp);
     out << nlohmann::json{{"series", entries}}.dump(1);
-    if (!out.flush())
-      throw outputError("Cannot write the PACS cache index in " + root_ +
-                        ": the disk may be full; free space or set VOXRAY_CACHE_DIR");
+    if (!out.flush()) {
+      out.close();
+      std::error_code ignored;
+      fs::remove(tmp, ignored);
+      throw fullError("Cannot write the PACS cache index");
+    }
   }
   fs::rename(tmp, fs::path(root_) / "index.json");
 }
 
 std::vector<CachedSeries> PacsCache::entries() const { return load(); }
+
+Error PacsCache::fullError(const std::string& what, const std::string& detail) const {
+  return outputError(what + ": the cache at " + root_ +
+                     " is full: free space or set VOXRAY_CACHE_DIR to a folder on another disk" +
+                     (detail.empty() ? "" : " (" + detail + ")"));
+}
 
 std::optional<CachedSeries> PacsCache::find(const std::string& seriesUid) {
   auto all = load();
@@ -138,11 +157,17 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   if (auto hit = find(seriesUid)) return *hit;
   Staging staging;
   std::string pattern = root_ + "/staging/" + folderName(seriesUid) + "-XXXXXX";
-  if (!mkdtemp(pattern.data()))
-    throw outputError("Cannot create a folder in the PACS cache " + root_ +
-                      ": the disk may be full; free space or set VOXRAY_CACHE_DIR");
+  if (!mkdtemp(pattern.data())) throw fullError("Cannot create a staging folder");
   staging.path = pattern;
-  std::vector<std::string> files = client.retrieveSeries(studyUid, seriesUid, pattern, options);
+  std::vector<std::string> files;
+  try {
+    files = client.retrieveSeries(studyUid, seriesUid, pattern, options);
+  } catch (const Error& e) {
+    // Judged before the staged files go: they are what filled the disk.
+    if (e.kind() != Error::Kind::Cancelled && fileSystemFull(pattern))
+      throw fullError("Retrieval stopped, nothing was kept", e.what());
+    throw;
+  }
   if (options.cancel && options.cancel->load()) throw cancelledError("Retrieval cancelled");
   CachedSeries entry{studyUid, seriesUid, root_ + "/series/" + folderName(seriesUid),
                      0,        now(),     int(files.size())};
@@ -158,7 +183,12 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   auto all = load();
   all.push_back(entry);
   evict(all, seriesUid);
-  save(all);
+  try {
+    save(all);
+  } catch (const Error&) {
+    fs::remove_all(entry.folder, ec);  // not in the index: not kept
+    throw;
+  }
   return entry;
 }
 
@@ -176,11 +206,10 @@ std::string PacsCache::studyFolder(const std::string& studyUid,
       fs::create_symlink(f.path(), dir / f.path().filename(), ec);
       if (ec) break;
     }
+    if (ec && fileSystemFull(root_)) throw fullError("Cannot gather the retrieved study");
     if (ec)
       throw outputError("Cannot gather the retrieved study in " + study.string() + " (" +
-                        ec.message() +
-                        "): the disk may be full; free space or set "
-                        "VOXRAY_CACHE_DIR");
+                        ec.message() + "): set VOXRAY_CACHE_DIR to a writable folder");
   }
   return study.string();
 }

@@ -1,5 +1,6 @@
 // The DICOMweb transport: QIDO-RS search, WADO-RS retrieve (multipart/related, streamed to
 // files as parts arrive, transfer syntaxes as stored), STOW-RS send.
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -76,7 +77,28 @@ class WebClient : public PacsClient {
 
   void echo() override { http_.get(node_.baseUrl + "/studies?limit=1", kDicomJson); }
 
-  std::vector<PacsMatch> find(const PacsQuery& q) override {
+  // QIDO-RS pages by limit and offset: one request per page until a short page (or the
+  // query's limit, asked one past to learn whether there are more).
+  FindResult findPages(const PacsQuery& q, const FindOptions& options) override {
+    FindResult result;
+    const size_t pageSize = std::max<size_t>(options.pageSize, 1);
+    for (PacsQuery page = q;; page.offset += page.limit) {
+      if (options.cancel && options.cancel->load()) throw cancelledError("Search cancelled");
+      size_t wanted = q.limit ? q.limit + 1 - result.matches.size() : pageSize;
+      page.limit = std::min(pageSize, wanted);
+      std::vector<PacsMatch> got = findOnce(page);
+      if (q.limit && result.matches.size() + got.size() > q.limit) {
+        result.more = true;
+        got.resize(q.limit - result.matches.size());
+      }
+      result.matches.insert(result.matches.end(), got.begin(), got.end());
+      if (options.page && !got.empty()) options.page(got);
+      if (result.more || got.size() < page.limit) return result;
+    }
+  }
+
+ private:
+  std::vector<PacsMatch> findOnce(const PacsQuery& q) {
     if (q.level == QueryLevel::Patient)
       throw inputError("DICOMweb (QIDO-RS) has no patient-level search: search studies instead");
     std::string url = node_.baseUrl + "/studies";
@@ -112,6 +134,7 @@ class WebClient : public PacsClient {
     return matches;
   }
 
+ public:
   std::vector<std::string> retrieveSeries(const std::string& studyUid, const std::string& seriesUid,
                                           const std::string& folder,
                                           const RetrieveOptions& options) override {
@@ -152,7 +175,7 @@ class WebClient : public PacsClient {
     return files;
   }
 
-  void store(const std::vector<std::string>& files) override {
+  void store(const std::vector<std::string>& files, const std::atomic<bool>* cancel) override {
     const std::string boundary = "voxray-stow-7d0c1e5a";
     std::string body;
     for (const auto& f : files) {
@@ -164,9 +187,10 @@ class WebClient : public PacsClient {
           "--" + boundary + "\r\nContent-Type: application/dicom\r\n\r\n" + content.str() + "\r\n";
     }
     body += "--" + boundary + "--\r\n";
-    HttpResponse r = http_.post(
-        node_.baseUrl + "/studies",
-        "multipart/related; type=\"application/dicom\"; boundary=" + boundary, body, kDicomJson);
+    HttpResponse r =
+        http_.post(node_.baseUrl + "/studies",
+                   "multipart/related; type=\"application/dicom\"; boundary=" + boundary, body,
+                   kDicomJson, cancel);
     try {
       json answer = r.body.empty() ? json::object() : json::parse(r.body);
       if (answer.contains("00081198") && answer["00081198"].contains("Value") &&

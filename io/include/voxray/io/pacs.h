@@ -60,6 +60,19 @@ struct PacsMatch {
   int seriesNumber = 0, numberOfSeries = 0, numberOfInstances = 0;
 };
 
+// How a search hands its matches over: in pages, as the node sends them, so a caller shows
+// the first ones while a node with 10,000 matches is still answering.
+struct FindOptions {
+  std::function<void(const std::vector<PacsMatch>& page)> page;  // may be empty
+  size_t pageSize = 500;  // matches per page; DICOMweb asks for this many per request
+  const std::atomic<bool>* cancel = nullptr;  // true: stop (C-CANCEL), throw Cancelled
+};
+
+struct FindResult {
+  std::vector<PacsMatch> matches;  // every page, in order
+  bool more = false;               // the node holds more than the query's limit
+};
+
 struct RetrieveProgress {
   int received = 0;  // images so far
   int total = 0;     // 0 when the server does not say
@@ -76,14 +89,19 @@ class PacsClient {
   virtual ~PacsClient() = default;
   // Throws unless the node answers (C-ECHO; DICOMweb: a QIDO search with limit 1).
   virtual void echo() = 0;
-  virtual std::vector<PacsMatch> find(const PacsQuery& query) = 0;
+  // Every match (at most query.limit, then more says whether the node holds others),
+  // handed to OPTIONS.page in pages as they arrive.
+  virtual FindResult findPages(const PacsQuery& query, const FindOptions& options) = 0;
+  std::vector<PacsMatch> find(const PacsQuery& query) { return findPages(query, {}).matches; }
   // Writes every instance of the series into FOLDER (which exists); returns the files.
   virtual std::vector<std::string> retrieveSeries(const std::string& studyUid,
                                                   const std::string& seriesUid,
                                                   const std::string& folder,
                                                   const RetrieveOptions& options) = 0;
-  // Sends DICOM files (C-STORE; STOW-RS). Throws naming the first file refused.
-  virtual void store(const std::vector<std::string>& files) = 0;
+  // Sends DICOM files (C-STORE; STOW-RS). Throws naming the first file refused, Cancelled
+  // when *cancel becomes true (DIMSE: checked before each file and after the association).
+  virtual void store(const std::vector<std::string>& files,
+                     const std::atomic<bool>* cancel = nullptr) = 0;
 };
 
 std::unique_ptr<PacsClient> makePacsClient(const PacsNode& node);

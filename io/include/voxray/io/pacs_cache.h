@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "voxray/io/error.h"
 #include "voxray/io/pacs.h"
 
 namespace voxray {
@@ -32,7 +33,8 @@ class PacsCache {
   // The cached series (and marks it used), or nothing.
   std::optional<CachedSeries> find(const std::string& seriesUid);
   // The series from the cache, else retrieved from CLIENT first. Throws Cancelled on cancel
-  // and the client's error on failure; in both cases the cache is as before.
+  // and the client's error on failure (Output saying the cache is full when its file system
+  // is); in every case the cache is as before.
   CachedSeries retrieve(PacsClient& client, const std::string& studyUid,
                         const std::string& seriesUid, const RetrieveOptions& options = {});
   std::vector<CachedSeries> entries() const;
@@ -46,6 +48,8 @@ class PacsCache {
   std::vector<CachedSeries> load() const;
   void save(const std::vector<CachedSeries>& entries) const;
   void evict(std::vector<CachedSeries>& entries, const std::string& keep) const;
+  // "WHAT: the cache at ROOT is full: free space or set VOXRAY_CACHE_DIR ... (DETAIL)"
+  Error fullError(const std::string& what, const std::string& detail = {}) const;
 
   std::string root_;
   uint64_t capBytes_;
