@@ -104,9 +104,26 @@ void checkDataFile(const std::string& path, const MetaImage& image) {
                      " is missing; keep the .mhd and its data file in one folder");
 }
 
+// MetaIO copies each header field's name into a 255-byte array with strcpy (an abort under
+// _FORTIFY_SOURCE, heap corruption otherwise; libFuzzer found both), so a header line longer
+// than any real one is refused first. The header ends at ElementDataFile; data may follow.
+void checkHeaderLines(const std::string& path) {
+  constexpr size_t kLongestLine = 250;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int n = 0; n < 1000 && std::getline(in, line); ++n) {
+    if (line.size() > kLongestLine)
+      throw inputError(path + ": header line " + std::to_string(n + 1) + " is " +
+                       std::to_string(line.size()) + " characters long (at most " +
+                       std::to_string(kLongestLine) + " are read); the file is damaged");
+    if (line.find("ElementDataFile") != std::string::npos) return;
+  }
+}
+
 }  // namespace
 
 SampleGrid readMetaImage(const std::string& path) {
+  checkHeaderLines(path);
   MetaImage image;
   if (!image.Read(path.c_str(), false))
     throw inputError(path + ": not a readable MetaImage file (its header is missing or damaged)");
