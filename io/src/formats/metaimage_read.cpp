@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -116,6 +117,14 @@ void checkHeaderLines(const std::string& path) {
       throw inputError(path + ": header line " + std::to_string(n + 1) + " is " +
                        std::to_string(line.size()) + " characters long (at most " +
                        std::to_string(kLongestLine) + " are read); the file is damaged");
+    // MetaIO reads NDims numbers for each array field: a huge NDims reads (hangs) for ever.
+    if (line.rfind("NDims", 0) == 0) {
+      const size_t eq = line.find('=');
+      const std::string value = eq == std::string::npos ? "" : line.substr(eq + 1);
+      const long dims = std::strtol(value.c_str(), nullptr, 10);
+      if (dims < 1 || dims > 10)
+        throw inputError(path + ": NDims is '" + value + "'; Voxray opens 2 to 10 dimensions");
+    }
     if (line.find("ElementDataFile") != std::string::npos) return;
   }
 }
