@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -104,9 +105,34 @@ void checkDataFile(const std::string& path, const MetaImage& image) {
                      " is missing; keep the .mhd and its data file in one folder");
 }
 
+// MetaIO copies each header field's name into a 255-byte array with strcpy (an abort under
+// _FORTIFY_SOURCE, heap corruption otherwise; libFuzzer found both), so a header line longer
+// than any real one is refused first. The header ends at ElementDataFile; data may follow.
+void checkHeaderLines(const std::string& path) {
+  constexpr size_t kLongestLine = 250;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int n = 0; n < 1000 && std::getline(in, line); ++n) {
+    if (line.size() > kLongestLine)
+      throw inputError(path + ": header line " + std::to_string(n + 1) + " is " +
+                       std::to_string(line.size()) + " characters long (at most " +
+                       std::to_string(kLongestLine) + " are read); the file is damaged");
+    // MetaIO reads NDims numbers for each array field: a huge NDims reads (hangs) for ever.
+    if (line.rfind("NDims", 0) == 0) {
+      const size_t eq = line.find('=');
+      const std::string value = eq == std::string::npos ? "" : line.substr(eq + 1);
+      const long dims = std::strtol(value.c_str(), nullptr, 10);
+      if (dims < 1 || dims > 10)
+        throw inputError(path + ": NDims is '" + value + "'; Voxray opens 2 to 10 dimensions");
+    }
+    if (line.find("ElementDataFile") != std::string::npos) return;
+  }
+}
+
 }  // namespace
 
 SampleGrid readMetaImage(const std::string& path) {
+  checkHeaderLines(path);
   MetaImage image;
   if (!image.Read(path.c_str(), false))
     throw inputError(path + ": not a readable MetaImage file (its header is missing or damaged)");

@@ -142,7 +142,9 @@ TEST(FormatsBadFiles, FuzzerRegressionsEndInTheirMessages) {
       {"nifti2-swapped-header-stack-overrun.nii", "not a readable NIfTI file (dim[0] is"},
       {"nifti2-claims-13gb.nii", "shorter than the header says (it claims 13153337408 bytes"},
       {"nrrd-bad-magic-teem-leak.nrrd", "does not start with a NRRD0001"},
-      {"mhd-pattern-metaio-leak.mha", "is not a slice pattern Voxray reads"}};
+      {"mhd-pattern-metaio-leak.mha", "is not a slice pattern Voxray reads"},
+      {"mha-long-header-line-metaio-overflow.mhd", "header line 8 is 717 characters long"},
+      {"mha-huge-ndims-metaio-hang.mha", "Voxray opens 2 to 10 dimensions"}};
   for (const auto& [name, message] : cases)
     EXPECT_THAT(loadError((dir / name).string()), HasSubstr(message)) << name;
   // Denormal scaling: the volume loads, with finite voxels and a usable storage scale.
