@@ -122,7 +122,7 @@ void checkHeaderLines(const std::string& path) {
       const size_t eq = line.find('=');
       const std::string value = eq == std::string::npos ? "" : line.substr(eq + 1);
       const long dims = std::strtol(value.c_str(), nullptr, 10);
-      if (dims < 1 || dims > 10)
+      if (dims < 2 || dims > 10)
         throw inputError(path + ": NDims is '" + value + "'; Voxray opens 2 to 10 dimensions");
     }
     if (line.find("ElementDataFile") != std::string::npos) return;

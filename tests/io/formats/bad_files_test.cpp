@@ -144,7 +144,8 @@ TEST(FormatsBadFiles, FuzzerRegressionsEndInTheirMessages) {
       {"nrrd-bad-magic-teem-leak.nrrd", "does not start with a NRRD0001"},
       {"mhd-pattern-metaio-leak.mha", "is not a slice pattern Voxray reads"},
       {"mha-long-header-line-metaio-overflow.mhd", "header line 8 is 717 characters long"},
-      {"mha-huge-ndims-metaio-hang.mha", "Voxray opens 2 to 10 dimensions"}};
+      {"mha-huge-ndims-metaio-hang.mha", "Voxray opens 2 to 10 dimensions"},
+      {"mha-ndims-1-metaio-heap-corruption.mha", "Voxray opens 2 to 10 dimensions"}};
   for (const auto& [name, message] : cases)
     EXPECT_THAT(loadError((dir / name).string()), HasSubstr(message)) << name;
   // Denormal scaling: the volume loads, with finite voxels and a usable storage scale.
