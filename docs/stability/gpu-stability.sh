@@ -22,7 +22,7 @@ if ! $T --gtest_list_tests >/dev/null 2>&1; then
   T="build-gpu/lib/ld-linux-x86-64.so.2 --library-path build-gpu/lib $T"
 fi
 # The shared data is not on the GPU machine: the CThead cases skip themselves.
-cases='Stability*:Shading*:*KernelVsReference*:*EmptySpace*:Slabs*:*/Slabs*'
+cases='Stability*:Shading*:*KernelVsReference*:*EmptySpace*:Slabs*:*/Slabs*:Lighting*:MonteCarlo*:Path*'
 status=0
 for storages in buffer image; do
   echo "=== VOXRAY_TEST_DEVICE=gpu VOXRAY_TEST_STORAGES=$storages"

@@ -126,6 +126,9 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
   RenderStateModel& m = models.render;
   auto* box = new QGroupBox("Light");
   auto* form = new QFormLayout(box);
+  // The lighting model (phong, shadows, ao, cinematic) sits with the light it shapes; the
+  // Rendering group has no room left on a 1080-line screen.
+  form->addRow("Model", makeParamCombo(m, kAppearance, "lighting"));
   auto* follow = new QCheckBox("Follows the camera");
   follow->setObjectName("lightFollowsCamera");
   follow->setToolTip("On: the light turns with the camera. Off: it stays fixed to the patient");

@@ -144,7 +144,6 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
 
   form->addRow("Gradient", makeParamCombo(m, kAppearance, "gradient"));
   form->addRow("Interpolation", makeParamCombo(m, kAppearance, "interp"));
-  form->addRow("Lighting", makeParamCombo(m, kAppearance, "lighting"));  // issue 15
   return box;
 }
 
