@@ -172,9 +172,10 @@ ParamSpec toggle(std::string key, std::string help, Field field) {
   return s;
 }
 
-// The field of a RenderParams a spec reads and writes.
+// The field of a RenderParams a spec reads and writes. PATH is a member path (light.ambient),
+// which parentheses would break: p.(path) is not C++.
 #define FIELD(path) \
-  [](auto& p) -> auto& { return p.path; }
+  [](auto& p) -> auto& { return p.path; }  // NOLINT(bugprone-macro-parentheses)
 
 std::vector<ParamSpec> makeSpecs() {
   const ParamDomain unit = ParamDomain().atLeast(0).atMost(1).steps(0.05, 2);
