@@ -60,19 +60,24 @@ TEST(LightingKernel, GridRebuildsFollowLightTableClipAndModelOnly) {
   EXPECT_EQ(rc.lightingBuilds(), 1);  // phong frames build nothing
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 1);  // and leave the grid as it was
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 1);
   p.light.position.x += 10.0;
   rc.render(p);
-  EXPECT_EQ(rc.lightingBuilds(), 2);  // the light moved
+  EXPECT_EQ(rc.lightingBuilds(), 2);       // the light moved
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 1);  // through the same extinction
   p.transferFunction[2].rgba.a = 0.5;
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 3);  // the table's opacity
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 2);
   p.clip.hi.x = 0.7;
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 4);  // the clip box
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 3);
   p.lighting = Lighting::Ao;
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 5);  // the model
-  p.light.position.x += 10.0;         // ao does not depend on the light
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 3);
+  p.light.position.x += 10.0;  // ao does not depend on the light
   p.camera.azimuthDeg = 10.0;
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 5);
