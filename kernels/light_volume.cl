@@ -5,8 +5,9 @@
 // reference (engine/include/voxray/engine/monte_carlo_reference.h):
 //   sigma    the extinction per mm of the classified volume, -ln(1 - a) / reference step,
 //            averaged over each grid cell (extinction is what integrates along a ray).
-//   shadow   exp(-optical depth) toward the light, from the shadow offset past the grid
-//            point (P->light_march.w: no surface shadows itself) to the light, in the clip box.
+//   shadow   exp(-optical depth) from the grid point to the light, in the clip box; the
+//            shading reads it the shadow offset (P->light_march.w) toward the light from
+//            the sample (frame_light), so that no surface shadows itself.
 //   ao       the mean over 16 directions (a Fibonacci sphere) of exp(-optical depth) to
 //            P->light_march.x mm, inside the clip box.
 // shadows sweeps the sigma grid slice by slice (light_sweep); a light within the grid's
@@ -24,13 +25,6 @@
 inline int3 grid_point(__constant RaycastParams* P, int gid) {
   int4 n = P->light_grid;
   return (int3)(gid % n.x, (gid / n.x) % n.y, gid / (n.x * n.y));
-}
-
-// Length in mm of a step du in voxel coordinates.
-inline float voxel_mm(__constant RaycastParams* P, float3 du) {
-  float3 w =
-      (float3)(dot(P->to_world_x.xyz, du), dot(P->to_world_y.xyz, du), dot(P->to_world_z.xyz, du));
-  return length(w);
 }
 
 // Whether any macro cell (CELL voxels, skip.cl) that voxel positions lo..hi reach is
@@ -94,25 +88,13 @@ inline float grid_transmittance(__constant RaycastParams* P, __global const floa
   return exp(-depth);
 }
 
-// The light seen from voxel position p: its distance in mm (0 where it sits at p or is not
-// finite), *dv voxels per mm toward it. Scaled first: a light far away ("at infinity") must
-// not overflow the length.
-inline float toward_light(__constant RaycastParams* P, float3 p, float3* dv) {
-  float3 du = P->light_v.xyz - p;
-  float m = fmax(fabs(du.x), fmax(fabs(du.y), fabs(du.z)));
-  if (!(m > 1e-6f) || !isfinite(m)) return 0.0f;
-  float len = voxel_mm(P, du / m);
-  *dv = du / (m * len);
-  return m * len;
-}
-
 __kernel void light_shadow(__constant RaycastParams* P, __global const float* sigma,
                            __global float* out, int points) {
   int gid = get_global_id(0);
   if (gid >= points) return;
   float3 p = convert_float3(grid_point(P, gid)) * (float)P->light_grid.w, dv;
   float len = toward_light(P, p, &dv);
-  out[gid] = len > 0.0f ? grid_transmittance(P, sigma, p, dv, P->light_march.w, len) : 1.0f;
+  out[gid] = len > 0.0f ? grid_transmittance(P, sigma, p, dv, 0.0f, len) : 1.0f;
 }
 
 // The grid's value at grid coordinates (u, v) of slice `slice` across axis `axis`, bilinear,
@@ -142,9 +124,8 @@ inline float slice_bilinear(__global const float* t, int4 n, int axis, int slice
 // would darken every point next to an opaque one). One launch of ONE work-group, which
 // loops over the slices with a barrier between them: a launch per slice cost about 13 ms
 // each on a loaded 2-core PoCL device (the workers' wake-ups), 1.9 s a sweep.
-// light_offset applies the shadow offset.
 __kernel void light_sweep(__constant RaycastParams* P, __global const float* sigma,
-                          __global float* t, int axis, int toward) {
+                          __global float* t, int axis, int toward, int reach) {
   int4 n = P->light_grid;
   int na[3] = {n.x, n.y, n.z};
   int au = (axis + 1) % 3, av = (axis + 2) % 3;
@@ -153,7 +134,7 @@ __kernel void light_sweep(__constant RaycastParams* P, __global const float* sig
   int lid = get_local_id(0), items = get_local_size(0);
   float cell = (float)n.w;
   for (int i = 0; i < slices; ++i) {
-    int slice = toward > 0 ? slices - 1 - i : i, prev = slice + toward;
+    int slice = toward > 0 ? slices - 1 - i : i, back = min(reach, i);
     for (int j = lid; j < across; j += items) {
       int g[3];
       g[axis] = slice, g[au] = j % na[au], g[av] = j / na[au];
@@ -165,29 +146,26 @@ __kernel void light_sweep(__constant RaycastParams* P, __global const float* sig
       float3 p = (float3)(g[0], g[1], g[2]) * cell;
       float3 du = P->light_v.xyz - p;
       float d[3] = {du.x, du.y, du.z};
-      // du / |d_axis| cell: the step to the slice before, in voxels (finite for a light at
-      // "infinity": both factors are scaled by the same huge length).
+      // du / |d_axis| cell: the step to the next slice toward the light, in voxels (finite
+      // for a light at "infinity": both factors are scaled by the same huge length).
       float3 step = du * (cell / fabs(d[axis]));
-      float3 q = (p + step) / cell;  // grid coordinates, on slice prev
+      float3 q = p / cell, dq = step / cell;  // grid coordinates
+      // The depth over `back` slices (trapezoids at each slice crossing), then the
+      // transmittance there: one interpolation of it per `back` slices, not per slice.
+      float s0 = sigma[index], depth = 0.0f;
+      for (int k = 1; k <= back; ++k) {
+        q += dq;
+        float qa[3] = {q.x, q.y, q.z};
+        float s1 = slice_bilinear(sigma, n, axis, slice + k * toward, qa[au], qa[av], 0.0f);
+        depth += 0.5f * (s0 + s1);
+        s0 = s1;
+      }
       float qa[3] = {q.x, q.y, q.z};
-      float tq = slice_bilinear(t, n, axis, prev, qa[au], qa[av], 1.0f);
-      float sq = slice_bilinear(sigma, n, axis, prev, qa[au], qa[av], 0.0f);
-      t[index] = tq * exp(-0.5f * (sigma[index] + sq) * voxel_mm(P, step));
+      float tq = slice_bilinear(t, n, axis, slice + back * toward, qa[au], qa[av], 1.0f);
+      t[index] = tq * exp(-depth * voxel_mm(P, step));
     }
     barrier(CLK_GLOBAL_MEM_FENCE);  // the next slice reads this one
   }
-}
-
-// The swept transmittance, moved by the shadow offset toward the light (the model's T).
-__kernel void light_offset(__constant RaycastParams* P, __global const float* swept,
-                           __global float* out, int points) {
-  int gid = get_global_id(0);
-  if (gid >= points) return;
-  float3 p = convert_float3(grid_point(P, gid)) * (float)P->light_grid.w, dv;
-  float len = toward_light(P, p, &dv), offset = P->light_march.w;
-  out[gid] = len > offset
-                 ? grid_trilinear(swept, P->light_grid, (p + dv * offset) * P->light_march.z)
-                 : 1.0f;
 }
 
 // ao: the visibility at every `every`-th grid point per axis (a lattice of n points, x

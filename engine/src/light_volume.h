@@ -51,7 +51,7 @@ class LightVolume {
   size_t points_ = 0;
   double minSpacingMm_ = 1.0, shadowOffsetMm_ = 1.0;
   glm::dvec3 spacingMm_{1.0};
-  cl::Buffer sigma_, swept_, grid_;
+  cl::Buffer sigma_, lattice_, grid_;
   // What the grid and its sigma were built for; equal keys skip the work.
   std::vector<float> key_, sigmaKey_;
   int builds_ = 0, sigmaBuilds_ = 0;
