@@ -116,7 +116,7 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
       cl.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global, cl::NullRange);
     };
     // A small grid marches each point toward the light: exact along the ray, where the
-    // sweep's interpolation each few slices blurs the shadow (2.7 dB on the sphere above a
+    // sweep's interpolation each few slices blurs the shadow (2.8 dB on the sphere above a
     // plane, lighting_kernel_test.cpp).
     bool march = double(points_) * double(dims_.x + dims_.y + dims_.z) <= kMarchSteps;
     int axis = model == 1 && !march ? sweepAxis(k) : -1;
