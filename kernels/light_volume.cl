@@ -5,30 +5,26 @@
 // reference (engine/include/voxray/engine/monte_carlo_reference.h):
 //   sigma    the extinction per mm of the classified volume, -ln(1 - a) / reference step,
 //            averaged over each grid cell (extinction is what integrates along a ray).
-//   shadow   exp(-optical depth) toward the light, from the shadow offset past the grid
-//            point (P->light_march.w: no surface shadows itself) to the light, in the clip box.
+//   shadow   exp(-optical depth) from the grid point to the light, in the clip box; the
+//            shading reads it the shadow offset (P->light_march.w) toward the light from
+//            the sample (frame_light), so that no surface shadows itself.
 //   ao       the mean over 16 directions (a Fibonacci sphere) of exp(-optical depth) to
 //            P->light_march.x mm, inside the clip box.
-// Both sweep the sigma grid slice by slice (light_sweep); a light within the grid's extent
-// on every axis is marched per point instead (light_shadow, at P->light_march.y mm).
+// shadows sweeps the sigma grid slice by slice (light_sweep); a light within the grid's
+// extent on every axis is marched per point instead (light_shadow, at P->light_march.y mm).
+// ao marches each point's directions to the radius (light_ao). The sigma grid is kept for
+// the next build when only the light or the model changes.
 #include "intersect.cl"
 #include "lut.cl"
 #include "sampling.cl"
 #include "shading.cl"
 
 #define LIGHT_MAX_DEPTH 20.0f  // exp(-20) = 2e-9: the rest of the ray cannot matter
-#define AO_DIRECTIONS 16       // engine/src/light_volume.cpp: kAoDirections
+#define AO_DIRECTIONS 16       // a Fibonacci sphere (light_ao)
 
 inline int3 grid_point(__constant RaycastParams* P, int gid) {
   int4 n = P->light_grid;
   return (int3)(gid % n.x, (gid / n.x) % n.y, gid / (n.x * n.y));
-}
-
-// Length in mm of a step du in voxel coordinates.
-inline float voxel_mm(__constant RaycastParams* P, float3 du) {
-  float3 w =
-      (float3)(dot(P->to_world_x.xyz, du), dot(P->to_world_y.xyz, du), dot(P->to_world_z.xyz, du));
-  return length(w);
 }
 
 // Whether any macro cell (CELL voxels, skip.cl) that voxel positions lo..hi reach is
@@ -92,25 +88,13 @@ inline float grid_transmittance(__constant RaycastParams* P, __global const floa
   return exp(-depth);
 }
 
-// The light seen from voxel position p: its distance in mm (0 where it sits at p or is not
-// finite), *dv voxels per mm toward it. Scaled first: a light far away ("at infinity") must
-// not overflow the length.
-inline float toward_light(__constant RaycastParams* P, float3 p, float3* dv) {
-  float3 du = P->light_v.xyz - p;
-  float m = fmax(fabs(du.x), fmax(fabs(du.y), fabs(du.z)));
-  if (!(m > 1e-6f) || !isfinite(m)) return 0.0f;
-  float len = voxel_mm(P, du / m);
-  *dv = du / (m * len);
-  return m * len;
-}
-
 __kernel void light_shadow(__constant RaycastParams* P, __global const float* sigma,
                            __global float* out, int points) {
   int gid = get_global_id(0);
   if (gid >= points) return;
   float3 p = convert_float3(grid_point(P, gid)) * (float)P->light_grid.w, dv;
   float len = toward_light(P, p, &dv);
-  out[gid] = len > 0.0f ? grid_transmittance(P, sigma, p, dv, P->light_march.w, len) : 1.0f;
+  out[gid] = len > 0.0f ? grid_transmittance(P, sigma, p, dv, 0.0f, len) : 1.0f;
 }
 
 // The grid's value at grid coordinates (u, v) of slice `slice` across axis `axis`, bilinear,
@@ -132,70 +116,88 @@ inline float slice_bilinear(__global const float* t, int4 n, int axis, int slice
   return mix(mix(a, b, fu), mix(c, d, fu), fv);
 }
 
-// dir.w 0: the transmittance from each grid point to the grid's edge toward the light (which
-// lies beyond the grid along `axis`); dir.w 1: the optical depth along direction dir.xyz
-// (voxels). Slice by slice from that side (one launch per slice, `toward` the side along the
-// axis): a point's value is its neighbour's toward the light (bilinear in the slice before)
-// with the segment's own depth, mean sigma x length, added or attenuating. O(points) instead
-// of a march per point. Transmittance interpolates across a shadow's edge as the grid should
-// (depth would darken every point next to an opaque one); ao needs depth, to subtract the
-// part beyond its radius (light_ao_add). light_offset applies the shadow offset.
+// The transmittance from each grid point to the grid's edge toward the light, which lies
+// beyond the grid along `axis` (`toward` the side, +1 or -1). Slice by slice from that side:
+// a point's value is its neighbour's toward the light (bilinear in the slice before)
+// attenuated by the segment's own depth, mean sigma x length. O(points) instead of a march
+// per point. Transmittance interpolates across a shadow's edge as the grid should (depth
+// would darken every point next to an opaque one). One launch of ONE work-group, which
+// loops over the slices with a barrier between them: a launch per slice cost about 13 ms
+// each on a loaded 2-core PoCL device (the workers' wake-ups), 1.9 s a sweep.
 __kernel void light_sweep(__constant RaycastParams* P, __global const float* sigma,
-                          __global float* t, int axis, int slice, int toward, float4 dir) {
+                          __global float* t, int axis, int toward, int reach) {
   int4 n = P->light_grid;
   int na[3] = {n.x, n.y, n.z};
   int au = (axis + 1) % 3, av = (axis + 2) % 3;
-  int gid = get_global_id(0);
-  if (gid >= na[au] * na[av]) return;
-  int g[3];
-  g[axis] = slice, g[au] = gid % na[au], g[av] = gid / na[au];
-  int index = g[2] * n.x * n.y + g[1] * n.x + g[0];
-  int prev = slice + toward;
-  bool depth = dir.w > 0.0f;
-  if (prev < 0 || prev >= na[axis]) {
-    t[index] = depth ? 0.0f : 1.0f;  // the slice nearest the light: nothing lies before it
-    return;
-  }
+  int across = na[au] * na[av], slices = na[axis];
+  int st[3] = {1, n.x, n.x * n.y};
+  int lid = get_local_id(0), items = get_local_size(0);
   float cell = (float)n.w;
-  float3 p = (float3)(g[0], g[1], g[2]) * cell;
-  float3 du = dir.w > 0.0f ? dir.xyz : P->light_v.xyz - p;  // a direction, or toward the light
-  float d[3] = {du.x, du.y, du.z};
-  // du / |d_axis| cell: the step to the slice before, in voxels (finite for a light at
-  // "infinity": both factors are scaled by the same huge length).
-  float3 step = du * (cell / fabs(d[axis]));
-  float3 q = (p + step) / cell;  // grid coordinates, on slice prev
-  float qa[3] = {q.x, q.y, q.z};
-  float tq = slice_bilinear(t, n, axis, prev, qa[au], qa[av], depth ? 0.0f : 1.0f);
-  float sq = slice_bilinear(sigma, n, axis, prev, qa[au], qa[av], 0.0f);
-  float segment = 0.5f * (sigma[index] + sq) * voxel_mm(P, step);
-  t[index] = depth ? tq + segment : tq * exp(-segment);
+  for (int i = 0; i < slices; ++i) {
+    int slice = toward > 0 ? slices - 1 - i : i, back = min(reach, i);
+    for (int j = lid; j < across; j += items) {
+      int g[3];
+      g[axis] = slice, g[au] = j % na[au], g[av] = j / na[au];
+      int index = g[2] * st[2] + g[1] * st[1] + g[0];
+      if (i == 0) {
+        t[index] = 1.0f;  // the slice nearest the light: nothing lies before it
+        continue;
+      }
+      float3 p = (float3)(g[0], g[1], g[2]) * cell;
+      float3 du = P->light_v.xyz - p;
+      float d[3] = {du.x, du.y, du.z};
+      // du / |d_axis| cell: the step to the next slice toward the light, in voxels (finite
+      // for a light at "infinity": both factors are scaled by the same huge length).
+      float3 step = du * (cell / fabs(d[axis]));
+      float3 q = p / cell, dq = step / cell;  // grid coordinates
+      // The depth over `back` slices (trapezoids at each slice crossing), then the
+      // transmittance there: one interpolation of it per `back` slices, not per slice.
+      float s0 = sigma[index], depth = 0.0f;
+      for (int k = 1; k <= back; ++k) {
+        q += dq;
+        float qa[3] = {q.x, q.y, q.z};
+        float s1 = slice_bilinear(sigma, n, axis, slice + k * toward, qa[au], qa[av], 0.0f);
+        depth += 0.5f * (s0 + s1);
+        s0 = s1;
+      }
+      float qa[3] = {q.x, q.y, q.z};
+      float tq = slice_bilinear(t, n, axis, slice + back * toward, qa[au], qa[av], 1.0f);
+      t[index] = tq * exp(-depth * voxel_mm(P, step));
+    }
+    barrier(CLK_GLOBAL_MEM_FENCE);  // the next slice reads this one
+  }
 }
 
-// The swept transmittance, moved by the shadow offset toward the light (the model's T).
-__kernel void light_offset(__constant RaycastParams* P, __global const float* swept,
-                           __global float* out, int points) {
+// ao: the visibility at every `every`-th grid point per axis (a lattice of n points, x
+// fastest), the mean over AO_DIRECTIONS directions (a Fibonacci sphere) of exp(-depth to
+// P->light_march.x mm), marched over the sigma grid a cell per step. A march per point
+// and direction: the radius spans a few cells, so it reads less than a sweep of the whole
+// grid per direction did (16 sweeps of a launch per slice: 24 s on the 512x512x400 CT).
+__kernel void light_ao(__constant RaycastParams* P, __global const float* sigma,
+                       __global float* out, int4 n, int every) {
   int gid = get_global_id(0);
-  if (gid >= points) return;
-  float3 p = convert_float3(grid_point(P, gid)) * (float)P->light_grid.w, dv;
-  float len = toward_light(P, p, &dv), offset = P->light_march.w;
-  out[gid] = len > offset
-                 ? grid_trilinear(swept, P->light_grid, (p + dv * offset) * P->light_march.z)
-                 : 1.0f;
+  if (gid >= n.x * n.y * n.z) return;
+  int3 c = (int3)(gid % n.x, (gid / n.x) % n.y, gid / (n.x * n.y));
+  int3 g = min(c * every, P->light_grid.xyz - 1);
+  float3 p = convert_float3(g) * (float)P->light_grid.w;
+  float sum = 0.0f;
+  for (int i = 0; i < AO_DIRECTIONS; ++i) {
+    float z = 1.0f - (2.0f * (float)i + 1.0f) / (float)AO_DIRECTIONS;
+    float r = sqrt(fmax(0.0f, 1.0f - z * z)), phi = 2.39996322972865332f * (float)i;
+    float3 w = (float3)(r * cos(phi), r * sin(phi), z);
+    // World to voxels per mm: the gradient matrix's rows are worldToVoxel's columns.
+    float3 dv = w.x * P->grad_x.xyz + w.y * P->grad_y.xyz + w.z * P->grad_z.xyz;
+    sum += grid_transmittance(P, sigma, p, dv, 0.0f, P->light_march.x);
+  }
+  out[gid] = sum / (float)AO_DIRECTIONS;
 }
 
-// ao: adds one direction's share to each point's visibility, exp(-depth to R mm), the swept
-// depth to the edge less the depth from R mm on (dir: voxels per mm along the direction).
-// first: the first direction, which writes instead of adding.
-__kernel void light_ao_add(__constant RaycastParams* P, __global const float* swept,
-                           __global float* out, float4 dir, int points, int first) {
+// The grid from the lattice of light_ao (n points, one every `every` grid points),
+// trilinear: ao varies over the radius, several cells.
+__kernel void light_ao_fill(__constant RaycastParams* P, __global const float* lattice,
+                            __global float* out, int4 n, int every) {
   int gid = get_global_id(0);
-  if (gid >= points) return;
-  float3 p = convert_float3(grid_point(P, gid)) * (float)P->light_grid.w;
-  float3 far = (p + dir.xyz * P->light_march.x) * P->light_march.z;
-  int4 n = P->light_grid;
-  // Beyond the grid nothing occludes: the depth from there on is 0.
-  bool inside = all(far >= -0.5f) && all(far <= convert_float3(n.xyz) - 0.5f);
-  float rest = inside ? grid_trilinear(swept, n, far) : 0.0f;
-  float share = exp(-fmax(swept[gid] - rest, 0.0f)) / (float)AO_DIRECTIONS;
-  out[gid] = first ? share : out[gid] + share;
+  int4 m = P->light_grid;
+  if (gid >= m.x * m.y * m.z) return;
+  out[gid] = grid_trilinear(lattice, n, convert_float3(grid_point(P, gid)) / (float)every);
 }

@@ -44,10 +44,40 @@ inline float grid_trilinear(__global const float* g, int4 n, float3 q) {
   return mix(mix(c00, c10, w.y), mix(c01, c11, w.y), w.z);
 }
 
+// Length in mm of a step du in voxel coordinates.
+inline float voxel_mm(__constant RaycastParams* P, float3 du) {
+  float3 w =
+      (float3)(dot(P->to_world_x.xyz, du), dot(P->to_world_y.xyz, du), dot(P->to_world_z.xyz, du));
+  return length(w);
+}
+
+// The light seen from voxel position p: its distance in mm (0 where it sits at p or is not
+// finite), *dv voxels per mm toward it. Scaled first: a light far away ("at infinity") must
+// not overflow the length.
+inline float toward_light(__constant RaycastParams* P, float3 p, float3* dv) {
+  float3 du = P->light_v.xyz - p;
+  float m = fmax(fabs(du.x), fmax(fabs(du.y), fabs(du.z)));
+  if (!(m > 1e-6f) || !isfinite(m)) return 0.0f;
+  float len = voxel_mm(P, du / m);
+  *dv = du / (m * len);
+  return m * len;
+}
+
 // LIGHTING 1 or 2: the light grid (light_volume.cl) behind the table's P->dims.w entries, at
-// voxel position p_v (grid point g sits at voxel g * cell).
+// voxel position p_v (grid point g sits at voxel g * cell). shadows reads the transmittance
+// the shadow offset toward the light (the model's T, monte_carlo_reference.h): there, unlike
+// at p_v, the grid's interpolation does not reach points inside the sample's own surface,
+// which darkened lit surfaces (the grid held T from each point's own offset before).
 inline float light_grid(__global const float4* lut, __constant RaycastParams* P, float3 p_v) {
   __global const float* g = (__global const float*)(lut + P->dims.w);
+  if (LIGHTING == 1) {
+    float3 dv = (float3)(0.0f);
+    float len = toward_light(P, p_v, &dv), offset = P->light_march.w;
+    if (!(len > offset)) return 1.0f;  // the light within the offset: nothing between
+    p_v += dv * offset;
+    // Past the clip box toward the light nothing occludes (the grid would clamp to its edge).
+    if (any(p_v < P->clip_lo.xyz) || any(p_v > P->clip_hi.xyz)) return 1.0f;
+  }
   return grid_trilinear(g, P->light_grid, p_v * P->light_march.z);
 }
 

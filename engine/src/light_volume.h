@@ -38,6 +38,7 @@ class LightVolume {
   size_t bytes() const { return points_ * sizeof(float); }
   int cell() const { return cell_; }
   int builds() const { return builds_; }
+  int sigmaBuilds() const { return sigmaBuilds_; }
   double lastMs() const { return lastMs_; }
 
  private:
@@ -50,9 +51,10 @@ class LightVolume {
   size_t points_ = 0;
   double minSpacingMm_ = 1.0, shadowOffsetMm_ = 1.0;
   glm::dvec3 spacingMm_{1.0};
-  cl::Buffer sigma_, swept_, grid_;
-  std::vector<float> key_;  // what the grid was built for; equal keys skip the work
-  int builds_ = 0;
+  cl::Buffer sigma_, lattice_, grid_;
+  // What the grid and its sigma were built for; equal keys skip the work.
+  std::vector<float> key_, sigmaKey_;
+  int builds_ = 0, sigmaBuilds_ = 0;
   double lastMs_ = 0.0;
 };
 

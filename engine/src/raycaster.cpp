@@ -229,6 +229,8 @@ int Raycaster::classifications() const { return impl_->space.classifications(); 
 
 int Raycaster::lightingBuilds() const { return impl_->light.builds(); }
 
+int Raycaster::lightingSigmaBuilds() const { return impl_->light.sigmaBuilds(); }
+
 Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
   Image out;
   render(params, out, stats);

@@ -60,19 +60,24 @@ TEST(LightingKernel, GridRebuildsFollowLightTableClipAndModelOnly) {
   EXPECT_EQ(rc.lightingBuilds(), 1);  // phong frames build nothing
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 1);  // and leave the grid as it was
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 1);
   p.light.position.x += 10.0;
   rc.render(p);
-  EXPECT_EQ(rc.lightingBuilds(), 2);  // the light moved
+  EXPECT_EQ(rc.lightingBuilds(), 2);       // the light moved
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 1);  // through the same extinction
   p.transferFunction[2].rgba.a = 0.5;
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 3);  // the table's opacity
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 2);
   p.clip.hi.x = 0.7;
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 4);  // the clip box
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 3);
   p.lighting = Lighting::Ao;
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 5);  // the model
-  p.light.position.x += 10.0;         // ao does not depend on the light
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 3);
+  p.light.position.x += 10.0;  // ao does not depend on the light
   p.camera.azimuthDeg = 10.0;
   rc.render(p);
   EXPECT_EQ(rc.lightingBuilds(), 5);
@@ -85,6 +90,27 @@ TEST(LightingKernel, GridRebuildsFollowLightTableClipAndModelOnly) {
     q.lighting = Lighting::Phong;
     return q;
   }()));
+}
+
+TEST(LightingKernel, ALightFollowingTheCameraRebuildsShadowsButNotTheirExtinction) {
+  Raycaster rc(test::pocl(), sphereOnPlane());
+  RenderParams p = sceneParams(Lighting::Shadows);
+  p.light.followCamera = true;
+  Image first = rc.render(p);
+  for (double az : {40.0, 90.0}) {  // each orbit step moves the light: the grid follows
+    p.camera.azimuthDeg = az;
+    rc.render(p);
+  }
+  EXPECT_EQ(rc.lightingBuilds(), 3);
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 1);  // the volume's extinction is the same
+  p.camera.azimuthDeg = 20.0;              // back where it started: the same image
+  EXPECT_EQ(test::maxDiff(rc.render(p), first), 0);
+  p.lighting = Lighting::Ao;  // ao never depends on the light
+  rc.render(p);
+  p.camera.azimuthDeg = 60.0;
+  rc.render(p);
+  EXPECT_EQ(rc.lightingBuilds(), 5);
+  EXPECT_EQ(rc.lightingSigmaBuilds(), 1);
 }
 
 TEST(LightingKernel, PhongVariantIsUnchanged) {
@@ -102,12 +128,11 @@ TEST(LightingKernel, PhongVariantIsUnchanged) {
 }
 
 // Tolerances (PSNR against the Monte Carlo mean; its standard error is below 0.01): this
-// scene's surfaces are opaque within 0.04 mm, the worst case for a grid. The grid (a point
-// per voxel here) blurs the shadow's edge over a cell and darkens faces lit at grazing
-// angles, where the interpolation reaches points deeper in the surface than the shadow
-// offset clears (measured 32.5 dB here, 30 dB at 192x144; 23 dB with the light at 70
-// degrees from the front face). ao, smooth by nature, measured 37.5 dB. The CT, whose
-// classified bone is not opaque at a voxel, meets the 35 dB (next test).
+// scene's surfaces are opaque within 0.04 mm, the worst case for a grid. Its grid (a point
+// per voxel here) is small enough that shadows marches each point toward the light, and the
+// shading reads it the shadow offset toward the light (measured 35.4 dB, SSIM 0.995; a
+// sweep instead: 32.6 dB, and 32.5 dB read at the sample itself, where the interpolation
+// reached points inside the lit surface). ao, smooth by nature, measured 37.7 dB.
 TEST(LightingKernel, ShadowsAndAoMatchTheMonteCarloReferenceOnTheAnalyticScene) {
   for (Lighting l : {Lighting::Shadows, Lighting::Ao}) {
     RenderParams p = sceneParams(l);
@@ -118,7 +143,7 @@ TEST(LightingKernel, ShadowsAndAoMatchTheMonteCarloReferenceOnTheAnalyticScene) 
     for (bool packets : {true, false}) {
       double db = test::psnr(renderKernel(sphereOnPlane(), p, packets), ref.mean.rgb);
       SCOPED_TRACE(std::string(toString(l)) + (packets ? " packets" : " one ray"));
-      EXPECT_GT(db, l == Lighting::Shadows ? 27.0 : 35.0);
+      EXPECT_GT(db, 35.0);  // the goal for shadows, kept for ao
       std::printf("%s %s: %.1f dB vs Monte Carlo (se %.4f)\n", toString(l),
                   packets ? "packets" : "one ray", db, ref.meanStdError());
     }

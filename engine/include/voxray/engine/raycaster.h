@@ -90,6 +90,9 @@ class Raycaster {
   // Times the shadows / ao light grid was built (it should follow the light, the transfer
   // function, the clip box and the model only; never a camera move or a phong frame).
   int lightingBuilds() const;
+  // Of those, the builds that classified the volume again into the grid's extinction (a
+  // light or model change alone reuses it).
+  int lightingSigmaBuilds() const;
 
  private:
   friend struct RaycasterAccess;  // the path tracer shares the device volume and setup
