@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <thread>
 
 #include "refine_bands.h"
@@ -28,10 +28,11 @@ double median(std::vector<double> v) {
   return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// The sharp frame as the worker renders it: the bands, or the whole frame as one band.
-std::vector<ui::RowBand> sharpBands(const RenderParams& sharp, bool bands) {
-  if (bands) return ui::refineBands(sharp.width, sharp.height);
-  return {{0, sharp.height}};
+// The sharp frame as the worker renders it: about COUNT bands (1: the whole frame).
+std::vector<ui::RowBand> sharpBands(const RenderParams& sharp, int count) {
+  if (count <= 1) return {{0, sharp.height}};
+  const long pixels = long(sharp.width) * sharp.height;
+  return ui::refineBands(sharp.width, sharp.height, count, (pixels + count - 1) / count);
 }
 
 }  // namespace
@@ -56,6 +57,7 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
   const double lastDrag = shown;
   orbitCamera(s.camera, orbit, dragFrames - 1, 180);
   std::this_thread::sleep_until(lastMove + std::chrono::milliseconds(c.settleMs));
+  const double sharpCpu0 = cpuMs();
   for (const ui::RowBand& b : sharpBands(s, c.bands)) {
     rc.renderRows(s, sharpImage, b.y0, b.y1);
     const double now = msSince(t0);
@@ -66,6 +68,7 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
     shownCpu = nowCpu;
   }
   f.sharpDoneMs = shown - lastDrag;
+  f.sharpCpuMs = shownCpu - sharpCpu0;
   // Resume: the drag stops, the sharp frame is asked for, and RESUMEMS later the mouse
   // moves: its frame waits for the band (or whole frame) in flight, then comes first.
   for (int i = 0; i < dragFrames; ++i) {
@@ -87,33 +90,36 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
 
 void printStallReplay(Raycaster& rc, const RenderParams& drag, const RenderParams& sharp,
                       Orbit orbit, int repeats) {
-  const std::vector<StallCase> cases = {{"before: whole frame, settle 150 ms", 150, false},
-                                        {"after: bands, settle 60 ms", 60, true}};
+  const size_t bands = ui::refineBands(sharp.width, sharp.height).size();
+  const std::vector<StallCase> cases = {
+      {"before: whole frame, settle 150 ms", 150, 1},
+      {"after: " + std::to_string(bands) + " bands, settle 60 ms", 60, int(bands)},
+      {"after: " + std::to_string(2 * bands) + " bands, settle 60 ms", 60, int(2 * bands)}};
   const int dragFrames = 8, resumeMs = 5;
   std::vector<std::vector<StallFigures>> runs(cases.size());
-  replayStall(rc, drag, sharp, cases[1], orbit, 2, resumeMs);  // kernels built, caches warm
+  replayStall(rc, drag, sharp, cases[2], orbit, 2, resumeMs);  // kernels built, caches warm
   for (int r = 0; r < repeats; ++r)
     for (size_t k = 0; k < cases.size(); ++k)
       runs[k].push_back(replayStall(rc, drag, sharp, cases[k], orbit, dragFrames, resumeMs));
-  const size_t bands = ui::refineBands(sharp.width, sharp.height).size();
   std::printf(
       "stall replay: drag frames %dx%d, sharp frame %dx%d (%zu bands), %d drag frames then "
       "rest; resume %d ms after the sharp frame is asked for; medians of %d\n",
       drag.width, drag.height, sharp.width, sharp.height, bands, dragFrames, resumeMs, repeats);
   for (size_t k = 0; k < cases.size(); ++k) {
-    std::vector<double> gap, gapCpu, done, resume, resumeCpu;
+    std::vector<double> gap, gapCpu, done, resume, resumeCpu, sharpCpu;
     for (const StallFigures& f : runs[k]) {
       gap.push_back(f.restGapMs);
       gapCpu.push_back(f.restGapCpuMs);
       done.push_back(f.sharpDoneMs);
       resume.push_back(f.resumeWaitMs);
       resumeCpu.push_back(f.resumeCpuMs);
+      sharpCpu.push_back(f.sharpCpuMs);
     }
     std::printf(
-        "  %-36s largest gap %7.1f ms wall %7.1f ms cpu; sharp whole after %7.1f ms wall; "
-        "resume wait %7.1f ms wall %7.1f ms cpu\n",
-        cases[k].name.c_str(), median(gap), median(gapCpu), median(done), median(resume),
-        median(resumeCpu));
+        "  %-36s largest gap %7.1f ms wall %7.1f ms cpu; sharp frame %7.1f ms cpu, whole after "
+        "%7.1f ms wall; resume wait %7.1f ms wall %7.1f ms cpu\n",
+        cases[k].name.c_str(), median(gap), median(gapCpu), median(sharpCpu), median(done),
+        median(resume), median(resumeCpu));
   }
   std::fflush(stdout);
 }

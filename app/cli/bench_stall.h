@@ -19,7 +19,7 @@ namespace voxray::cli {
 struct StallCase {
   std::string name;  // "before: whole, settle 150 ms"
   int settleMs = 150;
-  bool bands = false;
+  int bands = 1;  // 1: the whole frame; else about this many bands (refineBands)
 };
 
 struct StallFigures {
@@ -28,14 +28,16 @@ struct StallFigures {
   double resumeWaitMs = 0;  // a move during the refinement to its drag frame shown
   // The same two in this process's CPU time (the resume's from the sharp frame's request)
   double restGapCpuMs = 0, resumeCpuMs = 0;
+  double sharpCpuMs = 0;  // the sharp frame's CPU time, whole or all its bands
 };
 
 // One replay of CASE: DRAGFRAMES drag frames (DRAG, 2-degree steps of ORBIT), then the rest.
 StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderParams& sharp,
                          const StallCase& c, Orbit orbit, int dragFrames, int resumeMs);
 
-// The cases "before" (the whole frame after 150 ms, as the scheduler did) and "after"
-// (bands after the scheduler's 60 ms), REPEATS times each alternately; prints medians.
+// The cases "before" (the whole frame after 150 ms, as the scheduler did), "after" (the
+// 3D view's bands after its 60 ms) and twice as many bands, REPEATS times each alternately;
+// prints medians.
 void printStallReplay(Raycaster& rc, const RenderParams& drag, const RenderParams& sharp,
                       Orbit orbit, int repeats);
 

@@ -16,9 +16,9 @@
 #include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
+#include "quality_choice.h"
 #include "render_flags.h"
 #include "voxray/engine/cl_context.h"
-#include "quality_choice.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
 
@@ -34,7 +34,7 @@ struct BenchOptions {
   std::string sizes = "512x384,640x480,800x600,1024x768", gradients = "central", device;
   std::string storage = "auto", kernel = "specialised", ess = "on", local, data, plot;
   std::string orbit = "azimuth";
-  std::string quality;  // a resources/quality preset: the workstation's frame at each size
+  std::string quality;   // a resources/quality preset: the workstation's frame at each size
   int stallRepeats = 0;  // --stall: replays of the end of a drag
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
@@ -166,8 +166,7 @@ Run addBenchCommand(CLI::App& app) {
             p.gradient = parseGradient(grad);
             // The 3D view's frame at rest at this view size (RenderScheduler::fullParams).
             const glm::ivec2 view(p.width, p.height);
-            if (!o->quality.empty())
-              p = settledFrame(p, o->quality, {0, 0}, view, minSpacingMm(v));
+            if (!o->quality.empty()) p = settledFrame(p, o->quality, {0, 0}, view, minSpacingMm(v));
             RaycasterOptions ro = raycasterOptions(*o);
             ro.kernel = kern == "uber" ? RaycasterOptions::Kernel::Uber
                                        : RaycasterOptions::Kernel::Specialised;
@@ -187,8 +186,8 @@ Run addBenchCommand(CLI::App& app) {
             rows.push_back(r);
             if (o->stallRepeats > 0) {
               // The drag frame as the scheduler plans it before AdaptiveQuality moves it.
-              RenderParams drag = settledFrame(base, ui::kDragQualityPreset, {0, 0}, view,
-                                               minSpacingMm(v));
+              RenderParams drag =
+                  settledFrame(base, ui::kDragQualityPreset, {0, 0}, view, minSpacingMm(v));
               drag.gradient = p.gradient;
               printStallReplay(rc, drag, p, o->run.orbit, o->stallRepeats);
             }

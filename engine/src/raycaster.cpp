@@ -330,8 +330,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       gx = (gx + local[0] - 1) / local[0] * local[0];
       gy = (gy + local[1] - 1) / local[1] * local[1];
     }
-    q.enqueueNDRangeKernel(kernel, cl::NDRange(0, oy), cl::NDRange(gx, gy), local, nullptr,
-                           &done);
+    q.enqueueNDRangeKernel(kernel, cl::NDRange(0, oy), cl::NDRange(gx, gy), local, nullptr, &done);
     if (m.opts.countSamples)
       q.enqueueReadBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     if (m.hitsOut)

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -24,8 +25,8 @@ namespace {
 
 TEST(RefineBands, TheWorkstationFrameComesInFourBandsMiddleFirst) {
   // 1024x768: 786432 pixels, 4 x 512x384; 48 blocks of 16 rows, 12 a band.
-  EXPECT_EQ(refineBands(1024, 768), (std::vector<RowBand>{{192, 384}, {384, 576}, {0, 192},
-                                                          {576, 768}}));
+  EXPECT_EQ(refineBands(1024, 768),
+            (std::vector<RowBand>{{192, 384}, {384, 576}, {0, 192}, {576, 768}}));
   // A drag frame's worth or less: the frame whole.
   EXPECT_EQ(refineBands(512, 384), (std::vector<RowBand>{{0, 384}}));
   EXPECT_EQ(refineBands(1024, 768, 1), (std::vector<RowBand>{{0, 768}}));
@@ -35,8 +36,9 @@ TEST(RefineBands, TheWorkstationFrameComesInFourBandsMiddleFirst) {
 TEST(RefineBands, BandsTileTheFrameOnSixteenRowBoundaries) {
   for (auto [w, h] : {std::pair{1920, 1080}, {1530, 1040}, {800, 601}, {2000, 40}}) {
     std::vector<RowBand> b = refineBands(w, h);
-    const size_t expected = std::min<size_t>(
-        {8, size_t((long(w) * h + kRefineBandPixels - 1) / kRefineBandPixels), size_t((h + 15) / 16)});
+    const size_t expected =
+        std::min<size_t>({8, size_t((long(w) * h + kRefineBandPixels - 1) / kRefineBandPixels),
+                          size_t((h + 15) / 16)});
     EXPECT_EQ(b.size(), expected) << w << "x" << h;
     std::sort(b.begin(), b.end(), [](RowBand a, RowBand c) { return a.y0 < c.y0; });
     int at = 0;
@@ -91,13 +93,68 @@ TEST(RefineBands, UpscaleNearestRepeatsEachPixel) {
   for (int i = 0; i < 4; ++i) src.rgba[size_t(i) * 4] = uint8_t(10 * (i + 1));
   Image big = upscaleNearest(src, 4, 4);
   ASSERT_EQ(big.width, 4);
-  const int expected[4][4] = {{10, 10, 20, 20}, {10, 10, 20, 20}, {30, 30, 40, 40},
-                              {30, 30, 40, 40}};
+  const int expected[4][4] = {
+      {10, 10, 20, 20}, {10, 10, 20, 20}, {30, 30, 40, 40}, {30, 30, 40, 40}};
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 4; ++x) EXPECT_EQ(big.pixel(x, y)[0], expected[y][x]) << x << "," << y;
   Image none = upscaleNearest(Image{}, 3, 2);  // nothing shown yet: black, opaque
   EXPECT_EQ(none.pixel(2, 1)[0], 0);
   EXPECT_EQ(none.pixel(2, 1)[3], 255);
+}
+
+// The scheduler and render worker on synthetic timings (a discrete-event model of their
+// rules): the mouse moves every 16 ms until STOPMS, each move asks for a drag frame that
+// replaces any request not started; SETTLEMS after the last move the sharp frame is asked
+// for, whole or in refineBands (each band's cost its share of the rows); the mouse moves
+// once more RESUMEMS after the refinement started (negative: never). Returns the largest gap
+// between frames shown from the last drag frame to the sharp frame, and the wait from the resumed
+// move to its frame.
+struct StallModel {
+  double dragMs, sharpMs, settleMs;
+  bool bands;
+};
+struct StallResult {
+  double restGapMs = 0, resumeWaitMs = 0;
+};
+StallResult simulateStall(const StallModel& m, double resumeMs) {
+  const double stopMs = 992;  // the last of the moves every 16 ms
+  // Drag frames back to back from 0: the last move is rendered by the first frame to start
+  // after it (the one in flight keeps its camera).
+  const double shown = std::ceil(stopMs / m.dragMs) * m.dragMs + m.dragMs;
+  StallResult r;
+  const double asked = stopMs + m.settleMs;
+  std::vector<RowBand> bands = m.bands ? refineBands(1024, 768) : std::vector<RowBand>{{0, 768}};
+  double at = std::max(asked, shown), last = shown;
+  const double moved = at + resumeMs;  // the refinement has started
+  for (const RowBand& b : bands) {
+    at += m.sharpMs * (b.y1 - b.y0) / 768.0;
+    r.restGapMs = std::max(r.restGapMs, at - last);
+    last = at;
+    if (resumeMs >= 0 && at >= moved) {  // the move waited for this band; the rest abandoned
+      r.resumeWaitMs = at + m.dragMs - moved;
+      break;
+    }
+  }
+  return r;
+}
+
+TEST(RefineBands, TheStallOnSessionFiveTimings) {
+  // Session 5 on the 512x512x400 CT at 16 lanes: a balanced frame 239 ms of kernel CPU, a
+  // drag frame 75; on 2 idle cores about half as wall time: 120 and 38 ms.
+  const StallModel before{38, 120, 150, false}, after{38, 120, 60, true};
+  const StallResult b = simulateStall(before, -1), a = simulateStall(after, -1);
+  // Before: the last drag frame 1 to 2 frames after the last move (the frame in flight
+  // first), the settle to 150 ms, then the whole frame without a new one: 194 ... 270 ms.
+  EXPECT_GE(b.restGapMs, 150 - 2 * 38 + 120 - 1e-9);
+  EXPECT_LE(b.restGapMs, 150 + 120 + 1e-9);
+  // After: the settle to 60 ms (here over before the last drag frame is shown), then a band
+  // of 192 rows (30 ms) at a time.
+  EXPECT_LE(a.restGapMs, 60 + 30 + 1e-9);
+  EXPECT_LE(a.restGapMs, 0.4 * b.restGapMs);
+  // A move 5 ms into the refinement: the whole frame's 115 ms left and its drag frame,
+  // against the first band's 25 ms left.
+  EXPECT_NEAR(simulateStall(before, 5).resumeWaitMs, 115 + 38, 1e-9);
+  EXPECT_NEAR(simulateStall(after, 5).resumeWaitMs, 25 + 38, 1e-9);
 }
 
 // The frames a RenderWorker posts, its callbacks run on the render thread (no Post) so that

@@ -5,11 +5,12 @@
 
 namespace voxray::ui {
 
-std::vector<RowBand> refineBands(int width, int height, int maxBands) {
+std::vector<RowBand> refineBands(int width, int height, int maxBands, long bandPixels) {
   if (width <= 0 || height <= 0) return {};
   const long pixels = long(width) * long(height);
   const int units = (height + kRefineBandAlign - 1) / kRefineBandAlign;  // 16-row blocks
-  int count = int((pixels + kRefineBandPixels - 1) / kRefineBandPixels);
+  bandPixels = std::max(bandPixels, 1L);
+  int count = int((pixels + bandPixels - 1) / bandPixels);
   count = std::clamp(count, 1, std::clamp(maxBands, 1, units));
   // Top to bottom, block counts differing by at most one.
   std::vector<RowBand> byRow;

@@ -29,7 +29,9 @@ inline constexpr int kRefineBandAlign = 16;
 // kRefineBandPixels, else ceil(pixels / kRefineBandPixels) bands of nearly equal height,
 // in the order they are rendered: the middle band first, then outwards alternately below
 // and above (the user looks at the middle). MAXBANDS caps the count (1: never banded).
-std::vector<RowBand> refineBands(int width, int height, int maxBands = 8);
+// BANDPIXELS in place of kRefineBandPixels (benchmarks).
+std::vector<RowBand> refineBands(int width, int height, int maxBands = 8,
+                                 long bandPixels = kRefineBandPixels);
 
 // The bands the 3D view asks for frame P: none (a whole frame) for a drag frame and for
 // lighting cinematic (its path tracer refines in passes of its own), else refineBands.

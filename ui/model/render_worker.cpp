@@ -90,7 +90,7 @@ void RenderWorker::run() {
   }
   std::unique_ptr<Raycaster> raycaster;
   std::shared_ptr<const Volume> volume;  // kept alive while the raycaster uses it
-  Image view;  // the last view frame: banded frames paint over it
+  Image view;                            // the last view frame: banded frames paint over it
   while (true) {
     std::shared_ptr<const Volume> nextVolume;
     std::optional<Request> req;

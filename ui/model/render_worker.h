@@ -4,8 +4,8 @@
 // request replaces one that has not started, so a fast drag renders only the latest
 // camera. A sharp view frame may come in bands of rows (refine_bands.h), each posted as it
 // finishes over the last view frame; a new view request or volume abandons the bands left
-// (an export in between lets them continue after it). Runs as a BackgroundTask: results and errors arrive through its Post (the
-// scheduler's GUI thread).
+// (an export in between lets them continue after it). Runs as a BackgroundTask: results and errors
+// arrive through its Post (the scheduler's GUI thread).
 #include <condition_variable>
 #include <functional>
 #include <memory>

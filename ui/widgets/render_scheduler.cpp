@@ -9,7 +9,7 @@ namespace {
 // No movement for this long counts as "stopped". The sharp frame comes in bands that a move
 // abandons within one band, so refining early costs a resumed drag at most one band's wait.
 constexpr int kSettleMs = 60;
-constexpr int kPickTag = 2;     // Frame::tag of a frame rendered for a 3D pick
+constexpr int kPickTag = 2;  // Frame::tag of a frame rendered for a 3D pick
 }  // namespace
 
 RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
