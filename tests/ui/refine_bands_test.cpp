@@ -23,13 +23,19 @@ using namespace voxray::ui;
 
 namespace {
 
-TEST(RefineBands, TheWorkstationFrameComesInFourBandsMiddleFirst) {
-  // 1024x768: 786432 pixels, 4 x 512x384; 48 blocks of 16 rows, 12 a band.
-  EXPECT_EQ(refineBands(1024, 768),
-            (std::vector<RowBand>{{192, 384}, {384, 576}, {0, 192}, {576, 768}}));
-  // A drag frame's worth or less: the frame whole.
-  EXPECT_EQ(refineBands(512, 384), (std::vector<RowBand>{{0, 384}}));
+TEST(RefineBands, TheWorkstationFrameComesInSixteenBandsMiddleFirst) {
+  // 1024x768: 786432 pixels, 16 x 128x384; 48 blocks of 16 rows, 3 (48 rows) a band; the
+  // middle (the eighth from the top) first, then below, above, below ...
+  const std::vector<RowBand> b = refineBands(1024, 768);
+  ASSERT_EQ(b.size(), 16u);
+  const int order[16] = {7, 8, 6, 9, 5, 10, 4, 11, 3, 12, 2, 13, 1, 14, 0, 15};
+  for (int i = 0; i < 16; ++i)
+    EXPECT_EQ(b[size_t(i)], (RowBand{48 * order[i], 48 * order[i] + 48}));
+  // A sixteenth of that or less: the frame whole.
+  EXPECT_EQ(refineBands(128, 384), (std::vector<RowBand>{{0, 384}}));
   EXPECT_EQ(refineBands(1024, 768, 1), (std::vector<RowBand>{{0, 768}}));
+  EXPECT_EQ(refineBands(1024, 768, 4, 512L * 384L),
+            (std::vector<RowBand>{{192, 384}, {384, 576}, {0, 192}, {576, 768}}));
   EXPECT_TRUE(refineBands(0, 768).empty());
 }
 
@@ -37,7 +43,7 @@ TEST(RefineBands, BandsTileTheFrameOnSixteenRowBoundaries) {
   for (auto [w, h] : {std::pair{1920, 1080}, {1530, 1040}, {800, 601}, {2000, 40}}) {
     std::vector<RowBand> b = refineBands(w, h);
     const size_t expected =
-        std::min<size_t>({8, size_t((long(w) * h + kRefineBandPixels - 1) / kRefineBandPixels),
+        std::min<size_t>({32, size_t((long(w) * h + kRefineBandPixels - 1) / kRefineBandPixels),
                           size_t((h + 15) / 16)});
     EXPECT_EQ(b.size(), expected) << w << "x" << h;
     std::sort(b.begin(), b.end(), [](RowBand a, RowBand c) { return a.y0 < c.y0; });
@@ -60,7 +66,7 @@ TEST(RefineBands, DragAndCinematicFramesAreWhole) {
   RenderParams p;
   p.width = 1024;
   p.height = 768;
-  EXPECT_EQ(viewFrameBands(p, false).size(), 4u);
+  EXPECT_EQ(viewFrameBands(p, false).size(), 16u);
   EXPECT_TRUE(viewFrameBands(p, true).empty());
   p.lighting = Lighting::Cinematic;
   EXPECT_TRUE(viewFrameBands(p, false).empty());
@@ -69,7 +75,7 @@ TEST(RefineBands, DragAndCinematicFramesAreWhole) {
 TEST(RefineBands, TheSharpFrameAfterADragIsTheBalancedFrameInBands) {
   // What the scheduler asks for around a drag of a 1024x768 view (planFrame): drag frames
   // at half size and 2-voxel steps, then the balanced frame whole size at 1.5-voxel steps
-  // in 4 bands. 0.5 mm voxels.
+  // in 16 bands. 0.5 mm voxels.
   RenderStateModel m;
   m.applyPreset("CT-Bone");
   Quality q = m.quality();
@@ -85,7 +91,7 @@ TEST(RefineBands, TheSharpFrameAfterADragIsTheBalancedFrameInBands) {
   EXPECT_EQ(sharp.height, 768);
   EXPECT_DOUBLE_EQ(sharp.stepMm, 0.75);
   EXPECT_EQ(sharp.refine, 6);
-  EXPECT_EQ(viewFrameBands(sharp, false).size(), 4u);
+  EXPECT_EQ(viewFrameBands(sharp, false).size(), 16u);
 }
 
 TEST(RefineBands, UpscaleNearestRepeatsEachPixel) {
@@ -148,13 +154,13 @@ TEST(RefineBands, TheStallOnSessionFiveTimings) {
   EXPECT_GE(b.restGapMs, 150 - 2 * 38 + 120 - 1e-9);
   EXPECT_LE(b.restGapMs, 150 + 120 + 1e-9);
   // After: the settle to 60 ms (here over before the last drag frame is shown), then a band
-  // of 192 rows (30 ms) at a time.
-  EXPECT_LE(a.restGapMs, 60 + 30 + 1e-9);
+  // of 48 rows (7.5 ms) at a time.
+  EXPECT_LE(a.restGapMs, 60 + 7.5 + 1e-9);
   EXPECT_LE(a.restGapMs, 0.4 * b.restGapMs);
   // A move 5 ms into the refinement: the whole frame's 115 ms left and its drag frame,
-  // against the first band's 25 ms left.
+  // against the first band's 2.5 ms left.
   EXPECT_NEAR(simulateStall(before, 5).resumeWaitMs, 115 + 38, 1e-9);
-  EXPECT_NEAR(simulateStall(after, 5).resumeWaitMs, 25 + 38, 1e-9);
+  EXPECT_NEAR(simulateStall(after, 5).resumeWaitMs, 2.5 + 38, 1e-9);
 }
 
 // The frames a RenderWorker posts, its callbacks run on the render thread (no Post) so that

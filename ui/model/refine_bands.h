@@ -17,10 +17,11 @@ struct RowBand {
   bool operator==(const RowBand& o) const { return y0 == o.y0 && y1 == o.y1; }
 };
 
-// About the rays of the interactive preset's 1024x768 drag frame (512x384): a band then
-// costs about one drag frame (measured on the 512x512x400 CT, docs/bench/README.md,
-// "Session 6"), so a camera move waits no longer than the drag itself takes per frame.
-inline constexpr long kRefineBandPixels = 512L * 384L;
+// A sixteenth of a 1024x768 frame, a quarter of the rays of its drag frame (512x384).
+// Measured on the 512x512x400 CT (docs/bench/README.md, "Session 6", bench --stall): the
+// costliest band (the middle, through the body) took 46 ms of CPU in 16 bands, 85 in 8 and
+// 156 in 4, and the bands together as much as the whole frame (308 ms) in each case.
+inline constexpr long kRefineBandPixels = 128L * 384L;
 // Bands start at multiples of 16 rows: whole 4x4 work-groups of the CPU's 4x4 (16-lane)
 // and 4x2 (8-lane) ray packets, so that no band renders rows of its neighbour.
 inline constexpr int kRefineBandAlign = 16;
@@ -30,7 +31,7 @@ inline constexpr int kRefineBandAlign = 16;
 // in the order they are rendered: the middle band first, then outwards alternately below
 // and above (the user looks at the middle). MAXBANDS caps the count (1: never banded).
 // BANDPIXELS in place of kRefineBandPixels (benchmarks).
-std::vector<RowBand> refineBands(int width, int height, int maxBands = 8,
+std::vector<RowBand> refineBands(int width, int height, int maxBands = 32,
                                  long bandPixels = kRefineBandPixels);
 
 // The bands the 3D view asks for frame P: none (a whole frame) for a drag frame and for
