@@ -1,7 +1,10 @@
 // voxray-cli bench: frames over a 360-degree orbit after a warm-up, per size x gradient
 // (x kernel), reporting medians (these machines are noisy), kernel time beside wall time,
 // rays and counted samples per second. --seed-table reruns the seed paper's table on the
-// shared data beside its figures; --plot draws fps against resolution.
+// shared data beside its figures; --plot draws fps against resolution. --quality benches
+// the workstation's own frames (a quality preset applied to the view size as the 3D view
+// applies it); --stall replays the frames around the end of a drag (bench_stall.h).
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -9,11 +12,14 @@
 #include "bench_plot.h"
 #include "bench_run.h"
 #include "bench_seed.h"
+#include "bench_stall.h"
 #include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
+#include "quality_choice.h"
 #include "render_flags.h"
 #include "voxray/engine/cl_context.h"
+#include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
 
 namespace voxray::cli {
@@ -28,6 +34,8 @@ struct BenchOptions {
   std::string sizes = "512x384,640x480,800x600,1024x768", gradients = "central", device;
   std::string storage = "auto", kernel = "specialised", ess = "on", local, data, plot;
   std::string orbit = "azimuth";
+  std::string quality;   // a resources/quality preset: the workstation's frame at each size
+  int stallRepeats = 0;  // --stall: replays of the end of a drag
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
@@ -48,6 +56,10 @@ std::string defaultDataDir() {
   for (const char* d : {"../shared/data", "/work/shared/data"})
     if (std::filesystem::is_directory(d)) return d;
   return "../shared/data";
+}
+
+double minSpacingMm(const Volume& v) {
+  return std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
 }
 
 RaycasterOptions raycasterOptions(const BenchOptions& o) {
@@ -71,9 +83,27 @@ Run addBenchCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench", "Frame times over an orbit (median, min, max)");
   auto o = std::make_shared<BenchOptions>();
   o->input.add(*cmd);
+  cmd->add_option("--quality", o->quality,
+                  "the workstation's frame of this quality preset (interactive, balanced, "
+                  "reference): each --sizes is the 3D view's size, the preset sets the image "
+                  "scale, step, bisections and jitter, and (unless --gradients) the gradient")
+      ->check([](const std::string& s) {
+        try {
+          findQualityPreset(s);
+          return std::string();
+        } catch (const std::exception& e) {
+          return std::string(e.what());
+        }
+      });
+  cmd->add_option("--stall", o->stallRepeats,
+                  "after each case, replay the end of a drag this many times: interactive drag "
+                  "frames, then the --quality frame whole (the old scheduler) and in bands "
+                  "(the 3D view's refinement); prints the largest gap between frames shown")
+      ->check(CLI::Range(1, 1000));
+  CLI::Option* gradientsOption = nullptr;
   CLI::Option* sizesOption =
       cmd->add_option("--sizes", o->sizes, "comma-separated WxH list (also for --seed-table)");
-  cmd->add_option("--gradients", o->gradients, "comma-separated operators");
+  gradientsOption = cmd->add_option("--gradients", o->gradients, "comma-separated operators");
   cmd->add_option("--frames", o->run.frames, "timed frames per case (an orbit)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--warmup", o->run.warmup, "untimed frames first (kernel build)");
@@ -109,7 +139,11 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_flag("--csv", o->csv, "CSV output");
   o->flags.add(*cmd, {"size", "gradient", "azimuth"});
   o->cinematic.add(*cmd);
-  return [o, sizesOption] {
+  return [o, sizesOption, gradientsOption] {
+    if (o->stallRepeats > 0 && o->quality.empty())
+      throw inputError("--stall needs --quality (the sharp frame's preset, e.g. balanced)");
+    if (!o->quality.empty() && gradientsOption->count() == 0)
+      o->gradients = toString(findQualityPreset(o->quality).gradient);
     BenchFormat f = o->json ? BenchFormat::Json : o->csv ? BenchFormat::Csv : BenchFormat::Text;
     o->run.countSamples = !o->noCount;
     o->run.orbit = o->orbit == "elevation" ? Orbit::Elevation : Orbit::Azimuth;
@@ -130,6 +164,9 @@ Run addBenchCommand(CLI::App& app) {
             RenderParams p = base;
             findRenderParamSpec("size").parse(p, sizes[si]);
             p.gradient = parseGradient(grad);
+            // The 3D view's frame at rest at this view size (RenderScheduler::fullParams).
+            const glm::ivec2 view(p.width, p.height);
+            if (!o->quality.empty()) p = settledFrame(p, o->quality, {0, 0}, view, minSpacingMm(v));
             RaycasterOptions ro = raycasterOptions(*o);
             ro.kernel = kern == "uber" ? RaycasterOptions::Kernel::Uber
                                        : RaycasterOptions::Kernel::Specialised;
@@ -147,6 +184,13 @@ Run addBenchCommand(CLI::App& app) {
               if (sizes[si] == kSeedSizes[k]) r.seedFps = seed[k];
             printRow(f, r);
             rows.push_back(r);
+            if (o->stallRepeats > 0) {
+              // The drag frame as the scheduler plans it before AdaptiveQuality moves it.
+              RenderParams drag =
+                  settledFrame(base, ui::kDragQualityPreset, {0, 0}, view, minSpacingMm(v));
+              drag.gradient = p.gradient;
+              printStallReplay(rc, drag, p, o->run.orbit, o->stallRepeats);
+            }
           }
     };
     if (o->seedTable) {

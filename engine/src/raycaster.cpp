@@ -1,5 +1,6 @@
 #include "voxray/engine/raycaster.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -45,6 +46,7 @@ struct Raycaster::Impl {
   bool lightCopied = false;  // the table's buffer holds the current grid
   cl::Buffer countBuffer;    // 64 sample counters (COUNT_SAMPLES)
   std::vector<glm::vec4>* hitsOut = nullptr;  // set by renderWithHits (HIT_OUTPUT)
+  glm::ivec2 rows{0, 0};                      // set by renderRows: rows [x, y) only
   cl::Buffer hitBuffer;
   size_t hitCapacity = 0;
   RaycasterOptions opts;
@@ -77,9 +79,14 @@ void Raycaster::Impl::updateSetup(const RenderParams& p) {
   RenderParams q = p;
   q.camera = CameraParams{};
   q.width = q.height = 1;
+  // Nor the quality presets' step and bisections: a drag frame and the sharp one after it
+  // differ only there and in size, and the setup of a 512x512x400 CT costs more than a band.
+  q.stepMm = 0.0;
+  q.refine = 0;
   std::string key = toText(q);
   if (key == setupKey) {
     setup.view = makeViewGeometry(volume, p);
+    setup.stepMm = effectiveStepMm(p, setup.referenceStepMm);
     return;
   }
   setup = makeFrameSetup(volume, p);
@@ -256,7 +263,11 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   size_t pixels = size_t(p.width) * size_t(p.height);
   out.width = p.width;
   out.height = p.height;
-  out.rgba.resize(pixels * 4);
+  out.rgba.resize(pixels * 4);  // the same size keeps the rows renderRows does not render
+  const bool band = m.rows.y > m.rows.x && !m.hitsOut;
+  const int y0 = band ? std::clamp(m.rows.x, 0, p.height) : 0;
+  const int y1 = band ? std::clamp(m.rows.y, y0, p.height) : p.height;
+  const size_t rowBytes = size_t(p.width) * 4;
   std::string opts = m.options(sw);
   cl::Kernel kernel = m.cl.kernel("raycast.cl", "raycast", opts);
   cl::Event done;
@@ -307,22 +318,27 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       kernel.setArg(arg, m.hitBuffer);
     }
     cl::NDRange local = m.local();
-    size_t gx = size_t(p.width), gy = size_t(p.height);
+    // A band starts at the work-item row holding Y0: the kernels take their pixel from
+    // get_global_id, which counts the offset, and drop items past the image.
+    size_t gx = size_t(p.width), gy = size_t(y1), oy = size_t(y0);
     if (m.packets()) {  // one work-item per 4 x (lanes / 4) pixels
       size_t rows = size_t(m.lanes(p) / 4);
       gx = (gx + 3) / 4;
       gy = (gy + rows - 1) / rows;
+      oy /= rows;
     }
+    gy -= oy;
     if (local.dimensions() == 2) {
       gx = (gx + local[0] - 1) / local[0] * local[0];
       gy = (gy + local[1] - 1) / local[1] * local[1];
     }
-    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local, nullptr, &done);
+    q.enqueueNDRangeKernel(kernel, cl::NDRange(0, oy), cl::NDRange(gx, gy), local, nullptr, &done);
     if (m.opts.countSamples)
       q.enqueueReadBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     if (m.hitsOut)
       q.enqueueReadBuffer(m.hitBuffer, CL_FALSE, 0, pixels * sizeof(cl_float4), m.hitsOut->data());
-    q.enqueueReadBuffer(m.outBuffer, CL_TRUE, 0, pixels * 4, out.rgba.data());
+    q.enqueueReadBuffer(m.outBuffer, CL_TRUE, size_t(y0) * rowBytes, size_t(y1 - y0) * rowBytes,
+                        out.rgba.data() + size_t(y0) * rowBytes);
     return 0;
   });
   if (stats) {
@@ -360,6 +376,16 @@ PathTracer& RaycasterAccess::cinematic(Raycaster& r) {
   Raycaster::Impl& m = *r.impl_;
   if (!m.pathTracer) m.pathTracer = std::make_unique<PathTracer>(r);
   return *m.pathTracer;
+}
+
+void Raycaster::renderRows(const RenderParams& params, Image& out, int y0, int y1,
+                           FrameStats* stats) {
+  struct Reset {
+    Impl& m;
+    ~Reset() { m.rows = {0, 0}; }
+  } reset{*impl_};
+  impl_->rows = {y0, y1};
+  render(params, out, stats);
 }
 
 Image Raycaster::renderWithHits(const RenderParams& params, std::vector<glm::vec4>& hits,

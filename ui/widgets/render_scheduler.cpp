@@ -6,8 +6,10 @@
 namespace voxray::ui {
 
 namespace {
-constexpr int kSettleMs = 150;  // no movement for this long counts as "stopped"
-constexpr int kPickTag = 2;     // Frame::tag of a frame rendered for a 3D pick
+// No movement for this long counts as "stopped". The sharp frame comes in bands that a move
+// abandons within one band, so refining early costs a resumed drag at most one band's wait.
+constexpr int kSettleMs = 60;
+constexpr int kPickTag = 2;  // Frame::tag of a frame rendered for a 3D pick
 }  // namespace
 
 RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
@@ -91,10 +93,14 @@ void RenderScheduler::requestFrame() {
   if (doc_.empty()) return;
   if (interacting_) settle_.start();  // restart: refine only once the mouse rests
   adaptive_.setTargetFps(state_.quality().dragFps);
-  worker_->request(
+  const RenderParams p =
       planFrame(state_.params(), state_.quality(), {viewSize_.width(), viewSize_.height()},
-                interacting_, doc_.minSpacingMm(), &adaptive_.setting()),
-      interacting_);
+                interacting_, doc_.minSpacingMm(), &adaptive_.setting());
+  std::vector<RowBand> bands = viewFrameBands(p, interacting_);
+  if (bands.size() > 1)
+    worker_->requestBands(p, std::move(bands));
+  else
+    worker_->request(p, interacting_);
 }
 
 void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
@@ -104,6 +110,10 @@ void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
   }
   if (frame->tag != 0) {
     emit exportReady(frame);
+    return;
+  }
+  if (frame->bandsDone < frame->bands) {
+    emit bandReady(frame);
     return;
   }
   double fps = rate_.frameAt(clock_.nsecsElapsed() * 1e-9);

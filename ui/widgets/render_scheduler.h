@@ -3,7 +3,8 @@
 // state asks the render thread for a frame; during a drag the frames are cheap (the
 // interactive quality preset, its size and step adapted to hold the preferred drag frame
 // rate by AdaptiveQuality), and once the mouse has been still for a moment, or is
-// released, one frame of the chosen quality follows.
+// released, one frame of the chosen quality follows, in bands of rows (refine_bands.h) each
+// shown as it finishes; a camera move abandons the bands left and is rendered next.
 // Also measures frames per second for the status bar.
 #include <memory>
 
@@ -46,6 +47,9 @@ class RenderScheduler : public QObject {
 
  signals:
   void frameReady(std::shared_ptr<const voxray::ui::Frame> frame);
+  // A band of the sharp frame before its last (Frame::bandsDone < Frame::bands): the view
+  // shows it; frameReady follows with the whole frame unless a new request abandons it.
+  void bandReady(std::shared_ptr<const voxray::ui::Frame> frame);
   void exportReady(std::shared_ptr<const voxray::ui::Frame> frame);
   void pickReady(std::shared_ptr<const voxray::ui::Frame> frame);
   void firstFullFrame();

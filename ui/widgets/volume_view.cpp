@@ -28,11 +28,13 @@ VolumeView::VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairMo
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(160, 120);
   setMouseTracking(false);
-  connect(&scheduler_, &RenderScheduler::frameReady, this, [this](std::shared_ptr<const Frame> f) {
+  auto show = [this](std::shared_ptr<const Frame> f) {
     frame_ = toQImage(f->image);
     frameInteractive_ = f->interactive;
     update();
-  });
+  };
+  connect(&scheduler_, &RenderScheduler::frameReady, this, show);
+  connect(&scheduler_, &RenderScheduler::bandReady, this, show);  // the sharp frame so far
   connect(&scheduler_, &RenderScheduler::pickReady, this,
           [this](std::shared_ptr<const Frame> f) { onPickFrame(*f); });
   stateConnection_ = state_.changed.connect([this](unsigned) { update(); });

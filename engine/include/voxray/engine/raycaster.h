@@ -69,6 +69,12 @@ class Raycaster {
   Image render(const RenderParams& params, FrameStats* stats = nullptr);
   // The same, into a caller's image (reused between frames: no allocation per frame).
   void render(const RenderParams& params, Image& out, FrameStats* stats = nullptr);
+  // Only rows [Y0, Y1) of the frame (the workstation refines its sharp frame in bands, so
+  // that a camera move waits for one band, not a whole frame): OUT keeps its other rows
+  // when it already has the frame's size. Pixel for pixel the rows of render(PARAMS).
+  // Lighting cinematic renders its whole next pass.
+  void renderRows(const RenderParams& params, Image& out, int y0, int y1,
+                  FrameStats* stats = nullptr);
   // A frame from the -D HIT_OUTPUT=1 variant that also gives each pixel's hit (row by row):
   // xyz the hit point in voxel coordinates, w 1 for an iso surface crossing or where dvr's
   // accumulated opacity reaches 0.5 (DVR_HIT_ALPHA, kernels/hit_output.cl: interpolated
