@@ -1,6 +1,7 @@
 // Retrieval benchmark (issue 12's closing note; not a test): one CT series from a local
 // Orthanc over C-GET and WADO-RS, seconds to a ready volume (retrieved into a fresh cache and
-// imported), against DCMTK's getscu and curl fetching the same series, in the same run.
+// imported), against DCMTK's getscu and curl fetching the same series, in the same run; and
+// a study-level C-FIND of the same store against DCMTK's findscu (dimse and both).
 // Usage: voxray_pacs_bench [REPEATS [SERIES_FOLDER [web|dimse|both]]] (defaults: 3, the shared
 // pelvis CT, both; the issue's 512x512x400 CT: docs/bench/make-ct400.sh OUT, then OUT/ct400).
 // Medians are printed.
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -43,6 +45,13 @@ uint64_t folderBytes(const std::string& folder) {
   return n;
 }
 
+std::string loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  std::string one, five, fifteen;
+  in >> one >> five >> fifteen;
+  return one + " " + five + " " + fifteen;
+}
+
 void shell(const std::string& command) {
   if (std::system(command.c_str()) != 0) {
     std::cerr << "failed: " << command << "\n";
@@ -63,7 +72,8 @@ int main(int argc, char** argv) {
                     seriesUid = disk.study.seriesInstanceUid;
   OrthancServer server;
   int uploaded = server.upload(series);
-  std::cout << series << ": " << uploaded << " files uploaded\n";
+  std::cout << series << ": " << uploaded << " files uploaded; load average " << loadAverage()
+            << "\n";
   struct Row {
     std::string what;
     std::vector<double> s;
@@ -72,7 +82,8 @@ int main(int argc, char** argv) {
   std::vector<Row> rows = {
       {"voxray C-GET, to ready volume", {}},  {"voxray C-GET, retrieval only", {}},
       {"getscu (DCMTK), to files", {}},       {"voxray WADO-RS, to ready volume", {}},
-      {"voxray WADO-RS, retrieval only", {}}, {"curl WADO-RS, to one file", {}}};
+      {"voxray WADO-RS, retrieval only", {}}, {"curl WADO-RS, to one file", {}},
+      {"voxray C-FIND, study level", {}},     {"findscu (DCMTK), study level", {}}};
   std::string area = voxray::test::tempFolder("bench");
   auto curl = [&](int r) {
     std::string file = area + "/curl-" + std::to_string(r);
@@ -110,12 +121,33 @@ int main(int argc, char** argv) {
     rows[web ? 4 : 1].s.push_back(retrieve);
     rows[web ? 3 : 0].bytes = rows[web ? 4 : 1].bytes = entry.bytes;
   };
+  // The same study-level keys as Voxray's C-FIND (dimse_client.cpp), every study.
+  auto findscu = [&](int) {
+    std::string keys;
+    for (const char* k :
+         {"QueryRetrieveLevel=STUDY", "PatientName", "PatientID", "StudyDate", "StudyInstanceUID",
+          "StudyDescription", "AccessionNumber", "ModalitiesInStudy", "NumberOfStudyRelatedSeries",
+          "NumberOfStudyRelatedInstances"})
+      keys += std::string(" -k ") + k;
+    rows[7].s.push_back(seconds([&] {
+      shell("findscu -S -aet VOXRAY -aec ORTHANC 127.0.0.1 " + std::to_string(server.dicomPort) +
+            keys + " > /dev/null 2>&1");
+    }));
+  };
+  auto voxrayFind = [&](int) {
+    size_t found = 0;
+    rows[6].s.push_back(seconds([&] {
+      found = voxray::makePacsClient(server.dimseNode())->find(voxray::PacsQuery{}).size();
+    }));
+    if (found != 1) std::exit(1);  // the store holds the one study
+  };
   // Each timed step starts with no dirty pages left by the one before (sync), and the raw
   // tool and Voxray take turns going first, so neither pays for the other's writes more.
   using Step = std::function<void(int)>;
   std::vector<std::pair<Step, Step>> pairs;
   if (which != "dimse") pairs.push_back({curl, [&](int r) { voxray(r, server.webNode()); }});
   if (which != "web") pairs.push_back({getscu, [&](int r) { voxray(r, server.dimseNode()); }});
+  if (which != "web") pairs.push_back({findscu, voxrayFind});
   for (int r = 0; r < repeats; ++r)
     for (const auto& [raw, ours] : pairs)
       for (const Step& step : r % 2 ? std::vector<Step>{ours, raw} : std::vector<Step>{raw, ours}) {
@@ -124,9 +156,27 @@ int main(int argc, char** argv) {
       }
   std::printf("%-34s %9s %9s %8s\n", "median of runs", "seconds", "MB", "MB/s");
   for (const auto& row : rows)
-    if (!row.s.empty())
+    if (!row.s.empty() && row.bytes)
       std::printf("%-34s %9.3f %9.1f %8.1f\n", row.what.c_str(), median(row.s), row.bytes / 1e6,
                   row.bytes / 1e6 / median(row.s));
+    else if (!row.s.empty())
+      std::printf("%-34s %9.3f\n", row.what.c_str(), median(row.s));
+  // Ratios of medians, and every run (the machine is shared: the spread matters).
+  auto ratio = [&](size_t ours, size_t raw, const char* what) {
+    if (!rows[ours].s.empty() && !rows[raw].s.empty())
+      std::printf("%-34s %9.2fx\n", what, median(rows[ours].s) / median(rows[raw].s));
+  };
+  ratio(0, 2, "C-GET ready volume / getscu");
+  ratio(3, 5, "WADO-RS ready volume / curl");
+  ratio(4, 5, "WADO-RS retrieval / curl");
+  ratio(6, 7, "C-FIND / findscu");
+  for (const auto& row : rows) {
+    if (row.s.empty()) continue;
+    std::printf("runs: %-28s", row.what.c_str());
+    for (double t : row.s) std::printf(" %.3f", t);
+    std::printf("\n");
+  }
+  std::printf("load average at the end: %s\n", loadAverage().c_str());
   fs::remove_all(area);
   return 0;
 }

@@ -207,12 +207,16 @@ class DimseClient : public PacsClient {
     keys.putAndInsertString(DCM_StudyInstanceUID, studyUid.c_str());
     keys.putAndInsertString(DCM_SeriesInstanceUID, seriesUid.c_str());
     if (node_.receivePort > 0) return move(keys, folder, options);
-    auto scu = connect("C-GET", [](Scu& s) {
-      s.addPresentationContext(UID_GETStudyRootQueryRetrieveInformationModel,
-                               acceptedTransferSyntaxes());
-      for (int i = 0; i < storageSopClassCount(); ++i)
-        s.addPresentationContext(storageSopClass(i), acceptedTransferSyntaxes(), ASC_SC_ROLE_SCP);
-    }, options.cancel);
+    auto scu = connect(
+        "C-GET",
+        [](Scu& s) {
+          s.addPresentationContext(UID_GETStudyRootQueryRetrieveInformationModel,
+                                   acceptedTransferSyntaxes());
+          for (int i = 0; i < storageSopClassCount(); ++i)
+            s.addPresentationContext(storageSopClass(i), acceptedTransferSyntaxes(),
+                                     ASC_SC_ROLE_SCP);
+        },
+        options.cancel);
     scu->folder = folder;
     scu->retrieve = options;
     OFList<RetrieveResponse*> responses;
@@ -240,16 +244,19 @@ class DimseClient : public PacsClient {
     for (size_t i = 0; i < files.size(); ++i)
       if (loaded[i].loadFile(files[i].c_str()).bad())
         throw inputError(files[i] + " is not a DICOM file Voxray can read; nothing was sent");
-    auto scu = connect("C-STORE", [&](Scu& s) {
-      for (auto& f : loaded) {
-        OFString sopClass;
-        f.getDataset()->findAndGetOFString(DCM_SOPClassUID, sopClass);
-        OFList<OFString> xfer;
-        xfer.push_back(DcmXfer(f.getDataset()->getOriginalXfer()).getXferID());
-        if (s.findPresentationContextID(sopClass, xfer.front()) == 0)
-          s.addPresentationContext(sopClass, xfer);
-      }
-    }, cancel);
+    auto scu = connect(
+        "C-STORE",
+        [&](Scu& s) {
+          for (auto& f : loaded) {
+            OFString sopClass;
+            f.getDataset()->findAndGetOFString(DCM_SOPClassUID, sopClass);
+            OFList<OFString> xfer;
+            xfer.push_back(DcmXfer(f.getDataset()->getOriginalXfer()).getXferID());
+            if (s.findPresentationContextID(sopClass, xfer.front()) == 0)
+              s.addPresentationContext(sopClass, xfer);
+          }
+        },
+        cancel);
     for (size_t i = 0; i < files.size(); ++i) {
       if (cancel && cancel->load()) {
         scu->abortAssociation();
@@ -261,7 +268,8 @@ class DimseClient : public PacsClient {
       if (cancel && cancel->load()) {  // a wait for the node stopped
         scu->abortAssociation();
         throw cancelledError("Sending cancelled during file " + std::to_string(i + 1) + " of " +
-                             std::to_string(files.size()) + "; the node may keep the files before it");
+                             std::to_string(files.size()) +
+                             "; the node may keep the files before it");
       }
       check("C-STORE of " + files[i], cond);
       if (status != STATUS_Success)

@@ -16,8 +16,8 @@ namespace voxray {
 
 struct CachedSeries {
   std::string studyUid, seriesUid;
-  std::string folder;  // absolute; loadVolume() opens it
-  uint64_t bytes = 0;  // on disk (allocated blocks)
+  std::string folder;    // absolute; loadVolume() opens it
+  uint64_t bytes = 0;    // on disk (allocated blocks)
   int64_t lastUsed = 0;  // seconds since the epoch
   int images = 0;
 };
