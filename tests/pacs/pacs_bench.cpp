@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "orthanc_server.h"
@@ -27,10 +28,30 @@ using voxray::test::OrthancServer;
 
 namespace {
 
+// CPU seconds (user + system) of this process and its reaped children: Voxray's client
+// during its steps, the raw tool (run through the shell) during its own; Orthanc, a child
+// not reaped until the end, is in neither. Load on the shared machine stretches wall time
+// far more than CPU time.
+double cpuSeconds() {
+  double total = 0;
+  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage u{};
+    getrusage(who, &u);
+    total += double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+             double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
+  }
+  return total;
+}
+
+double lastCpu = 0;  // the CPU seconds of the last seconds() call
+
 double seconds(const std::function<void()>& f) {
+  double cpu0 = cpuSeconds();
   auto t0 = std::chrono::steady_clock::now();
   f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  lastCpu = cpuSeconds() - cpu0;
+  return wall;
 }
 
 double median(std::vector<double> v) {
@@ -76,14 +97,15 @@ int main(int argc, char** argv) {
             << "\n";
   struct Row {
     std::string what;
-    std::vector<double> s;
+    std::vector<double> s, cpu;
     uint64_t bytes = 0;
   };
-  std::vector<Row> rows = {
-      {"voxray C-GET, to ready volume", {}},  {"voxray C-GET, retrieval only", {}},
-      {"getscu (DCMTK), to files", {}},       {"voxray WADO-RS, to ready volume", {}},
-      {"voxray WADO-RS, retrieval only", {}}, {"curl WADO-RS, to one file", {}},
-      {"voxray C-FIND, study level", {}},     {"findscu (DCMTK), study level", {}}};
+  std::vector<Row> rows;
+  for (const char* what :
+       {"voxray C-GET, to ready volume", "voxray C-GET, retrieval only", "getscu (DCMTK), to files",
+        "voxray WADO-RS, to ready volume", "voxray WADO-RS, retrieval only",
+        "curl WADO-RS, to one file", "voxray C-FIND, study level", "findscu (DCMTK), study level"})
+    rows.push_back(Row{what, {}, {}, 0});
   std::string area = voxray::test::tempFolder("bench");
   auto curl = [&](int r) {
     std::string file = area + "/curl-" + std::to_string(r);
@@ -93,6 +115,7 @@ int main(int argc, char** argv) {
             server.webNode().baseUrl + "/studies/" + studyUid + "/series/" + seriesUid + " -o " +
             file);
     }));
+    rows[5].cpu.push_back(lastCpu);
     rows[5].bytes = fs::file_size(file);
   };
   auto getscu = [&](int r) {
@@ -103,22 +126,26 @@ int main(int argc, char** argv) {
             " -S -k QueryRetrieveLevel=SERIES -k StudyInstanceUID=" + studyUid +
             " -k SeriesInstanceUID=" + seriesUid + " -od " + out);
     }));
+    rows[2].cpu.push_back(lastCpu);
     rows[2].bytes = folderBytes(out);
   };
   auto voxray = [&](int r, const voxray::PacsNode& node) {
     bool web = node.transport == voxray::PacsNode::Transport::Web;
     std::string cache = area + "/cache-" + std::to_string(r) + (web ? "w" : "d");
     voxray::CachedSeries entry;
-    double retrieve = 0;
+    double retrieve = 0, retrieveCpu = 0;
     double ready = seconds([&] {
       voxray::PacsCache c(cache);
       auto client = voxray::makePacsClient(node);
       retrieve = seconds([&] { entry = c.retrieve(*client, studyUid, seriesUid); });
+      retrieveCpu = lastCpu;
       voxray::Volume v = voxray::loadVolume(entry.folder);
       if (v.dims != disk.dims) std::exit(1);
     });
     rows[web ? 3 : 0].s.push_back(ready);
+    rows[web ? 3 : 0].cpu.push_back(lastCpu);
     rows[web ? 4 : 1].s.push_back(retrieve);
+    rows[web ? 4 : 1].cpu.push_back(retrieveCpu);
     rows[web ? 3 : 0].bytes = rows[web ? 4 : 1].bytes = entry.bytes;
   };
   // The same study-level keys as Voxray's C-FIND (dimse_client.cpp), every study.
@@ -133,12 +160,14 @@ int main(int argc, char** argv) {
       shell("findscu -S -aet VOXRAY -aec ORTHANC 127.0.0.1 " + std::to_string(server.dicomPort) +
             keys + " > /dev/null 2>&1");
     }));
+    rows[7].cpu.push_back(lastCpu);
   };
   auto voxrayFind = [&](int) {
     size_t found = 0;
     rows[6].s.push_back(seconds([&] {
       found = voxray::makePacsClient(server.dimseNode())->find(voxray::PacsQuery{}).size();
     }));
+    rows[6].cpu.push_back(lastCpu);
     if (found != 1) std::exit(1);  // the store holds the one study
   };
   // Each timed step starts with no dirty pages left by the one before (sync), and the raw
@@ -154,27 +183,30 @@ int main(int argc, char** argv) {
         sync();
         step(r);
       }
-  std::printf("%-34s %9s %9s %8s\n", "median of runs", "seconds", "MB", "MB/s");
-  for (const auto& row : rows)
-    if (!row.s.empty() && row.bytes)
-      std::printf("%-34s %9.3f %9.1f %8.1f\n", row.what.c_str(), median(row.s), row.bytes / 1e6,
-                  row.bytes / 1e6 / median(row.s));
-    else if (!row.s.empty())
-      std::printf("%-34s %9.3f\n", row.what.c_str(), median(row.s));
+  std::printf("%-34s %9s %9s %9s %8s\n", "median of runs", "seconds", "CPU s", "MB", "MB/s");
+  for (const auto& row : rows) {
+    if (row.s.empty()) continue;
+    std::printf("%-34s %9.3f %9.3f", row.what.c_str(), median(row.s), median(row.cpu));
+    if (row.bytes) std::printf(" %9.1f %8.1f", row.bytes / 1e6, row.bytes / 1e6 / median(row.s));
+    std::printf("\n");
+  }
   // Ratios of medians, and every run (the machine is shared: the spread matters).
   auto ratio = [&](size_t ours, size_t raw, const char* what) {
     if (!rows[ours].s.empty() && !rows[raw].s.empty())
-      std::printf("%-34s %9.2fx\n", what, median(rows[ours].s) / median(rows[raw].s));
+      std::printf("%-34s %8.2fx %8.2fx (wall, CPU)\n", what,
+                  median(rows[ours].s) / median(rows[raw].s),
+                  median(rows[ours].cpu) / median(rows[raw].cpu));
   };
   ratio(0, 2, "C-GET ready volume / getscu");
+  ratio(1, 2, "C-GET retrieval / getscu");
   ratio(3, 5, "WADO-RS ready volume / curl");
   ratio(4, 5, "WADO-RS retrieval / curl");
   ratio(6, 7, "C-FIND / findscu");
   for (const auto& row : rows) {
     if (row.s.empty()) continue;
     std::printf("runs: %-28s", row.what.c_str());
-    for (double t : row.s) std::printf(" %.3f", t);
-    std::printf("\n");
+    for (size_t i = 0; i < row.s.size(); ++i) std::printf(" %.3f/%.3f", row.s[i], row.cpu[i]);
+    std::printf("  (wall/CPU s)\n");
   }
   std::printf("load average at the end: %s\n", loadAverage().c_str());
   fs::remove_all(area);

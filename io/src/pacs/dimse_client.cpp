@@ -303,9 +303,11 @@ class DimseClient : public PacsClient {
     }
     OFCondition cond = scu->negotiateAssociation();
     if (cancel && cancel->load())
-      throw cancelledError(what + " cancelled: PACS " + node_.label() +
-                           " had not answered the association request (it took the connection "
-                           "and said nothing); nothing was exchanged");
+      throw cancelledError(cond.good() ? what + " cancelled; nothing was exchanged"
+                                       : what + " cancelled: PACS " + node_.label() +
+                                             " had not answered the association request (it "
+                                             "took the connection and said nothing); nothing "
+                                             "was exchanged");
     check(what + ": cannot associate", cond);
     return scu;
   }
