@@ -2,6 +2,7 @@
 #include <sys/mount.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -13,6 +14,29 @@ namespace voxray::test {
 namespace {
 
 using CacheTest = PacsTest;
+
+// The GE tilt study's only series, found by C-FIND.
+PacsMatch tiltSeriesOf(PacsClient& client) {
+  auto tilt = findByName(client, "REM*");
+  EXPECT_EQ(tilt.size(), 1u);
+  PacsQuery q;
+  q.level = QueryLevel::Series;
+  q.studyInstanceUid = tilt.empty() ? "" : tilt[0].studyInstanceUid;
+  auto series = client.find(q);
+  EXPECT_EQ(series.size(), 1u);
+  return series.empty() ? PacsMatch{} : series[0];
+}
+
+// What FOLDER takes on disk, as du(1) counts it (allocated blocks of files, folders and
+// links): the cap's measure, taken by another program than the cache.
+uint64_t duBytes(const std::string& folder) {
+  std::string command = "du -s -B1 '" + folder + "'";
+  FILE* p = popen(command.c_str(), "r");
+  unsigned long long bytes = 0;
+  if (!p || std::fscanf(p, "%llu", &bytes) != 1) ADD_FAILURE() << "cannot run " << command;
+  if (p) pclose(p);
+  return bytes;
+}
 
 TEST_F(CacheTest, OverTheCapTheLeastRecentlyUsedSeriesGoes) {
   auto client = makePacsClient(server().dimseNode());
@@ -40,6 +64,48 @@ TEST_F(CacheTest, OverTheCapTheLeastRecentlyUsedSeriesGoes) {
   EXPECT_EQ(
       cache.retrieve(*client, tilt[0].studyInstanceUid, tiltSeries[0].seriesInstanceUid).folder,
       second.folder);
+}
+
+// The cap counts all the cache writes, as du does: a study's view under studies/ (28 links,
+// a block each on this file system since their targets are long) and the index, not only
+// the series' files. A cap that holds both series but not the view besides them: making the
+// view evicts the other series, never the view's own.
+TEST_F(CacheTest, TheCapCountsTheStudyViewsAndTheIndexAsDuDoes) {
+  auto client = makePacsClient(server().dimseNode());
+  PacsMatch tilt = tiltSeriesOf(*client);
+  std::string root = tempFolder("cache");
+  CachedSeries phantom, tiltEntry;
+  {
+    PacsCache unlimited(root);
+    phantom = unlimited.retrieve(*client, kPhantomStudy, kPhantomSeries);
+    tiltEntry = unlimited.retrieve(*client, tilt.studyInstanceUid, tilt.seriesInstanceUid);
+  }
+  const uint64_t both = duBytes(root);
+  // The series' own count is du's for their folders (28 files of 0.5 MB each).
+  EXPECT_EQ(phantom.bytes, duBytes(phantom.folder));
+  EXPECT_EQ(tiltEntry.bytes, duBytes(tiltEntry.folder));
+  EXPECT_GT(both, phantom.bytes + tiltEntry.bytes);  // + the index and the folders
+  PacsCache(root).studyFolder(kPhantomStudy, {phantom});
+  const uint64_t view = duBytes(root) - both;
+  ASSERT_GE(view, 28u * 4096u) << "28 links to long paths take a 4 KiB block each on ext4";
+
+  const uint64_t cap = both + view / 2;
+  PacsCache capped(root, cap);
+  std::string folder = capped.studyFolder(kPhantomStudy, {phantom});
+  auto entries = capped.entries();
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(entries[0].seriesUid, kPhantomSeries);
+  EXPECT_FALSE(std::filesystem::exists(tiltEntry.folder));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder + "/" + kPhantomSeries),
+                          std::filesystem::directory_iterator()),
+            28);
+  EXPECT_LE(duBytes(root), cap);
+  // A retrieval into the full cache makes room the same way: the view (of a series now
+  // evicted) goes with its series, and everything stays within the cap.
+  capped.retrieve(*client, tilt.studyInstanceUid, tilt.seriesInstanceUid);
+  EXPECT_LE(duBytes(root), cap);
+  EXPECT_EQ(capped.entries().size(), 1u);
+  EXPECT_FALSE(std::filesystem::exists(root + "/studies/" + kPhantomStudy));
 }
 
 // A real file system that fills: an 8 MiB tmpfs mounted for the test. The 28-image phantom

@@ -1,7 +1,11 @@
 // DIMSE against a real Orthanc: C-ECHO, C-FIND, C-GET, C-MOVE, faults.
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <thread>
 
 #include <gmock/gmock.h>
 
@@ -103,6 +107,43 @@ TEST(DimseFaultTest, ServerKilledDuringCGetLeavesNoHalfSeries) {
                                       testing::AnyOf(HasSubstr("check that the node is running"),
                                                      HasSubstr("the node ended the connection"))));
   expectNothingCached(cache);
+}
+
+// A node that takes the TCP connection and never answers the association request: a socket
+// that listens and never accepts (the kernel completes the handshake for its backlog). A
+// cancel during that wait returns within 2 s of being set (the connection looks at the flag
+// every 50 ms; the bound leaves room for this loaded machine), not after the node's 30 s
+// timeout, and says what happened; nothing was sent.
+TEST(DimseStallTest, CancelWhileTheNodeNeverAnswersTheAssociationReturnsAtOnce) {
+  int port = 0;
+  int listener = loopbackSocket(port, true);
+  PacsNode node = parsePacsNode("dicom://STALLED@127.0.0.1:" + std::to_string(port));
+  ASSERT_EQ(node.timeoutSec, 30);
+  std::atomic<bool> cancel{false};
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point cancelledAt;
+  std::thread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    cancelledAt = Clock::now();
+    cancel = true;
+  });
+  std::string message;
+  Error::Kind kind = Error::Kind::Input;
+  try {
+    makePacsClient(node)->store({dicomPath("ct-philips-phantom/S2010/I10")}, &cancel);
+    ADD_FAILURE() << "a send to a node that never answers returned";
+  } catch (const Error& e) {
+    kind = e.kind();
+    message = e.what();
+  }
+  const auto returnedAt = Clock::now();
+  canceller.join();
+  close(listener);
+  EXPECT_EQ(kind, Error::Kind::Cancelled) << message;
+  EXPECT_THAT(message, testing::AllOf(HasSubstr("C-STORE cancelled"), HasSubstr(node.label()),
+                                      HasSubstr("had not answered the association request"),
+                                      HasSubstr("nothing was exchanged")));
+  EXPECT_LT(std::chrono::duration<double>(returnedAt - cancelledAt).count(), 2.0);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <filesystem>
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -122,6 +123,53 @@ TEST_F(ScSendTest, SentOverEitherTransportItIsFoundWithTheExportedPixels) {
     SCOPED_TRACE(node.label());
     expectSentScComesBack(node);
   }
+}
+
+// Runs a command; returns its exit status and stdout with stderr.
+std::pair<int, std::string> run(const std::string& command) {
+  FILE* p = popen((command + " 2>&1").c_str(), "r");
+  std::string out;
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  return {WEXITSTATUS(pclose(p)), out};
+}
+
+using ScPatientTest = PacsTest;  // its own Orthanc: the phantom study gains a series here
+
+// The SC carries the source's patient name and ID (HEAD, PLASTIC) in its header, so that the
+// PACS files it under the same patient and study (one study, one more series; not a second
+// patient with a study of the same UID). They appear nowhere else: not in the file's name,
+// nor in what voxray-cli prints when the send succeeds or fails.
+TEST_F(ScPatientTest, PatientFieldsFileTheScWithItsPatientAndAppearNowhereElse) {
+  const std::string folder = tempFolder("sc");
+  const std::string path = writeShot(folder);
+  auto [dumped, dump] = run("dcmdump " + path);
+  ASSERT_EQ(dumped, 0) << dump;
+  EXPECT_THAT(dump, HasSubstr("(0010,0010) PN [HEAD]"));
+  EXPECT_THAT(dump, HasSubstr("(0010,0020) LO [PLASTIC]"));
+  for (const auto& f : std::filesystem::recursive_directory_iterator(folder))
+    EXPECT_THAT(f.path().string(), testing::AllOf(testing::Not(HasSubstr("HEAD")),
+                                                  testing::Not(HasSubstr("PLASTIC"))));
+  const PacsNode node = server().dimseNode();
+  auto [sent, sendOut] =
+      run(std::string(VOXRAY_CLI) + " pacs send dicom://" + node.label() + " " + path);
+  EXPECT_EQ(sent, 0) << sendOut;
+  PacsNode wrongAe = node;
+  wrongAe.calledAe = "NOT_ORTHANC";
+  auto [refused, refusedOut] =
+      run(std::string(VOXRAY_CLI) + " pacs send dicom://" + wrongAe.label() + " " + path);
+  EXPECT_NE(refused, 0);
+  EXPECT_THAT(refusedOut, HasSubstr("refused Voxray"));
+  for (const std::string& out : {sendOut, refusedOut})
+    EXPECT_THAT(
+        out, testing::AllOf(testing::Not(HasSubstr("HEAD")), testing::Not(HasSubstr("PLASTIC"))));
+  PacsQuery q;
+  q.patientId = "PLASTIC";
+  auto studies = makePacsClient(node)->find(q);
+  ASSERT_EQ(studies.size(), 1u);
+  EXPECT_EQ(studies[0].studyInstanceUid, kPhantomStudy);
+  EXPECT_EQ(studies[0].numberOfSeries, 3 + 1);
+  EXPECT_EQ(studies[0].patientName, "HEAD");
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmnet/scu.h>
 
+#include "cancellable_transport.h"
 #include "dimse_support.h"
 #include "move_receiver.h"
 #include "transports.h"
@@ -37,6 +38,15 @@ class Scu : public DcmSCU {
   bool findCancelSent = false;
   bool cancelled = false;
   std::string storeError;
+  std::unique_ptr<CancellableTransport> transport;  // with a cancel flag: waits that stop
+
+  // DCMTK's only hook for the connection class (it asks for no TLS of its own).
+  OFCondition useTransport(DcmTransportLayer* layer) { return useSecureConnection(layer); }
+
+  // The association goes before the transport its connection came from.
+  ~Scu() override {
+    if (isConnected()) abortAssociation();
+  }
 
   OFCondition handleSTORERequest(const T_ASC_PresentationContextID, DcmDataset* incoming,
                                  OFBool& continueSession, Uint16& status) override {
@@ -134,7 +144,8 @@ class DimseClient : public PacsClient {
                             ? UID_FINDPatientRootQueryRetrieveInformationModel
                             : UID_FINDStudyRootQueryRetrieveInformationModel;
     auto scu = connect(
-        "C-FIND", [&](Scu& s) { s.addPresentationContext(model, acceptedTransferSyntaxes()); });
+        "C-FIND", [&](Scu& s) { s.addPresentationContext(model, acceptedTransferSyntaxes()); },
+        options.cancel);
     DcmDataset keys;
     keys.putAndInsertString(DCM_QueryRetrieveLevel, levelName(q.level));
     keys.putAndInsertString(DCM_PatientName, q.patientName.c_str());
@@ -178,7 +189,7 @@ class DimseClient : public PacsClient {
     };
     OFCondition cond =
         scu->sendFINDRequest(scu->findPresentationContextID(model, ""), &keys, nullptr);
-    if (options.cancel && options.cancel->load()) {
+    if (options.cancel && options.cancel->load()) {  // C-CANCEL sent, or a wait stopped
       scu->abortAssociation();
       throw cancelledError("Search cancelled");
     }
@@ -196,12 +207,16 @@ class DimseClient : public PacsClient {
     keys.putAndInsertString(DCM_StudyInstanceUID, studyUid.c_str());
     keys.putAndInsertString(DCM_SeriesInstanceUID, seriesUid.c_str());
     if (node_.receivePort > 0) return move(keys, folder, options);
-    auto scu = connect("C-GET", [](Scu& s) {
-      s.addPresentationContext(UID_GETStudyRootQueryRetrieveInformationModel,
-                               acceptedTransferSyntaxes());
-      for (int i = 0; i < storageSopClassCount(); ++i)
-        s.addPresentationContext(storageSopClass(i), acceptedTransferSyntaxes(), ASC_SC_ROLE_SCP);
-    });
+    auto scu = connect(
+        "C-GET",
+        [](Scu& s) {
+          s.addPresentationContext(UID_GETStudyRootQueryRetrieveInformationModel,
+                                   acceptedTransferSyntaxes());
+          for (int i = 0; i < storageSopClassCount(); ++i)
+            s.addPresentationContext(storageSopClass(i), acceptedTransferSyntaxes(),
+                                     ASC_SC_ROLE_SCP);
+        },
+        options.cancel);
     scu->folder = folder;
     scu->retrieve = options;
     OFList<RetrieveResponse*> responses;
@@ -213,7 +228,7 @@ class DimseClient : public PacsClient {
       failed = std::max(failed, int(r->m_numberOfFailedSubops));
       delete r;
     }
-    if (scu->cancelled) {
+    if (scu->cancelled || (options.cancel && options.cancel->load())) {
       scu->abortAssociation();
       throw cancelledError("Retrieval cancelled");
     }
@@ -229,16 +244,19 @@ class DimseClient : public PacsClient {
     for (size_t i = 0; i < files.size(); ++i)
       if (loaded[i].loadFile(files[i].c_str()).bad())
         throw inputError(files[i] + " is not a DICOM file Voxray can read; nothing was sent");
-    auto scu = connect("C-STORE", [&](Scu& s) {
-      for (auto& f : loaded) {
-        OFString sopClass;
-        f.getDataset()->findAndGetOFString(DCM_SOPClassUID, sopClass);
-        OFList<OFString> xfer;
-        xfer.push_back(DcmXfer(f.getDataset()->getOriginalXfer()).getXferID());
-        if (s.findPresentationContextID(sopClass, xfer.front()) == 0)
-          s.addPresentationContext(sopClass, xfer);
-      }
-    });
+    auto scu = connect(
+        "C-STORE",
+        [&](Scu& s) {
+          for (auto& f : loaded) {
+            OFString sopClass;
+            f.getDataset()->findAndGetOFString(DCM_SOPClassUID, sopClass);
+            OFList<OFString> xfer;
+            xfer.push_back(DcmXfer(f.getDataset()->getOriginalXfer()).getXferID());
+            if (s.findPresentationContextID(sopClass, xfer.front()) == 0)
+              s.addPresentationContext(sopClass, xfer);
+          }
+        },
+        cancel);
     for (size_t i = 0; i < files.size(); ++i) {
       if (cancel && cancel->load()) {
         scu->abortAssociation();
@@ -247,6 +265,12 @@ class DimseClient : public PacsClient {
       }
       Uint16 status = 0;
       OFCondition cond = scu->sendSTORERequest(0, "", loaded[i].getDataset(), status);
+      if (cancel && cancel->load()) {  // a wait for the node stopped
+        scu->abortAssociation();
+        throw cancelledError("Sending cancelled during file " + std::to_string(i + 1) + " of " +
+                             std::to_string(files.size()) +
+                             "; the node may keep the files before it");
+      }
       check("C-STORE of " + files[i], cond);
       if (status != STATUS_Success)
         throw inputError("PACS " + node_.label() + " refused " + files[i] + " (status 0x" +
@@ -256,8 +280,11 @@ class DimseClient : public PacsClient {
   }
 
  private:
+  // An association for WHAT; with CANCEL, every wait for the node stops when it becomes true
+  // (Cancelled, saying the node had not answered, when that happens before it accepted).
   template <class Setup>
-  std::unique_ptr<Scu> connect(const std::string& what, Setup setup) {
+  std::unique_ptr<Scu> connect(const std::string& what, Setup setup,
+                               const std::atomic<bool>* cancel = nullptr) {
     auto scu = std::make_unique<Scu>();
     scu->setAETitle(node_.callingAe.c_str());
     scu->setPeerAETitle(node_.calledAe.c_str());
@@ -270,7 +297,18 @@ class DimseClient : public PacsClient {
     scu->setMaxReceivePDULength(ASC_MAXIMUMPDUSIZE);
     setup(*scu);
     check(what + ": network setup", scu->initNetwork());
-    check(what + ": cannot associate", scu->negotiateAssociation());
+    if (cancel) {
+      scu->transport = std::make_unique<CancellableTransport>(cancel);
+      check(what + ": network setup", scu->useTransport(scu->transport.get()));
+    }
+    OFCondition cond = scu->negotiateAssociation();
+    if (cancel && cancel->load())
+      throw cancelledError(cond.good() ? what + " cancelled; nothing was exchanged"
+                                       : what + " cancelled: PACS " + node_.label() +
+                                             " had not answered the association request (it "
+                                             "took the connection and said nothing); nothing "
+                                             "was exchanged");
+    check(what + ": cannot associate", cond);
     return scu;
   }
 

@@ -1,5 +1,6 @@
 #include "voxray/io/pacs_cache.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -38,6 +39,22 @@ bool fileSystemFull(const std::string& folder) {
   std::error_code ec;
   fs::space_info space = fs::space(folder, ec);
   return !ec && space.available < kFullBelowBytes;
+}
+
+// What PATH takes on disk (allocated blocks, as du counts them): its files, folders and links
+// themselves (never what links point to). A missing path takes nothing.
+uint64_t diskBytes(const fs::path& path) {
+  auto blocks = [](const fs::path& p) -> uint64_t {
+    struct stat st {};
+    return lstat(p.c_str(), &st) == 0 ? uint64_t(st.st_blocks) * 512 : 0;
+  };
+  uint64_t n = blocks(path);
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(path, ec))) return n;
+  for (auto it = fs::recursive_directory_iterator(path, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+    n += blocks(it->path());
+  return n;
 }
 
 // Removes a staging folder whatever happens to the retrieval.
@@ -135,21 +152,25 @@ void PacsCache::remove(const std::string& seriesUid) {
   fs::remove_all(folder, ignored);
 }
 
-void PacsCache::evict(std::vector<CachedSeries>& entries, const std::string& keep) const {
+void PacsCache::evict(std::vector<CachedSeries>& entries,
+                      const std::vector<std::string>& keep) const {
+  // The cap counts everything under the root (series, the studies/ views, the index,
+  // folders, a retrieval being staged), so the least recently used series go until all fits.
   std::sort(entries.begin(), entries.end(),
             [](const CachedSeries& a, const CachedSeries& b) { return a.lastUsed > b.lastUsed; });
-  uint64_t total = 0;
-  std::vector<CachedSeries> kept;
-  for (const auto& s : entries) {
-    total += s.bytes;
-    if (total <= capBytes_ || s.seriesUid == keep) {
-      kept.push_back(s);
-    } else {
-      std::error_code ignored;
-      fs::remove_all(s.folder, ignored);
-    }
+  uint64_t total = diskBytes(root_);
+  for (size_t i = entries.size(); i-- > 0 && total > capBytes_;) {
+    const CachedSeries& s = entries[i];
+    if (std::find(keep.begin(), keep.end(), s.seriesUid) != keep.end()) continue;
+    // The study's view links to the series' files: it goes with them.
+    fs::path view = fs::path(root_) / "studies" / folderName(s.studyUid);
+    uint64_t freed = s.bytes + diskBytes(view);
+    std::error_code ignored;
+    fs::remove_all(s.folder, ignored);
+    fs::remove_all(view, ignored);
+    total -= std::min(total, freed);
+    entries.erase(entries.begin() + std::ptrdiff_t(i));
   }
-  entries = kept;
 }
 
 CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid,
@@ -171,8 +192,7 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   if (options.cancel && options.cancel->load()) throw cancelledError("Retrieval cancelled");
   CachedSeries entry{studyUid, seriesUid, root_ + "/series/" + folderName(seriesUid),
                      0,        now(),     int(files.size())};
-  for (const auto& f : fs::directory_iterator(staging.path))
-    if (f.is_regular_file()) entry.bytes += f.file_size();
+  entry.bytes = diskBytes(staging.path);
   std::error_code ec;
   fs::remove_all(entry.folder, ec);  // a stale folder the index no longer knows
   fs::rename(staging.path, entry.folder, ec);
@@ -182,7 +202,7 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   staging.path.clear();
   auto all = load();
   all.push_back(entry);
-  evict(all, seriesUid);
+  evict(all, {seriesUid});
   try {
     save(all);
   } catch (const Error&) {
@@ -211,6 +231,13 @@ std::string PacsCache::studyFolder(const std::string& studyUid,
       throw outputError("Cannot gather the retrieved study in " + study.string() + " (" +
                         ec.message() + "): set VOXRAY_CACHE_DIR to a writable folder");
   }
+  // The links take room too (a block each where the target path is long): within the cap,
+  // other series go first.
+  std::vector<std::string> keep;
+  for (const auto& s : series) keep.push_back(s.seriesUid);
+  auto all = load();
+  evict(all, keep);
+  save(all);
   return study.string();
 }
 

@@ -56,6 +56,12 @@ std::string writeSecondaryCapture(const std::string& path, const std::vector<Ima
   put(DCM_SpecificCharacterSet, "ISO_IR 192");  // StudyIdentity holds UTF-8
   put(DCM_SOPClassUID, UID_MultiframeTrueColorSecondaryCaptureImageStorage);
   put(DCM_SOPInstanceUID, sopUid);
+  // The patient module is copied from the source on purpose. It is Type 2 in this IOD (present,
+  // may be empty), and a PACS files an instance by patient and study: with an empty or other
+  // Patient ID the SC would not join its study (Orthanc, for one, keys a study by Patient ID
+  // and Study Instance UID, so it would make a second study of the same UID under another
+  // patient). These fields go into this header only: never into file names (the caller
+  // chooses the path), messages or logs (DCMTK's log is off), nor into the pixels.
   put(DCM_PatientName, s.patientName);
   put(DCM_PatientID, s.patientId);
   put(DCM_PatientBirthDate, s.patientBirthDate);

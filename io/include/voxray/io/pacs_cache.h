@@ -1,6 +1,7 @@
 #pragma once
 // The local cache of retrieved series: one folder per complete series under the user's cache
-// folder, an index of them, least recently used evicted over a size cap. A retrieval is
+// folder, an index of them, least recently used evicted over a size cap that counts all the
+// cache writes (series, the studies/ views, the index; as du does). A retrieval is
 // staged in a folder of its own and enters the index only when complete, so a cancelled or
 // failed one leaves no half series behind. Never under the user's data folders.
 #include <cstdint>
@@ -15,8 +16,8 @@ namespace voxray {
 
 struct CachedSeries {
   std::string studyUid, seriesUid;
-  std::string folder;  // absolute; loadVolume() opens it
-  uint64_t bytes = 0;
+  std::string folder;    // absolute; loadVolume() opens it
+  uint64_t bytes = 0;    // on disk (allocated blocks)
   int64_t lastUsed = 0;  // seconds since the epoch
   int images = 0;
 };
@@ -40,6 +41,7 @@ class PacsCache {
   std::vector<CachedSeries> entries() const;
   // A folder under studies/ that shows the cached SERIES of one study together (links to
   // their files, made afresh), so the series picker lists them as it lists a study folder.
+  // Its links count in the cap: other series are evicted for them, never SERIES.
   std::string studyFolder(const std::string& studyUid, const std::vector<CachedSeries>& series);
   void remove(const std::string& seriesUid);
   const std::string& root() const { return root_; }
@@ -47,7 +49,9 @@ class PacsCache {
  private:
   std::vector<CachedSeries> load() const;
   void save(const std::vector<CachedSeries>& entries) const;
-  void evict(std::vector<CachedSeries>& entries, const std::string& keep) const;
+  // Removes least recently used ENTRIES (never those in KEEP) until everything under the
+  // root takes at most the cap.
+  void evict(std::vector<CachedSeries>& entries, const std::vector<std::string>& keep) const;
   // "WHAT: the cache at ROOT is full: free space or set VOXRAY_CACHE_DIR ... (DETAIL)"
   Error fullError(const std::string& what, const std::string& detail = {}) const;
 
