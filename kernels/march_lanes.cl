@@ -227,15 +227,19 @@ inline void dvr_packet(PACKET_ARGS) {
   write_packet(P, out, count, gx, gy, color, samples);
 }
 
-// Steps of the cell walk a mip packet keeps (floatN x 3 each in private memory: 24 KiB,
-// 256 steps at 8 lanes); a ray that crosses more cells takes the walk-as-you-go loop instead.
-#define MIP_WALK (2048 / LANES)
+// Steps of the cell walk a mip packet keeps (floatN x 2 each in private memory: 24 KiB at 8
+// lanes, 48 KiB at 16); a ray that crosses more cells takes the walk-as-you-go loop
+// instead. A ray crosses at most about cells.x + cells.y + cells.z cells, 356 on a
+// 512 x 512 x 400 CT. 2048 / LANES steps (128 at 16 lanes) sent many of its rays to the
+// slower loop, and larger arrays cost time at 8 lanes (docs/bench/README.md, session 6).
+#define MIP_WALK 384
 
 // Walks every lane's cells in order (a 3D DDA by exit planes, no samples) and keeps step
-// g's cell in max[g], t_in[g], t_out[g], its max as -FLT_MAX where it cannot show above
-// the window's low end. Returns the number of steps, or -1 when a ray needs more.
+// g's cell as max[g] and its span [t_at[g], t_at[g + 1]), its max as -FLT_MAX where it
+// cannot show above the window's low end. Returns the number of steps, or -1 when a ray
+// needs more.
 inline int walk_cellsN(__global const short2* range, __constant RaycastParams* P,
-                       const RayPacket* r, float low, floatN* max, floatN* t_in, floatN* t_out) {
+                       const RayPacket* r, float low, floatN* max, floatN* t_at) {
   floatN nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
   floatN t = r->t0, t_enter = r->t0;
   intN pending = r->n >= 0;
@@ -247,12 +251,12 @@ inline int walk_cellsN(__global const short2* range, __constant RaycastParams* P
     floatN t_exit = fmin(cube_exitN(P, r, cx, cy, cz, 0), r->t1);
     floatN m = cell_maxN(range, k);
     max[g] = select((floatN)(-FLT_MAX), m, pending & (m > low));
-    t_in[g] = t_enter;
-    t_out[g] = t_exit;
+    t_at[g] = t_enter;
+    t_enter = select(t_enter, t_exit, pending);  // where this step's cell ends
     pending &= t_exit < r->t1;
-    t_enter = select(t_enter, t_exit, pending);
     t = select(t, fmax(t, t_exit) + fmax(nudge, fabs(t_exit) * 5e-7f), pending);
   }
+  t_at[g] = t_enter;
   return g;
 }
 
@@ -308,8 +312,8 @@ inline void mip_packet(__global const short* restrict vol, __constant RaycastPar
     // The maximum does not depend on the order of the samples: walk the cells once, then
     // sample them brightest first, until no cell left can raise a lane's maximum (or
     // show above the window's low end). Most rays sample a few cells.
-    floatN cell_max[MIP_WALK], t_in[MIP_WALK], t_out[MIP_WALK];
-    int steps = walk_cellsN(range, P, &r, low, cell_max, t_in, t_out);
+    floatN cell_max[MIP_WALK], t_at[MIP_WALK + 1];
+    int steps = walk_cellsN(range, P, &r, low, cell_max, t_at);
     if (steps >= 0) {
       while (any(active)) {
         floatN best = -FLT_MAX;
@@ -325,10 +329,10 @@ inline void mip_packet(__global const short* restrict vol, __constant RaycastPar
 #define TAKE_LANE(l, n) m[at.s##l * LANES + n] = -FLT_MAX;
         LANE_EACH(TAKE_LANE)
 #undef TAKE_LANE
-        // The samples with t in [t_in, t_out), up to the last one at t1. One that rounding
-        // puts in the neighbouring cell is within a voxel of the face, and so within
-        // that cell's max (its apron): leaving it to that cell is exact.
-        floatN from = pickN(t_in, at), to = pickN(t_out, at);
+        // The samples with t in [t_at[at], t_at[at + 1]), up to the last one at t1. One that
+        // rounding puts in the neighbouring cell is within a voxel of the face, and so within that
+        // cell's max (its apron): leaving it to that cell is exact.
+        floatN from = pickN(t_at, at), to = pickN(t_at, at + 1);
         intN end = select(index_atN(&r, to, step, false) - 1, r.n, to >= r.t1);
         sample_spanN(vol, P, &r, index_atN(&r, from, step, false), end, active, low, high, &vmax,
                      &samples);

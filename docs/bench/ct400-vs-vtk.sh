@@ -14,9 +14,12 @@
 # usage: docs/bench/ct400-vs-vtk.sh wall|cpu ROUNDS SIZES MODES LANES...
 #   e.g. docs/bench/ct400-vs-vtk.sh cpu 1 512x384 dvr,mip 16 8
 # env: RAW (the ct400-raw.py file), CLI (voxray-cli), VTK_PY (the venv's python),
-#      PEERS (../shared/peers), POCL_CACHE_DIR
+#      PEERS (../shared/peers), POCL_CACHE_DIR, FRAMES (cpu: the longer run's frames, default 8;
+#      iso's frames are short, about 15-20 samples each at 2 ms: 32 frames hold the count's
+#      noise near 5 %)
 set -euo pipefail
 how=$1 rounds=$2 sizes=$3 modes=$4
+long=${FRAMES:-8}
 shift 4
 here=$(cd "$(dirname "$0")" && pwd)
 raw=${RAW:-/tmp/ct400_hu_le.raw}
@@ -61,15 +64,15 @@ for r in $(seq "$rounds"); do
         rec=(perf record -q -e cpu-clock:u -c 2000000 -o "$data/p" --)
         vtk "$vmode" "$size" 2 "${rec[@]}" >/dev/null
         a=$(cpu_ms 'libvtkRenderingVolume|libm.so')
-        vtk "$vmode" "$size" 8 "${rec[@]}" >/dev/null
+        vtk "$vmode" "$size" "$long" "${rec[@]}" >/dev/null
         b=$(cpu_ms 'libvtkRenderingVolume|libm.so')
-        echo "round $r $mode $size VTK cpu ms/frame $(((b - a) / 6))"
+        echo "round $r $mode $size VTK cpu ms/frame $(((b - a) / (long - 2)))"
         for l in "$@"; do
           voxray "$l" "$mode" "$size" 2 "${rec[@]}" >/dev/null
           a=$(cpu_ms raycast.so)
-          voxray "$l" "$mode" "$size" 8 "${rec[@]}" >/dev/null
+          voxray "$l" "$mode" "$size" "$long" "${rec[@]}" >/dev/null
           b=$(cpu_ms raycast.so)
-          echo "round $r $mode $size Voxray lanes $l cpu ms/frame $(((b - a) / 6))"
+          echo "round $r $mode $size Voxray lanes $l cpu ms/frame $(((b - a) / (long - 2)))"
         done
       fi
     done
