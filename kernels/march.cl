@@ -74,7 +74,61 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
   return shade(c.xyz, n_w, origin_w + t_hit * dir_w, -dir_w, P->light_w, frame_light(lut, P, p_v));
 }
 
-// Front-to-back emission-absorption over segments, each sampled at its midpoint.
+#if ADAPTIVE
+// Adaptive dvr (ADAPTIVE): from segment i, the next ADAPTIVE_BATCH segments are each f base
+// steps long, f = 2^L with L the level of segment i's macro cell (classify.cl,
+// adaptive_level: there the table varies within the frame's bound; each level is the least of
+// the cell's 3 x 3 x 3 neighbours). f is capped so that the batch stays within a cell's
+// width (CELL voxels) of segment i's midpoint, inside those neighbours.
+#define ADAPTIVE_BATCH 2
+
+inline int adaptive_steps(__global const uchar* leap, __constant RaycastParams* P, const Ray* r,
+                          int i) {
+  int3 c = cell_of(P, r->o + ray_t(r, i, true) * r->d);
+  int cells = P->cells.x * P->cells.y * P->cells.z;
+  int f = 1 << leap[cells + (c.z * P->cells.y + c.y) * P->cells.x + c.x];
+  float reach = ADAPTIVE_BATCH * r->step * fmax(fabs(r->d.x), fmax(fabs(r->d.y), fabs(r->d.z)));
+  while (f > 1 && f * reach > (float)CELL) f >>= 1;
+  return f;
+}
+#endif
+
+// One dvr segment s into the composite; returns true once the ray terminates.
+inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
+                        const Ray* r, float2 s, float3 origin_w, float3 dir_w, uint* count,
+                        float3* acc, float* alpha
+#if HIT_OUTPUT
+                        ,
+                        float4* hit_out
+#endif
+) {
+  float seg = s.y - s.x;
+  if (seg <= 0.0f) return false;  // segment 0 without jitter
+  float t = 0.5f * (s.x + s.y);
+  float3 p_v = r->o + t * r->d;
+  ++*count;
+  float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
+  if (c.w <= 0.0f) return false;
+  float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
+  float3 rgb = c.xyz;
+  if (SHADING) {
+    rgb = shade(rgb, world_gradient(VOLUME, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
+                frame_light(lut, P, p_v));
+    *count += GRADIENT_TAPS;
+  }
+  *acc += (1.0f - *alpha) * a * rgb;
+#if HIT_OUTPUT
+  float before = *alpha;
+#endif
+  *alpha += (1.0f - *alpha) * a;
+#if HIT_OUTPUT
+  dvr_hit_crossing(before, *alpha, s, r, hit_out);
+#endif
+  return *alpha >= P->dvr.z;
+}
+
+// Front-to-back emission-absorption over segments, each sampled at its midpoint (ADAPTIVE:
+// some segments f base steps long, adaptive_steps).
 // *hit_out (HIT_OUTPUT variants): where the accumulated opacity reaches DVR_HIT_ALPHA
 // (hit_output.cl); untouched where it does not.
 inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
@@ -86,36 +140,38 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
 ) {
   float3 acc = (float3)(0.0f);
   float alpha = 0.0f;
+#if HIT_OUTPUT
+#define DVR_HIT_ARG , hit_out
+#else
+#define DVR_HIT_ARG
+#endif
+#if ADAPTIVE
+  for (int i = 0, check = 0; i <= r->n;) {
+    if (i >= check) {
+      i = ess_leap(leap, range, P, r, true, i, &check);
+      if (i > r->n) break;
+    }
+    int f = adaptive_steps(leap, P, r, i);
+    bool done = false;
+    for (int k = 0; k < ADAPTIVE_BATCH && !done && i + k * f <= r->n; ++k) {
+      float2 s = (float2)(ray_segment(r, i + k * f).x, ray_segment(r, i + k * f + f - 1).y);
+      done = dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG);
+    }
+    if (done) break;
+    i += ADAPTIVE_BATCH * f;
+  }
+#else
   for (int i = 0, check = 0; i <= r->n; ++i) {
     if (ESS && i >= check) {
       i = ess_leap(leap, range, P, r, true, i, &check);
       if (i > r->n) break;
     }
-    float2 s = ray_segment(r, i);
-    float seg = s.y - s.x;
-    if (seg <= 0.0f) continue;  // segment 0 without jitter
-    float t = 0.5f * (s.x + s.y);
-    float3 p_v = r->o + t * r->d;
-    ++*count;
-    float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
-    if (c.w <= 0.0f) continue;
-    float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
-    float3 rgb = c.xyz;
-    if (SHADING) {
-      rgb = shade(rgb, world_gradient(VOLUME, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
-                  frame_light(lut, P, p_v));
-      *count += GRADIENT_TAPS;
-    }
-    acc += (1.0f - alpha) * a * rgb;
-#if HIT_OUTPUT
-    float before = alpha;
-#endif
-    alpha += (1.0f - alpha) * a;
-#if HIT_OUTPUT
-    dvr_hit_crossing(before, alpha, s, r, hit_out);
-#endif
-    if (alpha >= P->dvr.z) break;
+    if (dvr_segment(VOLUME, P, lut, r, ray_segment(r, i), origin_w, dir_w, count, &acc,
+                    &alpha DVR_HIT_ARG))
+      break;
   }
+#endif
+#undef DVR_HIT_ARG
   return acc + (1.0f - alpha) * P->background.xyz;
 }
 

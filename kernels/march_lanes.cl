@@ -160,12 +160,38 @@ inline void dvr_compositeN(__global const short* restrict vol, __constant Raycas
   *active &= ~(seen & (*alpha >= P->dvr.z));
 }
 
+#if ADAPTIVE
+// adaptive_steps (march.cl)'s cap for each lane: the largest f of 1, 2, 4 whose batch stays
+// within a cell's width of its first midpoint.
+inline intN adaptive_capN(const RayPacket* r, float step) {
+  floatN reach =
+      ADAPTIVE_BATCH * step * fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
+  return select(select((intN)(1), (intN)(2), 2.0f * reach <= (float)CELL), (intN)(4),
+                4.0f * reach <= (float)CELL);
+}
+
+// adaptive_steps (march.cl) for the lanes in `active` (1 for the others).
+inline intN adaptive_stepsN(__global const uchar* leap, __constant RaycastParams* P,
+                            const RayPacket* r, intN i, float step, intN active, intN cap) {
+  intN cx, cy, cz;
+  intN k = cellN(P, r, ray_tN(r, i, step, true), active, &cx, &cy, &cz);
+  __global const uchar* level = leap + P->cells.x * P->cells.y * P->cells.z;
+#define LEVEL_LANE(l, n) level[k.s##l]
+  intN L = convert_intN((ucharN)(LANE_LIST(LEVEL_LANE)));
+#undef LEVEL_LANE
+  return select((intN)(1), min((intN)(1) << L, cap), active);
+}
+#endif
+
 // march_dvr (march.cl) for a packet: the same segments, leaps, opacity and early
 // termination lane by lane. Seen samples are shaded LANES at a time (shade_queue.cl).
 // DVR_BATCH samples per iteration: the later ones' loads need not wait for the first's
 // compositing (a lane that ends early drops the rest). 2 ran about 5 % faster than 1;
 // 3 and 4 no faster than 2 (CThead, VTK's orbit).
 #define DVR_BATCH 2
+#if ADAPTIVE && DVR_BATCH != ADAPTIVE_BATCH
+#error "adaptive_steps' cap assumes batches of ADAPTIVE_BATCH segments"
+#endif
 inline void dvr_packet(PACKET_ARGS) {
   float step = P->view.z;
   RayPacket r;
@@ -176,6 +202,9 @@ inline void dvr_packet(PACKET_ARGS) {
   intN active = r.n >= 0;
   ShadeQueue queue;
   if (SHADING) shade_queue_init(&queue, &r, world);
+#if ADAPTIVE
+  intN f_cap = adaptive_capN(&r, step);
+#endif
 #if HIT_OUTPUT
   floatN t_hit = 0.0f;
   intN found = 0;
@@ -189,10 +218,19 @@ inline void dvr_packet(PACKET_ARGS) {
     }
     floatN sa[DVR_BATCH], sb[DVR_BATCH], t[DVR_BATCH], value[DVR_BATCH], c[DVR_BATCH][4];
     intN live[DVR_BATCH];
+#if ADAPTIVE
+    intN f = adaptive_stepsN(leap, P, &r, i, step, active, f_cap);
+#else
+    const int f = 1;
+#endif
     for (int k = 0; k < DVR_BATCH; ++k) {
-      segmentN(&r, i + k, step, &sa[k], &sb[k]);
-      live[k] =
-          active & (i + k <= r.n) & (sb[k] - sa[k] > 0.0f);  // segment 0 without jitter is empty
+      intN at = i + k * f;
+      segmentN(&r, at, step, &sa[k], &sb[k]);
+#if ADAPTIVE
+      floatN unused;
+      segmentN(&r, at + f - 1, step, &unused, &sb[k]);
+#endif
+      live[k] = active & (at <= r.n) & (sb[k] - sa[k] > 0.0f);  // segment 0 without jitter is empty
       t[k] = 0.5f * (sa[k] + sb[k]);
       value[k] = sampleN(vol, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
       if (SHADING)
@@ -210,7 +248,7 @@ inline void dvr_packet(PACKET_ARGS) {
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
     }
-    i += DVR_BATCH;
+    i += DVR_BATCH * f;
     active &= i <= r.n;
   }
   if (SHADING) {
