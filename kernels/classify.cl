@@ -56,21 +56,35 @@ __kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 
   out[k] = (uchar)best;
 }
 
-// Adaptive dvr steps (ADAPTIVE, march.cl): each cell's level L, where rays may take segments
-// 2^L base steps long (L <= 2). A segment f = 2^L steps long replaces f segments of length h
-// whose opacities lie in [amin, amax] and colours within dc of each other (the table entries
-// the cell's values can interpolate from, with classify's margin). Its transmittance differs
-// from theirs by at most (f h / h_ref) (amax - amin) (the derivative of (1 - a)^m in a is at
-// most m) and its emitted colour by at most (f h / h_ref) amax dc, so a cell gets the largest L
-// with (f h / h_ref) (amax - amin + amax dc) <= P->dvr.w, the error bound: per long segment, at
-// most dvr.w times the transmittance before it, in opacity and in each colour channel (before
-// shading, whose normals the table does not bound). A cell no entry of which is opaque is exact
-// at any length (L 2).
+// Adaptive dvr steps (ADAPTIVE, march.cl): each cell's level L, where a segment f = 2^L base
+// steps long (L <= 2) whose midpoint lies in the cell may replace the f segments of length h
+// it covers. Their midpoints lie within (f - 1) h / 2 of its own, at most one voxel
+// (march.cl caps f), so every sample they take reads voxels of cells c ... c + 1 along each
+// axis (with the lower apron of cell c, skip.cl): the level is taken from the values of
+// those 8 cells. The table entries those values can interpolate from (classify's margin)
+// have opacities in [amin, amax] and colours within dc of each other; the long segment's
+// transmittance then differs from the short ones' product by at most (f h / h_ref)
+// (amax - amin) (the derivative of (1 - a)^m in a is at most m) and its emitted colour by at
+// most (f h / h_ref) amax dc. A cell gets the largest L with (f h / h_ref) (amax - amin +
+// amax dc) <= P->dvr.w, the error bound: per long segment, at most dvr.w times the
+// transmittance in front of it, in opacity and in each colour channel (before shading, whose
+// normals the table does not bound). Where no such entry is opaque, L 2 is exact.
+// Writes leap[cells + k] (the levels ride behind the leap distances).
 __kernel void adaptive_level(__global const short2* range, __constant RaycastParams* P,
-                             __global const float4* lut, int cells, __global uchar* level) {
+                             __global const float4* lut, int cells, __global uchar* leap) {
   int k = get_global_id(0);
   if (k >= cells) return;
-  float lo = range[k].x - 0.5f, hi = range[k].y + 0.5f;
+  int4 n = P->cells;
+  int3 c = (int3)(k % n.x, (k / n.x) % n.y, k / (n.x * n.y));
+  float lo = FLT_MAX, hi = -FLT_MAX;
+  for (int dz = 0; dz <= min(1, n.z - 1 - c.z); ++dz)
+    for (int dy = 0; dy <= min(1, n.y - 1 - c.y); ++dy)
+      for (int dx = 0; dx <= min(1, n.x - 1 - c.x); ++dx) {
+        short2 m = range[k + (dz * n.y + dy) * n.x + dx];
+        lo = fmin(lo, (float)m.x);
+        hi = fmax(hi, (float)m.y);
+      }
+  lo -= 0.5f, hi += 0.5f;
   int last = P->dims.w - 1;
   float x0 = clamp((lo - P->values.z) * P->values.w, 0.0f, (float)last);
   float x1 = clamp((hi - P->values.z) * P->values.w, 0.0f, (float)last);
@@ -83,33 +97,12 @@ __kernel void adaptive_level(__global const short2* range, __constant RaycastPar
     cmax = fmax(cmax, lut[e]);
     float3 dc = cmax.xyz - cmin.xyz;
     worst = (cmax.w - cmin.w) + cmax.w * fmax(dc.x, fmax(dc.y, dc.z));
-    if (worst * per_step > bound) break;  // not even L 0 can be longer: done
+    if (2.0f * per_step * worst > bound) break;  // not even L 1: done
   }
   int L = 0;
-  if (cmax.w <= 0.0f)
-    L = 2;
-  else if (4.0f * per_step * worst <= bound)
+  if (cmax.w <= 0.0f || 4.0f * per_step * worst <= bound)
     L = 2;
   else if (2.0f * per_step * worst <= bound)
     L = 1;
-  level[k] = (uchar)L;
-}
-
-// One pass of the minimum of level over the 3 x 3 x 3 cells around each cell, along `axis`
-// (three passes give the cube): a batch of long segments that starts in a cell may reach
-// into its neighbours (march.cl bounds how far), and every cell it reaches allows its
-// length. Writes out[offset + k].
-__kernel void level_min(__global const uchar* in, __global uchar* out, int offset, int4 cells,
-                        int axis) {
-  int k = get_global_id(0);
-  int n = cells.x * cells.y * cells.z;
-  if (k >= n) return;
-  int3 c = (int3)(k % cells.x, (k / cells.x) % cells.y, k / (cells.x * cells.y));
-  int len = axis == 0 ? cells.x : axis == 1 ? cells.y : cells.z;
-  int pos = axis == 0 ? c.x : axis == 1 ? c.y : c.z;
-  int stride = axis == 0 ? 1 : axis == 1 ? cells.x : cells.x * cells.y;
-  int m = in[k];
-  if (pos > 0) m = min(m, (int)in[k - stride]);
-  if (pos < len - 1) m = min(m, (int)in[k + stride]);
-  out[offset + k] = (uchar)m;
+  leap[cells + k] = (uchar)L;
 }

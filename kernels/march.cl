@@ -75,21 +75,33 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
 }
 
 #if ADAPTIVE
-// Adaptive dvr (ADAPTIVE): from segment i, the next ADAPTIVE_BATCH segments are each f base
-// steps long, f = 2^L with L the level of segment i's macro cell (classify.cl,
-// adaptive_level: there the table varies within the frame's bound; each level is the least of
-// the cell's 3 x 3 x 3 neighbours). f is capped so that the batch stays within a cell's
-// width (CELL voxels) of segment i's midpoint, inside those neighbours.
-#define ADAPTIVE_BATCH 2
-
-inline int adaptive_steps(__global const uchar* leap, __constant RaycastParams* P, const Ray* r,
-                          int i) {
-  int3 c = cell_of(P, r->o + ray_t(r, i, true) * r->d);
+// Adaptive dvr (ADAPTIVE): segment i grows to f = 4 (or 2) base steps where the level
+// (classify.cl, adaptive_level) of the cell holding the long segment's midpoint allows it
+// and the short midpoints it replaces stay within one voxel of that midpoint.
+inline int level_at(__global const uchar* leap, __constant RaycastParams* P, float3 p) {
+  int3 c = cell_of(P, p);
   int cells = P->cells.x * P->cells.y * P->cells.z;
-  int f = 1 << leap[cells + (c.z * P->cells.y + c.y) * P->cells.x + c.x];
-  float reach = ADAPTIVE_BATCH * r->step * fmax(fabs(r->d.x), fmax(fabs(r->d.y), fabs(r->d.z)));
-  while (f > 1 && f * reach > (float)CELL) f >>= 1;
-  return f;
+  return leap[cells + (c.z * P->cells.y + c.y) * P->cells.x + c.x];
+}
+
+// The long segment from index i: f steps, f the largest of 4, 2 (at most `cap`) allowed.
+inline float2 adaptive_segment(__global const uchar* leap, __constant RaycastParams* P,
+                               const Ray* r, int i, int cap, int* f) {
+  float2 s = ray_segment(r, i);
+  float b4 = ray_segment(r, i + 3).y, b2 = ray_segment(r, i + 1).y;
+  *f = 1;
+  if (cap >= 4 && level_at(leap, P, r->o + 0.5f * (s.x + b4) * r->d) >= 2)
+    *f = 4, s.y = b4;
+  else if (cap >= 2 && level_at(leap, P, r->o + 0.5f * (s.x + b2) * r->d) >= 1)
+    *f = 2, s.y = b2;
+  return s;
+}
+
+// The largest f of 4, 2, 1 whose short midpoints lie within a voxel of the long one's:
+// (f - 1) step / 2 along the ray, at most a voxel along each axis.
+inline int adaptive_cap(float step, float dmax) {
+  float reach = 0.5f * step * dmax;
+  return 3.0f * reach <= 1.0f ? 4 : reach <= 1.0f ? 2 : 1;
 }
 #endif
 
@@ -146,19 +158,15 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #define DVR_HIT_ARG
 #endif
 #if ADAPTIVE
-  for (int i = 0, check = 0; i <= r->n;) {
+  int cap = adaptive_cap(r->step, fmax(fabs(r->d.x), fmax(fabs(r->d.y), fabs(r->d.z))));
+  for (int i = 0, check = 0, f = 1; i <= r->n; i += f) {
     if (i >= check) {
       i = ess_leap(leap, range, P, r, true, i, &check);
       if (i > r->n) break;
     }
-    int f = adaptive_steps(leap, P, r, i);
-    bool done = false;
-    for (int k = 0; k < ADAPTIVE_BATCH && !done && i + k * f <= r->n; ++k) {
-      float2 s = (float2)(ray_segment(r, i + k * f).x, ray_segment(r, i + k * f + f - 1).y);
-      done = dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG);
-    }
-    if (done) break;
-    i += ADAPTIVE_BATCH * f;
+    float2 s = adaptive_segment(leap, P, r, i, cap, &f);
+    if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG))
+      break;
   }
 #else
   for (int i = 0, check = 0; i <= r->n; ++i) {

@@ -161,25 +161,37 @@ inline void dvr_compositeN(__global const short* restrict vol, __constant Raycas
 }
 
 #if ADAPTIVE
-// adaptive_steps (march.cl)'s cap for each lane: the largest f of 1, 2, 4 whose batch stays
-// within a cell's width of its first midpoint.
-inline intN adaptive_capN(const RayPacket* r, float step) {
-  floatN reach =
-      ADAPTIVE_BATCH * step * fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
-  return select(select((intN)(1), (intN)(2), 2.0f * reach <= (float)CELL), (intN)(4),
-                4.0f * reach <= (float)CELL);
-}
-
-// adaptive_steps (march.cl) for the lanes in `active` (1 for the others).
-inline intN adaptive_stepsN(__global const uchar* leap, __constant RaycastParams* P,
-                            const RayPacket* r, intN i, float step, intN active, intN cap) {
+// level_at (march.cl) for each lane's point at t (lanes outside `pending` read cell 0).
+inline intN level_atN(__global const uchar* leap, __constant RaycastParams* P, const RayPacket* r,
+                      floatN t, intN pending) {
   intN cx, cy, cz;
-  intN k = cellN(P, r, ray_tN(r, i, step, true), active, &cx, &cy, &cz);
+  intN k = cellN(P, r, t, pending, &cx, &cy, &cz);
   __global const uchar* level = leap + P->cells.x * P->cells.y * P->cells.z;
 #define LEVEL_LANE(l, n) level[k.s##l]
-  intN L = convert_intN((ucharN)(LANE_LIST(LEVEL_LANE)));
+  return convert_intN((ucharN)(LANE_LIST(LEVEL_LANE)));
 #undef LEVEL_LANE
-  return select((intN)(1), min((intN)(1) << L, cap), active);
+}
+
+// adaptive_segment (march.cl) for the lanes in `live` (f 1 for the others).
+inline void adaptive_segmentN(__global const uchar* leap, __constant RaycastParams* P,
+                              const RayPacket* r, intN i, float step, intN live, intN cap,
+                              floatN* a, floatN* b, intN* f) {
+  floatN b4, b2, unused;
+  segmentN(r, i, step, a, b);
+  segmentN(r, i + 3, step, &unused, &b4);
+  segmentN(r, i + 1, step, &unused, &b2);
+  intN four = live & (cap >= 4);
+  four &= level_atN(leap, P, r, 0.5f * (*a + b4), four) >= 2;
+  intN two = live & ~four & (cap >= 2);
+  if (any(two)) two &= level_atN(leap, P, r, 0.5f * (*a + b2), two) >= 1;
+  *f = select(select((intN)(1), (intN)(2), two), (intN)(4), four);
+  *b = select(select(*b, b2, two), b4, four);
+}
+
+// adaptive_cap (march.cl) for each lane.
+inline intN adaptive_capN(const RayPacket* r, float step) {
+  floatN reach = 0.5f * step * fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
+  return select(select((intN)(1), (intN)(2), reach <= 1.0f), (intN)(4), 3.0f * reach <= 1.0f);
 }
 #endif
 
@@ -189,9 +201,6 @@ inline intN adaptive_stepsN(__global const uchar* leap, __constant RaycastParams
 // compositing (a lane that ends early drops the rest). 2 ran about 5 % faster than 1;
 // 3 and 4 no faster than 2 (CThead, VTK's orbit).
 #define DVR_BATCH 2
-#if ADAPTIVE && DVR_BATCH != ADAPTIVE_BATCH
-#error "adaptive_steps' cap assumes batches of ADAPTIVE_BATCH segments"
-#endif
 inline void dvr_packet(PACKET_ARGS) {
   float step = P->view.z;
   RayPacket r;
@@ -203,7 +212,7 @@ inline void dvr_packet(PACKET_ARGS) {
   ShadeQueue queue;
   if (SHADING) shade_queue_init(&queue, &r, world);
 #if ADAPTIVE
-  intN f_cap = adaptive_capN(&r, step);
+  intN f_cap = adaptive_capN(&r, step);  // long segments (ADAPTIVE): adaptive_segment
 #endif
 #if HIT_OUTPUT
   floatN t_hit = 0.0f;
@@ -218,19 +227,17 @@ inline void dvr_packet(PACKET_ARGS) {
     }
     floatN sa[DVR_BATCH], sb[DVR_BATCH], t[DVR_BATCH], value[DVR_BATCH], c[DVR_BATCH][4];
     intN live[DVR_BATCH];
-#if ADAPTIVE
-    intN f = adaptive_stepsN(leap, P, &r, i, step, active, f_cap);
-#else
-    const int f = 1;
-#endif
+    intN at = i;
     for (int k = 0; k < DVR_BATCH; ++k) {
-      intN at = i + k * f;
-      segmentN(&r, at, step, &sa[k], &sb[k]);
 #if ADAPTIVE
-      floatN unused;
-      segmentN(&r, at + f - 1, step, &unused, &sb[k]);
+      intN f;
+      adaptive_segmentN(leap, P, &r, at, step, active & (at <= r.n), f_cap, &sa[k], &sb[k], &f);
+#else
+      const int f = 1;
+      segmentN(&r, at, step, &sa[k], &sb[k]);
 #endif
       live[k] = active & (at <= r.n) & (sb[k] - sa[k] > 0.0f);  // segment 0 without jitter is empty
+      at += f;
       t[k] = 0.5f * (sa[k] + sb[k]);
       value[k] = sampleN(vol, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
       if (SHADING)
@@ -248,7 +255,7 @@ inline void dvr_packet(PACKET_ARGS) {
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
     }
-    i += DVR_BATCH * f;
+    i = at;
     active &= i <= r.n;
   }
   if (SHADING) {

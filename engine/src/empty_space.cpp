@@ -77,26 +77,13 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
       q.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange(global), cl::NullRange);
     }
     if (adaptive) {
-      // Levels -> occ, then the minimum over neighbours: occ -> scratch (x), scratch -> occ
-      // (y), occ -> leap's second half (z).
       cl::Kernel level = cl.kernel("classify.cl", "adaptive_level", "");
       level.setArg(0, range_);
       level.setArg(1, params);
       level.setArg(2, lutBuffer);
       level.setArg(3, cl_int(cells));
-      level.setArg(4, occ_);
+      level.setArg(4, leap_);
       q.enqueueNDRangeKernel(level, cl::NullRange, cl::NDRange(global), cl::NullRange);
-      cl::Kernel least = cl.kernel("classify.cl", "level_min", "");
-      const cl::Buffer* in[3] = {&occ_, &scratch_, &occ_};
-      const cl::Buffer* out[3] = {&scratch_, &occ_, &leap_};
-      for (int axis = 0; axis < 3; ++axis) {
-        least.setArg(0, *in[axis]);
-        least.setArg(1, *out[axis]);
-        least.setArg(2, cl_int(axis == 2 ? cells : 0));
-        least.setArg(3, dims);
-        least.setArg(4, cl_int(axis));
-        q.enqueueNDRangeKernel(least, cl::NullRange, cl::NDRange(global), cl::NullRange);
-      }
     }
     return 0;
   });
