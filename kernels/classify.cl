@@ -56,20 +56,19 @@ __kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 
   out[k] = (uchar)best;
 }
 
-// Adaptive dvr steps (ADAPTIVE, march.cl): each cell's level L, where a segment f = 2^L base
-// steps long (L <= 2) whose midpoint lies in the cell may replace the f segments of length h
-// it covers. Their midpoints lie within (f - 1) h / 2 of its own, at most one voxel
-// (march.cl caps f), so every sample they take reads voxels of cells c ... c + 1 along each
-// axis (with the lower apron of cell c, skip.cl): the level is taken from the values of
-// those 8 cells. The table entries those values can interpolate from (classify's margin)
-// have opacities in [amin, amax] and colours within dc of each other; the long segment's
-// transmittance then differs from the short ones' product by at most (f h / h_ref)
-// (amax - amin) (the derivative of (1 - a)^m in a is at most m) and its emitted colour by at
-// most (f h / h_ref) amax dc. A cell gets the largest L with (f h / h_ref) (amax - amin +
-// amax dc) <= P->dvr.w, the error bound: per long segment, at most dvr.w times the
-// transmittance in front of it, in opacity and in each colour channel (before shading, whose
-// normals the table does not bound). Where no such entry is opaque, L 2 is exact.
-// Writes leap[cells + k] (the levels ride behind the leap distances).
+// Adaptive dvr steps (ADAPTIVE, march.cl): whether a segment of f = 4 base steps (h each)
+// whose midpoint lies in the cell may replace the 4 segments it covers (level 1) or not (0).
+// Their midpoints lie within 3 h / 2 of its own, at most one voxel (march.cl caps f), so every
+// sample they take reads voxels of cells c ... c + 1 along each axis (with the lower apron of
+// cell c, skip.cl): the level is taken from the values of those 8 cells. The table entries
+// those values can interpolate from (classify's margin) have opacities in [amin, amax] and
+// colours within dc of each other; the long segment's transmittance then differs from the
+// short ones' product by at most (f h / h_ref) (amax - amin) (the derivative of (1 - a)^m in
+// a is at most m) and its emitted colour by at most (f h / h_ref) amax dc. Level 1 where
+// (f h / h_ref) (amax - amin + amax dc) <= P->dvr.w, the error bound: per long segment, at
+// most dvr.w times the transmittance in front of it, in opacity and in each colour channel
+// (before shading, whose normals the table does not bound). Where no such entry is opaque,
+// level 1 is exact. Writes leap[cells + k] (the levels ride behind the leap distances).
 __kernel void adaptive_level(__global const short2* range, __constant RaycastParams* P,
                              __global const float4* lut, int cells, __global uchar* leap) {
   int k = get_global_id(0);
@@ -90,19 +89,16 @@ __kernel void adaptive_level(__global const short2* range, __constant RaycastPar
   float x1 = clamp((hi - P->values.z) * P->values.w, 0.0f, (float)last);
   int a = max((int)floor(x0) - 1, 0), b = min((int)floor(x1) + 2, last);
   float4 cmin = lut[a], cmax = lut[a];
-  float per_step = P->view.z / P->view.w, bound = P->dvr.w;
-  float worst = 0.0f;
+  float reach = 4.0f * P->view.z / P->view.w, bound = P->dvr.w;
   for (int e = a + 1; e <= b; ++e) {
     cmin = fmin(cmin, lut[e]);
     cmax = fmax(cmax, lut[e]);
     float3 dc = cmax.xyz - cmin.xyz;
-    worst = (cmax.w - cmin.w) + cmax.w * fmax(dc.x, fmax(dc.y, dc.z));
-    if (2.0f * per_step * worst > bound) break;  // not even L 1: done
+    float worst = (cmax.w - cmin.w) + cmax.w * fmax(dc.x, fmax(dc.y, dc.z));
+    if (reach * worst > bound && cmax.w > 0.0f) {
+      leap[cells + k] = 0;
+      return;
+    }
   }
-  int L = 0;
-  if (cmax.w <= 0.0f || 4.0f * per_step * worst <= bound)
-    L = 2;
-  else if (2.0f * per_step * worst <= bound)
-    L = 1;
-  leap[cells + k] = (uchar)L;
+  leap[cells + k] = 1;
 }

@@ -75,33 +75,34 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
 }
 
 #if ADAPTIVE
-// Adaptive dvr (ADAPTIVE): segment i grows to f = 4 (or 2) base steps where the level
+// Adaptive dvr (ADAPTIVE): segment i grows to ADAPTIVE_STEPS base steps where the level
 // (classify.cl, adaptive_level) of the cell holding the long segment's midpoint allows it
-// and the short midpoints it replaces stay within one voxel of that midpoint.
-inline int level_at(__global const uchar* leap, __constant RaycastParams* P, float3 p) {
+// and the short midpoints it replaces stay within one voxel of that midpoint. Only 4: with
+// 2 as well (a second lookup per sample) the lookups cost more than the samples saved
+// (CT400, VTK's table).
+#define ADAPTIVE_STEPS 4
+
+inline bool long_at(__global const uchar* leap, __constant RaycastParams* P, float3 p) {
   int3 c = cell_of(P, p);
   int cells = P->cells.x * P->cells.y * P->cells.z;
-  return leap[cells + (c.z * P->cells.y + c.y) * P->cells.x + c.x];
+  return leap[cells + (c.z * P->cells.y + c.y) * P->cells.x + c.x] != 0;
 }
 
-// The long segment from index i: f steps, f the largest of 4, 2 (at most `cap`) allowed.
+// Whether the rays may take long segments at all: the short midpoints a long segment
+// replaces lie within (ADAPTIVE_STEPS - 1) step / 2 of its own, at most a voxel along each
+// axis (dmax: voxels per mm along the ray's largest axis).
+inline bool adaptive_reach(float step, float dmax) {
+  return (ADAPTIVE_STEPS - 1) * 0.5f * step * dmax <= 1.0f;
+}
+
+// Segment i, or ADAPTIVE_STEPS of them as one where allowed; *f the steps it spans.
 inline float2 adaptive_segment(__global const uchar* leap, __constant RaycastParams* P,
-                               const Ray* r, int i, int cap, int* f) {
+                               const Ray* r, int i, bool reach, int* f) {
   float2 s = ray_segment(r, i);
-  float b4 = ray_segment(r, i + 3).y, b2 = ray_segment(r, i + 1).y;
+  float b = ray_segment(r, i + ADAPTIVE_STEPS - 1).y;
   *f = 1;
-  if (cap >= 4 && level_at(leap, P, r->o + 0.5f * (s.x + b4) * r->d) >= 2)
-    *f = 4, s.y = b4;
-  else if (cap >= 2 && level_at(leap, P, r->o + 0.5f * (s.x + b2) * r->d) >= 1)
-    *f = 2, s.y = b2;
+  if (reach && long_at(leap, P, r->o + 0.5f * (s.x + b) * r->d)) *f = ADAPTIVE_STEPS, s.y = b;
   return s;
-}
-
-// The largest f of 4, 2, 1 whose short midpoints lie within a voxel of the long one's:
-// (f - 1) step / 2 along the ray, at most a voxel along each axis.
-inline int adaptive_cap(float step, float dmax) {
-  float reach = 0.5f * step * dmax;
-  return 3.0f * reach <= 1.0f ? 4 : reach <= 1.0f ? 2 : 1;
 }
 #endif
 
@@ -140,7 +141,7 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
 }
 
 // Front-to-back emission-absorption over segments, each sampled at its midpoint (ADAPTIVE:
-// some segments f base steps long, adaptive_steps).
+// some segments ADAPTIVE_STEPS base steps long, adaptive_segment).
 // *hit_out (HIT_OUTPUT variants): where the accumulated opacity reaches DVR_HIT_ALPHA
 // (hit_output.cl); untouched where it does not.
 inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
@@ -158,13 +159,13 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #define DVR_HIT_ARG
 #endif
 #if ADAPTIVE
-  int cap = adaptive_cap(r->step, fmax(fabs(r->d.x), fmax(fabs(r->d.y), fabs(r->d.z))));
+  bool reach = adaptive_reach(r->step, fmax(fabs(r->d.x), fmax(fabs(r->d.y), fabs(r->d.z))));
   for (int i = 0, check = 0, f = 1; i <= r->n; i += f) {
     if (i >= check) {
       i = ess_leap(leap, range, P, r, true, i, &check);
       if (i > r->n) break;
     }
-    float2 s = adaptive_segment(leap, P, r, i, cap, &f);
+    float2 s = adaptive_segment(leap, P, r, i, reach, &f);
     if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG))
       break;
   }

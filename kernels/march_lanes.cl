@@ -161,37 +161,28 @@ inline void dvr_compositeN(__global const short* restrict vol, __constant Raycas
 }
 
 #if ADAPTIVE
-// level_at (march.cl) for each lane's point at t (lanes outside `pending` read cell 0).
-inline intN level_atN(__global const uchar* leap, __constant RaycastParams* P, const RayPacket* r,
-                      floatN t, intN pending) {
+// adaptive_segment (march.cl) for the lanes in `live` (f 1 for the others), `reach` as
+// adaptive_reach's for each lane.
+inline void adaptive_segmentN(__global const uchar* leap, __constant RaycastParams* P,
+                              const RayPacket* r, intN i, float step, intN live, intN reach,
+                              floatN* a, floatN* b, intN* f) {
+  floatN b4, unused;
+  segmentN(r, i, step, a, b);
+  segmentN(r, i + ADAPTIVE_STEPS - 1, step, &unused, &b4);
   intN cx, cy, cz;
-  intN k = cellN(P, r, t, pending, &cx, &cy, &cz);
+  intN k = cellN(P, r, 0.5f * (*a + b4), live & reach, &cx, &cy, &cz);
   __global const uchar* level = leap + P->cells.x * P->cells.y * P->cells.z;
 #define LEVEL_LANE(l, n) level[k.s##l]
-  return convert_intN((ucharN)(LANE_LIST(LEVEL_LANE)));
+  intN longer = live & reach & (convert_intN((ucharN)(LANE_LIST(LEVEL_LANE))) != 0);
 #undef LEVEL_LANE
+  *f = select((intN)(1), (intN)(ADAPTIVE_STEPS), longer);
+  *b = select(*b, b4, longer);
 }
 
-// adaptive_segment (march.cl) for the lanes in `live` (f 1 for the others).
-inline void adaptive_segmentN(__global const uchar* leap, __constant RaycastParams* P,
-                              const RayPacket* r, intN i, float step, intN live, intN cap,
-                              floatN* a, floatN* b, intN* f) {
-  floatN b4, b2, unused;
-  segmentN(r, i, step, a, b);
-  segmentN(r, i + 3, step, &unused, &b4);
-  segmentN(r, i + 1, step, &unused, &b2);
-  intN four = live & (cap >= 4);
-  four &= level_atN(leap, P, r, 0.5f * (*a + b4), four) >= 2;
-  intN two = live & ~four & (cap >= 2);
-  if (any(two)) two &= level_atN(leap, P, r, 0.5f * (*a + b2), two) >= 1;
-  *f = select(select((intN)(1), (intN)(2), two), (intN)(4), four);
-  *b = select(select(*b, b2, two), b4, four);
-}
-
-// adaptive_cap (march.cl) for each lane.
-inline intN adaptive_capN(const RayPacket* r, float step) {
-  floatN reach = 0.5f * step * fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
-  return select(select((intN)(1), (intN)(2), reach <= 1.0f), (intN)(4), 3.0f * reach <= 1.0f);
+// adaptive_reach (march.cl) for each lane.
+inline intN adaptive_reachN(const RayPacket* r, float step) {
+  floatN dmax = fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
+  return (ADAPTIVE_STEPS - 1) * 0.5f * step * dmax <= 1.0f;
 }
 #endif
 
@@ -212,7 +203,7 @@ inline void dvr_packet(PACKET_ARGS) {
   ShadeQueue queue;
   if (SHADING) shade_queue_init(&queue, &r, world);
 #if ADAPTIVE
-  intN f_cap = adaptive_capN(&r, step);  // long segments (ADAPTIVE): adaptive_segment
+  intN reach = adaptive_reachN(&r, step);  // long segments allowed (ADAPTIVE)
 #endif
 #if HIT_OUTPUT
   floatN t_hit = 0.0f;
@@ -231,7 +222,7 @@ inline void dvr_packet(PACKET_ARGS) {
     for (int k = 0; k < DVR_BATCH; ++k) {
 #if ADAPTIVE
       intN f;
-      adaptive_segmentN(leap, P, &r, at, step, active & (at <= r.n), f_cap, &sa[k], &sb[k], &f);
+      adaptive_segmentN(leap, P, &r, at, step, active & (at <= r.n), reach, &sa[k], &sb[k], &f);
 #else
       const int f = 1;
       segmentN(&r, at, step, &sa[k], &sb[k]);

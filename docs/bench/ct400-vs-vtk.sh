@@ -14,7 +14,8 @@
 # usage: docs/bench/ct400-vs-vtk.sh wall|cpu ROUNDS SIZES MODES LANES...
 #   e.g. docs/bench/ct400-vs-vtk.sh cpu 1 512x384 dvr,mip 16 8
 # env: RAW (the ct400-raw.py file), CLI (voxray-cli), VTK_PY (the venv's python),
-#      PEERS (../shared/peers), POCL_CACHE_DIR
+#      PEERS (../shared/peers), POCL_CACHE_DIR, VOXRAY_ARGS (more bench flags for Voxray, e.g.
+#      "--adaptive 0.1"; split at spaces)
 set -euo pipefail
 how=$1 rounds=$2 sizes=$3 modes=$4
 shift 4
@@ -40,7 +41,7 @@ voxray() {  # LANES MODE SIZE FRAMES (after a perf prefix, if any)
   [ "$mode" = dvr ] && extra=(--tf "$tf")
   [ "$mode" = iso ] && extra=(--iso 400)
   "$@" "$cli" bench "$raw" --raw-dims 512,512 --raw-type i16 --raw-spacing 1,1,1 --mode "$mode" \
-    "${extra[@]}" --orbit elevation --zoom 1.37 --sizes "$size" --frames "$f" --no-count --lanes "$l" |
+    "${extra[@]}" ${VOXRAY_ARGS:-} --orbit elevation --zoom 1.37 --sizes "$size" --frames "$f" --no-count --lanes "$l" |
     grep ' pack '
 }
 cpu_ms() {  # PATTERN: ms of user CPU in the matching objects
