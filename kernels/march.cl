@@ -166,8 +166,7 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
       if (i > r->n) break;
     }
     float2 s = adaptive_segment(leap, P, r, i, reach, &f);
-    if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG))
-      break;
+    if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG)) break;
   }
 #else
   for (int i = 0, check = 0; i <= r->n; ++i) {

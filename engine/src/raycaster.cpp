@@ -110,7 +110,8 @@ RaycastParams Raycaster::Impl::frameParams(const RenderParams& p, const KernelSw
   k.background = f4(p.background);
   k.view = f4(g.halfHeight, g.aspect, s.stepMm, s.referenceStepMm);
   k.values = f4(s.isoLoStored, s.isoHiStored, s.lut.storedMin, s.lut.scale);
-  k.dvr = f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, sw.ADAPTIVE ? p.adaptiveError : 0);
+  k.dvr =
+      f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, sw.ADAPTIVE ? p.adaptiveError : 0);
   k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
   k.image = {{p.width, p.height, 0, 0}};
   glm::ivec3 cells = space.dims();

@@ -73,7 +73,7 @@ struct RenderParams {
   // each long step changes the composite by at most this (kernels/classify.cl,
   // adaptive_level); 0 = every step the base step. Needs opacity correction.
   double adaptiveError = 0.0;
-  double windowWidth = 0.0;        // mip grey mapping in HU; width 0 = the volume's range
+  double windowWidth = 0.0;  // mip grey mapping in HU; width 0 = the volume's range
   double windowLevel = 0.0;
   glm::dvec3 surfaceColor{0.93, 0.89, 0.80};  // iso colour (bone) when no preset colours it
   glm::dvec3 background{0.0};
