@@ -141,7 +141,8 @@ TEST(AdaptiveStep, PacketsAndOneRayPerWorkItemAgree) {
 // A bound of 0 turns it off, and so does dvr without opacity correction (long segments
 // need it): the variant has no adaptive code.
 TEST(AdaptiveStep, OnlyWithABoundAndOpacityCorrection) {
-  Raycaster rc(test::pocl(), slab(50), VolumeStorage::Buffer);
+  Volume v = slab(50);  // the raycaster keeps a reference
+  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   FrameStats stats;
   RenderParams p = params(kBound);
   rc.render(p, &stats);
