@@ -55,3 +55,50 @@ __kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 
   }
   out[k] = (uchar)best;
 }
+
+// Adaptive dvr steps (ADAPTIVE, march.cl): whether a segment of f = 4 base steps (h each)
+// whose midpoint lies in the cell may replace the 4 segments it covers (level 1) or not (0).
+// Their midpoints lie within 3 h / 2 of its own, at most one voxel (march.cl caps f), so every
+// sample they take reads voxels of cells c ... c + 1 along each axis (with the lower apron of
+// cell c, skip.cl): the level is taken from the values of those 8 cells. The table entries
+// those values can interpolate from (classify's margin) have opacities in [amin, amax] and
+// colours within dc of each other; the long segment's transmittance then differs from the
+// short ones' product by at most (f h / h_ref) (amax - amin) (the derivative of (1 - a)^m in
+// a is at most m) and its emitted colour by at most (f h / h_ref) amax dc. Level 1 where
+// (f h / h_ref) (amax - amin + amax dc) <= P->dvr.w, the error bound: per long segment, at
+// most dvr.w times the transmittance in front of it, in opacity and in each colour channel
+// (before shading, whose normals the table does not bound). Where no such entry is opaque,
+// level 1 is exact. Writes leap[cells + k] (the levels ride behind the leap distances).
+__kernel void adaptive_level(__global const short2* range, __constant RaycastParams* P,
+                             __global const float4* lut, int cells, __global uchar* leap) {
+  int k = get_global_id(0);
+  if (k >= cells) return;
+  int4 n = P->cells;
+  int3 c = (int3)(k % n.x, (k / n.x) % n.y, k / (n.x * n.y));
+  float lo = FLT_MAX, hi = -FLT_MAX;
+  for (int dz = 0; dz <= min(1, n.z - 1 - c.z); ++dz)
+    for (int dy = 0; dy <= min(1, n.y - 1 - c.y); ++dy)
+      for (int dx = 0; dx <= min(1, n.x - 1 - c.x); ++dx) {
+        short2 m = range[k + (dz * n.y + dy) * n.x + dx];
+        lo = fmin(lo, (float)m.x);
+        hi = fmax(hi, (float)m.y);
+      }
+  lo -= 0.5f, hi += 0.5f;
+  int last = P->dims.w - 1;
+  float x0 = clamp((lo - P->values.z) * P->values.w, 0.0f, (float)last);
+  float x1 = clamp((hi - P->values.z) * P->values.w, 0.0f, (float)last);
+  int a = max((int)floor(x0) - 1, 0), b = min((int)floor(x1) + 2, last);
+  float4 cmin = lut[a], cmax = lut[a];
+  float reach = 4.0f * P->view.z / P->view.w, bound = P->dvr.w;
+  for (int e = a + 1; e <= b; ++e) {
+    cmin = fmin(cmin, lut[e]);
+    cmax = fmax(cmax, lut[e]);
+    float3 dc = cmax.xyz - cmin.xyz;
+    float worst = (cmax.w - cmin.w) + cmax.w * fmax(dc.x, fmax(dc.y, dc.z));
+    if (reach * worst > bound && cmax.w > 0.0f) {
+      leap[cells + k] = 0;
+      return;
+    }
+  }
+  leap[cells + k] = 1;
+}

@@ -74,7 +74,74 @@ inline float3 march_iso(VOLUME_ARG, __constant RaycastParams* P, __global const 
   return shade(c.xyz, n_w, origin_w + t_hit * dir_w, -dir_w, P->light_w, frame_light(lut, P, p_v));
 }
 
-// Front-to-back emission-absorption over segments, each sampled at its midpoint.
+#if ADAPTIVE
+// Adaptive dvr (ADAPTIVE): segment i grows to ADAPTIVE_STEPS base steps where the level
+// (classify.cl, adaptive_level) of the cell holding the long segment's midpoint allows it
+// and the short midpoints it replaces stay within one voxel of that midpoint. Only 4: with
+// 2 as well (a second lookup per sample) the lookups cost more than the samples saved
+// (CT400, VTK's table).
+#define ADAPTIVE_STEPS 4
+
+inline bool long_at(__global const uchar* leap, __constant RaycastParams* P, float3 p) {
+  int3 c = cell_of(P, p);
+  int cells = P->cells.x * P->cells.y * P->cells.z;
+  return leap[cells + (c.z * P->cells.y + c.y) * P->cells.x + c.x] != 0;
+}
+
+// Whether the rays may take long segments at all: the short midpoints a long segment
+// replaces lie within (ADAPTIVE_STEPS - 1) step / 2 of its own, at most a voxel along each
+// axis (dmax: voxels per mm along the ray's largest axis).
+inline bool adaptive_reach(float step, float dmax) {
+  return (ADAPTIVE_STEPS - 1) * 0.5f * step * dmax <= 1.0f;
+}
+
+// Segment i, or ADAPTIVE_STEPS of them as one where allowed; *f the steps it spans.
+inline float2 adaptive_segment(__global const uchar* leap, __constant RaycastParams* P,
+                               const Ray* r, int i, bool reach, int* f) {
+  float2 s = ray_segment(r, i);
+  float b = ray_segment(r, i + ADAPTIVE_STEPS - 1).y;
+  *f = 1;
+  if (reach && long_at(leap, P, r->o + 0.5f * (s.x + b) * r->d)) *f = ADAPTIVE_STEPS, s.y = b;
+  return s;
+}
+#endif
+
+// One dvr segment s into the composite; returns true once the ray terminates.
+inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
+                        const Ray* r, float2 s, float3 origin_w, float3 dir_w, uint* count,
+                        float3* acc, float* alpha
+#if HIT_OUTPUT
+                        ,
+                        float4* hit_out
+#endif
+) {
+  float seg = s.y - s.x;
+  if (seg <= 0.0f) return false;  // segment 0 without jitter
+  float t = 0.5f * (s.x + s.y);
+  float3 p_v = r->o + t * r->d;
+  ++*count;
+  float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
+  if (c.w <= 0.0f) return false;
+  float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
+  float3 rgb = c.xyz;
+  if (SHADING) {
+    rgb = shade(rgb, world_gradient(VOLUME, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
+                frame_light(lut, P, p_v));
+    *count += GRADIENT_TAPS;
+  }
+  *acc += (1.0f - *alpha) * a * rgb;
+#if HIT_OUTPUT
+  float before = *alpha;
+#endif
+  *alpha += (1.0f - *alpha) * a;
+#if HIT_OUTPUT
+  dvr_hit_crossing(before, *alpha, s, r, hit_out);
+#endif
+  return *alpha >= P->dvr.z;
+}
+
+// Front-to-back emission-absorption over segments, each sampled at its midpoint (ADAPTIVE:
+// some segments ADAPTIVE_STEPS base steps long, adaptive_segment).
 // *hit_out (HIT_OUTPUT variants): where the accumulated opacity reaches DVR_HIT_ALPHA
 // (hit_output.cl); untouched where it does not.
 inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
@@ -86,36 +153,33 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
 ) {
   float3 acc = (float3)(0.0f);
   float alpha = 0.0f;
+#if HIT_OUTPUT
+#define DVR_HIT_ARG , hit_out
+#else
+#define DVR_HIT_ARG
+#endif
+#if ADAPTIVE
+  bool reach = adaptive_reach(r->step, fmax(fabs(r->d.x), fmax(fabs(r->d.y), fabs(r->d.z))));
+  for (int i = 0, check = 0, f = 1; i <= r->n; i += f) {
+    if (i >= check) {
+      i = ess_leap(leap, range, P, r, true, i, &check);
+      if (i > r->n) break;
+    }
+    float2 s = adaptive_segment(leap, P, r, i, reach, &f);
+    if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG)) break;
+  }
+#else
   for (int i = 0, check = 0; i <= r->n; ++i) {
     if (ESS && i >= check) {
       i = ess_leap(leap, range, P, r, true, i, &check);
       if (i > r->n) break;
     }
-    float2 s = ray_segment(r, i);
-    float seg = s.y - s.x;
-    if (seg <= 0.0f) continue;  // segment 0 without jitter
-    float t = 0.5f * (s.x + s.y);
-    float3 p_v = r->o + t * r->d;
-    ++*count;
-    float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
-    if (c.w <= 0.0f) continue;
-    float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
-    float3 rgb = c.xyz;
-    if (SHADING) {
-      rgb = shade(rgb, world_gradient(VOLUME, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
-                  frame_light(lut, P, p_v));
-      *count += GRADIENT_TAPS;
-    }
-    acc += (1.0f - alpha) * a * rgb;
-#if HIT_OUTPUT
-    float before = alpha;
-#endif
-    alpha += (1.0f - alpha) * a;
-#if HIT_OUTPUT
-    dvr_hit_crossing(before, alpha, s, r, hit_out);
-#endif
-    if (alpha >= P->dvr.z) break;
+    if (dvr_segment(VOLUME, P, lut, r, ray_segment(r, i), origin_w, dir_w, count, &acc,
+                    &alpha DVR_HIT_ARG))
+      break;
   }
+#endif
+#undef DVR_HIT_ARG
   return acc + (1.0f - alpha) * P->background.xyz;
 }
 

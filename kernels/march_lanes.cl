@@ -160,6 +160,32 @@ inline void dvr_compositeN(__global const short* restrict vol, __constant Raycas
   *active &= ~(seen & (*alpha >= P->dvr.z));
 }
 
+#if ADAPTIVE
+// adaptive_segment (march.cl) for the lanes in `live` (f 1 for the others), `reach` as
+// adaptive_reach's for each lane.
+inline void adaptive_segmentN(__global const uchar* leap, __constant RaycastParams* P,
+                              const RayPacket* r, intN i, float step, intN live, intN reach,
+                              floatN* a, floatN* b, intN* f) {
+  floatN b4, unused;
+  segmentN(r, i, step, a, b);
+  segmentN(r, i + ADAPTIVE_STEPS - 1, step, &unused, &b4);
+  intN cx, cy, cz;
+  intN k = cellN(P, r, 0.5f * (*a + b4), live & reach, &cx, &cy, &cz);
+  __global const uchar* level = leap + P->cells.x * P->cells.y * P->cells.z;
+#define LEVEL_LANE(l, n) level[k.s##l]
+  intN longer = live & reach & (convert_intN((ucharN)(LANE_LIST(LEVEL_LANE))) != 0);
+#undef LEVEL_LANE
+  *f = select((intN)(1), (intN)(ADAPTIVE_STEPS), longer);
+  *b = select(*b, b4, longer);
+}
+
+// adaptive_reach (march.cl) for each lane.
+inline intN adaptive_reachN(const RayPacket* r, float step) {
+  floatN dmax = fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
+  return (ADAPTIVE_STEPS - 1) * 0.5f * step * dmax <= 1.0f;
+}
+#endif
+
 // march_dvr (march.cl) for a packet: the same segments, leaps, opacity and early
 // termination lane by lane. Seen samples are shaded LANES at a time (shade_queue.cl).
 // DVR_BATCH samples per iteration: the later ones' loads need not wait for the first's
@@ -176,6 +202,9 @@ inline void dvr_packet(PACKET_ARGS) {
   intN active = r.n >= 0;
   ShadeQueue queue;
   if (SHADING) shade_queue_init(&queue, &r, world);
+#if ADAPTIVE
+  intN reach = adaptive_reachN(&r, step);  // long segments allowed (ADAPTIVE)
+#endif
 #if HIT_OUTPUT
   floatN t_hit = 0.0f;
   intN found = 0;
@@ -189,10 +218,17 @@ inline void dvr_packet(PACKET_ARGS) {
     }
     floatN sa[DVR_BATCH], sb[DVR_BATCH], t[DVR_BATCH], value[DVR_BATCH], c[DVR_BATCH][4];
     intN live[DVR_BATCH];
+    intN at = i;
     for (int k = 0; k < DVR_BATCH; ++k) {
-      segmentN(&r, i + k, step, &sa[k], &sb[k]);
-      live[k] =
-          active & (i + k <= r.n) & (sb[k] - sa[k] > 0.0f);  // segment 0 without jitter is empty
+#if ADAPTIVE
+      intN f;
+      adaptive_segmentN(leap, P, &r, at, step, active & (at <= r.n), reach, &sa[k], &sb[k], &f);
+#else
+      const int f = 1;
+      segmentN(&r, at, step, &sa[k], &sb[k]);
+#endif
+      live[k] = active & (at <= r.n) & (sb[k] - sa[k] > 0.0f);  // segment 0 without jitter is empty
+      at += f;
       t[k] = 0.5f * (sa[k] + sb[k]);
       value[k] = sampleN(vol, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
       if (SHADING)
@@ -210,7 +246,7 @@ inline void dvr_packet(PACKET_ARGS) {
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
     }
-    i += DVR_BATCH;
+    i = at;
     active &= i <= r.n;
   }
   if (SHADING) {

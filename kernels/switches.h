@@ -49,3 +49,7 @@ VOXRAY_SWITCH(LANES, 8, BUILD, "")
 // transmittance toward the light), 2 ao (ambient times the ambient visibility), both read
 // from the light grid that rides behind the table in its buffer (light_volume.cl).
 VOXRAY_SWITCH(LIGHTING, 0, FRAME, "|shadows|ao")
+// dvr: segments of 2 or 4 steps in macro cells whose table varies within the frame's bound
+// (RenderParams::adaptiveError, classify.cl's adaptive_level); set only with ESS, whose
+// macro cells hold the levels. BUILD: its code is compiled only where it is used (#if).
+VOXRAY_SWITCH(ADAPTIVE, 0, BUILD, "|adaptive")

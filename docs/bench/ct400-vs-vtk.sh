@@ -16,7 +16,8 @@
 # env: RAW (the ct400-raw.py file), CLI (voxray-cli), VTK_PY (the venv's python),
 #      PEERS (../shared/peers), POCL_CACHE_DIR, FRAMES (cpu: the longer run's frames, default 8;
 #      iso's frames are short, about 15-20 samples each at 2 ms: 32 frames hold the count's
-#      noise near 5 %)
+#      noise near 5 %), VOXRAY_ARGS (more bench flags for Voxray, e.g. "--adaptive 0.1"; split
+#      at spaces)
 set -euo pipefail
 how=$1 rounds=$2 sizes=$3 modes=$4
 long=${FRAMES:-8}
@@ -43,7 +44,7 @@ voxray() {  # LANES MODE SIZE FRAMES (after a perf prefix, if any)
   [ "$mode" = dvr ] && extra=(--tf "$tf")
   [ "$mode" = iso ] && extra=(--iso 400)
   "$@" "$cli" bench "$raw" --raw-dims 512,512 --raw-type i16 --raw-spacing 1,1,1 --mode "$mode" \
-    "${extra[@]}" --orbit elevation --zoom 1.37 --sizes "$size" --frames "$f" --no-count --lanes "$l" |
+    "${extra[@]}" ${VOXRAY_ARGS:-} --orbit elevation --zoom 1.37 --sizes "$size" --frames "$f" --no-count --lanes "$l" |
     grep ' pack '
 }
 cpu_ms() {  # PATTERN: ms of user CPU in the matching objects

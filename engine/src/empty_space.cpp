@@ -15,15 +15,16 @@ void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
     range_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(cl_short2),
                         cells_.minMax.data());
     occ_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
-    leap_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
+    // Behind the distances, each cell's adaptive step level (ADAPTIVE dvr frames only).
+    leap_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 2 * n);
     scratch_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
     return 0;
   });
   key_.clear();
 }
 
-void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const RaycastParams& k,
-                          Mode mode, const Lut& lut) {
+void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
+                          const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive) {
   int m = mode == Mode::Iso ? 0 : mode == Mode::Dvr ? 1 : 2;
   // iso depends on the range only; dvr on which table entries are not transparent and on
   // where the table sits in stored units.
@@ -32,6 +33,11 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const Rayca
   std::vector<int> opaque;
   if (m == 1) {
     key = {float(m), k.values.s[2], k.values.s[3]};
+    // The levels depend on the colours too, and on the step and the bound.
+    if (adaptive) {
+      key.insert(key.end(), {k.view.s[2], k.view.s[3], k.dvr.s[3]});
+      for (const auto& e : lut.rgba) key.insert(key.end(), {e.r, e.g, e.b, e.a});
+    }
     opaque.resize(lut.rgba.size() + 1, 0);
     for (size_t i = 0; i < lut.rgba.size(); ++i) opaque[i + 1] = opaque[i] + (lut.rgba[i].a > 0.0f);
   }
@@ -69,6 +75,15 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const Rayca
       pass.setArg(3, cl_int(axis));
       pass.setArg(4, cl_int(axis == 0));
       q.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    }
+    if (adaptive) {
+      cl::Kernel level = cl.kernel("classify.cl", "adaptive_level", "");
+      level.setArg(0, range_);
+      level.setArg(1, params);
+      level.setArg(2, lutBuffer);
+      level.setArg(3, cl_int(cells));
+      level.setArg(4, leap_);
+      q.enqueueNDRangeKernel(level, cl::NullRange, cl::NDRange(global), cl::NullRange);
     }
     return 0;
   });

@@ -20,13 +20,16 @@ class EmptySpace {
   // Computes the macro cells of v on the host and uploads them.
   void upload(ContextImpl& cl, const Volume& v);
   // Brings the occupancy up to date for a frame whose parameters k are already enqueued
-  // in params (the queue is in order). mip needs none: it reads the min/max directly.
-  void classify(ContextImpl& cl, const cl::Buffer& params, const RaycastParams& k, Mode mode,
-                const Lut& lut);
+  // in params and lutBuffer (the queue is in order). mip needs none: it reads the min/max
+  // directly. adaptive (dvr): also each cell's step level (kernels/classify.cl,
+  // adaptive_level) behind the distances in leap().
+  void classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
+                const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive);
   const glm::ivec3& dims() const { return cells_.dims; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
-  // capped at MAX_LEAP (kernels/classify.cl).
+  // capped at MAX_LEAP (kernels/classify.cl); then, after every cell's, each cell's
+  // adaptive step level (valid after an adaptive dvr classification).
   const cl::Buffer& leap() const { return leap_; }
   int classifications() const { return classifications_; }
 

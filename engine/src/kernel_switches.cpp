@@ -50,6 +50,8 @@ KernelSwitches kernelSwitches(const RenderParams& p) {
   s.INTERP = int(p.interp);
   s.ORTHO = p.camera.projection == Projection::Orthographic;
   if (p.mode == Mode::Dvr) s.OPACITY_CORRECTION = p.opacityCorrection;
+  // Long steps rest on opacity correction and on the macro cells' levels (ESS).
+  s.ADAPTIVE = s.OPACITY_CORRECTION && p.adaptiveError > 0.0;
   s.JITTER = p.jitter;
   if (p.mode == Mode::Iso) s.REFINE_STEPS = p.refine;
   // shadows and ao change the shading only; cinematic is the path tracer's (not a switch).

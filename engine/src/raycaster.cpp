@@ -117,7 +117,8 @@ RaycastParams Raycaster::Impl::frameParams(const RenderParams& p, const KernelSw
   k.background = f4(p.background);
   k.view = f4(g.halfHeight, g.aspect, s.stepMm, s.referenceStepMm);
   k.values = f4(s.isoLoStored, s.isoHiStored, s.lut.storedMin, s.lut.scale);
-  k.dvr = f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, 0);
+  k.dvr =
+      f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, sw.ADAPTIVE ? p.adaptiveError : 0);
   k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
   k.image = {{p.width, p.height, 0, 0}};
   glm::ivec3 cells = space.dims();
@@ -162,6 +163,7 @@ void Raycaster::Impl::upload() {
 KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
   KernelSwitches s = kernelSwitches(p);
   s.ESS = opts.emptySpaceSkipping;
+  s.ADAPTIVE = s.ADAPTIVE && s.ESS;  // the levels live with the macro cells
   s.STORAGE_IMAGE = storage == VolumeStorage::Image3d;
   s.SLABS = device.plan().count();
   s.COUNT_SAMPLES = opts.countSamples;
@@ -284,7 +286,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
     bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
-      m.space.classify(m.cl, m.paramsBuffer, k, p.mode, s.lut);
+      m.space.classify(m.cl, m.paramsBuffer, m.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0);
     if (sw.LIGHTING) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
       storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;

@@ -226,6 +226,10 @@ std::vector<ParamSpec> makeSpecs() {
       toggle("opacity-correction", "scale dvr opacity to the step size", FIELD(opacityCorrection)),
       toggle("jitter", "per-pixel offset of the first sample (removes wood-grain banding)",
              FIELD(jitter)),
+      number("adaptive", "E",
+             "dvr: longer steps where the table varies little, each changing the composite by at "
+             "most E (0 = fixed steps)",
+             ParamDomain().atLeast(0).atMost(1).steps(0.005, 3), FIELD(adaptiveError)),
       number("early-termination", "A", "dvr stops a ray at this opacity (1 = never)", unit,
              FIELD(earlyTermination)),
       {"window", "W,L", "mip grey window width and level in HU", ParamDomain().in("HU"),

@@ -116,8 +116,9 @@ TEST(ParamDomain, EverySingleNumberSpecChecksItsDomain) {
                 "--" + spec.key + ": must " + d.rangeText() + ", got '" + above + "'");
     }
   }
-  // step, refine, early-termination, zoom, distance, fov, ambient, diffuse, specular, shininess
-  EXPECT_EQ(checked, 10);
+  // step, refine, adaptive, early-termination, zoom, distance, fov, ambient, diffuse,
+  // specular, shininess
+  EXPECT_EQ(checked, 11);
 }
 
 TEST(ParamDomain, UiEndsLieInsideTheDomain) {

@@ -63,6 +63,7 @@ const std::map<std::string, std::string> kUnusual = {
     {"shading", "off"},
     {"opacity-correction", "off"},
     {"jitter", "on"},
+    {"adaptive", "0.05"},
     {"early-termination", "0.95"},
     {"window", "1500,-600"},
     {"azimuth", "0.3333333333333333"},

@@ -69,7 +69,11 @@ struct RenderParams {
   bool opacityCorrection = true;
   bool jitter = false;  // offset each ray's first sample by a per-pixel fraction of a step
   double earlyTermination = 0.99;  // dvr: stop once this opacity is reached
-  double windowWidth = 0.0;        // mip grey mapping in HU; width 0 = the volume's range
+  // dvr: 2 or 4 times longer steps in macro cells where the table varies little enough that
+  // each long step changes the composite by at most this (kernels/classify.cl,
+  // adaptive_level); 0 = every step the base step. Needs opacity correction.
+  double adaptiveError = 0.0;
+  double windowWidth = 0.0;  // mip grey mapping in HU; width 0 = the volume's range
   double windowLevel = 0.0;
   glm::dvec3 surfaceColor{0.93, 0.89, 0.80};  // iso colour (bone) when no preset colours it
   glm::dvec3 background{0.0};
