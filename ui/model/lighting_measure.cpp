@@ -93,7 +93,7 @@ LightingMeasurement measureGridModel(Raycaster& rc, const Volume& v, const Rende
     m.referenceStdError = r.meanStdError();
     char b[160];
     std::snprintf(b, sizeof b,
-                  "the Monte Carlo reference, %d samples (mean standard error %.4f), %s", r.samples,
+                  "the Monte Carlo reference, %d samples (mean standard error %.2g), %s", r.samples,
                   m.referenceStdError, stepText(o.referenceStepVoxels).c_str());
     m.reference = b;
   }

@@ -3,8 +3,9 @@
 // screen, at a small size, in a background task. Error: the kernel's frame against the
 // Monte Carlo reference of the same view (monte_carlo_reference.h: phong's is the exact
 // reference renderer, shadows' and ao's a stated number of realisations with their standard
-// error), the recipe of `voxray-cli accuracy --lighting` with a coarser reference step so
-// that it takes seconds, not minutes; cinematic against its own image at many more samples
+// error), the recipe of `voxray-cli accuracy --lighting` (its 1/16-voxel reference step: a
+// coarser one still carries step error, 3 dB of ao's on the sphere-on-plane scene at 1/4
+// voxel) with twice its realisations; cinematic against its own image at many more samples
 // (another seed), as `accuracy --lighting cinematic` does. PSNR and SSIM (lab/accuracy.h).
 #include <atomic>
 #include <functional>
@@ -25,12 +26,12 @@ namespace voxray::ui {
 
 struct LightingMeasureOptions {
   int width = 256, height = 192;
-  // The reference's ray step (voxels of the smallest spacing): the CLI's sweep uses 1/16;
-  // 1/4 gives the same PSNR within 0.5 dB on the sphere-on-plane scene (lighting_measure
-  // test) in a sixteenth of the time.
-  double referenceStepVoxels = 0.25;
-  double rayStepVoxels = 0.5;       // the reference's shadow and occlusion rays (as the CLI)
-  int referenceSamples = 8;         // Monte Carlo realisations of shadows' and ao's reference
+  // The reference's ray step (voxels of the smallest spacing), as the CLI's sweep.
+  double referenceStepVoxels = 1.0 / 16;
+  double rayStepVoxels = 0.5;  // the reference's shadow and occlusion rays (as the CLI)
+  // Monte Carlo realisations of shadows' and ao's reference: the CLI takes 4, whose noise
+  // alone lowers ao's PSNR by ~0.9 dB on the sphere-on-plane scene (lighting_figures_test).
+  int referenceSamples = 8;
   int frames = 3;                   // timed kernel frames per model (median)
   int cinematicSpp = 16;            // the path tracer's image measured ...
   int cinematicReferenceSpp = 256;  // ... against its own image at this many samples
