@@ -3,8 +3,9 @@
 // beside its Model combo (issue 15; the quality presets show theirs the same way). Cost:
 // the still frames this scene actually rendered with each model (FrameStats), else the
 // last "Measure on this view" (lighting_measure.h). Error: that measurement. Until
-// measured, the figures measured on the sample CT (resources/lighting/sample-ct.json), said
-// to be so. A new volume clears what was seen and measured.
+// measured, the figures measured on the sample CT (resources/lighting/sample-ct.json, remade
+// by the LightingMeasure.DISABLED_PrintSampleCtFigures test), said to be so. A new volume
+// clears what was seen and measured.
 #include <deque>
 #include <map>
 #include <string>
