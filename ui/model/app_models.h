@@ -2,6 +2,7 @@
 // All UI state of one workstation window, owned outside the widgets so that it outlives
 // them (widgets disconnect from the models when they are destroyed).
 #include "crosshair_model.h"
+#include "lighting_figures.h"
 #include "measurement_model.h"
 #include "no_qt.h"
 #include "render_state_model.h"
@@ -17,6 +18,7 @@ struct AppModels {
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
   MeasurementModel measurements;  // a session keeps them (session_state.cpp)
+  LightingFigures lighting;       // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;
 

@@ -82,6 +82,10 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   progressLabel->setObjectName("progressLabel");
   statusBar()->addPermanentWidget(progressLabel);
   connect(scheduler_, &RenderScheduler::progressChanged, progressLabel, &QLabel::setText);
+  // Each lighting model's cost on this scene is that of the frames it really rendered.
+  connect(scheduler_, &RenderScheduler::frameReady, this, [this](std::shared_ptr<const Frame> f) {
+    models_.lighting.recordFrame(f->params, f->stats, f->interactive);
+  });
   connect(scheduler_, &RenderScheduler::statsChanged, this,
           [this](double fps, double ms, bool interactive) {
             stats_ = {true, fps, ms, interactive};
