@@ -59,8 +59,9 @@ SceneToken parseScene(const std::string& token) {
   return t;
 }
 
-RenderParams syntheticBase(Mode mode, const std::string& size) {
+RenderParams syntheticBase(Mode mode, const std::string& size, Lighting lighting) {
   RenderParams p;
+  p.lighting = lighting;  // --lighting holds for the analytic scenes as for INPUT
   findRenderParamSpec("size").parse(p, size);
   p.mode = mode;
   p.isoLo = 0.0;  // analytic fields have their surface at value 0
@@ -101,7 +102,9 @@ void printTable(const std::vector<SweepRow>& rows, const std::string& device) {
       "found another crossing (stepped over a thin feature), left out of hit_med; surf/nrm: vs the "
       "analytic surface and normal (reference renderer's hits); k_surf: the OpenCL kernel's own "
       "hit points vs the analytic surface (mean); rmse/psnr/ssim: "
-      "OpenCL image vs the reference renderer at 1/16 voxel steps (trilinear)\n",
+      "OpenCL image vs the reference renderer at 1/16 voxel steps (trilinear); rows of lighting "
+      "shadows or ao (_shadows, _ao): vs the Monte Carlo reference, the mean of 4 samples at "
+      "those steps with shadow and occlusion rays at half a voxel\n",
       device.c_str());
 }
 
@@ -183,7 +186,7 @@ Run addAccuracyCommand(CLI::App& app) {
         SceneToken t = parseScene(token);
         Volume v = makeSyntheticVolume(t.spec);
         SweepScene scene{token.substr(0, token.find('/')), &v, AnalyticField{t.spec},
-                         syntheticBase(t.mode, o->syntheticSize)};
+                         syntheticBase(t.mode, o->syntheticSize, o->flags.params().lighting)};
         run(scene, t.reduced);
       }
     }
