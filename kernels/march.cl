@@ -160,25 +160,19 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #endif
 #if ADAPTIVE
   bool reach = adaptive_reach(r->step, fmax(fabs(r->d.x), fmax(fabs(r->d.y), fabs(r->d.z))));
-  for (int i = 0, check = 0, f = 1; i <= r->n; i += f) {
-    if (i >= check) {
-      i = ess_leap(leap, range, P, r, true, i, &check);
-      if (i > r->n) break;
-    }
-    float2 s = adaptive_segment(leap, P, r, i, reach, &f);
-    if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG)) break;
-  }
-#else
-  for (int i = 0, check = 0; i <= r->n; ++i) {
+#endif
+  for (int i = 0, check = 0, f = 1; i <= r->n; i += f) {  // f: steps segment i spans
     if (ESS && i >= check) {
       i = ess_leap(leap, range, P, r, true, i, &check);
       if (i > r->n) break;
     }
-    if (dvr_segment(VOLUME, P, lut, r, ray_segment(r, i), origin_w, dir_w, count, &acc,
-                    &alpha DVR_HIT_ARG))
-      break;
-  }
+#if ADAPTIVE
+    float2 s = adaptive_segment(leap, P, r, i, reach, &f);
+#else
+    float2 s = ray_segment(r, i);
 #endif
+    if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG)) break;
+  }
 #undef DVR_HIT_ARG
   return acc + (1.0f - alpha) * P->background.xyz;
 }

@@ -68,8 +68,13 @@ inline float toward_light(__constant RaycastParams* P, float3 p, float3* dv) {
 // the shadow offset toward the light (the model's T, monte_carlo_reference.h): there, unlike
 // at p_v, the grid's interpolation does not reach points inside the sample's own surface,
 // which darkened lit surfaces (the grid held T from each point's own offset before).
+// The grid's value at voxel position p_v, read where it is stored: behind the table.
+inline float light_grid_at(__global const float4* lut, __constant RaycastParams* P, float3 p_v) {
+  return grid_trilinear((__global const float*)(lut + P->dims.w), P->light_grid,
+                        p_v * P->light_march.z);
+}
+
 inline float light_grid(__global const float4* lut, __constant RaycastParams* P, float3 p_v) {
-  __global const float* g = (__global const float*)(lut + P->dims.w);
   if (LIGHTING == 1) {
     float3 dv = (float3)(0.0f);
     float len = toward_light(P, p_v, &dv), offset = P->light_march.w;
@@ -78,7 +83,7 @@ inline float light_grid(__global const float4* lut, __constant RaycastParams* P,
     // Past the clip box toward the light nothing occludes (the grid would clamp to its edge).
     if (any(p_v < P->clip_lo.xyz) || any(p_v > P->clip_hi.xyz)) return 1.0f;
   }
-  return grid_trilinear(g, P->light_grid, p_v * P->light_march.z);
+  return light_grid_at(lut, P, p_v);
 }
 
 // The light coefficients (ambient, diffuse, specular, shininess) of a sample at p_v: the

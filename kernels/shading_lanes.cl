@@ -90,10 +90,8 @@ inline VecN shade_frameN(__global const float4* lut, __constant RaycastParams* P
   float x[LANES], y[LANES], z[LANES], f[LANES];
   int r[LANES];
   vstoreN(at.x, 0, x), vstoreN(at.y, 0, y), vstoreN(at.z, 0, z), vstoreN(read, 0, r);
-  __global const float* grid = (__global const float*)(lut + P->dims.w);
   for (int l = 0; l < LANES; ++l)
-    f[l] = r[l] ? grid_trilinear(grid, P->light_grid, (float3)(x[l], y[l], z[l]) * P->light_march.z)
-                : 1.0f;
+    f[l] = r[l] ? light_grid_at(lut, P, (float3)(x[l], y[l], z[l])) : 1.0f;
   floatN g = vloadN(0, f), one = 1.0f;
   return shade_scaledN(color, normal_w, pos_w, view_w, P->light_w, P->light,
                        LIGHTING == 2 ? g : one, LIGHTING == 1 ? g : one);
