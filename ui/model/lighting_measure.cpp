@@ -10,6 +10,7 @@
 #include "voxray/engine/reference_renderer.h"
 #include "voxray/io/error.h"
 #include "voxray/lab/accuracy.h"
+#include "voxray/lab/accuracy_sweep.h"
 
 namespace voxray::ui {
 
@@ -43,17 +44,6 @@ FloatImage clamped(FloatImage f) {
   return f;
 }
 
-// The sweep's fine reference of a frame (lab/accuracy_sweep.cpp): trilinear, a small step,
-// many bisections, no jitter, opacity correction on.
-RenderParams referenceParams(RenderParams p, double stepMm) {
-  p.interp = Interp::Linear;
-  p.stepMm = stepMm;
-  p.refine = 24;
-  p.jitter = false;
-  p.opacityCorrection = true;
-  return p;
-}
-
 LightingMeasurement measureGridModel(Raycaster& rc, const Volume& v, const RenderParams& p,
                                      const LightingMeasureOptions& o,
                                      const std::atomic<bool>* cancel) {
@@ -78,7 +68,9 @@ LightingMeasurement measureGridModel(Raycaster& rc, const Volume& v, const Rende
   m.msPerFrame = median(ms);
   check(cancel);
   const double h = minSpacing(v);
-  RenderParams ref = referenceParams(p, o.referenceStepVoxels * h);
+  // The sweep's fine reference (voxray-cli accuracy): trilinear, its bisections.
+  RenderParams ref =
+      fineParams(p, Interp::Linear, o.referenceStepVoxels * h, SweepOptions{}.fineRefine);
   FloatImage truth;
   if (p.lighting == Lighting::Phong) {
     truth = renderReferenceFloat(v, ref);

@@ -24,23 +24,21 @@ double median(std::vector<double> v) {
   return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
-// The fine reference of a case: the same operator, trilinear (images) or the case's own
-// reconstruction (hit points), a tiny step, many bisections, no jitter.
-RenderParams fineParams(RenderParams p, Interp interp, const SweepOptions& o, double spacing) {
-  p.interp = interp;
-  p.stepMm = o.fineStepVoxels * spacing;
-  p.refine = o.fineRefine;
-  p.jitter = false;
-  p.opacityCorrection = true;
-  return p;
-}
-
 struct Fine {
   FloatImage image;
   ReferenceHits hits;
 };
 
 }  // namespace
+
+RenderParams fineParams(RenderParams p, Interp interp, double stepMm, int refine) {
+  p.interp = interp;
+  p.stepMm = stepMm;
+  p.refine = refine;
+  p.jitter = false;
+  p.opacityCorrection = true;
+  return p;
+}
 
 std::string settingLabel(const RenderParams& p, double minSpacingMm) {
   std::ostringstream s;
@@ -102,7 +100,8 @@ std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
   Raycaster rc(ctx, v, VolumeStorage::Auto);
   std::map<std::string, Fine> fine;
   auto fineFor = [&](const RenderParams& p, Interp interp) -> const Fine& {
-    RenderParams f = fineParams(p, interp, o, h);
+    // The same operator, trilinear (images) or the case's own reconstruction (hit points).
+    RenderParams f = fineParams(p, interp, o.fineStepVoxels * h, o.fineRefine);
     std::string key = toText(f);
     auto it = fine.find(key);
     if (it != fine.end()) return it->second;

@@ -53,6 +53,10 @@ std::vector<SweepCase> standardCases(const SweepScene& scene, bool reduced = fal
 // "step=S VARIANT WxH" for a parameter set: the step relative to the scene's voxel size, the
 // kernel variant's name (kernelVariantName).
 std::string settingLabel(const RenderParams& p, double minSpacingMm);
+// The fine reference of a frame p: its operator with interpolation `interp`, step `stepMm`,
+// `refine` bisections, no jitter, opacity correction on (the sweep's reference images, and
+// the workstation's lighting measurement).
+RenderParams fineParams(RenderParams p, Interp interp, double stepMm, int refine);
 
 std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
                                const std::vector<SweepCase>& cases, const SweepOptions& options);
