@@ -25,7 +25,7 @@ cli=${CLI:-$here/../../build/bin/voxray-cli}
 tf=-1000:0:0:0:0,-100:0.72:0.45:0.36:0,0:0.8:0.5:0.4:0.0143,40:0.82:0.55:0.45:0.02,400:1:1:0.9:0.9,3000:1:1:1:1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-input=("$raw" --raw-dims "512,512" --raw-type i16 --raw-spacing 1,1,1 --tf "$tf")
+input=("$raw" --raw-dims "512,512" --raw-type i16 --raw-spacing "1,1,1" --tf "$tf")
 [ -n "${QUALITY:-}" ] && input=("${DICOM:-/work/ct/ct400}" --preset CT-Bone --quality "$QUALITY")
 names=(- slots live seen empty "empty early" "fine empty" "bound, per-lane leaps" "bound, + 2^3 sub-cells")
 for n in ${COUNTS:-1 2 3 4 5 6 7 8}; do
