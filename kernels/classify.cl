@@ -56,6 +56,36 @@ __kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 
   out[k] = (uchar)best;
 }
 
+// The one-sided twin of leap_distance for iso packets (skip_ahead_lanes.cl): along `axis`,
+// out = min over 0 <= s <= MAX_LEAP of max(s, in[c + sign s]), only ahead in `sign`'s
+// direction. Three passes, one per axis with that octant's signs, give the chessboard
+// distance to the nearest occupied cell in the octant ahead (cells c' with c' - c of the
+// octant's signs or 0): a ray whose direction has those signs stays in that octant, so it
+// may leap the box of d cells ahead (the cell itself and d - 1 more along each axis), where
+// the two-sided distance allows only the cube of radius d - 1 around it. Near bone, most
+// occupied neighbours lie behind or beside the ray.
+// in and out start at in_at and out_at (the passes' regions of two buffers).
+__kernel void leap_distance_ahead(__global const uchar* in, int in_at, __global uchar* out,
+                                  int out_at, int4 cells, int axis, int from_occ, int sign) {
+  int k = get_global_id(0);
+  int n = cells.x * cells.y * cells.z;
+  if (k >= n) return;
+  in += in_at;
+  out += out_at;
+  int3 c = (int3)(k % cells.x, (k / cells.x) % cells.y, k / (cells.x * cells.y));
+  int len = axis == 0 ? cells.x : axis == 1 ? cells.y : cells.z;
+  int pos = axis == 0 ? c.x : axis == 1 ? c.y : c.z;
+  int stride = (axis == 0 ? 1 : axis == 1 ? cells.x : cells.x * cells.y) * sign;
+  int reach = min(MAX_LEAP, sign > 0 ? len - 1 - pos : pos);
+  int best = MAX_LEAP;
+  for (int s = 0; s <= reach && s < best; ++s) {
+    int v = in[k + s * stride];
+    int d = from_occ ? (v ? 0 : MAX_LEAP) : v;
+    best = min(best, max(s, d));
+  }
+  out[k] = (uchar)best;
+}
+
 // Adaptive dvr steps (ADAPTIVE, march.cl): whether a segment of f = 4 base steps (h each)
 // whose midpoint lies in the cell may replace the 4 segments it covers (level 1) or not (0).
 // Their midpoints lie within 3 h / 2 of its own, at most one voxel (march.cl caps f), so every

@@ -13,6 +13,7 @@
 #include "march.cl"
 #include "ray_lanes.cl"
 #include "shade_queue.cl"
+#include "skip_ahead_lanes.cl"
 #include "skip_lanes.cl"
 #if HIT_OUTPUT
 #include "hit_output_lanes.cl"
@@ -53,6 +54,10 @@ inline floatN cap_or_gradientN(floatN g, intN graded, intN cap, intN along) {
   return select(select(zero, g, graded), select(zero, (floatN)(1.0f), along), cap);
 }
 
+// Samples an iso packet loads at once (see iso_packet).
+#ifndef ISO_BATCH
+#define ISO_BATCH 2
+#endif
 inline void iso_packet(PACKET_ARGS) {
   float step = P->view.z;
   RayPacket r;
@@ -63,27 +68,38 @@ inline void iso_packet(PACKET_ARGS) {
   intN i = 0, check = 0, hit = -1, samples = 0;
   floatN t_hit = 0.0f;
   intN active = r.n >= 0;
+  intN ahead = ahead_baseN(P, &r);  // this ray's one-sided distances (skip_ahead_lanes.cl)
   while (any(active)) {
     if (ESS) {
-      active = leap_packetN(leap, range, P, &r, &i, &check, active, step, false, false);
+      active = leap_packet_aheadN(leap, P, &r, ahead, &i, &check, active, step);
       if (!any(active)) break;
     }
-    floatN t = sample_tN(&r, i, step);
-    floatN vlo, vhi;
-    floatN v = sample_rangeN(vol, P, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz, &vlo, &vhi);
-    samples -= active;  // true is -1
-    intN in = active & (v >= lo) & (v <= hi);
-    hit = select(hit, i, in);
-    t_hit = select(t_hit, t, in);
-    active &= ~in;
-    // Trilinear: a voxel cell whose eight voxels all miss the iso range holds no hit, so
-    // the samples left in it are skipped (the same first hit; the one before it, where
-    // refinement starts, is outside the range either way).
-    intN cell_misses = active & ((vhi < lo) | (vlo > hi));
-    if (INTERP != 0 && any(cell_misses) != 0)
-      i = select(i + 1, max(i + 1, past_voxel_cellN(&r, t, step)), cell_misses);
-    else
-      i += 1;
+    // ISO_BATCH samples at once: their loads (mostly cache misses on a large volume) are
+    // in flight together. Taken in order, the first in the iso range is the hit, the
+    // same as one at a time: a later sample that one at a time would have skipped (the
+    // rest of a missing voxel cell, or an empty macro cell) cannot be in the range.
+    floatN t[ISO_BATCH], v[ISO_BATCH], vlo[ISO_BATCH], vhi[ISO_BATCH];
+    for (int k = 0; k < ISO_BATCH; ++k) {
+      t[k] = sample_tN(&r, i + k, step);
+      v[k] = sample_rangeN(vol, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz,
+                           &vlo[k], &vhi[k]);
+    }
+    intN next = i + ISO_BATCH;
+    for (int k = 0; k < ISO_BATCH; ++k) {
+      intN live = active & (i + k <= r.n);
+      samples -= live;  // true is -1
+      intN in = live & (v[k] >= lo) & (v[k] <= hi);
+      hit = select(hit, i + k, in);
+      t_hit = select(t_hit, t[k], in);
+      active &= ~in;
+      // Trilinear: a voxel cell whose eight voxels all miss the iso range holds no hit, so
+      // the samples left in it are skipped (the same first hit; the one before it, where
+      // refinement starts, is outside the range either way).
+      intN cell_misses = live & ((vhi[k] < lo) | (vlo[k] > hi));
+      if (INTERP != 0 && any(cell_misses) != 0)
+        next = select(next, max(next, past_voxel_cellN(&r, t[k], step)), cell_misses);
+    }
+    i = next;
     active &= i <= r.n;
   }
   intN refine = hit > 0;

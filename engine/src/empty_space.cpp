@@ -17,10 +17,45 @@ void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
     occ_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
     // Behind the distances, each cell's adaptive step level (ADAPTIVE dvr frames only).
     leap_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 2 * n);
+    leapBytes_ = 2 * n;
+    aheadScratch_ = cl::Buffer();
     scratch_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
     return 0;
   });
   key_.clear();
+}
+
+void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t global) {
+  size_t n = cells_.minMax.size() / 2;
+  // The distances and, behind them, one region per octant of ray directions; the passes'
+  // intermediate regions: two after x, four after y. Made on the first iso frame only.
+  if (leapBytes_ < 9 * n) {
+    leap_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 9 * n);
+    leapBytes_ = 9 * n;
+  }
+  if (!aheadScratch_()) aheadScratch_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 6 * n);
+  cl::Kernel pass = cl.kernel("classify.cl", "leap_distance_ahead", "");
+  auto run = [&](const cl::Buffer& in, size_t inAt, const cl::Buffer& out, size_t outAt, int axis,
+                 bool positive) {
+    pass.setArg(0, in);
+    pass.setArg(1, cl_int(inAt));
+    pass.setArg(2, out);
+    pass.setArg(3, cl_int(outAt));
+    pass.setArg(4, dims);
+    pass.setArg(5, cl_int(axis));
+    pass.setArg(6, cl_int(axis == 0));
+    pass.setArg(7, cl_int(positive ? 1 : -1));
+    cl.queue.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange(global), cl::NullRange);
+  };
+  // Octant o: bit a set where the ray's direction along axis a is > 0 (skip_ahead_lanes.cl).
+  for (int sx = 0; sx < 2; ++sx) run(occ_, 0, aheadScratch_, sx * n, 0, sx);
+  for (int sx = 0; sx < 2; ++sx)
+    for (int sy = 0; sy < 2; ++sy)
+      run(aheadScratch_, sx * n, aheadScratch_, (2 + sx + 2 * sy) * n, 1, sy);
+  for (int sx = 0; sx < 2; ++sx)
+    for (int sy = 0; sy < 2; ++sy)
+      for (int sz = 0; sz < 2; ++sz)
+        run(aheadScratch_, (2 + sx + 2 * sy) * n, leap_, (1 + sx + 2 * sy + 4 * sz) * n, 2, sz);
 }
 
 void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
@@ -62,10 +97,11 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     kernel.setArg(5, occ_);
     size_t global = (cells + 63) / 64 * 64;
     q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    cl_int4 dims = {{cells_.dims.x, cells_.dims.y, cells_.dims.z, 0}};
+    if (m == 0) aheadDistances(cl, dims, global);  // first: it may enlarge leap_
     // Distances to the nearest occupied cell, so rays leap whole empty cubes at once:
     // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
     cl::Kernel pass = cl.kernel("classify.cl", "leap_distance", "");
-    cl_int4 dims = {{cells_.dims.x, cells_.dims.y, cells_.dims.z, 0}};
     const cl::Buffer* from[3] = {&occ_, &leap_, &scratch_};
     const cl::Buffer* to[3] = {&leap_, &scratch_, &leap_};
     for (int axis = 0; axis < 3; ++axis) {

@@ -29,14 +29,19 @@ class EmptySpace {
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
   // capped at MAX_LEAP (kernels/classify.cl); then, after every cell's, each cell's
-  // adaptive step level (valid after an adaptive dvr classification).
+  // adaptive step level (valid after an adaptive dvr classification), or after an iso
+  // classification the eight one-sided distances (kernels/skip_ahead_lanes.cl).
   const cl::Buffer& leap() const { return leap_; }
   int classifications() const { return classifications_; }
 
  private:
+  // The one-sided distances of iso packets, one region per octant behind the distances.
+  void aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t global);
+
   MacroCells cells_;
   cl::Buffer range_, occ_, leap_, scratch_, opaqueBefore_;
-  size_t opaqueCapacity_ = 0;
+  size_t opaqueCapacity_ = 0, leapBytes_ = 0;
+  cl::Buffer aheadScratch_;
   // What the occupancy was classified for; equal keys skip the work.
   std::vector<float> key_;
   std::vector<int> opaque_;
