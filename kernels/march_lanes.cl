@@ -284,14 +284,20 @@ inline void dvr_packet(PACKET_ARGS) {
 // instead. A ray crosses at most about cells.x + cells.y + cells.z cells, 356 on a
 // 512 x 512 x 400 CT. 2048 / LANES steps (128 at 16 lanes) sent many of its rays to the
 // slower loop, and larger arrays cost time at 8 lanes (docs/bench/README.md, session 6).
-#define MIP_WALK 384
+#define MIP_WALK 384  // < MIP_KEY_STEPS
+
+// A walked cell's key: its max times MIP_KEY_STEPS plus MIP_KEY_STEPS - 1 - its step, so
+// that the largest key is the brightest cell and, of equal maxima, the first along the ray
+// (as before); a lane takes its keys in falling order, so the last one taken is the
+// ceiling of the ones left and nothing needs marking. INT_MIN: a cell that cannot show.
+#define MIP_KEY_STEPS 512
 
 // Walks every lane's cells in order (a 3D DDA by exit planes, no samples) and keeps step
-// g's cell as max[g] and its span [t_at[g], t_at[g + 1]), its max as -FLT_MAX where it
-// cannot show above the window's low end. Returns the number of steps, or -1 when a ray
-// needs more.
+// g's cell as key[g] and its span [t_at[g], t_at[g + 1]), its key INT_MIN where it cannot
+// show above the window's low end. Returns the number of steps, or -1 when a ray needs
+// more.
 inline int walk_cellsN(__global const short2* range, __constant RaycastParams* P,
-                       const RayPacket* r, float low, floatN* max, floatN* t_at) {
+                       const RayPacket* r, float low, intN* key, floatN* t_at) {
   floatN nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
   floatN t = r->t0, t_enter = r->t0;
   intN pending = r->n >= 0;
@@ -302,7 +308,8 @@ inline int walk_cellsN(__global const short2* range, __constant RaycastParams* P
     intN k = cellN(P, r, t, pending, &cx, &cy, &cz);
     floatN t_exit = fmin(cube_exitN(P, r, cx, cy, cz, 0), r->t1);
     floatN m = cell_maxN(range, k);
-    max[g] = select((floatN)(-FLT_MAX), m, pending & (m > low));
+    key[g] = select((intN)(INT_MIN), convert_intN(m) * MIP_KEY_STEPS + (MIP_KEY_STEPS - 1 - g),
+                    pending & (m > low));
     t_at[g] = t_enter;
     t_enter = select(t_enter, t_exit, pending);  // where this step's cell ends
     pending &= t_exit < r->t1;
@@ -345,6 +352,83 @@ inline void sample_spanN(__global const short* restrict vol, __constant RaycastP
   }
 }
 
+// A mip lane with no span left takes its next cell when at least 1 / MIP_REFILL of the
+// active lanes wait, so that the packet's lanes keep sampling while one finishes a long
+// span (before, every lane waited for the packet's longest span). Each refill scans every
+// walked cell: refilling at every idle lane ran slower, at 1 / 4 no faster than at half.
+#ifndef MIP_REFILL
+#define MIP_REFILL 2
+#endif
+#ifndef MIP_BATCH
+#define MIP_BATCH 4
+#endif
+
+// Samples each lane's walked cells brightest first, until no cell left can raise its
+// maximum (or show above the window's low end). Each lane has its own span [j, end]: the
+// cells a lane samples and in what order depend on its own maximum only, so the samples
+// are those of taking the cells packet-wide in turns.
+inline void mip_cells_brightest_firstN(__global const short* restrict vol,
+                                       __constant RaycastParams* P, const RayPacket* r, int steps,
+                                       intN* key, const floatN* t_at, float low, float high,
+                                       floatN* vmax, intN* active, intN* samples) {
+  float step = P->view.z;
+  intN j = 0, end = -1, ceiling = INT_MAX;
+  while (any(*active)) {
+    intN idle = *active & (j > end);
+    int waiting = count_lanes(idle);
+    if (waiting > 0 && MIP_REFILL * waiting >= count_lanes(*active)) {
+      // Each lane's largest key below its ceiling; a cell can raise the lane's floor when
+      // its (integer) max exceeds it, that is when its key is at least floor_key. Dropping
+      // rows no lane can use any more, on the way, scanned 56 % fewer rows but ran slower.
+      floatN floor_v = clamp(fmax(*vmax, low), -65536.0f, 65536.0f);
+      intN floor_key = (convert_intN(floor(floor_v)) + 1) * MIP_KEY_STEPS;
+      intN best = INT_MIN;
+      for (int g = 0; g < steps; ++g) {
+        intN k = key[g];
+        best = select(best, max(best, k), k < ceiling);
+      }
+      *active &= ~(idle & (best < floor_key));
+      idle &= *active;
+      if (!any(*active)) break;
+      ceiling = select(ceiling, best, idle);
+      intN at = MIP_KEY_STEPS - 1 - (best & (MIP_KEY_STEPS - 1));
+      // The samples with t in [t_at[at], t_at[at + 1]), up to the last one at t1. One that
+      // rounding puts in the neighbouring cell is within a voxel of the face, and so within
+      // that cell's max (its apron): leaving it to that cell is exact.
+      at = select((intN)(0), at, idle);
+      floatN from = pickN(t_at, at), to = pickN(t_at, at + 1);
+      j = select(j, index_atN(r, from, step, false), idle);
+      end = select(end, select(index_atN(r, to, step, false) - 1, r->n, to >= r->t1), idle);
+    }
+    intN todo = *active & (j <= end);
+    if (!any(todo)) continue;
+    // MIP_BATCH samples a turn, j ... j + MIP_BATCH - 1: the next turn's addresses depend
+    // on this one's loads (the skip below), so each turn waits for its loads; several a turn
+    // overlap their misses. Lanes without a sample read the volume's corner, which stays in
+    // cache, instead of missing like the others. A sample taken that a skip would have
+    // passed cannot change the maximum (it is one of the ray's samples).
+    floatN zero = 0.0f, t, vlo, vhi;
+    intN take;
+    for (int b = 0; b < MIP_BATCH; ++b) {
+      take = todo & (j + b <= end);
+      t = sample_tN(r, j + b, step);
+      floatN v = sample_rangeN(vol, P, select(zero, r->ox + t * r->dx, take),
+                               select(zero, r->oy + t * r->dy, take),
+                               select(zero, r->oz + t * r->dz, take), &vlo, &vhi);
+      *samples -= take;
+      *vmax = select(*vmax, fmax(*vmax, v), take);
+    }
+    *active &= *vmax < high;
+    // The rest of the last sample's voxel cell is skipped where its eight voxels cannot
+    // raise the lane's floor (a lane without that sample ends its span either way).
+    intN cell_below = take & (vhi <= fmax(*vmax, low));
+    if (INTERP != 0 && any(cell_below) != 0)
+      j = select(j + MIP_BATCH, max(j + MIP_BATCH, past_voxel_cellN(r, t, step)), cell_below);
+    else
+      j += MIP_BATCH;
+  }
+}
+
 // march_mip (march.cl) for a packet. Only what can change the windowed grey is
 // sampled: values at or below the window's low end show black, so the running maximum
 // starts there for skipping; a lane stops once it reaches the window's high end (white);
@@ -364,33 +448,11 @@ inline void mip_packet(__global const short* restrict vol, __constant RaycastPar
     // The maximum does not depend on the order of the samples: walk the cells once, then
     // sample them brightest first, until no cell left can raise a lane's maximum (or
     // show above the window's low end). Most rays sample a few cells.
-    floatN cell_max[MIP_WALK], t_at[MIP_WALK + 1];
-    int steps = walk_cellsN(range, P, &r, low, cell_max, t_at);
-    if (steps >= 0) {
-      while (any(active)) {
-        floatN best = -FLT_MAX;
-        intN at = 0;
-        for (int g = 0; g < steps; ++g) {
-          intN better = cell_max[g] > best;
-          best = select(best, cell_max[g], better);
-          at = select(at, (intN)(g), better);
-        }
-        active &= best > fmax(vmax, low);
-        if (!any(active)) break;
-        float* m = (float*)cell_max;  // taken: lane l of step at.sl
-#define TAKE_LANE(l, n) m[at.s##l * LANES + n] = -FLT_MAX;
-        LANE_EACH(TAKE_LANE)
-#undef TAKE_LANE
-        // The samples with t in [t_at[at], t_at[at + 1]), up to the last one at t1. One that
-        // rounding puts in the neighbouring cell is within a voxel of the face, and so within that
-        // cell's max (its apron): leaving it to that cell is exact.
-        floatN from = pickN(t_at, at), to = pickN(t_at, at + 1);
-        intN end = select(index_atN(&r, to, step, false) - 1, r.n, to >= r.t1);
-        sample_spanN(vol, P, &r, index_atN(&r, from, step, false), end, active, low, high, &vmax,
-                     &samples);
-        active &= vmax < high;
-      }
-    }
+    intN key[MIP_WALK];
+    floatN t_at[MIP_WALK + 1];
+    int steps = walk_cellsN(range, P, &r, low, key, t_at);
+    if (steps >= 0)
+      mip_cells_brightest_firstN(vol, P, &r, steps, key, t_at, low, high, &vmax, &active, &samples);
   }
   // Without ESS, or for a ray that crosses more cells than the walk keeps: in order, a
   // span at a time between leaps past cells that cannot raise a lane's floor.

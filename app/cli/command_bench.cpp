@@ -122,8 +122,8 @@ Run addBenchCommand(CLI::App& app) {
                   "split the volume into z slabs of at most this many MiB on the device "
                   "(default: only when it exceeds the largest allocation)");
   cmd->add_option("--lanes", o->lanes,
-                  "rays per CPU packet: 8 (4x2), 16 (4x4) or 0 (16 for iso and dvr where the "
-                  "device's native float vector holds 16, else 8)")
+                  "rays per CPU packet: 8 (4x2), 16 (4x4) or 0 (16 where the device's native "
+                  "float vector holds 16, else 8)")
       ->check(CLI::IsMember({0, 8, 16}));
   cmd->add_flag("--no-count", o->noCount, "skip the extra orbit that counts samples");
   cmd->add_option("--orbit", o->orbit,

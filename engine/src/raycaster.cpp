@@ -186,10 +186,11 @@ bool Raycaster::Impl::packets() const {
          volume.voxelCount() < (size_t(1) << 31);
 }
 
-int Raycaster::Impl::lanes(const RenderParams& p) const {
+int Raycaster::Impl::lanes(const RenderParams&) const {
   if (opts.packetLanes != 0) return opts.packetLanes;
-  // CThead dvr on VTK's orbit, AVX-512: 16 lanes 1.22x faster than 8; mip 1.4x slower.
-  return p.mode != Mode::Mip && cl.info.nativeFloatWidth >= 16 ? 16 : 8;
+  // AVX-512, VTK's orbit: CThead dvr 16 lanes 1.22x faster than 8; mip (per-lane spans,
+  // docs/bench/README.md session 7) faster at 16 on CThead and the 512x512x400 CT.
+  return cl.info.nativeFloatWidth >= 16 ? 16 : 8;
 }
 
 cl::NDRange Raycaster::Impl::local() const {

@@ -27,9 +27,8 @@ struct RaycasterOptions {
   // A CPU device with buffer storage: each work-item marches a packet of rays in SIMD
   // (kernels/march_lanes.cl). Ignored elsewhere (GPUs diverge less one ray per work-item).
   bool packets = true;
-  // Rays per packet, 8 (4x2) or 16 (4x4). 0: 16 for iso and dvr where the device's native
-  // float vector holds 16 (AVX-512), else 8; mip keeps 8 (its cell walk lives in private
-  // memory, and wider packets diverge more).
+  // Rays per packet, 8 (4x2) or 16 (4x4). 0: 16 where the device's native float vector
+  // holds 16 (AVX-512), else 8, in every mode.
   int packetLanes = 0;
   // Work-group size; 0: 16x8 on GPUs, 4x4 packets with CPU packets, else PoCL's choice.
   int localX = 0, localY = 0;
