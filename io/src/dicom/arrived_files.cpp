@@ -3,13 +3,22 @@
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 
+#include <sys/mman.h>
+
 #include <chrono>
+#include <new>
 #include <filesystem>
 
 #include "pixel_decode.h"
 #include "voxray/io/error.h"
+#include "voxray/io/raw_import.h"
 
 namespace voxray::dicom {
+namespace {
+
+constexpr size_t kReservedSlices = 1024;
+
+}  // namespace
 
 std::string pathKey(const std::string& path) {
   return std::filesystem::path(path).lexically_normal().string();
@@ -67,10 +76,29 @@ size_t ArrivedFiles::newSlot() {
   const size_t k = slots_.size();
   const size_t needed = (k + 1) * sliceSize_;
   if (needed > voxels_.capacity()) {
-    // Doubling: the copies add up to less than the final size, and happen while the
-    // transfer still runs.
-    constexpr size_t kFirstSlices = 64;
-    voxels_.reserve(std::max(voxels_.capacity() * 2, kFirstSlices * sliceSize_));
+    // How many files are coming is not known (WADO-RS does not say). Growing by doubling
+    // cost 0.1 s of CPU for 400 CT slices (copies, and page faults on each new buffer), so
+    // address space for kReservedSlices is taken at once: only the pages written are
+    // memory. Past it (or where that much address space is refused) the buffer doubles.
+    size_t want = std::max(voxels_.capacity() * 2, kReservedSlices * sliceSize_);
+    want = std::min(want, std::max(kMaxVoxels, needed));
+    try {
+      voxels_.reserve(want);
+    } catch (const std::bad_alloc&) {
+      voxels_.reserve(std::max(voxels_.capacity() * 2, needed));
+    }
+    populated_ = voxels_.size();
+  }
+  if (needed > populated_) {
+    // Page tables for the next slices in one call (4 KiB page faults one by one cost a
+    // tenth of the worker's CPU time); ignored by kernels before Linux 5.14.
+    const size_t ahead = std::min(voxels_.capacity(), needed + 16 * sliceSize_);
+    auto* begin = reinterpret_cast<char*>(voxels_.data() + populated_);
+    const uintptr_t page = 4096;
+    auto from = (reinterpret_cast<uintptr_t>(begin) + page - 1) & ~(page - 1);
+    auto to = reinterpret_cast<uintptr_t>(voxels_.data() + ahead) & ~(page - 1);
+    if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+    populated_ = ahead;
   }
   voxels_.resize(needed);
   slots_.emplace_back();

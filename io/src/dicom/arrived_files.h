@@ -66,6 +66,7 @@ class ArrivedFiles {
   std::vector<Slot> slots_;
   std::vector<int16_t> voxels_;
   size_t sliceSize_ = 0;
+  size_t populated_ = 0;  // voxels_ elements with page tables
 };
 
 }  // namespace voxray::dicom
