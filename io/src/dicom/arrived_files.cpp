@@ -6,8 +6,8 @@
 #include <sys/mman.h>
 
 #include <chrono>
-#include <new>
 #include <filesystem>
+#include <new>
 
 #include "pixel_decode.h"
 #include "voxray/io/error.h"
@@ -89,6 +89,7 @@ size_t ArrivedFiles::newSlot() {
     }
     populated_ = voxels_.size();
   }
+#ifdef MADV_POPULATE_WRITE
   if (needed > populated_) {
     // Page tables for the next slices in one call (4 KiB page faults one by one cost a
     // tenth of the worker's CPU time); ignored by kernels before Linux 5.14.
@@ -100,6 +101,7 @@ size_t ArrivedFiles::newSlot() {
     if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
     populated_ = ahead;
   }
+#endif
   voxels_.resize(needed);
   slots_.emplace_back();
   return k;

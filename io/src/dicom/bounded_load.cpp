@@ -36,9 +36,7 @@ class StackBounded : public Stream {
   offile_off_t read(void* buf, offile_off_t length) override {
     return spent() ? 0 : Stream::read(buf, length);
   }
-  offile_off_t skip(offile_off_t length) override {
-    return spent() ? 0 : Stream::skip(length);
-  }
+  offile_off_t skip(offile_off_t length) override { return spent() ? 0 : Stream::skip(length); }
 
  private:
   // The stack grows down on every platform Voxray builds for. The frame address, not a
@@ -78,8 +76,8 @@ std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 m
                           const DcmTagKey& stopAt) {
   ensureCodecsRegistered();
   try {
-    StackBounded<DcmInputFileStream> stream(
-        static_cast<const char*>(__builtin_frame_address(0)), path.c_str());
+    StackBounded<DcmInputFileStream> stream(static_cast<const char*>(__builtin_frame_address(0)),
+                                            path.c_str());
     return readBounded(file, stream, maxReadLength, stopAt);
   } catch (const std::exception& e) {
     // DCMTK is C++ and may throw (std::bad_alloc, std::out_of_range) on damaged input.
@@ -91,8 +89,7 @@ std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 m
 std::string loadDicomBytes(DcmFileFormat& file, std::string_view bytes) {
   ensureCodecsRegistered();
   try {
-    StackBounded<DcmInputBufferStream> stream(
-        static_cast<const char*>(__builtin_frame_address(0)));
+    StackBounded<DcmInputBufferStream> stream(static_cast<const char*>(__builtin_frame_address(0)));
     stream.setBuffer(bytes.data(), offile_off_t(bytes.size()));
     stream.setEos();
     std::string why = readBounded(file, stream, kReadEverything, DCM_UndefinedTagKey);

@@ -217,7 +217,8 @@ void decodeSlices(const Candidate& c, const LoadOptions& options, const std::vec
 
 // Moves slice SOURCE[k] of VOXELS to slice k, for every k (SOURCE is a permutation),
 // following its cycles with one slice aside.
-void permuteSlices(std::vector<int16_t>& voxels, size_t sliceSize, const std::vector<size_t>& source) {
+void permuteSlices(std::vector<int16_t>& voxels, size_t sliceSize,
+                   const std::vector<size_t>& source) {
   std::vector<bool> placed(source.size(), false);
   std::vector<int16_t> aside(sliceSize);
   auto slice = [&](size_t k) { return voxels.data() + k * sliceSize; };
