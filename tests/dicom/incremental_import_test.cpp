@@ -73,6 +73,14 @@ TEST(DicomIncremental, FilesInAnyOrderGiveTheDiskVolumeBitForBit) {
   expectSame(fedImport(folder, files), disk);
 }
 
+TEST(DicomIncremental, FinishingTwiceReadsTheSecondTimeFromDisk) {
+  const std::string folder = dicomPath("ct-philips-phantom/S2010");
+  DicomImport import;
+  for (auto& [path, bytes] : filesOf(folder)) import.add(path, std::move(bytes));
+  const Volume first = import.finish(folder);
+  expectSame(import.finish(folder), first);
+}
+
 TEST(DicomIncremental, SomeFilesFedTheOthersReadFromDisk) {
   const std::string folder = dicomPath("ct-philips-phantom/S2010");
   auto files = filesOf(folder);

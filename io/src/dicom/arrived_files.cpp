@@ -56,6 +56,16 @@ const ArrivedFiles::File* ArrivedFiles::find(const std::string& path) const {
   return it == files_.end() ? nullptr : &it->second;
 }
 
+std::vector<int16_t> ArrivedFiles::release() {
+  std::vector<int16_t> out = std::move(voxels_);
+  voxels_ = {};
+  files_.clear();
+  slots_.clear();
+  sliceSize_ = 0;
+  populated_ = 0;
+  return out;
+}
+
 void ArrivedFiles::work() {
   std::unique_lock lock(mutex_);
   for (;;) {

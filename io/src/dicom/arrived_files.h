@@ -49,6 +49,9 @@ class ArrivedFiles {
   size_t sliceSize() const { return sliceSize_; }
   // Slice k at k * sliceSize(), in the order the files arrived.
   std::vector<int16_t>& voxels() { return voxels_; }
+  // Hands the slices over (reordered by the caller) and forgets every file: what is asked
+  // afterwards is read from disk.
+  std::vector<int16_t> release();
 
  private:
   void work();

@@ -264,7 +264,7 @@ std::vector<SliceScale> assembleSlices(const Candidate& c, const LoadOptions& op
     if (source[k] != kNone) scales[k] = arrived->slots()[source[k]].scale;
   if (found > 0 && found == c.frames.size() && arrived->slots().size() == found) {
     permuteSlices(arrived->voxels(), sliceSize, source);
-    voxels = std::move(arrived->voxels());
+    voxels = arrived->release();
     report(options, 0.9, "Decoded " + std::to_string(found) + " slices as they arrived");
     return scales;
   }
