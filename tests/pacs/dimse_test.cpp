@@ -1,4 +1,6 @@
 // DIMSE against a real Orthanc: C-ECHO, C-FIND, C-GET, C-MOVE, faults.
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -143,6 +145,48 @@ TEST(DimseStallTest, CancelWhileTheNodeNeverAnswersTheAssociationReturnsAtOnce) 
   EXPECT_THAT(message, testing::AllOf(HasSubstr("C-STORE cancelled"), HasSubstr(node.label()),
                                       HasSubstr("had not answered the association request"),
                                       HasSubstr("nothing was exchanged")));
+  EXPECT_LT(std::chrono::duration<double>(returnedAt - cancelledAt).count(), 2.0);
+}
+
+// A host that drops the connection request: a listener whose accept queue (backlog 0) is
+// full never answers a further SYN, as a firewall that drops it does.
+TEST(DimseStallTest, CancelWhileTheHostDropsTheTcpConnectReturnsAtOnce) {
+  int port = 0;
+  int listener = loopbackSocket(port, true);
+  ASSERT_EQ(listen(listener, 0), 0);
+  int filler = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  addr.sin_port = htons(uint16_t(port));
+  ASSERT_EQ(connect(filler, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  PacsNode node = parsePacsNode("dicom://DROPPED@127.0.0.1:" + std::to_string(port));
+  std::atomic<bool> cancel{false};
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point cancelledAt;
+  std::thread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    cancelledAt = Clock::now();
+    cancel = true;
+  });
+  std::string message;
+  Error::Kind kind = Error::Kind::Input;
+  try {
+    makePacsClient(node)->store({dicomPath("ct-philips-phantom/S2010/I10")}, &cancel);
+    ADD_FAILURE() << "a send to a host that drops the connection returned";
+  } catch (const Error& e) {
+    kind = e.kind();
+    message = e.what();
+  }
+  const auto returnedAt = Clock::now();
+  canceller.join();
+  close(filler);
+  close(listener);
+  EXPECT_EQ(kind, Error::Kind::Cancelled) << message;
+  EXPECT_THAT(message, testing::AllOf(HasSubstr("C-STORE cancelled"), HasSubstr(node.label()),
+                                      HasSubstr("had not accepted the TCP connection"),
+                                      HasSubstr("nothing was exchanged")));
+  // 2 s: the 50 ms poll, with room for a loaded machine; the node's timeout is 30 s.
   EXPECT_LT(std::chrono::duration<double>(returnedAt - cancelledAt).count(), 2.0);
 }
 

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "orthanc_server.h"
+#include "voxray/io/dicom_import.h"
 #include "voxray/io/load.h"
 #include "voxray/io/pacs_cache.h"
 
@@ -104,7 +105,8 @@ int main(int argc, char** argv) {
   for (const char* what :
        {"voxray C-GET, to ready volume", "voxray C-GET, retrieval only", "getscu (DCMTK), to files",
         "voxray WADO-RS, to ready volume", "voxray WADO-RS, retrieval only",
-        "curl WADO-RS, to one file", "voxray C-FIND, study level", "findscu (DCMTK), study level"})
+        "curl WADO-RS, to one file", "voxray C-FIND, study level", "findscu (DCMTK), study level",
+        "voxray WADO-RS, import after it", "WADO-RS, import not overlapped"})
     rows.push_back(Row{what, {}, {}, 0});
   std::string area = voxray::test::tempFolder("bench");
   auto curl = [&](int r) {
@@ -136,19 +138,42 @@ int main(int argc, char** argv) {
     std::string cache = area + "/cache-" + std::to_string(r) + (web ? "w" : "d");
     voxray::CachedSeries entry;
     double retrieve = 0, retrieveCpu = 0;
+    // The import reads and decodes each file as it arrives (DICOMweb; DIMSE files are read
+    // after the transfer); what is left after the transfer is timed apart (web).
     double ready = seconds([&] {
       voxray::PacsCache c(cache);
       auto client = voxray::makePacsClient(node);
-      retrieve = seconds([&] { entry = c.retrieve(*client, studyUid, seriesUid); });
+      voxray::DicomImport import;
+      retrieve = seconds([&] { entry = c.retrieve(*client, studyUid, seriesUid, {}, &import); });
       retrieveCpu = lastCpu;
-      voxray::Volume v = voxray::loadVolume(entry.folder);
-      if (v.dims != disk.dims) std::exit(1);
+      double after = seconds([&] {
+        voxray::Volume v = import.finish(entry.folder);
+        if (v.dims != disk.dims) std::exit(1);
+      });
+      if (web) {
+        rows[8].s.push_back(after);
+        rows[8].cpu.push_back(lastCpu);
+      }
     });
     rows[web ? 3 : 0].s.push_back(ready);
     rows[web ? 3 : 0].cpu.push_back(lastCpu);
     rows[web ? 4 : 1].s.push_back(retrieve);
     rows[web ? 4 : 1].cpu.push_back(retrieveCpu);
     rows[web ? 3 : 0].bytes = rows[web ? 4 : 1].bytes = entry.bytes;
+    fs::remove_all(cache);
+  };
+  // Session 6's way, for the same run: the whole transfer, then the import from the files.
+  auto voxrayThenImport = [&](int r) {
+    std::string cache = area + "/cache-" + std::to_string(r) + "s";
+    rows[9].s.push_back(seconds([&] {
+      voxray::PacsCache c(cache);
+      auto client = voxray::makePacsClient(server.webNode());
+      voxray::CachedSeries entry = c.retrieve(*client, studyUid, seriesUid);
+      voxray::Volume v = voxray::loadVolume(entry.folder);
+      if (v.dims != disk.dims) std::exit(1);
+    }));
+    rows[9].cpu.push_back(lastCpu);
+    rows[9].bytes = rows[5].bytes;
     fs::remove_all(cache);
   };
   // The same study-level keys as Voxray's C-FIND (dimse_client.cpp), every study.
@@ -180,6 +205,7 @@ int main(int argc, char** argv) {
   using Step = std::function<void(int)>;
   std::vector<std::pair<Step, Step>> pairs;
   if (which != "dimse") pairs.push_back({curl, [&](int r) { voxray(r, server.webNode()); }});
+  if (which != "dimse") pairs.push_back({curl, voxrayThenImport});
   if (which != "web") pairs.push_back({getscu, [&](int r) { voxray(r, server.dimseNode()); }});
   if (which != "web") pairs.push_back({findscu, voxrayFind});
   for (int r = 0; r < repeats; ++r)
@@ -206,6 +232,7 @@ int main(int argc, char** argv) {
   ratio(1, 2, "C-GET retrieval / getscu");
   ratio(3, 5, "WADO-RS ready volume / curl");
   ratio(4, 5, "WADO-RS retrieval / curl");
+  ratio(9, 5, "WADO-RS not overlapped / curl");
   ratio(6, 7, "C-FIND / findscu");
   for (const auto& row : rows) {
     if (row.s.empty()) continue;

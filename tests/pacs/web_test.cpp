@@ -11,6 +11,7 @@
 #include <gmock/gmock.h>
 
 #include "pacs_test_support.h"
+#include "voxray/io/dicom_import.h"
 
 namespace voxray::test {
 namespace {
@@ -57,6 +58,50 @@ TEST_F(WebTest, WadoRsDeliversTheSeriesAsOnDisk) { expectRetrievalMatchesDisk(se
 
 TEST_F(WebTest, CancelDuringWadoRsLeavesNoHalfSeries) {
   expectCancelLeavesNothing(server().webNode());
+}
+
+// The import fed each file as it arrives (issue 12's overlap) gives the disk volume, and
+// uses what it decoded on the way (it says so).
+TEST_F(WebTest, WadoRsImportedAsItArrivesIsTheDiskVolume) {
+  PacsCache cache(tempFolder("cache"));
+  auto client = makePacsClient(server().webNode());
+  std::vector<std::string> said;
+  LoadOptions o;
+  o.progress = [&](double, const std::string& what) { said.push_back(what); };
+  DicomImport import(o);
+  CachedSeries entry = cache.retrieve(*client, kPhantomStudy, kPhantomSeries, {}, &import);
+  Volume retrieved = import.finish(entry.folder);
+  EXPECT_EQ(retrieved.dims, glm::ivec3(512, 512, 28));
+  expectSameVolume(retrieved, loadVolume(dicomPath("ct-philips-phantom/S2010")));
+  EXPECT_THAT(said, testing::Contains("Decoded 28 slices as they arrived"));
+}
+
+TEST_F(WebTest, CancelWhileImportingAsItArrivesLeavesNoHalfSeries) {
+  PacsCache cache(tempFolder("cache"));
+  std::atomic<bool> cancel{false};
+  RetrieveOptions options;
+  options.cancel = &cancel;
+  options.progress = [&](const RetrieveProgress& p) {
+    if (p.received == 5) cancel = true;
+  };
+  LoadOptions o;
+  o.cancel = &cancel;
+  DicomImport import(o);
+  auto client = makePacsClient(server().webNode());
+  std::string message;
+  try {
+    cache.retrieve(*client, kPhantomStudy, kPhantomSeries, options, &import);
+    ADD_FAILURE() << "a cancelled retrieval returned";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::Cancelled) << e.what();
+  }
+  expectNothingCached(cache);
+  try {
+    import.finish(cache.root() + "/series");
+    ADD_FAILURE() << "a cancelled import returned";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::Cancelled) << e.what();
+  }
 }
 
 TEST_F(WebTest, StowRsStoresAFileThatQidoThenFinds) {

@@ -1,5 +1,6 @@
 #include "bounded_load.h"
 
+#include <dcmtk/dcmdata/dcistrmb.h>
 #include <dcmtk/dcmdata/dcistrmf.h>
 
 #include <exception>
@@ -16,25 +17,26 @@ namespace {
 // kMaxNestingDepth, which leaves room for ASan's larger frames. Threads have 8 MiB.
 constexpr std::ptrdiff_t kStackBudget = std::ptrdiff_t(2) << 20;
 
-class StackBoundedFileStream : public DcmInputFileStream {
+// STREAM is DCMTK's file or buffer stream.
+template <class Stream>
+class StackBounded : public Stream {
  public:
-  StackBoundedFileStream(const std::string& path, const char* base)
-      : DcmInputFileStream(path.c_str()), base_(base) {}
+  template <class... Args>
+  explicit StackBounded(const char* base, Args&&... args)
+      : Stream(std::forward<Args>(args)...), base_(base) {}
 
   bool tooDeep() const { return tooDeep_; }
 
-  OFBool good() const override { return !tooDeep_ && DcmInputFileStream::good(); }
+  OFBool good() const override { return !tooDeep_ && Stream::good(); }
   OFCondition status() const override {
-    return tooDeep_ ? EC_SeqOrItemContentOverflow : DcmInputFileStream::status();
+    return tooDeep_ ? EC_SeqOrItemContentOverflow : Stream::status();
   }
-  OFBool eos() override { return spent() || DcmInputFileStream::eos(); }
-  offile_off_t avail() override { return spent() ? 0 : DcmInputFileStream::avail(); }
+  OFBool eos() override { return spent() || Stream::eos(); }
+  offile_off_t avail() override { return spent() ? 0 : Stream::avail(); }
   offile_off_t read(void* buf, offile_off_t length) override {
-    return spent() ? 0 : DcmInputFileStream::read(buf, length);
+    return spent() ? 0 : Stream::read(buf, length);
   }
-  offile_off_t skip(offile_off_t length) override {
-    return spent() ? 0 : DcmInputFileStream::skip(length);
-  }
+  offile_off_t skip(offile_off_t length) override { return spent() ? 0 : Stream::skip(length); }
 
  private:
   // The stack grows down on every platform Voxray builds for. The frame address, not a
@@ -49,27 +51,51 @@ class StackBoundedFileStream : public DcmInputFileStream {
   bool tooDeep_ = false;
 };
 
+// A buffer stream cannot be read again later: every value is read at once.
+constexpr Uint32 kReadEverything = 0xFFFFFFFEu;
+
+template <class Stream>
+std::string readBounded(DcmFileFormat& file, StackBounded<Stream>& stream, Uint32 maxReadLength,
+                        const DcmTagKey& stopAt) {
+  if (stream.status().bad())
+    return std::string("cannot be opened (") + stream.status().text() + ")";
+  file.clear();
+  file.transferInit();
+  OFCondition status = file.readUntilTag(stream, EXS_Unknown, EGL_noChange, maxReadLength, stopAt);
+  file.transferEnd();
+  if (stream.tooDeep())
+    return "its sequences are nested deeper than Voxray reads (over " +
+           std::to_string(kMaxNestingDepth) + " levels)";
+  if (status.bad()) return status.text();
+  return {};
+}
+
 }  // namespace
 
 std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 maxReadLength,
                           const DcmTagKey& stopAt) {
   ensureCodecsRegistered();
   try {
-    StackBoundedFileStream stream(path, static_cast<const char*>(__builtin_frame_address(0)));
-    if (stream.status().bad())
-      return std::string("cannot be opened (") + stream.status().text() + ")";
-    file.clear();
-    file.transferInit();
-    OFCondition status =
-        file.readUntilTag(stream, EXS_Unknown, EGL_noChange, maxReadLength, stopAt);
-    file.transferEnd();
-    if (stream.tooDeep())
-      return "its sequences are nested deeper than Voxray reads (over " +
-             std::to_string(kMaxNestingDepth) + " levels)";
-    if (status.bad()) return status.text();
-    return {};
+    StackBounded<DcmInputFileStream> stream(static_cast<const char*>(__builtin_frame_address(0)),
+                                            path.c_str());
+    return readBounded(file, stream, maxReadLength, stopAt);
   } catch (const std::exception& e) {
     // DCMTK is C++ and may throw (std::bad_alloc, std::out_of_range) on damaged input.
+    file.clear();
+    return std::string("the DICOM parser failed (") + e.what() + ")";
+  }
+}
+
+std::string loadDicomBytes(DcmFileFormat& file, std::string_view bytes) {
+  ensureCodecsRegistered();
+  try {
+    StackBounded<DcmInputBufferStream> stream(static_cast<const char*>(__builtin_frame_address(0)));
+    stream.setBuffer(bytes.data(), offile_off_t(bytes.size()));
+    stream.setEos();
+    std::string why = readBounded(file, stream, kReadEverything, DCM_UndefinedTagKey);
+    stream.releaseBuffer();
+    return why;
+  } catch (const std::exception& e) {
     file.clear();
     return std::string("the DICOM parser failed (") + e.what() + ")";
   }

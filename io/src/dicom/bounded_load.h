@@ -7,6 +7,7 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 
 #include <string>
+#include <string_view>
 
 namespace voxray::dicom {
 
@@ -19,5 +20,8 @@ constexpr int kMaxNestingDepth = 256;
 // exception from the parser becomes such a reason too.
 std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 maxReadLength,
                           const DcmTagKey& stopAt = DCM_UndefinedTagKey);
+
+// The same for a whole file's BYTES in memory (every value read; BYTES may go afterwards).
+std::string loadDicomBytes(DcmFileFormat& file, std::string_view bytes);
 
 }  // namespace voxray::dicom

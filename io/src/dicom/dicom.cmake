@@ -3,6 +3,7 @@
 find_package(DCMTK REQUIRED CONFIG)
 pkg_check_modules(OPENJPEG REQUIRED IMPORTED_TARGET libopenjp2)
 target_sources(voxray_io PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/arrived_files.cpp
   ${CMAKE_CURRENT_LIST_DIR}/bounded_load.cpp
   ${CMAKE_CURRENT_LIST_DIR}/codec_registry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/dicom_import.cpp

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <set>
 
+#include "arrived_files.h"
 #include "file_scan.h"
 #include "pixel_decode.h"
 #include "resample.h"
@@ -41,7 +42,9 @@ void throwIfCancelled(const LoadOptions& o, const std::string& input) {
   if (o.cancel && *o.cancel) throw cancelledError(input + ": DICOM import cancelled");
 }
 
-Scan scan(const std::string& input, const LoadOptions& options) {
+// ARRIVED (may be null): files whose headers were read as they arrived; the others are read
+// from disk.
+Scan scan(const std::string& input, const LoadOptions& options, const ArrivedFiles* arrived) {
   Scan s;
   s.input = collectInputFiles(input);
   const auto& files = s.input.files;
@@ -53,7 +56,10 @@ Scan scan(const std::string& input, const LoadOptions& options) {
       files.size(),
       [&](size_t i) {
         std::string why;
-        if (readFrameHeaders(files[i], perFile[i], why) != ScanResult::Image) {
+        if (const ArrivedFiles::File* early = arrived ? arrived->find(files[i]) : nullptr) {
+          perFile[i] = early->frames;
+          for (auto& f : perFile[i]) f.path = files[i];  // as the folder names it
+        } else if (readFrameHeaders(files[i], perFile[i], why) != ScanResult::Image) {
           std::lock_guard lock(mutex);
           ++skippedWhy[why];
         }
@@ -168,21 +174,22 @@ int chooseCandidate(const Scan& s, const std::string& input, const LoadOptions& 
                    "\nChoose one with --series to open it anyway.");
 }
 
-// Decodes every slice of C into VOXELS (slice k at k * slice size); returns the scales.
-std::vector<SliceScale> decodeSlices(const Candidate& c, const LoadOptions& options,
-                                     std::vector<int16_t>& voxels) {
+// Decodes the slices of C not yet DONE into VOXELS (slice k at k * slice size) and their
+// SCALES.
+void decodeSlices(const Candidate& c, const LoadOptions& options, const std::vector<bool>& done0,
+                  std::vector<int16_t>& voxels, std::vector<SliceScale>& scales) {
   const FrameHeader& f0 = c.first();
   const size_t sliceSize = size_t(f0.columns) * size_t(f0.rows);
   std::map<std::string, std::vector<size_t>> byFile;  // frames in file order
-  for (size_t k = 0; k < c.frames.size(); ++k) byFile[c.frames[k].path].push_back(k);
+  for (size_t k = 0; k < c.frames.size(); ++k)
+    if (!done0[k]) byFile[c.frames[k].path].push_back(k);
   std::vector<const std::vector<size_t>*> tasks;
   for (auto& [path, list] : byFile) {
     std::sort(list.begin(), list.end(),
               [&](size_t a, size_t b) { return c.frames[a].frame < c.frames[b].frame; });
     tasks.push_back(&list);
   }
-  std::vector<SliceScale> scales(c.frames.size());
-  std::atomic<size_t> done{0};
+  std::atomic<size_t> done{size_t(std::count(done0.begin(), done0.end(), true))};
   const double air = airValue(f0.modality);
   const size_t total = c.frames.size();
   parallelFor(
@@ -206,6 +213,70 @@ std::vector<SliceScale> decodeSlices(const Candidate& c, const LoadOptions& opti
         }
       },
       options.cancel);
+}
+
+// Moves slice SOURCE[k] of VOXELS to slice k, for every k (SOURCE is a permutation),
+// following its cycles with one slice aside.
+void permuteSlices(std::vector<int16_t>& voxels, size_t sliceSize,
+                   const std::vector<size_t>& source) {
+  std::vector<bool> placed(source.size(), false);
+  std::vector<int16_t> aside(sliceSize);
+  auto slice = [&](size_t k) { return voxels.data() + k * sliceSize; };
+  for (size_t start = 0; start < source.size(); ++start) {
+    if (placed[start] || source[start] == start) continue;
+    std::copy_n(slice(start), sliceSize, aside.data());
+    size_t k = start;
+    while (source[k] != start) {
+      std::copy_n(slice(source[k]), sliceSize, slice(k));
+      placed[k] = true;
+      k = source[k];
+    }
+    std::copy_n(aside.data(), sliceSize, slice(k));
+    placed[k] = true;
+  }
+}
+
+// The slices of C in VOXELS (VOXEL_COUNT of them) and their scales. Slices decoded as their
+// files arrived are used where they fit this candidate (the same slice size and padding
+// value): when they are exactly its slices, the arrival buffer is reordered in place and
+// becomes the volume; the rest is decoded from disk.
+std::vector<SliceScale> assembleSlices(const Candidate& c, const LoadOptions& options,
+                                       ArrivedFiles* arrived, size_t voxelCount,
+                                       std::vector<int16_t>& voxels) {
+  const FrameHeader& f0 = c.first();
+  const size_t sliceSize = size_t(f0.columns) * size_t(f0.rows);
+  const double air = airValue(f0.modality);
+  constexpr size_t kNone = size_t(-1);
+  std::vector<size_t> source(c.frames.size(), kNone);
+  size_t found = 0;
+  if (arrived && arrived->sliceSize() == sliceSize) {
+    for (size_t k = 0; k < c.frames.size(); ++k) {
+      const ArrivedFiles::File* file = arrived->find(c.frames[k].path);
+      if (!file || size_t(c.frames[k].frame) >= file->slots.size()) continue;
+      const size_t slot = file->slots[size_t(c.frames[k].frame)];
+      if (arrived->slots()[slot].air != air) continue;
+      source[k] = slot;
+      ++found;
+    }
+  }
+  std::vector<SliceScale> scales(c.frames.size());
+  for (size_t k = 0; k < c.frames.size(); ++k)
+    if (source[k] != kNone) scales[k] = arrived->slots()[source[k]].scale;
+  if (found > 0 && found == c.frames.size() && arrived->slots().size() == found) {
+    permuteSlices(arrived->voxels(), sliceSize, source);
+    voxels = arrived->release();
+    report(options, 0.9, "Decoded " + std::to_string(found) + " slices as they arrived");
+    return scales;
+  }
+  voxels.resize(voxelCount);
+  std::vector<bool> done(c.frames.size(), false);
+  for (size_t k = 0; k < c.frames.size(); ++k) {
+    if (source[k] == kNone) continue;
+    std::copy_n(arrived->voxels().data() + source[k] * sliceSize, sliceSize,
+                voxels.data() + k * sliceSize);
+    done[k] = true;
+  }
+  decodeSlices(c, options, done, voxels, scales);
   return scales;
 }
 
@@ -250,7 +321,7 @@ std::string sampleTypeName(const FrameHeader& f) {
 }  // namespace
 
 DicomListing listDicomSeries(const std::string& input, const LoadOptions& options) {
-  Scan s = scan(input, options);
+  Scan s = scan(input, options, nullptr);
   DicomListing listing;
   listing.filesScanned = int(s.input.files.size());
   listing.filesSkipped = s.skipped;
@@ -263,8 +334,14 @@ DicomListing listDicomSeries(const std::string& input, const LoadOptions& option
   return listing;
 }
 
-Volume importDicom(const std::string& input, const LoadOptions& options) {
-  Scan s = scan(input, options);
+namespace {
+
+Volume importWith(const std::string& input, const LoadOptions& options, ArrivedFiles* arrived) {
+  if (arrived) {
+    arrived->drain(options.cancel);
+    throwIfCancelled(options, input);
+  }
+  Scan s = scan(input, options, arrived);
   std::vector<std::string> warnings;
   const int index = chooseCandidate(s, input, options, warnings);
   const Candidate& c = s.candidates[size_t(index)];
@@ -281,8 +358,7 @@ Volume importDicom(const std::string& input, const LoadOptions& options) {
   checkPlausibleSize(c, std::max(voxelCount, targetCount) * sizeof(int16_t));
 
   Volume v;
-  v.voxels.resize(voxelCount);
-  std::vector<SliceScale> scales = decodeSlices(c, options, v.voxels);
+  std::vector<SliceScale> scales = assembleSlices(c, options, arrived, voxelCount, v.voxels);
   throwIfCancelled(options, input);
   CommonScale common = chooseCommonScale(scales);
   const size_t sliceSize = size_t(src.dims.x) * size_t(src.dims.y);
@@ -322,6 +398,25 @@ Volume importDicom(const std::string& input, const LoadOptions& options) {
   for (auto& note : s.notes) v.warnings.push_back(note);
   report(options, 1.0, "Loaded");
   return v;
+}
+
+}  // namespace
+
+Volume importDicom(const std::string& input, const LoadOptions& options) {
+  return importWith(input, options, nullptr);
+}
+
+DicomImport::DicomImport(LoadOptions options)
+    : options_(std::move(options)), arrived_(std::make_unique<ArrivedFiles>()) {}
+
+DicomImport::~DicomImport() = default;
+
+void DicomImport::add(const std::string& path, std::string bytes) {
+  arrived_->add(path, std::move(bytes));
+}
+
+Volume DicomImport::finish(const std::string& input) {
+  return importWith(input, options_, arrived_.get());
 }
 
 }  // namespace voxray

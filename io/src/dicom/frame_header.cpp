@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 namespace voxray::dicom {
 namespace {
@@ -141,15 +142,21 @@ bool hasDicomPreamble(const std::string& path) {
   return in.read(buf, sizeof buf) && std::memcmp(buf + 128, "DICM", 4) == 0;
 }
 
-}  // namespace
+bool startsAsDicom(std::string_view bytes) {
+  return bytes.size() >= 132 && bytes.substr(128, 4) == "DICM";
+}
 
-ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& out,
-                            std::string& why) {
-  DcmFileFormat file;
-  const std::string failure = loadDicomFile(file, path, 4096, DCM_PixelData);
+// The file's size in bytes, asked only when needed; nothing when it cannot be told.
+using FileSize = std::function<std::optional<uintmax_t>()>;
+
+// FAILURE: why FILE could not be parsed (empty when it was); PREAMBLE: whether the file
+// starts as DICOM does.
+ScanResult headersOf(DcmFileFormat& file, const std::string& failure,
+                     const std::function<bool()>& preamble, const FileSize& fileSize,
+                     const std::string& path, std::vector<FrameHeader>& out, std::string& why) {
   DcmDataset* ds = file.getDataset();
   if (!failure.empty() || !ds) {
-    why = hasDicomPreamble(path) ? "damaged DICOM (" + failure + ")" : "not a DICOM file";
+    why = preamble() ? "damaged DICOM (" + failure + ")" : "not a DICOM file";
     return ScanResult::NotDicom;
   }
   const TextDecoder text(*ds);
@@ -212,9 +219,9 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
     const uintmax_t bits = uintmax_t(frames) * uintmax_t(h.rows) * uintmax_t(h.columns) *
                            uintmax_t(std::max(1, h.samplesPerPixel)) *
                            uintmax_t(std::max(1, h.bitsAllocated));
-    std::error_code ec;
-    const uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && bits / 8 > size) {
+    const std::optional<uintmax_t> known = fileSize();
+    const uintmax_t size = known.value_or(0);
+    if (known && bits / 8 > size) {
       why = "the header describes " + std::to_string(frames) + " frame(s) of " +
             std::to_string(h.columns) + "x" + std::to_string(h.rows) + " pixels (" +
             std::to_string(bits / 8) + " bytes) but the file holds only " + std::to_string(size) +
@@ -236,6 +243,30 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
     out.push_back(std::move(fh));
   }
   return ScanResult::Image;
+}
+
+}  // namespace
+
+ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& out,
+                            std::string& why) {
+  DcmFileFormat file;
+  const std::string failure = loadDicomFile(file, path, 4096, DCM_PixelData);
+  auto size = [&]() -> std::optional<uintmax_t> {
+    std::error_code ec;
+    const uintmax_t bytes = std::filesystem::file_size(path, ec);
+    if (ec) return std::nullopt;
+    return bytes;
+  };
+  return headersOf(
+      file, failure, [&] { return hasDicomPreamble(path); }, size, path, out, why);
+}
+
+ScanResult readFrameHeaders(const std::string& path, std::string_view bytes, DcmFileFormat& file,
+                            std::vector<FrameHeader>& out, std::string& why) {
+  const std::string failure = loadDicomBytes(file, bytes);
+  return headersOf(
+      file, failure, [&] { return startsAsDicom(bytes); },
+      [&] { return std::optional<uintmax_t>(bytes.size()); }, path, out, why);
 }
 
 std::string transferSyntaxName(const std::string& uid) {

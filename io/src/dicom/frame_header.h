@@ -4,11 +4,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "voxray/io/volume.h"
+
+class DcmFileFormat;
 
 namespace voxray::dicom {
 
@@ -49,6 +52,10 @@ enum class ScanResult { Image, NotDicom, NoImage };
 // frame to OUT. WHY says, for NotDicom/NoImage, what the file was.
 ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& out,
                             std::string& why);
+// The same for the whole file's BYTES in memory (what would be at PATH), parsed in full into
+// FILE (pixel data included), so its pixels can be decoded without reading it again.
+ScanResult readFrameHeaders(const std::string& path, std::string_view bytes, DcmFileFormat& file,
+                            std::vector<FrameHeader>& out, std::string& why);
 
 // Human name of a transfer syntax UID ("JPEG 2000 lossless", ...), or the UID itself.
 std::string transferSyntaxName(const std::string& uid);

@@ -73,7 +73,7 @@ void fragmentRange(DcmPixelSequence* seq, int frame, int frames, Uint32& first, 
 
 struct PixelFile::Impl {
   std::string path;
-  DcmFileFormat file;
+  std::unique_ptr<DcmFileFormat> file = std::make_unique<DcmFileFormat>();
   DcmDataset* ds = nullptr;
   DcmPixelData* pixels = nullptr;
   E_TransferSyntax xfer = EXS_Unknown;
@@ -185,10 +185,21 @@ struct PixelFile::Impl {
 
 PixelFile::PixelFile(const std::string& path) : impl_(std::make_unique<Impl>()) {
   impl_->path = path;
-  if (std::string why = loadDicomFile(impl_->file, path, DCM_MaxReadLength); !why.empty())
+  if (std::string why = loadDicomFile(*impl_->file, path, DCM_MaxReadLength); !why.empty())
     impl_->fail("cannot be read (" + why +
                 "); the file is damaged or incomplete: copy it again or remove it");
-  impl_->ds = impl_->file.getDataset();
+  findPixels();
+}
+
+PixelFile::PixelFile(const std::string& path, std::unique_ptr<DcmFileFormat> loaded)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->path = path;
+  impl_->file = std::move(loaded);
+  findPixels();
+}
+
+void PixelFile::findPixels() {
+  impl_->ds = impl_->file->getDataset();
   impl_->xfer = impl_->ds->getOriginalXfer();
   DcmElement* element = nullptr;
   if (impl_->ds->findAndGetElement(DCM_PixelData, element).bad() || !element)

@@ -8,12 +8,16 @@
 
 #include "frame_header.h"
 
+class DcmFileFormat;
+
 namespace voxray::dicom {
 
 class PixelFile {
  public:
   // Loads the whole file. Throws Error (Input) naming PATH when it is damaged.
   explicit PixelFile(const std::string& path);
+  // A file already parsed in full (readFrameHeaders from its bytes); PATH names it in errors.
+  PixelFile(const std::string& path, std::unique_ptr<DcmFileFormat> loaded);
   ~PixelFile();
   PixelFile(const PixelFile&) = delete;
   PixelFile& operator=(const PixelFile&) = delete;
@@ -23,6 +27,7 @@ class PixelFile {
   void frameValues(const FrameHeader& h, std::vector<int32_t>& out);
 
  private:
+  void findPixels();
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -1,6 +1,10 @@
 #include "cancellable_transport.h"
 
+#include <fcntl.h>
+#include <netdb.h>
 #include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
@@ -56,6 +60,46 @@ class CancellableConnection : public DcmTCPConnection {
 DcmTransportConnection* CancellableTransport::createConnection(DcmNativeSocketType socket,
                                                                OFBool /*useSecureLayer*/) {
   return new CancellableConnection(socket, cancel_);
+}
+
+ConnectCheck checkConnect(const std::string& host, int port, int timeoutSec,
+                          const std::atomic<bool>* cancel) {
+  addrinfo hints{};
+  hints.ai_family = AF_UNSPEC;
+  hints.ai_socktype = SOCK_STREAM;
+  addrinfo* found = nullptr;
+  if (getaddrinfo(host.c_str(), std::to_string(port).c_str(), &hints, &found) != 0 || !found)
+    return ConnectCheck::Refused;  // DCMTK's own attempt says the host is unknown
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSec);
+  ConnectCheck result = ConnectCheck::Refused;
+  for (addrinfo* a = found; a && result != ConnectCheck::Connected; a = a->ai_next) {
+    int s = socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, a->ai_protocol);
+    if (s < 0) continue;
+    int rc = connect(s, a->ai_addr, a->ai_addrlen);
+    if (rc == 0) result = ConnectCheck::Connected;
+    while (rc != 0 && errno == EINPROGRESS) {
+      if (cancel && cancel->load()) {
+        result = ConnectCheck::Cancelled;
+        break;
+      }
+      if (std::chrono::steady_clock::now() > deadline) {
+        result = ConnectCheck::TimedOut;
+        break;
+      }
+      pollfd p{s, POLLOUT, 0};
+      if (poll(&p, 1, kCancelPollMs) > 0) {
+        int error = 0;
+        socklen_t len = sizeof error;
+        getsockopt(s, SOL_SOCKET, SO_ERROR, &error, &len);
+        if (error == 0) result = ConnectCheck::Connected;
+        break;
+      }
+    }
+    close(s);
+    if (result == ConnectCheck::Cancelled || result == ConnectCheck::TimedOut) break;
+  }
+  freeaddrinfo(found);
+  return result;
 }
 
 }  // namespace voxray::pacs

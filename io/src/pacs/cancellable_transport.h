@@ -4,6 +4,7 @@
 // request, each PDU, a full send buffer) block up to the node's timeout (30 s by default), so
 // without it a node that takes the TCP connection and never answers holds a cancel that long.
 #include <atomic>
+#include <string>
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmnet/dcmlayer.h>
@@ -22,5 +23,13 @@ class CancellableTransport : public DcmTransportLayer {
 
 // How often a wait looks at the cancel flag: a cancel returns about this long after it is set.
 constexpr int kCancelPollMs = 50;
+
+// DCMTK opens the TCP connection inside the association request, before any transport layer
+// is asked, and waits for it up to the node's timeout: against a host that drops the
+// connection request, a cancel would wait that long. So the connection is first opened here,
+// polling *CANCEL, and closed again (DCMTK then opens its own, at once).
+enum class ConnectCheck { Connected, Refused, TimedOut, Cancelled };
+ConnectCheck checkConnect(const std::string& host, int port, int timeoutSec,
+                          const std::atomic<bool>* cancel);
 
 }  // namespace voxray::pacs

@@ -301,6 +301,17 @@ class DimseClient : public PacsClient {
       scu->transport = std::make_unique<CancellableTransport>(cancel);
       check(what + ": network setup", scu->useTransport(scu->transport.get()));
     }
+    if (cancel) {
+      ConnectCheck c = checkConnect(node_.host, node_.port, node_.timeoutSec, cancel);
+      if (c == ConnectCheck::Cancelled)
+        throw cancelledError(what + " cancelled: PACS " + node_.label() +
+                             " had not accepted the TCP connection; nothing was exchanged");
+      if (c == ConnectCheck::TimedOut)
+        throw inputError("PACS " + node_.label() + ": " + what +
+                         ": the host did not accept the TCP connection within " +
+                         std::to_string(node_.timeoutSec) +
+                         " s: check that the node is running and its host and port are right");
+    }
     OFCondition cond = scu->negotiateAssociation();
     if (cancel && cancel->load())
       throw cancelledError(cond.good() ? what + " cancelled; nothing was exchanged"

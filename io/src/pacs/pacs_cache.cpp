@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "voxray/io/dicom_import.h"
 #include "voxray/io/error.h"
 
 namespace fs = std::filesystem;
@@ -174,15 +175,24 @@ void PacsCache::evict(std::vector<CachedSeries>& entries,
 }
 
 CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid,
-                                 const std::string& seriesUid, const RetrieveOptions& options) {
+                                 const std::string& seriesUid, const RetrieveOptions& options,
+                                 DicomImport* import) {
   if (auto hit = find(seriesUid)) return *hit;
   Staging staging;
   std::string pattern = root_ + "/staging/" + folderName(seriesUid) + "-XXXXXX";
   if (!mkdtemp(pattern.data())) throw fullError("Cannot create a staging folder");
   staging.path = pattern;
+  const std::string folder = root_ + "/series/" + folderName(seriesUid);
+  RetrieveOptions withImport = options;
+  if (import)
+    withImport.written = [&](const std::string& path, std::string_view content) {
+      if (options.written) options.written(path, content);
+      // The staging folder becomes FOLDER once the series is complete.
+      import->add(folder + "/" + fs::path(path).filename().string(), std::string(content));
+    };
   std::vector<std::string> files;
   try {
-    files = client.retrieveSeries(studyUid, seriesUid, pattern, options);
+    files = client.retrieveSeries(studyUid, seriesUid, pattern, withImport);
   } catch (const Error& e) {
     // Judged before the staged files go: they are what filled the disk.
     if (e.kind() != Error::Kind::Cancelled && fileSystemFull(pattern))
@@ -190,8 +200,7 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
     throw;
   }
   if (options.cancel && options.cancel->load()) throw cancelledError("Retrieval cancelled");
-  CachedSeries entry{studyUid, seriesUid, root_ + "/series/" + folderName(seriesUid),
-                     0,        now(),     int(files.size())};
+  CachedSeries entry{studyUid, seriesUid, folder, 0, now(), int(files.size())};
   entry.bytes = diskBytes(staging.path);
   std::error_code ec;
   fs::remove_all(entry.folder, ec);  // a stale folder the index no longer knows

@@ -151,6 +151,7 @@ class WebClient : public PacsClient {
       if (!out.flush())
         throw outputError("cannot write " + path + ": the disk may be full; free space");
       files.push_back(path);
+      if (options.written) options.written(path, content);
       progress.received = int(files.size());
       progress.megabytes += double(content.size()) / 1e6;
       if (options.progress) options.progress(progress);

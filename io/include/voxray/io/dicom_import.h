@@ -3,6 +3,7 @@
 // Volume in physical units (HU for CT). Series are discovered by SeriesInstanceUID and
 // split where geometry differs; the largest true volume is chosen unless the caller
 // selects another. Only std and GLM types here: DCMTK and OpenJPEG stay private.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,9 @@
 #include "voxray/io/volume.h"
 
 namespace voxray {
+namespace dicom {
+class ArrivedFiles;
+}
 
 // One candidate volume found in the input, described from headers only (no pixels read).
 struct SeriesInfo {
@@ -53,5 +57,28 @@ DicomListing listDicomSeries(const std::string& input, const LoadOptions& option
 // threads and options.cancel abandons the load (throws Error). Throws Error (Input) with
 // a message naming the file and the reason when the data cannot be one volume.
 Volume importDicom(const std::string& input, const LoadOptions& options = {});
+
+// importDicom for files that arrive while the import runs (a PACS retrieval into a folder):
+// each file handed to add() has its headers read and its pixels decoded on a worker at once,
+// and finish() imports INPUT as importDicom(INPUT, OPTIONS) does, using that work for the
+// files at the same paths and reading the others from disk. The volume and the errors are
+// importDicom's: what the worker could not do is done again from the file on disk.
+class DicomImport {
+ public:
+  explicit DicomImport(LoadOptions options = {});
+  ~DicomImport();  // stops the worker, drops what it did
+  DicomImport(const DicomImport&) = delete;
+  DicomImport& operator=(const DicomImport&) = delete;
+
+  // BYTES: the whole content of the file at PATH (there, or written there before finish()).
+  // May be called from any one thread at a time.
+  void add(const std::string& path, std::string bytes);
+  // Waits for the worker (options.cancel stops the wait and throws Cancelled), then imports.
+  Volume finish(const std::string& input);
+
+ private:
+  LoadOptions options_;
+  std::unique_ptr<dicom::ArrivedFiles> arrived_;
+};
 
 }  // namespace voxray

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace voxray {
@@ -82,6 +83,9 @@ struct RetrieveProgress {
 struct RetrieveOptions {
   std::function<void(const RetrieveProgress&)> progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;              // true: stop, throw Cancelled
+  // Each file as it is written, with its content, so that its import can start during the
+  // transfer. May be empty; DICOMweb calls it, DIMSE (files written by DCMTK) does not.
+  std::function<void(const std::string& path, std::string_view content)> written;
 };
 
 class PacsClient {

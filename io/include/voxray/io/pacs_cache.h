@@ -14,6 +14,8 @@
 
 namespace voxray {
 
+class DicomImport;
+
 struct CachedSeries {
   std::string studyUid, seriesUid;
   std::string folder;    // absolute; loadVolume() opens it
@@ -36,8 +38,11 @@ class PacsCache {
   // The series from the cache, else retrieved from CLIENT first. Throws Cancelled on cancel
   // and the client's error on failure (Output saying the cache is full when its file system
   // is); in every case the cache is as before.
+  // IMPORT (may be null) gets each file as it arrives, under the path it will have in the
+  // cache, so that IMPORT.finish(returned folder) has little left to do.
   CachedSeries retrieve(PacsClient& client, const std::string& studyUid,
-                        const std::string& seriesUid, const RetrieveOptions& options = {});
+                        const std::string& seriesUid, const RetrieveOptions& options = {},
+                        DicomImport* import = nullptr);
   std::vector<CachedSeries> entries() const;
   // A folder under studies/ that shows the cached SERIES of one study together (links to
   // their files, made afresh), so the series picker lists them as it lists a study folder.
