@@ -59,11 +59,13 @@ void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t glo
 }
 
 void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
-                          const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive) {
+                          const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive,
+                          bool packets) {
   int m = mode == Mode::Iso ? 0 : mode == Mode::Dvr ? 1 : 2;
-  // iso depends on the range only; dvr on which table entries are not transparent and on
-  // where the table sits in stored units.
-  std::vector<float> key = {float(m), k.values.s[0], k.values.s[1]};
+  // iso depends on the range only (and, for the one-sided distances, on packets reading
+  // them); dvr on which table entries are not transparent and on where the table sits in
+  // stored units.
+  std::vector<float> key = {float(m), k.values.s[0], k.values.s[1], float(packets)};
   if (m == 2) key = {float(m), k.dvr.s[0]};
   std::vector<int> opaque;
   if (m == 1) {
@@ -98,7 +100,9 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     size_t global = (cells + 63) / 64 * 64;
     q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
     cl_int4 dims = {{cells_.dims.x, cells_.dims.y, cells_.dims.z, 0}};
-    if (m == 0) aheadDistances(cl, dims, global);  // first: it may enlarge leap_
+    // Only iso packets read the one-sided distances (one ray per work-item leaps by the
+    // two-sided ones). First: it may enlarge leap_.
+    if (m == 0 && packets) aheadDistances(cl, dims, global);
     // Distances to the nearest occupied cell, so rays leap whole empty cubes at once:
     // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
     cl::Kernel pass = cl.kernel("classify.cl", "leap_distance", "");

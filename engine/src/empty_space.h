@@ -22,15 +22,16 @@ class EmptySpace {
   // Brings the occupancy up to date for a frame whose parameters k are already enqueued
   // in params and lutBuffer (the queue is in order). mip needs none: it reads the min/max
   // directly. adaptive (dvr): also each cell's step level (kernels/classify.cl,
-  // adaptive_level) behind the distances in leap().
+  // adaptive_level) behind the distances in leap(). packets (iso): also the one-sided
+  // distances that only packets read.
   void classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
-                const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive);
+                const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive, bool packets);
   const glm::ivec3& dims() const { return cells_.dims; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
   // capped at MAX_LEAP (kernels/classify.cl); then, after every cell's, each cell's
   // adaptive step level (valid after an adaptive dvr classification), or after an iso
-  // classification the eight one-sided distances (kernels/skip_ahead_lanes.cl).
+  // classification for packets the eight one-sided distances (kernels/skip_ahead_lanes.cl).
   const cl::Buffer& leap() const { return leap_; }
   int classifications() const { return classifications_; }
 

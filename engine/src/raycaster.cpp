@@ -287,7 +287,8 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
     bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
-      m.space.classify(m.cl, m.paramsBuffer, m.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0);
+      m.space.classify(m.cl, m.paramsBuffer, m.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
+                       m.packets());
     if (sw.LIGHTING) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
       storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;
