@@ -71,7 +71,7 @@ inline void iso_packet(PACKET_ARGS) {
   intN ahead = ahead_baseN(P, &r);  // this ray's one-sided distances (skip_ahead_lanes.cl)
   while (any(active)) {
     if (ESS) {
-      active = leap_packet_aheadN(leap, P, &r, ahead, &i, &check, active, step);
+      active = leap_packetN(leap, range, P, &r, ahead, &i, &check, active, step, false, false);
       if (!any(active)) break;
     }
     // ISO_BATCH samples at once: their loads (mostly cache misses on a large volume) are
@@ -229,7 +229,7 @@ inline void dvr_packet(PACKET_ARGS) {
     if (ESS) {
       // Waiting for every lane took 3 % less CPU time than iso's half (CThead, VTK's
       // transfer function, both orbits).
-      active = leap_packetN(leap, range, P, &r, &i, &check, active, step, true, true);
+      active = leap_packetN(leap, range, P, &r, (intN)(0), &i, &check, active, step, true, true);
       if (!any(active)) break;
     }
     floatN sa[DVR_BATCH], sb[DVR_BATCH], t[DVR_BATCH], value[DVR_BATCH], c[DVR_BATCH][4];
@@ -460,8 +460,10 @@ inline void mip_packet(__global const short* restrict vol, __constant RaycastPar
     intN end = r.n;
     if (ESS) {
       floatN floor_v = fmax(vmax, low);
-      i = select(i, ess_leapN(leap, range, P, &r, i, active, step, false, true, floor_v, &check),
-                 active);
+      i = select(
+          i,
+          ess_leapN(leap, range, P, &r, (intN)(0), i, active, step, false, true, floor_v, &check),
+          active);
       active &= i <= r.n;
       if (!any(active)) break;
       end = min(check - 1, r.n);

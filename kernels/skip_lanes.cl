@@ -45,9 +45,10 @@ inline floatN cell_maxN(__global const short2* range, intN k) {
 
 // ess_leap (skip.cl) for the lanes in `need`: returns their next index, sets their *check.
 // mip also passes an occupied cell whose max cannot raise a lane's floor (its running
-// maximum, or the window's low end), as ess_next_mip does.
-inline intN ess_leapN(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, intN i, intN need,
-                      float step, bool segments, bool mip, floatN floor_v, intN* check) {
+// maximum, or the window's low end), as ess_next_mip does. Each lane reads its distances
+// at `base` in leap: 0 for the two-sided ones, iso's one-sided region (skip_ahead_lanes.cl).
+inline intN ess_leapN(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, intN base, intN i,
+                      intN need, float step, bool segments, bool mip, floatN floor_v, intN* check) {
   int4 last = P->cells - 1;
   floatN nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
   floatN t_land = -FLT_MAX, t = ray_tN(r, i, step, segments);  // as in ess_leap
@@ -55,8 +56,8 @@ inline intN ess_leapN(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r
   int guard = last.x + last.y + last.z + 16;
   for (int g = 0; g < guard && any(pending); ++g) {
     intN cx, cy, cz;
-    intN k = cellN(P, r, t, pending, &cx, &cy, &cz);
-#define LEAP_LANE(l, n) leap[k.s##l]
+    intN k = cellN(P, r, t, pending, &cx, &cy, &cz), at = k + base;
+#define LEAP_LANE(l, n) leap[at.s##l]
     intN d = convert_intN((ucharN)(LANE_LIST(LEAP_LANE)));
 #undef LEAP_LANE
     floatN t_exit = cube_exitN(P, r, cx, cy, cz, max(d - 1, 0));
@@ -82,12 +83,14 @@ inline intN ess_leapN(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r
 // their occupied cell, ess_leapN moves those on. Leaping is optional (sampling on is
 // always right) and a call costs every lane, so it waits for `every_lane` of them or for
 // at least half. Returns the lanes still active.
-inline intN leap_packetN(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, intN* i,
-                         intN* check, intN active, float step, bool segments, bool every_lane) {
+inline intN leap_packetN(CELL_ARGS, __constant RaycastParams* P, const RayPacket* r, intN base,
+                         intN* i, intN* check, intN active, float step, bool segments,
+                         bool every_lane) {
   intN need = active & (*i >= *check);
   int n = count_lanes(need), all = count_lanes(active);
   if (n == 0 || (every_lane ? n < all : 2 * n < all)) return active;
-  *i = select(*i, ess_leapN(leap, range, P, r, *i, need, step, segments, false, 0.0f, check), need);
+  *i = select(*i, ess_leapN(leap, range, P, r, base, *i, need, step, segments, false, 0.0f, check),
+              need);
   return active & ~(need & (*i > r->n));
 }
 
