@@ -111,6 +111,36 @@ TEST(DimseFaultTest, ServerKilledDuringCGetLeavesNoHalfSeries) {
   expectNothingCached(cache);
 }
 
+// A C-STORE to NODE with a cancel set 0.5 s after it starts: how it failed, and how long
+// after the cancel it returned.
+struct CancelledSend {
+  Error::Kind kind = Error::Kind::Input;
+  std::string message;
+  double secondsAfterCancel = 0;
+};
+CancelledSend sendCancelledAfterHalfASecond(const PacsNode& node) {
+  std::atomic<bool> cancel{false};
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point cancelledAt;
+  std::thread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    cancelledAt = Clock::now();
+    cancel = true;
+  });
+  CancelledSend send;
+  try {
+    makePacsClient(node)->store({dicomPath("ct-philips-phantom/S2010/I10")}, &cancel);
+    ADD_FAILURE() << "a send to " << node.label() << ", which never answers, returned";
+  } catch (const Error& e) {
+    send.kind = e.kind();
+    send.message = e.what();
+  }
+  const auto returnedAt = Clock::now();
+  canceller.join();
+  send.secondsAfterCancel = std::chrono::duration<double>(returnedAt - cancelledAt).count();
+  return send;
+}
+
 // A node that takes the TCP connection and never answers the association request: a socket
 // that listens and never accepts (the kernel completes the handshake for its backlog). A
 // cancel during that wait returns within 2 s of being set (the connection looks at the flag
@@ -121,31 +151,13 @@ TEST(DimseStallTest, CancelWhileTheNodeNeverAnswersTheAssociationReturnsAtOnce) 
   int listener = loopbackSocket(port, true);
   PacsNode node = parsePacsNode("dicom://STALLED@127.0.0.1:" + std::to_string(port));
   ASSERT_EQ(node.timeoutSec, 30);
-  std::atomic<bool> cancel{false};
-  using Clock = std::chrono::steady_clock;
-  Clock::time_point cancelledAt;
-  std::thread canceller([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    cancelledAt = Clock::now();
-    cancel = true;
-  });
-  std::string message;
-  Error::Kind kind = Error::Kind::Input;
-  try {
-    makePacsClient(node)->store({dicomPath("ct-philips-phantom/S2010/I10")}, &cancel);
-    ADD_FAILURE() << "a send to a node that never answers returned";
-  } catch (const Error& e) {
-    kind = e.kind();
-    message = e.what();
-  }
-  const auto returnedAt = Clock::now();
-  canceller.join();
+  const CancelledSend send = sendCancelledAfterHalfASecond(node);
   close(listener);
-  EXPECT_EQ(kind, Error::Kind::Cancelled) << message;
-  EXPECT_THAT(message, testing::AllOf(HasSubstr("C-STORE cancelled"), HasSubstr(node.label()),
-                                      HasSubstr("had not answered the association request"),
-                                      HasSubstr("nothing was exchanged")));
-  EXPECT_LT(std::chrono::duration<double>(returnedAt - cancelledAt).count(), 2.0);
+  EXPECT_EQ(send.kind, Error::Kind::Cancelled) << send.message;
+  EXPECT_THAT(send.message, testing::AllOf(HasSubstr("C-STORE cancelled"), HasSubstr(node.label()),
+                                           HasSubstr("had not answered the association request"),
+                                           HasSubstr("nothing was exchanged")));
+  EXPECT_LT(send.secondsAfterCancel, 2.0);
 }
 
 // A host that drops the connection request: a listener whose accept queue (backlog 0) is
@@ -161,33 +173,15 @@ TEST(DimseStallTest, CancelWhileTheHostDropsTheTcpConnectReturnsAtOnce) {
   addr.sin_port = htons(uint16_t(port));
   ASSERT_EQ(connect(filler, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
   PacsNode node = parsePacsNode("dicom://DROPPED@127.0.0.1:" + std::to_string(port));
-  std::atomic<bool> cancel{false};
-  using Clock = std::chrono::steady_clock;
-  Clock::time_point cancelledAt;
-  std::thread canceller([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    cancelledAt = Clock::now();
-    cancel = true;
-  });
-  std::string message;
-  Error::Kind kind = Error::Kind::Input;
-  try {
-    makePacsClient(node)->store({dicomPath("ct-philips-phantom/S2010/I10")}, &cancel);
-    ADD_FAILURE() << "a send to a host that drops the connection returned";
-  } catch (const Error& e) {
-    kind = e.kind();
-    message = e.what();
-  }
-  const auto returnedAt = Clock::now();
-  canceller.join();
+  const CancelledSend send = sendCancelledAfterHalfASecond(node);
   close(filler);
   close(listener);
-  EXPECT_EQ(kind, Error::Kind::Cancelled) << message;
-  EXPECT_THAT(message, testing::AllOf(HasSubstr("C-STORE cancelled"), HasSubstr(node.label()),
-                                      HasSubstr("had not accepted the TCP connection"),
-                                      HasSubstr("nothing was exchanged")));
+  EXPECT_EQ(send.kind, Error::Kind::Cancelled) << send.message;
+  EXPECT_THAT(send.message, testing::AllOf(HasSubstr("C-STORE cancelled"), HasSubstr(node.label()),
+                                           HasSubstr("had not accepted the TCP connection"),
+                                           HasSubstr("nothing was exchanged")));
   // 2 s: the 50 ms poll, with room for a loaded machine; the node's timeout is 30 s.
-  EXPECT_LT(std::chrono::duration<double>(returnedAt - cancelledAt).count(), 2.0);
+  EXPECT_LT(send.secondsAfterCancel, 2.0);
 }
 
 }  // namespace

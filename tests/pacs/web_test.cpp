@@ -88,7 +88,6 @@ TEST_F(WebTest, CancelWhileImportingAsItArrivesLeavesNoHalfSeries) {
   o.cancel = &cancel;
   DicomImport import(o);
   auto client = makePacsClient(server().webNode());
-  std::string message;
   try {
     cache.retrieve(*client, kPhantomStudy, kPhantomSeries, options, &import);
     ADD_FAILURE() << "a cancelled retrieval returned";
