@@ -106,27 +106,43 @@ void checkDataFile(const std::string& path, const MetaImage& image) {
 }
 
 // MetaIO copies each header field's name into a 255-byte array with strcpy (an abort under
-// _FORTIFY_SOURCE, heap corruption otherwise; libFuzzer found both), so a header line longer
-// than any real one is refused first. The header ends at ElementDataFile; data may follow.
+// _FORTIFY_SOURCE, heap corruption otherwise; libFuzzer found both), so a name longer than any
+// real one is refused first. MetaIO reads a name up to '=', ':' or a line end, and a line
+// without a separator makes it skip to the next '=' on a later line, past where a check of
+// lines would stop; so every header line up to the ElementDataFile field (where MetaIO stops
+// and data may follow) must be blank or "Name = value" with a short name.
 void checkHeaderLines(const std::string& path) {
-  constexpr size_t kLongestLine = 250;
+  constexpr size_t kLongestLine = 250, kLongestHeader = 64 * 1024;
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  for (int n = 0; n < 1000 && std::getline(in, line); ++n) {
+  size_t read = 0;
+  for (int n = 1; std::getline(in, line); ++n) {
+    const std::string where = path + ": header line " + std::to_string(n);
     if (line.size() > kLongestLine)
-      throw inputError(path + ": header line " + std::to_string(n + 1) + " is " +
-                       std::to_string(line.size()) + " characters long (at most " +
+      throw inputError(where + " is " + std::to_string(line.size()) + " characters long (at most " +
                        std::to_string(kLongestLine) + " are read); the file is damaged");
+    read += line.size() + 1;
+    const size_t first = line.find_first_not_of(" \t\r\v\f");
+    if (first == std::string::npos) continue;
+    const size_t sep = line.find_first_of("=:\r", first);
+    if (sep == std::string::npos || line[sep] == '\r')
+      throw inputError(where + " is not a 'Name = value' field; the file is damaged");
+    const size_t last = line.find_last_not_of(" \t\v\f", sep - 1);
+    const std::string name =
+        last == std::string::npos || last < first ? "" : line.substr(first, last - first + 1);
     // MetaIO reads NDims numbers for each array field: a huge NDims reads (hangs) for ever.
-    if (line.rfind("NDims", 0) == 0) {
-      const size_t eq = line.find('=');
-      const std::string value = eq == std::string::npos ? "" : line.substr(eq + 1);
+    if (name == "NDims") {
+      const std::string value = line.substr(sep + 1);
       const long dims = std::strtol(value.c_str(), nullptr, 10);
       if (dims < 2 || dims > 10)
         throw inputError(path + ": NDims is '" + value + "'; Voxray opens 2 to 10 dimensions");
     }
-    if (line.find("ElementDataFile") != std::string::npos) return;
+    if (name == "ElementDataFile") return;
+    if (read > kLongestHeader) break;
   }
+  throw inputError(path + ": no ElementDataFile field in its header (within the first " +
+                   std::to_string(kLongestHeader / 1024) +
+                   " KiB); not a MetaImage file, or a damaged one");
 }
 
 }  // namespace

@@ -145,7 +145,10 @@ TEST(FormatsBadFiles, FuzzerRegressionsEndInTheirMessages) {
       {"mhd-pattern-metaio-leak.mha", "is not a slice pattern Voxray reads"},
       {"mha-long-header-line-metaio-overflow.mhd", "header line 8 is 281 characters long"},
       {"mha-huge-ndims-metaio-hang.mha", "Voxray opens 2 to 10 dimensions"},
-      {"mha-ndims-1-metaio-heap-corruption.mha", "Voxray opens 2 to 10 dimensions"}};
+      {"mha-ndims-1-metaio-heap-corruption.mha", "header line 3 is not a 'Name = value' field"},
+      {"mha-line-without-separator-metaio-overflow.mha",
+       "header line 3 is not a 'Name = value' field"},
+      {"mha-datafile-in-a-value-metaio-overflow.mha", "header line 4 is 304 characters long"}};
   for (const auto& [name, message] : cases)
     EXPECT_THAT(loadError((dir / name).string()), HasSubstr(message)) << name;
   // Denormal scaling: the volume loads, with finite voxels and a usable storage scale.
