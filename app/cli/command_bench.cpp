@@ -58,10 +58,6 @@ std::string defaultDataDir() {
   return "../shared/data";
 }
 
-double minSpacingMm(const Volume& v) {
-  return std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
-}
-
 RaycasterOptions raycasterOptions(const BenchOptions& o) {
   RaycasterOptions r;
   r.emptySpaceSkipping = o.ess == "on";
@@ -166,7 +162,8 @@ Run addBenchCommand(CLI::App& app) {
             p.gradient = parseGradient(grad);
             // The 3D view's frame at rest at this view size (RenderScheduler::fullParams).
             const glm::ivec2 view(p.width, p.height);
-            if (!o->quality.empty()) p = settledFrame(p, o->quality, {0, 0}, view, minSpacingMm(v));
+            if (!o->quality.empty())
+              p = settledFrame(p, o->quality, {0, 0}, view, v.minSpacingMm());
             RaycasterOptions ro = raycasterOptions(*o);
             ro.kernel = kern == "uber" ? RaycasterOptions::Kernel::Uber
                                        : RaycasterOptions::Kernel::Specialised;
@@ -187,7 +184,7 @@ Run addBenchCommand(CLI::App& app) {
             if (o->stallRepeats > 0) {
               // The drag frame as the scheduler plans it before AdaptiveQuality moves it.
               RenderParams drag =
-                  settledFrame(base, ui::kDragQualityPreset, {0, 0}, view, minSpacingMm(v));
+                  settledFrame(base, ui::kDragQualityPreset, {0, 0}, view, v.minSpacingMm());
               drag.gradient = p.gradient;
               printStallReplay(rc, drag, p, o->run.orbit, o->stallRepeats);
             }

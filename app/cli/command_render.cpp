@@ -54,7 +54,7 @@ Session sessionToRender(const RenderOptions& o) {
 // quality's image scale, else the default.
 RenderParams frameToRender(const RenderOptions& o, const Session& s, const Volume& v) {
   if (o.session.empty() && o.quality.empty()) return s.render;
-  const double minSpacing = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
+  const double minSpacing = v.minSpacingMm();
   RenderParams p = settledFrame(s.render, s.qualityPreset, s.resolution,
                                 {s.render.width, s.render.height}, minSpacing);
   if (o.session.empty() || o.flags.given.count("size")) {

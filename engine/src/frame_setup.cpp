@@ -27,7 +27,7 @@ FrameSetup makeFrameSetup(const Volume& v, const RenderParams& p) {
   FrameSetup s;
   s.view = makeViewGeometry(v, p);
   s.lut = bakeLut(frameTransferFunction(p), v);
-  double minSpacing = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
+  double minSpacing = v.minSpacingMm();
   s.stepMm = effectiveStepMm(p, minSpacing);
   s.referenceStepMm = minSpacing;
   double a = v.toStored(p.isoLo), b = v.toStored(p.isoHi);

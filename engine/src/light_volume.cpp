@@ -40,7 +40,7 @@ LightVolume::LightVolume(const Volume& v) {
   shadowOffsetMm_ = shadowOffsetMm(v);
   dims_ = (glm::max(v.dims, glm::ivec3(1)) - 1) / cell_ + 1;
   points_ = size_t(dims_.x) * size_t(dims_.y) * size_t(dims_.z);
-  minSpacingMm_ = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
+  minSpacingMm_ = v.minSpacingMm();
   spacingMm_ = v.spacingMm;
 }
 

@@ -114,7 +114,7 @@ int lightGridCell(const Volume& v) {
 }
 
 double shadowOffsetMm(const Volume& v) {
-  double spacing = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
+  double spacing = v.minSpacingMm();
   return spacing * (1.0 + 1.5 * lightGridCell(v));
 }
 

@@ -73,7 +73,7 @@ SlabMode parseSlabMode(const std::string& s) {
 
 int slabSamples(const Volume& v, const Slab& slab) {
   if (!(slab.thicknessMm > 0.0)) return 1;  // NaN too: a thin plane
-  const double step = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
+  const double step = v.minSpacingMm();
   // Bounded: a slab thicker than any volume still costs a few thousand samples at most.
   const double n = std::ceil(slab.thicknessMm / step) + 1.0;
   return int(std::clamp(n, 2.0, 4096.0));

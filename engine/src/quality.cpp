@@ -82,7 +82,7 @@ RenderParams applyQuality(RenderParams p, const QualityPreset& q, double minSpac
 }
 
 RenderParams applyQuality(RenderParams p, const QualityPreset& q, const Volume& v) {
-  return applyQuality(std::move(p), q, std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z}));
+  return applyQuality(std::move(p), q, v.minSpacingMm());
 }
 
 RenderParams settledFrame(const RenderParams& base, const std::string& qualityPreset,

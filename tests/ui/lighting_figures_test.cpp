@@ -295,8 +295,7 @@ TEST(LightingMeasure, DISABLED_PrintSampleCtFigures) {
   RenderStateModel m;
   LightingMeasureOptions o;
   const glm::ivec2 size{o.width, o.height};
-  RenderParams view = settledFrame(m.params(), m.quality().preset, size, size,
-                                   std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z}));
+  RenderParams view = settledFrame(m.params(), m.quality().preset, size, size, v.minSpacingMm());
   auto t0 = std::chrono::steady_clock::now();
   auto result = measureLighting(ctx, v, view, o);
   double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

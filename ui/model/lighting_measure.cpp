@@ -16,10 +16,6 @@ namespace voxray::ui {
 
 namespace {
 
-double minSpacing(const Volume& v) {
-  return std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
-}
-
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   size_t n = v.size();
@@ -67,7 +63,7 @@ LightingMeasurement measureGridModel(Raycaster& rc, const Volume& v, const Rende
   }
   m.msPerFrame = median(ms);
   check(cancel);
-  const double h = minSpacing(v);
+  const double h = v.minSpacingMm();
   // The sweep's fine reference (voxray-cli accuracy): trilinear, its bisections.
   RenderParams ref =
       fineParams(p, Interp::Linear, o.referenceStepVoxels * h, SweepOptions{}.fineRefine);

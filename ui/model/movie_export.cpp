@@ -29,7 +29,7 @@ MoviePlan planMovie(const MovieChoice& choice, const RenderStateModel& view, con
   Quality q = view.quality();
   q.preset = choice.quality;
   q.resolution = choice.size;
-  const double minSpacing = std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
+  const double minSpacing = v.minSpacingMm();
   plan.params = planFrame(view.params(), q, choice.size, false, minSpacing);
   plan.params.width = choice.size.x;  // exactly the size asked for (planFrame keeps >= 16)
   plan.params.height = choice.size.y;

@@ -14,10 +14,6 @@ namespace voxray {
 
 namespace {
 
-double minSpacing(const Volume& v) {
-  return std::min({v.spacingMm.x, v.spacingMm.y, v.spacingMm.z});
-}
-
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   size_t n = v.size();
@@ -49,7 +45,7 @@ std::string settingLabel(const RenderParams& p, double minSpacingMm) {
 }
 
 std::vector<SweepCase> standardCases(const SweepScene& scene, bool reduced) {
-  const double h = minSpacing(*scene.volume);
+  const double h = scene.volume->minSpacingMm();
   std::vector<RenderParams> list;
   auto with = [&](double stepVoxels, auto&& change) {
     RenderParams p = scene.base;
@@ -96,7 +92,7 @@ std::vector<SweepCase> standardCases(const SweepScene& scene, bool reduced) {
 std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
                                const std::vector<SweepCase>& cases, const SweepOptions& o) {
   const Volume& v = *scene.volume;
-  const double h = minSpacing(v);
+  const double h = v.minSpacingMm();
   Raycaster rc(ctx, v, VolumeStorage::Auto);
   std::map<std::string, Fine> fine;
   auto fineFor = [&](const RenderParams& p, Interp interp) -> const Fine& {

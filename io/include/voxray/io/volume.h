@@ -3,6 +3,7 @@
 // (x fastest, then y, then z); the physical value (HU for CT, scanner units for MR)
 // is stored * slope + intercept, so a non-integral DICOM slope keeps its precision
 // without a float copy.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -57,6 +58,8 @@ struct Volume {
   double toStored(double physical) const { return (physical - intercept) / slope; }
   // Physical size of the volume's box: voxels are cells of one spacing each.
   glm::dvec3 extentMm() const { return glm::dvec3(dims) * spacingMm; }
+  // The finest spacing: the unit of sample steps and of distances measured in voxels.
+  double minSpacingMm() const { return std::min({spacingMm.x, spacingMm.y, spacingMm.z}); }
 };
 
 struct ValueRange {
