@@ -28,7 +28,7 @@ void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
   key_.clear();
 }
 
-void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t global) {
+void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims) {
   size_t n = cells_.minMax.size() / 2;
   // The distances and, behind them, one region per octant of ray directions; the passes'
   // intermediate regions: two after x, four after y; behind them the iso block bits
@@ -39,8 +39,10 @@ void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t glo
   }
   if (!aheadScratch_()) aheadScratch_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 6 * n);
   cl::Kernel pass = cl.kernel("classify.cl", "leap_distance_ahead", "");
+  const int len[3] = {dims.s[0], dims.s[1], dims.s[2]};
   auto run = [&](const cl::Buffer& in, size_t inAt, const cl::Buffer& out, size_t outAt, int axis,
                  bool positive) {
+    size_t lines = n / size_t(len[axis]);  // one work-item per line along axis
     pass.setArg(0, in);
     pass.setArg(1, cl_int(inAt));
     pass.setArg(2, out);
@@ -49,7 +51,8 @@ void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t glo
     pass.setArg(5, cl_int(axis));
     pass.setArg(6, cl_int(axis == 0));
     pass.setArg(7, cl_int(positive ? 1 : -1));
-    cl.queue.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    cl.queue.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange((lines + 63) / 64 * 64),
+                                  cl::NullRange);
   };
   // Octant o: bit a set where the ray's direction along axis a is > 0 (skip_ahead_lanes.cl).
   for (int sx = 0; sx < 2; ++sx) run(occ_, 0, aheadScratch_, sx * n, 0, sx);
@@ -146,15 +149,22 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     // Only iso packets read the one-sided distances (one ray per work-item leaps by the
     // two-sided ones). First: it may enlarge leap_.
     if (m == 0 && packets) {
-      aheadDistances(cl, dims, global);
+      aheadDistances(cl, dims);
       isoBlocks(cl, k);
     }
     // Distances to the nearest occupied cell, so rays leap whole empty cubes at once:
-    // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
+    // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z); after the one-sided
+    // ones, their minimum (the same distances, at a fraction of the work).
+    if (m == 0 && packets) {
+      cl::Kernel octants = cl.kernel("classify.cl", "leap_distance_from_octants", "");
+      octants.setArg(0, leap_);
+      octants.setArg(1, cl_int(cells));
+      q.enqueueNDRangeKernel(octants, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    }
     cl::Kernel pass = cl.kernel("classify.cl", "leap_distance", "");
     const cl::Buffer* from[3] = {&occ_, &leap_, &scratch_};
     const cl::Buffer* to[3] = {&leap_, &scratch_, &leap_};
-    for (int axis = 0; axis < 3; ++axis) {
+    for (int axis = 0; axis < 3 && !(m == 0 && packets); ++axis) {
       pass.setArg(0, *from[axis]);
       pass.setArg(1, *to[axis]);
       pass.setArg(2, dims);
