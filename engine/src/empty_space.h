@@ -41,7 +41,7 @@ class EmptySpace {
   // The one-sided distances of iso packets, one region per octant behind the distances.
   void aheadDistances(ContextImpl& cl, const cl_int4& dims);
   // For iso packets, per macro cell one bit per 2^3 voxel block: whether a sample in the
-  // block can hit the iso range (kernels/skip_ahead_lanes.cl, iso_blocks_emptyN). Made on
+  // block can hit the iso range (kernels/skip_ahead_lanes.cl, iso_block_emptyN). Made on
   // the host from the volume, for occupied cells only (about 4 % of a CT's at bone).
   void isoBlocks(ContextImpl& cl, const RaycastParams& k);
 
