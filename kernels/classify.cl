@@ -64,26 +64,54 @@ __kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 
 // may leap the box of d cells ahead (the cell itself and d - 1 more along each axis), where
 // the two-sided distance allows only the cube of radius d - 1 around it. Near bone, most
 // occupied neighbours lie behind or beside the ray.
+// One work-item per line along `axis` (an iso slider drag reclassifies: linear time per
+// line instead of up to MAX_LEAP + 1 reads per cell). Walking the line against `sign`,
+// near[e] is the distance to the nearest cell ahead whose in is <= e; then out =
+// min over e of max(e, near[e]) (e = MAX_LEAP always holds: in <= MAX_LEAP).
 // in and out start at in_at and out_at (the passes' regions of two buffers).
 __kernel void leap_distance_ahead(__global const uchar* in, int in_at, __global uchar* out,
                                   int out_at, int4 cells, int axis, int from_occ, int sign) {
   int k = get_global_id(0);
-  int n = cells.x * cells.y * cells.z;
-  if (k >= n) return;
-  in += in_at;
-  out += out_at;
-  int3 c = (int3)(k % cells.x, (k / cells.x) % cells.y, k / (cells.x * cells.y));
   int len = axis == 0 ? cells.x : axis == 1 ? cells.y : cells.z;
-  int pos = axis == 0 ? c.x : axis == 1 ? c.y : c.z;
-  int stride = (axis == 0 ? 1 : axis == 1 ? cells.x : cells.x * cells.y) * sign;
-  int reach = min(MAX_LEAP, sign > 0 ? len - 1 - pos : pos);
-  int best = MAX_LEAP;
-  for (int s = 0; s <= reach && s < best; ++s) {
-    int v = in[k + s * stride];
-    int d = from_occ ? (v ? 0 : MAX_LEAP) : v;
-    best = min(best, max(s, d));
+  int across = axis == 0 ? cells.y : cells.x;  // lines along the first other axis
+  if (k >= cells.x * cells.y * cells.z / len) return;
+  int a = k % across, b = k / across;  // the line's other two coordinates, in axis order
+  int start = axis == 0   ? (b * cells.y + a) * cells.x
+              : axis == 1 ? b * cells.x * cells.y + a
+                          : b * cells.x + a;
+  int stride = axis == 0 ? 1 : axis == 1 ? cells.x : cells.x * cells.y;
+  in += in_at + start;
+  out += out_at + start;
+  uchar near[MAX_LEAP];
+  for (int e = 0; e < MAX_LEAP; ++e) near[e] = MAX_LEAP;
+  for (int j = 0; j < len; ++j) {
+    int p = sign > 0 ? len - 1 - j : j;
+    int v = in[p * stride];
+    if (from_occ) {  // in is 0 or MAX_LEAP: every near[e] is the distance to occupancy
+      near[0] = v ? 0 : min(near[0] + 1, MAX_LEAP);
+      out[p * stride] = near[0];
+      continue;
+    }
+    int g = v, best = MAX_LEAP;
+    for (int e = 0; e < MAX_LEAP; ++e) {
+      int d = g <= e ? 0 : min(near[e] + 1, MAX_LEAP);
+      near[e] = (uchar)d;
+      best = min(best, max(e, d));
+    }
+    out[p * stride] = (uchar)best;
   }
-  out[k] = (uchar)best;
+}
+
+// The two-sided distances of an iso classification for packets, from the one-sided ones
+// (leap_distance_ahead's eight regions behind them): the eight closed octants around a cell
+// cover the grid, so the nearest occupied cell is the nearest in one of them. One read per
+// octant instead of leap_distance's three passes of 2 MAX_LEAP + 1 reads per cell.
+__kernel void leap_distance_from_octants(__global uchar* leap, int cells) {
+  int k = get_global_id(0);
+  if (k >= cells) return;
+  uchar d = MAX_LEAP;
+  for (int o = 1; o <= 8; ++o) d = min(d, leap[o * cells + k]);
+  leap[k] = d;
 }
 
 // Adaptive dvr steps (ADAPTIVE, march.cl): whether a segment of f = 4 base steps (h each)

@@ -58,6 +58,12 @@ inline floatN cap_or_gradientN(floatN g, intN graded, intN cap, intN along) {
 #ifndef ISO_BATCH
 #define ISO_BATCH 2
 #endif
+// Empty 2^3 voxel blocks a lane may pass per march iteration before it samples. Only 8-lane
+// packets pass them (CT 512x512x400 kernel CPU -8 %, CThead -6 %); 16 lanes gained nothing
+// measurable (the packet still waits for its slowest lane) and CThead lost about 3 %.
+#ifndef ISO_BLOCK_TRIES
+#define ISO_BLOCK_TRIES (LANES == 8 ? 4 : 0)
+#endif
 inline void iso_packet(PACKET_ARGS) {
   float step = P->view.z;
   RayPacket r;
@@ -72,6 +78,17 @@ inline void iso_packet(PACKET_ARGS) {
   while (any(active)) {
     if (ESS) {
       active = leap_packetN(leap, range, P, &r, ahead, &i, &check, active, step, false, false);
+      if (!any(active)) break;
+      // Inside occupied cells, lanes whose next sample lies in a 2^3 voxel block that cannot
+      // hold the iso range move past it instead of loading voxels there: the same first hit.
+      for (int g = 0; g < ISO_BLOCK_TRIES; ++g) {
+        floatN t = sample_tN(&r, i, step);
+        floatN x = r.ox + t * r.dx, y = r.oy + t * r.dy, z = r.oz + t * r.dz;
+        intN empty = iso_block_emptyN(leap, P, x, y, z, active);
+        if (!any(empty)) break;
+        i = select(i, max(i + 1, past_blockN(&r, x, y, z, step)), empty);
+        active &= i <= r.n;
+      }
       if (!any(active)) break;
     }
     // ISO_BATCH samples at once: their loads (mostly cache misses on a large volume) are

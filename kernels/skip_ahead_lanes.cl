@@ -18,4 +18,35 @@ inline intN ahead_baseN(__constant RaycastParams* P, const RayPacket* r) {
   return (1 + octant) * cells;
 }
 
+// The iso block bits (engine/src/empty_space.cpp, isoBlocks), behind the one-sided
+// distances: per macro cell, bit (bx & 1) | (by & 1) << 1 | (bz & 1) << 2 of the 2^3 voxel
+// block (bx, by, bz) = floor(p / 2) (clamped into the grid) is set when a sample there can
+// hit the iso range. Returns the lanes in `live` whose point p lies in a block without.
+inline intN iso_block_emptyN(__global const uchar* leap, __constant RaycastParams* P, floatN x,
+                             floatN y, floatN z, intN live) {
+  int4 n = P->cells, last = 2 * n - 1;
+  intN bx = clamp(convert_intN(floor(x * 0.5f)), 0, last.x);
+  intN by = clamp(convert_intN(floor(y * 0.5f)), 0, last.y);
+  intN bz = clamp(convert_intN(floor(z * 0.5f)), 0, last.z);
+  intN k = select((intN)(0), ((bz >> 1) * n.y + (by >> 1)) * n.x + (bx >> 1), live);
+  __global const uchar* bits = leap + 9 * n.x * n.y * n.z;
+#define BLOCK_LANE(l, n) bits[k.s##l]
+  intN b = convert_intN((ucharN)(LANE_LIST(BLOCK_LANE)));
+#undef BLOCK_LANE
+  intN bit = (bx & 1) | ((by & 1) << 1) | ((bz & 1) << 2);
+  return live & (((b >> bit) & 1) == 0);
+}
+
+// The first sample index past the 2^3 voxel block that the point (x, y, z) lies in
+// (past_voxel_cellN's, for blocks; outside the grid, a part of the block it is clamped to).
+inline intN past_blockN(const RayPacket* r, floatN x, floatN y, floatN z, float step) {
+  floatN px = 2.0f * (floor(x * 0.5f) + select((floatN)(0.0f), (floatN)(1.0f), r->dx > 0.0f));
+  floatN py = 2.0f * (floor(y * 0.5f) + select((floatN)(0.0f), (floatN)(1.0f), r->dy > 0.0f));
+  floatN pz = 2.0f * (floor(z * 0.5f) + select((floatN)(0.0f), (floatN)(1.0f), r->dz > 0.0f));
+  floatN tx = select((px - r->ox) * r->ix, (floatN)(FLT_MAX), r->dx == 0.0f);
+  floatN ty = select((py - r->oy) * r->iy, (floatN)(FLT_MAX), r->dy == 0.0f);
+  floatN tz = select((pz - r->oz) * r->iz, (floatN)(FLT_MAX), r->dz == 0.0f);
+  return index_atN(r, fmin(tx, fmin(ty, tz)), step, false);
+}
+
 #endif

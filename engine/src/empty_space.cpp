@@ -5,11 +5,14 @@
 #include "cl_context_impl.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/engine/transfer_function.h"
+#include "voxray/io/parallel.h"
+#include "voxray/io/volume.h"
 
 namespace voxray {
 
 void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
   cells_ = computeMacroCells(v);
+  volume_ = &v;
   size_t n = cells_.minMax.size() / 2;
   clCall([&] {
     range_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(cl_short2),
@@ -25,18 +28,21 @@ void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
   key_.clear();
 }
 
-void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t global) {
+void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims) {
   size_t n = cells_.minMax.size() / 2;
   // The distances and, behind them, one region per octant of ray directions; the passes'
-  // intermediate regions: two after x, four after y. Made on the first iso frame only.
-  if (leapBytes_ < 9 * n) {
-    leap_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 9 * n);
-    leapBytes_ = 9 * n;
+  // intermediate regions: two after x, four after y; behind them the iso block bits
+  // (isoBlocks). Made on the first iso frame only.
+  if (leapBytes_ < 10 * n) {
+    leap_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 10 * n);
+    leapBytes_ = 10 * n;
   }
   if (!aheadScratch_()) aheadScratch_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 6 * n);
   cl::Kernel pass = cl.kernel("classify.cl", "leap_distance_ahead", "");
+  const int len[3] = {dims.s[0], dims.s[1], dims.s[2]};
   auto run = [&](const cl::Buffer& in, size_t inAt, const cl::Buffer& out, size_t outAt, int axis,
                  bool positive) {
+    size_t lines = n / size_t(len[axis]);  // one work-item per line along axis
     pass.setArg(0, in);
     pass.setArg(1, cl_int(inAt));
     pass.setArg(2, out);
@@ -45,7 +51,8 @@ void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t glo
     pass.setArg(5, cl_int(axis));
     pass.setArg(6, cl_int(axis == 0));
     pass.setArg(7, cl_int(positive ? 1 : -1));
-    cl.queue.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    cl.queue.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange((lines + 63) / 64 * 64),
+                                  cl::NullRange);
   };
   // Octant o: bit a set where the ray's direction along axis a is > 0 (skip_ahead_lanes.cl).
   for (int sx = 0; sx < 2; ++sx) run(occ_, 0, aheadScratch_, sx * n, 0, sx);
@@ -56,6 +63,45 @@ void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims, size_t glo
     for (int sy = 0; sy < 2; ++sy)
       for (int sz = 0; sz < 2; ++sz)
         run(aheadScratch_, (2 + sx + 2 * sy) * n, leap_, (1 + sx + 2 * sy + 4 * sz) * n, 2, sz);
+}
+
+void EmptySpace::isoBlocks(ContextImpl& cl, const RaycastParams& k) {
+  const Volume& v = *volume_;
+  const glm::ivec3 n = cells_.dims, d = v.dims;
+  const size_t cells = cells_.minMax.size() / 2;
+  const float lo = k.values.s[0], hi = k.values.s[1];
+  // classify's test and margin (kernels/classify.cl), on a block's voxels instead.
+  auto meets = [&](float a, float b) { return b + 0.5f >= lo && a - 0.5f <= hi; };
+  blocks_.assign(cells, 0);
+  parallelFor(size_t(n.z), [&](size_t cz) {
+    for (int cy = 0; cy < n.y; ++cy)
+      for (int cx = 0; cx < n.x; ++cx) {
+        size_t c = (cz * size_t(n.y) + size_t(cy)) * size_t(n.x) + size_t(cx);
+        // A block's voxels lie in its cell's min/max: an empty cell's blocks are empty.
+        if (!meets(cells_.minMax[2 * c], cells_.minMax[2 * c + 1])) continue;
+        uint8_t bits = 0;
+        for (int b = 0; b < 8; ++b) {
+          // Block (2 cx + bx, ...) holds the samples at p with floor(p / 2) on it (clamped
+          // into the grid): trilinear reads voxels 2 bx ... 2 bx + 2 of it, clamped to the
+          // volume (nearest: one of them), so their min/max bounds the sample.
+          glm::ivec3 b0 = 2 * glm::ivec3(cx, cy, int(cz)) + glm::ivec3(b & 1, (b >> 1) & 1, b >> 2);
+          glm::ivec3 a = glm::clamp(2 * b0, glm::ivec3(0), d - 1);
+          glm::ivec3 e = glm::clamp(2 * b0 + 2, glm::ivec3(0), d - 1);
+          int16_t vmin = INT16_MAX, vmax = INT16_MIN;
+          for (int z = a.z; z <= e.z; ++z)
+            for (int y = a.y; y <= e.y; ++y)
+              for (int x = a.x; x <= e.x; ++x) {
+                int16_t s = v.voxels[v.index(x, y, z)];
+                vmin = std::min(vmin, s);
+                vmax = std::max(vmax, s);
+              }
+          if (meets(vmin, vmax)) bits |= uint8_t(1u << b);
+        }
+        blocks_[c] = bits;
+      }
+  });
+  // Blocking: blocks_ is rewritten at the next classification.
+  cl.queue.enqueueWriteBuffer(leap_, CL_TRUE, 9 * cells, cells, blocks_.data());
 }
 
 void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
@@ -102,13 +148,23 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     cl_int4 dims = {{cells_.dims.x, cells_.dims.y, cells_.dims.z, 0}};
     // Only iso packets read the one-sided distances (one ray per work-item leaps by the
     // two-sided ones). First: it may enlarge leap_.
-    if (m == 0 && packets) aheadDistances(cl, dims, global);
+    if (m == 0 && packets) {
+      aheadDistances(cl, dims);
+      isoBlocks(cl, k);
+    }
     // Distances to the nearest occupied cell, so rays leap whole empty cubes at once:
-    // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
+    // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z); after the one-sided
+    // ones, their minimum (the same distances, at a fraction of the work).
+    if (m == 0 && packets) {
+      cl::Kernel octants = cl.kernel("classify.cl", "leap_distance_from_octants", "");
+      octants.setArg(0, leap_);
+      octants.setArg(1, cl_int(cells));
+      q.enqueueNDRangeKernel(octants, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    }
     cl::Kernel pass = cl.kernel("classify.cl", "leap_distance", "");
     const cl::Buffer* from[3] = {&occ_, &leap_, &scratch_};
     const cl::Buffer* to[3] = {&leap_, &scratch_, &leap_};
-    for (int axis = 0; axis < 3; ++axis) {
+    for (int axis = 0; axis < 3 && !(m == 0 && packets); ++axis) {
       pass.setArg(0, *from[axis]);
       pass.setArg(1, *to[axis]);
       pass.setArg(2, dims);
