@@ -96,5 +96,25 @@ TEST(DicomNativeFrames, StoredWordsMeanWhatTheirFormatSays) {
   EXPECT_EQ(hu(range12, 0x0C19), -999.0);
 }
 
+// Several broken files: the error is the one of the first broken file in the folder's order,
+// whichever thread reached which file first (both paths report through PixelFile).
+TEST(DicomNativeFrames, TheFirstBrokenFileIsTheOneReported) {
+  test::TempDir dir;
+  for (int k = 0; k < 8; ++k) {
+    test::TestSlice s;
+    s.size = 64;
+    s.z = k;
+    s.instance = k + 1;
+    const std::string path = dir.file(std::to_string(k) + ".dcm");
+    test::writeTestSlice(path, s);
+    if (k == 3 || k == 6) test::setPixelDataLength(path, 64 * 64 * 2 - 64);  // one row short
+  }
+  for (int run = 0; run < 5; ++run) {
+    const std::string m = test::importError(dir.path().string());
+    EXPECT_NE(m.find("3.dcm: "), std::string::npos) << m;
+    EXPECT_EQ(m.find("6.dcm"), std::string::npos) << m;
+  }
+}
+
 }  // namespace
 }  // namespace voxray
