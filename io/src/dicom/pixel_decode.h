@@ -39,11 +39,14 @@ class PixelFile {
 class NativeFrames {
  public:
   explicit NativeFrames(const std::string& path);
+  // A file already parsed in full (readFrameHeaders from its bytes); PARSED must outlive this.
+  explicit NativeFrames(DcmFileFormat& parsed);
   ~NativeFrames();
   NativeFrames(const NativeFrames&) = delete;
   NativeFrames& operator=(const NativeFrames&) = delete;
 
-  // Whether frames of H can be read here (the file parsed, and H describes such a file).
+  // Whether frame H can be read here (the file parsed, H describes such a file, and its
+  // pixel data holds the frame).
   bool fits(const FrameHeader& h) const;
   // The stored 16-bit words of frame H.frame, unmasked, into OUT (columns x rows).
   bool read(const FrameHeader& h, uint16_t* out);
