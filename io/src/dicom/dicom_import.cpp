@@ -257,7 +257,7 @@ void permuteSlices(std::vector<int16_t>& voxels, size_t sliceSize,
 }
 
 // Page tables for the BYTES at P, made on every core: the volume's first touch (50,000
-// page faults for a 512x512x400 CT) was a third of the import's CPU time, all of it on one
+// page faults for a 512x512x400 CT) was over a quarter of the import's CPU time, all on one
 // core inside the vector's zero fill. Kernels before Linux 5.14 ignore the request.
 void prefault(void* p, size_t bytes) {
 #ifdef MADV_POPULATE_WRITE
