@@ -34,18 +34,29 @@ void writeTestSlice(const std::string& path, const TestSlice& s) {
   ds->putAndInsertUint16(DCM_SamplesPerPixel, 1);
   ds->putAndInsertString(DCM_PhotometricInterpretation, "MONOCHROME2");
   ds->putAndInsertUint16(DCM_BitsAllocated, 16);
-  ds->putAndInsertUint16(DCM_BitsStored, 16);
-  ds->putAndInsertUint16(DCM_HighBit, 15);
-  ds->putAndInsertUint16(DCM_PixelRepresentation, 1);
+  ds->putAndInsertUint16(DCM_BitsStored, Uint16(s.bitsStored));
+  ds->putAndInsertUint16(DCM_HighBit, Uint16(s.bitsStored - 1));
+  ds->putAndInsertUint16(DCM_PixelRepresentation, Uint16(s.pixelRepresentation));
+  auto putPadding = [&](const DcmTagKey& tag, int value) {
+    DcmTag t(tag, s.pixelRepresentation ? EVR_SS : EVR_US);
+    if (s.pixelRepresentation)
+      ds->putAndInsertSint16(t, Sint16(value));
+    else
+      ds->putAndInsertUint16(t, Uint16(value));
+  };
+  if (s.padding) putPadding(DCM_PixelPaddingValue, *s.padding);
+  if (s.paddingLimit) putPadding(DCM_PixelPaddingRangeLimit, *s.paddingLimit);
   ds->putAndInsertString(DCM_RescaleIntercept, "0");
   ds->putAndInsertString(DCM_RescaleSlope, "1");
   if (s.numberOfFrames > 0)
     ds->putAndInsertString(DCM_NumberOfFrames, std::to_string(s.numberOfFrames).c_str());
   std::vector<Uint16> pixels(size_t(s.size) * size_t(s.size));
-  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = Uint16(int16_t(int(i) - 8));
+  for (size_t i = 0; i < pixels.size(); ++i)
+    pixels[i] = s.allWords ? Uint16(i ^ s.wordXor) : Uint16(int16_t(int(i) - 8));
   ds->putAndInsertUint16Array(DCM_PixelData, pixels.data(), unsigned(pixels.size()));
-  if (file.saveFile(path.c_str(), EXS_LittleEndianExplicit).bad())
-    throw std::runtime_error("cannot write " + path);
+  const E_TransferSyntax xfer =
+      s.deflated ? EXS_DeflatedLittleEndianExplicit : EXS_LittleEndianExplicit;
+  if (file.saveFile(path.c_str(), xfer).bad()) throw std::runtime_error("cannot write " + path);
 }
 
 void setPixelDataLength(const std::string& path, uint32_t length) {

@@ -2,6 +2,7 @@
 // Small DICOM files written by the tests themselves (DCMTK), for the cases the shared data
 // does not have: text in other character sets, hostile structure.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace voxray::test {
@@ -16,10 +17,17 @@ struct TestSlice {
   double z = 0.0;          // ImagePositionPatient z in mm
   int instance = 1;
   std::string seriesUid = "1.2.826.0.1.3680043.10.1082.1";
+  // The stored sample format, and pixel i's word: i - 8 (as int16), or with ALL_WORDS
+  // (SIZE 256) word i XOR WORD_XOR, every 16-bit pattern once.
+  int bitsStored = 16, pixelRepresentation = 1;
+  std::optional<int> padding, paddingLimit;  // PixelPaddingValue / RangeLimit (US or SS)
+  bool allWords = false;
+  uint16_t wordXor = 0;
+  bool deflated = false;  // Deflated Explicit VR Little Endian instead of Explicit VR LE
 };
 
-// A SIZE x SIZE CT image (int16, pixel i = i - 8) in explicit VR little endian. Throws
-// std::runtime_error when DCMTK cannot write it.
+// A SIZE x SIZE CT image (by default int16, pixel i = i - 8) in explicit VR little endian.
+// Throws std::runtime_error when DCMTK cannot write it.
 void writeTestSlice(const std::string& path, const TestSlice& slice);
 
 // Rewrites PATH with sequences nested DEPTH deep (each an undefined-length

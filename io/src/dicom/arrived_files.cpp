@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <memory>
 #include <new>
 
 #include "pixel_decode.h"
@@ -124,17 +125,31 @@ void ArrivedFiles::process(const std::string& path, std::string bytes) {
   try {
     if (readFrameHeaders(path, bytes, *parsed, file.frames, why) != ScanResult::Image) return;
     bytes = std::string();  // DCMTK holds its own copy of every value
-    PixelFile pixels(path, std::move(parsed));
+    // Uncompressed 16-bit frames are copied into their slots as the folder import reads
+    // them (NativeFrames); the others are decoded by PixelFile, made when first needed.
+    NativeFrames native(*parsed);
+    std::unique_ptr<PixelFile> pixels;
     std::vector<int32_t> values;
     for (const FrameHeader& h : file.frames) {
-      pixels.frameValues(h, values);
       const size_t n = size_t(h.columns) * size_t(h.rows);
-      if (values.size() != n) return;  // the import says what is wrong with it
+      const bool direct = native.fits(h);
+      if (!direct) {
+        if (!pixels) pixels = std::make_unique<PixelFile>(path, std::move(parsed));
+        pixels->frameValues(h, values);
+        if (values.size() != n) return;  // the import says what is wrong with it
+      }
       if (sliceSize_ == 0) sliceSize_ = n;
       if (n != sliceSize_) return;  // not one stack with the first file
       const size_t k = newSlot();
-      slots_[k].air = airValue(h.modality);
-      slots_[k].scale = storeSlice(values, h, slots_[k].air, voxels_.data() + k * sliceSize_);
+      Slot& slot = slots_[k];
+      slot.air = airValue(h.modality);
+      auto* words = reinterpret_cast<uint16_t*>(voxels_.data() + k * sliceSize_);
+      if (direct && native.read(h, words))
+        slot.scale = storeWords(words, n, h, slot.air);
+      else if (direct)
+        return;  // a slot the import does not use: it then reads the files from disk
+      else
+        slot.scale = storeSlice(values, h, slot.air, voxels_.data() + k * sliceSize_);
       file.slots.push_back(k);
     }
   } catch (const std::exception&) {

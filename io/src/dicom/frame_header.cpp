@@ -214,8 +214,9 @@ ScanResult headersOf(DcmFileFormat& file, const std::string& failure,
     return ScanResult::NoImage;
   }
   // Uncompressed frames lie one after another: a file too small for them is damaged, and
-  // refusing it here keeps a header that claims 2000 frames from allocating them.
-  if (!xfer.isEncapsulated()) {
+  // refusing it here keeps a header that claims 2000 frames from allocating them. A
+  // deflated file (the whole dataset zlib-compressed) may well be smaller.
+  if (!xfer.isEncapsulated() && xfer.getStreamCompression() == ESC_none) {
     const uintmax_t bits = uintmax_t(frames) * uintmax_t(h.rows) * uintmax_t(h.columns) *
                            uintmax_t(std::max(1, h.samplesPerPixel)) *
                            uintmax_t(std::max(1, h.bitsAllocated));

@@ -3,6 +3,7 @@
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dccodec.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfcache.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcpixel.h>
 #include <dcmtk/dcmdata/dcpixseq.h>
@@ -216,6 +217,49 @@ void PixelFile::frameValues(const FrameHeader& h, std::vector<int32_t>& out) {
     impl_->decodeJ2k(h, out);
   else
     impl_->decodeOther(h, out);
+}
+
+struct NativeFrames::Impl {
+  DcmFileFormat own;
+  DcmPixelData* pixels = nullptr;
+  DcmFileCache cache;  // one open file for every frame
+
+  void find(DcmFileFormat& file) {
+    DcmDataset* ds = file.getDataset();
+    const E_TransferSyntax xfer = ds->getOriginalXfer();
+    if (xfer != EXS_LittleEndianExplicit && xfer != EXS_LittleEndianImplicit) return;
+    DcmElement* element = nullptr;
+    if (ds->findAndGetElement(DCM_PixelData, element).bad() || !element) return;
+    pixels = dynamic_cast<DcmPixelData*>(element);
+  }
+};
+
+NativeFrames::NativeFrames(const std::string& path) : impl_(std::make_unique<Impl>()) {
+  // Values over 4 KiB stay in the file until read: the pixel data is read by frame below.
+  if (loadDicomFile(impl_->own, path, 4096).empty()) impl_->find(impl_->own);
+}
+
+NativeFrames::NativeFrames(DcmFileFormat& parsed) : impl_(std::make_unique<Impl>()) {
+  impl_->find(parsed);
+}
+
+NativeFrames::~NativeFrames() = default;
+
+bool NativeFrames::fits(const FrameHeader& h) const {
+  const size_t frameBytes = size_t(h.rows) * size_t(h.columns) * 2;
+  return impl_->pixels && gLocalByteOrder == EBO_LittleEndian && h.bitsAllocated == 16 &&
+         h.samplesPerPixel == 1 && unsupportedReason(h).empty() &&
+         (impl_->pixels->getVR() == EVR_OW || impl_->pixels->getVR() == EVR_ox) &&
+         size_t(h.frame + 1) * frameBytes <= impl_->pixels->getLength();
+}
+
+bool NativeFrames::read(const FrameHeader& h, uint16_t* out) {
+  if (!fits(h)) return false;
+  const size_t frameBytes = size_t(h.rows) * size_t(h.columns) * 2;
+  return impl_->pixels
+      ->getPartialValue(out, Uint32(size_t(h.frame) * frameBytes), Uint32(frameBytes),
+                        &impl_->cache, gLocalByteOrder)
+      .good();
 }
 
 bool isLuminanceRgb(const FrameHeader& h) {

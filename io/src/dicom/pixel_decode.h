@@ -32,6 +32,30 @@ class PixelFile {
   std::unique_ptr<Impl> impl_;
 };
 
+// The frames of an uncompressed little-endian 16-bit greyscale file, read from the file
+// straight into the caller's memory: the common CT/MR file skips DCMTK's copy of its pixel
+// data and the 32-bit widening of PixelFile. For anything else, or on any failure, the
+// answer is false and the caller uses PixelFile, which reports the error as it always has.
+class NativeFrames {
+ public:
+  explicit NativeFrames(const std::string& path);
+  // A file already parsed in full (readFrameHeaders from its bytes); PARSED must outlive this.
+  explicit NativeFrames(DcmFileFormat& parsed);
+  ~NativeFrames();
+  NativeFrames(const NativeFrames&) = delete;
+  NativeFrames& operator=(const NativeFrames&) = delete;
+
+  // Whether frame H can be read here (the file parsed, H describes such a file, and its
+  // pixel data holds the frame).
+  bool fits(const FrameHeader& h) const;
+  // The stored 16-bit words of frame H.frame, unmasked, into OUT (columns x rows).
+  bool read(const FrameHeader& h, uint16_t* out);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 // Uncompressed 8-bit RGB (a Secondary Capture, such as Voxray's own screenshots): loaded
 // as its luminance, with a warning. Compressed colour stays refused.
 bool isLuminanceRgb(const FrameHeader& h);

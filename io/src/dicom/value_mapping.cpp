@@ -13,25 +13,38 @@ int16_t clamp16(double v) {
 
 bool integral(double v) { return std::abs(v - std::round(v)) < 1e-9; }
 
+// What storeSlice and storeWords share: the slice's scale, its padding range and air.
+struct Mapping {
+  int32_t offset;
+  SliceScale scale;
+  int32_t padLo = 1, padHi = 0;  // empty range: no padding
+  int16_t air;
+
+  Mapping(const FrameHeader& h, double airPhysical)
+      : offset((h.pixelRepresentation == 0 && h.bitsStored > 15) ? 32768 : 0) {
+    scale.slope = h.slope;
+    scale.intercept = h.intercept + double(offset) * h.slope;
+    if (h.padding) {
+      padLo = padHi = *h.padding;
+      if (h.paddingLimit) {
+        padLo = std::min(*h.padding, *h.paddingLimit);
+        padHi = std::max(*h.padding, *h.paddingLimit);
+      }
+    }
+    air = clamp16((airPhysical - scale.intercept) / scale.slope);
+  }
+};
+
 }  // namespace
 
 double airValue(const std::string& modality) { return modality == "CT" ? -1024.0 : 0.0; }
 
 SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h, double airPhysical,
                       int16_t* out) {
-  const int32_t offset = (h.pixelRepresentation == 0 && h.bitsStored > 15) ? 32768 : 0;
-  SliceScale s;
-  s.slope = h.slope;
-  s.intercept = h.intercept + double(offset) * h.slope;
-  int32_t padLo = 1, padHi = 0;  // empty range: no padding
-  if (h.padding) {
-    padLo = padHi = *h.padding;
-    if (h.paddingLimit) {
-      padLo = std::min(*h.padding, *h.paddingLimit);
-      padHi = std::max(*h.padding, *h.paddingLimit);
-    }
-  }
-  const int16_t air = clamp16((airPhysical - s.intercept) / s.slope);
+  const Mapping m(h, airPhysical);
+  const int32_t offset = m.offset, padLo = m.padLo, padHi = m.padHi;
+  const int16_t air = m.air;
+  SliceScale s = m.scale;
   // Branch-free loops (vectorised): this runs on every voxel of the volume.
   const size_t n = values.size();
   const int32_t* in = values.data();
@@ -47,6 +60,57 @@ SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h, 
   s.min = values.empty() ? 0 : lo;
   s.max = values.empty() ? 0 : hi;
   return s;
+}
+
+SliceScale storeWords(uint16_t* words, size_t count, const FrameHeader& h, double airPhysical) {
+  const Mapping m(h, airPhysical);
+  // PixelFile's masking to BitsStored and sign extension (16 bits: the word as it is).
+  const int bits = std::clamp(h.bitsStored, 1, 16);
+  const uint32_t mask = uint32_t((1u << bits) - 1u);
+  const uint32_t sign = h.pixelRepresentation == 1 ? uint32_t(1u << (bits - 1)) : 0u;
+  const int32_t offset = m.offset, padLo = m.padLo, padHi = m.padHi;
+  const int16_t air = m.air;
+  auto* out = reinterpret_cast<int16_t*>(words);
+  int16_t lo = INT16_MAX, hi = INT16_MIN;
+  auto range = [&] {
+    SliceScale s = m.scale;
+    s.min = count == 0 ? 0 : lo;
+    s.max = count == 0 ? 0 : hi;
+    return s;
+  };
+  if (bits == 16 && (sign != 0 || offset == 32768)) {
+    // The common case in 16-bit lanes: the voxel is the word (signed) or the word minus
+    // 32768 (unsigned), which is the word with its top bit flipped; padding in that domain.
+    const auto flip = uint16_t(offset == 32768 ? 0x8000 : 0);
+    const int32_t plo = std::max(padLo - offset, -32768), phi = std::min(padHi - offset, 32767);
+    if (plo <= phi) {
+      for (size_t i = 0; i < count; ++i) {
+        int16_t o = int16_t(words[i] ^ flip);
+        o = (o >= plo && o <= phi) ? air : o;
+        out[i] = o;
+        lo = std::min(lo, o);
+        hi = std::max(hi, o);
+      }
+    } else {
+      for (size_t i = 0; i < count; ++i) {
+        const auto o = int16_t(words[i] ^ flip);
+        out[i] = o;
+        lo = std::min(lo, o);
+        hi = std::max(hi, o);
+      }
+    }
+    return range();
+  }
+  // One branch-free pass (vectorised): each word is read before its slot is written.
+  for (size_t i = 0; i < count; ++i) {
+    const int32_t v = int32_t((uint32_t(words[i]) & mask) ^ sign) - int32_t(sign);
+    int16_t o = int16_t(std::clamp(v - offset, -32768, 32767));
+    o = (v >= padLo && v <= padHi) ? air : o;
+    out[i] = o;
+    lo = std::min(lo, o);
+    hi = std::max(hi, o);
+  }
+  return range();
 }
 
 CommonScale chooseCommonScale(const std::vector<SliceScale>& slices) {
