@@ -200,7 +200,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   // volume's voxels and converted in place (each sample is read before its voxel is
   // written), so the peak is one copy of the volume, not two.
   const bool inPlace = sampleBytes(layout.type) == sizeof(int16_t);
-  std::vector<int16_t> voxels(inPlace ? sliceVoxels * static_cast<size_t>(z) : 0);
+  VoxelVector voxels(inPlace ? sliceVoxels * static_cast<size_t>(z) : 0);
   std::vector<uint8_t> rawCopy(inPlace ? 0 : sliceBytes * static_cast<size_t>(z));
   uint8_t* const raw = inPlace ? reinterpret_cast<uint8_t*>(voxels.data()) : rawCopy.data();
   std::vector<detail::ValueStats> stats(static_cast<size_t>(z));

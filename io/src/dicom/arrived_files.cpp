@@ -57,8 +57,8 @@ const ArrivedFiles::File* ArrivedFiles::find(const std::string& path) const {
   return it == files_.end() ? nullptr : &it->second;
 }
 
-std::vector<int16_t> ArrivedFiles::release() {
-  std::vector<int16_t> out = std::move(voxels_);
+VoxelVector ArrivedFiles::release() {
+  VoxelVector out = std::move(voxels_);
   voxels_ = {};
   files_.clear();
   slots_.clear();

@@ -16,6 +16,7 @@
 
 #include "frame_header.h"
 #include "value_mapping.h"
+#include "voxray/io/voxel_memory.h"
 
 namespace voxray::dicom {
 
@@ -48,10 +49,10 @@ class ArrivedFiles {
   const std::vector<Slot>& slots() const { return slots_; }
   size_t sliceSize() const { return sliceSize_; }
   // Slice k at k * sliceSize(), in the order the files arrived.
-  std::vector<int16_t>& voxels() { return voxels_; }
+  VoxelVector& voxels() { return voxels_; }
   // Hands the slices over (reordered by the caller) and forgets every file: what is asked
   // afterwards is read from disk.
-  std::vector<int16_t> release();
+  VoxelVector release();
 
  private:
   void work();
@@ -67,7 +68,7 @@ class ArrivedFiles {
 
   std::map<std::string, File> files_;  // by pathKey
   std::vector<Slot> slots_;
-  std::vector<int16_t> voxels_;
+  VoxelVector voxels_;
   size_t sliceSize_ = 0;
   size_t populated_ = 0;  // voxels_ elements with page tables
 };

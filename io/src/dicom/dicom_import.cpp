@@ -179,7 +179,7 @@ int chooseCandidate(const Scan& s, const std::string& input, const LoadOptions& 
 // Decodes the slices of C not yet DONE into VOXELS (slice k at k * slice size) and their
 // SCALES.
 void decodeSlices(const Candidate& c, const LoadOptions& options, const std::vector<bool>& done0,
-                  std::vector<int16_t>& voxels, std::vector<SliceScale>& scales) {
+                  VoxelVector& voxels, std::vector<SliceScale>& scales) {
   const FrameHeader& f0 = c.first();
   const size_t sliceSize = size_t(f0.columns) * size_t(f0.rows);
   std::map<std::string, std::vector<size_t>> byFile;  // frames in file order
@@ -237,8 +237,7 @@ void decodeSlices(const Candidate& c, const LoadOptions& options, const std::vec
 
 // Moves slice SOURCE[k] of VOXELS to slice k, for every k (SOURCE is a permutation),
 // following its cycles with one slice aside.
-void permuteSlices(std::vector<int16_t>& voxels, size_t sliceSize,
-                   const std::vector<size_t>& source) {
+void permuteSlices(VoxelVector& voxels, size_t sliceSize, const std::vector<size_t>& source) {
   std::vector<bool> placed(source.size(), false);
   std::vector<int16_t> aside(sliceSize);
   auto slice = [&](size_t k) { return voxels.data() + k * sliceSize; };
@@ -282,7 +281,7 @@ void prefault(void* p, size_t bytes) {
 // becomes the volume; the rest is decoded from disk.
 std::vector<SliceScale> assembleSlices(const Candidate& c, const LoadOptions& options,
                                        ArrivedFiles* arrived, size_t voxelCount,
-                                       std::vector<int16_t>& voxels) {
+                                       VoxelVector& voxels) {
   const FrameHeader& f0 = c.first();
   const size_t sliceSize = size_t(f0.columns) * size_t(f0.rows);
   const double air = airValue(f0.modality);
@@ -417,7 +416,7 @@ Volume importWith(const std::string& input, const LoadOptions& options, ArrivedF
     const double air = airValue(f0.modality);
     auto outside = int16_t(std::clamp(std::lround((air - common.intercept) / common.slope),
                                       long(INT16_MIN), long(INT16_MAX)));
-    std::vector<int16_t> resampled = resampleStack(v.voxels, origins, g, outside, options.cancel);
+    VoxelVector resampled = resampleStack(v.voxels, origins, g, outside, options.cancel);
     throwIfCancelled(options, input);
     v.voxels = std::move(resampled);
   }

@@ -7,16 +7,16 @@
 
 namespace voxray::dicom {
 
-std::vector<int16_t> resampleStack(const std::vector<int16_t>& slices,
-                                   const std::vector<glm::dvec3>& origins, const StackGeometry& g,
-                                   int16_t outside, const std::atomic<bool>* cancel) {
+VoxelVector resampleStack(const VoxelVector& slices, const std::vector<glm::dvec3>& origins,
+                          const StackGeometry& g, int16_t outside,
+                          const std::atomic<bool>* cancel) {
   const Grid& s = g.source;
   const Grid& t = g.target;
   const glm::dvec3 row = s.axes[0], col = s.axes[1], n = s.axes[2];
   const int nx = s.dims.x, ny = s.dims.y, nz = s.dims.z;
   const size_t sliceSize = size_t(nx) * size_t(ny);
   const std::vector<double>& d = g.offsets;  // ascending along n
-  std::vector<int16_t> out(size_t(t.dims.x) * t.dims.y * t.dims.z, outside);
+  VoxelVector out(size_t(t.dims.x) * t.dims.y * t.dims.z, outside);
 
   // Bilinear sample of slice K at voxel coordinates (u, v); NaN outside.
   auto sample = [&](int k, double u, double v) -> double {

@@ -5,14 +5,14 @@
 #include <vector>
 
 #include "stack_geometry.h"
+#include "voxray/io/voxel_memory.h"
 
 namespace voxray::dicom {
 
 // SLICES: the stored stack (x fastest, slice by slice) on geometry G.source with slice
 // origins ORIGINS. Returns voxels on G.target: trilinear along the normal between the
 // two nearest slices, bilinear inside each. Outside the data: OUTSIDE.
-std::vector<int16_t> resampleStack(const std::vector<int16_t>& slices,
-                                   const std::vector<glm::dvec3>& origins, const StackGeometry& g,
-                                   int16_t outside, const std::atomic<bool>* cancel);
+VoxelVector resampleStack(const VoxelVector& slices, const std::vector<glm::dvec3>& origins,
+                          const StackGeometry& g, int16_t outside, const std::atomic<bool>* cancel);
 
 }  // namespace voxray::dicom

@@ -57,7 +57,7 @@ void writeMeta(const Volume& v, const Grid& g, void* data, bool asIs, const std:
 void writeVolumeFile(const Volume& v, const std::string& path, int flipAxis, bool compress) {
   const bool asIs = v.slope == 1.0 && v.intercept == 0.0;
   Grid g{v.originMm, v.direction};
-  std::vector<int16_t> data = v.voxels;
+  std::vector<int16_t> data(v.voxels.begin(), v.voxels.end());
   if (flipAxis >= 0) {
     g.origin += g.direction[flipAxis] * (v.spacingMm[flipAxis] * (v.dims[flipAxis] - 1));
     g.direction[flipAxis] = -g.direction[flipAxis];

@@ -12,6 +12,8 @@
 
 #include <glm/glm.hpp>
 
+#include "voxray/io/voxel_memory.h"
+
 namespace voxray {
 
 // The window the data asks to be shown with (DICOM WindowCenter/WindowWidth, the first
@@ -46,7 +48,7 @@ struct Volume {
   StudyIdentity study;
   std::string sourceType = "i16";     // sample type it was read from
   std::vector<std::string> warnings;  // things the user should know (clamping, NaN, ...)
-  std::vector<int16_t> voxels;
+  VoxelVector voxels;  // 2 MiB-aligned huge pages where Linux gives them (voxel_memory.h)
 
   size_t voxelCount() const { return size_t(dims.x) * size_t(dims.y) * size_t(dims.z); }
   size_t byteSize() const { return voxelCount() * sizeof(int16_t); }
