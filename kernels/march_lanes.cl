@@ -398,6 +398,9 @@ inline void sample_spanN(__global const short* restrict vol, __constant RaycastP
 #ifndef MIP_BATCH
 #define MIP_BATCH 4
 #endif
+#ifndef MIP_PREFETCH
+#define MIP_PREFETCH 1
+#endif
 
 // Samples each lane's walked cells brightest first, until no cell left can raise its
 // maximum (or show above the window's low end). Each lane has its own span [j, end]: the
@@ -454,6 +457,28 @@ inline void mip_cells_brightest_firstN(__global const short* restrict vol,
       *samples -= take;
       *vmax = select(*vmax, fmax(*vmax, v), take);
     }
+#if MIP_PREFETCH
+    {
+      // Prefetch the next turn's voxel rows (its middle sample's four), so that its misses
+      // overlap this turn's instead of waiting on this turn's skip.
+      floatN tp = sample_tN(r, j + MIP_BATCH + MIP_BATCH / 2, step);
+      int4 dims = P->dims;
+      intN px = clamp(convert_intN(r->ox + tp * r->dx), 0, dims.x - 1);
+      intN py = clamp(convert_intN(r->oy + tp * r->dy), 0, dims.y - 1);
+      intN pz = clamp(convert_intN(r->oz + tp * r->dz), 0, dims.z - 2);
+      intN at = select((intN)(-1), (pz * dims.y + py) * dims.x + px, todo);
+      size_t sz = (size_t)dims.x * dims.y;
+#define PREFETCH_LANE(l, n)                          \
+  if (at.s##l >= 0) {                                \
+    __builtin_prefetch(vol + at.s##l);               \
+    __builtin_prefetch(vol + at.s##l + dims.x);      \
+    __builtin_prefetch(vol + at.s##l + sz);          \
+    __builtin_prefetch(vol + at.s##l + sz + dims.x); \
+  }
+      LANE_EACH(PREFETCH_LANE)
+#undef PREFETCH_LANE
+    }
+#endif
     *active &= *vmax < high;
     // The rest of the last sample's voxel cell is skipped where its eight voxels cannot
     // raise the lane's floor (a lane without that sample ends its span either way).
