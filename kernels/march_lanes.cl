@@ -309,28 +309,64 @@ inline void dvr_packet(PACKET_ARGS) {
 // ceiling of the ones left and nothing needs marking. INT_MIN: a cell that cannot show.
 #define MIP_KEY_STEPS 512
 
-// Walks every lane's cells in order (a 3D DDA by exit planes, no samples) and keeps step
-// g's cell as key[g] and its span [t_at[g], t_at[g + 1]), its key INT_MIN where it cannot
-// show above the window's low end. Returns the number of steps, or -1 when a ray needs
-// more.
+// cube_exitN (skip_lanes.cl) at radius 0, and each axis's exit plane in *ex, *ey, *ez.
+inline floatN cube_exit_planesN(__constant RaycastParams* P, const RayPacket* r, intN cx, intN cy,
+                                intN cz, floatN* ex, floatN* ey, floatN* ez) {
+  int4 last = P->cells - 1;
+  intN ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
+  floatN px = convert_floatN(select(cx, cx + 1, ahead_x));
+  floatN py = convert_floatN(select(cy, cy + 1, ahead_y));
+  floatN pz = convert_floatN(select(cz, cz + 1, ahead_z));
+  intN open_x = select(cx <= 0, cx >= last.x, ahead_x) | (r->dx == 0.0f);
+  intN open_y = select(cy <= 0, cy >= last.y, ahead_y) | (r->dy == 0.0f);
+  intN open_z = select(cz <= 0, cz >= last.z, ahead_z) | (r->dz == 0.0f);
+  *ex = select((px * (float)CELL - r->ox) * r->ix, (floatN)(FLT_MAX), open_x);
+  *ey = select((py * (float)CELL - r->oy) * r->iy, (floatN)(FLT_MAX), open_y);
+  *ez = select((pz * (float)CELL - r->oz) * r->iz, (floatN)(FLT_MAX), open_z);
+  return fmin(*ex, fmin(*ey, *ez));
+}
+
+// Each lane's macro cell k's max, as cell_maxN (skip_lanes.cl) but one gather where the
+// device has them (sampling_lanes.cl): a cell's (min, max) is one 32-bit word.
+inline floatN walk_cell_maxN(__global const short2* range, intN k) {
+#ifdef VOXRAY_GATHER32
+  return convert_floatN(gather_wordsN((__global const short*)range, k * 2) >> 16);
+#else
+  return cell_maxN(range, k);
+#endif
+}
+
+// Walks every lane's cells in order and keeps step g's cell as key[g] and its span
+// [t_at[g], t_at[g + 1]), its key INT_MIN where it cannot show above the window's low end.
+// Returns the number of steps, or -1 when a ray needs more. The first cell is the entry
+// point's; each step then moves to the neighbour across the exit plane (planes crossed at
+// once, through an edge or corner, together), so no step finds its cell from a point. The
+// exits are cube_exitN's, from the cell's own planes; the outer cells' outward faces never
+// bound, so the walk stays on the grid.
 inline int walk_cellsN(__global const short2* range, __constant RaycastParams* P,
                        const RayPacket* r, float low, intN* key, floatN* t_at) {
-  floatN nudge = 1e-3f / fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
-  floatN t = r->t0, t_enter = r->t0;
   intN pending = r->n >= 0;
+  intN cx, cy, cz;
+  cellN(P, r, r->t0, pending, &cx, &cy, &cz);
+  intN sx = select((intN)(-1), (intN)(1), r->dx > 0.0f);
+  intN sy = select((intN)(-1), (intN)(1), r->dy > 0.0f);
+  intN sz = select((intN)(-1), (intN)(1), r->dz > 0.0f);
+  floatN t_enter = r->t0;
   int g = 0;
   for (; any(pending); ++g) {
     if (g == MIP_WALK) return -1;
-    intN cx, cy, cz;
-    intN k = cellN(P, r, t, pending, &cx, &cy, &cz);
-    floatN t_exit = fmin(cube_exitN(P, r, cx, cy, cz, 0), r->t1);
-    floatN m = cell_maxN(range, k);
+    intN k = select((intN)(0), (cz * P->cells.y + cy) * P->cells.x + cx, pending);
+    floatN ex, ey, ez;
+    floatN t_exit = fmin(cube_exit_planesN(P, r, cx, cy, cz, &ex, &ey, &ez), r->t1);
+    floatN m = walk_cell_maxN(range, k);
     key[g] = select((intN)(INT_MIN), convert_intN(m) * MIP_KEY_STEPS + (MIP_KEY_STEPS - 1 - g),
                     pending & (m > low));
     t_at[g] = t_enter;
-    t_enter = select(t_enter, t_exit, pending);  // where this step's cell ends
+    t_enter = select(t_enter, fmax(t_enter, t_exit), pending);  // where this step's cell ends
     pending &= t_exit < r->t1;
-    t = select(t, fmax(t, t_exit) + fmax(nudge, fabs(t_exit) * 5e-7f), pending);
+    cx += sx & pending & (ex <= t_exit);
+    cy += sy & pending & (ey <= t_exit);
+    cz += sz & pending & (ez <= t_exit);
   }
   t_at[g] = t_enter;
   return g;
@@ -378,6 +414,9 @@ inline void sample_spanN(__global const short* restrict vol, __constant RaycastP
 #endif
 #ifndef MIP_BATCH
 #define MIP_BATCH 4
+#endif
+#ifndef MIP_PREFETCH
+#define MIP_PREFETCH 1
 #endif
 
 // Samples each lane's walked cells brightest first, until no cell left can raise its
@@ -435,6 +474,28 @@ inline void mip_cells_brightest_firstN(__global const short* restrict vol,
       *samples -= take;
       *vmax = select(*vmax, fmax(*vmax, v), take);
     }
+#if MIP_PREFETCH
+    {
+      // Prefetch the next turn's voxel rows (its middle sample's four), so that its misses
+      // overlap this turn's instead of waiting on this turn's skip.
+      floatN tp = sample_tN(r, j + MIP_BATCH + MIP_BATCH / 2, step);
+      int4 dims = P->dims;
+      intN px = clamp(convert_intN(r->ox + tp * r->dx), 0, dims.x - 1);
+      intN py = clamp(convert_intN(r->oy + tp * r->dy), 0, dims.y - 1);
+      intN pz = clamp(convert_intN(r->oz + tp * r->dz), 0, dims.z - 2);
+      intN at = select((intN)(-1), (pz * dims.y + py) * dims.x + px, todo);
+      size_t sz = (size_t)dims.x * dims.y;
+#define PREFETCH_LANE(l, n)                          \
+  if (at.s##l >= 0) {                                \
+    __builtin_prefetch(vol + at.s##l);               \
+    __builtin_prefetch(vol + at.s##l + dims.x);      \
+    __builtin_prefetch(vol + at.s##l + sz);          \
+    __builtin_prefetch(vol + at.s##l + sz + dims.x); \
+  }
+      LANE_EACH(PREFETCH_LANE)
+#undef PREFETCH_LANE
+    }
+#endif
     *active &= *vmax < high;
     // The rest of the last sample's voxel cell is skipped where its eight voxels cannot
     // raise the lane's floor (a lane without that sample ends its span either way).
