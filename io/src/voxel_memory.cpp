@@ -1,5 +1,6 @@
 #include "voxray/io/voxel_memory.h"
 
+#include <cstring>
 #include <new>
 
 #if defined(__linux__)
@@ -19,7 +20,7 @@ size_t roundUp(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1)
 #if defined(__linux__)
 
 void* allocateVoxelMemory(size_t bytes) {
-  if (bytes < kHugePage) return ::operator new(bytes);
+  if (bytes < kHugePage) return std::memset(::operator new(bytes), 0, bytes);
   // One huge page more than needed, the unaligned head and the tail given back: the block
   // starts on a 2 MiB boundary, so every 2 MiB of it can be one page.
   const size_t size = roundUp(bytes);
@@ -49,7 +50,7 @@ void releaseVoxelMemory(void* p, size_t bytes) noexcept {
 
 #else
 
-void* allocateVoxelMemory(size_t bytes) { return ::operator new(bytes); }
+void* allocateVoxelMemory(size_t bytes) { return std::memset(::operator new(bytes), 0, bytes); }
 void releaseVoxelMemory(void* p, size_t) noexcept { ::operator delete(p); }
 
 #endif

@@ -8,11 +8,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace voxray {
 
-// BYTES of memory (zeroed when large), and its release; never null (throws std::bad_alloc).
+// BYTES of zeroed memory, and its release; never null (throws std::bad_alloc).
 void* allocateVoxelMemory(size_t bytes);
 void releaseVoxelMemory(void* p, size_t bytes) noexcept;
 
@@ -24,6 +25,17 @@ struct VoxelAllocator {
   VoxelAllocator(const VoxelAllocator<U>&) noexcept {}
   T* allocate(size_t n) { return static_cast<T*>(allocateVoxelMemory(n * sizeof(T))); }
   void deallocate(T* p, size_t n) noexcept { releaseVoxelMemory(p, n * sizeof(T)); }
+  // Elements made without a value are left as the memory holds them, zero: a vector sized
+  // for a volume is not filled on one thread first (the importers write every voxel, and
+  // the pages then fault on the threads that write them).
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
   template <class U>
   bool operator==(const VoxelAllocator<U>&) const noexcept {
     return true;
