@@ -86,7 +86,7 @@ inline void iso_packet(PACKET_ARGS) {
         floatN x = r.ox + t * r.dx, y = r.oy + t * r.dy, z = r.oz + t * r.dz;
         intN empty = iso_block_emptyN(leap, P, x, y, z, active);
         if (!any(empty)) break;
-        i = select(i, max(i + 1, past_blockN(&r, x, y, z, step)), empty);
+        i = select(i, max(i + 1, past_cubeN(&r, x, y, z, 2.0f, step)), empty);
         active &= i <= r.n;
       }
       if (!any(active)) break;
@@ -309,23 +309,6 @@ inline void dvr_packet(PACKET_ARGS) {
 // ceiling of the ones left and nothing needs marking. INT_MIN: a cell that cannot show.
 #define MIP_KEY_STEPS 512
 
-// cube_exitN (skip_lanes.cl) at radius 0, and each axis's exit plane in *ex, *ey, *ez.
-inline floatN cube_exit_planesN(__constant RaycastParams* P, const RayPacket* r, intN cx, intN cy,
-                                intN cz, floatN* ex, floatN* ey, floatN* ez) {
-  int4 last = P->cells - 1;
-  intN ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
-  floatN px = convert_floatN(select(cx, cx + 1, ahead_x));
-  floatN py = convert_floatN(select(cy, cy + 1, ahead_y));
-  floatN pz = convert_floatN(select(cz, cz + 1, ahead_z));
-  intN open_x = select(cx <= 0, cx >= last.x, ahead_x) | (r->dx == 0.0f);
-  intN open_y = select(cy <= 0, cy >= last.y, ahead_y) | (r->dy == 0.0f);
-  intN open_z = select(cz <= 0, cz >= last.z, ahead_z) | (r->dz == 0.0f);
-  *ex = select((px * (float)CELL - r->ox) * r->ix, (floatN)(FLT_MAX), open_x);
-  *ey = select((py * (float)CELL - r->oy) * r->iy, (floatN)(FLT_MAX), open_y);
-  *ez = select((pz * (float)CELL - r->oz) * r->iz, (floatN)(FLT_MAX), open_z);
-  return fmin(*ex, fmin(*ey, *ez));
-}
-
 // Each lane's macro cell k's max, as cell_maxN (skip_lanes.cl) but one gather where the
 // device has them (sampling_lanes.cl): a cell's (min, max) is one 32-bit word.
 inline floatN walk_cell_maxN(__global const short2* range, intN k) {
@@ -357,7 +340,7 @@ inline int walk_cellsN(__global const short2* range, __constant RaycastParams* P
     if (g == MIP_WALK) return -1;
     intN k = select((intN)(0), (cz * P->cells.y + cy) * P->cells.x + cx, pending);
     floatN ex, ey, ez;
-    floatN t_exit = fmin(cube_exit_planesN(P, r, cx, cy, cz, &ex, &ey, &ez), r->t1);
+    floatN t_exit = fmin(cube_exit_planesN(P, r, cx, cy, cz, (intN)(0), &ex, &ey, &ez), r->t1);
     floatN m = walk_cell_maxN(range, k);
     key[g] = select((intN)(INT_MIN), convert_intN(m) * MIP_KEY_STEPS + (MIP_KEY_STEPS - 1 - g),
                     pending & (m > low));

@@ -41,17 +41,23 @@ inline floatN ray_tN(const RayPacket* r, intN i, float step, bool segments) {
   return 0.5f * (a + b);
 }
 
-// The first sample index past the voxel cell [floor(p), floor(p) + 1] that sample t lies
-// in (trilinear reads the same eight voxels, clamped, everywhere in it).
-inline intN past_voxel_cellN(const RayPacket* r, floatN t, float step) {
-  floatN x = r->ox + t * r->dx, y = r->oy + t * r->dy, z = r->oz + t * r->dz;
-  floatN px = floor(x) + select((floatN)(0.0f), (floatN)(1.0f), r->dx > 0.0f);
-  floatN py = floor(y) + select((floatN)(0.0f), (floatN)(1.0f), r->dy > 0.0f);
-  floatN pz = floor(z) + select((floatN)(0.0f), (floatN)(1.0f), r->dz > 0.0f);
+// The first sample index past the cube [size floor(p / size), + size] that the point
+// (x, y, z) lies in: a voxel cell (size 1) or a block of them.
+inline intN past_cubeN(const RayPacket* r, floatN x, floatN y, floatN z, float size, float step) {
+  float inv = 1.0f / size;
+  floatN px = size * (floor(x * inv) + select((floatN)(0.0f), (floatN)(1.0f), r->dx > 0.0f));
+  floatN py = size * (floor(y * inv) + select((floatN)(0.0f), (floatN)(1.0f), r->dy > 0.0f));
+  floatN pz = size * (floor(z * inv) + select((floatN)(0.0f), (floatN)(1.0f), r->dz > 0.0f));
   floatN tx = select((px - r->ox) * r->ix, (floatN)(FLT_MAX), r->dx == 0.0f);
   floatN ty = select((py - r->oy) * r->iy, (floatN)(FLT_MAX), r->dy == 0.0f);
   floatN tz = select((pz - r->oz) * r->iz, (floatN)(FLT_MAX), r->dz == 0.0f);
   return index_atN(r, fmin(tx, fmin(ty, tz)), step, false);
+}
+
+// The first sample index past the voxel cell [floor(p), floor(p) + 1] that sample t lies
+// in (trilinear reads the same eight voxels, clamped, everywhere in it).
+inline intN past_voxel_cellN(const RayPacket* r, floatN t, float step) {
+  return past_cubeN(r, r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz, 1.0f, step);
 }
 
 // pixel_ray (raycast.cl) for the 4 x PACKET_ROWS pixels at (4 gx, PACKET_ROWS gy), lane l at (l &

@@ -37,16 +37,4 @@ inline intN iso_block_emptyN(__global const uchar* leap, __constant RaycastParam
   return live & (((b >> bit) & 1) == 0);
 }
 
-// The first sample index past the 2^3 voxel block that the point (x, y, z) lies in
-// (past_voxel_cellN's, for blocks; outside the grid, a part of the block it is clamped to).
-inline intN past_blockN(const RayPacket* r, floatN x, floatN y, floatN z, float step) {
-  floatN px = 2.0f * (floor(x * 0.5f) + select((floatN)(0.0f), (floatN)(1.0f), r->dx > 0.0f));
-  floatN py = 2.0f * (floor(y * 0.5f) + select((floatN)(0.0f), (floatN)(1.0f), r->dy > 0.0f));
-  floatN pz = 2.0f * (floor(z * 0.5f) + select((floatN)(0.0f), (floatN)(1.0f), r->dz > 0.0f));
-  floatN tx = select((px - r->ox) * r->ix, (floatN)(FLT_MAX), r->dx == 0.0f);
-  floatN ty = select((py - r->oy) * r->iy, (floatN)(FLT_MAX), r->dy == 0.0f);
-  floatN tz = select((pz - r->oz) * r->iz, (floatN)(FLT_MAX), r->dz == 0.0f);
-  return index_atN(r, fmin(tx, fmin(ty, tz)), step, false);
-}
-
 #endif

@@ -17,11 +17,12 @@ inline intN cellN(__constant RaycastParams* P, const RayPacket* r, floatN t, int
   return select((intN)(0), (*cz * P->cells.y + *cy) * P->cells.x + *cx, pending);
 }
 
-// Where each lane's ray leaves the cube of cells within `radius` of (cx, cy, cz). Along an
-// axis the outermost cells reach to infinity (positions off the grid are clamped into
-// them), as does an axis the ray runs parallel to: FLT_MAX.
-inline floatN cube_exitN(__constant RaycastParams* P, const RayPacket* r, intN cx, intN cy, intN cz,
-                         intN radius) {
+// Where each lane's ray leaves the cube of cells within `radius` of (cx, cy, cz), and in
+// *ex, *ey, *ez where it crosses each axis's exit plane. Along an axis the outermost cells
+// reach to infinity (positions off the grid are clamped into them), as does an axis the
+// ray runs parallel to: FLT_MAX.
+inline floatN cube_exit_planesN(__constant RaycastParams* P, const RayPacket* r, intN cx, intN cy,
+                                intN cz, intN radius, floatN* ex, floatN* ey, floatN* ez) {
   int4 last = P->cells - 1;
   intN ahead_x = r->dx > 0.0f, ahead_y = r->dy > 0.0f, ahead_z = r->dz > 0.0f;
   floatN px = convert_floatN(select(cx - radius, cx + radius + 1, ahead_x));
@@ -30,10 +31,16 @@ inline floatN cube_exitN(__constant RaycastParams* P, const RayPacket* r, intN c
   intN open_x = select(cx - radius <= 0, cx + radius >= last.x, ahead_x) | (r->dx == 0.0f);
   intN open_y = select(cy - radius <= 0, cy + radius >= last.y, ahead_y) | (r->dy == 0.0f);
   intN open_z = select(cz - radius <= 0, cz + radius >= last.z, ahead_z) | (r->dz == 0.0f);
-  floatN tx = select((px * (float)CELL - r->ox) * r->ix, (floatN)(FLT_MAX), open_x);
-  floatN ty = select((py * (float)CELL - r->oy) * r->iy, (floatN)(FLT_MAX), open_y);
-  floatN tz = select((pz * (float)CELL - r->oz) * r->iz, (floatN)(FLT_MAX), open_z);
-  return fmin(tx, fmin(ty, tz));
+  *ex = select((px * (float)CELL - r->ox) * r->ix, (floatN)(FLT_MAX), open_x);
+  *ey = select((py * (float)CELL - r->oy) * r->iy, (floatN)(FLT_MAX), open_y);
+  *ez = select((pz * (float)CELL - r->oz) * r->iz, (floatN)(FLT_MAX), open_z);
+  return fmin(*ex, fmin(*ey, *ez));
+}
+
+inline floatN cube_exitN(__constant RaycastParams* P, const RayPacket* r, intN cx, intN cy, intN cz,
+                         intN radius) {
+  floatN ex, ey, ez;
+  return cube_exit_planesN(P, r, cx, cy, cz, radius, &ex, &ey, &ez);
 }
 
 // Each lane's macro cell k's max (mip).
