@@ -147,15 +147,13 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
     cl_int4 dims = {{cells_.dims.x, cells_.dims.y, cells_.dims.z, 0}};
     // Only iso packets read the one-sided distances (one ray per work-item leaps by the
-    // two-sided ones). First: it may enlarge leap_.
-    if (m == 0 && packets) {
+    // two-sided ones). First: it may enlarge leap_. Their minimum is then the two-sided
+    // distances (the same, at a fraction of the work); otherwise, three passes make them:
+    // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
+    const bool oneSided = m == 0 && packets;
+    if (oneSided) {
       aheadDistances(cl, dims);
       isoBlocks(cl, k);
-    }
-    // Distances to the nearest occupied cell, so rays leap whole empty cubes at once:
-    // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z); after the one-sided
-    // ones, their minimum (the same distances, at a fraction of the work).
-    if (m == 0 && packets) {
       cl::Kernel octants = cl.kernel("classify.cl", "leap_distance_from_octants", "");
       octants.setArg(0, leap_);
       octants.setArg(1, cl_int(cells));
@@ -164,7 +162,7 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     cl::Kernel pass = cl.kernel("classify.cl", "leap_distance", "");
     const cl::Buffer* from[3] = {&occ_, &leap_, &scratch_};
     const cl::Buffer* to[3] = {&leap_, &scratch_, &leap_};
-    for (int axis = 0; axis < 3 && !(m == 0 && packets); ++axis) {
+    for (int axis = 0; axis < 3 && !oneSided; ++axis) {
       pass.setArg(0, *from[axis]);
       pass.setArg(1, *to[axis]);
       pass.setArg(2, dims);
