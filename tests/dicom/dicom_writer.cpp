@@ -54,8 +54,13 @@ void writeTestSlice(const std::string& path, const TestSlice& s) {
   for (size_t i = 0; i < pixels.size(); ++i)
     pixels[i] = s.allWords ? Uint16(i ^ s.wordXor) : Uint16(int16_t(int(i) - 8));
   ds->putAndInsertUint16Array(DCM_PixelData, pixels.data(), unsigned(pixels.size()));
-  const E_TransferSyntax xfer =
-      s.deflated ? EXS_DeflatedLittleEndianExplicit : EXS_LittleEndianExplicit;
+  if (s.trailingPadding) {
+    const Uint8 zeros[4] = {};
+    ds->putAndInsertUint8Array(DCM_DataSetTrailingPadding, zeros, 4);
+  }
+  const E_TransferSyntax xfer = s.deflated     ? EXS_DeflatedLittleEndianExplicit
+                                : s.implicitVr ? EXS_LittleEndianImplicit
+                                               : EXS_LittleEndianExplicit;
   if (file.saveFile(path.c_str(), xfer).bad()) throw std::runtime_error("cannot write " + path);
 }
 

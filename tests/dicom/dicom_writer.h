@@ -23,7 +23,9 @@ struct TestSlice {
   std::optional<int> padding, paddingLimit;  // PixelPaddingValue / RangeLimit (US or SS)
   bool allWords = false;
   uint16_t wordXor = 0;
-  bool deflated = false;  // Deflated Explicit VR Little Endian instead of Explicit VR LE
+  bool deflated = false;         // Deflated Explicit VR Little Endian instead of Explicit VR LE
+  bool implicitVr = false;       // Implicit VR Little Endian instead
+  bool trailingPadding = false;  // DataSetTrailingPadding after the pixel data
 };
 
 // A SIZE x SIZE CT image (by default int16, pixel i = i - 8) in explicit VR little endian.

@@ -1,13 +1,16 @@
-// Uncompressed little-endian 16-bit frames are read straight into the volume (NativeFrames,
-// storeWords); every other file takes the general decoder (PixelFile, storeSlice). A
-// deflated file with the same pixels takes the general one, so the two are compared on
-// every 16-bit word, for each stored sample format, with and without padding: bit for bit.
+// Uncompressed little-endian 16-bit frames are converted straight into the volume
+// (NativeFrames, storeWords): from the mapped file when the pixel data ends it, else read;
+// every other file takes the general decoder (PixelFile, storeSlice). A deflated file with
+// the same pixels takes the general one, so the paths are compared on every 16-bit word,
+// for each stored sample format, with and without padding: bit for bit.
 #include <gtest/gtest.h>
 
 #include <optional>
 
 #include "../io/test_support.h"
 #include "dicom_writer.h"
+#include "frame_header.h"
+#include "pixel_decode.h"
 #include "test_data.h"
 
 namespace voxray {
@@ -19,9 +22,16 @@ struct Format {
   std::optional<int> padding, paddingLimit;
 };
 
+enum class Encoding {
+  Mapped,          // explicit VR, pixel data last: converted from the mapped file
+  MappedImplicit,  // the same in implicit VR
+  Read,            // an element after the pixel data: the frame is read, then converted
+  Deflated,        // the general decoder
+};
+
 // Three 256x256 CT slices (z 0, 1, 2; fewer is no volume): slice 0 holds word i at pixel i,
 // slice 1 its inverse, slice 2 word i XOR 0x5A5A.
-Volume importEveryWord(const Format& f, bool deflated) {
+Volume importEveryWord(const Format& f, Encoding encoding = Encoding::Mapped) {
   test::TempDir dir;
   for (int k = 0; k < 3; ++k) {
     test::TestSlice s;
@@ -34,7 +44,9 @@ Volume importEveryWord(const Format& f, bool deflated) {
     s.pixelRepresentation = f.pixelRepresentation;
     s.padding = f.padding;
     s.paddingLimit = f.paddingLimit;
-    s.deflated = deflated;
+    s.deflated = encoding == Encoding::Deflated;
+    s.implicitVr = encoding == Encoding::MappedImplicit;
+    s.trailingPadding = encoding == Encoding::Read;
     test::writeTestSlice(dir.file(std::to_string(k) + ".dcm"), s);
   }
   return importDicom(dir.path().string());
@@ -54,12 +66,49 @@ const Format kFormats[] = {
 TEST(DicomNativeFrames, EveryWordImportsAsTheGeneralDecoderImportsIt) {
   for (const Format& f : kFormats) {
     SCOPED_TRACE(f.name);
-    const Volume direct = importEveryWord(f, false), general = importEveryWord(f, true);
-    ASSERT_EQ(direct.dims, glm::ivec3(256, 256, 3));
-    ASSERT_EQ(general.dims, direct.dims);
-    EXPECT_EQ(direct.slope, general.slope);
-    EXPECT_EQ(direct.intercept, general.intercept);
-    EXPECT_TRUE(direct.voxels == general.voxels);
+    const Volume general = importEveryWord(f, Encoding::Deflated);
+    ASSERT_EQ(general.dims, glm::ivec3(256, 256, 3));
+    for (Encoding e : {Encoding::Mapped, Encoding::MappedImplicit, Encoding::Read}) {
+      SCOPED_TRACE(int(e));
+      const Volume direct = importEveryWord(f, e);
+      ASSERT_EQ(direct.dims, general.dims);
+      EXPECT_EQ(direct.slope, general.slope);
+      EXPECT_EQ(direct.intercept, general.intercept);
+      EXPECT_TRUE(direct.voxels == general.voxels);
+    }
+  }
+}
+
+// Which way a frame goes: from the mapped file when the pixel data ends it, in either
+// little-endian encoding; read when another element follows it.
+TEST(DicomNativeFrames, TheMapIsUsedOnlyWhereThePixelDataEndsTheFile) {
+  test::TempDir dir;
+  for (Encoding e : {Encoding::Mapped, Encoding::MappedImplicit, Encoding::Read}) {
+    SCOPED_TRACE(int(e));
+    test::TestSlice s;
+    s.size = 64;
+    s.implicitVr = e == Encoding::MappedImplicit;
+    s.trailingPadding = e == Encoding::Read;
+    const std::string path = dir.file(std::to_string(int(e)) + ".dcm");
+    test::writeTestSlice(path, s);
+    std::vector<dicom::FrameHeader> frames;
+    std::string why;
+    ASSERT_EQ(dicom::readFrameHeaders(path, frames, why), dicom::ScanResult::Image) << why;
+    ASSERT_EQ(frames.size(), 1u);
+    dicom::NativeFrames native(path);
+    int16_t first = 0, last = 0;
+    const bool mapped = native.useMapped(frames[0], [&](const uint16_t* words) {
+      first = int16_t(words[0]);
+      last = int16_t(words[64 * 64 - 1]);
+    });
+    EXPECT_EQ(mapped, e != Encoding::Read);
+    std::vector<uint16_t> read(64 * 64);
+    ASSERT_TRUE(native.read(frames[0], read.data()));
+    if (mapped) {  // pixel i holds i - 8
+      EXPECT_EQ(first, -8);
+      EXPECT_EQ(last, 64 * 64 - 9);
+    }
+    EXPECT_EQ(int16_t(read[64 * 64 - 1]), 64 * 64 - 9);
   }
 }
 
@@ -68,29 +117,29 @@ TEST(DicomNativeFrames, StoredWordsMeanWhatTheirFormatSays) {
   auto hu = [](const Volume& v, uint16_t word) {
     return v.toPhysical(v.at(word % 256, word / 256, 0));
   };
-  const Volume i16 = importEveryWord(kFormats[0], false);
+  const Volume i16 = importEveryWord(kFormats[0]);
   EXPECT_EQ(hu(i16, 0x7FFF), 32767.0);
   EXPECT_EQ(hu(i16, 0x8000), -32768.0);
   EXPECT_EQ(hu(i16, 0xFFFF), -1.0);
-  const Volume u16 = importEveryWord(kFormats[1], false);
+  const Volume u16 = importEveryWord(kFormats[1]);
   EXPECT_EQ(u16.intercept, 32768.0);  // shifted, not clipped
   EXPECT_EQ(hu(u16, 0x0000), 0.0);
   EXPECT_EQ(hu(u16, 0xFFFF), 65535.0);
-  const Volume i12 = importEveryWord(kFormats[2], false);
+  const Volume i12 = importEveryWord(kFormats[2]);
   EXPECT_EQ(hu(i12, 0x0FFF), -1.0);     // 12 bits, sign-extended
   EXPECT_EQ(hu(i12, 0xF800), -2048.0);  // bits above BitsStored ignored
   EXPECT_EQ(hu(i12, 0x07FF), 2047.0);
-  const Volume u12 = importEveryWord(kFormats[3], false);
+  const Volume u12 = importEveryWord(kFormats[3]);
   EXPECT_EQ(hu(u12, 0xF123), 0x123);
-  const Volume pad = importEveryWord(kFormats[4], false);
+  const Volume pad = importEveryWord(kFormats[4]);
   EXPECT_EQ(hu(pad, uint16_t(int16_t(-2000))), -1024.0);
   EXPECT_EQ(hu(pad, uint16_t(int16_t(-1999))), -1999.0);
-  const Volume range = importEveryWord(kFormats[5], false);
+  const Volume range = importEveryWord(kFormats[5]);
   // Air (-1024 HU) is below what u16 with intercept 0 holds: padding becomes its lowest, 0.
   EXPECT_EQ(hu(range, 50), 0.0);
   EXPECT_EQ(hu(range, 100), 0.0);
   EXPECT_EQ(hu(range, 101), 101.0);
-  const Volume range12 = importEveryWord(kFormats[6], false);
+  const Volume range12 = importEveryWord(kFormats[6]);
   EXPECT_EQ(hu(range12, 0x0800), -1024.0);  // -2048 as 12 bits: padding, so air
   EXPECT_EQ(hu(range12, 0x0C18), -1024.0);  // -1000: the range's end, padding too
   EXPECT_EQ(hu(range12, 0x0C19), -999.0);
