@@ -1,6 +1,7 @@
 // The DIMSE transport: C-ECHO, C-FIND, C-GET, C-MOVE (into Voxray's own receiver) and
 // C-STORE through DCMTK's DcmSCU.
 #include <algorithm>
+#include <filesystem>
 #include <functional>
 
 #include <dcmtk/config/osconfig.h>
@@ -75,6 +76,9 @@ class Scu : public DcmSCU {
       return EC_Normal;
     }
     files.push_back(path);
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(path, ec);
+    if (!ec) progress.megabytes += double(bytes) / 1e6;
     progress.received = int(files.size());
     progress.total = std::max(progress.total, progress.received);
     if (retrieve.progress) retrieve.progress(progress);
