@@ -64,81 +64,21 @@ inline floatN cap_or_gradientN(floatN g, intN graded, intN cap, intN along) {
 #ifndef ISO_BLOCK_TRIES
 #define ISO_BLOCK_TRIES (LANES == 8 ? 4 : 0)
 #endif
-// Lane refill: a work-item marches the rays of ISO_TILE packets side by side along x (the
-// others return at once, so the host's launch and bands stay as for one packet per item).
-// A lane whose ray is done records its hit index and takes the tile's next ray, so lanes do
-// not idle until the packet's slowest ray ends; then each packet is refined and shaded as
-// before, its rays made again from its pixels. Each ray's march is its own (the leaps and
-// blocks only skip samples that cannot hit), so the hits and the image are the same.
-#ifndef ISO_TILE
-#define ISO_TILE 4
-#endif
-#define ISO_RAYS (ISO_TILE * LANES)
-// Idle lanes that make a refill worth its ray setup (every lane pays for it).
-#ifndef ISO_REFILL
-#define ISO_REFILL (LANES / 4)
-#endif
-
-// The pixel of each lane's tile ray q: packet q / LANES along x, its lane q % LANES.
-inline void iso_tile_pixelN(int gx, int gy, intN q, intN* px, intN* py) {
-  intN lane = q & (LANES - 1);
-  *px = 4 * (gx + q / LANES) + (lane & 3);
-  *py = PACKET_ROWS * gy + (lane >> 2);
-}
-
-// Marches the tile's rays from packet gx on; hits[q] gets ray q's hit index (-1 none).
-// Returns the samples taken.
-inline uint iso_march_tile(__global const short* restrict vol, __constant RaycastParams* P,
-                           CELL_ARGS, int gx, int gy, int hits[ISO_RAYS]) {
+inline void iso_packet(PACKET_ARGS) {
   float step = P->view.z;
-  float lo = P->values.x, hi = P->values.y;
-#define LANE_INDEX(l, n) n
-  intN q = (intN)(LANE_LIST(LANE_INDEX));
-#undef LANE_INDEX
-  int next = LANES;
   RayPacket r;
   floatN world[6];
-  intN px, py;
-  iso_tile_pixelN(gx, gy, q, &px, &py);
-  pixel_rays_atN(P, px, py, &r, world);
+  intN axis = pixel_raysN(P, gx, gy, &r, world);
+
+  float lo = P->values.x, hi = P->values.y;
   intN i = 0, check = 0, hit = -1, samples = 0;
+  floatN t_hit = 0.0f;
   intN active = r.n >= 0;
   intN ahead = ahead_baseN(P, &r);  // this ray's one-sided distances (skip_ahead_lanes.cl)
-  for (;;) {
-    intN done = ~active & (q < ISO_RAYS);
-    int idle = count_lanes(done);
-    if (idle > 0 && (idle >= ISO_REFILL || !any(active))) {
-      // Record the done lanes' hits and give them the next rays (none: q = ISO_RAYS).
-#define TAKE_NEXT(l, n)                           \
-  if (done.s##l) {                                \
-    hits[q.s##l] = hit.s##l;                      \
-    q.s##l = next < ISO_RAYS ? next++ : ISO_RAYS; \
-  }
-      LANE_EACH(TAKE_NEXT)
-#undef TAKE_NEXT
-      intN fresh = done & (q < ISO_RAYS);
-      if (any(fresh)) {
-        RayPacket s;
-        iso_tile_pixelN(gx, gy, q, &px, &py);
-        pixel_rays_atN(P, px, py, &s, world);
-        r.ox = select(r.ox, s.ox, fresh), r.oy = select(r.oy, s.oy, fresh);
-        r.oz = select(r.oz, s.oz, fresh), r.dx = select(r.dx, s.dx, fresh);
-        r.dy = select(r.dy, s.dy, fresh), r.dz = select(r.dz, s.dz, fresh);
-        r.ix = select(r.ix, s.ix, fresh), r.iy = select(r.iy, s.iy, fresh);
-        r.iz = select(r.iz, s.iz, fresh), r.t0 = select(r.t0, s.t0, fresh);
-        r.t1 = select(r.t1, s.t1, fresh), r.j = select(r.j, s.j, fresh);
-        r.n = select(r.n, s.n, fresh);
-        i = select(i, (intN)(0), fresh), check = select(check, (intN)(0), fresh);
-        hit = select(hit, (intN)(-1), fresh);
-        ahead = select(ahead, ahead_baseN(P, &s), fresh);
-        active |= fresh & (s.n >= 0);
-      }
-      continue;
-    }
-    if (!any(active)) break;
+  while (any(active)) {
     if (ESS) {
       active = leap_packetN(leap, range, P, &r, ahead, &i, &check, active, step, false, false);
-      if (!any(active)) continue;
+      if (!any(active)) break;
       // Inside occupied cells, lanes whose next sample lies in a 2^3 voxel block that cannot
       // hold the iso range move past it instead of loading voxels there: the same first hit.
       for (int g = 0; g < ISO_BLOCK_TRIES; ++g) {
@@ -149,7 +89,7 @@ inline uint iso_march_tile(__global const short* restrict vol, __constant Raycas
         i = select(i, max(i + 1, past_cubeN(&r, x, y, z, 2.0f, step)), empty);
         active &= i <= r.n;
       }
-      if (!any(active)) continue;
+      if (!any(active)) break;
     }
     // ISO_BATCH samples at once: their loads (mostly cache misses on a large volume) are
     // in flight together. Taken in order, the first in the iso range is the hit, the
@@ -161,38 +101,24 @@ inline uint iso_march_tile(__global const short* restrict vol, __constant Raycas
       v[k] = sample_rangeN(vol, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz,
                            &vlo[k], &vhi[k]);
     }
-    intN next_i = i + ISO_BATCH;
+    intN next = i + ISO_BATCH;
     for (int k = 0; k < ISO_BATCH; ++k) {
       intN live = active & (i + k <= r.n);
       samples -= live;  // true is -1
       intN in = live & (v[k] >= lo) & (v[k] <= hi);
       hit = select(hit, i + k, in);
+      t_hit = select(t_hit, t[k], in);
       active &= ~in;
       // Trilinear: a voxel cell whose eight voxels all miss the iso range holds no hit, so
       // the samples left in it are skipped (the same first hit; the one before it, where
       // refinement starts, is outside the range either way).
       intN cell_misses = live & ((vhi[k] < lo) | (vlo[k] > hi));
       if (INTERP != 0 && any(cell_misses) != 0)
-        next_i = select(next_i, max(next_i, past_voxel_cellN(&r, t[k], step)), cell_misses);
+        next = select(next, max(next, past_voxel_cellN(&r, t[k], step)), cell_misses);
     }
-    i = next_i;
+    i = next;
     active &= i <= r.n;
   }
-  uint total = 0;
-  int counts[LANES];
-  vstoreN(samples, 0, counts);
-  for (int l = 0; l < LANES; ++l) total += counts[l];
-  return total;
-}
-
-// Refines and shades one packet's hits (hit: each lane's index, -1 none) and writes its pixels.
-inline void iso_shade_packet(PACKET_ARGS, intN hit, intN samples) {
-  float step = P->view.z;
-  RayPacket r;
-  floatN world[6];
-  intN axis = pixel_raysN(P, gx, gy, &r, world);
-  float lo = P->values.x, hi = P->values.y;
-  floatN t_hit = select((floatN)(0.0f), sample_tN(&r, hit, step), hit >= 0);
   intN refine = hit > 0;
   if (REFINE_STEPS > 0 && any(refine)) {
     floatN a = sample_tN(&r, hit - 1, step), b = t_hit;
@@ -239,18 +165,6 @@ inline void iso_shade_packet(PACKET_ARGS, intN hit, intN samples) {
   write_hits_packet(P, hits, gx, gy, hx, hy, hz, hit_w);
 #endif
   write_packet(P, out, count, gx, gy, color, samples);
-}
-
-inline void iso_packet(PACKET_ARGS) {
-  if (gx % ISO_TILE != 0) return;  // the tile's first item marches it
-  int tile_hits[ISO_RAYS];
-  uint marched = iso_march_tile(vol, P, leap, range, gx, gy, tile_hits);
-  if (COUNT_SAMPLES) atomic_add(&count[(gx ^ gy) & 63], marched);
-  for (int p = 0; p < ISO_TILE; ++p) {
-    if (4 * (gx + p) >= P->image.x) break;  // past the image: no pixels to write
-    iso_shade_packet(vol, P, lut, out, leap, range, count, gx + p, gy PACKET_HITS_ARG,
-                     vloadN(0, tile_hits + p * LANES), 0);
-  }
 }
 
 // One dvr sample into the composite: opacity (and colour) c of the segment of length seg

@@ -60,13 +60,16 @@ inline intN past_voxel_cellN(const RayPacket* r, floatN t, float step) {
   return past_cubeN(r, r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz, 1.0f, step);
 }
 
-// pixel_ray (raycast.cl) for each lane's pixel (px, py); the same formulas. Returns each lane's
-// entry axis, -2 where there is no ray (a miss or a pixel outside the image); such lanes get a
-// ray of length zero at the origin. w gets the rays in world space (origin, unit direction) for
-// shading.
-inline intN pixel_rays_atN(__constant RaycastParams* P, intN px, intN py, RayPacket* r,
-                           floatN w[6]) {
+// pixel_ray (raycast.cl) for the 4 x PACKET_ROWS pixels at (4 gx, PACKET_ROWS gy), lane l at (l &
+// 3, l >> 2); the same formulas. Returns each lane's entry axis, -2 where there is no ray (a miss
+// or a pixel outside the image); such lanes get a ray of length zero at the origin. w gets the rays
+// in world space (origin, unit direction) for shading.
+inline intN pixel_raysN(__constant RaycastParams* P, int gx, int gy, RayPacket* r, floatN w[6]) {
   int width = P->image.x, height = P->image.y;
+#define LANE_INDEX(l, n) n
+  intN lane = (intN)(LANE_LIST(LANE_INDEX));
+#undef LANE_INDEX
+  intN px = 4 * gx + (lane & 3), py = PACKET_ROWS * gy + (lane >> 2);
   floatN sx = (2.0f * (convert_floatN(px) + 0.5f) / width - 1.0f) * P->view.x * P->view.y;
   floatN sy = (1.0f - 2.0f * (convert_floatN(py) + 0.5f) / height) * P->view.x;
   floatN inv_len = 1.0f;
@@ -131,15 +134,6 @@ inline intN pixel_rays_atN(__constant RaycastParams* P, intN px, intN py, RayPac
   r->dx = select(r->dx, (floatN)(0.0f), miss), r->dy = select(r->dy, (floatN)(0.0f), miss);
   r->dz = select(r->dz, (floatN)(0.0f), miss);
   return axis;
-}
-
-// pixel_rays_atN for the 4 x PACKET_ROWS pixels at (4 gx, PACKET_ROWS gy), lane l at (l & 3,
-// l >> 2).
-inline intN pixel_raysN(__constant RaycastParams* P, int gx, int gy, RayPacket* r, floatN w[6]) {
-#define LANE_INDEX(l, n) n
-  intN lane = (intN)(LANE_LIST(LANE_INDEX));
-#undef LANE_INDEX
-  return pixel_rays_atN(P, 4 * gx + (lane & 3), PACKET_ROWS * gy + (lane >> 2), r, w);
 }
 
 #endif
