@@ -34,42 +34,6 @@ inline BlockN blockN(__constant RaycastParams* P, VecN p) {
 // in pairs of voxels, each pair one 32-bit load: half the loads of single gathers.
 inline bool x_insideN(BlockN b) { return !any((b.x[0] != b.x[1] - 1) | (b.x[3] != b.x[1] + 2)); }
 
-// Voxels i ... i + 3 of each lane, in *a ... *d: one 64-bit word per lane, half the gathered
-// elements of two pairsN (the block's gathers were about half of the Zucker-Hummel gradient's
-// time on the 512x512x400 CT). At 8 lanes with AVX2's gathers only, so that --lanes 8 stays
-// the AVX2 machines' code.
-#if defined(__AVX512F__) && LANES == 16
-inline __attribute__((always_inline)) void quadsN(__global const short* restrict v, intN i,
-                                                  floatN* a, floatN* b, floatN* c, floatN* d) {
-  const void* base = (const void*)(ulong)v;
-  int16 w0 = as_int16(__builtin_ia32_gathersiv8di((long8)(0), base, i.lo, (uchar)0xff, 2));
-  int16 w1 = as_int16(__builtin_ia32_gathersiv8di((long8)(0), base, i.hi, (uchar)0xff, 2));
-  intN lo =
-      __builtin_shufflevector(w0, w1, 0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-  intN hi =
-      __builtin_shufflevector(w0, w1, 1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
-  *a = convert_floatN((lo << 16) >> 16), *b = convert_floatN(lo >> 16);
-  *c = convert_floatN((hi << 16) >> 16), *d = convert_floatN(hi >> 16);
-}
-#elif defined(__AVX2__) && LANES == 8
-inline __attribute__((always_inline)) void quadsN(__global const short* restrict v, intN i,
-                                                  floatN* a, floatN* b, floatN* c, floatN* d) {
-  const void* base = (const void*)(ulong)v;
-  int8 w0 = as_int8(__builtin_ia32_gatherd_q256((long4)(0), base, i.lo, (long4)(-1), 2));
-  int8 w1 = as_int8(__builtin_ia32_gatherd_q256((long4)(0), base, i.hi, (long4)(-1), 2));
-  intN lo = __builtin_shufflevector(w0, w1, 0, 2, 4, 6, 8, 10, 12, 14);
-  intN hi = __builtin_shufflevector(w0, w1, 1, 3, 5, 7, 9, 11, 13, 15);
-  *a = convert_floatN((lo << 16) >> 16), *b = convert_floatN(lo >> 16);
-  *c = convert_floatN((hi << 16) >> 16), *d = convert_floatN(hi >> 16);
-}
-#else
-inline void quadsN(__global const short* restrict v, intN i, floatN* a, floatN* b, floatN* c,
-                   floatN* d) {
-  pairsN(v, i, a, b);
-  pairsN(v, i + 2, c, d);
-}
-#endif
-
 // Taps 1 and 2 of the lanes' rows at `row` (slice + row offsets) into v1, v2, or all four
 // taps. Macros: as functions taking the block, PoCL kept them out of line with the block
 // in memory, and the gradient ran about 8 % slower.
@@ -80,14 +44,15 @@ inline void quadsN(__global const short* restrict v, intN i, floatN* a, floatN* 
     v1 = gatherN(vol, (row) + (b).x[1]);         \
     v2 = gatherN(vol, (row) + (b).x[2]);         \
   }
-#define BLOCK8_ROW4(b, inside, row, v0, v1, v2, v3)            \
-  if (inside) {                                                \
-    quadsN(vol, (row) + (b).x[0], &(v0), &(v1), &(v2), &(v3)); \
-  } else {                                                     \
-    v0 = gatherN(vol, (row) + (b).x[0]);                       \
-    v1 = gatherN(vol, (row) + (b).x[1]);                       \
-    v2 = gatherN(vol, (row) + (b).x[2]);                       \
-    v3 = gatherN(vol, (row) + (b).x[3]);                       \
+#define BLOCK8_ROW4(b, inside, row, v0, v1, v2, v3) \
+  if (inside) {                                     \
+    pairsN(vol, (row) + (b).x[0], &(v0), &(v1));    \
+    pairsN(vol, (row) + (b).x[2], &(v2), &(v3));    \
+  } else {                                          \
+    v0 = gatherN(vol, (row) + (b).x[0]);            \
+    v1 = gatherN(vol, (row) + (b).x[1]);            \
+    v2 = gatherN(vol, (row) + (b).x[2]);            \
+    v3 = gatherN(vol, (row) + (b).x[3]);            \
   }
 
 inline floatN abs_maxN(floatN a, floatN b, floatN c, floatN d) {
