@@ -391,9 +391,11 @@ inline void sample_spanN(__global const short* restrict vol, __constant RaycastP
 // A mip lane with no span left takes its next cell when at least 1 / MIP_REFILL of the
 // active lanes wait, so that the packet's lanes keep sampling while one finishes a long
 // span (before, every lane waited for the packet's longest span). Each refill scans every
-// walked cell: refilling at every idle lane ran slower, at 1 / 4 no faster than at half.
+// walked cell: refilling at every idle lane ran slower, at 1 / 4 no faster than at half
+// (16 lanes). 8 lanes with two packets a work-item (MIP_HALVES): at 1 / 4 (2 of 8 lanes)
+// CT kernel CPU -4 %, CThead -5 % (docs/bench/README.md, session 9).
 #ifndef MIP_REFILL
-#define MIP_REFILL 2
+#define MIP_REFILL (LANES == 8 ? 4 : 2)
 #endif
 #ifndef MIP_BATCH
 #define MIP_BATCH 4
