@@ -394,9 +394,11 @@ inline void sample_spanN(__global const short* restrict vol, __constant RaycastP
 // A mip lane with no span left takes its next cell when at least 1 / MIP_REFILL of the
 // active lanes wait, so that the packet's lanes keep sampling while one finishes a long
 // span (before, every lane waited for the packet's longest span). Each refill scans every
-// walked cell: refilling at every idle lane ran slower, at 1 / 4 no faster than at half.
+// walked cell: refilling at every idle lane ran slower, at 1 / 4 no faster than at half
+// (16 lanes). 8 lanes with two packets a work-item (MIP_HALVES): at 1 / 4 (2 of 8 lanes)
+// CT kernel CPU -4 %, CThead -5 % (docs/bench/README.md, session 9).
 #ifndef MIP_REFILL
-#define MIP_REFILL 2
+#define MIP_REFILL (LANES == 8 ? 4 : 2)
 #endif
 #ifndef MIP_BATCH
 #define MIP_BATCH 4
@@ -404,73 +406,23 @@ inline void sample_spanN(__global const short* restrict vol, __constant RaycastP
 #ifndef MIP_PREFETCH
 #define MIP_PREFETCH 1
 #endif
+#ifndef MIP_PREFETCH_FROM
+#define MIP_PREFETCH_FROM 1
+#endif
+#ifndef MIP_PREFETCH_TO
+#define MIP_PREFETCH_TO 1
+#endif
 
-// Samples each lane's walked cells brightest first, until no cell left can raise its
-// maximum (or show above the window's low end). Each lane has its own span [j, end]: the
-// cells a lane samples and in what order depend on its own maximum only, so the samples
-// are those of taking the cells packet-wide in turns.
-inline void mip_cells_brightest_firstN(__global const short* restrict vol,
-                                       __constant RaycastParams* P, const RayPacket* r, int steps,
-                                       intN* key, const floatN* t_at, float low, float high,
-                                       floatN* vmax, intN* active, intN* samples) {
-  float step = P->view.z;
-  intN j = 0, end = -1, ceiling = INT_MAX;
-  while (any(*active)) {
-    intN idle = *active & (j > end);
-    int waiting = count_lanes(idle);
-    if (waiting > 0 && MIP_REFILL * waiting >= count_lanes(*active)) {
-      // Each lane's largest key below its ceiling; a cell can raise the lane's floor when
-      // its (integer) max exceeds it, that is when its key is at least floor_key. Dropping
-      // rows no lane can use any more, on the way, scanned 56 % fewer rows but ran slower.
-      floatN floor_v = clamp(fmax(*vmax, low), -65536.0f, 65536.0f);
-      intN floor_key = (convert_intN(floor(floor_v)) + 1) * MIP_KEY_STEPS;
-      intN best = INT_MIN;
-      for (int g = 0; g < steps; ++g) {
-        intN k = key[g];
-        best = select(best, max(best, k), k < ceiling);
-      }
-      *active &= ~(idle & (best < floor_key));
-      idle &= *active;
-      if (!any(*active)) break;
-      ceiling = select(ceiling, best, idle);
-      intN at = MIP_KEY_STEPS - 1 - (best & (MIP_KEY_STEPS - 1));
-      // The samples with t in [t_at[at], t_at[at + 1]), up to the last one at t1. One that
-      // rounding puts in the neighbouring cell is within a voxel of the face, and so within
-      // that cell's max (its apron): leaving it to that cell is exact.
-      at = select((intN)(0), at, idle);
-      floatN from = pickN(t_at, at), to = pickN(t_at, at + 1);
-      j = select(j, index_atN(r, from, step, false), idle);
-      end = select(end, select(index_atN(r, to, step, false) - 1, r->n, to >= r->t1), idle);
-    }
-    intN todo = *active & (j <= end);
-    if (!any(todo)) continue;
-    // MIP_BATCH samples a turn, j ... j + MIP_BATCH - 1: the next turn's addresses depend
-    // on this one's loads (the skip below), so each turn waits for its loads; several a turn
-    // overlap their misses. Lanes without a sample read the volume's corner, which stays in
-    // cache, instead of missing like the others. A sample taken that a skip would have
-    // passed cannot change the maximum (it is one of the ray's samples).
-    floatN zero = 0.0f, t, vlo, vhi;
-    intN take;
-    for (int b = 0; b < MIP_BATCH; ++b) {
-      take = todo & (j + b <= end);
-      t = sample_tN(r, j + b, step);
-      floatN v = sample_rangeN(vol, P, select(zero, r->ox + t * r->dx, take),
-                               select(zero, r->oy + t * r->dy, take),
-                               select(zero, r->oz + t * r->dz, take), &vlo, &vhi);
-      *samples -= take;
-      *vmax = select(*vmax, fmax(*vmax, v), take);
-    }
-#if MIP_PREFETCH
-    {
-      // Prefetch the next turn's voxel rows (its middle sample's four), so that its misses
-      // overlap this turn's instead of waiting on this turn's skip.
-      floatN tp = sample_tN(r, j + MIP_BATCH + MIP_BATCH / 2, step);
-      int4 dims = P->dims;
-      intN px = clamp(convert_intN(r->ox + tp * r->dx), 0, dims.x - 1);
-      intN py = clamp(convert_intN(r->oy + tp * r->dy), 0, dims.y - 1);
-      intN pz = clamp(convert_intN(r->oz + tp * r->dz), 0, dims.z - 2);
-      intN at = select((intN)(-1), (pz * dims.y + py) * dims.x + px, todo);
-      size_t sz = (size_t)dims.x * dims.y;
+// Prefetches (__builtin_prefetch) the four voxel rows of sample i of each lane in `todo`.
+inline void prefetch_sample_rowsN(__global const short* restrict vol, __constant RaycastParams* P,
+                                  const RayPacket* r, intN i, intN todo) {
+  floatN tp = sample_tN(r, i, P->view.z);
+  int4 dims = P->dims;
+  intN px = clamp(convert_intN(r->ox + tp * r->dx), 0, dims.x - 1);
+  intN py = clamp(convert_intN(r->oy + tp * r->dy), 0, dims.y - 1);
+  intN pz = clamp(convert_intN(r->oz + tp * r->dz), 0, dims.z - 2);
+  intN at = select((intN)(-1), (pz * dims.y + py) * dims.x + px, todo);
+  size_t sz = (size_t)dims.x * dims.y;
 #define PREFETCH_LANE(l, n)                          \
   if (at.s##l >= 0) {                                \
     __builtin_prefetch(vol + at.s##l);               \
@@ -478,67 +430,167 @@ inline void mip_cells_brightest_firstN(__global const short* restrict vol,
     __builtin_prefetch(vol + at.s##l + sz);          \
     __builtin_prefetch(vol + at.s##l + sz + dims.x); \
   }
-      LANE_EACH(PREFETCH_LANE)
+  LANE_EACH(PREFETCH_LANE)
 #undef PREFETCH_LANE
-    }
+}
+
+// Packets a mip work-item marches together: at 8 lanes two 4 x 2 packets (4 x 4 pixels;
+// the host's rows per work-item follow, raycaster.cpp), so that each turn has 16 rays'
+// voxel loads in flight, as a 16-lane packet has; the two are otherwise independent.
+#ifndef MIP_HALVES
+#define MIP_HALVES (LANES == 8 ? 2 : 1)
 #endif
-    *active &= *vmax < high;
-    // The rest of the last sample's voxel cell is skipped where its eight voxels cannot
-    // raise the lane's floor (a lane without that sample ends its span either way).
-    intN cell_below = take & (vhi <= fmax(*vmax, low));
-    if (INTERP != 0 && any(cell_below) != 0)
-      j = select(j + MIP_BATCH, max(j + MIP_BATCH, past_voxel_cellN(r, t, step)), cell_below);
-    else
-      j += MIP_BATCH;
+
+inline bool any_halfN(const intN* m) {
+  intN u = m[0];
+  for (int h = 1; h < MIP_HALVES; ++h) u |= m[h];
+  return any(u) != 0;
+}
+
+// Samples each lane's walked cells brightest first, until no cell left can raise its
+// maximum (or show above the window's low end). Each lane has its own span [j, end]: the
+// cells a lane samples and in what order depend on its own maximum only, so the samples
+// are those of taking the cells packet-wide in turns. Each of the MIP_HALVES packets has
+// its own walk, refills and skips; their turns' samples are taken together. A packet
+// whose walk did not fit (steps < 0) is left to the in-order loop with its lanes active.
+inline void mip_cells_brightest_firstN(__global const short* restrict vol,
+                                       __constant RaycastParams* P, const RayPacket* r,
+                                       const int* steps, intN (*key)[MIP_WALK],
+                                       floatN (*t_at)[MIP_WALK + 1], float low, float high,
+                                       floatN* vmax, intN* active, intN* samples) {
+  float step = P->view.z;
+  intN j[MIP_HALVES], end[MIP_HALVES], ceiling[MIP_HALVES], act[MIP_HALVES];
+  for (int h = 0; h < MIP_HALVES; ++h) {
+    j[h] = 0, end[h] = -1, ceiling[h] = INT_MAX;
+    act[h] = steps[h] >= 0 ? active[h] : (intN)(0);
   }
+  while (any_halfN(act)) {
+    intN todo[MIP_HALVES];
+    for (int h = 0; h < MIP_HALVES; ++h) {
+      intN idle = act[h] & (j[h] > end[h]);
+      int waiting = count_lanes(idle);
+      if (waiting > 0 && MIP_REFILL * waiting >= count_lanes(act[h])) {
+        // Each lane's largest key below its ceiling; a cell can raise the lane's floor when
+        // its (integer) max exceeds it, that is when its key is at least floor_key.
+        // Dropping rows no lane can use any more, on the way, scanned 56 % fewer rows but
+        // ran slower.
+        floatN floor_v = clamp(fmax(vmax[h], low), -65536.0f, 65536.0f);
+        intN floor_key = (convert_intN(floor(floor_v)) + 1) * MIP_KEY_STEPS;
+        intN best = INT_MIN;
+        for (int g = 0; g < steps[h]; ++g) {
+          intN k = key[h][g];
+          best = select(best, max(best, k), k < ceiling[h]);
+        }
+        act[h] &= ~(idle & (best < floor_key));
+        idle &= act[h];
+        ceiling[h] = select(ceiling[h], best, idle);
+        intN at = MIP_KEY_STEPS - 1 - (best & (MIP_KEY_STEPS - 1));
+        // The samples with t in [t_at[at], t_at[at + 1]), up to the last one at t1. One
+        // that rounding puts in the neighbouring cell is within a voxel of the face, and so
+        // within that cell's max (its apron): leaving it to that cell is exact.
+        at = select((intN)(0), at, idle);
+        floatN from = pickN(t_at[h], at), to = pickN(t_at[h], at + 1);
+        j[h] = select(j[h], index_atN(&r[h], from, step, false), idle);
+        end[h] = select(end[h],
+                        select(index_atN(&r[h], to, step, false) - 1, r[h].n, to >= r[h].t1), idle);
+      }
+      todo[h] = act[h] & (j[h] <= end[h]);
+    }
+    if (!any_halfN(todo)) continue;
+    // MIP_BATCH samples a turn, j ... j + MIP_BATCH - 1: the next turn's addresses depend
+    // on this one's loads (the skip below), so each turn waits for its loads; several a turn
+    // overlap their misses. Lanes without a sample read the volume's corner, which stays in
+    // cache, instead of missing like the others. A sample taken that a skip would have
+    // passed cannot change the maximum (it is one of the ray's samples).
+    floatN zero = 0.0f, t[MIP_HALVES], vlo, vhi[MIP_HALVES];
+    intN take[MIP_HALVES];
+    for (int b = 0; b < MIP_BATCH; ++b) {
+      for (int h = 0; h < MIP_HALVES; ++h) {
+        take[h] = todo[h] & (j[h] + b <= end[h]);
+        t[h] = sample_tN(&r[h], j[h] + b, step);
+        floatN v = sample_rangeN(vol, P, select(zero, r[h].ox + t[h] * r[h].dx, take[h]),
+                                 select(zero, r[h].oy + t[h] * r[h].dy, take[h]),
+                                 select(zero, r[h].oz + t[h] * r[h].dz, take[h]), &vlo, &vhi[h]);
+        samples[h] -= take[h];
+        vmax[h] = select(vmax[h], fmax(vmax[h], v), take[h]);
+      }
+    }
+    for (int h = 0; h < MIP_HALVES; ++h) {
+#if MIP_PREFETCH
+      // Prefetch the voxel rows of later turns (each one's middle sample's four), so that
+      // their misses overlap this turn's instead of waiting on this turn's skip.
+      for (int a = MIP_PREFETCH_FROM; a <= MIP_PREFETCH_TO; ++a)
+        prefetch_sample_rowsN(vol, P, &r[h], j[h] + a * MIP_BATCH + MIP_BATCH / 2, todo[h]);
+#endif
+      act[h] &= vmax[h] < high;
+      // The rest of the last sample's voxel cell is skipped where its eight voxels cannot
+      // raise the lane's floor (a lane without that sample ends its span either way).
+      intN cell_below = take[h] & (vhi[h] <= fmax(vmax[h], low));
+      if (INTERP != 0 && any(cell_below) != 0)
+        j[h] = select(j[h] + MIP_BATCH, max(j[h] + MIP_BATCH, past_voxel_cellN(&r[h], t[h], step)),
+                      cell_below);
+      else
+        j[h] += MIP_BATCH;
+    }
+  }
+  for (int h = 0; h < MIP_HALVES; ++h)
+    if (steps[h] >= 0) active[h] = act[h];
 }
 
 // march_mip (march.cl) for a packet. Only what can change the windowed grey is
 // sampled: values at or below the window's low end show black, so the running maximum
 // starts there for skipping; a lane stops once it reaches the window's high end (white);
 // and with trilinear the rest of a voxel cell whose eight voxels cannot exceed the lane's
-// floor is skipped. Each is exact: the grey of every pixel is unchanged.
+// floor is skipped. Each is exact: the grey of every pixel is unchanged. The work-item's
+// MIP_HALVES packets lie one below the other.
 inline void mip_packet(__global const short* restrict vol, __constant RaycastParams* P,
                        __global uchar4* out, CELL_ARGS, __global uint* count, int gx, int gy) {
   float step = P->view.z;
-  RayPacket r;
-  floatN world[6];
-  pixel_raysN(P, gx, gy, &r, world);
   float low = P->dvr.x, high = P->dvr.x + 1.0f / P->dvr.y;
-  floatN vmax = -FLT_MAX;
-  intN i = 0, check = 0, samples = 0;
-  intN active = r.n >= 0;
+  RayPacket r[MIP_HALVES];
+  floatN vmax[MIP_HALVES];
+  intN active[MIP_HALVES], samples[MIP_HALVES];
+  for (int h = 0; h < MIP_HALVES; ++h) {
+    floatN world[6];
+    pixel_raysN(P, gx, MIP_HALVES * gy + h, &r[h], world);
+    vmax[h] = -FLT_MAX, samples[h] = 0;
+    active[h] = r[h].n >= 0;
+  }
   if (ESS) {
     // The maximum does not depend on the order of the samples: walk the cells once, then
     // sample them brightest first, until no cell left can raise a lane's maximum (or
     // show above the window's low end). Most rays sample a few cells.
-    intN key[MIP_WALK];
-    floatN t_at[MIP_WALK + 1];
-    int steps = walk_cellsN(range, P, &r, low, key, t_at);
-    if (steps >= 0)
-      mip_cells_brightest_firstN(vol, P, &r, steps, key, t_at, low, high, &vmax, &active, &samples);
+    intN key[MIP_HALVES][MIP_WALK];
+    floatN t_at[MIP_HALVES][MIP_WALK + 1];
+    int steps[MIP_HALVES];
+    for (int h = 0; h < MIP_HALVES; ++h)
+      steps[h] = walk_cellsN(range, P, &r[h], low, key[h], t_at[h]);
+    mip_cells_brightest_firstN(vol, P, r, steps, key, t_at, low, high, vmax, active, samples);
   }
-  // Without ESS, or for a ray that crosses more cells than the walk keeps: in order, a
-  // span at a time between leaps past cells that cannot raise a lane's floor.
-  while (any(active)) {
-    intN end = r.n;
-    if (ESS) {
-      floatN floor_v = fmax(vmax, low);
-      i = select(
-          i,
-          ess_leapN(leap, range, P, &r, (intN)(0), i, active, step, false, true, floor_v, &check),
-          active);
-      active &= i <= r.n;
-      if (!any(active)) break;
-      end = min(check - 1, r.n);
+  for (int h = 0; h < MIP_HALVES; ++h) {
+    // Without ESS, or for a ray that crosses more cells than the walk keeps: in order, a
+    // span at a time between leaps past cells that cannot raise a lane's floor.
+    intN i = 0, check = 0;
+    while (any(active[h])) {
+      intN end = r[h].n;
+      if (ESS) {
+        floatN floor_v = fmax(vmax[h], low);
+        i = select(i,
+                   ess_leapN(leap, range, P, &r[h], (intN)(0), i, active[h], step, false, true,
+                             floor_v, &check),
+                   active[h]);
+        active[h] &= i <= r[h].n;
+        if (!any(active[h])) break;
+        end = min(check - 1, r[h].n);
+      }
+      sample_spanN(vol, P, &r[h], i, end, active[h], low, high, &vmax[h], &samples[h]);
+      i = end + 1;
+      active[h] &= (i <= r[h].n) & (vmax[h] < high);
     }
-    sample_spanN(vol, P, &r, i, end, active, low, high, &vmax, &samples);
-    i = end + 1;
-    active &= (i <= r.n) & (vmax < high);
+    floatN grey = clamp((vmax[h] - low) * P->dvr.y, 0.0f, 1.0f);
+    VecN color = {grey, grey, grey};
+    write_packet(P, out, count, gx, MIP_HALVES * gy + h, color, samples[h]);
   }
-  floatN grey = clamp((vmax - low) * P->dvr.y, 0.0f, 1.0f);
-  VecN color = {grey, grey, grey};
-  write_packet(P, out, count, gx, gy, color, samples);
 }
 
 #endif

@@ -43,7 +43,9 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
     mip_packet(vol, P, out, leap, range, count, get_global_id(0), get_global_id(1));
 #if HIT_OUTPUT
   if (MODE == 2)  // no pixel of a mip frame has a hit
-    write_hits_packet(P, hits, get_global_id(0), get_global_id(1), 0.0f, 0.0f, 0.0f, -1.0f);
+    for (int h = 0; h < MIP_HALVES; ++h)
+      write_hits_packet(P, hits, get_global_id(0), MIP_HALVES * get_global_id(1) + h, 0.0f, 0.0f,
+                        0.0f, -1.0f);
 #endif
 #else
   int px = get_global_id(0), py = get_global_id(1);

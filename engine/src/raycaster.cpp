@@ -327,6 +327,8 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     size_t gx = size_t(p.width), gy = size_t(y1), oy = size_t(y0);
     if (m.packets()) {  // one work-item per 4 x (lanes / 4) pixels
       size_t rows = size_t(m.lanes(p) / 4);
+      // mip at 8 lanes: two packets, one below the other (march_lanes.cl, MIP_HALVES).
+      if (p.mode == Mode::Mip && m.lanes(p) == 8) rows *= 2;
       gx = (gx + 3) / 4;
       gy = (gy + rows - 1) / rows;
       oy /= rows;

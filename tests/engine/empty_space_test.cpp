@@ -129,26 +129,29 @@ INSTANTIATE_TEST_SUITE_P(Jittered, EmptySpace,
                                             ::testing::Values(true)),
                          variantTestName);
 
-// Packets cover 4x2 or 4x4 pixels: an image whose sides are not multiples of them must
-// still get every pixel, and only its own (the per-ray image agrees; a stray or missing
-// write would leave the background or overwrite a neighbour). 61 rows leave one row of
-// the last 4x2 packets and three of the last 4x4 ones outside.
+// Packets cover 4x2 or 4x4 pixels (mip at 8 lanes: two 4x2 packets, 4x4): an image whose
+// sides are not multiples of them must still get every pixel, and only its own (the per-ray
+// image agrees; a stray or missing write would leave the background or overwrite a
+// neighbour). 61 rows leave one row of the last 4x2 packets and three of the last 4x4 ones
+// outside.
 TEST(EmptySpaceExtras, PacketsFillImagesOfOddSizes) {
-  RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, false);
-  p.width = 83;
-  p.height = 61;
-  using K = RaycasterOptions::Kernel;
-  Image perRay = render(K::Specialised, true, p, kPerRay);
-  for (int lanes : {8, 16}) {
-    SCOPED_TRACE(testing::Message() << lanes << " lanes");
-    Image packets = render(K::Specialised, true, p, lanes);
-    ASSERT_EQ(packets.rgba.size(), size_t(83 * 61 * 4));
-    EXPECT_LE(test::maxDiff(packets, perRay), 1);
-    // And the ball is there: many pixels differ from the background in the corner.
-    int surface = 0;
-    for (size_t i = 0; i < packets.rgba.size(); i += 4)
-      surface += packets.rgba[i] != packets.rgba[0];
-    EXPECT_GT(surface, 100);  // the ball (radius 10 of a 64-voxel box) covers about 130
+  for (Mode mode : {Mode::Iso, Mode::Mip}) {
+    RenderParams p = params(mode, Gradient::Central, Interp::Linear, false);
+    p.width = 83;
+    p.height = 61;
+    using K = RaycasterOptions::Kernel;
+    Image perRay = render(K::Specialised, true, p, kPerRay);
+    for (int lanes : {8, 16}) {
+      SCOPED_TRACE(testing::Message() << "mode " << int(mode) << ", " << lanes << " lanes");
+      Image packets = render(K::Specialised, true, p, lanes);
+      ASSERT_EQ(packets.rgba.size(), size_t(83 * 61 * 4));
+      EXPECT_LE(test::maxDiff(packets, perRay), 1);
+      // And the ball is there: many pixels differ from the background in the corner.
+      int surface = 0;
+      for (size_t i = 0; i < packets.rgba.size(); i += 4)
+        surface += packets.rgba[i] != packets.rgba[0];
+      EXPECT_GT(surface, 100);  // the ball (radius 10 of a 64-voxel box) covers about 130
+    }
   }
 }
 
