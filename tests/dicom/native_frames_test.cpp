@@ -1,16 +1,14 @@
-// Uncompressed little-endian 16-bit frames are converted straight into the volume
-// (NativeFrames, storeWords): from the mapped file when the pixel data ends it, else read;
-// every other file takes the general decoder (PixelFile, storeSlice). A deflated file with
-// the same pixels takes the general one, so the paths are compared on every 16-bit word,
-// for each stored sample format, with and without padding: bit for bit.
+// Uncompressed little-endian 16-bit frames are read straight into the volume (NativeFrames,
+// storeWords), in either VR encoding and wherever the pixel data lies in the file; every
+// other file takes the general decoder (PixelFile, storeSlice). A deflated file with the
+// same pixels takes the general one, so the paths are compared on every 16-bit word, for
+// each stored sample format, with and without padding: bit for bit.
 #include <gtest/gtest.h>
 
 #include <optional>
 
 #include "../io/test_support.h"
 #include "dicom_writer.h"
-#include "frame_header.h"
-#include "pixel_decode.h"
 #include "test_data.h"
 
 namespace voxray {
@@ -23,15 +21,15 @@ struct Format {
 };
 
 enum class Encoding {
-  Mapped,          // explicit VR, pixel data last: converted from the mapped file
-  MappedImplicit,  // the same in implicit VR
-  Read,            // an element after the pixel data: the frame is read, then converted
-  Deflated,        // the general decoder
+  Explicit,         // explicit VR little endian, the pixel data last
+  Implicit,         // implicit VR little endian
+  TrailingElement,  // an element after the pixel data
+  Deflated,         // the general decoder
 };
 
 // Three 256x256 CT slices (z 0, 1, 2; fewer is no volume): slice 0 holds word i at pixel i,
 // slice 1 its inverse, slice 2 word i XOR 0x5A5A.
-Volume importEveryWord(const Format& f, Encoding encoding = Encoding::Mapped) {
+Volume importEveryWord(const Format& f, Encoding encoding = Encoding::Explicit) {
   test::TempDir dir;
   for (int k = 0; k < 3; ++k) {
     test::TestSlice s;
@@ -45,8 +43,8 @@ Volume importEveryWord(const Format& f, Encoding encoding = Encoding::Mapped) {
     s.padding = f.padding;
     s.paddingLimit = f.paddingLimit;
     s.deflated = encoding == Encoding::Deflated;
-    s.implicitVr = encoding == Encoding::MappedImplicit;
-    s.trailingPadding = encoding == Encoding::Read;
+    s.implicitVr = encoding == Encoding::Implicit;
+    s.trailingPadding = encoding == Encoding::TrailingElement;
     test::writeTestSlice(dir.file(std::to_string(k) + ".dcm"), s);
   }
   return importDicom(dir.path().string());
@@ -68,7 +66,7 @@ TEST(DicomNativeFrames, EveryWordImportsAsTheGeneralDecoderImportsIt) {
     SCOPED_TRACE(f.name);
     const Volume general = importEveryWord(f, Encoding::Deflated);
     ASSERT_EQ(general.dims, glm::ivec3(256, 256, 3));
-    for (Encoding e : {Encoding::Mapped, Encoding::MappedImplicit, Encoding::Read}) {
+    for (Encoding e : {Encoding::Explicit, Encoding::Implicit, Encoding::TrailingElement}) {
       SCOPED_TRACE(int(e));
       const Volume direct = importEveryWord(f, e);
       ASSERT_EQ(direct.dims, general.dims);
@@ -76,39 +74,6 @@ TEST(DicomNativeFrames, EveryWordImportsAsTheGeneralDecoderImportsIt) {
       EXPECT_EQ(direct.intercept, general.intercept);
       EXPECT_TRUE(direct.voxels == general.voxels);
     }
-  }
-}
-
-// Which way a frame goes: from the mapped file when the pixel data ends it, in either
-// little-endian encoding; read when another element follows it.
-TEST(DicomNativeFrames, TheMapIsUsedOnlyWhereThePixelDataEndsTheFile) {
-  test::TempDir dir;
-  for (Encoding e : {Encoding::Mapped, Encoding::MappedImplicit, Encoding::Read}) {
-    SCOPED_TRACE(int(e));
-    test::TestSlice s;
-    s.size = 64;
-    s.implicitVr = e == Encoding::MappedImplicit;
-    s.trailingPadding = e == Encoding::Read;
-    const std::string path = dir.file(std::to_string(int(e)) + ".dcm");
-    test::writeTestSlice(path, s);
-    std::vector<dicom::FrameHeader> frames;
-    std::string why;
-    ASSERT_EQ(dicom::readFrameHeaders(path, frames, why), dicom::ScanResult::Image) << why;
-    ASSERT_EQ(frames.size(), 1u);
-    dicom::NativeFrames native(path);
-    int16_t first = 0, last = 0;
-    const bool mapped = native.useMapped(frames[0], [&](const uint16_t* words) {
-      first = int16_t(words[0]);
-      last = int16_t(words[64 * 64 - 1]);
-    });
-    EXPECT_EQ(mapped, e != Encoding::Read);
-    std::vector<uint16_t> read(64 * 64);
-    ASSERT_TRUE(native.read(frames[0], read.data()));
-    if (mapped) {  // pixel i holds i - 8
-      EXPECT_EQ(first, -8);
-      EXPECT_EQ(last, 64 * 64 - 9);
-    }
-    EXPECT_EQ(int16_t(read[64 * 64 - 1]), 64 * 64 - 9);
   }
 }
 

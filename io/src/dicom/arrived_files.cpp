@@ -145,7 +145,7 @@ void ArrivedFiles::process(const std::string& path, std::string bytes) {
       slot.air = airValue(h.modality);
       auto* words = reinterpret_cast<uint16_t*>(voxels_.data() + k * sliceSize_);
       if (direct && native.read(h, words))
-        slot.scale = storeWords(words, n, h, slot.air, voxels_.data() + k * sliceSize_);
+        slot.scale = storeWords(words, n, h, slot.air);
       else if (direct)
         return;  // a slot the import does not use: it then reads the files from disk
       else

@@ -207,16 +207,9 @@ void decodeSlices(const Candidate& c, const LoadOptions& options, const std::vec
           for (; first != slices.end(); ++first) {
             if (options.cancel && *options.cancel) return;
             const FrameHeader& h = c.frames[*first];
-            int16_t* slice = voxels.data() + *first * sliceSize;
-            auto* words = reinterpret_cast<uint16_t*>(slice);
-            if (size_t(h.columns) * size_t(h.rows) != sliceSize) break;
-            SliceScale& scale = scales[*first];
-            if (!native.useMapped(h, [&](const uint16_t* in) {
-                  scale = storeWords(in, sliceSize, h, air, slice);
-                })) {
-              if (!native.read(h, words)) break;
-              scale = storeWords(words, sliceSize, h, air, slice);
-            }
+            auto* words = reinterpret_cast<uint16_t*>(voxels.data() + *first * sliceSize);
+            if (size_t(h.columns) * size_t(h.rows) != sliceSize || !native.read(h, words)) break;
+            scales[*first] = storeWords(words, sliceSize, h, air);
             size_t d = ++done;
             report(options, kHeaderShare + (0.9 - kHeaderShare) * double(d) / double(total),
                    "Decoding slice " + std::to_string(d) + " of " + std::to_string(total));

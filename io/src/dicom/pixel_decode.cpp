@@ -12,7 +12,6 @@
 
 #include <cstring>
 
-#include "../mapped_file.h"
 #include "bounded_load.h"
 #include "j2k_decode.h"
 #include "voxray/io/error.h"
@@ -224,50 +223,20 @@ struct NativeFrames::Impl {
   DcmFileFormat own;
   DcmPixelData* pixels = nullptr;
   DcmFileCache cache;  // one open file for every frame
-  std::unique_ptr<MappedFile> file;
-  const uint16_t* mapped = nullptr;  // the pixel data's value in FILE
 
-  void find(DcmFileFormat& parsed) {
-    DcmDataset* ds = parsed.getDataset();
+  void find(DcmFileFormat& file) {
+    DcmDataset* ds = file.getDataset();
     const E_TransferSyntax xfer = ds->getOriginalXfer();
     if (xfer != EXS_LittleEndianExplicit && xfer != EXS_LittleEndianImplicit) return;
     DcmElement* element = nullptr;
     if (ds->findAndGetElement(DCM_PixelData, element).bad() || !element) return;
     pixels = dynamic_cast<DcmPixelData*>(element);
   }
-
-  // Maps PATH when its pixel data is the dataset's last element, so that its value is the
-  // file's last getLength() bytes; checked against the element's own tag and length just
-  // before them, in the file's encoding. Anything else is read() as before.
-  void map(const std::string& path) {
-    DcmDataset* ds = own.getDataset();
-    if (!pixels || ds->card() == 0 || ds->getElement(ds->card() - 1) != pixels) return;
-    const size_t length = pixels->getLength();
-    file = std::make_unique<MappedFile>(path);
-    const uint8_t* bytes = file->data();
-    const bool explicitVr = ds->getOriginalXfer() == EXS_LittleEndianExplicit;
-    const size_t header = explicitVr ? 12 : 8;
-    if (!bytes || length % 2 != 0 || file->size() < length + header) return;
-    const size_t at = file->size() - length, tag = at - header;
-    uint32_t stated = 0;
-    bool ok = false;
-    file->read([&] {
-      std::memcpy(&stated, bytes + at - 4, 4);
-      ok = std::memcmp(bytes + tag, "\xE0\x7F\x10\x00", 4) == 0 && stated == length &&
-           (!explicitVr ||
-            (bytes[tag + 4] == 'O' && (bytes[tag + 5] == 'W' || bytes[tag + 5] == 'B') &&
-             bytes[tag + 6] == 0 && bytes[tag + 7] == 0));
-    });
-    if (ok && at % 2 == 0) mapped = reinterpret_cast<const uint16_t*>(bytes + at);
-  }
 };
 
 NativeFrames::NativeFrames(const std::string& path) : impl_(std::make_unique<Impl>()) {
   // Values over 4 KiB stay in the file until read: the pixel data is read by frame below.
-  if (loadDicomFile(impl_->own, path, 4096).empty()) {
-    impl_->find(impl_->own);
-    impl_->map(path);
-  }
+  if (loadDicomFile(impl_->own, path, 4096).empty()) impl_->find(impl_->own);
 }
 
 NativeFrames::NativeFrames(DcmFileFormat& parsed) : impl_(std::make_unique<Impl>()) {
@@ -282,13 +251,6 @@ bool NativeFrames::fits(const FrameHeader& h) const {
          h.samplesPerPixel == 1 && unsupportedReason(h).empty() &&
          (impl_->pixels->getVR() == EVR_OW || impl_->pixels->getVR() == EVR_ox) &&
          size_t(h.frame + 1) * frameBytes <= impl_->pixels->getLength();
-}
-
-bool NativeFrames::useMapped(const FrameHeader& h,
-                             const std::function<void(const uint16_t*)>& use) const {
-  if (!impl_->mapped || !fits(h)) return false;
-  const uint16_t* words = impl_->mapped + size_t(h.frame) * size_t(h.rows) * size_t(h.columns);
-  return impl_->file->read([&] { use(words); });
 }
 
 bool NativeFrames::read(const FrameHeader& h, uint16_t* out) {

@@ -2,7 +2,6 @@
 // Pixel access for one file: native, DCMTK-decoded (JPEG, JPEG-LS, RLE, deflate) and
 // OpenJPEG-decoded (JPEG 2000) frames, as exact stored values (no windowing, no LUTs).
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,9 +48,6 @@ class NativeFrames {
   // Whether frame H can be read here (the file parsed, H describes such a file, and its
   // pixel data holds the frame).
   bool fits(const FrameHeader& h) const;
-  // Runs USE on the stored 16-bit words of frame H.frame, unmasked, in the mapped file
-  // (no copy); false when the file is not mapped or shrank meanwhile: then read() them.
-  bool useMapped(const FrameHeader& h, const std::function<void(const uint16_t*)>& use) const;
   // The stored 16-bit words of frame H.frame, unmasked, into OUT (columns x rows).
   bool read(const FrameHeader& h, uint16_t* out);
 

@@ -62,8 +62,7 @@ SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h, 
   return s;
 }
 
-SliceScale storeWords(const uint16_t* words, size_t count, const FrameHeader& h, double airPhysical,
-                      int16_t* out) {
+SliceScale storeWords(uint16_t* words, size_t count, const FrameHeader& h, double airPhysical) {
   const Mapping m(h, airPhysical);
   // PixelFile's masking to BitsStored and sign extension (16 bits: the word as it is).
   const int bits = std::clamp(h.bitsStored, 1, 16);
@@ -71,6 +70,7 @@ SliceScale storeWords(const uint16_t* words, size_t count, const FrameHeader& h,
   const uint32_t sign = h.pixelRepresentation == 1 ? uint32_t(1u << (bits - 1)) : 0u;
   const int32_t offset = m.offset, padLo = m.padLo, padHi = m.padHi;
   const int16_t air = m.air;
+  auto* out = reinterpret_cast<int16_t*>(words);
   int16_t lo = INT16_MAX, hi = INT16_MIN;
   auto range = [&] {
     SliceScale s = m.scale;

@@ -25,10 +25,9 @@ double airValue(const std::string& modality);
 SliceScale storeSlice(const std::vector<int32_t>& values, const FrameHeader& h, double airPhysical,
                       int16_t* out);
 
-// The same for the raw 16-bit words of one frame (a NativeFrames read): OUT (which may be
-// WORDS itself) becomes the slice, as storeSlice would write it from PixelFile's values.
-SliceScale storeWords(const uint16_t* words, size_t count, const FrameHeader& h, double airPhysical,
-                      int16_t* out);
+// The same for the raw 16-bit words of one frame (a NativeFrames read), in place: WORDS
+// become the slice, as storeSlice would write it from PixelFile's values of that frame.
+SliceScale storeWords(uint16_t* words, size_t count, const FrameHeader& h, double airPhysical);
 
 struct CommonScale {
   double slope = 1.0, intercept = 0.0;
