@@ -1,9 +1,7 @@
 #include "voxray/io/voxel_memory.h"
 
 #include <cstring>
-
 #include <new>
-#include "voxel_prefetch.h"
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -27,7 +25,6 @@ void* allocateVoxelMemory(size_t bytes) {
   // starts on a 2 MiB boundary, so every 2 MiB of it can be one page.
   const size_t size = roundUp(bytes);
   if (size < bytes || size + kHugePage < size) throw std::bad_alloc();
-  if (void* ready = takePrefetchedVoxels(size)) return ready;
   void* m =
       mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (m == MAP_FAILED) throw std::bad_alloc();

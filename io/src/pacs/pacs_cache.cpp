@@ -8,11 +8,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 
 #include <nlohmann/json.hpp>
 
-#include "../voxel_prefetch.h"
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/error.h"
 
@@ -186,15 +184,6 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   staging.path = pattern;
   const std::string folder = root_ + "/series/" + folderName(seriesUid);
   RetrieveOptions withImport = options;
-  // Without a fed import, the volume's pages are made while the files arrive.
-  std::optional<VoxelPrefetch> prefetch;
-  if (!import) {
-    prefetch.emplace();
-    withImport.progress = [&](const RetrieveProgress& p) {
-      prefetch->arrived(size_t(p.megabytes * 1e6));
-      if (options.progress) options.progress(p);
-    };
-  }
   if (import)
     withImport.written = [&](const std::string& path, std::string_view content) {
       if (options.written) options.written(path, content);
@@ -220,7 +209,6 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
     throw outputError("Cannot move the retrieved series into " + entry.folder + " (" +
                       ec.message() + ")");
   staging.path.clear();
-  if (prefetch) prefetch->keep();
   auto all = load();
   all.push_back(entry);
   evict(all, {seriesUid});
