@@ -106,12 +106,11 @@ void EmptySpace::isoBlocks(ContextImpl& cl, const RaycastParams& k) {
 
 void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
                           const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive,
-                          bool packets) {
+                          int packetLanes) {
   int m = mode == Mode::Iso ? 0 : mode == Mode::Dvr ? 1 : 2;
-  // iso depends on the range only (and, for the one-sided distances, on packets reading
-  // them); dvr on which table entries are not transparent and on where the table sits in
-  // stored units.
-  std::vector<float> key = {float(m), k.values.s[0], k.values.s[1], float(packets)};
+  // iso depends on the range only (and on the packets' width: what they read); dvr on which table
+  // entries are not transparent and on where the table sits in stored units.
+  std::vector<float> key = {float(m), k.values.s[0], k.values.s[1], float(packetLanes)};
   if (m == 2) key = {float(m), k.dvr.s[0]};
   std::vector<int> opaque;
   if (m == 1) {
@@ -150,10 +149,16 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     // two-sided ones). First: it may enlarge leap_. Their minimum is then the two-sided
     // distances (the same, at a fraction of the work); otherwise, three passes make them:
     // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
-    const bool oneSided = m == 0 && packets;
+    const bool oneSided = m == 0 && packetLanes > 0;
     if (oneSided) {
       aheadDistances(cl, dims);
-      isoBlocks(cl, k);
+      // Only 8-lane packets read the block bits (march_lanes.cl, ISO_BLOCK_TRIES): a scan
+      // of the occupied cells' voxels on the host, about 27 ms of CPU per iso change on
+      // a 512x512x400 CT, that 16-lane frames do not need.
+      if (packetLanes == 8) {
+        isoBlocks(cl, k);
+        ++isoBlockScans_;
+      }
       cl::Kernel octants = cl.kernel("classify.cl", "leap_distance_from_octants", "");
       octants.setArg(0, leap_);
       octants.setArg(1, cl_int(cells));

@@ -23,10 +23,11 @@ class EmptySpace {
   // Brings the occupancy up to date for a frame whose parameters k are already enqueued
   // in params and lutBuffer (the queue is in order). mip needs none: it reads the min/max
   // directly. adaptive (dvr): also each cell's step level (kernels/classify.cl,
-  // adaptive_level) behind the distances in leap(). packets (iso): also the one-sided
-  // distances that only packets read.
+  // adaptive_level) behind the distances in leap(). packetLanes (iso): the frame's rays
+  // per packet, 0 for one ray per work-item; packets also read the one-sided distances,
+  // and 8-lane packets the iso block bits.
   void classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
-                const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive, bool packets);
+                const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive, int packetLanes);
   const glm::ivec3& dims() const { return cells_.dims; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
@@ -36,6 +37,7 @@ class EmptySpace {
   // and each cell's eight iso block bits (isoBlocks).
   const cl::Buffer& leap() const { return leap_; }
   int classifications() const { return classifications_; }
+  int isoBlockScans() const { return isoBlockScans_; }
 
  private:
   // The one-sided distances of iso packets, one region per octant behind the distances.
@@ -54,7 +56,7 @@ class EmptySpace {
   // What the occupancy was classified for; equal keys skip the work.
   std::vector<float> key_;
   std::vector<int> opaque_;
-  int classifications_ = 0;
+  int classifications_ = 0, isoBlockScans_ = 0;
 };
 
 }  // namespace voxray

@@ -236,6 +236,7 @@ void Raycaster::setOptions(const RaycasterOptions& options) {
 const RaycasterOptions& Raycaster::options() const { return impl_->opts; }
 
 int Raycaster::classifications() const { return impl_->space.classifications(); }
+int Raycaster::isoBlockScans() const { return impl_->space.isoBlockScans(); }
 
 int Raycaster::lightingBuilds() const { return impl_->light.builds(); }
 
@@ -288,7 +289,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
       m.space.classify(m.cl, m.paramsBuffer, m.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
-                       m.packets());
+                       m.packets() ? m.lanes(p) : 0);
     if (sw.LIGHTING) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
       storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;

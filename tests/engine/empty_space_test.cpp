@@ -224,6 +224,32 @@ TEST(EmptySpaceExtras, ClassifiesOnlyWhenTheRangeOrTableChanges) {
   EXPECT_EQ(rc.classifications(), 4);
 }
 
+// The iso block bits are made only for the packets that read them (8 lanes), and a change
+// of width reclassifies for the new packets.
+TEST(EmptySpaceExtras, IsoBlockBitsOnlyForEightLanePackets) {
+  Raycaster rc(test::pocl(), sparseVolume(), VolumeStorage::Buffer);
+  RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, false);
+  RaycasterOptions o;
+  o.packetLanes = 16;
+  rc.setOptions(o);
+  const Image wide = rc.render(p);
+  EXPECT_EQ(rc.classifications(), 1);
+  EXPECT_EQ(rc.isoBlockScans(), 0);
+  o.packetLanes = 8;
+  rc.setOptions(o);
+  const Image narrow = rc.render(p);
+  EXPECT_EQ(rc.isoBlockScans(), 1);
+  p.isoLo = 500.0;
+  rc.render(p);
+  EXPECT_EQ(rc.isoBlockScans(), 2);
+  o.packets = false;  // one ray per work-item reads neither
+  rc.setOptions(o);
+  rc.render(p);
+  EXPECT_EQ(rc.isoBlockScans(), 2);
+  // The same surface either way (packets of both widths hit the same first crossing).
+  EXPECT_EQ(test::maxDiff(wide, narrow), 0);
+}
+
 TEST(EmptySpaceExtras, ClipBoxAndOrthographicToo) {
   RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, true);
   p.camera.projection = Projection::Orthographic;

@@ -92,6 +92,8 @@ class Raycaster {
   const RaycasterOptions& options() const;
   // Times the occupancy grid was classified (it should follow TF / iso changes only).
   int classifications() const;
+  // Of those, the ones that scanned the volume for iso block bits (8-lane iso packets only).
+  int isoBlockScans() const;
   // Times the shadows / ao light grid was built (it should follow the light, the transfer
   // function, the clip box and the model only; never a camera move or a phong frame).
   int lightingBuilds() const;
