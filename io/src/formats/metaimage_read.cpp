@@ -2,6 +2,8 @@
 
 #include <metaImage.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +12,7 @@
 #include <fstream>
 #include <memory>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "voxray/io/error.h"
@@ -110,11 +113,14 @@ void checkDataFile(const std::string& path, const MetaImage& image) {
 // real one is refused first. MetaIO reads a name up to '=', ':' or a line end, and a line
 // without a separator makes it skip to the next '=' on a later line, past where a check of
 // lines would stop; so every header line up to the ElementDataFile field (where MetaIO stops
-// and data may follow) must be blank or "Name = value" with a short name.
+// and data may follow) must be blank or "Name = value" with a short name. The header is text:
+// a byte that is not, a name that is not a word, or a field given twice is damage that MetaIO
+// would read on into (libFuzzer found heap corruption behind such headers too).
 void checkHeaderLines(const std::string& path) {
   constexpr size_t kLongestLine = 250, kLongestHeader = 64 * 1024;
   std::ifstream in(path, std::ios::binary);
   std::string line;
+  std::set<std::string> seen;
   size_t read = 0;
   for (int n = 1; std::getline(in, line); ++n) {
     const std::string where = path + ": header line " + std::to_string(n);
@@ -122,6 +128,15 @@ void checkHeaderLines(const std::string& path) {
       throw inputError(where + " is " + std::to_string(line.size()) + " characters long (at most " +
                        std::to_string(kLongestLine) + " are read); the file is damaged");
     read += line.size() + 1;
+    for (const char c : line) {
+      const auto b = static_cast<unsigned char>(c);
+      if ((b < 0x20 || b > 0x7e) && c != '\t' && c != '\r') {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02x", b);
+        throw inputError(where + " holds the byte " + hex +
+                         ", which is not text; the header is damaged");
+      }
+    }
     const size_t first = line.find_first_not_of(" \t\r\v\f");
     if (first == std::string::npos) continue;
     const size_t sep = line.find_first_of("=:\r", first);
@@ -130,6 +145,12 @@ void checkHeaderLines(const std::string& path) {
     const size_t last = line.find_last_not_of(" \t\v\f", sep - 1);
     const std::string name =
         last == std::string::npos || last < first ? "" : line.substr(first, last - first + 1);
+    const bool word = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+    if (!word) throw inputError(where + " is not a 'Name = value' field; the file is damaged");
+    if (!seen.insert(name).second)
+      throw inputError(where + " gives the field " + name + " a second time; the file is damaged");
     // MetaIO reads NDims numbers for each array field: a huge NDims reads (hangs) for ever.
     if (name == "NDims") {
       const std::string value = line.substr(sep + 1);
