@@ -101,7 +101,22 @@ void checkList(const std::string& path) {
 void checkDataFile(const std::string& path, const MetaImage& image) {
   const std::string data = image.ElementDataFileName();
   if (data.empty() || data == "LOCAL" || data == "Local" || data == "local") return;
-  if (data.rfind("LIST", 0) == 0) return checkList(path);
+  if (data.rfind("LIST", 0) == 0) {
+    // MetaIO takes the listed files' dimension from the word after LIST (through atof, so any
+    // word reads as some number) or NDims - 1, and crashes on some (libFuzzer: a SEGV in
+    // ReadStream); only "LIST" and "LIST nD" for slices or volumes are read.
+    static const std::regex form(R"(LIST(?:[ \t]+([0-9]{1,2})D)?[ \t]*)");
+    std::smatch m;
+    if (!std::regex_match(data, m, form))
+      throw inputError(path + ": its ElementDataFile '" + data +
+                       "' is not a file list Voxray reads (LIST, or LIST 2D)");
+    const int dim = m[1].matched ? std::stoi(m[1].str()) : image.NDims() - 1;
+    if (dim < 2 || dim > image.NDims())
+      throw inputError(path + ": its files hold " + std::to_string(dim) + "D images of a " +
+                       std::to_string(image.NDims()) +
+                       "D image; Voxray reads lists of 2D slices (LIST 2D)");
+    return checkList(path);
+  }
   if (data.find(' ') != std::string::npos) return checkPattern(path, data);
   if (!dataFileExists(path, data))
     throw inputError(path + ": its data file " + data +

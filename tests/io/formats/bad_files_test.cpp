@@ -128,6 +128,41 @@ TEST(FormatsBadFiles, MetaImageHeaderThatIsNotTextFieldsIsRefused) {
   EXPECT_EQ(v.dims, glm::ivec3(4, 3, 2));
 }
 
+// A file list's dimension: "LIST" in a 2D image would list 1D files, which is refused.
+TEST(FormatsBadFiles, MetaImageListOfLinesIsRefused) {
+  EXPECT_THAT(headerError("l.mhd",
+                          "ObjectType = Image\nNDims = 2\nDimSize = 4 3\n"
+                          "ElementType = MET_SHORT\nElementDataFile = LIST\nslice.raw\n"),
+              HasSubstr("its files hold 1D images of a 2D image"));
+  EXPECT_THAT(headerError("m.mhd",
+                          "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\n"
+                          "ElementType = MET_SHORT\nElementDataFile = LIST 4D\nslice.raw\n"),
+              HasSubstr("its files hold 4D images of a 3D image"));
+}
+
+// The list forms that are read: LIST 2D, and LIST alone in a 3D image (2D files too).
+TEST(FormatsBadFiles, MetaImageListsOfSlicesOpen) {
+  for (const char* list : {"LIST 2D", "LIST"}) {
+    SCOPED_TRACE(list);
+    TempDir dir;
+    for (int k = 0; k < 2; ++k) {
+      std::vector<int16_t> slice(12);
+      for (int i = 0; i < 12; ++i) slice[size_t(i)] = int16_t(100 * k + i);
+      std::ofstream out(dir.file("s" + std::to_string(k) + ".raw"), std::ios::binary);
+      out.write(reinterpret_cast<const char*>(slice.data()), 24);
+    }
+    test::writeHeaderFile(dir.file("v.mhd"),
+                          "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\n"
+                          "ElementType = MET_SHORT\nElementDataFile = " +
+                              std::string(list) + "\ns0.raw\ns1.raw\n",
+                          {});
+    const Volume v = loadVolume(dir.file("v.mhd"));
+    ASSERT_EQ(v.dims, glm::ivec3(4, 3, 2));
+    EXPECT_EQ(v.toPhysical(v.at(3, 2, 0)), 11.0);
+    EXPECT_EQ(v.toPhysical(v.at(1, 0, 1)), 101.0);
+  }
+}
+
 TEST(FormatsBadFiles, DimsOverflowingSizeT) {
   TempDir dir;
   EXPECT_THAT(headerError("o.nrrd",
@@ -172,7 +207,8 @@ TEST(FormatsBadFiles, FuzzerRegressionsEndInTheirMessages) {
       {"mha-ndims-1-metaio-heap-corruption.mha", "header line 2 holds the byte 0x97"},
       {"mha-line-without-separator-metaio-overflow.mha",
        "header line 3 is not a 'Name = value' field"},
-      {"mha-datafile-in-a-value-metaio-overflow.mha", "header line 4 is 304 characters long"}};
+      {"mha-datafile-in-a-value-metaio-overflow.mha", "header line 4 is 304 characters long"},
+      {"mhd-list-word-metaio-segv.mhd", "is not a file list Voxray reads (LIST, or LIST 2D)"}};
   for (const auto& [name, message] : cases)
     EXPECT_THAT(loadError((dir / name).string()), HasSubstr(message)) << name;
   // Denormal scaling: the volume loads, with finite voxels and a usable storage scale.
