@@ -153,8 +153,8 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     if (oneSided) {
       aheadDistances(cl, dims);
       // Only 8-lane packets read the block bits (march_lanes.cl, ISO_BLOCK_TRIES): a scan
-      // of the occupied cells' voxels on the host, about 27 ms of CPU per iso change on
-      // a 512x512x400 CT, that 16-lane frames do not need.
+      // of the occupied cells' voxels on the host, 20-30 ms of CPU per iso change on a
+      // 512x512x400 CT, that 16-lane frames do not need.
       if (packetLanes == 8) {
         isoBlocks(cl, k);
         ++isoBlockScans_;

@@ -34,7 +34,7 @@ class EmptySpace {
   // capped at MAX_LEAP (kernels/classify.cl); then, after every cell's, each cell's
   // adaptive step level (valid after an adaptive dvr classification), or after an iso
   // classification for packets the eight one-sided distances (kernels/skip_ahead_lanes.cl)
-  // and each cell's eight iso block bits (isoBlocks).
+  // and, for 8-lane packets only, each cell's eight iso block bits (isoBlocks).
   const cl::Buffer& leap() const { return leap_; }
   int classifications() const { return classifications_; }
   int isoBlockScans() const { return isoBlockScans_; }
