@@ -25,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   size_t partBytes = 0;
   try {
     voxray::pacs::MultipartSplitter splitter(
-        "XYZ", [&](const std::string&, std::string_view content) { partBytes += content.size(); });
+        "XYZ", [&](const std::string&, std::string content) { partBytes += content.size(); });
     for (size_t at = 0; at < bodySize; at += chunk)
       splitter.feed(body + at, std::min(chunk, bodySize - at));
     splitter.finish();

@@ -17,7 +17,7 @@ const std::string kBody =
 std::vector<std::string> split(const std::string& body, size_t chunk) {
   std::vector<std::string> parts;
   MultipartSplitter s("XYZ",
-                      [&](const std::string&, std::string_view c) { parts.emplace_back(c); });
+                      [&](const std::string&, std::string c) { parts.push_back(std::move(c)); });
   for (size_t i = 0; i < body.size(); i += chunk)
     s.feed(body.data() + i, std::min(chunk, body.size() - i));
   s.finish();

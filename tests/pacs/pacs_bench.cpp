@@ -2,9 +2,9 @@
 // Orthanc over C-GET and WADO-RS, seconds to a ready volume (retrieved into a fresh cache and
 // imported), against DCMTK's getscu and curl fetching the same series, in the same run; and
 // a study-level C-FIND of the same store against DCMTK's findscu (dimse and both).
-// Usage: voxray_pacs_bench [REPEATS [SERIES_FOLDER [web|dimse|both]]] (defaults: 3, the shared
-// pelvis CT, both; the 512x512x400 CT: docs/bench/make-ct400.sh OUT, then OUT/ct400).
-// Medians are printed.
+// Usage: voxray_pacs_bench [REPEATS [SERIES_FOLDER [web|web-overlap|web-folder|dimse|both]]]
+// (defaults: 3, the shared pelvis CT, both; the 512x512x400 CT: docs/bench/make-ct400.sh
+// OUT, then OUT/ct400). Medians are printed.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -210,10 +210,12 @@ int main(int argc, char** argv) {
   // tool and Voxray take turns going first, so neither pays for the other's writes more.
   using Step = std::function<void(int)>;
   std::vector<std::pair<Step, Step>> pairs;
-  if (which != "dimse") pairs.push_back({curl, [&](int r) { voxray(r, server.webNode()); }});
-  if (which != "dimse") pairs.push_back({curl, voxrayThenImport});
-  if (which != "web") pairs.push_back({getscu, [&](int r) { voxray(r, server.dimseNode()); }});
-  if (which != "web") pairs.push_back({findscu, voxrayFind});
+  if (which != "dimse" && which != "web-folder")
+    pairs.push_back({curl, [&](int r) { voxray(r, server.webNode()); }});
+  if (which != "dimse" && which != "web-overlap") pairs.push_back({curl, voxrayThenImport});
+  if (which == "dimse" || which == "both")
+    pairs.push_back({getscu, [&](int r) { voxray(r, server.dimseNode()); }});
+  if (which == "dimse" || which == "both") pairs.push_back({findscu, voxrayFind});
   for (int r = 0; r < repeats; ++r)
     for (const auto& [raw, ours] : pairs)
       for (const Step& step : r % 2 ? std::vector<Step>{ours, raw} : std::vector<Step>{raw, ours}) {

@@ -123,10 +123,12 @@ void ArrivedFiles::process(const std::string& path, std::string bytes) {
   File file;
   std::string why;
   try {
-    if (readFrameHeaders(path, bytes, *parsed, file.frames, why) != ScanResult::Image) return;
-    bytes = std::string();  // DCMTK holds its own copy of every value
-    // Uncompressed 16-bit frames are copied into their slots as the folder import reads
-    // them (NativeFrames); the others are decoded by PixelFile, made when first needed.
+    // The pixel data stays in BYTES (PARSED keeps them): uncompressed 16-bit frames are
+    // copied from there into their slots as the folder import reads them from files
+    // (NativeFrames); the others are decoded by PixelFile, made when first needed.
+    auto shared = std::make_shared<const std::string>(std::move(bytes));
+    if (readFrameHeaders(path, std::move(shared), *parsed, file.frames, why) != ScanResult::Image)
+      return;
     NativeFrames native(*parsed);
     std::unique_ptr<PixelFile> pixels;
     std::vector<int32_t> values;

@@ -4,6 +4,8 @@
 #include <dcmtk/dcmdata/dcistrmf.h>
 
 #include <exception>
+#include <memory>
+#include <utility>
 
 #include "codec_registry.h"
 
@@ -51,8 +53,48 @@ class StackBounded : public Stream {
   bool tooDeep_ = false;
 };
 
-// A buffer stream cannot be read again later: every value is read at once.
-constexpr Uint32 kReadEverything = 0xFFFFFFFEu;
+// A file's bytes in memory as a stream that can make factories: DCMTK then leaves long
+// values (the pixel data) where they are and reads them from the bytes when first asked,
+// as it does from a file, instead of copying each into a value of its own while parsing.
+class SharedBytesStream : public DcmInputBufferStream {
+ public:
+  explicit SharedBytesStream(std::shared_ptr<const std::string> bytes) : bytes_(std::move(bytes)) {
+    setBuffer(bytes_->data(), offile_off_t(bytes_->size()));
+    setEos();
+  }
+  DcmInputStreamFactory* newFactory() const override;
+
+ private:
+  std::shared_ptr<const std::string> bytes_;
+};
+
+class SharedBytesFactory : public DcmInputStreamFactory {
+ public:
+  SharedBytesFactory(std::shared_ptr<const std::string> bytes, offile_off_t at)
+      : bytes_(std::move(bytes)), at_(at) {}
+  DcmInputStream* create() const override {
+    auto* stream = new SharedBytesStream(bytes_);
+    if (stream->skip(at_) != at_) {
+      delete stream;
+      return nullptr;  // DCMTK reports an invalid stream
+    }
+    return stream;
+  }
+  DcmInputStreamFactory* clone() const override { return new SharedBytesFactory(*this); }
+  // Not a temporary file: nothing to delete when the value goes.
+  DcmInputStreamFactoryType ident() const override { return DFT_DcmInputFileStreamFactory; }
+
+ private:
+  std::shared_ptr<const std::string> bytes_;
+  offile_off_t at_;
+};
+
+DcmInputStreamFactory* SharedBytesStream::newFactory() const {
+  return new SharedBytesFactory(bytes_, tell());
+}
+
+// Values longer than this stay in the file (or the bytes) until asked for.
+constexpr Uint32 kLeaveLongValues = 4096;
 
 template <class Stream>
 std::string readBounded(DcmFileFormat& file, StackBounded<Stream>& stream, Uint32 maxReadLength,
@@ -86,15 +128,12 @@ std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 m
   }
 }
 
-std::string loadDicomBytes(DcmFileFormat& file, std::string_view bytes) {
+std::string loadDicomBytes(DcmFileFormat& file, std::shared_ptr<const std::string> bytes) {
   ensureCodecsRegistered();
   try {
-    StackBounded<DcmInputBufferStream> stream(static_cast<const char*>(__builtin_frame_address(0)));
-    stream.setBuffer(bytes.data(), offile_off_t(bytes.size()));
-    stream.setEos();
-    std::string why = readBounded(file, stream, kReadEverything, DCM_UndefinedTagKey);
-    stream.releaseBuffer();
-    return why;
+    StackBounded<SharedBytesStream> stream(static_cast<const char*>(__builtin_frame_address(0)),
+                                           std::move(bytes));
+    return readBounded(file, stream, kLeaveLongValues, DCM_UndefinedTagKey);
   } catch (const std::exception& e) {
     file.clear();
     return std::string("the DICOM parser failed (") + e.what() + ")";

@@ -6,8 +6,8 @@
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 
+#include <memory>
 #include <string>
-#include <string_view>
 
 namespace voxray::dicom {
 
@@ -21,7 +21,8 @@ constexpr int kMaxNestingDepth = 256;
 std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 maxReadLength,
                           const DcmTagKey& stopAt = DCM_UndefinedTagKey);
 
-// The same for a whole file's BYTES in memory (every value read; BYTES may go afterwards).
-std::string loadDicomBytes(DcmFileFormat& file, std::string_view bytes);
+// The same for a whole file's BYTES in memory. Values over 4 KiB (the pixel data) are not
+// copied: FILE reads them from BYTES when they are asked for, and keeps BYTES alive for that.
+std::string loadDicomBytes(DcmFileFormat& file, std::shared_ptr<const std::string> bytes);
 
 }  // namespace voxray::dicom

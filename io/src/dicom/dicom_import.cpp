@@ -317,6 +317,9 @@ std::vector<SliceScale> assembleSlices(const Candidate& c, const LoadOptions& op
                 voxels.data() + k * sliceSize);
     done[k] = true;
   }
+  if (found > 0)
+    report(options, kHeaderShare,
+           "Took " + std::to_string(found) + " slices decoded as they arrived");
   decodeSlices(c, options, done, voxels, scales);
   return scales;
 }

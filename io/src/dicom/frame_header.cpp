@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <string_view>
 
 namespace voxray::dicom {
 namespace {
@@ -262,12 +263,13 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
       file, failure, [&] { return hasDicomPreamble(path); }, size, path, out, why);
 }
 
-ScanResult readFrameHeaders(const std::string& path, std::string_view bytes, DcmFileFormat& file,
-                            std::vector<FrameHeader>& out, std::string& why) {
-  const std::string failure = loadDicomBytes(file, bytes);
+ScanResult readFrameHeaders(const std::string& path, std::shared_ptr<const std::string> bytes,
+                            DcmFileFormat& file, std::vector<FrameHeader>& out, std::string& why) {
+  const std::string_view view = *bytes;
+  const std::string failure = loadDicomBytes(file, std::move(bytes));
   return headersOf(
-      file, failure, [&] { return startsAsDicom(bytes); },
-      [&] { return std::optional<uintmax_t>(bytes.size()); }, path, out, why);
+      file, failure, [&] { return startsAsDicom(view); },
+      [&] { return std::optional<uintmax_t>(view.size()); }, path, out, why);
 }
 
 std::string transferSyntaxName(const std::string& uid) {

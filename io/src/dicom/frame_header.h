@@ -2,9 +2,9 @@
 // What Voxray needs to know about one image (one frame of a file), read from headers only.
 // Enhanced multi-frame files give one FrameHeader per frame, with per-frame geometry.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -52,10 +52,11 @@ enum class ScanResult { Image, NotDicom, NoImage };
 // frame to OUT. WHY says, for NotDicom/NoImage, what the file was.
 ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& out,
                             std::string& why);
-// The same for the whole file's BYTES in memory (what would be at PATH), parsed in full into
-// FILE (pixel data included), so its pixels can be decoded without reading it again.
-ScanResult readFrameHeaders(const std::string& path, std::string_view bytes, DcmFileFormat& file,
-                            std::vector<FrameHeader>& out, std::string& why);
+// The same for the whole file's BYTES in memory (what would be at PATH), parsed into FILE,
+// so its pixels can be decoded without reading it again: FILE reads its pixel data from
+// BYTES, which it keeps alive.
+ScanResult readFrameHeaders(const std::string& path, std::shared_ptr<const std::string> bytes,
+                            DcmFileFormat& file, std::vector<FrameHeader>& out, std::string& why);
 
 // Human name of a transfer syntax UID ("JPEG 2000 lossless", ...), or the UID itself.
 std::string transferSyntaxName(const std::string& uid);

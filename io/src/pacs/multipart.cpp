@@ -10,6 +10,9 @@ namespace {
 
 constexpr size_t kMaxHeaderBytes = 16 << 10;
 constexpr size_t kMaxPreambleBytes = 64 << 10;
+// Room beyond the last part's size for the next buffer: the feed that ends a part brings the
+// start of the next (curl hands over up to 16 KiB at a time).
+constexpr size_t kFeedSlack = 64 << 10;
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -61,10 +64,18 @@ void MultipartSplitter::parse() {
         return;
       }
       if (state_ == State::Content) {
-        onPart_(headers_, std::string_view(buffer_).substr(0, at));
+        // The part is the buffer's head: the buffer becomes the part, the bytes after it
+        // start the next buffer, with room for a part as large as this one.
+        std::string part = std::move(buffer_);
+        buffer_ = std::string();
+        buffer_.reserve(part.size() + kFeedSlack);
+        buffer_.assign(part, at + delimiter_.size());
+        part.resize(at);
+        onPart_(headers_, std::move(part));
         ++parts_;
+      } else {
+        buffer_.erase(0, at + delimiter_.size());
       }
-      buffer_.erase(0, at + delimiter_.size());
       scanFrom_ = 0;
       state_ = State::AfterDelimiter;
     } else if (state_ == State::AfterDelimiter) {

@@ -5,7 +5,6 @@
 // splitter, fuzzed (tests/fuzz). Every departure from the grammar throws Input.
 #include <functional>
 #include <string>
-#include <string_view>
 
 namespace voxray::pacs {
 
@@ -14,8 +13,9 @@ std::string multipartBoundary(const std::string& contentType);
 
 class MultipartSplitter {
  public:
-  // ON_PART gets each part's headers (as sent, lower-cased names) and its content.
-  using OnPart = std::function<void(const std::string& headers, std::string_view content)>;
+  // ON_PART gets each part's headers (as sent, lower-cased names) and its content, which it
+  // may keep (handed over, not copied: a part of a CT series is half a megabyte).
+  using OnPart = std::function<void(const std::string& headers, std::string content)>;
   MultipartSplitter(const std::string& boundary, OnPart onPart);
   void feed(const char* data, size_t size);
   // Throws Input when the body ended before its close delimiter (truncated).

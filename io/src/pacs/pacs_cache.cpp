@@ -185,10 +185,12 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   const std::string folder = root_ + "/series/" + folderName(seriesUid);
   RetrieveOptions withImport = options;
   if (import)
-    withImport.written = [&](const std::string& path, std::string_view content) {
-      if (options.written) options.written(path, content);
+    withImport.written = [&](const std::string& path, std::string content) {
       // The staging folder becomes FOLDER once the series is complete.
-      import->add(folder + "/" + fs::path(path).filename().string(), std::string(content));
+      const std::string arrived = folder + "/" + fs::path(path).filename().string();
+      if (!options.written) return import->add(arrived, std::move(content));
+      import->add(arrived, content);
+      options.written(path, std::move(content));
     };
   std::vector<std::string> files;
   try {

@@ -141,7 +141,7 @@ class WebClient : public PacsClient {
     std::vector<std::string> files;
     RetrieveProgress progress;
     std::unique_ptr<MultipartSplitter> splitter;
-    auto onPart = [&](const std::string& headers, std::string_view content) {
+    auto onPart = [&](const std::string& headers, std::string content) {
       if (headers.find("content-type") != std::string::npos &&
           headers.find("application/dicom") == std::string::npos)
         throw inputError("a part of the answer is not application/dicom");
@@ -151,9 +151,9 @@ class WebClient : public PacsClient {
       if (!out.flush())
         throw outputError("cannot write " + path + ": the disk may be full; free space");
       files.push_back(path);
-      if (options.written) options.written(path, content);
       progress.received = int(files.size());
       progress.megabytes += double(content.size()) / 1e6;
+      if (options.written) options.written(path, std::move(content));
       if (options.progress) options.progress(progress);
     };
     auto sink = [&](const char* data, size_t size, const std::string& type) {

@@ -7,7 +7,6 @@
 #include <functional>
 #include <memory>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace voxray {
@@ -83,9 +82,10 @@ struct RetrieveProgress {
 struct RetrieveOptions {
   std::function<void(const RetrieveProgress&)> progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;              // true: stop, throw Cancelled
-  // Each file as it is written, with its content, so that its import can start during the
-  // transfer. May be empty; DICOMweb calls it, DIMSE (files written by DCMTK) does not.
-  std::function<void(const std::string& path, std::string_view content)> written;
+  // Each file once it is written, with its content (handed over: the callee may keep it), so
+  // that its import can start during the transfer. May be empty; DICOMweb calls it, DIMSE
+  // (files written by DCMTK) does not.
+  std::function<void(const std::string& path, std::string content)> written;
 };
 
 class PacsClient {
