@@ -265,8 +265,9 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
 
 ScanResult readFrameHeaders(const std::string& path, std::shared_ptr<const std::string> bytes,
                             DcmFileFormat& file, std::vector<FrameHeader>& out, std::string& why) {
+  // BYTES stays held here: FILE keeps it only where a value was left in it.
   const std::string_view view = *bytes;
-  const std::string failure = loadDicomBytes(file, std::move(bytes));
+  const std::string failure = loadDicomBytes(file, bytes);
   return headersOf(
       file, failure, [&] { return startsAsDicom(view); },
       [&] { return std::optional<uintmax_t>(view.size()); }, path, out, why);
