@@ -61,12 +61,10 @@ inline floatN cap_or_gradientN(floatN g, intN graded, intN cap, intN along) {
 #ifndef ISO_BATCH
 #define ISO_BATCH (LANES == 8 ? 3 : 2)
 #endif
-// Empty 2^3 voxel blocks a lane may pass per march iteration before it samples. Only 8-lane
-// packets pass them (CT 512x512x400 kernel CPU -8 %, CThead -6 %); 16 lanes gained nothing
-// measurable (the packet still waits for its slowest lane) and CThead lost about 3 %.
-#ifndef ISO_BLOCK_TRIES
-#define ISO_BLOCK_TRIES (LANES == 8 ? 4 : 0)
-#endif
+// ISO_BLOCK_TRIES (switches.h, set by the host): empty 2^3 voxel blocks a lane may pass per
+// march iteration before it samples. Only 8-lane packets pass them, 4 (CT 512x512x400 kernel
+// CPU -8 %, CThead -6 %); 16 lanes gained nothing measurable (the packet still waits for its
+// slowest lane) and CThead lost about 3 %.
 inline void iso_packet(PACKET_ARGS) {
   float step = P->view.z;
   RayPacket r;
@@ -434,12 +432,10 @@ inline void prefetch_sample_rowsN(__global const short* restrict vol, __constant
 #undef PREFETCH_LANE
 }
 
-// Packets a mip work-item marches together: at 8 lanes two 4 x 2 packets (4 x 4 pixels;
-// the host's rows per work-item follow, raycaster.cpp), so that each turn has 16 rays'
-// voxel loads in flight, as a 16-lane packet has; the two are otherwise independent.
-#ifndef MIP_HALVES
-#define MIP_HALVES (LANES == 8 ? 2 : 1)
-#endif
+// MIP_HALVES (switches.h, set by the host, which sizes the grid by it): packets a mip
+// work-item marches together, at 8 lanes two 4 x 2 packets (4 x 4 pixels), so that each turn
+// has 16 rays' voxel loads in flight, as a 16-lane packet has; the two are otherwise
+// independent.
 
 inline bool any_halfN(const intN* m) {
   intN u = m[0];

@@ -53,3 +53,9 @@ VOXRAY_SWITCH(LIGHTING, 0, FRAME, "|shadows|ao")
 // (RenderParams::adaptiveError, classify.cl's adaptive_level); set only with ESS, whose
 // macro cells hold the levels. BUILD: its code is compiled only where it is used (#if).
 VOXRAY_SWITCH(ADAPTIVE, 0, BUILD, "|adaptive")
+// Packet rules the host must follow too, so it sets them (Raycaster's switches()) and the
+// kernels only read them. mip: 4 x 2 packets a work-item marches together (march_lanes.cl),
+// which sets the work-item grid's rows. iso: empty 2^3 voxel blocks a lane may pass per
+// march iteration; the host makes the block bits only where this is above 0.
+VOXRAY_SWITCH(MIP_HALVES, 1, BUILD, "")
+VOXRAY_SWITCH(ISO_BLOCK_TRIES, 0, BUILD, "")

@@ -106,11 +106,12 @@ void EmptySpace::isoBlocks(ContextImpl& cl, const RaycastParams& k) {
 
 void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
                           const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive,
-                          int packetLanes) {
+                          bool packets, bool blockBits) {
   int m = mode == Mode::Iso ? 0 : mode == Mode::Dvr ? 1 : 2;
-  // iso depends on the range only (and on the packets' width: what they read); dvr on which table
+  // iso depends on the range only (and on what the packets read); dvr on which table
   // entries are not transparent and on where the table sits in stored units.
-  std::vector<float> key = {float(m), k.values.s[0], k.values.s[1], float(packetLanes)};
+  std::vector<float> key = {float(m), k.values.s[0], k.values.s[1], float(packets),
+                            float(blockBits)};
   if (m == 2) key = {float(m), k.dvr.s[0]};
   std::vector<int> opaque;
   if (m == 1) {
@@ -149,13 +150,13 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     // two-sided ones). First: it may enlarge leap_. Their minimum is then the two-sided
     // distances (the same, at a fraction of the work); otherwise, three passes make them:
     // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
-    const bool oneSided = m == 0 && packetLanes > 0;
+    const bool oneSided = m == 0 && packets;
     if (oneSided) {
       aheadDistances(cl, dims);
-      // Only 8-lane packets read the block bits (march_lanes.cl, ISO_BLOCK_TRIES): a scan
-      // of the occupied cells' voxels on the host, 20-30 ms of CPU per iso change on a
+      // Only frames whose packets pass blocks read the bits (ISO_BLOCK_TRIES, 8 lanes): a
+      // scan of the occupied cells' voxels on the host, 20-30 ms of CPU per iso change on a
       // 512x512x400 CT, that 16-lane frames do not need.
-      if (packetLanes == 8) {
+      if (blockBits) {
         isoBlocks(cl, k);
         ++isoBlockScans_;
       }

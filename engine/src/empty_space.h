@@ -23,18 +23,19 @@ class EmptySpace {
   // Brings the occupancy up to date for a frame whose parameters k are already enqueued
   // in params and lutBuffer (the queue is in order). mip needs none: it reads the min/max
   // directly. adaptive (dvr): also each cell's step level (kernels/classify.cl,
-  // adaptive_level) behind the distances in leap(). packetLanes (iso): the frame's rays
-  // per packet, 0 for one ray per work-item; packets also read the one-sided distances,
-  // and 8-lane packets the iso block bits.
+  // adaptive_level) behind the distances in leap(). iso: packets also read the one-sided
+  // distances, and with blockBits (ISO_BLOCK_TRIES > 0) the iso block bits.
   void classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
-                const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive, int packetLanes);
+                const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive, bool packets,
+                bool blockBits);
   const glm::ivec3& dims() const { return cells_.dims; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
   // capped at MAX_LEAP (kernels/classify.cl); then, after every cell's, each cell's
   // adaptive step level (valid after an adaptive dvr classification), or after an iso
   // classification for packets the eight one-sided distances (kernels/skip_ahead_lanes.cl)
-  // and, for 8-lane packets only, each cell's eight iso block bits (isoBlocks).
+  // and, where ISO_BLOCK_TRIES > 0 (8-lane packets), each cell's eight iso block bits
+  // (isoBlocks).
   const cl::Buffer& leap() const { return leap_; }
   int classifications() const { return classifications_; }
   int isoBlockScans() const { return isoBlockScans_; }

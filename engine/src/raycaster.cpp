@@ -171,6 +171,10 @@ KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
   if (packets()) {
     s.PACKET = 1;
     s.LANES = lanes(p);
+    // 8-lane packets only (docs/bench/README.md, session 9): mip marches two per work-item,
+    // iso passes empty voxel blocks (their bits ride with the leap distances: ESS).
+    if (s.LANES == 8 && p.mode == Mode::Mip) s.MIP_HALVES = 2;
+    if (s.LANES == 8 && p.mode == Mode::Iso && s.ESS) s.ISO_BLOCK_TRIES = 4;
   }
   return s;
 }
@@ -289,7 +293,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
       m.space.classify(m.cl, m.paramsBuffer, m.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
-                       m.packets() ? m.lanes(p) : 0);
+                       sw.PACKET != 0, sw.ISO_BLOCK_TRIES > 0);
     if (sw.LIGHTING) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
       storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;
@@ -327,9 +331,8 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     // get_global_id, which counts the offset, and drop items past the image.
     size_t gx = size_t(p.width), gy = size_t(y1), oy = size_t(y0);
     if (m.packets()) {  // one work-item per 4 x (lanes / 4) pixels
-      size_t rows = size_t(m.lanes(p) / 4);
-      // mip at 8 lanes: two packets, one below the other (march_lanes.cl, MIP_HALVES).
-      if (p.mode == Mode::Mip && m.lanes(p) == 8) rows *= 2;
+      // MIP_HALVES packets of 4 x (lanes / 4) pixels, one below the other (march_lanes.cl).
+      size_t rows = size_t(sw.LANES / 4) * size_t(sw.MIP_HALVES);
       gx = (gx + 3) / 4;
       gy = (gy + rows - 1) / rows;
       oy /= rows;
