@@ -34,6 +34,32 @@ TEST(MultipartTest, SplitsPartsWhateverTheFeedSize) {
   }
 }
 
+// Parts of a CT slice's size are handed over in the buffer they arrived in, small ones are
+// copied out of it: large and small parts in turn, fed as curl feeds (16 KiB), in one piece
+// and byte by byte, come out as they went in.
+TEST(MultipartTest, LargeAndSmallPartsComeOutWhole) {
+  std::vector<std::string> sent;
+  std::string body = "--XYZ\r\n";
+  uint32_t x = 12345;
+  for (size_t size : {size_t(524288 + 300), size_t(10), size_t(65536), size_t(65535),
+                      size_t(200000), size_t(0), size_t(524288 + 300)}) {
+    std::string part(size, '\0');
+    for (char& c : part) {  // arbitrary bytes, CR, LF and '-' among them
+      x = x * 1664525u + 1013904223u;
+      c = char(x >> 24);
+    }
+    sent.push_back(part);
+    body += "Content-Type: application/dicom\r\n\r\n" + part + "\r\n--XYZ\r\n";
+  }
+  body.resize(body.size() - 2);
+  body += "--\r\n";
+  for (size_t chunk : {size_t(16384), body.size(), size_t(1)}) {
+    auto parts = split(body, chunk);
+    ASSERT_EQ(parts.size(), sent.size()) << chunk;
+    for (size_t i = 0; i < sent.size(); ++i) EXPECT_TRUE(parts[i] == sent[i]) << chunk << " " << i;
+  }
+}
+
 TEST(MultipartTest, BoundaryFromContentType) {
   EXPECT_EQ(multipartBoundary("multipart/related; type=\"application/dicom\"; boundary=abc"),
             "abc");

@@ -10,8 +10,11 @@ namespace {
 
 constexpr size_t kMaxHeaderBytes = 16 << 10;
 constexpr size_t kMaxPreambleBytes = 64 << 10;
-// Room beyond the last part's size for the next buffer: the feed that ends a part brings the
-// start of the next (curl hands over up to 16 KiB at a time).
+// Parts from this size on are handed over in the buffer they arrived in (a CT slice is half a
+// megabyte); smaller ones are copied out of it. The next buffer gets room for a part as large
+// as the last plus kFeedSlack: the feed that ends a part brings the start of the next (curl
+// hands over up to 16 KiB at a time).
+constexpr size_t kHandOverBytes = 64 << 10;
 constexpr size_t kFeedSlack = 64 << 10;
 
 std::string lower(std::string s) {
@@ -64,13 +67,20 @@ void MultipartSplitter::parse() {
         return;
       }
       if (state_ == State::Content) {
-        // The part is the buffer's head: the buffer becomes the part, the bytes after it
-        // start the next buffer, with room for a part as large as this one.
-        std::string part = std::move(buffer_);
-        buffer_ = std::string();
-        buffer_.reserve(part.size() + kFeedSlack);
-        buffer_.assign(part, at + delimiter_.size());
-        part.resize(at);
+        std::string part;
+        if (at >= kHandOverBytes) {
+          // A large part is the buffer's head: the buffer becomes the part (no copy), and
+          // the bytes after it start the next buffer, with room for a part as large.
+          part = std::move(buffer_);
+          buffer_ = std::string();
+          buffer_.reserve(at + kFeedSlack);
+          buffer_.assign(part, at + delimiter_.size());
+          part.resize(at);
+        } else {
+          // A small one is copied out: the buffer (and its room) stays for the next.
+          part = buffer_.substr(0, at);
+          buffer_.erase(0, at + delimiter_.size());
+        }
         onPart_(headers_, std::move(part));
         ++parts_;
       } else {
