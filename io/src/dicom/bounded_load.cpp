@@ -93,7 +93,8 @@ DcmInputStreamFactory* SharedBytesStream::newFactory() const {
   return new SharedBytesFactory(bytes_, tell());
 }
 
-// Values longer than this stay in the file (or the bytes) until asked for.
+// Values longer than this stay in the bytes until asked for (as the file readers' callers
+// leave them in the file: frame_header.cpp, pixel_decode.cpp).
 constexpr Uint32 kLeaveLongValues = 4096;
 
 template <class Stream>
