@@ -10,13 +10,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "folder_bytes.h"
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/error.h"
 
@@ -27,18 +25,6 @@ double cpuSeconds() {
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
          double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
-}
-
-std::vector<std::pair<std::string, std::string>> filesOf(const std::string& folder) {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const auto& e : std::filesystem::recursive_directory_iterator(folder)) {
-    if (!e.is_regular_file()) continue;
-    std::ifstream in(e.path(), std::ios::binary);
-    std::stringstream bytes;
-    bytes << in.rdbuf();
-    out.emplace_back(e.path().string(), bytes.str());
-  }
-  return out;
 }
 
 }  // namespace
@@ -54,7 +40,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    auto files = fed ? filesOf(argv[1]) : std::vector<std::pair<std::string, std::string>>{};
+    auto files =
+        fed ? voxray::test::filesOf(argv[1]) : std::vector<std::pair<std::string, std::string>>{};
     const double cpu0 = cpuSeconds();
     auto t0 = std::chrono::steady_clock::now();
     voxray::Volume v;
