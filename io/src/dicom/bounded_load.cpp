@@ -116,12 +116,14 @@ std::string readBounded(DcmFileFormat& file, StackBounded<Stream>& stream, Uint3
 }  // namespace
 
 std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 maxReadLength,
-                          const DcmTagKey& stopAt) {
+                          const DcmTagKey& stopAt, uint64_t* stoppedAt) {
   ensureCodecsRegistered();
   try {
     StackBounded<DcmInputFileStream> stream(static_cast<const char*>(__builtin_frame_address(0)),
                                             path.c_str());
-    return readBounded(file, stream, maxReadLength, stopAt);
+    std::string why = readBounded(file, stream, maxReadLength, stopAt);
+    if (stoppedAt) *stoppedAt = uint64_t(stream.tell());
+    return why;
   } catch (const std::exception& e) {
     // DCMTK is C++ and may throw (std::bad_alloc, std::out_of_range) on damaged input.
     file.clear();

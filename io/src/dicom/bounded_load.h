@@ -6,6 +6,7 @@
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -17,9 +18,11 @@ constexpr int kMaxNestingDepth = 256;
 // Loads PATH into FILE as DcmFileFormat::loadFileUntilTag does (values longer than
 // MAX_READ_LENGTH are read when first used; parsing stops at STOP_AT). Returns an empty
 // string on success, else why the file could not be parsed (without the path). A C++
-// exception from the parser becomes such a reason too.
+// exception from the parser becomes such a reason too. STOPPED_AT, when given, gets the file
+// offset where parsing ended: after STOP_AT's tag, VR and length when it stopped there.
 std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 maxReadLength,
-                          const DcmTagKey& stopAt = DCM_UndefinedTagKey);
+                          const DcmTagKey& stopAt = DCM_UndefinedTagKey,
+                          uint64_t* stoppedAt = nullptr);
 
 // The same for a whole file's BYTES in memory. Values over 4 KiB (the pixel data) are not
 // copied: FILE reads them from BYTES when they are asked for, and keeps BYTES alive for that.

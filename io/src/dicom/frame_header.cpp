@@ -252,15 +252,19 @@ ScanResult headersOf(DcmFileFormat& file, const std::string& failure,
 ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& out,
                             std::string& why) {
   DcmFileFormat file;
-  const std::string failure = loadDicomFile(file, path, 4096, DCM_PixelData);
+  uint64_t stoppedAt = 0;
+  const std::string failure = loadDicomFile(file, path, 4096, DCM_PixelData, &stoppedAt);
   auto size = [&]() -> std::optional<uintmax_t> {
     std::error_code ec;
     const uintmax_t bytes = std::filesystem::file_size(path, ec);
     if (ec) return std::nullopt;
     return bytes;
   };
-  return headersOf(
-      file, failure, [&] { return hasDicomPreamble(path); }, size, path, out, why);
+  const size_t first = out.size();
+  const ScanResult result =
+      headersOf(file, failure, [&] { return hasDicomPreamble(path); }, size, path, out, why);
+  for (size_t i = first; i < out.size(); ++i) out[i].pixelValueOffset = stoppedAt;
+  return result;
 }
 
 ScanResult readFrameHeaders(const std::string& path, std::shared_ptr<const std::string> bytes,

@@ -44,6 +44,10 @@ struct FrameHeader {
   glm::dvec3 normal() const { return glm::normalize(glm::cross(rowDir, colDir)); }
   bool isEnhanced() const { return fileFrames > 1 || perFrameGroups; }
   bool perFrameGroups = false;
+  // Where the header scan of the file stopped: just after the pixel data's tag, VR and length
+  // when the file has its pixel data at the top level (NativeFrames checks before using it);
+  // 0 when read from bytes or unknown.
+  uint64_t pixelValueOffset = 0;
 };
 
 enum class ScanResult { Image, NotDicom, NoImage };

@@ -8,7 +8,11 @@
 #include <dcmtk/dcmdata/dcpixel.h>
 #include <dcmtk/dcmdata/dcpixseq.h>
 #include <dcmtk/dcmdata/dcpxitem.h>
+#include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmdata/dcxfer.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cstring>
 
@@ -219,12 +223,89 @@ void PixelFile::frameValues(const FrameHeader& h, std::vector<int32_t>& out) {
     impl_->decodeOther(h, out);
 }
 
+namespace {
+
+// The frame's 16-bit words, sample for sample, as they lie in an uncompressed
+// little-endian file; the other checks (bit depth, colour) are the header's.
+bool nativeWords(const FrameHeader& h) {
+  return gLocalByteOrder == EBO_LittleEndian && h.bitsAllocated == 16 && h.samplesPerPixel == 1 &&
+         unsupportedReason(h).empty();
+}
+
+// The file's pixel data value where the header scan stopped (h.pixelValueOffset), found
+// without parsing the file again: the tag, VR and length just before that offset must say
+// "pixel data, OW (or implicit), this many bytes", and the value must lie inside the file.
+class DirectPixels {
+ public:
+  explicit DirectPixels(const std::string& path) : path_(path) {}
+  ~DirectPixels() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  DirectPixels(const DirectPixels&) = delete;
+  DirectPixels& operator=(const DirectPixels&) = delete;
+
+  bool read(const FrameHeader& h, uint16_t* out) {
+    const uint64_t frameBytes = uint64_t(h.rows) * uint64_t(h.columns) * 2;
+    if (!find(h) || uint64_t(h.frame + 1) * frameBytes > length_) return false;
+    auto* to = reinterpret_cast<char*>(out);
+    uint64_t at = offset_ + uint64_t(h.frame) * frameBytes, left = frameBytes;
+    while (left > 0) {
+      const ssize_t n = ::pread(fd_, to, size_t(left), off_t(at));
+      if (n <= 0) return false;  // the file shrank since the scan: the general path says so
+      to += n, at += uint64_t(n), left -= uint64_t(n);
+    }
+    return true;
+  }
+
+ private:
+  bool find(const FrameHeader& h) {
+    if (tried_) return fd_ >= 0;
+    tried_ = true;
+    const bool explicitVr = h.transferSyntaxUid == UID_LittleEndianExplicitTransferSyntax;
+    const bool implicitVr = h.transferSyntaxUid == UID_LittleEndianImplicitTransferSyntax;
+    const uint64_t head = explicitVr ? 12 : 8;
+    if ((!explicitVr && !implicitVr) || h.pixelValueOffset < head) return false;
+    const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    unsigned char b[12];
+    struct stat st {};
+    const off_t tagAt = off_t(h.pixelValueOffset - head);
+    bool ok = ::fstat(fd, &st) == 0 && ::pread(fd, b, size_t(head), tagAt) == ssize_t(head) &&
+              b[0] == 0xe0 && b[1] == 0x7f && b[2] == 0x10 && b[3] == 0x00 &&
+              (!explicitVr || (b[4] == 'O' && b[5] == 'W' && b[6] == 0 && b[7] == 0));
+    if (ok) {
+      const unsigned char* len = b + head - 4;
+      length_ = uint64_t(len[0]) | uint64_t(len[1]) << 8 | uint64_t(len[2]) << 16 |
+                uint64_t(len[3]) << 24;
+      offset_ = h.pixelValueOffset;
+      ok = length_ != 0xffffffffu && offset_ + length_ <= uint64_t(st.st_size);
+    }
+    if (!ok) {
+      ::close(fd);
+      return false;
+    }
+    fd_ = fd;
+    return true;
+  }
+
+  std::string path_;
+  int fd_ = -1;
+  bool tried_ = false;
+  uint64_t offset_ = 0, length_ = 0;
+};
+
+}  // namespace
+
 struct NativeFrames::Impl {
-  DcmFileFormat own;
+  std::string path;
+  std::unique_ptr<DirectPixels> direct;  // files read from a path
+  std::unique_ptr<DcmFileFormat> own;    // parsed when the direct read cannot be used
+  DcmFileFormat* parsed = nullptr;
   DcmPixelData* pixels = nullptr;
   DcmFileCache cache;  // one open file for every frame
 
   void find(DcmFileFormat& file) {
+    parsed = &file;
     DcmDataset* ds = file.getDataset();
     const E_TransferSyntax xfer = ds->getOriginalXfer();
     if (xfer != EXS_LittleEndianExplicit && xfer != EXS_LittleEndianImplicit) return;
@@ -232,11 +313,19 @@ struct NativeFrames::Impl {
     if (ds->findAndGetElement(DCM_PixelData, element).bad() || !element) return;
     pixels = dynamic_cast<DcmPixelData*>(element);
   }
+  // Parses the file at PATH once, when first needed.
+  void parse() {
+    if (parsed) return;
+    own = std::make_unique<DcmFileFormat>();
+    parsed = own.get();
+    // Values over 4 KiB stay in the file until read: the pixel data is read by frame below.
+    if (loadDicomFile(*own, path, 4096).empty()) find(*own);
+  }
 };
 
 NativeFrames::NativeFrames(const std::string& path) : impl_(std::make_unique<Impl>()) {
-  // Values over 4 KiB stay in the file until read: the pixel data is read by frame below.
-  if (loadDicomFile(impl_->own, path, 4096).empty()) impl_->find(impl_->own);
+  impl_->path = path;
+  impl_->direct = std::make_unique<DirectPixels>(path);
 }
 
 NativeFrames::NativeFrames(DcmFileFormat& parsed) : impl_(std::make_unique<Impl>()) {
@@ -246,14 +335,15 @@ NativeFrames::NativeFrames(DcmFileFormat& parsed) : impl_(std::make_unique<Impl>
 NativeFrames::~NativeFrames() = default;
 
 bool NativeFrames::fits(const FrameHeader& h) const {
+  impl_->parse();
   const size_t frameBytes = size_t(h.rows) * size_t(h.columns) * 2;
-  return impl_->pixels && gLocalByteOrder == EBO_LittleEndian && h.bitsAllocated == 16 &&
-         h.samplesPerPixel == 1 && unsupportedReason(h).empty() &&
+  return impl_->pixels && nativeWords(h) &&
          (impl_->pixels->getVR() == EVR_OW || impl_->pixels->getVR() == EVR_ox) &&
          size_t(h.frame + 1) * frameBytes <= impl_->pixels->getLength();
 }
 
 bool NativeFrames::read(const FrameHeader& h, uint16_t* out) {
+  if (impl_->direct && nativeWords(h) && impl_->direct->read(h, out)) return true;
   if (!fits(h)) return false;
   const size_t frameBytes = size_t(h.rows) * size_t(h.columns) * 2;
   return impl_->pixels

@@ -34,8 +34,11 @@ class PixelFile {
 
 // The frames of an uncompressed little-endian 16-bit greyscale file, read from the file
 // straight into the caller's memory: the common CT/MR file skips DCMTK's copy of its pixel
-// data and the 32-bit widening of PixelFile. For anything else, or on any failure, the
-// answer is false and the caller uses PixelFile, which reports the error as it always has.
+// data and the 32-bit widening of PixelFile. From a path, the frames are read at the offset
+// where the header scan stopped (FrameHeader::pixelValueOffset) once the bytes before it are
+// checked, without parsing the file again; otherwise the file is parsed here. For anything
+// else, or on any failure, the answer is false and the caller uses PixelFile, which reports
+// the error as it always has.
 class NativeFrames {
  public:
   explicit NativeFrames(const std::string& path);
