@@ -261,8 +261,8 @@ ScanResult readFrameHeaders(const std::string& path, std::vector<FrameHeader>& o
     return bytes;
   };
   const size_t first = out.size();
-  const ScanResult result =
-      headersOf(file, failure, [&] { return hasDicomPreamble(path); }, size, path, out, why);
+  const ScanResult result = headersOf(
+      file, failure, [&] { return hasDicomPreamble(path); }, size, path, out, why);
   for (size_t i = first; i < out.size(); ++i) out[i].pixelValueOffset = stoppedAt;
   return result;
 }
