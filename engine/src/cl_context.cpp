@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "cl_context_impl.h"
+#include "cpu_worker_pinning.h"
 #include "kernel_source.h"
 
 namespace voxray {
@@ -16,6 +17,7 @@ struct Found {
 };
 
 std::vector<Found> enumerate() {
+  pinCpuWorkersWhereSafe();  // before PoCL starts its workers
   std::vector<cl::Platform> platforms;
   cl_int err = cl::Platform::get(&platforms);
   if (err != CL_SUCCESS || platforms.empty())
