@@ -20,7 +20,7 @@ namespace {
 TEST(CpuWorkerPinning, OnlyWhenEveryWorkerCanTakeItsCpu) {
   const bool all[4] = {true, true, true, true};
   EXPECT_TRUE(everyWorkerCanTakeItsCpu(all, 4, 4));
-  EXPECT_TRUE(everyWorkerCanTakeItsCpu(all, 4, 2));  // more allowed than online: fine
+  EXPECT_TRUE(everyWorkerCanTakeItsCpu(all, 4, 2));      // more allowed than online: fine
   const bool taskset23[4] = {false, false, true, true};  // taskset -c 2,3
   EXPECT_FALSE(everyWorkerCanTakeItsCpu(taskset23, 4, 4));
   const bool hole[4] = {true, false, true, true};
