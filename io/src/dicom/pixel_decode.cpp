@@ -300,12 +300,12 @@ struct NativeFrames::Impl {
   std::string path;
   std::unique_ptr<DirectPixels> direct;  // files read from a path
   std::unique_ptr<DcmFileFormat> own;    // parsed when the direct read cannot be used
-  DcmFileFormat* parsed = nullptr;
+  bool parsed = false;                   // find() ran (on OWN or on the caller's parse)
   DcmPixelData* pixels = nullptr;
   DcmFileCache cache;  // one open file for every frame
 
   void find(DcmFileFormat& file) {
-    parsed = &file;
+    parsed = true;
     DcmDataset* ds = file.getDataset();
     const E_TransferSyntax xfer = ds->getOriginalXfer();
     if (xfer != EXS_LittleEndianExplicit && xfer != EXS_LittleEndianImplicit) return;
@@ -316,8 +316,8 @@ struct NativeFrames::Impl {
   // Parses the file at PATH once, when first needed.
   void parse() {
     if (parsed) return;
+    parsed = true;
     own = std::make_unique<DcmFileFormat>();
-    parsed = own.get();
     // Values over 4 KiB stay in the file until read: the pixel data is read by frame below.
     if (loadDicomFile(*own, path, 4096).empty()) find(*own);
   }
