@@ -18,7 +18,7 @@ bool everyWorkerCanTakeItsCpu(const bool* allowed, int allowedCount, int online)
 }
 
 void pinCpuWorkersWhereSafe() {
-  static std::once_flag once;
+  static std::once_flag once;  // a function's static: ready for the call below, before main
   std::call_once(once, [] {
 #if defined(__linux__)
     if (std::getenv("POCL_AFFINITY") || std::getenv("POCL_CPU_MAX_CU_COUNT")) return;
@@ -34,5 +34,15 @@ void pinCpuWorkersWhereSafe() {
 #endif
   });
 }
+
+namespace {
+
+// setenv is unsafe while another thread reads the environment: a Qt test's watchdog thread
+// crashed in getenv while a render thread's first OpenCL call set POCL_AFFINITY. Before main
+// no thread of ours runs yet, so the decision is made there; the engine's own call before
+// its first OpenCL call then finds it made.
+[[maybe_unused]] const bool kDecidedBeforeMain = (pinCpuWorkersWhereSafe(), true);
+
+}  // namespace
 
 }  // namespace voxray

@@ -9,8 +9,9 @@ namespace voxray {
 // Asks PoCL to pin its workers (sets POCL_AFFINITY=1) unless the user set POCL_AFFINITY or
 // POCL_CPU_MAX_CU_COUNT, or this process may not run on every online CPU 0..n-1 (a cpuset
 // or taskset), where a worker would ask for a CPU it may not use (upstream PoCL checks that
-// call and may abort; Debian's 3.1 rendered under `taskset -c 1` with it set). Must run before
-// the first OpenCL call; later calls do nothing.
+// call and may abort; Debian's 3.1 rendered under `taskset -c 1` with it set). Runs once,
+// before main (the engine's static initialisation: setenv is only safe while no other
+// thread reads the environment); later calls do nothing.
 void pinCpuWorkersWhereSafe();
 
 // Whether a process allowed on ALLOWED CPUs (a bit per CPU, ALLOWED[i] for CPU i) with

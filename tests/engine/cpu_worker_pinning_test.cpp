@@ -4,12 +4,17 @@
 
 #include <dirent.h>
 #include <sched.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cpu_worker_pinning.h"
 #include "voxray/engine/cl_context.h"
@@ -68,6 +73,54 @@ TEST(CpuWorkerPinning, PoclWorkersRunOnePerCpu) {
   EXPECT_EQ(pinned, expected);
   const char* now = std::getenv("POCL_AFFINITY");
   EXPECT_STREQ(now ? now : "", "1");
+}
+
+// The decision is made before main, not at the engine's first OpenCL call: setenv there
+// raced with other threads' getenv (a Qt test's watchdog crashed in getenv while a render
+// thread made the first context). A fresh process of this binary, started without
+// POCL_AFFINITY, has it set when its one test starts, before anything made a context.
+TEST(CpuWorkerPinning, DecidedBeforeMainInAFreshProcess) {
+  if (std::getenv("VOXRAY_PINNING_CHILD")) {
+    const char* now = std::getenv("POCL_AFFINITY");
+    std::cout << "child POCL_AFFINITY=[" << (now ? now : "") << "]\n";
+    return;
+  }
+  const char* set = std::getenv("POCL_AFFINITY");
+  if ((set && std::string(set) != "1") || std::getenv("POCL_CPU_MAX_CU_COUNT"))
+    GTEST_SKIP() << "POCL_AFFINITY or POCL_CPU_MAX_CU_COUNT set by the user";
+  cpu_set_t mask;
+  CPU_ZERO(&mask);
+  ASSERT_EQ(sched_getaffinity(0, sizeof(mask), &mask), 0);
+  const long online = sysconf(_SC_NPROCESSORS_ONLN);
+  if (CPU_COUNT(&mask) < online) GTEST_SKIP() << "this process is limited to some CPUs: no pinning";
+  std::vector<std::string> env{"VOXRAY_PINNING_CHILD=1"};
+  for (char** e = environ; *e; ++e)
+    if (std::string(*e).rfind("POCL_AFFINITY=", 0) != 0) env.emplace_back(*e);
+  std::vector<char*> envp;
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  std::string exe = "/proc/self/exe",
+              filter = "--gtest_filter=CpuWorkerPinning.DecidedBeforeMainInAFreshProcess";
+  char* argv[] = {exe.data(), filter.data(), nullptr};
+  int out[2];
+  ASSERT_EQ(pipe(out), 0);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addclose(&actions, out[0]);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv, envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  close(out[1]);
+  ASSERT_EQ(spawned, 0);
+  std::string text;
+  char buf[4096];
+  for (ssize_t n; (n = read(out[0], buf, sizeof buf)) > 0;) text.append(buf, size_t(n));
+  close(out[0]);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text;
+  EXPECT_NE(text.find("child POCL_AFFINITY=[1]"), std::string::npos) << text;
 }
 
 }  // namespace
