@@ -18,6 +18,9 @@
 #      iso's frames are short, about 15-20 samples each at 2 ms: 32 frames hold the count's
 #      noise near 5 %), VOXRAY_ARGS (more bench flags for Voxray, e.g. "--adaptive 0.1"; split
 #      at spaces)
+# An AVX2 build on an AVX-512 machine (the kernels PoCL makes for an AVX2-only CPU, here run
+# on this one's cores): POCL_LLVM_CPU_NAME=haswell POCL_KERNELLIB_NAME=avx2 with a
+# POCL_CACHE_DIR of its own, and LANES 8 (README.md, Session 12).
 set -euo pipefail
 how=$1 rounds=$2 sizes=$3 modes=$4
 long=${FRAMES:-8}
