@@ -46,16 +46,21 @@ std::string allowedList(const std::string& task) {
   return {};
 }
 
-TEST(CpuWorkerPinning, PoclWorkersRunOnePerCpu) {
+// Why this process's PoCL workers are not to be pinned, or nothing.
+std::string whyNoPinning() {
   const char* set = std::getenv("POCL_AFFINITY");
   if ((set && std::string(set) != "1") || std::getenv("POCL_CPU_MAX_CU_COUNT"))
-    GTEST_SKIP() << "POCL_AFFINITY or POCL_CPU_MAX_CU_COUNT set by the user";
+    return "POCL_AFFINITY or POCL_CPU_MAX_CU_COUNT set by the user";
   cpu_set_t mask;
   CPU_ZERO(&mask);
-  ASSERT_EQ(sched_getaffinity(0, sizeof(mask), &mask), 0);
   const long online = sysconf(_SC_NPROCESSORS_ONLN);
-  if (online < 2 || CPU_COUNT(&mask) < online)
-    GTEST_SKIP() << "one CPU, or this process is limited to some CPUs: no pinning";
+  if (sched_getaffinity(0, sizeof(mask), &mask) != 0 || online < 2 || CPU_COUNT(&mask) < online)
+    return "one CPU, or this process is limited to some CPUs: no pinning";
+  return {};
+}
+
+TEST(CpuWorkerPinning, PoclWorkersRunOnePerCpu) {
+  if (const std::string why = whyNoPinning(); !why.empty()) GTEST_SKIP() << why;
   ClContext ctx("cpu");
   if (ctx.device().platform != "Portable Computing Language")
     GTEST_SKIP() << "the CPU device is not PoCL's";
@@ -85,14 +90,7 @@ TEST(CpuWorkerPinning, DecidedBeforeMainInAFreshProcess) {
     std::cout << "child POCL_AFFINITY=[" << (now ? now : "") << "]\n";
     return;
   }
-  const char* set = std::getenv("POCL_AFFINITY");
-  if ((set && std::string(set) != "1") || std::getenv("POCL_CPU_MAX_CU_COUNT"))
-    GTEST_SKIP() << "POCL_AFFINITY or POCL_CPU_MAX_CU_COUNT set by the user";
-  cpu_set_t mask;
-  CPU_ZERO(&mask);
-  ASSERT_EQ(sched_getaffinity(0, sizeof(mask), &mask), 0);
-  const long online = sysconf(_SC_NPROCESSORS_ONLN);
-  if (CPU_COUNT(&mask) < online) GTEST_SKIP() << "this process is limited to some CPUs: no pinning";
+  if (const std::string why = whyNoPinning(); !why.empty()) GTEST_SKIP() << why;
   std::vector<std::string> env{"VOXRAY_PINNING_CHILD=1"};
   for (char** e = environ; *e; ++e)
     if (std::string(*e).rfind("POCL_AFFINITY=", 0) != 0) env.emplace_back(*e);
