@@ -4,17 +4,16 @@
 
 #include <dirent.h>
 #include <sched.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <set>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include "cpu_worker_pinning.h"
 #include "voxray/engine/cl_context.h"
@@ -91,32 +90,17 @@ TEST(CpuWorkerPinning, DecidedBeforeMainInAFreshProcess) {
     return;
   }
   if (const std::string why = whyNoPinning(); !why.empty()) GTEST_SKIP() << why;
-  std::vector<std::string> env{"VOXRAY_PINNING_CHILD=1"};
-  for (char** e = environ; *e; ++e)
-    if (std::string(*e).rfind("POCL_AFFINITY=", 0) != 0) env.emplace_back(*e);
-  std::vector<char*> envp;
-  for (auto& e : env) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  std::string exe = "/proc/self/exe",
-              filter = "--gtest_filter=CpuWorkerPinning.DecidedBeforeMainInAFreshProcess";
-  char* argv[] = {exe.data(), filter.data(), nullptr};
-  int out[2];
-  ASSERT_EQ(pipe(out), 0);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
-  posix_spawn_file_actions_addclose(&actions, out[0]);
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv, envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  close(out[1]);
-  ASSERT_EQ(spawned, 0);
+  // As the other tests run commands (popen); `env -u` starts it without POCL_AFFINITY.
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  FILE* child = popen(("env -u POCL_AFFINITY VOXRAY_PINNING_CHILD=1 '" + self +
+                       "' --gtest_filter=CpuWorkerPinning.DecidedBeforeMainInAFreshProcess")
+                          .c_str(),
+                      "r");
+  ASSERT_NE(child, nullptr);
   std::string text;
   char buf[4096];
-  for (ssize_t n; (n = read(out[0], buf, sizeof buf)) > 0;) text.append(buf, size_t(n));
-  close(out[0]);
-  int status = 0;
-  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  for (size_t n; (n = fread(buf, 1, sizeof buf, child)) > 0;) text.append(buf, n);
+  const int status = pclose(child);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text;
   EXPECT_NE(text.find("child POCL_AFFINITY=[1]"), std::string::npos) << text;
 }
