@@ -3,12 +3,14 @@
 // rays and counted samples per second. --seed-table reruns the seed paper's table on the
 // shared data beside its figures; --plot draws fps against resolution. --quality benches
 // the workstation's own frames (a quality preset applied to the view size as the 3D view
-// applies it); --stall replays the frames around the end of a drag (bench_stall.h).
+// applies it); --stall replays the frames around the end of a drag (bench_stall.h), --drag a
+// drag itself with the 3D view's frame-rate controller (bench_drag.h).
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
+#include "bench_drag.h"
 #include "bench_plot.h"
 #include "bench_run.h"
 #include "bench_seed.h"
@@ -18,6 +20,7 @@
 #include "input_options.h"
 #include "quality_choice.h"
 #include "render_flags.h"
+#include "render_state_model.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
@@ -36,6 +39,8 @@ struct BenchOptions {
   std::string orbit = "azimuth";
   std::string quality;   // a resources/quality preset: the workstation's frame at each size
   int stallRepeats = 0;  // --stall: replays of the end of a drag
+  int dragFrames = 0;    // --drag: frames of a replayed drag
+  double dragFps = ui::Quality{}.dragFps;
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
@@ -96,6 +101,13 @@ Run addBenchCommand(CLI::App& app) {
                   "frames, then the --quality frame whole (the old scheduler) and in bands "
                   "(the 3D view's refinement); prints the largest gap between frames shown")
       ->check(CLI::Range(1, 1000));
+  cmd->add_option("--drag", o->dragFrames,
+                  "after each case, replay a drag of this many frames as the 3D view renders "
+                  "it (the drag preset, sized and stepped by its frame-rate controller); "
+                  "prints the settings it chose and the frame times after its first change")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--drag-fps", o->dragFps, "the drag replay's target frame rate (the 3D view's)")
+      ->check(CLI::Range(ui::kDragFpsMin, ui::kDragFpsMax));
   CLI::Option* gradientsOption = nullptr;
   CLI::Option* sizesOption =
       cmd->add_option("--sizes", o->sizes, "comma-separated WxH list (also for --seed-table)");
@@ -187,6 +199,13 @@ Run addBenchCommand(CLI::App& app) {
                   settledFrame(base, ui::kDragQualityPreset, {0, 0}, view, v.minSpacingMm());
               drag.gradient = p.gradient;
               printStallReplay(rc, drag, p, o->run.orbit, o->stallRepeats);
+            }
+            if (o->dragFrames > 0) {
+              RenderParams b = base;
+              b.gradient = p.gradient;
+              printDragReplay(replayDrag(rc, b, view, v.minSpacingMm(), o->run.orbit, o->dragFrames,
+                                         o->dragFps),
+                              o->dragFps);
             }
           }
     };

@@ -9,8 +9,11 @@
 # on a shared machine; on 2 idle cores a frame would take at best about half its CPU time.
 # STALL=N: then N replays of the end of a drag per lane width (bench --stall): the largest
 # gap between frames shown with the sharp frame whole (the old scheduler) and in bands.
+# DRAG=N: then a drag of N frames per lane width as the 3D view renders it (bench --drag:
+# the drag preset sized and stepped by the GUI's frame-rate controller, 20 fps): the
+# setting it settles at and the frame times from its first change on.
 #
-# usage: [STALL=N] docs/bench/ct400-workstation.sh CT400_DIR LANES...   (env: CLI, POCL_CACHE_DIR)
+# usage: [STALL=N] [DRAG=N] docs/bench/ct400-workstation.sh CT400_DIR LANES...   (env: CLI, POCL_CACHE_DIR)
 set -euo pipefail
 dir=$1
 shift
@@ -33,6 +36,10 @@ for l in "$@"; do
   if [ "${STALL:-0}" -gt 0 ]; then
     "$cli" bench "$dir" --mode dvr --preset CT-Bone --quality balanced --sizes 1024x768 --frames 2 \
       --warmup 1 --no-count --lanes "$l" --stall "$STALL" 2>/dev/null | sed -n '/stall replay/,/^device/p' | grep -v '^device'
+  fi
+  if [ "${DRAG:-0}" -gt 0 ]; then
+    "$cli" bench "$dir" --mode dvr --preset CT-Bone --quality balanced --sizes 1024x768 --frames 2 \
+      --warmup 1 --no-count --lanes "$l" --drag "$DRAG" 2>/dev/null | sed -n '/drag replay/,/^device/p' | grep -v '^device'
   fi
 done
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -93,6 +93,26 @@ TEST(AdaptiveQuality, StartsFromTheDragPresetAndPlansDragFramesWithItsSetting) {
   EXPECT_EQ(sharp.width, 1530);  // the setting is for drag frames only
 }
 
+// The scheduler (and bench --drag) read each drag frame's setting back from its size and
+// step; a read-back outside record's 2 % match would make the controller ignore every frame.
+TEST(AdaptiveQuality, DragFramesReadBackAsTheSettingTheyWerePlannedWith) {
+  RenderParams base;
+  Quality q;
+  for (const glm::ivec2 view :
+       {glm::ivec2{1024, 768}, glm::ivec2{1530, 1040}, glm::ivec2{256, 256}})
+    for (const double scale : {0.25, 0.3, 0.337, 0.5, 0.71, 1.0})
+      for (const double step : {2.0, 2.5, 4.0}) {
+        const DragSetting drag{scale, step};
+        const RenderParams p = planFrame(base, q, view, true, 0.7, &drag);
+        const DragSetting back = dragSettingOf(p, view.x, 0.7);
+        EXPECT_NEAR(back.scale, scale, 0.02 * scale) << view.x << " " << scale;
+        EXPECT_NEAR(back.stepVoxels, step, 1e-9) << step;
+        AdaptiveQuality a(20.0, drag);
+        for (int i = 0; i < 12; ++i) a.record(500.0, back);  // 10x too slow: counted, changes
+        EXPECT_EQ(a.changes(), 1) << view.x << " " << scale << " " << step;
+      }
+}
+
 TEST(AdaptiveQuality, TargetFrameRateIsAPreferenceDefaulting20) {
   RenderStateModel m;
   EXPECT_DOUBLE_EQ(m.quality().dragFps, 20.0);

@@ -164,4 +164,9 @@ DragSetting dragPresetSetting() {
   return {q.resolutionScale, q.stepVoxels};
 }
 
+DragSetting dragSettingOf(const RenderParams& frame, int fullWidth, double minSpacingMm) {
+  return {double(frame.width) / std::max(fullWidth, 1),
+          effectiveStepMm(frame, minSpacingMm) / minSpacingMm};
+}
+
 }  // namespace voxray::ui

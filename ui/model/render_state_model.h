@@ -102,5 +102,8 @@ RenderParams planFrame(const RenderParams& base, const Quality& q, const glm::iv
                        bool interactive, double minSpacingMm, const DragSetting* drag = nullptr);
 // The drag preset's own scale and step: where AdaptiveQuality starts.
 DragSetting dragPresetSetting();
+// The setting a drag FRAME (planFrame's) was rendered with, read back from its width (of
+// the full frame's FULLWIDTH) and step, as AdaptiveQuality::record takes it.
+DragSetting dragSettingOf(const RenderParams& frame, int fullWidth, double minSpacingMm);
 
 }  // namespace voxray::ui

@@ -121,8 +121,8 @@ void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
     // The setting this frame was rendered with, read back from its size and step.
     const glm::ivec2 r = state_.quality().resolution;
     const int fullWidth = r.x > 0 ? r.x : viewSize_.width();
-    adaptive_.record(frame->stats.totalMs, {double(frame->params.width) / std::max(fullWidth, 1),
-                                            frame->params.stepMm / doc_.minSpacingMm()});
+    adaptive_.record(frame->stats.totalMs,
+                     dragSettingOf(frame->params, fullWidth, doc_.minSpacingMm()));
   }
   emit frameReady(frame);
   emit statsChanged(fps, frame->stats.totalMs, frame->interactive);
