@@ -18,11 +18,12 @@ struct DragChange {
 };
 
 struct DragReplay {
-  int frames = 0;                  // drag frames rendered, 2-degree steps of the orbit
-  double startMedianMs = 0;        // the drag preset's own frames (before any change)
-  std::vector<DragChange> path;    // the controller's changes, in order
-  std::vector<double> adaptedMs;   // frames after its first change (all, when none)
-  std::vector<int> adaptedWidths;  // their widths
+  std::vector<double> ms;        // each drag frame's time, 2-degree steps of the orbit
+  std::vector<int> widths;       // and its width
+  std::vector<DragChange> path;  // the controller's changes, in order
+  // The first frame rendered with the controller's own setting (0 when it never changed:
+  // then every frame counts as adapted).
+  size_t firstAdapted() const { return path.empty() ? 0 : size_t(path.front().frame) + 1; }
 };
 
 // Renders FRAMES drag frames of BASE in a view of VIEW pixels toward TARGETFPS.

@@ -10,8 +10,8 @@
 # STALL=N: then N replays of the end of a drag per lane width (bench --stall): the largest
 # gap between frames shown with the sharp frame whole (the old scheduler) and in bands.
 # DRAG=N: then a drag of N frames per lane width as the 3D view renders it (bench --drag:
-# the drag preset sized and stepped by the GUI's frame-rate controller, 20 fps): the
-# setting it settles at and the frame times from its first change on.
+# the drag preset sized and stepped by the GUI's frame-rate controller, 20 fps): each
+# setting it chose and the frame times after its first change.
 #
 # usage: [STALL=N] [DRAG=N] docs/bench/ct400-workstation.sh CT400_DIR LANES...   (env: CLI, POCL_CACHE_DIR)
 set -euo pipefail
