@@ -5,12 +5,30 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcuid.h>
 
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <vector>
 
 namespace voxray::test {
+namespace {
+
+// A DICOM multi-valued decimal string (DS): VALUES joined by backslashes, 16 characters
+// at most each.
+template <size_t N>
+std::string decimals(const std::array<double, N>& values) {
+  std::string out;
+  for (double v : values) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    if (!out.empty()) out += '\\';
+    out += buf;
+  }
+  return out;
+}
+
+}  // namespace
 
 void writeTestSlice(const std::string& path, const TestSlice& s) {
   DcmFileFormat file;
@@ -26,13 +44,15 @@ void writeTestSlice(const std::string& path, const TestSlice& s) {
   ds->putAndInsertString(DCM_InstanceNumber, std::to_string(s.instance).c_str());
   ds->putAndInsertString(DCM_SeriesDescription, s.description.c_str());
   ds->putAndInsertString(DCM_PatientName, s.patientName.c_str());
-  ds->putAndInsertString(DCM_ImagePositionPatient, ("0\\0\\" + std::to_string(s.z)).c_str());
-  ds->putAndInsertString(DCM_ImageOrientationPatient, "1\\0\\0\\0\\1\\0");
-  ds->putAndInsertString(DCM_PixelSpacing, "1\\1");
+  const std::array<double, 3> position = s.position.value_or(std::array<double, 3>{0, 0, s.z});
+  ds->putAndInsertString(DCM_ImagePositionPatient, decimals(position).c_str());
+  ds->putAndInsertString(DCM_ImageOrientationPatient, decimals(s.orientation).c_str());
+  ds->putAndInsertString(DCM_PixelSpacing,
+                         decimals(std::array<double, 2>{s.pixelSpacing, s.pixelSpacing}).c_str());
   ds->putAndInsertUint16(DCM_Rows, Uint16(s.size));
   ds->putAndInsertUint16(DCM_Columns, Uint16(s.size));
-  ds->putAndInsertUint16(DCM_SamplesPerPixel, 1);
-  ds->putAndInsertString(DCM_PhotometricInterpretation, "MONOCHROME2");
+  ds->putAndInsertUint16(DCM_SamplesPerPixel, Uint16(s.samplesPerPixel));
+  ds->putAndInsertString(DCM_PhotometricInterpretation, s.photometric.c_str());
   ds->putAndInsertUint16(DCM_BitsAllocated, 16);
   ds->putAndInsertUint16(DCM_BitsStored, Uint16(s.bitsStored));
   ds->putAndInsertUint16(DCM_HighBit, Uint16(s.bitsStored - 1));
@@ -52,7 +72,9 @@ void writeTestSlice(const std::string& path, const TestSlice& s) {
     ds->putAndInsertString(DCM_NumberOfFrames, std::to_string(s.numberOfFrames).c_str());
   std::vector<Uint16> pixels(size_t(s.size) * size_t(s.size));
   for (size_t i = 0; i < pixels.size(); ++i)
-    pixels[i] = s.allWords ? Uint16(i ^ s.wordXor) : Uint16(int16_t(int(i) - 8));
+    pixels[i] = s.allWords ? Uint16(i ^ s.wordXor)
+                : s.pixel  ? Uint16(s.pixel(int(i % size_t(s.size)), int(i / size_t(s.size))))
+                           : Uint16(int16_t(int(i) - 8));
   ds->putAndInsertUint16Array(DCM_PixelData, pixels.data(), unsigned(pixels.size()));
   if (s.trailingPadding) {
     const Uint8 zeros[4] = {};

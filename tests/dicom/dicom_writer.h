@@ -1,7 +1,9 @@
 #pragma once
 // Small DICOM files written by the tests themselves (DCMTK), for the cases the shared data
 // does not have: text in other character sets, hostile structure.
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -15,11 +17,19 @@ struct TestSlice {
   int size = 4;            // Rows = Columns
   int numberOfFrames = 0;  // > 0: NumberOfFrames says this (one frame of pixels is stored)
   double z = 0.0;          // ImagePositionPatient z in mm
+  // When set: the whole ImagePositionPatient, ImageOrientationPatient (row, column
+  // directions), PixelSpacing, and pixel (column, row)'s value; they replace z and i - 8.
+  std::optional<std::array<double, 3>> position;
+  std::array<double, 6> orientation{1, 0, 0, 0, 1, 0};
+  double pixelSpacing = 1.0;
+  std::function<int16_t(int column, int row)> pixel;
   int instance = 1;
   std::string seriesUid = "1.2.826.0.1.3680043.10.1082.1";
   // The stored sample format, and pixel i's word: i - 8 (as int16), or with ALL_WORDS
   // (SIZE 256) word i XOR WORD_XOR, every 16-bit pattern once.
   int bitsStored = 16, pixelRepresentation = 1;
+  int samplesPerPixel = 1;
+  std::string photometric = "MONOCHROME2";
   std::optional<int> padding, paddingLimit;  // PixelPaddingValue / RangeLimit (US or SS)
   bool allWords = false;
   uint16_t wordXor = 0;

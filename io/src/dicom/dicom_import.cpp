@@ -5,6 +5,7 @@
 
 #include <sys/mman.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -351,11 +352,23 @@ StudyIdentity studyIdentity(const FrameHeader& f) {
   id.studyTime = f.studyTime;
   id.studyDescription = f.studyDescription;
   id.accessionNumber = f.accession;
+  id.studyId = f.studyId;
   id.seriesInstanceUid = f.seriesUid;
   id.seriesDescription = f.description;
   id.frameOfReferenceUid = f.frameOfReferenceUid;
   id.seriesNumber = f.seriesNumber;
   return id;
+}
+
+// The resampled grid holds every acquired pixel; what lies beyond the slices is padding.
+std::string paddingNote(size_t padded, size_t total, double air, const std::string& modality) {
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "%.1f %% of the resampled grid lies outside the acquired slices and is filled "
+                "with %s (%g%s)",
+                100.0 * double(padded) / double(total), modality == "CT" ? "air" : "zero", air,
+                modality == "CT" ? " HU" : "");
+  return buf;
 }
 
 std::string sampleTypeName(const FrameHeader& f) {
@@ -419,9 +432,11 @@ Volume importWith(const std::string& input, const LoadOptions& options, ArrivedF
     const double air = airValue(f0.modality);
     auto outside = int16_t(std::clamp(std::lround((air - common.intercept) / common.slope),
                                       long(INT16_MIN), long(INT16_MAX)));
-    VoxelVector resampled = resampleStack(v.voxels, origins, g, outside, options.cancel);
+    Resampled resampled = resampleStack(v.voxels, origins, g, outside, options.cancel);
     throwIfCancelled(options, input);
-    v.voxels = std::move(resampled);
+    v.voxels = std::move(resampled.voxels);
+    if (resampled.padded > 0)
+      g.warnings.push_back(paddingNote(resampled.padded, v.voxels.size(), air, f0.modality));
   }
   v.dims = g.target.dims;
   v.spacingMm = g.target.spacing;

@@ -7,9 +7,8 @@
 
 namespace voxray::dicom {
 
-VoxelVector resampleStack(const VoxelVector& slices, const std::vector<glm::dvec3>& origins,
-                          const StackGeometry& g, int16_t outside,
-                          const std::atomic<bool>* cancel) {
+Resampled resampleStack(const VoxelVector& slices, const std::vector<glm::dvec3>& origins,
+                        const StackGeometry& g, int16_t outside, const std::atomic<bool>* cancel) {
   const Grid& s = g.source;
   const Grid& t = g.target;
   const glm::dvec3 row = s.axes[0], col = s.axes[1], n = s.axes[2];
@@ -17,6 +16,7 @@ VoxelVector resampleStack(const VoxelVector& slices, const std::vector<glm::dvec
   const size_t sliceSize = size_t(nx) * size_t(ny);
   const std::vector<double>& d = g.offsets;  // ascending along n
   VoxelVector out(size_t(t.dims.x) * t.dims.y * t.dims.z, outside);
+  std::vector<size_t> filled(size_t(t.dims.z), 0);  // per target slice: no shared counter
 
   // Bilinear sample of slice K at voxel coordinates (u, v); NaN outside.
   auto sample = [&](int k, double u, double v) -> double {
@@ -36,7 +36,10 @@ VoxelVector resampleStack(const VoxelVector& slices, const std::vector<glm::dvec
   parallelFor(
       size_t(t.dims.z),
       [&](size_t kz) {
-        const double eps = 1e-6 * (d.back() - d.front() + 1.0);
+        // An end slice stands for the slab half a gap beyond its plane, as a pixel stands
+        // for half a pixel beyond its centre: points there take the end slice's values
+        // instead of padding, so the grid's cells around that slice's pixels hold its data.
+        const double before = 0.5 * (d[1] - d[0]), after = 0.5 * (d[nz - 1] - d[nz - 2]);
         for (int j = 0; j < t.dims.y; ++j) {
           int16_t* dst = out.data() + (kz * t.dims.y + size_t(j)) * t.dims.x;
           for (int i = 0; i < t.dims.x; ++i) {
@@ -44,23 +47,32 @@ VoxelVector resampleStack(const VoxelVector& slices, const std::vector<glm::dvec
                            double(j) * t.spacing.y * t.axes[1] +
                            double(kz) * t.spacing.z * t.axes[2];
             double along = glm::dot(x - origins[0], n);
-            if (along < d.front() - eps || along > d.back() + eps) continue;
+            if (along < d.front() - before || along > d.back() + after) continue;
             int b = int(std::upper_bound(d.begin(), d.end(), along) - d.begin());
             b = std::clamp(b, 1, nz - 1);
             int a = b - 1;
             double w = std::clamp((along - d[a]) / (d[b] - d[a]), 0.0, 1.0);
             glm::dvec3 ra = x - origins[a], rb = x - origins[b];
-            double va = sample(a, glm::dot(ra, row) / s.spacing.x, glm::dot(ra, col) / s.spacing.y);
-            double vb = sample(b, glm::dot(rb, row) / s.spacing.x, glm::dot(rb, col) / s.spacing.y);
+            // A slice of no weight gives no value (beyond an end slice, only that slice).
+            double va =
+                w < 1 ? sample(a, glm::dot(ra, row) / s.spacing.x, glm::dot(ra, col) / s.spacing.y)
+                      : NAN;
+            double vb =
+                w > 0 ? sample(b, glm::dot(rb, row) / s.spacing.x, glm::dot(rb, col) / s.spacing.y)
+                      : NAN;
             if (std::isnan(va) && std::isnan(vb)) continue;
             if (std::isnan(va)) va = vb;  // the edge of a sheared slice: nearest data
             if (std::isnan(vb)) vb = va;
             dst[i] = int16_t(std::lround(va * (1 - w) + vb * w));
+            ++filled[kz];
           }
         }
       },
       cancel);
-  return out;
+  size_t inside = 0;
+  for (size_t n : filled) inside += n;
+  const size_t total = out.size();
+  return {std::move(out), total - inside};
 }
 
 }  // namespace voxray::dicom

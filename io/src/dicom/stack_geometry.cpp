@@ -112,11 +112,9 @@ StackGeometry analyseStack(const std::vector<FrameHeader>& frames) {
   glm::dvec3 k = tilted ? glm::normalize(advance - glm::dot(advance, row) * row) : n;
   glm::dvec3 j = glm::normalize(glm::cross(k, row));
   t.axes = glm::dmat3(row, j, k);
-  const double span = glm::dot(frames.back().position - f0.position, k);
-  double dz = (uneven && !onlyMissing) ? g.minGap : g.medianGap;
-  dz = std::max(dz, span / (kMaxSliceGrowth * double(frames.size())));
-  if (tilted) dz = std::abs(span) / std::max(1.0, std::round(std::abs(span) / dz));
-  // In-plane box: every slice corner projected onto the target axes.
+  // The box of every slice corner in the target frame. Along k too: a tilted slice
+  // reaches beyond the table positions of the first and last slice, and clipping the box
+  // to those positions would drop the tissue there.
   glm::dvec3 lo(1e300), hi(-1e300);
   for (auto& f : frames)
     for (int cy : {0, f0.rows - 1})
@@ -127,10 +125,21 @@ StackGeometry analyseStack(const std::vector<FrameHeader>& frames) {
         lo = glm::min(lo, q);
         hi = glm::max(hi, q);
       }
+  const glm::dvec3 extent = hi - lo;
+  double dz = (uneven && !onlyMissing) ? g.minGap : g.medianGap;
+  // The cap on growth is taken over the table positions' range, as before a tilted grid
+  // reached past them: holding every pixel keeps the finer step, not a coarser one.
+  const double span = glm::dot(frames.back().position - f0.position, k);
+  dz = std::max(dz, span / (kMaxSliceGrowth * double(frames.size())));
+  // Whole steps from the first corner to the last: the grid ends on the box's far side.
+  const auto steps = [](double length, double step) {
+    return std::max(1.0, std::ceil(length / step - 1e-6));
+  };
+  dz = extent.z / steps(extent.z, dz);
   t.spacing = {s.spacing.x, s.spacing.y, dz};
-  lo.z = 0.0;
-  hi.z = span;
-  t.dims = glm::ivec3(glm::round((hi - lo) / t.spacing)) + 1;
+  // In-plane, the grid keeps the pixel spacing and may end up to one pixel past the box.
+  t.dims = {int(steps(extent.x, t.spacing.x)) + 1, int(steps(extent.y, t.spacing.y)) + 1,
+            int(steps(extent.z, t.spacing.z)) + 1};
   t.origin = f0.position + lo.x * row + lo.y * j + lo.z * k;
   return g;
 }
