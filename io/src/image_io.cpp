@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
 #include "temporary_file.h"
@@ -39,6 +40,26 @@ void writeTo(const fs::path& file, const std::string& shownPath, const Image& im
   }
 }
 
+// TARGET exists and is no regular file: encode in the temporary folder (by TARGET's
+// extension, PNG without one), then copy the bytes into TARGET as a stream.
+void writeIntoSpecial(const fs::path& target, const std::string& shownPath, const Image& image) {
+  fs::path named = target.filename();
+  if (named.extension().empty()) named += ".png";
+  std::error_code ec;
+  const fs::path encoded = temporaryBeside(fs::temp_directory_path(ec) / named);
+  try {
+    writeTo(encoded, shownPath, image);
+    std::ifstream in(encoded, std::ios::binary);
+    std::ofstream out(target, std::ios::binary);
+    if (!(out << in.rdbuf()) || !out.flush())
+      throw outputError(shownPath + ": cannot write into it (it is not a regular file)");
+  } catch (...) {
+    fs::remove(encoded, ec);
+    throw;
+  }
+  fs::remove(encoded, ec);
+}
+
 }  // namespace
 
 void writeImage(const std::string& path, const Image& image) {
@@ -57,6 +78,13 @@ void writeImage(const std::string& path, const Image& image) {
     throw outputError(path + ": this is a folder; give a file name like render.png");
   }
 
+  // A device or a pipe (/dev/null, a FIFO) stays what it is: the image is encoded aside
+  // and its bytes written into it, never renamed over it.
+  const fs::file_status status = fs::status(target, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    writeIntoSpecial(target, path, image);
+    return;
+  }
   // Readers of `path` see the old image or the new one, never half a file.
   const fs::path temporary = temporaryBeside(target);
   try {

@@ -93,7 +93,8 @@ TEST(DicomText, AFlippedByteInModalityIsReplacedNotFatal) {
 }
 
 TEST(DicomHostile, SequencesNestedTooDeepAreRefused) {
-  for (int depth : {10000, 100000}) {
+  // 257 and 1,000 fit the parser's stack budget (about 1,400 levels) and are counted.
+  for (int depth : {257, 1000, 10000, 100000}) {
     test::TempDir dir;
     const std::string path = dir.file("nested.dcm");
     test::writeTestSlice(path, {});
@@ -107,6 +108,17 @@ TEST(DicomHostile, SequencesNestedTooDeepAreRefused) {
     EXPECT_THAT(m, HasSubstr("nested deeper than Voxray reads (over 256 levels)")) << depth;
     EXPECT_THAT(test::importError(path), HasSubstr("nested deeper than Voxray reads")) << depth;
   }
+}
+
+TEST(DicomHostile, GreyscaleWithThreeSamplesIsInconsistentNotColour) {
+  test::TempDir dir;
+  test::TestSlice s;
+  s.photometric = "MONOCHROME1";
+  s.samplesPerPixel = 3;
+  test::writeTestSlice(dir.file("1.dcm"), s);
+  const std::string m = test::importError(dir.file("1.dcm"));
+  EXPECT_THAT(m, HasSubstr("says MONOCHROME1 (greyscale) but has 3 samples per pixel"));
+  EXPECT_THAT(m, testing::Not(HasSubstr("colour")));
 }
 
 TEST(DicomHostile, NestingUpToTheLimitLoads) {

@@ -3,7 +3,12 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <thread>
 
 #include "test_support.h"
 #include "voxray/io/image.h"
@@ -83,6 +88,28 @@ TEST(ImageIo, UnknownFormatLeavesNothingBehind) {
       [&] { writeImage(dir.file("render.notaformat"), gradient(4, 4)); }, Error::Kind::Output);
   EXPECT_THAT(m, HasSubstr("render.notaformat"));
   EXPECT_EQ(filesIn(dir.path()), 0u);
+}
+
+// A FIFO stays a FIFO and gets the encoded image through it; /dev/null takes one too.
+TEST(ImageIo, DevicesAndPipesAreWrittenIntoNotReplaced) {
+  test::TempDir dir;
+  const std::string fifo = dir.file("pipe.png");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const Image img = gradient(12, 7);
+  std::vector<char> received;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    received.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  });
+  writeImage(fifo, img);
+  reader.join();
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  std::ofstream(dir.file("copy.png"), std::ios::binary)
+      .write(received.data(), std::streamsize(received.size()));
+  EXPECT_EQ(readImage(dir.file("copy.png")).rgba, img.rgba);
+  EXPECT_EQ(filesIn(dir.path()), 2u);  // the FIFO and the copy: nothing left beside them
+  writeImage("/dev/null", img);
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
 }
 
 // Written with OpenImageIO directly: writeImage itself only writes RGBA.

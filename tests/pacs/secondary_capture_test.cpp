@@ -79,6 +79,53 @@ TEST(SecondaryCaptureTest, VoxrayOpensItAsItsLuminanceOneSlicePerFrame) {
   EXPECT_EQ(wrong, 0);
 }
 
+// What it says of FILE: dciodvfy's (Debian dicom3tools) checks of the IOD's modules.
+std::string dciodvfy(const std::string& file) {
+  FILE* p = popen(("dciodvfy " + file + " 2>&1").c_str(), "r");
+  std::string out;
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  pclose(p);
+  return out;
+}
+
+int errorLines(const std::string& report) {
+  int n = 0;
+  for (size_t at = 0; (at = report.find("Error", at)) != std::string::npos; ++at)
+    n += at == 0 || report[at - 1] == '\n';
+  return n;
+}
+
+// An independent validator finds no error in one frame or several. One frame carries no
+// Frame Increment Pointer (Type 1C: only for several frames); the patient's birth date and
+// sex stay empty (the SC copies only what filing needs); the study keeps its Study ID.
+TEST(SecondaryCaptureTest, DciodvfyFindsNoErrorInOneFrameOrTwo) {
+  SecondaryCaptureInfo info;
+  info.study = loadVolume(dicomPath("ct-philips-phantom/S2010")).study;
+  const std::string folder = tempFolder("sc");
+  for (size_t count : {1u, 2u}) {
+    const std::string path = folder + "/shot" + std::to_string(count) + ".dcm";
+    std::vector<Image> shot = frames();
+    shot.resize(count, Image(64, 48));
+    writeSecondaryCapture(path, shot, info);
+    const std::string report = dciodvfy(path);
+    ASSERT_THAT(report, HasSubstr("MultiframeTrueColorSCImage")) << report;
+    EXPECT_EQ(errorLines(report), 0) << count << " frame(s):\n" << report;
+    DcmFileFormat file;
+    ASSERT_TRUE(file.loadFile(path.c_str()).good());
+    DcmDataset* d = file.getDataset();
+    EXPECT_EQ(d->tagExists(DCM_FrameIncrementPointer), count > 1);
+    OFString birth = "x", sex = "x", studyId;
+    d->findAndGetOFString(DCM_PatientBirthDate, birth);
+    d->findAndGetOFString(DCM_PatientSex, sex);
+    d->findAndGetOFString(DCM_StudyID, studyId);
+    EXPECT_EQ(birth, "");
+    EXPECT_EQ(sex, "");
+    EXPECT_EQ(std::string(studyId.c_str()), info.study.studyId);
+    EXPECT_FALSE(info.study.studyId.empty());
+  }
+}
+
 TEST(SecondaryCaptureTest, UnequalFramesAreRefused) {
   std::vector<Image> two = {Image(4, 4), Image(4, 5)};
   EXPECT_THROW(writeSecondaryCapture(tempFolder("sc") + "/x.dcm", two, {}), Error);

@@ -3,6 +3,7 @@
 #include <dcmtk/dcmdata/dcistrmb.h>
 #include <dcmtk/dcmdata/dcistrmf.h>
 
+#include <algorithm>
 #include <exception>
 #include <memory>
 #include <utility>
@@ -97,6 +98,25 @@ DcmInputStreamFactory* SharedBytesStream::newFactory() const {
 // leave them in the file: frame_header.cpp, pixel_decode.cpp).
 constexpr Uint32 kLeaveLongValues = 4096;
 
+// The deepest nesting of sequences in DATASET (a sequence in an item of another: 2).
+// Walked with DCMTK's own stack, not by recursion.
+int sequenceDepth(DcmItem& dataset) {
+  DcmStack stack;
+  int deepest = 0;
+  while (dataset.nextObject(stack, OFTrue).good()) {
+    if (stack.top()->ident() != EVR_SQ) continue;  // counted at sequences only
+    int depth = 0;
+    for (unsigned long i = 0; i < stack.card(); ++i) depth += stack.elem(i)->ident() == EVR_SQ;
+    deepest = std::max(deepest, depth);
+  }
+  return deepest;
+}
+
+std::string tooDeepMessage() {
+  return "its sequences are nested deeper than Voxray reads (over " +
+         std::to_string(kMaxNestingDepth) + " levels)";
+}
+
 template <class Stream>
 std::string readBounded(DcmFileFormat& file, StackBounded<Stream>& stream, Uint32 maxReadLength,
                         const DcmTagKey& stopAt) {
@@ -106,10 +126,10 @@ std::string readBounded(DcmFileFormat& file, StackBounded<Stream>& stream, Uint3
   file.transferInit();
   OFCondition status = file.readUntilTag(stream, EXS_Unknown, EGL_noChange, maxReadLength, stopAt);
   file.transferEnd();
-  if (stream.tooDeep())
-    return "its sequences are nested deeper than Voxray reads (over " +
-           std::to_string(kMaxNestingDepth) + " levels)";
+  if (stream.tooDeep()) return tooDeepMessage();
   if (status.bad()) return status.text();
+  // The stack budget stops far deeper nesting than the limit: the limit itself is counted.
+  if (sequenceDepth(*file.getDataset()) > kMaxNestingDepth) return tooDeepMessage();
   return {};
 }
 

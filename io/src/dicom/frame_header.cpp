@@ -207,6 +207,7 @@ ScanResult headersOf(DcmFileFormat& file, const std::string& failure,
   h.studyTime = str(ds, DCM_StudyTime, text);
   h.studyDescription = str(ds, DCM_StudyDescription, text, true);
   h.accession = str(ds, DCM_AccessionNumber, text);
+  h.studyId = str(ds, DCM_StudyID, text);
   h.frameOfReferenceUid = str(ds, DCM_FrameOfReferenceUID, text);
 
   int frames = std::max(1, intValue(ds, DCM_NumberOfFrames, 1));

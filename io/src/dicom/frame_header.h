@@ -39,7 +39,8 @@ struct FrameHeader {
   std::optional<DisplayWindow> window;           // the first WindowCenter/Width pair
   // Display only; never logged or put in messages.
   std::string patientName, patientId, patientBirthDate;
-  std::string studyUid, studyDate, studyTime, studyDescription, accession, frameOfReferenceUid;
+  std::string studyUid, studyDate, studyTime, studyDescription, studyId, accession,
+      frameOfReferenceUid;
 
   glm::dvec3 normal() const { return glm::normalize(glm::cross(rowDir, colDir)); }
   bool isEnhanced() const { return fileFrames > 1 || perFrameGroups; }

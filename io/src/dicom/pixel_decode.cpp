@@ -359,8 +359,11 @@ bool isLuminanceRgb(const FrameHeader& h) {
 
 std::string unsupportedReason(const FrameHeader& h) {
   if (isLuminanceRgb(h)) return {};
-  if (h.samplesPerPixel != 1 ||
-      (h.photometric != "MONOCHROME1" && h.photometric != "MONOCHROME2" && !h.photometric.empty()))
+  const bool monochrome = h.photometric == "MONOCHROME1" || h.photometric == "MONOCHROME2";
+  if (monochrome && h.samplesPerPixel != 1)
+    return "says " + h.photometric + " (greyscale) but has " + std::to_string(h.samplesPerPixel) +
+           " samples per pixel; the file is inconsistent";
+  if (h.samplesPerPixel != 1 || (!monochrome && !h.photometric.empty()))
     return "is a colour image (" + (h.photometric.empty() ? "RGB" : h.photometric) +
            "); Voxray renders greyscale CT/MR volumes only";
   if (h.bitsAllocated != 8 && h.bitsAllocated != 16)

@@ -56,15 +56,16 @@ std::string writeSecondaryCapture(const std::string& path, const std::vector<Ima
   put(DCM_SpecificCharacterSet, "ISO_IR 192");  // StudyIdentity holds UTF-8
   put(DCM_SOPClassUID, UID_MultiframeTrueColorSecondaryCaptureImageStorage);
   put(DCM_SOPInstanceUID, sopUid);
-  // The patient module is copied from the source on purpose. It is Type 2 in this IOD (present,
-  // may be empty), and a PACS files an instance by patient and study: with an empty or other
-  // Patient ID the SC would not join its study (Orthanc, for one, keys a study by Patient ID
-  // and Study Instance UID, so it would make a second study of the same UID under another
-  // patient). These fields go into this header only: never into file names (the caller
+  // The patient's name and ID are copied from the source on purpose: a PACS files an instance
+  // by patient and study, and with an empty or other Patient ID the SC would not join its
+  // study (Orthanc, for one, keys a study by Patient ID and Study Instance UID, so it would
+  // make a second study of the same UID under another patient). Birth date and sex, Type 2
+  // like them, are left empty alike: filing needs neither, and less patient data leaves the
+  // workstation. These fields go into this header only: never into file names (the caller
   // chooses the path), messages or logs (DCMTK's log is off), nor into the pixels.
   put(DCM_PatientName, s.patientName);
   put(DCM_PatientID, s.patientId);
-  put(DCM_PatientBirthDate, s.patientBirthDate);
+  put(DCM_PatientBirthDate, "");
   put(DCM_PatientSex, "");
   put(DCM_StudyInstanceUID,
       s.studyInstanceUid.empty() ? newUid(SITE_STUDY_UID_ROOT) : s.studyInstanceUid);
@@ -73,11 +74,12 @@ std::string writeSecondaryCapture(const std::string& path, const std::vector<Ima
   put(DCM_StudyDescription, s.studyDescription);
   put(DCM_AccessionNumber, s.accessionNumber);
   put(DCM_ReferringPhysicianName, "");
-  put(DCM_StudyID, "");
+  put(DCM_StudyID, s.studyId);
   put(DCM_Modality, "OT");
   put(DCM_SeriesInstanceUID,
       info.seriesInstanceUid.empty() ? newUid(SITE_SERIES_UID_ROOT) : info.seriesInstanceUid);
   put(DCM_SeriesNumber, "9000");
+  put(DCM_Laterality, "");  // Type 2C: a screenshot may show a paired organ; not known here
   put(DCM_SeriesDescription, info.seriesDescription);
   put(DCM_Manufacturer, "Voxray");
   put(DCM_ConversionType, "WSD");  // workstation
@@ -89,10 +91,12 @@ std::string writeSecondaryCapture(const std::string& path, const std::vector<Ima
   put(DCM_ImageType, "DERIVED\\SECONDARY");
   if (!s.frameOfReferenceUid.empty()) put(DCM_FrameOfReferenceUID, s.frameOfReferenceUid);
   put(DCM_NumberOfFrames, std::to_string(frames.size()));
-  // Frame Increment Pointer (Type 1C for more than one frame): frames follow one another
-  // in time, FrameTime apart.
-  d->putAndInsertTagKey(DCM_FrameIncrementPointer, DCM_FrameTime);
-  put(DCM_FrameTime, "100");
+  // Frame Increment Pointer (Type 1C: only for more than one frame): frames follow one
+  // another in time, FrameTime apart.
+  if (frames.size() > 1) {
+    d->putAndInsertTagKey(DCM_FrameIncrementPointer, DCM_FrameTime);
+    put(DCM_FrameTime, "100");
+  }
   d->putAndInsertUint16(DCM_SamplesPerPixel, 3);
   put(DCM_PhotometricInterpretation, "RGB");
   d->putAndInsertUint16(DCM_PlanarConfiguration, 0);

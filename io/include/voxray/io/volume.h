@@ -31,6 +31,7 @@ struct DisplayWindow {
 struct StudyIdentity {
   std::string patientName, patientId, patientBirthDate;  // identifying
   std::string studyInstanceUid, studyDate, studyTime, studyDescription, accessionNumber;
+  std::string studyId;  // StudyID, the site's short study number
   std::string seriesInstanceUid, seriesDescription, frameOfReferenceUid;
   int seriesNumber = 0;
 };
