@@ -107,8 +107,6 @@ TEST(Measure, TiltedGeSeriesDistanceEqualsDicomPositions) {
   ASSERT_GT(v.voxelCount(), 0U);
   // Pixel (100, 20) of the 3rd file and (400, 300) of the 20th: apart along the rows, along
   // the tilted columns (18.5 degrees out of the axial plane) and across 17 uneven gaps.
-  // (Rows far down a tilted slice fall below the first slice's position, outside the
-  // resampled grid, which spans the slice positions only.)
   const glm::dvec3 pa = dicomPixelMm(dir + "03.dcm", 100, 20);
   const glm::dvec3 pb = dicomPixelMm(dir + "20.dcm", 400, 300);
   ASSERT_TRUE(std::isfinite(pa.x) && std::isfinite(pb.x)) << "dcmdump could not read the files";
@@ -118,6 +116,8 @@ TEST(Measure, TiltedGeSeriesDistanceEqualsDicomPositions) {
   EXPECT_NEAR(distanceMm(v, a, b), glm::length(pb - pa), 1e-6);
   // On the resampled grid the points lie on other voxel rows and slices than in the files.
   EXPECT_GT(std::abs((b - a).z), 1.0);
+  // The last row of the first slice falls 79 mm below its table position: still inside.
+  EXPECT_TRUE(insideVolume(v, patientToVoxel(v, dicomPixelMm(dir + "01.dcm", 256, 511))));
 }
 
 TEST(Measure, RectRoiStatisticsOnKnownValues) {
