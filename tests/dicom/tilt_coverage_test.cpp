@@ -108,52 +108,100 @@ double quantile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, size_t(q * double(v.size())))];
 }
 
-// 16 slices of 48 x 48 pixels (2 mm), the table 3 mm a slice along z, the gantry tilted
-// 20 degrees about x; each pixel holds 2x + 3y + 5z of its LPS position (mm).
+// Slices of 48 x 48 pixels (2 mm), 16 of them, the table 3 mm a slice; each pixel holds
+// 2x + 3y + 5z of its LPS position (mm).
 constexpr int kSize = 48, kSlices = 16;
 constexpr double kPixel = 2.0, kAdvance = 3.0, kTiltDeg = 20.0;
 
 double linearValue(const glm::dvec3& p) { return 2 * p.x + 3 * p.y + 5 * p.z; }
 
-void writeTiltedSeries(const std::string& folder) {
-  const double t = glm::radians(kTiltDeg);
-  const glm::dvec3 row(1, 0, 0), col(0, std::cos(t), -std::sin(t));
-  for (int k = 0; k < kSlices; ++k) {
-    const glm::dvec3 origin(-40.0, -50.0, 10.0 + kAdvance * k);
+// A series of square slices with rows along ROW and columns along COL, slice k at
+// ORIGIN + OFFSETS[k] * ADVANCE, pixels holding linearValue of their LPS position.
+struct Stack {
+  glm::dvec3 row, col, origin, advance;
+  std::vector<double> offsets;
+};
+
+void writeSeries(const std::string& folder, const Stack& st) {
+  for (size_t k = 0; k < st.offsets.size(); ++k) {
+    const glm::dvec3 origin = st.origin + st.offsets[k] * st.advance;
     test::TestSlice s;
     s.size = kSize;
-    s.instance = k + 1;
+    s.instance = int(k) + 1;
     s.position = {origin.x, origin.y, origin.z};
-    s.orientation = {row.x, row.y, row.z, col.x, col.y, col.z};
+    s.orientation = {st.row.x, st.row.y, st.row.z, st.col.x, st.col.y, st.col.z};
     s.pixelSpacing = kPixel;
     s.pixel = [=](int i, int j) {
       return int16_t(
-          std::lround(linearValue(origin + kPixel * (double(i) * row + double(j) * col))));
+          std::lround(linearValue(origin + kPixel * (double(i) * st.row + double(j) * st.col))));
     };
     test::writeTestSlice(folder + "/" + std::to_string(k + 1) + ".dcm", s);
   }
 }
 
+std::vector<double> evenOffsets() {
+  std::vector<double> d;
+  for (int k = 0; k < kSlices; ++k) d.push_back(kAdvance * k);
+  return d;
+}
+
+// Every pixel inside V, and within 1 HU of V there away from the borders: linear values
+// survive bilinear, linear-between-slices and trilinear interpolation exactly; what is
+// left is rounding to whole HU twice (stored pixel, resampled voxel).
+void expectEveryPixelAtItsValue(const Volume& v, const std::string& folder) {
+  const Coverage c = coverage(v, folder, 2, -1e9, 1);
+  EXPECT_EQ(c.pixels, size_t(kSize * kSize * kSlices));
+  EXPECT_EQ(c.outside, 0u);
+  EXPECT_LE(quantile(c.interiorError, 1.0), 1.0);
+  EXPECT_GT(c.interiorError.size(), c.borderError.size());
+}
+
 TEST(DicomTiltCoverage, SyntheticTiltKeepsEveryPixelAtItsValue) {
   test::TempDir dir;
-  writeTiltedSeries(dir.path().string());
+  const double t = glm::radians(kTiltDeg);
+  writeSeries(
+      dir.path().string(),
+      {{1, 0, 0}, {0, std::cos(t), -std::sin(t)}, {-40.0, -50.0, 10.0}, {0, 0, 1}, evenOffsets()});
   Volume v = importDicom(dir.path().string());
   ASSERT_TRUE(test::anyContains(v.warnings, "gantry tilt of 20.0 degrees"));
   // Straightened: axial axes; along z from the lowest pixel row of the first slice
   // (10 - 47 * 2 * sin 20 deg) to the top row of the last (10 + 15 * 3).
   EXPECT_EQ(v.direction, glm::dmat3(1.0));
-  const double low = 10.0 - (kSize - 1) * kPixel * std::sin(glm::radians(kTiltDeg));
+  const double low = 10.0 - (kSize - 1) * kPixel * std::sin(t);
   EXPECT_NEAR(v.originMm.z, low, 1e-6);
   EXPECT_NEAR(v.originMm.z + (v.dims.z - 1) * v.spacingMm.z, 10.0 + kAdvance * (kSlices - 1), 1e-6);
   EXPECT_TRUE(test::anyContains(v.warnings, "outside the acquired slices and is filled with air"));
+  expectEveryPixelAtItsValue(v, dir.path().string());
+}
 
-  const Coverage c = coverage(v, dir.path().string(), 2, -1e9, 1);
-  EXPECT_EQ(c.pixels, size_t(kSize * kSize * kSlices));
-  EXPECT_EQ(c.outside, 0u);
-  // Linear values survive bilinear, linear-between-slices and trilinear interpolation
-  // exactly; what is left is rounding to whole HU twice (stored pixel, resampled voxel).
-  EXPECT_LE(quantile(c.interiorError, 1.0), 1.0);
-  EXPECT_GT(c.interiorError.size(), c.borderError.size());
+// The other resampled stacks: a patient on the side (decubitus: rows along posterior,
+// columns towards the feet) scanned with a tilted gantry, and an oblique stack with uneven
+// gaps and no tilt (resampled along its own normal).
+TEST(DicomTiltCoverage, DecubitusTiltAndUnevenObliqueStacksKeepEveryPixel) {
+  {
+    test::TempDir dir;
+    const double t = glm::radians(12.0);
+    writeSeries(
+        dir.path().string(),
+        {{0, 1, 0}, {std::sin(t), 0, -std::cos(t)}, {30.0, -20.0, 40.0}, {1, 0, 0}, evenOffsets()});
+    Volume v = importDicom(dir.path().string());
+    ASSERT_TRUE(test::anyContains(v.warnings, "gantry tilt of 12.0 degrees"));
+    expectEveryPixelAtItsValue(v, dir.path().string());
+  }
+  {
+    test::TempDir dir;
+    const glm::dvec3 row = glm::normalize(glm::dvec3(1, 0.3, 0));
+    const glm::dvec3 col = glm::normalize(glm::cross(glm::dvec3(0.2, -0.1, 1), row));
+    std::vector<double> offsets = evenOffsets();
+    for (size_t k = 5; k < offsets.size(); ++k) offsets[k] += 1.7;  // one gap of 4.7 mm
+    for (size_t k = 11; k < offsets.size(); ++k) offsets[k] += 0.9;
+    writeSeries(dir.path().string(),
+                {row, col, {-10.0, 5.0, -30.0}, glm::cross(row, col), offsets});
+    Volume v = importDicom(dir.path().string());
+    ASSERT_TRUE(test::anyContains(v.warnings, "uneven slice gaps"));
+    EXPECT_FALSE(test::anyContains(v.warnings, "gantry tilt"));
+    expectEveryPixelAtItsValue(v, dir.path().string());
+  }
 }
 
 // Interpolation makes each value of V a weighted mean of stored pixels near it: the value
