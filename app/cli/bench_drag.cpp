@@ -4,19 +4,9 @@
 #include <cstdio>
 
 #include "render_state_model.h"
+#include "voxray/io/statistics.h"
 
 namespace voxray::cli {
-
-namespace {
-
-// The Q-quantile of MS (nearest rank).
-double quantile(std::vector<double> ms, double q) {
-  if (ms.empty()) return 0.0;
-  std::sort(ms.begin(), ms.end());
-  return ms[std::min(ms.size() - 1, size_t(q * double(ms.size())))];
-}
-
-}  // namespace
 
 DragReplay replayDrag(Raycaster& rc, const RenderParams& base, const glm::ivec2& view,
                       double minSpacingMm, Orbit orbit, int frames, double targetFps) {

@@ -1,5 +1,6 @@
 #include "bench_run.h"
 #include "json_text.h"
+#include "voxray/io/statistics.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -10,16 +11,6 @@
 #include <nlohmann/json.hpp>
 
 namespace voxray::cli {
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-}  // namespace
 
 BenchRow benchCase(Raycaster& rc, RenderParams p, const BenchRun& run) {
   RaycasterOptions opts = rc.options();

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "refine_bands.h"
+#include "voxray/io/statistics.h"
 
 namespace voxray::cli {
 
@@ -21,12 +22,6 @@ double msSince(Clock::time_point t0) {
 // This process's CPU time (all threads: PoCL's too), steadier than wall time on a loaded
 // machine; on 2 idle cores a banded kernel's wall time is about half of it.
 double cpuMs() { return 1e3 * double(std::clock()) / CLOCKS_PER_SEC; }
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // The sharp frame as the worker renders it: about COUNT bands (1: the whole frame).
 std::vector<ui::RowBand> sharpBands(const RenderParams& sharp, int count) {

@@ -11,6 +11,7 @@
 
 #include "json_text.h"
 #include "voxray/io/error.h"
+#include "voxray/io/statistics.h"
 #include "voxray/lab/accuracy.h"
 
 namespace voxray::cli {
@@ -89,10 +90,9 @@ BenchRow benchCinematic(Raycaster& rc, const RenderParams& p, const BenchRun& ru
   r.gradient = "-";
   r.kernel = "path";
   r.pixels = p.width * p.height;
-  std::sort(ms.begin(), ms.end());
-  r.medianMs = ms[ms.size() / 2];
-  r.minMs = ms.front();
-  r.maxMs = ms.back();
+  r.medianMs = median(ms);
+  r.minMs = ms.empty() ? 0.0 : *std::min_element(ms.begin(), ms.end());
+  r.maxMs = ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end());
   r.fps = 1000.0 / r.medianMs;  // samples per pixel per second
   r.kernelMs = r.medianMs;
   r.raysPerS = r.pixels / (r.medianMs * 1e-3);

@@ -15,6 +15,7 @@
 #include "../io/test_support.h"
 #include "dicom_writer.h"
 #include "test_data.h"
+#include "voxray/io/statistics.h"
 
 namespace voxray {
 namespace {
@@ -100,12 +101,6 @@ Coverage coverage(const Volume& v, const std::string& folder, int edge, double t
       }
   }
   return out;
-}
-
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, size_t(q * double(v.size())))];
 }
 
 // Slices of 48 x 48 pixels (2 mm), 16 of them, the table 3 mm a slice; each pixel holds

@@ -23,8 +23,10 @@
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/load.h"
 #include "voxray/io/pacs_cache.h"
+#include "voxray/io/statistics.h"
 
 namespace fs = std::filesystem;
+using voxray::median;
 using voxray::test::OrthancServer;
 
 namespace {
@@ -53,11 +55,6 @@ double seconds(const std::function<void()>& f) {
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   lastCpu = cpuSeconds() - cpu0;
   return wall;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 uint64_t folderBytes(const std::string& folder) {

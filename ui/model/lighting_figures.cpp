@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "voxray/io/error.h"
+#include "voxray/io/statistics.h"
 
 namespace voxray {
 const std::map<std::string, std::string_view>& embeddedLightingFigures();
@@ -42,12 +43,6 @@ std::string fmt(const char* f, double a) {
 std::string ms(double v) { return fmt(v < 10.0 ? "%.1f ms" : "%.0f ms", v); }
 
 std::string size(int w, int h) { return std::to_string(w) + "\u00d7" + std::to_string(h); }
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
 
 std::string costText(Lighting l, double frameMs, double precomputeMs) {
   std::string s = ms(frameMs) + (l == Lighting::Cinematic ? " per pass" : "");

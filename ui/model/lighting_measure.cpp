@@ -9,18 +9,13 @@
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/reference_renderer.h"
 #include "voxray/io/error.h"
+#include "voxray/io/statistics.h"
 #include "voxray/lab/accuracy.h"
 #include "voxray/lab/accuracy_sweep.h"
 
 namespace voxray::ui {
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
 
 void check(const std::atomic<bool>* cancel) {
   if (cancel && cancel->load()) throw cancelledError("lighting measurement cancelled");

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "voxray/io/error.h"
+#include "voxray/io/statistics.h"
 #include "voxray/lab/accuracy.h"
 
 namespace voxray {
@@ -100,13 +101,12 @@ ErrorStats summarize(std::vector<double> values) {
   ErrorStats s;
   s.count = int(values.size());
   if (values.empty()) return s;
-  std::sort(values.begin(), values.end());
   double sum = 0.0;
   for (double v : values) sum += v;
   s.mean = sum / double(values.size());
-  s.median = values[values.size() / 2];
-  s.p95 = values[std::min(values.size() - 1, size_t(0.95 * double(values.size())))];
-  s.max = values.back();
+  s.median = quantile(values, 0.5);  // the upper middle value: one of the errors
+  s.p95 = quantile(values, 0.95);
+  s.max = *std::max_element(values.begin(), values.end());
   return s;
 }
 

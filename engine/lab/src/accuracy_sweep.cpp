@@ -8,17 +8,12 @@
 #include "voxray/engine/kernel_variant.h"
 #include "voxray/engine/monte_carlo_reference.h"
 #include "voxray/engine/raycaster.h"
+#include "voxray/io/statistics.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
 
 struct Fine {
   FloatImage image;

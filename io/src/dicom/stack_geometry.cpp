@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "voxray/io/error.h"
+#include "voxray/io/statistics.h"
 
 namespace voxray::dicom {
 namespace {
@@ -20,11 +21,6 @@ std::string mm(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2f mm", v);
   return buf;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 // The slice spacing when the stack has no usable positions.
@@ -69,7 +65,7 @@ StackGeometry analyseStack(const std::vector<FrameHeader>& frames) {
     gaps.push_back(glm::dot(frames[k].position - frames[k - 1].position, advance));
   g.minGap = *std::min_element(gaps.begin(), gaps.end());
   g.maxGap = *std::max_element(gaps.begin(), gaps.end());
-  g.medianGap = median(gaps);
+  g.medianGap = quantile(gaps, 0.5);  // one of the gaps, not a mean of two
   if (g.minGap <= 1e-3)
     throw inputError("two slices of series " + std::to_string(f0.seriesNumber) +
                      " lie at the same position; they cannot form one volume");
