@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # VTK's vtkFixedPointVolumeRayCastMapper against Voxray's packets on the 512x512x400 CT (issue 16),
 # same voxels (ct400-raw.py), same orbit (VTK's: bench --orbit elevation --zoom 1.37), VTK's
-# transfer function for dvr (README.md, "Against VTK's CPU ray caster"), 2 threads each.
+# transfer function for dvr (history/sessions-01-04.md, "Against VTK's CPU ray caster"), 2 threads each.
 # Two measures per case:
 #  - wall: rounds of VTK then Voxray, medians of ms per frame (this machine's speed drifts:
 #    compare only within a round);
@@ -20,7 +20,7 @@
 #      at spaces)
 # An AVX2 build on an AVX-512 machine (the kernels PoCL makes for an AVX2-only CPU, here run
 # on this one's cores): POCL_LLVM_CPU_NAME=haswell POCL_KERNELLIB_NAME=avx2 with a
-# POCL_CACHE_DIR of its own, and LANES 8 (README.md, Session 12).
+# POCL_CACHE_DIR of its own, and LANES 8 (history/sessions-12-14.md, Session 12).
 set -euo pipefail
 how=$1 rounds=$2 sizes=$3 modes=$4
 long=${FRAMES:-8}
