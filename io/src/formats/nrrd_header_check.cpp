@@ -9,7 +9,7 @@
 #include <regex>
 #include <sstream>
 
-#include "../file_kind.h"
+#include "sample_grid.h"
 #include "voxray/io/error.h"
 
 namespace fs = std::filesystem;
@@ -134,20 +134,7 @@ void placeFiles(NrrdDataFiles& d, const fs::path& folder, const std::string& pat
     const std::string& lead = d.format.empty() ? name : d.format;  // what Teem looks at
     const bool asGiven = !lead.empty() && (lead[0] == '/' || (lead.size() > 1 && lead[1] == ':'));
     const std::string candidate = asGiven ? name : (folder / name).string();
-    const std::string where = path + ": its data file '" + name + "'";
-    switch (detail::placeInFolder(folder.string(), candidate, &f.resolved)) {
-      case detail::Placement::Inside:
-        break;
-      case detail::Placement::Missing:
-        throw inputError(where + " is missing; keep the .nhdr and its data files in one folder");
-      case detail::Placement::Outside:
-        throw inputError(where +
-                         " lies outside the header's folder (after links are followed); "
-                         "Voxray reads only data files in the header's folder: move them there");
-      case detail::Placement::NotRegular:
-        throw inputError(where + " is not a regular file (a folder, FIFO or device); the " +
-                         "header is damaged");
-    }
+    f.resolved = dataFileInFolder(path, name, candidate);
   }
 }
 
