@@ -17,8 +17,9 @@ namespace fs = std::filesystem;
 namespace voxray::formats {
 namespace {
 
-// The file's first kMaxNrrdHeaderBytes + 1 bytes split into lines as Teem's airOneLine splits
-// them (at "\n", "\r" or "\r\n"); WHOLE: the file ended within them.
+// The file's first kMaxNrrdHeaderBytes + 1 bytes split into lines at "\n" or "\r\n"; WHOLE:
+// the file ended within them. A lone "\r" stays in its line, where checkText refuses it
+// (Teem's reader may end a line there: the two would see different fields).
 struct Text {
   std::vector<std::string> lines;
   bool whole = false;
@@ -32,12 +33,8 @@ Text readLines(const std::string& path) {
   Text t;
   t.whole = bytes.size() <= kMaxNrrdHeaderBytes;
   size_t start = 0;
-  for (size_t i = 0; i < bytes.size(); ++i) {
-    if (bytes[i] != '\n' && bytes[i] != '\r') continue;
-    t.lines.push_back(bytes.substr(start, i - start));
-    if (bytes[i] == '\r' && i + 1 < bytes.size() && bytes[i + 1] == '\n') ++i;
-    start = i + 1;
-  }
+  for (size_t end; (end = bytes.find('\n', start)) != std::string::npos; start = end + 1)
+    t.lines.push_back(bytes.substr(start, end - start - (end > start && bytes[end - 1] == '\r')));
   if (start < bytes.size()) t.lines.push_back(bytes.substr(start));
   return t;
 }
