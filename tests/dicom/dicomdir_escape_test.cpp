@@ -2,7 +2,7 @@
 // with an empty first component or "..", or a link (to a file or a folder) inside the folder
 // must not load a file from elsewhere. The study here: three slices (z 0, 1, 2 mm) beside the
 // DICOMDIR, and a fourth slice of the same series (z 3 mm) outside its folder.
-#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -15,7 +15,6 @@ namespace voxray {
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 
 struct Study {
   test::TempDir dir;
