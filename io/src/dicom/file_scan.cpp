@@ -61,7 +61,9 @@ bool readDicomDir(const fs::path& path, DicomDirEntries& entries) {
   const fs::path folder = fs::absolute(path).parent_path();
   for (unsigned long i = 0; i < records->card(); ++i) {
     OFString id;
-    if (records->getItem(i)->findAndGetOFStringArray(DCM_ReferencedFileID, id).bad()) continue;
+    // Records of patients, studies and series reference no file (no or an empty ID).
+    if (records->getItem(i)->findAndGetOFStringArray(DCM_ReferencedFileID, id).bad() || id.empty())
+      continue;
     std::string rel(id.c_str());
     std::replace(rel.begin(), rel.end(), '\\', '/');
     std::string resolved;
