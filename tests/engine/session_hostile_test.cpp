@@ -54,6 +54,21 @@ TEST(SessionHostile, AnObjectOfAbsurdlyManyFieldsIsRefusedQuickly) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
+// Objects of up to 1000 fields each, but many: 2,000 such objects took 10 s.
+TEST(SessionHostile, AbsurdlyManyFieldsInAllAreRefused) {
+  std::string text = sessionToJson(Session{}, "s.json");
+  std::string many;
+  for (int o = 0; o < 150; ++o) {
+    many += o ? ", {" : "{";
+    for (int k = 0; k < 1000; ++k) many += (k ? ", \"k" : "\"k") + std::to_string(k) + "\": 0";
+    many += "}";
+  }
+  text.replace(text.find("\"measurements\": []"), 18, "\"measurements\": [" + many + "]");
+  EXPECT_EQ(readError(text),
+            "session s.json: it holds more than 100000 fields in all; not a Voxray session (or a "
+            "damaged one)");
+}
+
 TEST(SessionHostile, ManyUnknownFieldsAreListedBriefly) {
   const SessionRead read = sessionFromJson(withUnknownRenderFields(900), "s.json");
   ASSERT_EQ(read.warnings.size(), 21u);
