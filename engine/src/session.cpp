@@ -22,6 +22,20 @@ namespace fs = std::filesystem;
 constexpr const char* kVersionKey = "voxray-session";
 constexpr std::array<const char*, 3> kViewNames = {"axial", "coronal", "sagittal"};
 constexpr int kMaxDepth = 256;
+// A session object holds tens of fields; an object with more is not one, and reading it would
+// not end soon (ordered_json compares each key with every earlier one of its object: 300,000
+// keys took minutes, 2,000 objects of 1,000 keys 10 s). Unknown fields are listed up to
+// kListedUnknown lines.
+constexpr size_t kMaxFields = 1000, kMaxFieldsInAll = 100000;
+constexpr size_t kListedUnknown = 20;
+
+// TEXT as a message may show it: bytes that are not UTF-8 become U+FFFD and control
+// characters \u escapes (the JSON library's own string escaping), so a hostile file puts no
+// raw bytes or terminal escapes into an error.
+std::string shown(const std::string& text) {
+  const std::string quoted = Json(text).dump(-1, ' ', false, Json::error_handler_t::replace);
+  return quoted.substr(1, quoted.size() - 2);
+}
 
 // Reads one session's JSON, naming the file and the field in every error, and collecting
 // the warnings about fields it ignores or misses.
@@ -30,7 +44,7 @@ class Reader {
   explicit Reader(std::string sessionPath) : path_(std::move(sessionPath)) {}
 
   [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-    throw inputError("session " + path_ + ": field '" + field + "' " + what);
+    throw inputError("session " + path_ + ": field '" + shown(field) + "' " + shown(what));
   }
 
   // OBJ's KEY (FIELD names it); a missing one is an error.
@@ -85,12 +99,24 @@ class Reader {
                    const std::vector<std::string>& known) {
     for (const auto& item : obj.items())
       if (std::find(known.begin(), known.end(), item.key()) == known.end())
-        warnings.push_back("unknown field '" + parent + item.key() + "' ignored");
+        unknown(parent + item.key());
+  }
+  void unknown(const std::string& field) {
+    if (++unknown_ <= kListedUnknown)
+      warnings.push_back("unknown field '" + shown(field) + "' ignored");
+  }
+  // The warnings, with a line for the unknown fields beyond those listed.
+  std::vector<std::string> allWarnings() {
+    if (unknown_ > kListedUnknown)
+      warnings.push_back("and " + std::to_string(unknown_ - kListedUnknown) +
+                         " more unknown fields ignored");
+    return std::move(warnings);
   }
 
   std::vector<std::string> warnings;
 
  private:
+  size_t unknown_ = 0;
   std::string path_;
 };
 
@@ -137,7 +163,7 @@ void readInput(Reader& r, const Json& root, const std::string& sessionPath, Sess
       try {
         findInputFlagSpec(item.key());
       } catch (const Error&) {
-        r.warnings.push_back("unknown field '" + field + "' ignored");
+        r.unknown(field);
         continue;
       }
       out.session.input.flags[item.key()] = r.valueText(item.value(), field);
@@ -282,16 +308,28 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
 
 SessionRead sessionFromJson(const std::string& text, const std::string& sessionPath) {
   Json root;
+  std::vector<size_t> fields;  // of each object being read, outermost first
+  size_t fieldsInAll = 0;
   try {
     // Writing measurements back recurses once per level: a hostile nesting stops here.
-    root = Json::parse(text, [&](int depth, Json::parse_event_t, Json&) {
+    root = Json::parse(text, [&](int depth, Json::parse_event_t event, Json&) {
       if (depth > kMaxDepth)
         throw inputError("session " + sessionPath + ": nested deeper than " +
                          std::to_string(kMaxDepth) + " levels; not a Voxray session");
+      if (event == Json::parse_event_t::object_start) fields.push_back(0);
+      if (event == Json::parse_event_t::object_end) fields.pop_back();
+      if (event == Json::parse_event_t::key && ++fields.back() > kMaxFields)
+        throw inputError("session " + sessionPath + ": an object holds more than " +
+                         std::to_string(kMaxFields) +
+                         " fields; not a Voxray session (or a damaged one)");
+      if (event == Json::parse_event_t::key && ++fieldsInAll > kMaxFieldsInAll)
+        throw inputError("session " + sessionPath + ": it holds more than " +
+                         std::to_string(kMaxFieldsInAll) +
+                         " fields in all; not a Voxray session (or a damaged one)");
       return true;
     });
   } catch (const Json::exception& e) {
-    throw inputError("session " + sessionPath + ": not a JSON file (" + e.what() +
+    throw inputError("session " + sessionPath + ": not a JSON file (" + shown(e.what()) +
                      "); choose a session saved by Voxray");
   }
   if (!root.is_object())
@@ -354,7 +392,7 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
     if (!root.at("measurements").is_array()) r.fail("measurements", "must be an array [ ... ]");
     s.measurements = root.at("measurements").dump();
   }
-  out.warnings = std::move(r.warnings);
+  out.warnings = r.allWarnings();
   return out;
 }
 

@@ -31,4 +31,20 @@ void refuseSpecialFile(const std::string& path) {
                    ", not a regular file or folder; save the data to a file and open that");
 }
 
+Placement placeInFolder(const std::string& folder, const std::string& candidate,
+                        std::string* resolved) {
+  std::error_code ec;
+  const fs::path file = fs::canonical(candidate, ec);
+  if (ec) return Placement::Missing;
+  if (resolved) *resolved = file.string();
+  const fs::path root = fs::canonical(folder, ec);
+  if (ec) return Placement::Missing;
+  // Component by component: "/data/ab" is not inside "/data/a".
+  auto r = root.begin(), f = file.begin();
+  for (; r != root.end() && !r->empty(); ++r, ++f)
+    if (f == file.end() || *f != *r) return Placement::Outside;
+  if (f == file.end()) return Placement::NotRegular;  // the folder itself
+  return fs::is_regular_file(file, ec) ? Placement::Inside : Placement::NotRegular;
+}
+
 }  // namespace voxray::detail

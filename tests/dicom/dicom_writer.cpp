@@ -3,6 +3,7 @@
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcmetinf.h>
 #include <dcmtk/dcmdata/dcuid.h>
 
 #include <cstdio>
@@ -84,6 +85,27 @@ void writeTestSlice(const std::string& path, const TestSlice& s) {
                                 : s.implicitVr ? EXS_LittleEndianImplicit
                                                : EXS_LittleEndianExplicit;
   if (file.saveFile(path.c_str(), xfer).bad()) throw std::runtime_error("cannot write " + path);
+}
+
+void writeDicomDir(const std::string& path, const std::vector<std::string>& referencedFileIds) {
+  DcmFileFormat file;
+  DcmMetaInfo* meta = file.getMetaInfo();
+  meta->putAndInsertString(DCM_MediaStorageSOPClassUID, UID_MediaStorageDirectoryStorage);
+  meta->putAndInsertString(DCM_MediaStorageSOPInstanceUID, "1.2.826.0.1.3680043.10.1082.9");
+  DcmDataset* ds = file.getDataset();
+  ds->putAndInsertString(DCM_FileSetID, "TEST");
+  for (size_t i = 0; i < referencedFileIds.size(); ++i) {
+    DcmItem* record = nullptr;
+    ds->findOrCreateSequenceItem(DCM_DirectoryRecordSequence, record, -2);
+    if (!record) throw std::runtime_error("DCMTK: cannot add a directory record");
+    record->putAndInsertString(DCM_DirectoryRecordType, "IMAGE");
+    record->putAndInsertString(DCM_ReferencedFileID, referencedFileIds[i].c_str());
+  }
+  // EWM_fileformat: DCMTK fills in what the meta header lacks and keeps the SOP class given.
+  if (file.saveFile(path.c_str(), EXS_LittleEndianExplicit, EET_UndefinedLength, EGL_recalcGL,
+                    EPD_noChange, 0, 0, EWM_fileformat)
+          .bad())
+    throw std::runtime_error("DCMTK cannot write " + path);
 }
 
 void setPixelDataLength(const std::string& path, uint32_t length) {

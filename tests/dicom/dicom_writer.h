@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace voxray::test {
 
@@ -45,6 +46,11 @@ void writeTestSlice(const std::string& path, const TestSlice& slice);
 // Rewrites PATH with sequences nested DEPTH deep (each an undefined-length
 // ReferencedImageSequence holding one item) at the start of its dataset, closed properly.
 void nestSequences(const std::string& path, int depth);
+
+// A DICOMDIR (Media Storage Directory) at PATH with one IMAGE record per REFERENCED_FILE_IDS
+// entry, each written as given ("IMG\\1.dcm"): hostile ones too, which DCMTK's own DICOMDIR
+// builder would refuse. Throws std::runtime_error when DCMTK cannot write it.
+void writeDicomDir(const std::string& path, const std::vector<std::string>& referencedFileIds);
 
 // Rewrites the length field of PixelData in PATH (written by writeTestSlice) to LENGTH.
 void setPixelDataLength(const std::string& path, uint32_t length);

@@ -21,20 +21,34 @@ namespace fs = std::filesystem;
 namespace voxray::dicom {
 namespace {
 
-std::vector<std::string> filesUnder(const fs::path& dir) {
+// FOLDER's files, sorted. LINKED_INSIDE: only those that stay in FOLDER once links are
+// resolved (a DICOMDIR's folder: a link in it must not reach a file elsewhere).
+std::vector<std::string> filesUnder(const fs::path& dir, bool linkedInside = false) {
   std::vector<std::string> out;
   std::error_code ec;
   auto options = fs::directory_options::skip_permission_denied;
   for (fs::recursive_directory_iterator it(dir, options, ec), end; !ec && it != end;
        it.increment(ec)) {
-    if (it->is_regular_file(ec)) out.push_back(it->path().string());
+    if (!it->is_regular_file(ec)) continue;
+    if (linkedInside && it->is_symlink(ec) &&
+        detail::placeInFolder(dir.string(), it->path().string()) != detail::Placement::Inside)
+      continue;
+    out.push_back(it->path().string());
   }
   std::sort(out.begin(), out.end());
   return out;
 }
 
-// Referenced files of a DICOMDIR; empty when PATH is not a DICOMDIR.
-bool readDicomDir(const fs::path& path, std::vector<std::string>& files, int& missing) {
+struct DicomDirEntries {
+  std::vector<std::string> files;  // regular files in the DICOMDIR's folder, links resolved
+  int missing = 0;                 // entries that name nothing
+  int refused = 0;                 // entries outside the folder, or not regular files
+};
+
+// Referenced files of a DICOMDIR; false when PATH is not a DICOMDIR. A ReferencedFileID is
+// relative to the DICOMDIR's folder (PS3.10): one that leaves it (an absolute path, an empty
+// first component, "..", a link to a file or folder elsewhere) is not read.
+bool readDicomDir(const fs::path& path, DicomDirEntries& entries) {
   DcmFileFormat file;
   // Stops at PixelData: an image given as INPUT is not read twice in full.
   if (!loadDicomFile(file, path.string(), DCM_MaxReadLength, DCM_PixelData).empty()) return false;
@@ -44,17 +58,27 @@ bool readDicomDir(const fs::path& path, std::vector<std::string>& files, int& mi
   DcmSequenceOfItems* records = nullptr;
   if (file.getDataset()->findAndGetSequence(DCM_DirectoryRecordSequence, records).bad() || !records)
     return true;
+  const fs::path folder = fs::absolute(path).parent_path();
   for (unsigned long i = 0; i < records->card(); ++i) {
     OFString id;
-    if (records->getItem(i)->findAndGetOFStringArray(DCM_ReferencedFileID, id).bad()) continue;
+    // Records of patients, studies and series reference no file (no or an empty ID).
+    if (records->getItem(i)->findAndGetOFStringArray(DCM_ReferencedFileID, id).bad() || id.empty())
+      continue;
     std::string rel(id.c_str());
     std::replace(rel.begin(), rel.end(), '\\', '/');
-    fs::path full = path.parent_path() / rel;
-    std::error_code ec;
-    if (fs::is_regular_file(full, ec))
-      files.push_back(full.string());
-    else
-      ++missing;
+    std::string resolved;
+    switch (detail::placeInFolder(folder.string(), (folder / rel).string(), &resolved)) {
+      case detail::Placement::Inside:
+        entries.files.push_back(resolved);
+        break;
+      case detail::Placement::Missing:
+        ++entries.missing;
+        break;
+      case detail::Placement::Outside:
+      case detail::Placement::NotRegular:
+        ++entries.refused;
+        break;
+    }
   }
   return true;
 }
@@ -75,18 +99,22 @@ InputFiles collectInputFiles(const std::string& input) {
                        "study or one of its files.");
     return result;
   }
-  std::vector<std::string> listed;
-  int missing = 0;
-  if (readDicomDir(path, listed, missing)) {
-    if (!listed.empty() && missing == 0) {
-      std::sort(listed.begin(), listed.end());
-      result.files = std::move(listed);
+  DicomDirEntries entries;
+  if (readDicomDir(path, entries)) {
+    if (entries.refused > 0)
+      result.notes.push_back("the DICOMDIR names " + std::to_string(entries.refused) +
+                             " file(s) outside its folder or that are not regular files "
+                             "(absolute paths, '..' or links); they were not read");
+    if (!entries.files.empty() && entries.missing == 0) {
+      std::sort(entries.files.begin(), entries.files.end());
+      result.files = std::move(entries.files);
       return result;
     }
     // A DICOMDIR whose entries are gone: the files beside it are the study.
-    result.notes.push_back("the DICOMDIR lists " + std::to_string(missing) +
-                           " file(s) that do not exist; searched its folder instead");
-    result.files = filesUnder(path.parent_path());
+    if (entries.missing > 0 || entries.refused == 0)
+      result.notes.push_back("the DICOMDIR lists " + std::to_string(entries.missing) +
+                             " file(s) that do not exist; searched its folder instead");
+    result.files = filesUnder(fs::absolute(path).parent_path(), true);
     return result;
   }
   result.files = {path.string()};

@@ -26,6 +26,7 @@ add_library(voxray_io_formats OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/metaimage_read.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nifti_header_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nifti_read.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/nrrd_header_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nrrd_read.cpp
   ${CMAKE_CURRENT_LIST_DIR}/volume_file.cpp)
 target_include_directories(voxray_io_formats PRIVATE include)

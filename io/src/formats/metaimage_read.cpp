@@ -49,11 +49,13 @@ void checkAnatomicalOrientation(SampleGrid& g, const MetaImage& image) {
                          "); the TransformMatrix is used, as ITK and 3D Slicer do");
 }
 
-// True when NAME is a file beside the header (or a path that exists as given).
-bool dataFileExists(const std::string& path, const std::string& name) {
-  std::error_code ec;
-  return std::filesystem::is_regular_file(name, ec) ||
-         std::filesystem::is_regular_file(std::filesystem::path(path).parent_path() / name, ec);
+// NAME (a detached data file) where MetaIO opens it: relative names in the header's folder,
+// full paths as given. It must be a regular file in the header's folder (dataFileInFolder).
+void checkInFolder(const std::string& path, const std::string& name) {
+  const std::filesystem::path file(name);
+  dataFileInFolder(
+      path, name,
+      file.is_absolute() ? name : (std::filesystem::absolute(path).parent_path() / file).string());
 }
 
 // "NAME%03d.raw MIN MAX STEP": MetaIO formats NAME with the file's own text as a printf
@@ -72,9 +74,7 @@ void checkPattern(const std::string& path, const std::string& data) {
   char name[4096];
   for (long k = first; k <= last; k += step) {
     std::snprintf(name, sizeof name, pattern.c_str(), int(k));
-    if (!dataFileExists(path, name))
-      throw inputError(path + ": its data file " + name +
-                       " is missing; keep the .mhd and its data files in one folder");
+    checkInFolder(path, name);
   }
 }
 
@@ -89,15 +89,14 @@ void checkList(const std::string& path) {
       continue;
     }
     const size_t a = line.find_first_not_of(" \t\r"), b = line.find_last_not_of(" \t\r");
-    if (a != std::string::npos && !dataFileExists(path, line.substr(a, b - a + 1)))
-      throw inputError(path + ": its listed data file " + line.substr(a, b - a + 1) +
-                       " is missing; keep the .mhd and its data files in one folder");
+    if (a != std::string::npos) checkInFolder(path, line.substr(a, b - a + 1));
   }
 }
 
 // A detached data file that is not there: said plainly before MetaIO tries it (MetaIO's own
 // failure there is vague and leaks the stream it opened, for single files, patterns and lists
-// alike; libFuzzer's leak check found the pattern case).
+// alike; libFuzzer's leak check found the pattern case). One outside the header's folder, or
+// no regular file, is not read either (issue 39: /etc/passwd as voxels).
 void checkDataFile(const std::string& path, const MetaImage& image) {
   const std::string data = image.ElementDataFileName();
   if (data.empty() || data == "LOCAL" || data == "Local" || data == "local") return;
@@ -118,9 +117,7 @@ void checkDataFile(const std::string& path, const MetaImage& image) {
     return checkList(path);
   }
   if (data.find(' ') != std::string::npos) return checkPattern(path, data);
-  if (!dataFileExists(path, data))
-    throw inputError(path + ": its data file " + data +
-                     " is missing; keep the .mhd and its data file in one folder");
+  checkInFolder(path, data);
 }
 
 // MetaIO copies each header field's name into a 255-byte array with strcpy (an abort under

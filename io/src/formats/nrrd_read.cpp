@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
+#include "nrrd_header_check.h"
 #include "voxray/io/error.h"
 
 namespace voxray::formats {
@@ -132,6 +134,18 @@ bool hasNrrdMagic(const std::string& path) {
          (magic[8] == '\n' || (magic[8] == '\r' && magic[9] == '\n'));
 }
 
+// Teem read the data-file field as checkNrrdHeader did (the same files, or the same pattern):
+// anything else would open files that were not checked.
+bool sameDataFiles(const NrrdDataFiles& d, const NrrdIoState& io) {
+  if (io.dataFNFormat)
+    return d.format == io.dataFNFormat && d.first == io.dataFNMin && d.last == io.dataFNMax &&
+           d.step == io.dataFNStep;
+  if (!d.format.empty() || d.names.size() != io.dataFNArr->len) return false;
+  for (size_t i = 0; i < d.names.size(); ++i)
+    if (d.names[i] != io.dataFN[i]) return false;
+  return true;
+}
+
 }  // namespace
 
 SampleGrid readNrrd(const std::string& path) {
@@ -140,12 +154,19 @@ SampleGrid readNrrd(const std::string& path) {
         path +
         ": not a readable NRRD file (it does not start with a NRRD0001 ... NRRD0009 line); "
         "check the file or its name ending");
+  const NrrdDataFiles files = checkNrrdHeader(path);
+  // Absolute: Teem finds detached data files in the folder of the path it is given, which is
+  // then the folder checkNrrdHeader resolved them in.
+  const std::string absolute = std::filesystem::absolute(path).string();
   // The header first: sizes are checked before Teem allocates what they claim.
   std::unique_ptr<Nrrd, NrrdNuke> header(nrrdNew());
   std::unique_ptr<NrrdIoState, IoNix> io(nrrdIoStateNew());
   io->skipData = 1;
-  if (nrrdLoad(header.get(), path.c_str(), io.get()))
+  if (nrrdLoad(header.get(), absolute.c_str(), io.get()))
     throw inputError(path + ": not a readable NRRD file (" + teemReason() + ")");
+  if (!sameDataFiles(files, *io))
+    throw inputError(path + ": its data file field reads differently than Voxray checked it; " +
+                     "the header is damaged");
   const Nrrd& h = *header;
   const Layout l = layoutOf(h, path);
   SampleGrid g;
@@ -162,8 +183,14 @@ SampleGrid readNrrd(const std::string& path) {
                          " volumes (4D: time points, phases or diffusion directions); this is " +
                          "volume 1 of " + std::to_string(l.volumes));
 
+  if (!files.files.empty() && io->encoding == nrrdEncodingRaw) {
+    const uint64_t bytes = uint64_t(nrrdElementNumber(&h)) * nrrdElementSize(&h);
+    checkNrrdDataFileSizes(files, bytes / files.files.size(),
+                           io->lineSkip > 0 || io->byteSkip != 0 || io->dataFSkip, path);
+  }
+
   std::unique_ptr<Nrrd, NrrdNuke> full(nrrdNew());
-  if (nrrdLoad(full.get(), path.c_str(), nullptr))
+  if (nrrdLoad(full.get(), absolute.c_str(), nullptr))
     throw inputError(path + ": the data cannot be read (" + teemReason() +
                      "); the file or its data file is damaged, truncated or missing");
   auto* data = static_cast<uint8_t*>(full->data);

@@ -47,4 +47,11 @@ void setAxes(SampleGrid& g, const glm::dmat3& stepsLps, const std::string& path)
 // kMaxVoxels. EXTRA multiplies the count (components, time points) for the size check.
 void checkDims(const std::array<uint64_t, 3>& dims, uint64_t extra, const std::string& path);
 
+// A header's detached data file NAME, which its reader opens as CANDIDATE (NAME in the folder
+// of the header PATH, or as given): returns it with its links resolved. Throws Error (Input)
+// unless it is a regular file in the header's folder once links are resolved (issue 39: a
+// header named /etc/passwd, or a link to a file elsewhere).
+std::string dataFileInFolder(const std::string& path, const std::string& name,
+                             const std::string& candidate);
+
 }  // namespace voxray::formats

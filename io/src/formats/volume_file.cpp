@@ -68,6 +68,26 @@ void checkDims(const std::array<uint64_t, 3>& dims, uint64_t extra, const std::s
                      "volumes; the file is damaged");
 }
 
+std::string dataFileInFolder(const std::string& path, const std::string& name,
+                             const std::string& candidate) {
+  const std::string where = path + ": its data file '" + name + "'";
+  std::string resolved;
+  switch (detail::placeInFolder(fs::absolute(path).parent_path().string(), candidate, &resolved)) {
+    case detail::Placement::Inside:
+      return resolved;
+    case detail::Placement::Missing:
+      throw inputError(where + " is missing; keep the header and its data files in one folder");
+    case detail::Placement::Outside:
+      throw inputError(where +
+                       " lies outside the header's folder (after links are followed); "
+                       "Voxray reads only data files in the header's folder: move them there");
+    case detail::Placement::NotRegular:
+      break;
+  }
+  throw inputError(where + " is not a regular file (a folder, FIFO or device); the header is " +
+                   "damaged");
+}
+
 }  // namespace formats
 
 namespace {

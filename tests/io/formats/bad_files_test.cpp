@@ -74,7 +74,7 @@ TEST(FormatsBadFiles, MetaImageDataFileMissing) {
   EXPECT_THAT(headerError("t.mhd",
                           "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\n"
                           "ElementType = MET_SHORT\nElementDataFile = gone.raw\n"),
-              HasSubstr("its data file gone.raw is missing"));
+              HasSubstr("its data file 'gone.raw' is missing"));
 }
 
 TEST(FormatsBadFiles, NanSpacing) {

@@ -1,0 +1,52 @@
+// A MetaImage header's ElementDataFile is held to the NRRD rule (issue 39): a data file outside
+// the header's folder, or a link that leads out of it, is not read as voxels. The files are
+// written into a temporary folder the test makes.
+#include <filesystem>
+
+#include "format_test_support.h"
+#include "voxray/io/load.h"
+
+namespace voxray {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempDir;
+using testing::HasSubstr;
+
+// A 4 x 3 x 2 MET_SHORT image whose ElementDataFile is DATA_FILE (and any lines after it).
+std::string header(const std::string& dataFile) {
+  return "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\nElementType = MET_SHORT\n"
+         "ElementDataFile = " +
+         dataFile + "\n";
+}
+
+TEST(FormatsMetaImageHostile, DataFilesOutsideTheHeadersFolderAreRefused) {
+  TempDir dir;
+  test::writeBytes(dir.file("outside.raw"), std::vector<uint8_t>(48, 7));
+  test::writeBytes(dir.file("outside1.raw"), std::vector<uint8_t>(24, 7));
+  test::writeBytes(dir.file("outside2.raw"), std::vector<uint8_t>(24, 7));
+  fs::create_directories(dir.path() / "study");
+  fs::create_symlink(dir.file("outside.raw"), dir.path() / "study" / "link.raw");
+  const std::string path = (dir.path() / "study" / "v.mhd").string();
+  for (const std::string& name : {std::string("/etc/passwd"), std::string("../outside.raw"),
+                                  dir.file("outside.raw"), std::string("link.raw")}) {
+    SCOPED_TRACE(name);
+    test::writeHeaderFile(path, header(name));
+    EXPECT_THAT(
+        test::errorMessage([&] { loadVolume(path); }),
+        HasSubstr(path + ": its data file '" + name + "' lies outside the header's folder"));
+  }
+  test::writeHeaderFile(path, header("LIST 2D\n../outside1.raw\n../outside2.raw"));
+  EXPECT_THAT(test::errorMessage([&] { loadVolume(path); }),
+              HasSubstr("its data file '../outside1.raw' lies outside the header's folder"));
+  test::writeHeaderFile(path, header("../outside%d.raw 1 2 1"));
+  EXPECT_THAT(test::errorMessage([&] { loadVolume(path); }),
+              HasSubstr("its data file '../outside1.raw' lies outside the header's folder"));
+  // The same data beside the header opens.
+  fs::copy_file(dir.file("outside.raw"), dir.path() / "study" / "inside.raw");
+  test::writeHeaderFile(path, header("inside.raw"));
+  EXPECT_EQ(loadVolume(path).dims, glm::ivec3(4, 3, 2));
+}
+
+}  // namespace
+}  // namespace voxray
