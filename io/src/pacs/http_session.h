@@ -33,6 +33,8 @@ class HttpSession {
                     const std::string& accept, const std::atomic<bool>* cancel = nullptr);
   // Percent-encodes a query value (keeping the wildcard *).
   std::string escape(const std::string& value);
+  // The HTTP status of the last request (0: none came), also when it threw.
+  long lastStatus() const { return lastStatus_; }
 
  private:
   HttpResponse perform(const std::string& what, const std::string& url,
@@ -41,6 +43,7 @@ class HttpSession {
 
   PacsNode node_;
   void* curl_;
+  long lastStatus_ = 0;
 };
 
 }  // namespace voxray::pacs

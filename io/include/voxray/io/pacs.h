@@ -23,9 +23,11 @@ struct PacsNode {
   // DICOMweb
   std::string baseUrl;  // without a trailing '/', e.g. https://pacs.example/dicom-web
   std::string user, password, bearerToken;
-  std::string caFile;   // extra CA bundle; empty = the system store
-  int timeoutSec = 30;  // connect and idle (no byte for this long) timeout
-  // For messages: the address without credentials.
+  std::string caFile;  // extra CA bundle; empty = the system store
+  // Connect and idle timeout: the most any wait for the node takes, and a transfer gives up
+  // once no byte came for this long.
+  int timeoutSec = 30;
+  // For messages: the address without credentials or query values (tokens).
   std::string label() const;
 };
 
@@ -57,7 +59,9 @@ struct PacsMatch {
   std::string patientName, patientId;  // identifying: display on request only
   std::string studyInstanceUid, studyDate, studyDescription, accessionNumber, modalities;
   std::string seriesInstanceUid, seriesDescription;
-  int seriesNumber = 0, numberOfSeries = 0, numberOfInstances = 0;
+  int seriesNumber = 0;
+  // 0: the node did not say (or sent no whole number); a real study or series has one.
+  int numberOfSeries = 0, numberOfInstances = 0;
 };
 
 // How a search hands its matches over: in pages, as the node sends them, so a caller shows
@@ -102,7 +106,8 @@ class PacsClient {
                                                   const std::string& seriesUid,
                                                   const std::string& folder,
                                                   const RetrieveOptions& options) = 0;
-  // Sends DICOM files (C-STORE; STOW-RS). Throws naming the first file refused, Cancelled
+  // Sends DICOM files (C-STORE; STOW-RS): regular files that parse as DICOM, all checked
+  // before anything is sent. Throws naming the first file refused, Cancelled
   // when *cancel becomes true (DIMSE: checked before each file and after the association).
   virtual void store(const std::vector<std::string>& files,
                      const std::atomic<bool>* cancel = nullptr) = 0;
