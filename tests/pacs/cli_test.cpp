@@ -130,6 +130,18 @@ TEST(PacsCliTextTest, FindEscapesControlCharactersFromTheServer) {
   EXPECT_THAT(find.out, testing::HasSubstr("\\x1b]0;pwned\\x07\\x1b[2J\\r\\nFAKE\n"));
 }
 
+// An error message that quotes the server (here its content type) is escaped too.
+TEST(PacsCliTextTest, ErrorMessagesEscapeControlCharactersFromTheServer) {
+  CannedHttpServer server(
+      CannedHttpServer::answer("200 OK", "text/html\x1b]0;pwned\x07", "<html></html>"));
+  std::string cache = tempFolder("cache");
+  CliRun get =
+      cli("pacs get " + server.address() + " --study 1.2 --series 1.2.3 --cache " + cache, true);
+  EXPECT_EQ(get.status, 1) << get.out;
+  for (char c : {'\x1b', '\a'}) EXPECT_EQ(get.out.find(c), std::string::npos) << get.out;
+  EXPECT_THAT(get.out, testing::HasSubstr("text/html\\x1b]0;pwned\\x07"));
+}
+
 // Counts that are no whole number (1.5e300, 2.5) are unknown ("?", null), not 0.
 TEST(PacsCliTextTest, CountsThatAreNoWholeNumberPrintAsUnknown) {
   const std::string body =
