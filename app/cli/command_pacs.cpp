@@ -92,7 +92,7 @@ int runFind(const PacsOptions& o) {
               << ": check the Study Instance UID (pacs find without --level series lists "
                  "studies)\n";
   if (result.more)
-    std::cerr << "more: the node holds more than " << q.limit
+    std::cerr << "more: the node holds more than " << result.matches.size()
               << " matches; narrow the search, raise --limit or page with --offset\n";
   return 0;
 }

@@ -172,16 +172,18 @@ class DimseClient : public PacsClient {
       keys.putAndInsertString(DCM_NumberOfSeriesRelatedInstances, "");
     }
     // C-FIND has no paging: matches arrive one by one and are handed over in pages. One
-    // match past the limit tells that the node holds more; then C-CANCEL stops it.
+    // match past the limit (or the cap) tells that the node holds more; then C-CANCEL stops
+    // it.
     FindResult result;
     std::vector<PacsMatch> page;
     auto flush = [&] {
       if (options.page && !page.empty()) options.page(page);
       page.clear();
     };
+    const size_t limit = q.limit ? std::min(q.limit, options.maxMatches) : options.maxMatches;
     scu->onFindMatch = [&](DcmDataset& d) {
       if (options.cancel && options.cancel->load()) return false;
-      if (q.limit && result.matches.size() == q.limit) {
+      if (result.matches.size() >= limit) {
         result.more = true;
         return false;
       }

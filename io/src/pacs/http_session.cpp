@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include <curl/curl.h>
@@ -24,27 +25,44 @@ struct Transfer {
   curl_off_t moved = -1;
   std::chrono::steady_clock::time_point lastMove{};
   bool stalled = false;
+  bool errorBodyCut = false;  // an HTTP error's body stopped at kMaxErrorBodyBytes
 };
 
 size_t onBody(char* data, size_t size, size_t n, void* user) {
   auto* t = static_cast<Transfer*>(user);
-  if (t->sink && *t->sink) {
-    long status = 0;
-    curl_easy_getinfo(t->curl, CURLINFO_RESPONSE_CODE, &status);
-    if (status < 400) {  // error bodies are kept for the message
-      char* type = nullptr;
-      curl_easy_getinfo(t->curl, CURLINFO_CONTENT_TYPE, &type);
-      try {
-        (*t->sink)(data, size * n, type ? type : "");
-      } catch (const std::exception& e) {
-        t->sinkError = e.what();
-        return 0;  // aborts the transfer
-      }
-      return size * n;
+  const size_t bytes = size * n;
+  long status = 0;
+  curl_easy_getinfo(t->curl, CURLINFO_RESPONSE_CODE, &status);
+  std::string& body = t->response->body;
+  if (status >= 400) {
+    // The message gives the status, not the body: only its start is kept, and an endless
+    // one is not read on.
+    if (body.size() >= kMaxErrorBodyBytes) {
+      t->errorBodyCut = true;
+      return 0;  // aborts the transfer
     }
+    body.append(data, std::min(bytes, kMaxErrorBodyBytes - body.size()));
+    return bytes;
   }
-  t->response->body.append(data, size * n);
-  return size * n;
+  if (t->sink && *t->sink) {
+    char* type = nullptr;
+    curl_easy_getinfo(t->curl, CURLINFO_CONTENT_TYPE, &type);
+    try {
+      (*t->sink)(data, bytes, type ? type : "");
+    } catch (const std::exception& e) {
+      t->sinkError = e.what();
+      return 0;
+    }
+    return bytes;
+  }
+  if (body.size() + bytes > kMaxAnswerBytes) {
+    t->sinkError = "the answer is larger than " + std::to_string(kMaxAnswerBytes >> 20) +
+                   " MiB, more than a search or store answer needs: it may not be a DICOMweb "
+                   "server; if it is, narrow the search";
+    return 0;
+  }
+  body.append(data, bytes);
+  return bytes;
 }
 
 int onProgress(void* user, curl_off_t, curl_off_t down, curl_off_t, curl_off_t up) {
@@ -172,6 +190,7 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
                      (*errorText ? errorText : curl_easy_strerror(code)) +
                      "): the server's certificate is not trusted; give the node a caFile with "
                      "its CA, or fix the server's certificate");
+  if (transfer.errorBodyCut) code = CURLE_OK;  // the status says what failed
   if (code != CURLE_OK)
     throw inputError(
         where + ": " + (*errorText ? errorText : curl_easy_strerror(code)) +

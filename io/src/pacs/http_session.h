@@ -11,6 +11,12 @@
 
 namespace voxray::pacs {
 
+// What a body kept in memory may take: a search's or a store's DICOM JSON answer (a page of
+// 500 studies is about 1 MiB), and the start of an HTTP error's body. Retrievals stream to
+// a sink instead.
+constexpr size_t kMaxAnswerBytes = size_t(64) << 20;
+constexpr size_t kMaxErrorBodyBytes = size_t(64) << 10;
+
 struct HttpResponse {
   long status = 0;
   std::string contentType;

@@ -77,18 +77,26 @@ class WebClient : public PacsClient {
   void echo() override { dicomJson(http_.get(url("/studies", "limit=1"), kDicomJson)); }
 
   // QIDO-RS pages by limit and offset: one request per page until a short page (or the
-  // query's limit, asked one past to learn whether there are more).
+  // query's limit, asked one past to learn whether there are more). A page that repeats the
+  // one before (a node that ignores offset) or the cap on matches ends it, with "more".
   FindResult findPages(const PacsQuery& q, const FindOptions& options) override {
     FindResult result;
     const size_t pageSize = std::max<size_t>(options.pageSize, 1);
+    const size_t limit = q.limit ? std::min(q.limit, options.maxMatches) : options.maxMatches;
+    std::vector<PacsMatch> last;
     for (PacsQuery page = q;; page.offset += page.limit) {
       if (options.cancel && options.cancel->load()) throw cancelledError("Search cancelled");
-      size_t wanted = q.limit ? q.limit + 1 - result.matches.size() : pageSize;
-      page.limit = std::min(pageSize, wanted);
+      page.limit = std::min(pageSize, limit + 1 - result.matches.size());
       std::vector<PacsMatch> got = findOnce(page);
-      if (q.limit && result.matches.size() + got.size() > q.limit) {
+      if (got.size() > page.limit) got.resize(page.limit);  // a node that ignores limit
+      if (!got.empty() && samePage(got, last)) {
         result.more = true;
-        got.resize(q.limit - result.matches.size());
+        return result;
+      }
+      last = got;
+      if (result.matches.size() + got.size() > limit) {
+        result.more = true;
+        got.resize(limit - result.matches.size());
       }
       result.matches.insert(result.matches.end(), got.begin(), got.end());
       if (options.page && !got.empty()) options.page(got);
@@ -97,6 +105,14 @@ class WebClient : public PacsClient {
   }
 
  private:
+  static bool samePage(const std::vector<PacsMatch>& a, const std::vector<PacsMatch>& b) {
+    return a.size() == b.size() &&
+           std::equal(a.begin(), a.end(), b.begin(), [](const PacsMatch& x, const PacsMatch& y) {
+             return x.studyInstanceUid == y.studyInstanceUid &&
+                    x.seriesInstanceUid == y.seriesInstanceUid;
+           });
+  }
+
   // The node's base URL with PATH added, and its own query (a token) after PARAMS.
   std::string url(const std::string& path, const std::string& params = {}) const {
     const size_t q = node_.baseUrl.find('?');

@@ -70,11 +70,16 @@ struct FindOptions {
   std::function<void(const std::vector<PacsMatch>& page)> page;  // may be empty
   size_t pageSize = 500;  // matches per page; DICOMweb asks for this many per request
   const std::atomic<bool>* cancel = nullptr;  // true: stop (C-CANCEL), throw Cancelled
+  // A search without a limit (or a larger one) stops here, with FindResult::more: a node
+  // that sends matches without end (or the same page again) must not fill the memory.
+  size_t maxMatches = 100000;
 };
 
 struct FindResult {
   std::vector<PacsMatch> matches;  // every page, in order
-  bool more = false;               // the node holds more than the query's limit
+  // The node holds more than the query's limit (or FindOptions::maxMatches), or it sent a
+  // page again (it ignores the offset): the matches are its first ones.
+  bool more = false;
 };
 
 struct RetrieveProgress {
