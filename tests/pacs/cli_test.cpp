@@ -102,7 +102,7 @@ TEST_F(PacsCliTest, SendRefusesWhatIsNotARegularDicomFile) {
   std::string fifo = dir + "/fifo", text = dir + "/shadow";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   std::ofstream(text) << "root:$6$salt$hash:19000:0:99999:7:::\n";
-  for (std::string node : {address(server().dimseNode()), server().webNode().baseUrl}) {
+  for (const std::string& node : {address(server().dimseNode()), server().webNode().baseUrl}) {
     for (const auto& [file, says] :
          std::vector<std::pair<std::string, std::string>>{{"/dev/zero", "not a regular file"},
                                                           {fifo, "not a regular file"},

@@ -29,8 +29,7 @@ std::string value(const json& object, const char* tag) {
   const json& v = (*it)["Value"][0];
   if (v.is_object()) return v.value("Alphabetic", "");
   if (v.is_string()) return v.get<std::string>();
-  if (v.is_number_integer()) return v.dump();
-  if (v.is_number()) return v.dump();  // as sent: a float is no whole number to convert
+  if (v.is_number()) return v.dump();  // as sent: countValue takes whole numbers only
   return {};
 }
 
