@@ -142,6 +142,20 @@ TEST(PacsCliTextTest, ErrorMessagesEscapeControlCharactersFromTheServer) {
   EXPECT_THAT(get.out, testing::HasSubstr("text/html\\x1b]0;pwned\\x07"));
 }
 
+// Without --show-patient, a failed search names neither the patient nor the node's token
+// (its URL's query values are hidden).
+TEST(PacsCliTextTest, FailedSearchPrintsNoPatientDataAndNoToken) {
+  CannedHttpServer server("HTTP/1.1 500 Internal Server Error\r\nContent-Length: 0\r\n\r\n");
+  CliRun find = cli("pacs find '" + server.address() +
+                        "?access_token=SECRET-TOKEN' --name 'DOE^JOHN' --id PID-4711",
+                    true);
+  EXPECT_EQ(find.status, 1) << find.out;
+  EXPECT_THAT(find.out, testing::AllOf(testing::HasSubstr("HTTP 500"),
+                                       testing::Not(testing::HasSubstr("DOE")),
+                                       testing::Not(testing::HasSubstr("PID-4711")),
+                                       testing::Not(testing::HasSubstr("SECRET-TOKEN"))));
+}
+
 // Counts that are no whole number (1.5e300, 2.5) are unknown ("?", null), not 0.
 TEST(PacsCliTextTest, CountsThatAreNoWholeNumberPrintAsUnknown) {
   const std::string body =
