@@ -5,6 +5,7 @@
 #include "info_json.h"
 #include "input_options.h"
 #include "json_text.h"
+#include "terminal_text.h"
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/error.h"
 #include "voxray/io/volume_file.h"
@@ -40,17 +41,19 @@ Run addInfoCommand(CLI::App& app) {
               << "extent      " << v.extentMm().x << " x " << v.extentMm().y << " x "
               << v.extentMm().z << " mm\n"
               << "values      " << j["hu_min"].get<double>() << " ... " << j["hu_max"].get<double>()
-              << " " << v.unit << "\n"
-              << "sample type " << v.sourceType << " (stored as int16, " << (v.byteSize() >> 20)
-              << " MiB)\n";
-    for (const auto& w : v.warnings) std::cout << "warning: " << w << "\n";
+              << " " << terminalText(v.unit) << "\n"
+              << "sample type " << terminalText(v.sourceType) << " (stored as int16, "
+              << (v.byteSize() >> 20) << " MiB)\n";
+    // Strings from the files go through terminalText: they may hold terminal controls.
+    for (const auto& w : v.warnings) std::cout << "warning: " << terminalText(w) << "\n";
     if (listing) {
       std::cout << "series (" << listing->filesScanned << " files, " << listing->filesSkipped
                 << " skipped):\n";
       for (const auto& s : listing->series)
-        std::cout << (s.chosenByDefault ? " * " : "   ") << s.selector << "  " << s.modality << "  "
-                  << s.dims.x << "x" << s.dims.y << "x" << s.dims.z << "  " << s.description
-                  << (s.isVolume ? "" : "  (" + s.notVolumeReason + ")") << "\n";
+        std::cout << (s.chosenByDefault ? " * " : "   ") << terminalText(s.selector) << "  "
+                  << terminalText(s.modality) << "  " << s.dims.x << "x" << s.dims.y << "x"
+                  << s.dims.z << "  " << terminalText(s.description)
+                  << (s.isVolume ? "" : "  (" + terminalText(s.notVolumeReason) + ")") << "\n";
     }
     return 0;
   };

@@ -8,6 +8,7 @@
 #include "info_json.h"
 #include "json_text.h"
 #include "progress.h"
+#include "terminal_text.h"
 #include "voxray/io/error.h"
 
 #ifdef VOXRAY_HAS_DICOM  // lean builds (VOXRAY_WITH_DICOM=OFF) have no PACS client
@@ -27,15 +28,20 @@ struct PacsOptions {
   std::vector<std::string> files;
 };
 
-nlohmann::json matchJson(const PacsMatch& m, bool showPatient) {
+// A count the node did not give (or gave as no whole number: PacsMatch keeps 0) is null.
+nlohmann::json count(int n) { return n > 0 ? nlohmann::json(n) : nlohmann::json(); }
+
+// A series-level match is one series: its number, not a count of series.
+nlohmann::json matchJson(const PacsMatch& m, QueryLevel level, bool showPatient) {
   nlohmann::json j = {{"study_uid", m.studyInstanceUid},   {"study_date", m.studyDate},
                       {"description", m.studyDescription}, {"accession", m.accessionNumber},
-                      {"modalities", m.modalities},        {"series", m.numberOfSeries},
-                      {"images", m.numberOfInstances}};
-  if (!m.seriesInstanceUid.empty()) {
+                      {"modalities", m.modalities},        {"images", count(m.numberOfInstances)}};
+  if (level == QueryLevel::Series) {
     j["series_uid"] = m.seriesInstanceUid;
     j["series_number"] = m.seriesNumber;
     j["series_description"] = m.seriesDescription;
+  } else {
+    j["series"] = count(m.numberOfSeries);
   }
   if (showPatient) {
     j["patient_name"] = m.patientName;
@@ -55,27 +61,38 @@ int runFind(const PacsOptions& o) {
   }
   // Text is printed page by page as the node answers (a search with 10,000 matches shows
   // its first ones at once); JSON is one array at the end.
-  auto line = [&](const nlohmann::json& j) {
-    std::cout << j.value("study_date", "") << "  " << j.value("modalities", "") << "  "
-              << j.value("series", 0) << " series  " << j.value("images", 0) << " images  "
-              << j.value(q.level == QueryLevel::Series ? "series_uid" : "study_uid", "") << "  "
-              << j.value(q.level == QueryLevel::Series ? "series_description" : "description", "");
-    if (o.showPatient) std::cout << "  " << j.value("patient_name", "");
+  // Every string from the node goes through terminalText: it may hold terminal controls.
+  const bool series = q.level == QueryLevel::Series;
+  auto line = [&](const PacsMatch& m) {
+    auto number = [](int n) { return n > 0 ? std::to_string(n) : std::string("?"); };
+    std::cout << terminalText(m.studyDate) << "  " << terminalText(m.modalities) << "  ";
+    if (series)
+      std::cout << "#" << m.seriesNumber << "  ";
+    else
+      std::cout << number(m.numberOfSeries) << " series  ";
+    std::cout << number(m.numberOfInstances) << " images  "
+              << terminalText(series ? m.seriesInstanceUid : m.studyInstanceUid) << "  "
+              << terminalText(series ? m.seriesDescription : m.studyDescription);
+    if (o.showPatient) std::cout << "  " << terminalText(m.patientName);
     std::cout << "\n";
   };
   FindOptions options;
   nlohmann::json list = nlohmann::json::array();
   options.page = [&](const std::vector<PacsMatch>& page) {
     for (const auto& m : page) {
-      list.push_back(matchJson(m, o.showPatient));
-      if (!o.json) line(list.back());
+      list.push_back(matchJson(m, q.level, o.showPatient));
+      if (!o.json) line(m);
     }
     if (!o.json) std::cout.flush();
   };
   FindResult result = makePacsClient(resolvePacsNode(o.node))->findPages(q, options);
   if (o.json) std::cout << jsonText(list) << "\n";
+  if (series && result.matches.empty())
+    std::cerr << "no series matched in study " << terminalText(q.studyInstanceUid)
+              << ": check the Study Instance UID (pacs find without --level series lists "
+                 "studies)\n";
   if (result.more)
-    std::cerr << "more: the node holds more than " << q.limit
+    std::cerr << "more: the node holds more than " << result.matches.size()
               << " matches; narrow the search, raise --limit or page with --offset\n";
   return 0;
 }
@@ -112,7 +129,7 @@ int runGet(const PacsOptions& o) {
     std::cout << jsonText(j) << "\n";
     return 0;
   }
-  std::cout << "cached      " << entry.folder << " (" << entry.images << " images, "
+  std::cout << "cached      " << terminalText(entry.folder) << " (" << entry.images << " images, "
             << double(entry.bytes) / 1e6 << " MB)\n"
             << "dims        " << v.dims.x << " x " << v.dims.y << " x " << v.dims.z << "\n"
             << "ready in    " << readyS << " s (retrieval " << retrieveS << " s, "
@@ -159,7 +176,7 @@ Run addPacsCommand(CLI::App& app) {
       if (o->json)
         std::cout << jsonText({{"node", node.label()}, {"ok", true}}) << "\n";
       else
-        std::cout << node.label() << " answers\n";
+        std::cout << terminalText(node.label()) << " answers\n";
       return 0;
     }
     if (find->parsed()) return runFind(*o);

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "terminal_text.h"
 #include "voxray/io/error.h"
 
 int main(int argc, char** argv) {
@@ -27,7 +28,9 @@ int main(int argc, char** argv) {
     try {
       return runs[i]();
     } catch (const voxray::Error& e) {
-      std::cerr << "voxray-cli: " << e.what() << "\n";
+      // Messages quote servers and files (a content type, a DICOM string): escaped, they
+      // stay one line and cannot drive the terminal.
+      std::cerr << "voxray-cli: " << voxray::cli::terminalText(e.what()) << "\n";
       return 1;
     } catch (const std::bad_alloc&) {
       std::cerr << "voxray-cli: out of memory: the volume or image is too large for this "
@@ -35,7 +38,7 @@ int main(int argc, char** argv) {
       return 1;
     } catch (const std::exception& e) {
       // A bug, not the user's input: say so rather than abort.
-      std::cerr << "voxray-cli: internal error (" << e.what()
+      std::cerr << "voxray-cli: internal error (" << voxray::cli::terminalText(e.what())
                 << "); please report it with the command that caused it\n";
       return 3;
     } catch (...) {

@@ -91,6 +91,19 @@ TEST_F(CliHostile, InfoJsonOfBytesThatAreNotUtf8ShowsReplacementCharacters) {
   EXPECT_EQ(nlohmann::json::parse(r.output)["series"][0]["description"], "Kopf \xEF\xBF\xBD");
 }
 
+// Text output escapes control characters from files (a screen clear, a title change, a CR LF
+// that fakes a line, a NUL); --json keeps them as JSON escapes (issue 39).
+TEST_F(CliHostile, InfoTextEscapesControlCharactersFromTheFile) {
+  voxray::test::TestSlice s;
+  s.charset = "ISO_IR 192";
+  s.description = std::string("\x1b]0;pwned\x07\x1b[2J\r\nFAKE\0end", 24);
+  Result r = cli("info " + series(s));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (char c : {'\x1b', '\a', '\r', '\0'})
+    EXPECT_EQ(r.output.find(c), std::string::npos) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("\\x1b]0;pwned\\x07\\x1b[2J\\r\\nFAKE"));
+}
+
 TEST_F(CliHostile, SequencesNested100000DeepAreAnError) {
   const std::string file = path("nested.dcm");
   voxray::test::writeTestSlice(file, {});

@@ -1,11 +1,14 @@
 // voxray-cli pacs echo|find|get|send against a real Orthanc, through its JSON output.
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <fstream>
 
 #include <gmock/gmock.h>
 #include <nlohmann/json.hpp>
 
+#include "canned_http_server.h"
 #include "pacs_test_support.h"
 
 namespace voxray::test {
@@ -16,9 +19,11 @@ struct CliRun {
   std::string out;
 };
 
-// Runs voxray-cli with ARGS (stderr joined to stdout only when asked).
+// Runs voxray-cli with ARGS (stderr joined to stdout only when asked), within 60 s and 4 GB
+// of address space: a command that blocks or reads without end fails rather than hangs.
 CliRun cli(const std::string& args, bool withStderr = false) {
-  std::string command = std::string(VOXRAY_CLI) + " " + args + (withStderr ? " 2>&1" : "");
+  std::string command = "ulimit -v 4000000; timeout 60 " + std::string(VOXRAY_CLI) + " " + args +
+                        (withStderr ? " 2>&1" : "");
   CliRun r;
   FILE* p = popen(command.c_str(), "r");
   char buf[4096];
@@ -62,6 +67,112 @@ TEST_F(PacsCliTest, WrongAeExitsWithOneAndAMessage) {
   CliRun echo = cli("pacs echo " + address(node), true);
   EXPECT_EQ(echo.status, 1);
   EXPECT_THAT(echo.out, testing::HasSubstr("refused Voxray"));
+}
+
+// At the series level each match is a series: its number, not a count of series (which was
+// 0 for every match).
+TEST_F(PacsCliTest, SeriesLevelFindPrintsSeriesNotASeriesCount) {
+  std::string node = address(server().dimseNode());
+  std::string args = "pacs find " + node + " --level series --study " + kPhantomStudy;
+  CliRun find = cli(args + " --json");
+  ASSERT_EQ(find.status, 0) << find.out;
+  auto series = nlohmann::json::parse(find.out);
+  ASSERT_EQ(series.size(), 3u);
+  for (const auto& s : series) {
+    EXPECT_FALSE(s.contains("series")) << s.dump();
+    EXPECT_TRUE(s.at("series_number").is_number_integer()) << s.dump();
+    if (s.at("series_uid") == kPhantomSeries) {
+      EXPECT_EQ(s.at("images"), 28);
+    }
+  }
+  CliRun text = cli(args);
+  ASSERT_EQ(text.status, 0) << text.out;
+  EXPECT_THAT(text.out, testing::Not(testing::HasSubstr(" series ")));
+  EXPECT_THAT(text.out, testing::HasSubstr("  28 images  " + std::string(kPhantomSeries)));
+}
+
+// pacs send takes only regular files that are DICOM: /dev/zero (read without end), a FIFO
+// (blocks), a folder and a text file are refused by name, nothing sent.
+TEST_F(PacsCliTest, SendRefusesWhatIsNotARegularDicomFile) {
+  auto instances = [&] {
+    return nlohmann::json::parse(server().get("/statistics")).at("CountInstances").get<int>();
+  };
+  const int before = instances();
+  std::string dir = tempFolder("send");
+  std::string fifo = dir + "/fifo", text = dir + "/shadow";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::ofstream(text) << "root:$6$salt$hash:19000:0:99999:7:::\n";
+  for (const std::string& node : {address(server().dimseNode()), server().webNode().baseUrl}) {
+    for (const auto& [file, says] :
+         std::vector<std::pair<std::string, std::string>>{{"/dev/zero", "not a regular file"},
+                                                          {fifo, "not a regular file"},
+                                                          {dir, "not a regular file"},
+                                                          {text, "not a DICOM file"}}) {
+      CliRun send = cli("pacs send " + node + " " + file, true);
+      EXPECT_EQ(send.status, 1) << file << ": " << send.out;
+      EXPECT_THAT(send.out, testing::AllOf(testing::HasSubstr(file), testing::HasSubstr(says)))
+          << node;
+    }
+  }
+  EXPECT_EQ(instances(), before);
+}
+
+// Text output escapes control characters from the server (a screen clear, a title change,
+// a CR LF that fakes a line); --json has them as JSON escapes.
+TEST(PacsCliTextTest, FindEscapesControlCharactersFromTheServer) {
+  const std::string body =
+      R"([{"0020000D":{"vr":"UI","Value":["1.2.3"]},"00080020":{"vr":"DA","Value":["20200101"]},)"
+      R"("00081030":{"vr":"LO","Value":["\u001b]0;pwned\u0007\u001b[2J\r\nFAKE"]}}])";
+  CannedHttpServer server(CannedHttpServer::answer("200 OK", "application/dicom+json", body));
+  CliRun find = cli("pacs find " + server.address());
+  ASSERT_EQ(find.status, 0) << find.out;
+  for (char c : {'\x1b', '\a', '\r'}) EXPECT_EQ(find.out.find(c), std::string::npos) << find.out;
+  EXPECT_THAT(find.out, testing::HasSubstr("\\x1b]0;pwned\\x07\\x1b[2J\\r\\nFAKE\n"));
+}
+
+// An error message that quotes the server (here its content type) is escaped too.
+TEST(PacsCliTextTest, ErrorMessagesEscapeControlCharactersFromTheServer) {
+  CannedHttpServer server(
+      CannedHttpServer::answer("200 OK", "text/html\x1b]0;pwned\x07", "<html></html>"));
+  std::string cache = tempFolder("cache");
+  CliRun get =
+      cli("pacs get " + server.address() + " --study 1.2 --series 1.2.3 --cache " + cache, true);
+  EXPECT_EQ(get.status, 1) << get.out;
+  for (char c : {'\x1b', '\a'}) EXPECT_EQ(get.out.find(c), std::string::npos) << get.out;
+  EXPECT_THAT(get.out, testing::HasSubstr("text/html\\x1b]0;pwned\\x07"));
+}
+
+// Without --show-patient, a failed search names neither the patient nor the node's token
+// (its URL's query values are hidden).
+TEST(PacsCliTextTest, FailedSearchPrintsNoPatientDataAndNoToken) {
+  CannedHttpServer server("HTTP/1.1 500 Internal Server Error\r\nContent-Length: 0\r\n\r\n");
+  CliRun find = cli("pacs find '" + server.address() +
+                        "?access_token=SECRET-TOKEN' --name 'DOE^JOHN' --id PID-4711",
+                    true);
+  EXPECT_EQ(find.status, 1) << find.out;
+  EXPECT_THAT(find.out, testing::AllOf(testing::HasSubstr("HTTP 500"),
+                                       testing::Not(testing::HasSubstr("DOE")),
+                                       testing::Not(testing::HasSubstr("PID-4711")),
+                                       testing::Not(testing::HasSubstr("SECRET-TOKEN"))));
+}
+
+// Counts that are no whole number (1.5e300, 2.5) are unknown ("?", null), not 0.
+TEST(PacsCliTextTest, CountsThatAreNoWholeNumberPrintAsUnknown) {
+  const std::string body =
+      R"([{"0020000D":{"vr":"UI","Value":["1.2.3"]},"00201206":{"vr":"IS","Value":[1.5e300]},)"
+      R"("00201208":{"vr":"IS","Value":[2.5]}}])";
+  {
+    CannedHttpServer server(CannedHttpServer::answer("200 OK", "application/dicom+json", body));
+    CliRun find = cli("pacs find " + server.address());
+    ASSERT_EQ(find.status, 0) << find.out;
+    EXPECT_THAT(find.out, testing::HasSubstr("? series  ? images  1.2.3"));
+  }
+  CannedHttpServer server(CannedHttpServer::answer("200 OK", "application/dicom+json", body));
+  CliRun find = cli("pacs find " + server.address() + " --json");
+  ASSERT_EQ(find.status, 0) << find.out;
+  auto match = nlohmann::json::parse(find.out).at(0);
+  EXPECT_TRUE(match.at("series").is_null()) << find.out;
+  EXPECT_TRUE(match.at("images").is_null()) << find.out;
 }
 
 }  // namespace

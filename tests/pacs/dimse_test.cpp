@@ -77,6 +77,28 @@ TEST_F(DimseTest, CMoveIntoVoxraysReceiverDeliversTheSeriesAsOnDisk) {
   expectRetrievalMatchesDisk(server().moveNode());
 }
 
+// An unknown series (or study) is named as such, not "incomplete ... try again" (issue 39).
+std::string unknownSeriesFailure(const PacsNode& node, const std::string& study) {
+  return failure([&] {
+    PacsCache cache(tempFolder("cache"));
+    auto client = makePacsClient(node);
+    cache.retrieve(*client, study, "1.2.3.999");
+  });
+}
+
+TEST_F(DimseTest, CGetOfAnUnknownSeriesSaysTheNodeHasNoSuchSeries) {
+  std::string m = unknownSeriesFailure(server().dimseNode(), kPhantomStudy);
+  EXPECT_THAT(m, testing::AllOf(
+                     HasSubstr(server().dimseNode().label()), HasSubstr("has no series 1.2.3.999"),
+                     testing::Not(HasSubstr("incomplete")), testing::Not(HasSubstr("try again"))));
+}
+
+TEST_F(DimseTest, CMoveOfAnUnknownStudySaysTheNodeHasNoSuchStudy) {
+  std::string m = unknownSeriesFailure(server().moveNode(), "1.2.3.998");
+  EXPECT_THAT(m, testing::AllOf(HasSubstr("has no study 1.2.3.998"),
+                                testing::Not(HasSubstr("incomplete"))));
+}
+
 TEST_F(DimseTest, CancelDuringCGetLeavesNoHalfSeries) {
   expectCancelLeavesNothing(server().dimseNode());
 }

@@ -24,6 +24,31 @@ std::vector<std::string> split(const std::string& body, size_t chunk) {
   return parts;
 }
 
+// A part over the cap throws as soon as it is known to be (issue 39: a part was kept in
+// memory whatever its size); one of the cap's size passes, at every feed size.
+TEST(MultipartTest, PartLargerThanTheCapThrows) {
+  const std::string atCap = "--XYZ\r\n\r\n" + std::string(100, 'a') + "\r\n--XYZ--\r\n";
+  const std::string overCap = "--XYZ\r\n\r\n" + std::string(101, 'a') + "\r\n--XYZ--\r\n";
+  for (size_t chunk : {size_t(1), size_t(7), size_t(1000)}) {
+    auto feed = [&](const std::string& body) {
+      std::vector<std::string> parts;
+      MultipartSplitter s(
+          "XYZ", [&](const std::string&, std::string c) { parts.push_back(std::move(c)); }, 100);
+      for (size_t i = 0; i < body.size(); i += chunk)
+        s.feed(body.data() + i, std::min(chunk, body.size() - i));
+      s.finish();
+      return parts.size();
+    };
+    EXPECT_EQ(feed(atCap), 1u) << chunk;
+    try {
+      feed(overCap);
+      ADD_FAILURE() << "a part over the cap passed, chunk " << chunk;
+    } catch (const Error& e) {
+      EXPECT_THAT(e.what(), HasSubstr("larger than 100 bytes")) << chunk;
+    }
+  }
+}
+
 TEST(MultipartTest, SplitsPartsWhateverTheFeedSize) {
   for (size_t chunk : {size_t(1), size_t(2), size_t(7), size_t(1000)}) {
     auto parts = split(kBody, chunk);

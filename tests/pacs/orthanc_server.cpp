@@ -162,9 +162,18 @@ OrthancServer::~OrthancServer() {
 void OrthancServer::stop(int signal) {
   if (pid_ <= 0) return;
   kill(pid_, signal);
+  kill(pid_, SIGCONT);  // a frozen server gets the signal only once it runs
   int status = 0;
   waitpid(pid_, &status, 0);
   pid_ = -1;
+}
+
+void OrthancServer::freeze() {
+  if (pid_ > 0) kill(pid_, SIGSTOP);
+}
+
+void OrthancServer::thaw() {
+  if (pid_ > 0) kill(pid_, SIGCONT);
 }
 
 std::string OrthancServer::log() const {

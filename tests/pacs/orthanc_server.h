@@ -28,6 +28,9 @@ class OrthancServer {
   std::string get(const std::string& path) const;
   // Stops the server now (for "server went away" tests); SIGKILL: it dies mid-transfer.
   void stop(int signal = 15 /* SIGTERM */);
+  // Freezes the server (SIGSTOP: its sockets stay open, it sends nothing) and thaws it.
+  void freeze();
+  void thaw();
 
   int httpPort = 0, dicomPort = 0, movePort = 0;
   std::string folder;  // storage, configuration and log

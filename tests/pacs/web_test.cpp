@@ -1,15 +1,8 @@
 // DICOMweb against a real Orthanc (its DICOMweb plugin): QIDO-RS, WADO-RS, STOW-RS, HTTP
-// faults; and a tiny local HTTP server for what Orthanc will not do (cut a transfer short,
-// send garbage, fail with 500).
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
-#include <stdexcept>
-#include <thread>
-
+// faults; and a canned local HTTP server for what Orthanc will not do.
 #include <gmock/gmock.h>
 
+#include "canned_http_server.h"
 #include "pacs_test_support.h"
 #include "voxray/io/dicom_import.h"
 
@@ -110,44 +103,6 @@ TEST_F(WebTest, StowRsStoresAFileThatQidoThenFinds) {
   q.modality = "MR";
   EXPECT_EQ(client->find(q).size(), 1u);
 }
-
-// Serves one canned HTTP answer to the first connection, then closes it.
-class CannedHttpServer {
- public:
-  explicit CannedHttpServer(std::string answer) : answer_(std::move(answer)) {
-    fd_ = socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t len = sizeof addr;
-    if (bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
-        getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len) != 0 || listen(fd_, 1) != 0)
-      throw std::runtime_error("cannot listen on 127.0.0.1");
-    port = ntohs(addr.sin_port);
-    thread_ = std::thread([this] {
-      int c = accept(fd_, nullptr, nullptr);
-      char request[4096];
-      (void)!read(c, request, sizeof request);
-      (void)!write(c, answer_.data(), answer_.size());
-      close(c);
-    });
-  }
-  ~CannedHttpServer() {
-    thread_.join();
-    close(fd_);
-  }
-  PacsNode node() const {
-    PacsNode n = parsePacsNode("http://127.0.0.1:" + std::to_string(port) + "/dicom-web");
-    n.timeoutSec = 5;
-    return n;
-  }
-  int port = 0;
-
- private:
-  std::string answer_;
-  int fd_ = -1;
-  std::thread thread_;
-};
 
 std::string retrieveFailure(const PacsNode& node) {
   return failure([&] {

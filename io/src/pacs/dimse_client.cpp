@@ -12,7 +12,10 @@
 
 #include "cancellable_transport.h"
 #include "dimse_support.h"
+#include "match_values.h"
 #include "move_receiver.h"
+#include "pacs_messages.h"
+#include "sendable.h"
 #include "transports.h"
 #include "voxray/io/error.h"
 #include "voxray/io/pacs.h"
@@ -39,7 +42,9 @@ class Scu : public DcmSCU {
   bool findCancelSent = false;
   bool cancelled = false;
   std::string storeError;
-  std::unique_ptr<CancellableTransport> transport;  // with a cancel flag: waits that stop
+  // Every wait for the node stops on cancel and once it has sent nothing for its timeout.
+  std::shared_ptr<IdleDeadline> idle;
+  std::unique_ptr<CancellableTransport> transport;
 
   // DCMTK's only hook for the connection class (it asks for no TLS of its own).
   OFCondition useTransport(DcmTransportLayer* layer) { return useSecureConnection(layer); }
@@ -121,13 +126,7 @@ std::string text(DcmDataset& d, const DcmTagKey& tag) {
   return value.c_str();
 }
 
-int number(DcmDataset& d, const DcmTagKey& tag) {
-  try {
-    return std::stoi(text(d, tag));
-  } catch (const std::exception&) {
-    return 0;
-  }
-}
+int number(DcmDataset& d, const DcmTagKey& tag) { return countValue(text(d, tag)); }
 
 class DimseClient : public PacsClient {
   PacsNode node_;
@@ -139,7 +138,7 @@ class DimseClient : public PacsClient {
     auto scu = connect("C-ECHO", [](Scu& s) {
       s.addPresentationContext(UID_VerificationSOPClass, acceptedTransferSyntaxes());
     });
-    check("C-ECHO", scu->sendECHORequest(0));
+    check("C-ECHO", scu->sendECHORequest(0), *scu);
     scu->releaseAssociation();
   }
 
@@ -173,16 +172,18 @@ class DimseClient : public PacsClient {
       keys.putAndInsertString(DCM_NumberOfSeriesRelatedInstances, "");
     }
     // C-FIND has no paging: matches arrive one by one and are handed over in pages. One
-    // match past the limit tells that the node holds more; then C-CANCEL stops it.
+    // match past the limit (or the cap) tells that the node holds more; then C-CANCEL stops
+    // it.
     FindResult result;
     std::vector<PacsMatch> page;
     auto flush = [&] {
       if (options.page && !page.empty()) options.page(page);
       page.clear();
     };
+    const size_t limit = q.limit ? std::min(q.limit, options.maxMatches) : options.maxMatches;
     scu->onFindMatch = [&](DcmDataset& d) {
       if (options.cancel && options.cancel->load()) return false;
-      if (q.limit && result.matches.size() == q.limit) {
+      if (result.matches.size() >= limit) {
         result.more = true;
         return false;
       }
@@ -197,7 +198,7 @@ class DimseClient : public PacsClient {
       scu->abortAssociation();
       throw cancelledError("Search cancelled");
     }
-    check("C-FIND", cond);
+    check("C-FIND", cond, *scu);
     scu->releaseAssociation();
     flush();
     return result;
@@ -237,25 +238,22 @@ class DimseClient : public PacsClient {
       throw cancelledError("Retrieval cancelled");
     }
     if (!scu->storeError.empty()) throw outputError(scu->storeError);
-    check("C-GET", cond);
+    check("C-GET", cond, *scu);
     scu->releaseAssociation();
-    finish("C-GET", scu->files, failed);
+    finish("C-GET", scu->files, failed, scu->progress.total, keys);
     return scu->files;
   }
 
   void store(const std::vector<std::string>& files, const std::atomic<bool>* cancel) override {
-    std::vector<DcmFileFormat> loaded(files.size());
-    for (size_t i = 0; i < files.size(); ++i)
-      if (loaded[i].loadFile(files[i].c_str()).bad())
-        throw inputError(files[i] + " is not a DICOM file Voxray can read; nothing was sent");
+    std::vector<SendableFile> loaded = loadSendableFiles(files);
     auto scu = connect(
         "C-STORE",
         [&](Scu& s) {
           for (auto& f : loaded) {
             OFString sopClass;
-            f.getDataset()->findAndGetOFString(DCM_SOPClassUID, sopClass);
+            f.dicom->getDataset()->findAndGetOFString(DCM_SOPClassUID, sopClass);
             OFList<OFString> xfer;
-            xfer.push_back(DcmXfer(f.getDataset()->getOriginalXfer()).getXferID());
+            xfer.push_back(DcmXfer(f.dicom->getDataset()->getOriginalXfer()).getXferID());
             if (s.findPresentationContextID(sopClass, xfer.front()) == 0)
               s.addPresentationContext(sopClass, xfer);
           }
@@ -268,14 +266,14 @@ class DimseClient : public PacsClient {
                              std::to_string(files.size()) + " files");
       }
       Uint16 status = 0;
-      OFCondition cond = scu->sendSTORERequest(0, "", loaded[i].getDataset(), status);
+      OFCondition cond = scu->sendSTORERequest(0, "", loaded[i].dicom->getDataset(), status);
       if (cancel && cancel->load()) {  // a wait for the node stopped
         scu->abortAssociation();
         throw cancelledError("Sending cancelled during file " + std::to_string(i + 1) + " of " +
                              std::to_string(files.size()) +
                              "; the node may keep the files before it");
       }
-      check("C-STORE of " + files[i], cond);
+      check("C-STORE of " + files[i], cond, *scu);
       if (status != STATUS_Success)
         throw inputError("PACS " + node_.label() + " refused " + files[i] + " (status 0x" +
                          hexStatus(status) + "); nothing after it was sent");
@@ -288,8 +286,10 @@ class DimseClient : public PacsClient {
   // (Cancelled, saying the node had not answered, when that happens before it accepted).
   template <class Setup>
   std::unique_ptr<Scu> connect(const std::string& what, Setup setup,
-                               const std::atomic<bool>* cancel = nullptr) {
+                               const std::atomic<bool>* cancel = nullptr,
+                               std::shared_ptr<IdleDeadline> idle = nullptr) {
     auto scu = std::make_unique<Scu>();
+    scu->idle = idle ? std::move(idle) : std::make_shared<IdleDeadline>(node_.timeoutSec);
     scu->setAETitle(node_.callingAe.c_str());
     scu->setPeerAETitle(node_.calledAe.c_str());
     scu->setPeerHostName(node_.host.c_str());
@@ -300,11 +300,9 @@ class DimseClient : public PacsClient {
     scu->setDIMSEBlockingMode(DIMSE_NONBLOCKING);
     scu->setMaxReceivePDULength(ASC_MAXIMUMPDUSIZE);
     setup(*scu);
-    check(what + ": network setup", scu->initNetwork());
-    if (cancel) {
-      scu->transport = std::make_unique<CancellableTransport>(cancel);
-      check(what + ": network setup", scu->useTransport(scu->transport.get()));
-    }
+    check(what + ": network setup", scu->initNetwork(), *scu);
+    scu->transport = std::make_unique<CancellableTransport>(cancel, scu->idle.get());
+    check(what + ": network setup", scu->useTransport(scu->transport.get()), *scu);
     if (cancel) {
       ConnectCheck c = checkConnect(node_.host, node_.port, node_.timeoutSec, cancel);
       if (c == ConnectCheck::Cancelled)
@@ -316,6 +314,7 @@ class DimseClient : public PacsClient {
                          std::to_string(node_.timeoutSec) +
                          " s: check that the node is running and its host and port are right");
     }
+    scu->idle->touch();  // the association's first wait starts now
     OFCondition cond = scu->negotiateAssociation();
     if (cancel && cancel->load())
       throw cancelledError(cond.good() ? what + " cancelled; nothing was exchanged"
@@ -323,15 +322,26 @@ class DimseClient : public PacsClient {
                                              " had not answered the association request (it "
                                              "took the connection and said nothing); nothing "
                                              "was exchanged");
-    check(what + ": cannot associate", cond);
+    check(what + ": cannot associate", cond, *scu);
     return scu;
   }
 
-  void check(const std::string& what, const OFCondition& cond) const {
+  // A failed exchange; once the node has sent nothing for its timeout, that is the reason.
+  void check(const std::string& what, const OFCondition& cond, const Scu& scu) const {
+    if (cond.bad() && scu.idle->passed()) throw inputError(stalledMessage(node_, what));
     if (cond.bad()) throw inputError(dimseFailure(node_, what, cond));
   }
 
-  void finish(const std::string& what, const std::vector<std::string>& files, int failed) const {
+  // After a retrieval: no image and none announced (TOTAL: the sub-operations the node
+  // reported) is a series the node does not hold; fewer than all is an incomplete one.
+  void finish(const std::string& what, const std::vector<std::string>& files, int failed, int total,
+              DcmDataset& keys) {
+    if (files.empty() && failed == 0 && total == 0) {
+      OFString study, series;
+      keys.findAndGetOFString(DCM_StudyInstanceUID, study);
+      keys.findAndGetOFString(DCM_SeriesInstanceUID, series);
+      throw inputError(noSuchSeries(study.c_str(), series.c_str()));
+    }
     if (failed > 0 || files.empty())
       throw inputError("PACS " + node_.label() + ": " + what + " delivered " +
                        std::to_string(files.size()) + " images" +
@@ -339,14 +349,37 @@ class DimseClient : public PacsClient {
                        ": the series is incomplete and was not kept; try again");
   }
 
+  // Which of the two UIDs the node does not know: a study-level C-FIND tells.
+  std::string noSuchSeries(const std::string& study, const std::string& series) {
+    PacsQuery q;
+    q.studyInstanceUid = study;
+    q.limit = 1;
+    bool studyKnown = true;
+    try {
+      studyKnown = !findPages(q, {}).matches.empty();
+    } catch (const Error&) {
+      // The search failed: name both UIDs, as if the study were there.
+    }
+    return unknownSeriesMessage(node_, study, series, studyKnown);
+  }
+
   std::vector<std::string> move(DcmDataset& keys, const std::string& folder,
                                 const RetrieveOptions& options) {
-    MoveReceiver receiver(node_, folder, options);
-    auto scu = connect("C-MOVE", [](Scu& s) {
-      s.addPresentationContext(UID_MOVEStudyRootQueryRetrieveInformationModel,
-                               acceptedTransferSyntaxes());
-    });
-    scu->onMoveTotal = [&](int total) { receiver.setTotal(total); };
+    // The images arrive at the receiver: they count as the node's answer for both.
+    auto idle = std::make_shared<IdleDeadline>(node_.timeoutSec);
+    MoveReceiver receiver(node_, folder, options, idle.get());
+    auto scu = connect(
+        "C-MOVE",
+        [](Scu& s) {
+          s.addPresentationContext(UID_MOVEStudyRootQueryRetrieveInformationModel,
+                                   acceptedTransferSyntaxes());
+        },
+        options.cancel, idle);
+    int total = 0;
+    scu->onMoveTotal = [&](int n) {
+      total = std::max(total, n);
+      receiver.setTotal(n);
+    };
     OFList<RetrieveResponse*> responses;
     OFCondition cond = scu->sendMOVERequest(
         scu->findPresentationContextID(UID_MOVEStudyRootQueryRetrieveInformationModel, ""),
@@ -357,10 +390,14 @@ class DimseClient : public PacsClient {
       delete r;
     }
     std::vector<std::string> files = receiver.finish();
-    check("C-MOVE", cond);
+    if (options.cancel && options.cancel->load()) {
+      scu->abortAssociation();
+      throw cancelledError("Retrieval cancelled");
+    }
+    check("C-MOVE", cond, *scu);
     scu->releaseAssociation();
     finish("C-MOVE to AE " + node_.callingAe + " port " + std::to_string(node_.receivePort), files,
-           failed);
+           failed, total, keys);
     return files;
   }
 

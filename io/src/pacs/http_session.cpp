@@ -1,7 +1,13 @@
 #include "http_session.h"
 
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <chrono>
+
 #include <curl/curl.h>
 
+#include "pacs_messages.h"
 #include "voxray/io/error.h"
 
 namespace voxray::pacs {
@@ -13,32 +19,64 @@ struct Transfer {
   HttpResponse* response = nullptr;
   CURL* curl = nullptr;
   std::string sinkError;
+  // The idle timeout, kept here: libcurl's low-speed check averages over its window, so
+  // after a fast start a frozen server held a transfer about twice the timeout.
+  int timeoutSec = 0;
+  curl_off_t moved = -1;
+  std::chrono::steady_clock::time_point lastMove{};
+  bool stalled = false;
+  bool errorBodyCut = false;  // an HTTP error's body stopped at kMaxErrorBodyBytes
 };
 
 size_t onBody(char* data, size_t size, size_t n, void* user) {
   auto* t = static_cast<Transfer*>(user);
-  if (t->sink && *t->sink) {
-    long status = 0;
-    curl_easy_getinfo(t->curl, CURLINFO_RESPONSE_CODE, &status);
-    if (status < 400) {  // error bodies are kept for the message
-      char* type = nullptr;
-      curl_easy_getinfo(t->curl, CURLINFO_CONTENT_TYPE, &type);
-      try {
-        (*t->sink)(data, size * n, type ? type : "");
-      } catch (const std::exception& e) {
-        t->sinkError = e.what();
-        return 0;  // aborts the transfer
-      }
-      return size * n;
+  const size_t bytes = size * n;
+  long status = 0;
+  curl_easy_getinfo(t->curl, CURLINFO_RESPONSE_CODE, &status);
+  std::string& body = t->response->body;
+  if (status >= 400) {
+    // The message gives the status, not the body: only its start is kept, and an endless
+    // one is not read on.
+    if (body.size() >= kMaxErrorBodyBytes) {
+      t->errorBodyCut = true;
+      return 0;  // aborts the transfer
     }
+    body.append(data, std::min(bytes, kMaxErrorBodyBytes - body.size()));
+    return bytes;
   }
-  t->response->body.append(data, size * n);
-  return size * n;
+  if (t->sink && *t->sink) {
+    char* type = nullptr;
+    curl_easy_getinfo(t->curl, CURLINFO_CONTENT_TYPE, &type);
+    try {
+      (*t->sink)(data, bytes, type ? type : "");
+    } catch (const std::exception& e) {
+      t->sinkError = e.what();
+      return 0;
+    }
+    return bytes;
+  }
+  if (body.size() + bytes > kMaxAnswerBytes) {
+    t->sinkError = "the answer is larger than " + std::to_string(kMaxAnswerBytes >> 20) +
+                   " MiB, more than a search or store answer needs: it may not be a DICOMweb "
+                   "server; if it is, narrow the search";
+    return 0;
+  }
+  body.append(data, bytes);
+  return bytes;
 }
 
-int onProgress(void* user, curl_off_t, curl_off_t, curl_off_t, curl_off_t) {
+int onProgress(void* user, curl_off_t, curl_off_t down, curl_off_t, curl_off_t up) {
   auto* t = static_cast<Transfer*>(user);
-  return t->cancel && t->cancel->load() ? 1 : 0;
+  if (t->cancel && t->cancel->load()) return 1;
+  const auto now = std::chrono::steady_clock::now();
+  if (down + up != t->moved) {
+    t->moved = down + up;
+    t->lastMove = now;
+  } else if (now - t->lastMove >= std::chrono::seconds(t->timeoutSec)) {
+    t->stalled = true;
+    return 1;
+  }
+  return 0;
 }
 
 std::string httpHint(long status) {
@@ -54,6 +92,16 @@ std::string httpHint(long status) {
 
 HttpSession::HttpSession(PacsNode node) : node_(std::move(node)), curl_(curl_easy_init()) {
   if (!curl_) throw inputError("Cannot start libcurl for " + node_.label());
+  // libcurl opens the CA bundle and reads it to the end: a FIFO would block every request.
+  struct stat st {};
+  if (node_.caFile.empty()) return;
+  const bool found = stat(node_.caFile.c_str(), &st) == 0;
+  if (found && S_ISREG(st.st_mode)) return;
+  curl_easy_cleanup(static_cast<CURL*>(curl_));
+  throw inputError("DICOMweb " + node_.label() + ": its caFile " + node_.caFile +
+                   (found ? " is not a regular file" : " cannot be read") +
+                   ": give the path of a PEM file with the node's CA certificates in " +
+                   pacsConfigPath());
 }
 
 HttpSession::~HttpSession() { curl_easy_cleanup(static_cast<CURL*>(curl_)); }
@@ -94,7 +142,7 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
                                   const std::atomic<bool>* cancel) {
   CURL* curl = static_cast<CURL*>(curl_);
   HttpResponse response;
-  Transfer transfer{&sink, cancel, &response, curl, {}};
+  Transfer transfer{&sink, cancel, &response, curl, {}, node_.timeoutSec};
   curl_slist* list = nullptr;
   for (const auto& h : headers) list = curl_slist_append(list, h.c_str());
   char errorText[CURL_ERROR_SIZE] = {};
@@ -122,29 +170,35 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
     curl_easy_setopt(curl, CURLOPT_USERNAME, node_.user.c_str());
     curl_easy_setopt(curl, CURLOPT_PASSWORD, node_.password.c_str());
   }
+  lastStatus_ = 0;
   CURLcode code = curl_easy_perform(curl);
   curl_slist_free_all(list);
   curl_easy_setopt(curl, CURLOPT_HTTPHEADER, nullptr);
   curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &response.status);
+  lastStatus_ = response.status;
   char* type = nullptr;
   curl_easy_getinfo(curl, CURLINFO_CONTENT_TYPE, &type);
   response.contentType = type ? type : "";
-  std::string where = "DICOMweb " + what + " " + url;
+  std::string where = "DICOMweb " + what + " " + redactUrl(url);
   if (cancel && cancel->load())
     throw cancelledError(what == "POST" ? "Sending cancelled" : "Retrieval cancelled");
   if (!transfer.sinkError.empty()) throw inputError(where + ": " + transfer.sinkError);
+  if (transfer.stalled) throw inputError(stalledMessage(node_, what));
   if (code == CURLE_PEER_FAILED_VERIFICATION || code == CURLE_SSL_CACERT_BADFILE ||
       code == CURLE_SSL_CONNECT_ERROR || code == CURLE_SSL_CERTPROBLEM)
     throw inputError(where + ": TLS failed (" +
                      (*errorText ? errorText : curl_easy_strerror(code)) +
                      "): the server's certificate is not trusted; give the node a caFile with "
                      "its CA, or fix the server's certificate");
+  if (transfer.errorBodyCut) code = CURLE_OK;  // the status says what failed
   if (code != CURLE_OK)
-    throw inputError(where + ": " + (*errorText ? errorText : curl_easy_strerror(code)) +
-                     (code == CURLE_OPERATION_TIMEDOUT ? ": the server stopped answering"
-                      : code == CURLE_PARTIAL_FILE     ? ": the server closed the connection "
-                                                         "before the end; try again"
-                                                       : ": check the node's URL and network"));
+    throw inputError(
+        where + ": " + (*errorText ? errorText : curl_easy_strerror(code)) +
+        (code == CURLE_OPERATION_TIMEDOUT
+             ? ": the server stopped answering (timeout " + std::to_string(node_.timeoutSec) + " s)"
+         : code == CURLE_PARTIAL_FILE ? ": the server closed the connection "
+                                        "before the end; try again"
+                                      : ": check the node's URL and network"));
   if (response.status >= 400)
     throw inputError(where + ": HTTP " + std::to_string(response.status) + ": " +
                      httpHint(response.status));

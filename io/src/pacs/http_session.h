@@ -11,6 +11,12 @@
 
 namespace voxray::pacs {
 
+// What a body kept in memory may take: a search's or a store's DICOM JSON answer (a page of
+// 500 studies is about 1 MiB), and the start of an HTTP error's body. Retrievals stream to
+// a sink instead.
+constexpr size_t kMaxAnswerBytes = size_t(64) << 20;
+constexpr size_t kMaxErrorBodyBytes = size_t(64) << 10;
+
 struct HttpResponse {
   long status = 0;
   std::string contentType;
@@ -33,6 +39,8 @@ class HttpSession {
                     const std::string& accept, const std::atomic<bool>* cancel = nullptr);
   // Percent-encodes a query value (keeping the wildcard *).
   std::string escape(const std::string& value);
+  // The HTTP status of the last request (0: none came), also when it threw.
+  long lastStatus() const { return lastStatus_; }
 
  private:
   HttpResponse perform(const std::string& what, const std::string& url,
@@ -41,6 +49,7 @@ class HttpSession {
 
   PacsNode node_;
   void* curl_;
+  long lastStatus_ = 0;
 };
 
 }  // namespace voxray::pacs

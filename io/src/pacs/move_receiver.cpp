@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmnet/assoc.h>
 #include <dcmtk/dcmnet/dstorscp.h>
 
 #include "dimse_support.h"
@@ -16,14 +17,29 @@ class MoveReceiver::Scp : public DcmStorageSCP {
   std::atomic<bool> stop{false};
   std::atomic<int> total{0};
   RetrieveOptions options;
+  IdleDeadline* idle = nullptr;
   mutable std::mutex mutex;
   mutable std::vector<std::string> files;
   OFCondition result = EC_Normal;
+  bool transportSet = false;
 
  protected:
   // Polled every second (non-blocking mode) and after each association.
   OFBool stopAfterConnectionTimeout() override { return stop.load(); }
   OFBool stopAfterCurrentAssociation() override { return stop.load(); }
+  // The node's associations with the receiver wait on the C-MOVE's deadline too: DCMTK's
+  // own waits restart with each part of a PDU, so a frozen node held the receiver up to
+  // another timeout after the C-MOVE had given up.
+  OFCondition waitForAssociationRQ(T_ASC_Network* network) override {
+    if (!transportSet) {
+      OFCondition cond =
+          ASC_setTransportLayer(network, new CancellableTransport(options.cancel, idle), 1);
+      if (cond.bad()) return cond;
+      transportSet = true;
+    }
+    return DcmStorageSCP::waitForAssociationRQ(network);
+  }
+  void notifyRECEIVEProgress(const unsigned long) override { idle->touch(); }
   Uint16 checkAndProcessSTORERequest(const T_DIMSE_C_StoreRQ& request,
                                      DcmFileFormat& file) override {
     if (options.cancel && options.cancel->load()) return STATUS_STORE_Refused_OutOfResources;
@@ -31,6 +47,7 @@ class MoveReceiver::Scp : public DcmStorageSCP {
   }
   void notifyInstanceStored(const OFString& filename, const OFString&, const OFString&,
                             DcmDataset*) const override {
+    idle->touch();
     std::lock_guard<std::mutex> lock(mutex);
     files.push_back(filename.c_str());
     if (options.progress) {
@@ -43,9 +60,10 @@ class MoveReceiver::Scp : public DcmStorageSCP {
 };
 
 MoveReceiver::MoveReceiver(const PacsNode& node, const std::string& folder,
-                           const RetrieveOptions& options)
+                           const RetrieveOptions& options, IdleDeadline* idle)
     : scp_(std::make_unique<Scp>()) {
   scp_->options = options;
+  scp_->idle = idle;
   scp_->setAETitle(node.callingAe.c_str());
   scp_->setPort(Uint16(node.receivePort));
   scp_->setOutputDirectory(folder.c_str());
@@ -54,6 +72,9 @@ MoveReceiver::MoveReceiver(const PacsNode& node, const std::string& folder,
   scp_->setFilenameExtension(".dcm");
   scp_->setConnectionBlockingMode(DUL_NOBLOCK);
   scp_->setConnectionTimeout(1);
+  // Non-blocking: each wait for the node (a command, each part of a PDU) ends after its
+  // timeout. Blocking, a PDU's rest waited for DCMTK's 60 s socket timeout.
+  scp_->setDIMSEBlockingMode(DIMSE_NONBLOCKING);
   scp_->setDIMSETimeout(Uint32(node.timeoutSec));
   scp_->setACSETimeout(Uint32(node.timeoutSec));
   scp_->setRespondWithCalledAETitle(OFFalse);

@@ -44,8 +44,9 @@ std::string multipartBoundary(const std::string& contentType) {
   return b;
 }
 
-MultipartSplitter::MultipartSplitter(const std::string& boundary, OnPart onPart)
-    : delimiter_("\r\n--" + boundary), onPart_(std::move(onPart)) {
+MultipartSplitter::MultipartSplitter(const std::string& boundary, OnPart onPart,
+                                     size_t maxPartBytes)
+    : delimiter_("\r\n--" + boundary), onPart_(std::move(onPart)), maxPartBytes_(maxPartBytes) {
   buffer_ = "\r\n";  // the first delimiter may open the body without a CRLF before it
 }
 
@@ -62,11 +63,15 @@ void MultipartSplitter::parse() {
       if (at == std::string::npos) {
         if (state_ == State::Preamble && buffer_.size() > kMaxPreambleBytes)
           throw inputError("the multipart body does not start with its boundary");
+        // The part's content is all of the buffer but what may start a delimiter.
+        if (state_ == State::Content && buffer_.size() + 1 > maxPartBytes_ + delimiter_.size())
+          throw partTooLarge();
         scanFrom_ =
             buffer_.size() >= delimiter_.size() ? buffer_.size() - delimiter_.size() + 1 : 0;
         return;
       }
       if (state_ == State::Content) {
+        if (at > maxPartBytes_) throw partTooLarge();
         std::string part;
         if (at >= kHandOverBytes) {
           // A large part is the buffer's head: the buffer becomes the part (no copy), and
@@ -120,6 +125,13 @@ void MultipartSplitter::parse() {
       return;
     }
   }
+}
+
+Error MultipartSplitter::partTooLarge() const {
+  return inputError("a part of the server's multipart answer is larger than " +
+                    (maxPartBytes_ >= (1u << 20) ? std::to_string(maxPartBytes_ >> 20) + " MiB"
+                                                 : std::to_string(maxPartBytes_) + " bytes") +
+                    ", more than Voxray holds for one image; nothing was kept");
 }
 
 void MultipartSplitter::finish() {

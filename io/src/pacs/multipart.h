@@ -6,17 +6,25 @@
 #include <functional>
 #include <string>
 
+#include "voxray/io/error.h"
+
 namespace voxray::pacs {
 
 // The boundary parameter of a multipart Content-Type; throws Input when there is none.
 std::string multipartBoundary(const std::string& contentType);
+
+// The largest part kept: one DICOM instance held in memory until it is complete (an
+// enhanced multi-frame series of 2,000 CT slices is about 1 GiB).
+constexpr size_t kMaxPartBytes = size_t(2) << 30;
 
 class MultipartSplitter {
  public:
   // ON_PART gets each part's headers (as sent, lower-cased names) and its content, which it
   // may keep (handed over, not copied: a part of a CT series is half a megabyte).
   using OnPart = std::function<void(const std::string& headers, std::string content)>;
-  MultipartSplitter(const std::string& boundary, OnPart onPart);
+  // A part larger than MAX_PART_BYTES throws Input.
+  MultipartSplitter(const std::string& boundary, OnPart onPart,
+                    size_t maxPartBytes = kMaxPartBytes);
   void feed(const char* data, size_t size);
   // Throws Input when the body ended before its close delimiter (truncated).
   void finish();
@@ -24,6 +32,7 @@ class MultipartSplitter {
 
  private:
   void parse();
+  Error partTooLarge() const;
 
   enum class State { Preamble, AfterDelimiter, Headers, Content, Done };
   std::string delimiter_;  // "\r\n--" + boundary
@@ -33,6 +42,7 @@ class MultipartSplitter {
   State state_ = State::Preamble;
   std::string headers_;
   int parts_ = 0;
+  size_t maxPartBytes_;
 };
 
 }  // namespace voxray::pacs

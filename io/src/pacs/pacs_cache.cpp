@@ -8,9 +8,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
+#include "staged_series.h"
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/error.h"
 
@@ -58,15 +60,6 @@ uint64_t diskBytes(const fs::path& path) {
   return n;
 }
 
-// Removes a staging folder whatever happens to the retrieval.
-struct Staging {
-  fs::path path;
-  ~Staging() {
-    std::error_code ignored;
-    if (!path.empty()) fs::remove_all(path, ignored);
-  }
-};
-
 }  // namespace
 
 // The index's form (index.json: {"series": [...]}), for nlohmann-json.
@@ -89,6 +82,8 @@ PacsCache::PacsCache(std::string root, uint64_t capBytes)
   if (ec)
     throw outputError("Cannot create the PACS cache " + root_ + " (" + ec.message() +
                       "): set VOXRAY_CACHE_DIR to a writable folder");
+  // What a crashed or killed retrieval left: it would count against the cap for ever.
+  pacs::removeStaleStaging(root_ + "/staging");
 }
 
 std::vector<CachedSeries> PacsCache::load() const {
@@ -178,10 +173,14 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
                                  const std::string& seriesUid, const RetrieveOptions& options,
                                  DicomImport* import) {
   if (auto hit = find(seriesUid)) return *hit;
-  Staging staging;
-  std::string pattern = root_ + "/staging/" + folderName(seriesUid) + "-XXXXXX";
-  if (!mkdtemp(pattern.data())) throw fullError("Cannot create a staging folder");
-  staging.path = pattern;
+  std::optional<pacs::StagingFolder> staging;
+  try {
+    staging.emplace(root_ + "/staging", folderName(seriesUid));
+  } catch (const Error&) {
+    if (fileSystemFull(root_)) throw fullError("Cannot create a staging folder");
+    throw;
+  }
+  const std::string pattern = staging->path();
   const std::string folder = root_ + "/series/" + folderName(seriesUid);
   RetrieveOptions withImport = options;
   if (import)
@@ -202,15 +201,17 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
     throw;
   }
   if (options.cancel && options.cancel->load()) throw cancelledError("Retrieval cancelled");
+  // Complete only once what arrived is the series, whole: a node may send other objects.
+  pacs::verifyStagedSeries(pattern, seriesUid, files);
   CachedSeries entry{studyUid, seriesUid, folder, 0, now(), int(files.size())};
-  entry.bytes = diskBytes(staging.path);
+  entry.bytes = diskBytes(pattern);
   std::error_code ec;
   fs::remove_all(entry.folder, ec);  // a stale folder the index no longer knows
-  fs::rename(staging.path, entry.folder, ec);
+  fs::rename(pattern, entry.folder, ec);
   if (ec)
     throw outputError("Cannot move the retrieved series into " + entry.folder + " (" +
                       ec.message() + ")");
-  staging.path.clear();
+  staging->kept();
   auto all = load();
   all.push_back(entry);
   evict(all, {seriesUid});

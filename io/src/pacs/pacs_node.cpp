@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pacs_messages.h"
 #include "voxray/io/error.h"
 #include "voxray/io/pacs.h"
 
@@ -29,7 +30,7 @@ int parsePort(const std::string& text, const std::string& address) {
 }  // namespace
 
 std::string PacsNode::label() const {
-  if (transport == Transport::Web) return baseUrl;
+  if (transport == Transport::Web) return pacs::redactUrl(baseUrl);
   return calledAe + "@" + host + ":" + std::to_string(port);
 }
 
@@ -46,7 +47,9 @@ PacsNode parsePacsNode(const std::string& address) {
     return node;
   }
   if (!startsWith(address, "dicom://"))
-    throw inputError("PACS address '" + address + "' is not a node name or address" + kAddressHelp);
+    // Redacted: an address of another scheme may still hold a password or a token.
+    throw inputError("PACS address '" + pacs::redactUrl(address) +
+                     "' is not a node name or address" + kAddressHelp);
   std::string rest = address.substr(8);
   size_t at = rest.find('@'), colon = rest.rfind(':');
   if (at == std::string::npos || at == 0 || colon == std::string::npos || colon < at)

@@ -2,13 +2,15 @@
 // files as parts arrive, transfer syntaxes as stored), STOW-RS send.
 #include <algorithm>
 #include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "../dicom/codec_registry.h"
 #include "http_session.h"
+#include "match_values.h"
 #include "multipart.h"
+#include "pacs_messages.h"
+#include "sendable.h"
 #include "transports.h"
 #include "voxray/io/error.h"
 #include "voxray/io/pacs.h"
@@ -27,7 +29,7 @@ std::string value(const json& object, const char* tag) {
   const json& v = (*it)["Value"][0];
   if (v.is_object()) return v.value("Alphabetic", "");
   if (v.is_string()) return v.get<std::string>();
-  if (v.is_number()) return std::to_string(v.get<long long>());
+  if (v.is_number()) return v.dump();  // as sent: countValue takes whole numbers only
   return {};
 }
 
@@ -40,13 +42,7 @@ std::string values(const json& object, const char* tag) {
   return out;
 }
 
-int number(const json& object, const char* tag) {
-  try {
-    return std::stoi(value(object, tag));
-  } catch (const std::exception&) {
-    return 0;
-  }
-}
+int number(const json& object, const char* tag) { return countValue(value(object, tag)); }
 
 PacsMatch toMatch(const json& o) {
   PacsMatch m;
@@ -75,21 +71,31 @@ class WebClient : public PacsClient {
  public:
   explicit WebClient(PacsNode node) : node_(std::move(node)), http_(node_) {}
 
-  void echo() override { http_.get(node_.baseUrl + "/studies?limit=1", kDicomJson); }
+  // A QIDO search that answers 200 with DICOM JSON (or 204, nothing): a redirect (to a login
+  // page) or a web page is not a DICOMweb server's answer.
+  void echo() override { dicomJson(http_.get(url("/studies", "limit=1"), kDicomJson)); }
 
   // QIDO-RS pages by limit and offset: one request per page until a short page (or the
-  // query's limit, asked one past to learn whether there are more).
+  // query's limit, asked one past to learn whether there are more). A page that repeats the
+  // one before (a node that ignores offset) or the cap on matches ends it, with "more".
   FindResult findPages(const PacsQuery& q, const FindOptions& options) override {
     FindResult result;
     const size_t pageSize = std::max<size_t>(options.pageSize, 1);
+    const size_t limit = q.limit ? std::min(q.limit, options.maxMatches) : options.maxMatches;
+    std::vector<PacsMatch> last;
     for (PacsQuery page = q;; page.offset += page.limit) {
       if (options.cancel && options.cancel->load()) throw cancelledError("Search cancelled");
-      size_t wanted = q.limit ? q.limit + 1 - result.matches.size() : pageSize;
-      page.limit = std::min(pageSize, wanted);
+      page.limit = std::min(pageSize, limit + 1 - result.matches.size());
       std::vector<PacsMatch> got = findOnce(page);
-      if (q.limit && result.matches.size() + got.size() > q.limit) {
+      if (got.size() > page.limit) got.resize(page.limit);  // a node that ignores limit
+      if (!got.empty() && samePage(got, last)) {
         result.more = true;
-        got.resize(q.limit - result.matches.size());
+        return result;
+      }
+      last = got;
+      if (result.matches.size() + got.size() > limit) {
+        result.more = true;
+        got.resize(limit - result.matches.size());
       }
       result.matches.insert(result.matches.end(), got.begin(), got.end());
       if (options.page && !got.empty()) options.page(got);
@@ -98,19 +104,68 @@ class WebClient : public PacsClient {
   }
 
  private:
+  static bool samePage(const std::vector<PacsMatch>& a, const std::vector<PacsMatch>& b) {
+    return a.size() == b.size() &&
+           std::equal(a.begin(), a.end(), b.begin(), [](const PacsMatch& x, const PacsMatch& y) {
+             return x.studyInstanceUid == y.studyInstanceUid &&
+                    x.seriesInstanceUid == y.seriesInstanceUid;
+           });
+  }
+
+  // The node's base URL with PATH added, and its own query (a token) after PARAMS.
+  std::string url(const std::string& path, const std::string& params = {}) const {
+    const size_t q = node_.baseUrl.find('?');
+    std::string query = q == std::string::npos ? "" : node_.baseUrl.substr(q + 1);
+    if (!params.empty()) query = params + (query.empty() ? "" : "&" + query);
+    return node_.baseUrl.substr(0, q) + path + (query.empty() ? "" : "?" + query);
+  }
+
+  // The DICOM JSON array of a QIDO answer (none for 204 or an empty body); throws Input for
+  // anything else.
+  json dicomJson(const HttpResponse& r) const {
+    std::string why;
+    if (r.status == 204 || (r.status == 200 && r.body.empty())) return json::array();
+    if (r.status != 200) {
+      why = "it answered HTTP " + std::to_string(r.status) +
+            (r.status >= 300 && r.status < 400 ? " (a redirect)" : "");
+    } else {
+      json answer = json::parse(r.body, nullptr, false);
+      if (answer.is_array()) return answer;
+      why = "its answer is not DICOM JSON";
+    }
+    throw inputError("DICOMweb " + node_.label() + ": " + why +
+                     ": it may not be a DICOMweb server; check the node's base URL (e.g. "
+                     ".../dicom-web)");
+  }
+
+  // A 404 for one study's resource: whether the node lacks the study (a search for it finds
+  // nothing) or just the series. False when the node does not answer searches either: then
+  // the base URL is wrong, as the 404 said.
+  bool studyKnown(const std::string& studyUid, bool& nodeAnswers) {
+    nodeAnswers = false;
+    try {
+      json found = dicomJson(http_.get(
+          url("/studies", "StudyInstanceUID=" + http_.escape(studyUid) + "&limit=1"), kDicomJson));
+      nodeAnswers = true;
+      return !found.empty();
+    } catch (const Error&) {
+      return false;
+    }
+  }
+
   std::vector<PacsMatch> findOnce(const PacsQuery& q) {
     if (q.level == QueryLevel::Patient)
       throw inputError("DICOMweb (QIDO-RS) has no patient-level search: search studies instead");
-    std::string url = node_.baseUrl + "/studies";
+    std::string path = "/studies";
     if (q.level == QueryLevel::Series) {
       if (q.studyInstanceUid.empty())
         throw inputError("A series search needs the study's Study Instance UID");
-      url.append("/").append(http_.escape(q.studyInstanceUid)).append("/series");
+      path.append("/").append(http_.escape(q.studyInstanceUid)).append("/series");
     }
     std::string params;
     auto add = [&](const char* key, const std::string& v) {
       if (v.empty()) return;
-      params.append(params.empty() ? "?" : "&").append(key).append("=").append(http_.escape(v));
+      params.append(params.empty() ? "" : "&").append(key).append("=").append(http_.escape(v));
     };
     add("PatientName", q.patientName);
     add("PatientID", q.patientId);
@@ -122,15 +177,20 @@ class WebClient : public PacsClient {
     for (const char* field :
          {"00081030", "00201206", "00201208", "0008103E", "00201209", "00080061", "00200011"})
       add("includefield", field);
-    HttpResponse r = http_.get(url + params, kDicomJson);
     std::vector<PacsMatch> matches;
-    if (r.status == 204 || r.body.empty()) return matches;
+    json answer;
     try {
-      for (const auto& o : json::parse(r.body)) matches.push_back(toMatch(o));
-    } catch (const json::exception&) {
-      throw inputError("DICOMweb " + node_.label() +
-                       ": the search answer is not DICOM JSON: it may not be a DICOMweb server");
+      answer = dicomJson(http_.get(url(path, params), kDicomJson));
+    } catch (const Error&) {
+      // A study the node does not hold has no series: no matches, as C-FIND says.
+      bool nodeAnswers = false;
+      if (q.level == QueryLevel::Series && http_.lastStatus() == 404 &&
+          !studyKnown(q.studyInstanceUid, nodeAnswers) && nodeAnswers)
+        return matches;
+      throw;
     }
+    for (const auto& o : answer)
+      if (o.is_object()) matches.push_back(toMatch(o));
     return matches;
   }
 
@@ -161,10 +221,17 @@ class WebClient : public PacsClient {
         splitter = std::make_unique<MultipartSplitter>(multipartBoundary(type), onPart);
       splitter->feed(data, size);
     };
-    std::string url =
-        node_.baseUrl + "/studies/" + http_.escape(studyUid) + "/series/" + http_.escape(seriesUid);
-    http_.get(url, "multipart/related; type=\"application/dicom\"; transfer-syntax=*", sink,
-              options.cancel);
+    try {
+      http_.get(url("/studies/" + http_.escape(studyUid) + "/series/" + http_.escape(seriesUid)),
+                "multipart/related; type=\"application/dicom\"; transfer-syntax=*", sink,
+                options.cancel);
+    } catch (const Error& e) {
+      bool nodeAnswers = false;
+      if (e.kind() == Error::Kind::Cancelled || http_.lastStatus() != 404) throw;
+      const bool known = studyKnown(studyUid, nodeAnswers);
+      if (!nodeAnswers) throw;  // the base URL is wrong, as the 404 said
+      throw inputError(unknownSeriesMessage(node_, studyUid, seriesUid, known));
+    }
     std::string where = "DICOMweb " + node_.label() + ": series " + seriesUid;
     if (!splitter) throw inputError(where + ": the server sent no images");
     try {
@@ -179,19 +246,12 @@ class WebClient : public PacsClient {
   void store(const std::vector<std::string>& files, const std::atomic<bool>* cancel) override {
     const std::string boundary = "voxray-stow-7d0c1e5a";
     std::string body;
-    for (const auto& f : files) {
-      std::ifstream in(f, std::ios::binary);
-      if (!in) throw inputError("Cannot read " + f + "; nothing was sent");
-      std::stringstream content;
-      content << in.rdbuf();
-      body +=
-          "--" + boundary + "\r\nContent-Type: application/dicom\r\n\r\n" + content.str() + "\r\n";
-    }
+    for (const auto& f : loadSendableFiles(files))
+      body += "--" + boundary + "\r\nContent-Type: application/dicom\r\n\r\n" + *f.bytes + "\r\n";
     body += "--" + boundary + "--\r\n";
-    HttpResponse r =
-        http_.post(node_.baseUrl + "/studies",
-                   "multipart/related; type=\"application/dicom\"; boundary=" + boundary, body,
-                   kDicomJson, cancel);
+    HttpResponse r = http_.post(
+        url("/studies"), "multipart/related; type=\"application/dicom\"; boundary=" + boundary,
+        body, kDicomJson, cancel);
     try {
       json answer = r.body.empty() ? json::object() : json::parse(r.body);
       if (answer.contains("00081198") && answer["00081198"].contains("Value") &&

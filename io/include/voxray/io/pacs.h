@@ -23,9 +23,11 @@ struct PacsNode {
   // DICOMweb
   std::string baseUrl;  // without a trailing '/', e.g. https://pacs.example/dicom-web
   std::string user, password, bearerToken;
-  std::string caFile;   // extra CA bundle; empty = the system store
-  int timeoutSec = 30;  // connect and idle (no byte for this long) timeout
-  // For messages: the address without credentials.
+  std::string caFile;  // extra CA bundle; empty = the system store
+  // Connect and idle timeout: the most any wait for the node takes, and a transfer gives up
+  // once no byte came for this long.
+  int timeoutSec = 30;
+  // For messages: the address without credentials or query values (tokens).
   std::string label() const;
 };
 
@@ -57,7 +59,9 @@ struct PacsMatch {
   std::string patientName, patientId;  // identifying: display on request only
   std::string studyInstanceUid, studyDate, studyDescription, accessionNumber, modalities;
   std::string seriesInstanceUid, seriesDescription;
-  int seriesNumber = 0, numberOfSeries = 0, numberOfInstances = 0;
+  int seriesNumber = 0;
+  // 0: the node did not say (or sent no whole number); a real study or series has one.
+  int numberOfSeries = 0, numberOfInstances = 0;
 };
 
 // How a search hands its matches over: in pages, as the node sends them, so a caller shows
@@ -66,11 +70,16 @@ struct FindOptions {
   std::function<void(const std::vector<PacsMatch>& page)> page;  // may be empty
   size_t pageSize = 500;  // matches per page; DICOMweb asks for this many per request
   const std::atomic<bool>* cancel = nullptr;  // true: stop (C-CANCEL), throw Cancelled
+  // A search without a limit (or a larger one) stops here, with FindResult::more: a node
+  // that sends matches without end (or the same page again) must not fill the memory.
+  size_t maxMatches = 100000;
 };
 
 struct FindResult {
   std::vector<PacsMatch> matches;  // every page, in order
-  bool more = false;               // the node holds more than the query's limit
+  // The node holds more than the query's limit (or FindOptions::maxMatches), or it sent a
+  // page again (it ignores the offset): the matches are its first ones.
+  bool more = false;
 };
 
 struct RetrieveProgress {
@@ -102,7 +111,8 @@ class PacsClient {
                                                   const std::string& seriesUid,
                                                   const std::string& folder,
                                                   const RetrieveOptions& options) = 0;
-  // Sends DICOM files (C-STORE; STOW-RS). Throws naming the first file refused, Cancelled
+  // Sends DICOM files (C-STORE; STOW-RS): regular files that parse as DICOM, all checked
+  // before anything is sent. Throws naming the first file refused, Cancelled
   // when *cancel becomes true (DIMSE: checked before each file and after the association).
   virtual void store(const std::vector<std::string>& files,
                      const std::atomic<bool>* cancel = nullptr) = 0;

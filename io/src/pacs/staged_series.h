@@ -1,0 +1,36 @@
+#pragma once
+// The PACS cache's staging folders (staging/<series>-XXXXXX): a retrieval writes there and
+// the folder becomes the cached series only once what arrived is checked to be the whole
+// series. Each live staging folder is held by a lock (flock), so that a cache opened later
+// removes only the ones a crashed or killed retrieval left behind.
+#include <string>
+#include <vector>
+
+namespace voxray::pacs {
+
+class StagingFolder {
+ public:
+  // Creates STAGING_ROOT/NAME-XXXXXX and locks it; throws Output when it cannot.
+  StagingFolder(const std::string& stagingRoot, const std::string& name);
+  // Removes the folder unless it was kept (renamed into the cache).
+  ~StagingFolder();
+  StagingFolder(const StagingFolder&) = delete;
+  StagingFolder& operator=(const StagingFolder&) = delete;
+  const std::string& path() const { return path_; }
+  void kept() { path_.clear(); }
+
+ private:
+  std::string path_;
+  int fd_ = -1;  // holds the lock
+};
+
+// Removes the staging folders no live retrieval holds (left by a crash or a kill). Folders
+// younger than a minute stay: their retrieval may not have locked them yet.
+void removeStaleStaging(const std::string& stagingRoot);
+
+// Throws Input (nothing kept) unless FILES are all FOLDER holds and each parses as DICOM
+// with Series Instance UID SERIES_UID, a SOP Class UID and its own SOP Instance UID.
+void verifyStagedSeries(const std::string& folder, const std::string& seriesUid,
+                        const std::vector<std::string>& files);
+
+}  // namespace voxray::pacs

@@ -1,0 +1,69 @@
+// Caps on what a node may send (issue 39, defect 13): a search stops at FindOptions'
+// maxMatches or when a page repeats; a DICOM JSON answer over kMaxAnswerBytes and an HTTP
+// error's endless body are not read on.
+#include <gmock/gmock.h>
+
+#include "canned_http_server.h"
+#include "http_session.h"
+#include "pacs_test_support.h"
+
+namespace voxray::test {
+namespace {
+
+using testing::AllOf;
+using testing::HasSubstr;
+using AnswerCapsTest = PacsTest;
+
+// Orthanc holds two studies; a search without a limit and a cap of 1 stops after one.
+TEST_F(AnswerCapsTest, SearchWithoutLimitStopsAtTheCap) {
+  for (const PacsNode& node : {server().dimseNode(), server().webNode()}) {
+    FindOptions options;
+    options.maxMatches = 1;
+    FindResult r = makePacsClient(node)->findPages(PacsQuery{}, options);
+    EXPECT_EQ(r.matches.size(), 1u) << node.label();
+    EXPECT_TRUE(r.more) << node.label();
+  }
+}
+
+// A node that ignores offset sends its first page again: the search ends there (it asked
+// without end).
+TEST(AnswerCapsWebTest, SearchStopsWhenAPageRepeats) {
+  const std::string page =
+      R"([{"0020000D":{"vr":"UI","Value":["1.2.3.1"]}},{"0020000D":{"vr":"UI","Value":["1.2.3.2"]}}])";
+  CannedHttpServer server(CannedHttpServer::answer("200 OK", "application/dicom+json", page), 4);
+  FindOptions options;
+  options.pageSize = 2;
+  FindResult r = makePacsClient(server.node())->findPages(PacsQuery{}, options);
+  ASSERT_EQ(r.matches.size(), 2u);
+  EXPECT_EQ(r.matches[1].studyInstanceUid, "1.2.3.2");
+  EXPECT_TRUE(r.more);
+}
+
+// 80 MiB of "DICOM JSON": refused once 64 MiB came, not read to the end.
+TEST(AnswerCapsWebTest, SearchAnswerOverTheCapIsRefused) {
+  const size_t size = size_t(80) << 20;
+  CannedHttpServer server(
+      "HTTP/1.1 200 OK\r\nContent-Type: application/dicom+json\r\n"
+      "Content-Length: " +
+          std::to_string(size) + "\r\n\r\n[",
+      1, size - 1);
+  std::string m = failure([&] { makePacsClient(server.node())->find(PacsQuery{}); });
+  EXPECT_THAT(m, AllOf(HasSubstr("larger than 64 MiB"), HasSubstr("127.0.0.1")));
+  EXPECT_LT(server.sent.load(), pacs::kMaxAnswerBytes + (size_t(8) << 20));
+}
+
+// An HTTP 500 with a 256 MiB body: the status is the message; the body is not read on.
+TEST(AnswerCapsWebTest, ErrorBodyIsNotReadToTheEnd) {
+  const size_t size = size_t(256) << 20;
+  CannedHttpServer server(
+      "HTTP/1.1 500 Internal Server Error\r\nContent-Type: text/plain\r\n"
+      "Content-Length: " +
+          std::to_string(size) + "\r\n\r\n",
+      1, size);
+  std::string m = failure([&] { makePacsClient(server.node())->find(PacsQuery{}); });
+  EXPECT_THAT(m, HasSubstr("HTTP 500"));
+  EXPECT_LT(server.sent.load(), size_t(32) << 20);
+}
+
+}  // namespace
+}  // namespace voxray::test
