@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "../dicom/codec_registry.h"
+#include "dicom_json.h"
 #include "http_session.h"
-#include "match_values.h"
 #include "multipart.h"
 #include "pacs_messages.h"
 #include "sendable.h"
@@ -21,45 +21,6 @@ namespace {
 using nlohmann::json;
 
 const char* kDicomJson = "application/dicom+json";
-
-// The first value of a DICOM JSON attribute as text (PN: its alphabetic form).
-std::string value(const json& object, const char* tag) {
-  auto it = object.find(tag);
-  if (it == object.end() || !it->contains("Value") || (*it)["Value"].empty()) return {};
-  const json& v = (*it)["Value"][0];
-  if (v.is_object()) return v.value("Alphabetic", "");
-  if (v.is_string()) return v.get<std::string>();
-  if (v.is_number()) return v.dump();  // as sent: countValue takes whole numbers only
-  return {};
-}
-
-std::string values(const json& object, const char* tag) {
-  auto it = object.find(tag);
-  std::string out;
-  if (it == object.end() || !it->contains("Value")) return out;
-  for (const auto& v : (*it)["Value"])
-    if (v.is_string()) out.append(out.empty() ? "" : "\\").append(v.get<std::string>());
-  return out;
-}
-
-int number(const json& object, const char* tag) { return countValue(value(object, tag)); }
-
-PacsMatch toMatch(const json& o) {
-  PacsMatch m;
-  m.patientName = value(o, "00100010");
-  m.patientId = value(o, "00100020");
-  m.studyInstanceUid = value(o, "0020000D");
-  m.studyDate = value(o, "00080020");
-  m.studyDescription = value(o, "00081030");
-  m.accessionNumber = value(o, "00080050");
-  m.modalities = o.contains("00080061") ? values(o, "00080061") : value(o, "00080060");
-  m.numberOfSeries = number(o, "00201206");
-  m.numberOfInstances = o.contains("00201208") ? number(o, "00201208") : number(o, "00201209");
-  m.seriesInstanceUid = value(o, "0020000E");
-  m.seriesDescription = value(o, "0008103E");
-  m.seriesNumber = number(o, "00200011");
-  return m;
-}
 
 std::string fileName(const std::string& folder, int index) {
   char name[32];
