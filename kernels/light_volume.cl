@@ -4,7 +4,10 @@
 // shaded sample by frame_light (shading.cl). The models are those of the Monte Carlo
 // reference (engine/include/voxray/engine/monte_carlo_reference.h):
 //   sigma    the extinction per mm of the classified volume, -ln(1 - a) / reference step,
-//            averaged over each grid cell (extinction is what integrates along a ray).
+//            averaged over each grid cell (extinction is what integrates along a ray). iso
+//            (light_sigma's `iso`): the surface, opaque in the iso range and clear outside
+//            it, as -ln(1 - f) over the cell's edge for the fraction f of the cell inside
+//            (iso's table gives every value the surface colour at opacity 1, air too).
 //   shadow   exp(-optical depth) from the grid point to the light, in the clip box; the
 //            shading reads it the shadow offset (P->light_march.w) toward the light from
 //            the sample (frame_light), so that no surface shadows itself.
@@ -42,8 +45,9 @@ inline bool block_occupied(__constant RaycastParams* P, __global const uchar* le
 
 // use_leap: dvr frames with empty-space skipping, whose occupancy (leap) is that of this
 // table's opacities: a cell only transparent voxels reach has sigma 0 without reading them.
+// iso: the frame is iso (the occluder is the iso range, not the table).
 __kernel void light_sigma(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
-                          __global const uchar* leap, int use_leap, __global float* sigma,
+                          __global const uchar* leap, int use_leap, int iso, __global float* sigma,
                           int points) {
   int gid = get_global_id(0);
   if (gid >= points) return;
@@ -59,17 +63,30 @@ __kernel void light_sigma(VOLUME_ARG, __constant RaycastParams* P, __global cons
     sigma[gid] = 0.0f;
     return;
   }
+  int inside = 0;
   for (int z = 0; z < sub; ++z)
     for (int y = 0; y < sub; ++y)
       for (int x = 0; x < sub; ++x) {
         float3 p = clamp(base + (float3)(x, y, z) * spacing, (float3)(0.0f), hi);
-        float a = clamp(lut_lookup(lut, P, sample_volume(VOLUME, P, p)).w, 0.0f, 0.999999f);
-        sum += -log(1.0f - a);
+        float value = sample_volume(VOLUME, P, p);
+        if (iso) {
+          inside += in_iso(P, value);
+        } else {
+          float a = clamp(lut_lookup(lut, P, value).w, 0.0f, 0.999999f);
+          sum += -log(1.0f - a);
+        }
       }
+  float samples = (float)(sub * sub * sub);
+  // iso: the surface is opaque where it is, so a ray crossing a cell that fraction f of it
+  // fills passes with 1 - f, -ln(1 - f) over the cell's edge. The mean extinction (an opaque
+  // sample's over a reference step, times f) closed a cell the surface only touches: it
+  // grew every bone by about a cell, and its shadows over the lit surfaces near it.
+  float f = min((float)inside / samples, 0.999999f);
+  float mean = iso ? -log(1.0f - f) / cell : sum / samples;
   // What the clip box removes casts no shadow (at the grid's resolution for the sweep).
   float3 g = convert_float3(grid_point(P, gid)) * cell;
   bool kept = all(g >= P->clip_lo.xyz - 0.5f * cell) && all(g <= P->clip_hi.xyz + 0.5f * cell);
-  sigma[gid] = kept ? sum / ((float)(sub * sub * sub) * P->view.w) : 0.0f;
+  sigma[gid] = kept ? mean / P->view.w : 0.0f;
 }
 
 // exp(-optical depth) from voxel position p along dv (voxels per mm), from `skip` to

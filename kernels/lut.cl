@@ -15,6 +15,11 @@ inline float4 lut_lookup(__global const float4* lut, __constant RaycastParams* P
   return mix(lut[k], lut[k1], x - i);
 }
 
+// iso: whether stored value v lies in the surface's range (P->values.x .. y).
+inline bool in_iso(__constant RaycastParams* P, float v) {
+  return v >= P->values.x && v <= P->values.y;
+}
+
 // Opacity a of a reference-length step, for a segment `ratio` times that length:
 // 1 - (1 - a)^ratio, on a fast path (pow costs a fifth of a CPU dvr frame); a = 1 stays
 // exactly 1. A macro so that float (native_) and the floatN lanes of

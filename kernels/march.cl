@@ -20,10 +20,6 @@ inline float3 world_gradient(VOLUME_ARG, __constant RaycastParams* P, float3 p) 
   return mat_mul(P->grad_x, P->grad_y, P->grad_z, g);
 }
 
-inline bool in_iso(__constant RaycastParams* P, float v) {
-  return v >= P->values.x && v <= P->values.y;
-}
-
 // First hit of the iso range, refined by bisection between the last miss and the hit.
 // *hit_out (kept by HIT_OUTPUT variants): the hit in voxel coordinates, w 1 for a
 // crossing, 0 for the first sample (entry face or clip cap); untouched without a hit.

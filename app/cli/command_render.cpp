@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "input_options.h"
 #include "render_flags.h"
+#include "render_state_model.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/quality.h"
 #include "voxray/engine/raycaster.h"
@@ -27,6 +28,9 @@ struct RenderOptions {
 
 // What this command line renders: the session's state (when --session is given) with what
 // was given here on top. INPUT, input flags, --quality and render flags win over the session.
+// --quality is picked as the workstation's quality box picks it (pickQualityPreset: its
+// reconstruction and gradient), before the render flags, so that --interp or --gradient
+// given with it win as the Rendering group's do after a pick.
 Session sessionToRender(const RenderOptions& o) {
   Session s;
   s.qualityPreset.clear();  // no session: the parameters as given (custom)
@@ -44,19 +48,25 @@ Session sessionToRender(const RenderOptions& o) {
   }
   if (!o.input.input.empty()) s.input.path = o.input.input;
   for (const auto& [key, value] : o.input.flags) s.input.flags[key] = value;
-  if (!o.quality.empty()) s.qualityPreset = findQualityPreset(o.quality).name;
+  if (!o.quality.empty()) {
+    const QualityPreset& q = findQualityPreset(o.quality);
+    s.qualityPreset = q.name;
+    s.render = pickQualityPreset(s.render, q);
+  }
   applyRenderValues(s.render, o.flags.given);
   return s;
 }
 
-// The frame to render: with a session or --quality, as the workstation's view at rest
-// (settledFrame); the size is --size when given, else the session's view size at its
+// The frame to render: with a session or --quality, the workstation's view at rest
+// (planFrame); the size is --size when given, else the session's view size at its
 // quality's image scale, else the default.
 RenderParams frameToRender(const RenderOptions& o, const Session& s, const Volume& v) {
   if (o.session.empty() && o.quality.empty()) return s.render;
-  const double minSpacing = v.minSpacingMm();
-  RenderParams p = settledFrame(s.render, s.qualityPreset, s.resolution,
-                                {s.render.width, s.render.height}, minSpacing);
+  ui::Quality q;
+  q.preset = s.qualityPreset;
+  q.resolution = s.resolution;
+  RenderParams p =
+      ui::planFrame(s.render, q, {s.render.width, s.render.height}, false, v.minSpacingMm());
   if (o.session.empty() || o.flags.given.count("size")) {
     p.width = s.render.width;
     p.height = s.render.height;
@@ -102,8 +112,10 @@ Run addRenderCommand(CLI::App& app) {
                   "render a saved session's 3D view: its input, parameters, view size and "
                   "quality; INPUT, input flags, --quality and render flags given here win");
   cmd->add_option("--quality", o->quality,
-                  "quality preset: interactive, balanced or reference (default: the "
-                  "session's; none without a session)");
+                  "quality preset: interactive, balanced or reference, picked as the "
+                  "workstation's quality box does (its reconstruction and gradient; --interp "
+                  "and --gradient given win) and rendered as its view at rest (its step, "
+                  "refinement and jitter) (default: the session's; none without a session)");
   cmd->add_option("--save-session", o->saveSession,
                   "also save this render's input, parameters and quality as a session file");
   cmd->add_flag("--force", o->force, "--save-session may replace an existing file");

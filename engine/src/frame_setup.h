@@ -16,6 +16,8 @@ struct FrameSetup {
   double stepMm = 1.0;
   double referenceStepMm = 1.0;  // the step the preset's opacities are defined for
   double isoLoStored = 0.0, isoHiStored = 0.0;
+  // iso: whether a stored value lies in the surface's range (the kernels' in_iso, lut.cl).
+  bool inIso(double stored) const { return stored >= isoLoStored && stored <= isoHiStored; }
   double windowLoStored = 0.0, windowInvWidth = 1.0;  // mip grey mapping
 };
 

@@ -74,16 +74,20 @@ void LightVolume::prepare(const FrameSetup& s, RaycastParams& k) const {
 }
 
 bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::string& options,
-                         int model, const cl::Buffer& params, const cl::Buffer& lut,
+                         int model, bool iso, const cl::Buffer& params, const cl::Buffer& lut,
                          const cl::Buffer* leap, const RaycastParams& k,
                          const std::vector<glm::vec4>& table) {
-  // What the sigma grid depends on: where the table sits in stored units and its opacities,
-  // the reference step, the clip box; the grid then adds the model and the march, and the
-  // light for shadows only.
-  std::vector<float> sigmaKey = {k.values.s[2],  k.values.s[3],  k.view.s[3],
-                                 k.clip_lo.s[0], k.clip_lo.s[1], k.clip_lo.s[2],
-                                 k.clip_hi.s[0], k.clip_hi.s[1], k.clip_hi.s[2]};
-  for (const glm::vec4& e : table) sigmaKey.push_back(e.a);
+  // What the sigma grid depends on: the reference step, the clip box, and for iso the iso
+  // range, else where the table sits in stored units and its opacities; the grid then adds
+  // the model and the march, and the light for shadows only.
+  std::vector<float> sigmaKey = {float(iso),     k.view.s[3],    k.clip_lo.s[0], k.clip_lo.s[1],
+                                 k.clip_lo.s[2], k.clip_hi.s[0], k.clip_hi.s[1], k.clip_hi.s[2]};
+  if (iso) {
+    sigmaKey.insert(sigmaKey.end(), {k.values.s[0], k.values.s[1]});
+  } else {
+    sigmaKey.insert(sigmaKey.end(), {k.values.s[2], k.values.s[3]});
+    for (const glm::vec4& e : table) sigmaKey.push_back(e.a);
+  }
   std::vector<float> key = {float(model), k.light_march.s[0], k.light_march.s[1]};
   if (model == 1) key.insert(key.end(), {k.light_v.s[0], k.light_v.s[1], k.light_v.s[2]});
   bool sigmaKept = sigmaKey == sigmaKey_;
@@ -104,6 +108,7 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
       sigma.setArg(arg++, lut);
       sigma.setArg(arg++, leap ? *leap : sigma_);  // unread without use_leap
       sigma.setArg(arg++, cl_int(leap != nullptr));
+      sigma.setArg(arg++, cl_int(iso));
       sigma.setArg(arg++, sigma_);
       sigma.setArg(arg, n);
       cl.queue.enqueueNDRangeKernel(sigma, cl::NullRange, global, cl::NullRange);

@@ -26,12 +26,13 @@ class LightVolume {
   void prepare(const FrameSetup& s, RaycastParams& k) const;
   // Rebuilds the grid on the device when the frame k (enqueued in params, its table in lut)
   // needs another; model is the LIGHTING switch (1 shadows, 2 ao), `options` compiles
-  // light_volume.cl for the volume's storage. Returns whether it rebuilt; then lastMs() is
+  // light_volume.cl for the volume's storage. iso: the frame is iso, whose occluder is its
+  // iso range (k.values.x .. y), not the table. Returns whether it rebuilt; then lastMs() is
   // the wall time of the build (kernel compilation included the first time). leap: the
   // frame's macro-cell occupancy when it follows this table's opacities (dvr with empty-space
   // skipping), so that empty cells are not read; else nullptr.
   bool update(ContextImpl& cl, const DeviceVolume& dev, const std::string& options, int model,
-              const cl::Buffer& params, const cl::Buffer& lut, const cl::Buffer* leap,
+              bool iso, const cl::Buffer& params, const cl::Buffer& lut, const cl::Buffer* leap,
               const RaycastParams& k, const std::vector<glm::vec4>& table);
   // Copies the grid into buf at byte offset (the raycaster's table buffer, behind the table).
   void copyInto(ContextImpl& cl, const cl::Buffer& buf, size_t offset) const;

@@ -34,7 +34,9 @@ struct Estimators {
   }
 
   double sigma(const glm::dvec3& pv) const {
-    double a = std::clamp(s.lut.lookup(sampleVolume(v, p.interp, pv)).a, 0.0, 1.0 - 1e-12);
+    const double value = sampleVolume(v, p.interp, pv);
+    double a = p.mode == Mode::Iso ? double(s.inIso(value)) : s.lut.lookup(value).a;
+    a = std::clamp(a, 0.0, 1.0 - 1e-12);
     return -std::log1p(-a) / s.referenceStepMm;
   }
 

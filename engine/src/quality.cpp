@@ -70,10 +70,15 @@ const QualityPreset& findQualityPreset(const std::string& name) {
   throw inputError("unknown quality preset '" + name + "'; known: " + known);
 }
 
-RenderParams applyQuality(RenderParams p, const QualityPreset& q, double minSpacingMm) {
-  p.stepMm = q.stepVoxels * minSpacingMm;
+RenderParams pickQualityPreset(RenderParams p, const QualityPreset& q) {
   p.interp = q.interp;
   p.gradient = q.gradient;
+  return p;
+}
+
+RenderParams applyQuality(RenderParams p, const QualityPreset& q, double minSpacingMm) {
+  p = pickQualityPreset(std::move(p), q);
+  p.stepMm = q.stepVoxels * minSpacingMm;
   p.refine = q.refine;
   p.jitter = q.jitter;
   p.width = std::max(1, int(p.width * q.resolutionScale + 0.5));
@@ -94,8 +99,8 @@ RenderParams settledFrame(const RenderParams& base, const std::string& qualityPr
   p.height = size.y;
   if (!qualityPreset.empty()) {
     p = applyQuality(p, findQualityPreset(qualityPreset), minSpacingMm);
-    p.interp = base.interp;  // the user's, set to the preset's when it was picked
-    p.gradient = base.gradient;
+    p.interp = base.interp;      // the user's, set to the preset's when it was picked
+    p.gradient = base.gradient;  // (pickQualityPreset)
   } else {
     p.stepMm = effectiveStepMm(base, minSpacingMm);
   }

@@ -300,7 +300,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       storage.SLABS = sw.SLABS;
       if (m.light.update(
               m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false), sw.LIGHTING,
-              m.paramsBuffer, m.lutBuffer,
+              p.mode == Mode::Iso, m.paramsBuffer, m.lutBuffer,
               m.opts.emptySpaceSkipping && p.mode == Mode::Dvr ? &m.space.leap() : nullptr, k,
               s.lut.rgba)) {
         lightingMs = m.light.lastMs();

@@ -54,7 +54,6 @@ struct Marcher {
     o.samples += 1.0;
     return sampleVolume(v, p.interp, pv);
   }
-  bool inRange(double x) const { return x >= s.isoLoStored && x <= s.isoHiStored; }
   glm::dvec3 worldGradient(const glm::dvec3& pv, PixelOut& o) const {
     o.samples += gradSamples;
     return s.view.gradToWorld * volumeGradient(v, p.interp, p.gradient, pv);
@@ -113,7 +112,7 @@ struct Marcher {
     double tHit = 0.0;
     for (int i = 0; i <= n; ++i) {
       double t = at(i);
-      if (inRange(sample(ov + t * dv, o))) {
+      if (s.inIso(sample(ov + t * dv, o))) {
         hit = i;
         tHit = t;
         break;
@@ -124,7 +123,7 @@ struct Marcher {
       double a = at(hit - 1), b = tHit;
       for (int k = 0; k < p.refine; ++k) {
         double m = 0.5 * (a + b);
-        if (inRange(sample(ov + m * dv, o)))
+        if (s.inIso(sample(ov + m * dv, o)))
           b = m;
         else
           a = m;

@@ -19,9 +19,7 @@ bool presetFitsMode(const std::string& preset, Mode mode) {
 }
 
 RenderStateModel::RenderStateModel() {
-  const QualityPreset& q = findQualityPreset(quality_.preset);
-  params_.interp = q.interp;
-  params_.gradient = q.gradient;
+  params_ = pickQualityPreset(params_, findQualityPreset(quality_.preset));
 }
 
 void RenderStateModel::update(unsigned what, const std::function<void(RenderParams&)>& edit) {
@@ -62,10 +60,7 @@ void RenderStateModel::setQualityPreset(const std::string& name) {
   const QualityPreset& preset = findQualityPreset(name);
   q.preset = preset.name;
   quality_ = q;
-  update(kQuality | kAppearance, [&](RenderParams& p) {
-    p.interp = preset.interp;
-    p.gradient = preset.gradient;
-  });
+  update(kQuality | kAppearance, [&](RenderParams& p) { p = pickQualityPreset(p, preset); });
 }
 
 void RenderStateModel::applyPreset(const std::string& name) {

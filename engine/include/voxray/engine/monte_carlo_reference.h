@@ -21,6 +21,8 @@
 // sigma, the extinction per mm of the classified volume, follows the kernels' opacity
 // correction: a sample of opacity a per reference step r has sigma = -ln(1 - a) / r
 // (a is capped at 1 - 1e-12, so an opaque region has T about 1e-12 per reference step).
+// In iso frames a is the surface's: 1 in the iso range, 0 outside it (iso's table gives
+// every value the surface colour at opacity 1, air too).
 // Each optical depth is a stratified estimate (one random offset, step stepMm); exp() of it
 // has a bias of the order of its variance, which vanishes with the step (exact in a medium
 // uniform along the ray). Shadow and occlusion rays stop once the depth passes 40 (T < 5e-18).

@@ -42,6 +42,11 @@ const QualityPreset& findQualityPreset(const std::string& name);
 RenderParams applyQuality(RenderParams p, const QualityPreset& q, double minSpacingMm);
 RenderParams applyQuality(RenderParams p, const QualityPreset& q, const Volume& v);
 
+// P as picking quality preset Q leaves it (the workstation's quality box, voxray-cli render
+// --quality): the reconstruction and gradient Q was measured with, which the user may change
+// afterwards. Its step, refinement, jitter and image scale apply per frame (settledFrame).
+RenderParams pickQualityPreset(RenderParams p, const QualityPreset& q);
+
 // The frame a view shows at rest, as the workstation plans it: BASE at the resolution
 // choice (else VIEWSIZE), then QUALITYPRESET's step, refinement, jitter and image scale with
 // BASE's reconstruction and gradient; custom (""): BASE's own effective step. At least
