@@ -45,6 +45,15 @@ std::string lower(std::string s) {
   return s;
 }
 
+// A field line or a listed file's name no longer than Teem can quote in a message.
+void checkFieldLength(const std::string& line, size_t number, const std::string& path) {
+  if (line.size() > kMaxNrrdFieldLineBytes)
+    throw inputError(path + ": header line " + std::to_string(number) + " is " +
+                     std::to_string(line.size()) +
+                     " characters long; Voxray reads fields of up to " +
+                     std::to_string(kMaxNrrdFieldLineBytes) + " (the header is damaged)");
+}
+
 // A header line is text: a control byte would end the line early for Teem (NUL) or for us.
 void checkText(const std::string& line, size_t number, const std::string& path) {
   for (const char c : line) {
@@ -157,9 +166,12 @@ NrrdDataFiles checkNrrdHeader(const std::string& path) {
                        std::to_string(kMaxNrrdHeaderLines) + " lines (the file is damaged)");
     checkText(line, n + 1, path);
     const size_t colon = line.find(':');
-    if (line[0] == '#' || colon == std::string::npos || colon + 1 == line.size() ||
-        line[colon + 1] == '=')
-      continue;  // comments, key/value pairs, and lines Teem refuses itself
+    const bool keyValue =
+        colon != std::string::npos && colon + 1 < line.size() && line[colon + 1] == '=';
+    if (line[0] == '#' || keyValue) continue;  // comments and key/value pairs
+    checkFieldLength(line, n + 1, path);
+    if (colon == std::string::npos || colon + 1 == line.size())
+      continue;  // lines Teem refuses itself
     std::string field = lower(line.substr(0, colon));
     field.erase(0, field.find_first_not_of(" \t"));
     field.erase(field.find_last_not_of(" \t") + 1);
@@ -181,6 +193,7 @@ NrrdDataFiles checkNrrdHeader(const std::string& path) {
   if (!listed.empty()) {
     for (; n < text.lines.size(); ++n) {
       checkText(text.lines[n], n + 1, path);
+      checkFieldLength(text.lines[n], n + 1, path);
       checkFileCount(d.names.size() + 1, samples, path);
       std::string name = text.lines[n];
       if (listed == "SKIPLIST") {  // "BYTES NAME"

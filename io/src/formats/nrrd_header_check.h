@@ -13,6 +13,10 @@ namespace voxray::formats {
 inline constexpr size_t kMaxNrrdHeaderLines = 4096;      // fields, comments, key/value pairs
 inline constexpr size_t kMaxNrrdHeaderBytes = 1u << 20;  // the header and its file list
 inline constexpr size_t kMaxNrrdDataFiles = 8192;        // Teem walks the list once per file
+// A field line (or a data file's name) Teem may quote in an error message, which it formats
+// into a buffer of 1 KiB: a line of about 1,000 characters that it cannot parse overflowed it
+// (found by the volume_file fuzz target). Comments and key/value pairs may be longer.
+inline constexpr size_t kMaxNrrdFieldLineBytes = 512;
 
 struct NrrdDataFiles {
   // The "data file" field as Teem keeps it: the names of a single file or a list, or a pattern
@@ -27,10 +31,10 @@ struct NrrdDataFiles {
   std::vector<File> files;  // in reading order
 };
 
-// Throws Error (Input) for a header over the limits above, a pattern that is not one integer
-// conversion of a sane width over a range bounded by the sizes, more files than the sizes
-// allow, or a data file that is missing, not a regular file or outside the header's folder
-// once links are resolved.
+// Throws Error (Input) for a header over the limits above (a field line over 512 bytes too), a
+// pattern that is not one integer conversion of a sane width over a range bounded by the sizes,
+// more files than the sizes allow, or a data file that is missing, not a regular file or outside
+// the header's folder once links are resolved.
 NrrdDataFiles checkNrrdHeader(const std::string& path);
 
 // After Teem read the header: each raw data file holds BYTES_PER_FILE bytes (exactly, or at
