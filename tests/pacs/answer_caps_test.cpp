@@ -3,6 +3,8 @@
 // error's endless body are not read on.
 #include <gmock/gmock.h>
 
+#include <chrono>
+
 #include "canned_http_server.h"
 #include "http_session.h"
 #include "pacs_test_support.h"
@@ -63,6 +65,22 @@ TEST(AnswerCapsWebTest, ErrorBodyIsNotReadToTheEnd) {
   std::string m = failure([&] { makePacsClient(server.node())->find(PacsQuery{}); });
   EXPECT_THAT(m, HasSubstr("HTTP 500"));
   EXPECT_LT(server.sent.load(), size_t(32) << 20);
+}
+
+// A server that drips its answer, a byte every 0.2 s (a slow loris), never leaves the node's
+// timeout idle: before, the search ran as long as the server dripped. It stalls as one that
+// sends nothing: given up within the timeout (5 s) and a second, saying why.
+TEST(AnswerCapsWebTest, ADrippingServerIsGivenUpAtTheTimeout) {
+  CannedHttpServer server(
+      "HTTP/1.1 200 OK\r\nContent-Type: application/dicom+json\r\nContent-Length: 100000\r\n\r\n",
+      1, 100000, 200);
+  const auto start = std::chrono::steady_clock::now();
+  std::string m = failure([&] { makePacsClient(server.node())->find(PacsQuery{}); });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_THAT(m, HasSubstr("the node sent under 1024 bytes in 5 s (timeout 5 s)"));
+  EXPECT_LT(seconds, 5.0 + 1.5);
+  EXPECT_LT(server.sent.load(), size_t(300));
 }
 
 }  // namespace

@@ -1,13 +1,14 @@
 #pragma once
 // A tiny local HTTP server for what Orthanc will not do (cut a transfer short, send garbage,
-// fail with 500, redirect, send without end): it serves a canned answer to each of its
-// first connections, then closes it.
+// fail with 500, redirect, send without end or drip a byte at a time): it serves a canned
+// answer to each of its first connections, then closes it.
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -19,9 +20,14 @@ namespace voxray::test {
 class CannedHttpServer {
  public:
   // Serves ANSWER to each of the first CONNECTIONS connections, followed by TRAILING bytes
-  // ('x', written until the client stops reading: an endless body).
-  explicit CannedHttpServer(std::string answer, int connections = 1, size_t trailing = 0)
-      : answer_(std::move(answer)), connections_(connections), trailing_(trailing) {
+  // ('x', written until the client stops reading: an endless body); with DRIP_MS one byte
+  // every DRIP_MS milliseconds (a slow loris).
+  explicit CannedHttpServer(std::string answer, int connections = 1, size_t trailing = 0,
+                            int dripMs = 0)
+      : answer_(std::move(answer)),
+        connections_(connections),
+        trailing_(trailing),
+        dripMs_(dripMs) {
     fd_ = socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
@@ -43,9 +49,12 @@ class CannedHttpServer {
         ssize_t n = read(c, request, sizeof request);
         if (n > 0 && this->request.empty()) this->request.assign(request, size_t(n));
         bool ok = sendAll(c, answer_);
-        const std::string chunk(64 << 10, 'x');
-        for (size_t left = trailing_; ok && left > 0; left -= std::min(left, chunk.size()))
+        const std::string chunk(dripMs_ > 0 ? 1 : 64 << 10, 'x');
+        for (size_t left = trailing_; ok && left > 0 && !stop_;
+             left -= std::min(left, chunk.size())) {
           ok = sendAll(c, chunk.substr(0, std::min(left, chunk.size())));
+          if (dripMs_ > 0) std::this_thread::sleep_for(std::chrono::milliseconds(dripMs_));
+        }
         close(c);
       }
     });
@@ -97,6 +106,7 @@ class CannedHttpServer {
   std::string answer_;
   int connections_;
   size_t trailing_;
+  int dripMs_;
   std::atomic<bool> stop_{false};
   std::atomic<int> accepted_{0};
   int fd_ = -1;

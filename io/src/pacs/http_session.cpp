@@ -21,10 +21,13 @@ struct Transfer {
   std::string sinkError;
   // The idle timeout, kept here: libcurl's low-speed check averages over its window, so
   // after a fast start a frozen server held a transfer about twice the timeout.
+  // A transfer moves on when kLeastProgressBytes have moved since it last did: a server that
+  // drips a byte at a time (a slow loris) stalls as one that sends nothing.
   int timeoutSec = 0;
-  curl_off_t moved = -1;
-  std::chrono::steady_clock::time_point lastMove{};
+  curl_off_t moved = 0;
+  std::chrono::steady_clock::time_point lastMove = std::chrono::steady_clock::now();
   bool stalled = false;
+  bool dripping = false;      // stalled with some bytes moved in the window
   bool errorBodyCut = false;  // an HTTP error's body stopped at kMaxErrorBodyBytes
 };
 
@@ -69,11 +72,12 @@ int onProgress(void* user, curl_off_t, curl_off_t down, curl_off_t, curl_off_t u
   auto* t = static_cast<Transfer*>(user);
   if (t->cancel && t->cancel->load()) return 1;
   const auto now = std::chrono::steady_clock::now();
-  if (down + up != t->moved) {
+  if (down + up >= t->moved + kLeastProgressBytes) {
     t->moved = down + up;
     t->lastMove = now;
   } else if (now - t->lastMove >= std::chrono::seconds(t->timeoutSec)) {
     t->stalled = true;
+    t->dripping = down + up > t->moved;
     return 1;
   }
   return 0;
@@ -183,7 +187,9 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
   if (cancel && cancel->load())
     throw cancelledError(what == "POST" ? "Sending cancelled" : "Retrieval cancelled");
   if (!transfer.sinkError.empty()) throw inputError(where + ": " + transfer.sinkError);
-  if (transfer.stalled) throw inputError(stalledMessage(node_, what));
+  if (transfer.stalled)
+    throw inputError(transfer.dripping ? drippingMessage(node_, what, kLeastProgressBytes)
+                                       : stalledMessage(node_, what));
   if (code == CURLE_PEER_FAILED_VERIFICATION || code == CURLE_SSL_CACERT_BADFILE ||
       code == CURLE_SSL_CONNECT_ERROR || code == CURLE_SSL_CERTPROBLEM)
     throw inputError(where + ": TLS failed (" +

@@ -16,6 +16,8 @@ namespace voxray::pacs {
 // a sink instead.
 constexpr size_t kMaxAnswerBytes = size_t(64) << 20;
 constexpr size_t kMaxErrorBodyBytes = size_t(64) << 10;
+// The least a transfer must move within the node's timeout to count as answering.
+constexpr long kLeastProgressBytes = 1024;
 
 struct HttpResponse {
   long status = 0;

@@ -45,6 +45,14 @@ std::string stalledMessage(const PacsNode& node, const std::string& what) {
          "slow";
 }
 
+std::string drippingMessage(const PacsNode& node, const std::string& what, long least) {
+  const std::string t = std::to_string(node.timeoutSec);
+  return "PACS " + node.label() + ": " + what + ": the node sent under " + std::to_string(least) +
+         " bytes in " + t + " s (timeout " + t +
+         " s): it is not answering at a usable rate; try again later, or raise the node's "
+         "timeout if it is slow";
+}
+
 std::string unknownSeriesMessage(const PacsNode& node, const std::string& study,
                                  const std::string& series, bool studyKnown) {
   return "PACS " + node.label() +

@@ -11,6 +11,10 @@ namespace voxray::pacs {
 // "PACS LABEL: WHAT: the node sent nothing for N s (timeout N s): ..."
 std::string stalledMessage(const PacsNode& node, const std::string& what);
 
+// "PACS LABEL: WHAT: the node sent under LEAST bytes in N s (timeout N s): ..." (a server
+// that drips its answer).
+std::string drippingMessage(const PacsNode& node, const std::string& what, long least);
+
 // "PACS LABEL has no series S in study T: ..." or, when STUDY_KNOWN is false, "... has no
 // study T: ...".
 std::string unknownSeriesMessage(const PacsNode& node, const std::string& study,
