@@ -48,5 +48,25 @@ TEST(FormatsMetaImageHostile, DataFilesOutsideTheHeadersFolderAreRefused) {
   EXPECT_EQ(loadVolume(path).dims, glm::ivec3(4, 3, 2));
 }
 
+// A header that claims more samples than its file or data file can hold is refused before the
+// samples' buffer is allocated (libFuzzer: a few bytes claimed 9 GiB, an out-of-memory kill);
+// a complete file still opens.
+TEST(FormatsMetaImageHostile, SizesTheDataCannotHoldAreRefusedBeforeAllocating) {
+  TempDir dir;
+  const std::string huge =
+      "ObjectType = Image\nNDims = 3\nDimSize = 2048 2048 1024\nElementType = MET_SHORT\n";
+  test::writeHeaderFile(dir.file("local.mha"), huge + "ElementDataFile = LOCAL\n",
+                        std::vector<uint8_t>(48, 1));
+  EXPECT_THAT(test::errorMessage([&] { loadVolume(dir.file("local.mha")); }),
+              HasSubstr("its header's sizes need 8589934592 bytes of samples, more than the file "
+                        "holds"));
+  test::writeBytes(dir.file("small.raw"), std::vector<uint8_t>(48, 1));
+  test::writeHeaderFile(dir.file("detached.mhd"), huge + "ElementDataFile = small.raw\n");
+  EXPECT_THAT(test::errorMessage([&] { loadVolume(dir.file("detached.mhd")); }),
+              HasSubstr("more than its data file holds (48 bytes)"));
+  test::writeHeaderFile(dir.file("ok.mhd"), header("small.raw"));
+  EXPECT_EQ(loadVolume(dir.file("ok.mhd")).dims, glm::ivec3(4, 3, 2));
+}
+
 }  // namespace
 }  // namespace voxray
