@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "sample_grid.h"
@@ -150,7 +151,8 @@ NrrdDataFiles checkNrrdHeader(const std::string& path) {
   const Text text = readLines(path);
   NrrdDataFiles d;
   uint64_t samples = 0;
-  bool dataFile = false, ended = false;
+  bool ended = false;
+  std::set<std::string> seen;  // field names without spaces ("data file" is "datafile" too)
   size_t fields = 0;
   std::string listed;  // "LIST" or "SKIPLIST": the lines after the field name the files
   size_t n = 1;        // line 1 is the magic, checked before
@@ -177,10 +179,14 @@ NrrdDataFiles checkNrrdHeader(const std::string& path) {
     field.erase(field.find_last_not_of(" \t") + 1);
     const size_t at = line.find_first_not_of(" \t", colon + 1);
     const std::string value = at == std::string::npos ? "" : line.substr(at);
+    // Teem leaks what it parsed of a field given again (LeakSanitizer, the volume_file fuzz
+    // target): a real header gives each field once.
+    std::string name = field;
+    name.erase(std::remove(name.begin(), name.end(), ' '), name.end());
+    if (!seen.insert(name).second)
+      throw inputError(path + ": the header gives the field '" + field + "' twice; it is damaged");
     if (field == "sizes") samples = sampleCount(value);
     if (field != "data file" && field != "datafile") continue;
-    if (dataFile) throw inputError(path + ": the header gives its data file twice; it is damaged");
-    dataFile = true;
     if (value.find('%') != std::string::npos) {
       readPattern(value, samples, d, path);
     } else if (value.rfind("LIST", 0) == 0 || value.rfind("SKIPLIST", 0) == 0) {
