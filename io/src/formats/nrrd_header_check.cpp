@@ -187,6 +187,11 @@ NrrdDataFiles checkNrrdHeader(const std::string& path) {
       throw inputError(path + ": the header gives the field '" + field + "' twice; it is damaged");
     if (field == "sizes") samples = sampleCount(value);
     if (field != "data file" && field != "datafile") continue;
+    // Teem reads the data file field against the dimension and sizes given before it, and
+    // leaks its file list when they are not there (LeakSanitizer, the volume_file target).
+    if (!seen.count("dimension") || !seen.count("sizes"))
+      throw inputError(path + ": its data file field comes before the dimension and sizes; the " +
+                       "header is damaged");
     if (value.find('%') != std::string::npos) {
       readPattern(value, samples, d, path);
     } else if (value.rfind("LIST", 0) == 0 || value.rfind("SKIPLIST", 0) == 0) {
@@ -209,6 +214,9 @@ NrrdDataFiles checkNrrdHeader(const std::string& path) {
       d.names.push_back(name);
       d.files.push_back({name, ""});
     }
+    if (d.names.empty())
+      throw inputError(path + ": its data file " + listed +
+                       " names no file; the header is damaged");
     ended = true;
   }
   if (!ended && !text.whole)

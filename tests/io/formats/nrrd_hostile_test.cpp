@@ -221,6 +221,13 @@ TEST(FormatsNrrdHostile, FieldsGivenTwiceAreRefused) {
                         shorts(24, 0));
   EXPECT_THAT(loadError(dir.file("spelled.nrrd")),
               HasSubstr("the header gives the field 'byteskip' twice"));
+  // Teem leaked its file list for a data file field before the sizes, or a list of none.
+  fs::create_directories(dir.path() / "early");
+  test::writeHeaderFile((dir.path() / "early" / "v.nhdr").string(),
+                        "NRRD0004\ndata file: SKIPLIST\n");
+  EXPECT_THAT(loadError((dir.path() / "early" / "v.nhdr").string()),
+              HasSubstr("its data file field comes before the dimension and sizes"));
+  EXPECT_THAT(nhdrError(dir, header("LIST")), HasSubstr("its data file LIST names no file"));
 }
 
 }  // namespace
