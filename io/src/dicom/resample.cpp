@@ -70,7 +70,7 @@ Resampled resampleStack(const VoxelVector& slices, const std::vector<glm::dvec3>
       },
       cancel);
   size_t inside = 0;
-  for (size_t n : filled) inside += n;
+  for (size_t count : filled) inside += count;
   const size_t total = out.size();
   return {std::move(out), total - inside};
 }
