@@ -52,14 +52,6 @@ RenderParams isoFrame(Lighting l) {
   return p;
 }
 
-Image render(const Volume& v, const RenderParams& p, bool packets) {
-  Raycaster rc(test::pocl(), v);
-  RaycasterOptions o = rc.options();
-  o.packets = packets;
-  rc.setOptions(o);
-  return rc.render(p);
-}
-
 // The mean grey (0..1) of an 8-bit RGBA image or a reference's RGB floats over
 // the pixels where `surface` shows a surface (any channel off the background).
 struct SurfaceMean {
@@ -108,9 +100,9 @@ TEST(LightingIso, ShadowsWithTheLightAtTheEyeLeaveEveryVisibleSurfaceLitOnRealCt
     phong.light.position = shadows.light.position = glm::dvec3(0.0);  // at the eye
     for (bool packets : {true, false}) {
       SCOPED_TRACE(ct.name + (packets ? " packets" : " one ray"));
-      const Image lit = render(ct.volume, phong, packets);
+      const Image lit = test::renderKernel(ct.volume, phong, packets);
       const SurfaceMean mean{lit, phong.background};
-      const double ratio = mean.of(render(ct.volume, shadows, packets)) / mean.of(lit);
+      const double ratio = mean.of(test::renderKernel(ct.volume, shadows, packets)) / mean.of(lit);
       std::printf("%s %s: iso shadows / phong with the light at the eye %.3f\n", ct.name.c_str(),
                   packets ? "packets" : "one ray", ratio);
       EXPECT_GT(ratio, 0.85);
@@ -134,7 +126,8 @@ TEST(LightingIso, ShadowsMatchTheMonteCarloReferenceOnRealCts) {
     MonteCarloOptions o;
     o.samples = 4;
     const MonteCarloImage ref = renderMonteCarlo(ct.volume, p, o);
-    const Image lit = render(ct.volume, phong, true), kernel = render(ct.volume, p, true);
+    const Image lit = test::renderKernel(ct.volume, phong, true),
+                kernel = test::renderKernel(ct.volume, p, true);
     const SurfaceMean mean{lit, p.background};
     const double refRatio = mean.of(ref.mean.rgb) / mean.of(lit);
     const double kernelRatio = mean.of(kernel) / mean.of(ref.mean.rgb);

@@ -31,14 +31,6 @@ RenderParams sceneParams(Lighting l) {
   return p;
 }
 
-Image renderKernel(const Volume& v, const RenderParams& p, bool packets) {
-  Raycaster rc(test::pocl(), v);
-  RaycasterOptions o = rc.options();
-  o.packets = packets;
-  rc.setOptions(o);
-  return rc.render(p);
-}
-
 }  // namespace
 
 TEST(LightingKernel, GridRebuildsFollowLightTableClipAndModelOnly) {
@@ -141,7 +133,7 @@ TEST(LightingKernel, ShadowsAndAoMatchTheMonteCarloReferenceOnTheAnalyticScene) 
     MonteCarloImage ref = renderMonteCarlo(sphereOnPlane(), p, o);
     EXPECT_LT(ref.meanStdError(), 0.01);
     for (bool packets : {true, false}) {
-      double db = test::psnr(renderKernel(sphereOnPlane(), p, packets), ref.mean.rgb);
+      double db = test::psnr(test::renderKernel(sphereOnPlane(), p, packets), ref.mean.rgb);
       SCOPED_TRACE(std::string(toString(l)) + (packets ? " packets" : " one ray"));
       EXPECT_GT(db, 35.0);  // the goal for shadows, kept for ao
       std::printf("%s %s: %.1f dB vs Monte Carlo (se %.4f)\n", toString(l),
@@ -150,7 +142,7 @@ TEST(LightingKernel, ShadowsAndAoMatchTheMonteCarloReferenceOnTheAnalyticScene) 
     // The model shows: against phong the image differs clearly.
     RenderParams phong = p;
     phong.lighting = Lighting::Phong;
-    EXPECT_LT(test::psnr(renderKernel(sphereOnPlane(), phong, true), ref.mean.rgb), 30.0);
+    EXPECT_LT(test::psnr(test::renderKernel(sphereOnPlane(), phong, true), ref.mean.rgb), 30.0);
   }
 }
 
@@ -159,8 +151,9 @@ TEST(LightingKernel, LightBehindAnOpaqueSlabLeavesTheRegionAmbient) {
   const Volume& v = scene.volume;
   const RenderParams &above = scene.above, &ambientOnly = scene.ambientOnly, &below = scene.below;
   for (bool packets : {true, false}) {
-    Image dark = renderKernel(v, above, packets), ambient = renderKernel(v, ambientOnly, packets);
-    Image lit = renderKernel(v, below, packets);
+    Image dark = test::renderKernel(v, above, packets),
+          ambient = test::renderKernel(v, ambientOnly, packets);
+    Image lit = test::renderKernel(v, below, packets);
     int worst = 0, brighter = 0, n = 0;
     for (int y = 2 * above.height / 3; y < above.height; ++y)
       for (int x = above.width / 4; x < 3 * above.width / 4; ++x) {
@@ -187,7 +180,7 @@ TEST(LightingKernel, ShadowsAndAoOnCtheadAgainstTheMonteCarloReference) {
     o.samples = 8;
     o.stepMm = 1.0;
     MonteCarloImage ref = renderMonteCarlo(*v, p, o);
-    double db = test::psnr(renderKernel(*v, p, true), ref.mean.rgb);
+    double db = test::psnr(test::renderKernel(*v, p, true), ref.mean.rgb);
     std::printf("CThead %s: %.1f dB vs Monte Carlo (se %.4f)\n", toString(l), db,
                 ref.meanStdError());
     // The goal for shadows, kept for ao too (measured 43.7 and 49.6 dB).

@@ -18,6 +18,14 @@ int maxDiff(const Image& a, const Image& b) {
   return worst;
 }
 
+Image renderKernel(const Volume& v, const RenderParams& p, bool packets) {
+  Raycaster rc(pocl(), v);
+  RaycasterOptions o = rc.options();
+  o.packets = packets;
+  rc.setOptions(o);
+  return rc.render(p);
+}
+
 ClContext& pocl() {
   static ClContext ctx(testDeviceSelector());
   return ctx;

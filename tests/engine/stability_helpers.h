@@ -22,6 +22,9 @@ std::string testDeviceSelector();
 // both, comma-separated); buffer alone by default, which is what the CPU kernels use.
 std::vector<VolumeStorage> testStorages();
 
+// One frame of V on the test device, with or without packets.
+Image renderKernel(const Volume& v, const RenderParams& p, bool packets);
+
 // The largest difference between two images of the same size, in 8-bit levels.
 int maxDiff(const Image& a, const Image& b);
 
