@@ -10,20 +10,20 @@ namespace voxray::cli {
 
 DragReplay replayDrag(Raycaster& rc, const RenderParams& base, const glm::ivec2& view,
                       double minSpacingMm, Orbit orbit, int frames, double targetFps) {
-  ui::AdaptiveQuality adaptive(targetFps, ui::dragPresetSetting());
+  AdaptiveQuality adaptive(targetFps, dragPresetSetting());
   RenderParams b = base;
   Image image;
   DragReplay d;
   for (int i = 0; i < frames; ++i) {
     orbitCamera(b.camera, orbit, i, 180);
-    const RenderParams p = ui::planFrame(b, {}, view, true, minSpacingMm, &adaptive.setting());
+    const RenderParams p = planFrame(b, {}, view, true, minSpacingMm, &adaptive.setting());
     FrameStats stats;
     rc.render(p, image, &stats);
     d.ms.push_back(stats.totalMs);
     d.widths.push_back(p.width);
     // As RenderScheduler::onFrame reads the setting back from the frame.
     const int before = adaptive.changes();
-    adaptive.record(stats.totalMs, ui::dragSettingOf(p, view.x, minSpacingMm));
+    adaptive.record(stats.totalMs, dragSettingOf(p, view.x, minSpacingMm));
     if (adaptive.changes() != before)
       d.path.push_back({i, adaptive.setting().scale, adaptive.setting().stepVoxels});
   }

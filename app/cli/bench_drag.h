@@ -1,7 +1,7 @@
 #pragma once
 // voxray-cli bench --drag: a drag of the 3D view replayed on one thread with real frames
 // (issue 16's "drag frames >= 20 fps"). Each frame is planned as the render scheduler plans
-// it (ui::planFrame with the AdaptiveQuality controller's setting) and its render time goes
+// it (planFrame with the AdaptiveQuality controller's setting) and its render time goes
 // back to the controller as the scheduler's does, so the figures are what the workstation's
 // drag does on this machine: the image scales and steps the controller chose, and the frame
 // times once it had adapted (its first change: the drag preset's own frames missed).

@@ -24,10 +24,10 @@ double msSince(Clock::time_point t0) {
 double cpuMs() { return 1e3 * double(std::clock()) / CLOCKS_PER_SEC; }
 
 // The sharp frame as the worker renders it: about COUNT bands (1: the whole frame).
-std::vector<ui::RowBand> sharpBands(const RenderParams& sharp, int count) {
+std::vector<RowBand> sharpBands(const RenderParams& sharp, int count) {
   if (count <= 1) return {{0, sharp.height}};
   const long pixels = long(sharp.width) * sharp.height;
-  return ui::refineBands(sharp.width, sharp.height, count, (pixels + count - 1) / count);
+  return refineBands(sharp.width, sharp.height, count, (pixels + count - 1) / count);
 }
 
 }  // namespace
@@ -53,7 +53,7 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
   orbitCamera(s.camera, orbit, dragFrames - 1, 180);
   std::this_thread::sleep_until(lastMove + std::chrono::milliseconds(c.settleMs));
   const double sharpCpu0 = cpuMs();
-  for (const ui::RowBand& b : sharpBands(s, c.bands)) {
+  for (const RowBand& b : sharpBands(s, c.bands)) {
     rc.renderRows(s, sharpImage, b.y0, b.y1);
     const double now = msSince(t0);
     const double nowCpu = cpuMs();
@@ -74,7 +74,7 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
   std::this_thread::sleep_until(asked);
   const Clock::time_point moved = asked + std::chrono::milliseconds(resumeMs);
   const double askedCpu = cpuMs();
-  const ui::RowBand first = sharpBands(s, c.bands).front();
+  const RowBand first = sharpBands(s, c.bands).front();
   rc.renderRows(s, sharpImage, first.y0, first.y1);
   std::this_thread::sleep_until(moved);  // (no wait when the band took longer)
   dragTo(dragFrames);
@@ -85,7 +85,7 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
 
 void printStallReplay(Raycaster& rc, const RenderParams& drag, const RenderParams& sharp,
                       Orbit orbit, int repeats) {
-  const size_t bands = ui::refineBands(sharp.width, sharp.height).size();
+  const size_t bands = refineBands(sharp.width, sharp.height).size();
   const std::vector<StallCase> cases = {
       {"before: whole frame, settle 150 ms", 150, 1},
       {"after: " + std::to_string(bands) + " bands, settle 60 ms", 60, int(bands)},

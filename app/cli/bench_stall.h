@@ -3,7 +3,7 @@
 // one thread with real frames and wall-clock waits (issue 16). The 3D view's render thread
 // renders the newest request only, so a drag keeps it busy frame after frame; the mouse's
 // last move comes as the last drag frame is asked for. The scheduler waits SETTLEMS after
-// that move, then asks for the sharp frame, whole or in bands (ui/model/refine_bands.h).
+// that move, then asks for the sharp frame, whole or in bands (ui/study/refine_bands.h).
 // Measured: the largest gap between frames shown from the last drag frame to the finished
 // sharp frame ("rest"), and, when the drag resumes RESUMEMS after the sharp frame was asked
 // for, the wait from that move to its drag frame ("resume": the band or whole frame in

@@ -40,7 +40,7 @@ struct BenchOptions {
   std::string quality;   // a resources/quality preset: the workstation's frame at each size
   int stallRepeats = 0;  // --stall: replays of the end of a drag
   int dragFrames = 0;    // --drag: frames of a replayed drag
-  double dragFps = ui::Quality{}.dragFps;
+  double dragFps = Quality{}.dragFps;
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
@@ -107,7 +107,7 @@ Run addBenchCommand(CLI::App& app) {
                   "prints the settings it chose and the frame times after its first change")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--drag-fps", o->dragFps, "the drag replay's target frame rate (the 3D view's)")
-      ->check(CLI::Range(ui::kDragFpsMin, ui::kDragFpsMax));
+      ->check(CLI::Range(kDragFpsMin, kDragFpsMax));
   CLI::Option* gradientsOption = nullptr;
   CLI::Option* sizesOption =
       cmd->add_option("--sizes", o->sizes, "comma-separated WxH list (also for --seed-table)");
@@ -196,7 +196,7 @@ Run addBenchCommand(CLI::App& app) {
             if (o->stallRepeats > 0) {
               // The drag frame as the scheduler plans it before AdaptiveQuality moves it.
               RenderParams drag =
-                  settledFrame(base, ui::kDragQualityPreset, {0, 0}, view, v.minSpacingMm());
+                  settledFrame(base, kDragQualityPreset, {0, 0}, view, v.minSpacingMm());
               drag.gradient = p.gradient;
               printStallReplay(rc, drag, p, o->run.orbit, o->stallRepeats);
             }

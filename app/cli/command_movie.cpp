@@ -11,7 +11,7 @@
 #include "progress.h"
 #include "render_flags.h"
 #include "voxray/engine/cl_context.h"
-#include "voxray/engine/movie.h"
+#include "movie.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
 #include "voxray/io/volume.h"

@@ -9,7 +9,7 @@
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/quality.h"
 #include "voxray/engine/raycaster.h"
-#include "voxray/engine/session.h"
+#include "session.h"
 #include "voxray/io/error.h"
 #include "voxray/io/secondary_capture.h"
 
@@ -62,11 +62,11 @@ Session sessionToRender(const RenderOptions& o) {
 // quality's image scale, else the default.
 RenderParams frameToRender(const RenderOptions& o, const Session& s, const Volume& v) {
   if (o.session.empty() && o.quality.empty()) return s.render;
-  ui::Quality q;
+  Quality q;
   q.preset = s.qualityPreset;
   q.resolution = s.resolution;
   RenderParams p =
-      ui::planFrame(s.render, q, {s.render.width, s.render.height}, false, v.minSpacingMm());
+      planFrame(s.render, q, {s.render.width, s.render.height}, false, v.minSpacingMm());
   if (o.session.empty() || o.flags.given.count("size")) {
     p.width = s.render.width;
     p.height = s.render.height;

@@ -1,5 +1,5 @@
 // voxray-cli slice: one plane of the volume as the workstation's slice views show it (the
-// same plane geometry, ui/model, and resampling, plane_sampler.h), thin or a slab.
+// same plane geometry, ui/study, and resampling, plane_sampler.h), thin or a slab.
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -26,10 +26,10 @@ struct SliceOptions {
   double slabMm = 0.0;
 };
 
-ui::Orientation parseOrientation(const std::string& s) {
-  for (ui::Orientation o :
-       {ui::Orientation::Axial, ui::Orientation::Coronal, ui::Orientation::Sagittal})
-    if (s == ui::toString(o)) return o;
+Orientation parseOrientation(const std::string& s) {
+  for (Orientation o :
+       {Orientation::Axial, Orientation::Coronal, Orientation::Sagittal})
+    if (s == toString(o)) return o;
   throw inputError("--plane '" + s + "' is not one of axial, coronal, sagittal");
 }
 
@@ -37,7 +37,7 @@ glm::dvec3 vec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
 // The view and crosshair (voxel coordinates) the options ask for.
 struct Chosen {
-  ui::SliceAxes axes;
+  SliceAxes axes;
   glm::dvec3 centre;
   glm::dmat3 rotation{1.0};
 };
@@ -45,16 +45,16 @@ struct Chosen {
 Chosen choosePlane(const Volume& v, const SliceOptions& o) {
   Chosen c;
   c.centre = glm::round((glm::dvec3(v.dims) - 1.0) * 0.5);
-  if (!o.point.empty()) c.centre = ui::patientMmToVoxel(v, vec3(o.point));
+  if (!o.point.empty()) c.centre = patientMmToVoxel(v, vec3(o.point));
   if (!o.normal.empty()) {
     const glm::dvec3 n = vec3(o.normal);
     if (!(glm::length(n) > 1e-9) || !std::isfinite(glm::length(n)))
       throw inputError("--normal must be a non-zero direction, e.g. 0,0.7071,0.7071");
-    const ui::ObliqueView view = ui::viewForNormal(v.direction, n);
-    c.axes = ui::sliceAxes(v.direction, view.orientation);
+    const ObliqueView view = viewForNormal(v.direction, n);
+    c.axes = sliceAxes(v.direction, view.orientation);
     c.rotation = view.rotation;
   } else {
-    c.axes = ui::sliceAxes(v.direction, parseOrientation(o.plane));
+    c.axes = sliceAxes(v.direction, parseOrientation(o.plane));
     const int count = v.dims[c.axes.nAxis];
     if (o.hasIndex) {
       if (o.index < 0 || o.index >= count)
@@ -68,8 +68,8 @@ Chosen choosePlane(const Volume& v, const SliceOptions& o) {
       const glm::dvec3 size = glm::abs(normal);
       const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
       if (normal[axis] < 0) normal = -normal;
-      const glm::dvec3 at = ui::voxelToPatientMm(v, c.centre);
-      c.centre = ui::patientMmToVoxel(v, at + normal * (o.mm - glm::dot(normal, at)));
+      const glm::dvec3 at = voxelToPatientMm(v, c.centre);
+      c.centre = patientMmToVoxel(v, at + normal * (o.mm - glm::dot(normal, at)));
     }
   }
   return c;
@@ -117,19 +117,19 @@ Run addSliceCommand(CLI::App& app) {
     Volume v = o->input.load();
     if (v.voxelCount() == 0) throw inputError("the volume is empty: nothing to slice");
     const Chosen c = choosePlane(v, *o);
-    if (ui::planeInBox(v, c.centre,
-                       ui::rotateFrame(c.rotation, ui::baseFrame(v.direction, c.axes)).normal)
+    if (planeInBox(v, c.centre,
+                       rotateFrame(c.rotation, baseFrame(v.direction, c.axes)).normal)
             .empty())
       throw inputError("the plane misses the volume: give a --point or --mm inside it");
-    ui::WindowLevel wl = ui::initialWindow(v).wl;
+    WindowLevel wl = initialWindow(v).wl;
     if (!o->wl.empty()) {
       if (!(o->wl[0] > 0.0)) throw inputError("--wl: the window width must be above 0");
       wl = {o->wl[0], o->wl[1]};
     }
     const Slab slab{o->slabMm, parseSlabMode(o->slabMode)};
-    const PlaneGrid g = ui::viewPlane(v, c.axes, c.centre, c.rotation);
+    const PlaneGrid g = viewPlane(v, c.axes, c.centre, c.rotation);
     const auto sliced = std::chrono::steady_clock::now();
-    Image img = ui::renderPlane(v, g, wl, parseInterp(o->interp), slab);
+    Image img = renderPlane(v, g, wl, parseInterp(o->interp), slab);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sliced)
             .count();

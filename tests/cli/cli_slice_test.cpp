@@ -1,5 +1,5 @@
 // voxray-cli slice, run as a user runs it, against the workstation's own planes and pixels
-// (ui/model): PNG is lossless, so every comparison is exact.
+// (ui/study): PNG is lossless, so every comparison is exact.
 #include <gtest/gtest.h>
 
 #include <cstdlib>

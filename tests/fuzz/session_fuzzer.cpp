@@ -7,7 +7,7 @@
 #include <string>
 
 #include "scratch_file.h"
-#include "voxray/engine/session.h"
+#include "session.h"
 #include "voxray/io/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

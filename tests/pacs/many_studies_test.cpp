@@ -130,9 +130,9 @@ TEST_F(ManyStudiesTest, QidoRsLimitSaysThereIsMore) { expectLimitSaysMore(server
 TEST_F(ManyStudiesTest, TheBrowserModelFillsPageByPage) {
   std::mutex mutex;
   std::condition_variable shown;
-  std::deque<ui::BackgroundTask::Event> queue;
+  std::deque<BackgroundTask::Event> queue;
   bool firstPosted = false, firstShown = false;
-  auto post = [&](ui::BackgroundTask::Event e) {
+  auto post = [&](BackgroundTask::Event e) {
     std::unique_lock<std::mutex> lock(mutex);
     queue.push_back(std::move(e));
     if (std::exchange(firstPosted, true)) return;
@@ -141,8 +141,8 @@ TEST_F(ManyStudiesTest, TheBrowserModelFillsPageByPage) {
   std::vector<size_t> pages;
   size_t listed = 0, found = 0;
   bool done = false, more = true, searchingAtFirstPage = false;
-  ui::PacsBrowser* browser = nullptr;
-  ui::PacsBrowserEvents events;
+  PacsBrowser* browser = nullptr;
+  PacsBrowserEvents events;
   events.studies = [&](const std::vector<PacsMatch>& page) {
     if (pages.empty()) searchingAtFirstPage = browser->busy() && !done;
     pages.push_back(page.size());
@@ -157,13 +157,13 @@ TEST_F(ManyStudiesTest, TheBrowserModelFillsPageByPage) {
     ADD_FAILURE() << message;
     done = true;
   };
-  ui::PacsBrowser model(events, tempFolder("cache"), post);
+  PacsBrowser model(events, tempFolder("cache"), post);
   browser = &model;
   PacsQuery q;
   model.search("dicom://" + server_->dimseNode().label(), q);
   auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (!done && std::chrono::steady_clock::now() < deadline) {
-    std::deque<ui::BackgroundTask::Event> now;
+    std::deque<BackgroundTask::Event> now;
     {
       std::lock_guard<std::mutex> lock(mutex);
       now.swap(queue);
@@ -181,7 +181,7 @@ TEST_F(ManyStudiesTest, TheBrowserModelFillsPageByPage) {
   EXPECT_EQ(found, size_t(kStudies));
   EXPECT_EQ(listed, size_t(kStudies));
   EXPECT_FALSE(more);
-  EXPECT_EQ(pages.size(), size_t(kStudies) / ui::PacsBrowser::kPageSize);
+  EXPECT_EQ(pages.size(), size_t(kStudies) / PacsBrowser::kPageSize);
 }
 
 }  // namespace

@@ -107,7 +107,7 @@ TEST_F(CommandLine, CliAndGuiApplyAPresetFirstThenTheFlags) {
   CliRead cli;
   readCli(cli, args);
   RenderParams fromCli = cli.render.params();
-  ui::RenderStateModel model;
+  RenderStateModel model;
   model.applyValues(readGui(args).renderValues);
   // The one default that differs: the workstation starts with the gradient its default
   // quality preset (Balanced) was measured with, so that the preset's label is true; the
@@ -116,7 +116,7 @@ TEST_F(CommandLine, CliAndGuiApplyAPresetFirstThenTheFlags) {
   EXPECT_EQ(fromCli.gradient, RenderParams{}.gradient);
   fromCli.gradient = model.params().gradient;
   EXPECT_EQ(toText(model.params()), toText(fromCli));
-  ui::RenderStateModel central;
+  RenderStateModel central;
   central.applyValues(readGui({"--gradient", "central"}).renderValues);
   EXPECT_EQ(central.params().gradient, Gradient::Central);
   EXPECT_EQ(fromCli.mode, Mode::Mip);  // the flag wins over CT-Bone's dvr

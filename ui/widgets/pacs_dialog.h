@@ -6,7 +6,7 @@
 // its series; double-clicking a series retrieves it into the cache (progress, Cancel) and
 // closes the dialog with it; double-clicking a study retrieves all its series and closes
 // with a folder of them (chosen().seriesUid empty), for the series picker. The work is
-// PacsBrowser's (ui/model/pacs_browser.h).
+// PacsBrowser's (ui/study/pacs_browser.h).
 #include <memory>
 #include <string>
 

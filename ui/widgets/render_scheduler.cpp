@@ -18,7 +18,7 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
       state_(state),
       doc_(doc),
       adaptive_(state.quality().dragFps, dragPresetSetting()) {
-  qRegisterMetaType<std::shared_ptr<const Frame>>("std::shared_ptr<const voxray::ui::Frame>");
+  qRegisterMetaType<std::shared_ptr<const Frame>>("std::shared_ptr<const voxray::Frame>");
   settle_.setSingleShot(true);
   settle_.setInterval(kSettleMs);
   connect(&settle_, &QTimer::timeout, this, [this] {

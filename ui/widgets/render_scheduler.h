@@ -46,12 +46,12 @@ class RenderScheduler : public QObject {
   void requestPick();
 
  signals:
-  void frameReady(std::shared_ptr<const voxray::ui::Frame> frame);
+  void frameReady(std::shared_ptr<const voxray::Frame> frame);
   // A band of the sharp frame before its last (Frame::bandsDone < Frame::bands): the view
   // shows it; frameReady follows with the whole frame unless a new request abandons it.
-  void bandReady(std::shared_ptr<const voxray::ui::Frame> frame);
-  void exportReady(std::shared_ptr<const voxray::ui::Frame> frame);
-  void pickReady(std::shared_ptr<const voxray::ui::Frame> frame);
+  void bandReady(std::shared_ptr<const voxray::Frame> frame);
+  void exportReady(std::shared_ptr<const voxray::Frame> frame);
+  void pickReady(std::shared_ptr<const voxray::Frame> frame);
   void firstFullFrame();
   void statsChanged(double fps, double lastMs, bool interactive);
   void deviceReady(const QString& name);

@@ -11,7 +11,7 @@
 #include <QString>
 
 #include "app_models.h"
-#include "voxray/engine/session.h"
+#include "session.h"
 
 namespace voxray::ui {
 

@@ -1,0 +1,39 @@
+#pragma once
+// All UI state of one workstation window, owned outside the widgets so that it outlives
+// them (widgets disconnect from the models when they are destroyed).
+#include "crosshair_model.h"
+#include "lighting_figures.h"
+#include "measurement_model.h"
+#include "no_qt.h"
+#include "render_state_model.h"
+#include "volume_document.h"
+#include "session.h"
+#include "window_level.h"
+
+namespace voxray {
+
+struct AppModels {
+  VolumeDocument document;
+  RenderStateModel render;
+  WindowLevelModel windowLevel;
+  CrosshairModel crosshair;
+  MeasurementModel measurements;  // a session keeps them (session_state.cpp)
+  LightingFigures lighting;       // each lighting model's cost and error on this scene
+  // Where the document's volume came from (path and input flags), for a session to save.
+  SessionInput source;
+
+  // The per-study state of the volume the document keeps as its previous one: openStudy
+  // saves it, restorePreviousStudy (study_state.h) brings it back with that volume.
+  struct PreviousStudy {
+    bool valid = false;
+    RenderParams render;
+    WindowLevel wl;
+    std::string wlSource;
+    glm::ivec3 dims{1}, crosshair{0};
+    SessionInput source;
+    glm::dvec3 spacingMm{1.0};  // the crosshair's geometry (oblique planes turn in mm)
+    glm::dmat3 direction{1.0};
+  } previousStudy;
+};
+
+}  // namespace voxray

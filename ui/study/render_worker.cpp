@@ -1,0 +1,148 @@
+#include "render_worker.h"
+
+#include "voxray/engine/cl_context.h"
+#include "voxray/io/error.h"
+
+namespace voxray {
+
+RenderWorker::RenderWorker(std::string device, RenderCallbacks callbacks, BackgroundTask::Post post)
+    : device_(std::move(device)), callbacks_(std::move(callbacks)), task_(std::move(post)) {
+  task_.start([this] { run(); });
+}
+
+RenderWorker::~RenderWorker() {
+  {
+    std::lock_guard lock(mutex_);  // the loop checks the flag under the lock before waiting
+    task_.cancel();
+  }
+  wake_.notify_all();
+  task_.wait();
+}
+
+void RenderWorker::setVolume(std::shared_ptr<const Volume> volume) {
+  {
+    std::lock_guard lock(mutex_);
+    pendingVolume_ = std::move(volume);
+  }
+  wake_.notify_all();
+}
+
+void RenderWorker::request(const RenderParams& params, bool interactive, int tag, bool withHits) {
+  {
+    std::lock_guard lock(mutex_);
+    (tag == 0 ? pendingView_ : pendingExport_) = Request{params, interactive, tag, withHits, {}, 0};
+  }
+  wake_.notify_all();
+}
+
+void RenderWorker::requestBands(const RenderParams& params, std::vector<RowBand> bands) {
+  {
+    std::lock_guard lock(mutex_);
+    const int total = int(bands.size());
+    pendingView_ = Request{params, false, 0, false, std::move(bands), total};
+  }
+  wake_.notify_all();
+}
+
+void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view) {
+  const RenderParams& p = req.params;
+  view = upscaleNearest(view, p.width, p.height);
+  FrameStats sum;
+  for (size_t i = 0; i < req.bands.size(); ++i) {
+    const RowBand b = req.bands[i];
+    FrameStats s;
+    raycaster.renderRows(p, view, b.y0, b.y1, &s);
+    sum.kernelMs += s.kernelMs;
+    sum.totalMs += s.totalMs;
+    sum.lightingMs += s.lightingMs;
+    sum.variant = s.variant;
+    auto frame = std::make_shared<Frame>();
+    frame->image = view;
+    frame->stats = sum;  // the bands' times so far
+    frame->params = p;
+    frame->band = b;
+    frame->bands = req.bandsTotal;
+    frame->bandsDone = req.bandsTotal - int(req.bands.size() - i - 1);
+    if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
+    std::lock_guard lock(mutex_);
+    if (task_.cancelled() || pendingView_ || pendingVolume_) return;  // newest camera first
+    if (pendingExport_ && i + 1 < req.bands.size()) {
+      req.bands.erase(req.bands.begin(), req.bands.begin() + long(i + 1));
+      pendingView_ = std::move(req);  // the export first, then the bands left
+      return;
+    }
+  }
+}
+
+void RenderWorker::reportError(const std::string& message, bool volumeRejected) const {
+  if (callbacks_.error)
+    task_.post([f = callbacks_.error, message, volumeRejected] { f(message, volumeRejected); });
+}
+
+void RenderWorker::run() {
+  std::unique_ptr<ClContext> ctx;
+  try {
+    ctx = std::make_unique<ClContext>(device_);
+    if (callbacks_.deviceReady)
+      task_.post([f = callbacks_.deviceReady, name = ctx->device().name] { f(name); });
+  } catch (const std::exception& e) {
+    reportError(e.what(), false);
+  }
+  std::unique_ptr<Raycaster> raycaster;
+  std::shared_ptr<const Volume> volume;  // kept alive while the raycaster uses it
+  Image view;                            // the last view frame: banded frames paint over it
+  while (true) {
+    std::shared_ptr<const Volume> nextVolume;
+    std::optional<Request> req;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] {
+        return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_;
+      });
+      if (task_.cancelled()) return;
+      nextVolume = std::move(pendingVolume_);
+      pendingVolume_.reset();
+      if (pendingExport_) {
+        req = std::move(pendingExport_);
+        pendingExport_.reset();
+      } else if (!nextVolume) {
+        req = std::move(pendingView_);
+        pendingView_.reset();
+      }
+    }
+    if (!ctx) continue;  // reported once above; nothing can render
+    if (nextVolume) {
+      try {
+        raycaster = std::make_unique<Raycaster>(*ctx, *nextVolume);
+        volume = nextVolume;
+      } catch (const std::exception& e) {
+        reportError(e.what(), true);
+      }
+    }
+    if (!req || !raycaster) continue;
+    if (req->bands.size() > 1 || (req->bandsTotal > 1 && !req->bands.empty())) {
+      try {
+        renderBands(*raycaster, std::move(*req), view);
+      } catch (const std::exception& e) {
+        reportError(e.what(), false);
+      }
+      continue;
+    }
+    auto frame = std::make_shared<Frame>();
+    frame->params = req->params;
+    frame->interactive = req->interactive;
+    frame->tag = req->tag;
+    try {
+      if (req->withHits)
+        frame->image = raycaster->renderWithHits(req->params, frame->hits, &frame->stats);
+      else
+        raycaster->render(req->params, frame->image, &frame->stats);
+      if (req->tag == 0) view = frame->image;
+      if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
+    } catch (const std::exception& e) {
+      reportError(e.what(), false);
+    }
+  }
+}
+
+}  // namespace voxray

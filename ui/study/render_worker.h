@@ -1,0 +1,90 @@
+#pragma once
+// Owns the OpenCL context and the Raycaster on one thread of its own (the Raycaster is not
+// thread-safe) so that rendering never blocks the UI. Requests do not queue up: a new
+// request replaces one that has not started, so a fast drag renders only the latest
+// camera. A sharp view frame may come in bands of rows (refine_bands.h), each posted as it
+// finishes over the last view frame; a new view request or volume abandons the bands left
+// (an export in between lets them continue after it). Runs as a BackgroundTask: results and errors
+// arrive through its Post (the scheduler's GUI thread).
+#include <condition_variable>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "background_task.h"
+#include "no_qt.h"
+#include "refine_bands.h"
+#include "voxray/engine/raycaster.h"
+#include "voxray/engine/render_params.h"
+#include "voxray/io/image.h"
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+struct Frame {
+  Image image;
+  FrameStats stats;
+  RenderParams params;
+  bool interactive = false;     // a cheap frame rendered during a drag
+  int tag = 0;                  // the caller's label (0: the view; other values: exports)
+  std::vector<glm::vec4> hits;  // each pixel's iso or dvr hit, when asked for (renderWithHits)
+  // A banded frame (requestBands): bands rendered so far of `bands`; 0 of 0 for a whole
+  // frame. Rows of bands not yet rendered show the last view frame, scaled to this size.
+  int bandsDone = 0, bands = 0;
+  RowBand band;  // the band this frame added
+};
+
+struct RenderCallbacks {
+  std::function<void(std::shared_ptr<const Frame>)> frame;
+  // After a failed context creation, upload or render. VOLUME_REJECTED: the last volume
+  // given to setVolume could not be uploaded; the previous one is still rendered.
+  std::function<void(const std::string& message, bool volumeRejected)> error;
+  std::function<void(const std::string& deviceName)> deviceReady;
+};
+
+class RenderWorker {
+ public:
+  // DEVICE: a ClContext selector ("" = $VOXRAY_DEVICE or auto). POST: where callbacks run
+  // (BackgroundTask::Post; none: on the render thread).
+  RenderWorker(std::string device, RenderCallbacks callbacks, BackgroundTask::Post post = {});
+  ~RenderWorker();  // waits for the frame in progress
+  RenderWorker(const RenderWorker&) = delete;
+  RenderWorker& operator=(const RenderWorker&) = delete;
+
+  void setVolume(std::shared_ptr<const Volume> volume);
+  // WITHHITS: also each pixel's iso first hit or dvr first opaque point (Frame::hits), for
+  // picking in 3D.
+  void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
+  // The view's sharp frame in BANDS (in order; empty or one: a whole frame), each band
+  // posted as a Frame when it finishes.
+  void requestBands(const RenderParams& params, std::vector<RowBand> bands);
+
+ private:
+  void run();
+  void reportError(const std::string& message, bool volumeRejected) const;
+
+  std::string device_;
+  RenderCallbacks callbacks_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::shared_ptr<const Volume> pendingVolume_;
+  struct Request {
+    RenderParams params;
+    bool interactive;
+    int tag;
+    bool withHits;
+    std::vector<RowBand> bands;  // still to render; empty: the whole frame
+    int bandsTotal = 0;
+  };
+  // Renders REQ's bands into VIEW (the last view frame) until done or a newer view request
+  // or volume arrives; what is left goes back as the pending view request unless replaced.
+  void renderBands(Raycaster& raycaster, Request req, Image& view);
+  std::optional<Request> pendingView_;    // latest view frame wins
+  std::optional<Request> pendingExport_;  // exports are never replaced by view frames
+  BackgroundTask task_;                   // cancelled: the loop ends
+};
+
+}  // namespace voxray

@@ -1,0 +1,408 @@
+#include "session.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iterator>
+
+#include <nlohmann/json.hpp>
+
+#include "voxray/engine/input_flags.h"
+#include "voxray/engine/quality.h"
+#include "voxray/io/error.h"
+
+namespace voxray {
+
+namespace {
+
+// Ordered: a session reads top to bottom as written, and measurements keep their key order.
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+constexpr const char* kVersionKey = "voxray-session";
+constexpr std::array<const char*, 3> kViewNames = {"axial", "coronal", "sagittal"};
+constexpr int kMaxDepth = 256;
+// A session object holds tens of fields; an object with more is not one, and reading it would
+// not end soon (ordered_json compares each key with every earlier one of its object: 300,000
+// keys took minutes, 2,000 objects of 1,000 keys 10 s). Unknown fields are listed up to
+// kListedUnknown lines.
+constexpr size_t kMaxFields = 1000, kMaxFieldsInAll = 100000;
+constexpr size_t kListedUnknown = 20;
+
+// TEXT as a message may show it: bytes that are not UTF-8 become U+FFFD and control
+// characters \u escapes (the JSON library's own string escaping), so a hostile file puts no
+// raw bytes or terminal escapes into an error.
+std::string shown(const std::string& text) {
+  const std::string quoted = Json(text).dump(-1, ' ', false, Json::error_handler_t::replace);
+  return quoted.substr(1, quoted.size() - 2);
+}
+
+// Reads one session's JSON, naming the file and the field in every error, and collecting
+// the warnings about fields it ignores or misses.
+class Reader {
+ public:
+  explicit Reader(std::string sessionPath) : path_(std::move(sessionPath)) {}
+
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throw inputError("session " + path_ + ": field '" + shown(field) + "' " + shown(what));
+  }
+
+  // OBJ's KEY (FIELD names it); a missing one is an error.
+  const Json& require(const Json& obj, const std::string& field, const std::string& key) const {
+    auto it = obj.find(key);
+    if (it == obj.end())
+      throw inputError("session " + path_ + ": the required field '" + field +
+                       "' is missing; the file is damaged or not a Voxray session (save the "
+                       "session again)");
+    return *it;
+  }
+  const Json& object(const Json& obj, const std::string& field, const std::string& key) const {
+    const Json& v = require(obj, field, key);
+    if (!v.is_object()) fail(field, "must be an object { ... }");
+    return v;
+  }
+  std::string text(const Json& v, const std::string& field) const {
+    if (!v.is_string()) fail(field, "must be a string");
+    return v.get<std::string>();
+  }
+  double number(const Json& v, const std::string& field) const {
+    if (!v.is_number()) fail(field, "must be a number");
+    return v.get<double>();
+  }
+  std::vector<int> wholes(const Json& v, const std::string& field, size_t count) const {
+    const std::string want = "must be an array of " + std::to_string(count) + " whole numbers";
+    if (!v.is_array() || v.size() != count) fail(field, want);
+    std::vector<int> out;
+    for (const Json& n : v) {
+      if (!n.is_number_integer()) fail(field, want);
+      out.push_back(n.get<int>());
+    }
+    return out;
+  }
+  std::vector<double> numbers(const Json& v, const std::string& field, size_t count) const {
+    const std::string want = "must be an array of " + std::to_string(count) + " numbers";
+    if (!v.is_array() || v.size() != count) fail(field, want);
+    std::vector<double> out;
+    for (const Json& n : v) out.push_back(number(n, field));
+    return out;
+  }
+  // A declared value as its text: strings as they are, numbers and booleans as a hand
+  // editor would expect them to read.
+  std::string valueText(const Json& v, const std::string& field) const {
+    if (v.is_string()) return v.get<std::string>();
+    if (v.is_boolean()) return v.get<bool>() ? "on" : "off";
+    if (v.is_number()) return v.dump();
+    fail(field, "must be a string, a number or true/false");
+  }
+  // Keys of OBJ (under PARENT) not in KNOWN: warned about, ignored.
+  void warnUnknown(const Json& obj, const std::string& parent,
+                   const std::vector<std::string>& known) {
+    for (const auto& item : obj.items())
+      if (std::find(known.begin(), known.end(), item.key()) == known.end())
+        unknown(parent + item.key());
+  }
+  void unknown(const std::string& field) {
+    if (++unknown_ <= kListedUnknown)
+      warnings.push_back("unknown field '" + shown(field) + "' ignored");
+  }
+  // The warnings, with a line for the unknown fields beyond those listed.
+  std::vector<std::string> allWarnings() {
+    if (unknown_ > kListedUnknown)
+      warnings.push_back("and " + std::to_string(unknown_ - kListedUnknown) +
+                         " more unknown fields ignored");
+    return std::move(warnings);
+  }
+
+  std::vector<std::string> warnings;
+
+ private:
+  size_t unknown_ = 0;
+  std::string path_;
+};
+
+fs::path folderOf(const std::string& sessionPath) {
+  return fs::absolute(fs::path(sessionPath)).lexically_normal().parent_path();
+}
+
+// PATH absolute and normal, without a trailing separator.
+fs::path normalAbsolute(const std::string& path) {
+  fs::path p = fs::absolute(fs::path(path)).lexically_normal();
+  return p.has_filename() ? p : p.parent_path();
+}
+
+Json inputJson(const SessionInput& in, const std::string& sessionPath) {
+  Json j;
+  if (in.path.empty()) {
+    j["path"] = "";
+  } else {
+    const fs::path absolute = normalAbsolute(in.path), folder = folderOf(sessionPath);
+    // Relative when the two share a folder below the root ("/data/study" beside
+    // "/data/sessions"): such trees move together; "../../../work/..." would not.
+    auto top = [](const fs::path& p) {
+      return std::next(p.begin()) == p.end() ? fs::path() : *std::next(p.begin());
+    };
+    const fs::path relative = top(absolute) == top(folder) && !top(folder).empty()
+                                  ? absolute.lexically_relative(folder)
+                                  : fs::path();
+    j["path"] = (relative.empty() ? absolute : relative).string();
+    j["absolute-path"] = absolute.string();
+  }
+  j["flags"] = Json::object();
+  for (const auto& [key, value] : in.flags) j["flags"][key] = value;
+  return j;
+}
+
+void readInput(Reader& r, const Json& root, const std::string& sessionPath, SessionRead& out) {
+  const Json& in = r.object(root, "input", "input");
+  r.warnUnknown(in, "input.", {"path", "absolute-path", "flags"});
+  const std::string written = r.text(r.require(in, "input.path", "path"), "input.path");
+  if (in.contains("flags")) {
+    const Json& flags = r.object(in, "input.flags", "flags");
+    for (const auto& item : flags.items()) {
+      const std::string field = "input.flags." + item.key();
+      try {
+        findInputFlagSpec(item.key());
+      } catch (const Error&) {
+        r.unknown(field);
+        continue;
+      }
+      out.session.input.flags[item.key()] = r.valueText(item.value(), field);
+    }
+    try {
+      loadOptionsFromFlags(out.session.input.flags);
+    } catch (const Error& e) {
+      r.fail("input.flags", std::string("is wrong: ") + e.what());
+    }
+  }
+  if (written.empty()) return;  // the embedded head phantom
+  // Beside the session first (a folder moved with its session), then where it was saved.
+  std::vector<fs::path> candidates;
+  const fs::path p(written);
+  candidates.push_back(p.is_absolute() ? p : (folderOf(sessionPath) / p).lexically_normal());
+  if (in.contains("absolute-path")) {
+    fs::path a(r.text(in.at("absolute-path"), "input.absolute-path"));
+    if (a != candidates.front()) candidates.push_back(a);
+  }
+  std::error_code ec;
+  for (const fs::path& c : candidates)
+    if (fs::exists(c, ec)) {
+      out.session.input.path = c.string();
+      return;
+    }
+  out.session.input.path = candidates.front().string();
+  for (const fs::path& c : candidates) out.missingInput.push_back(c.string());
+}
+
+void readRender(Reader& r, const Json& root, RenderParams& p) {
+  const Json& render = r.object(root, "render", "render");
+  std::vector<std::string> known;
+  // Declaration order: "light" (which fixes the light) before "light-follows-camera".
+  for (const auto& spec : renderParamSpecs()) {
+    known.push_back(spec.key);
+    const std::string field = "render." + spec.key;
+    auto it = render.find(spec.key);
+    if (it == render.end()) {
+      r.warnings.push_back("field '" + field + "' missing: left at its default (" + spec.format(p) +
+                           ")");
+      continue;
+    }
+    try {
+      spec.parse(p, r.valueText(*it, field));
+    } catch (const Error& e) {
+      r.fail(field, std::string("is wrong: ") + e.what());
+    }
+  }
+  r.warnUnknown(render, "render.", known);
+}
+
+// The views that are turned or thick, by name; absent views are acquisition planes, thin.
+Json viewsJson(const std::array<SessionView, 3>& views) {
+  Json j = Json::object();
+  for (size_t o = 0; o < views.size(); ++o) {
+    const SessionView& v = views[o];
+    if (v.rotation == glm::dmat3(1.0) && v.slab.thicknessMm == 0.0) continue;
+    Json rows = Json::array();  // row by row, as the matrix is written on paper
+    for (int r = 0; r < 3; ++r)
+      rows.push_back({v.rotation[0][r], v.rotation[1][r], v.rotation[2][r]});
+    j[kViewNames[o]] = {
+        {"rotation", rows}, {"slab-mm", v.slab.thicknessMm}, {"slab-mode", toString(v.slab.mode)}};
+  }
+  return j;
+}
+
+void readViews(Reader& r, const Json& slices, Session& s) {
+  if (!slices.contains("views")) return;
+  const Json& views = r.object(slices, "slices.views", "views");
+  r.warnUnknown(views, "slices.views.", {kViewNames.begin(), kViewNames.end()});
+  for (size_t o = 0; o < kViewNames.size(); ++o) {
+    if (!views.contains(kViewNames[o])) continue;
+    const std::string field = std::string("slices.views.") + kViewNames[o];
+    const Json& view = r.object(views, field, kViewNames[o]);
+    r.warnUnknown(view, field + ".", {"rotation", "slab-mm", "slab-mode"});
+    SessionView& v = s.views[o];
+    if (view.contains("rotation")) {
+      const Json& rows = view.at("rotation");
+      const std::string want = "must be 3 rows of 3 numbers: a rotation";
+      if (!rows.is_array() || rows.size() != 3) r.fail(field + ".rotation", want);
+      for (int row = 0; row < 3; ++row) {
+        auto n = r.numbers(rows.at(size_t(row)), field + ".rotation", 3);
+        for (int col = 0; col < 3; ++col) v.rotation[col][row] = n[size_t(col)];
+      }
+      // A hand-edited matrix that is no rotation would shear the planes: refuse it.
+      const glm::dmat3 error = glm::transpose(v.rotation) * v.rotation - glm::dmat3(1.0);
+      double worst = 0.0;
+      for (int c = 0; c < 3; ++c)
+        for (int rr = 0; rr < 3; ++rr) worst = std::max(worst, std::abs(error[c][rr]));
+      if (!(worst < 1e-6) || glm::determinant(v.rotation) < 0.0)
+        r.fail(field + ".rotation", "is not a rotation (orthonormal, determinant 1)");
+    }
+    if (view.contains("slab-mm")) {
+      v.slab.thicknessMm = r.number(view.at("slab-mm"), field + ".slab-mm");
+      if (!(v.slab.thicknessMm >= 0.0) || !std::isfinite(v.slab.thicknessMm))
+        r.fail(field + ".slab-mm", "must be 0 (a thin slice) or more millimetres");
+    }
+    if (view.contains("slab-mode")) {
+      try {
+        v.slab.mode = parseSlabMode(r.text(view.at("slab-mode"), field + ".slab-mode"));
+      } catch (const Error& e) {
+        r.fail(field + ".slab-mode", std::string("is wrong: ") + e.what());
+      }
+    }
+  }
+  if (slices.contains("centre")) {
+    auto c = r.numbers(slices.at("centre"), "slices.centre", 3);
+    s.centre = glm::dvec3(c[0], c[1], c[2]);
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& sessionLayouts() {
+  static const std::vector<std::string> names = {"grid", "3d", "axial", "coronal", "sagittal"};
+  return names;
+}
+
+std::string sessionToJson(const Session& s, const std::string& sessionPath) {
+  Json j;
+  j[kVersionKey] = kSessionVersion;
+  j["input"] = inputJson(s.input, sessionPath);
+  Json render = Json::object();
+  for (const auto& spec : renderParamSpecs()) render[spec.key] = spec.format(s.render);
+  j["render"] = render;
+  j["quality"] = {{"preset", s.qualityPreset}, {"resolution", {s.resolution.x, s.resolution.y}}};
+  j["slices"] = {{"window-width", s.windowWidth},
+                 {"window-level", s.windowLevel},
+                 {"crosshair", {s.crosshair.x, s.crosshair.y, s.crosshair.z}},
+                 {"interp", toString(s.sliceInterp)}};
+  if (s.centre) j["slices"]["centre"] = {s.centre->x, s.centre->y, s.centre->z};
+  if (Json views = viewsJson(s.views); !views.empty()) j["slices"]["views"] = views;
+  j["layout"] = s.layout;
+  try {
+    j["measurements"] = Json::parse(s.measurements);
+  } catch (const Json::exception& e) {
+    throw Error(Error::Kind::Internal,
+                std::string("session: the measurements are not JSON (") + e.what() + ")");
+  }
+  return j.dump(2) + "\n";
+}
+
+SessionRead sessionFromJson(const std::string& text, const std::string& sessionPath) {
+  Json root;
+  std::vector<size_t> fields;  // of each object being read, outermost first
+  size_t fieldsInAll = 0;
+  try {
+    // Writing measurements back recurses once per level: a hostile nesting stops here.
+    root = Json::parse(text, [&](int depth, Json::parse_event_t event, Json&) {
+      if (depth > kMaxDepth)
+        throw inputError("session " + sessionPath + ": nested deeper than " +
+                         std::to_string(kMaxDepth) + " levels; not a Voxray session");
+      if (event == Json::parse_event_t::object_start) fields.push_back(0);
+      if (event == Json::parse_event_t::object_end) fields.pop_back();
+      if (event == Json::parse_event_t::key && ++fields.back() > kMaxFields)
+        throw inputError("session " + sessionPath + ": an object holds more than " +
+                         std::to_string(kMaxFields) +
+                         " fields; not a Voxray session (or a damaged one)");
+      if (event == Json::parse_event_t::key && ++fieldsInAll > kMaxFieldsInAll)
+        throw inputError("session " + sessionPath + ": it holds more than " +
+                         std::to_string(kMaxFieldsInAll) +
+                         " fields in all; not a Voxray session (or a damaged one)");
+      return true;
+    });
+  } catch (const Json::exception& e) {
+    throw inputError("session " + sessionPath + ": not a JSON file (" + shown(e.what()) +
+                     "); choose a session saved by Voxray");
+  }
+  if (!root.is_object())
+    throw inputError("session " + sessionPath + ": not a Voxray session (no JSON object)");
+  Reader r(sessionPath);
+  const Json& version = r.require(root, kVersionKey, kVersionKey);
+  if (!version.is_number_integer() || version.get<long long>() < 1)
+    r.fail(kVersionKey, "must be a whole number from 1");
+  if (version.get<long long>() > kSessionVersion)
+    throw inputError("session " + sessionPath + ": written by a newer Voxray (session version " +
+                     version.dump() + "; this one reads up to " + std::to_string(kSessionVersion) +
+                     "); open it with a newer Voxray");
+  r.warnUnknown(root, "",
+                {kVersionKey, "input", "render", "quality", "slices", "layout", "measurements"});
+  SessionRead out;
+  Session& s = out.session;
+  readInput(r, root, sessionPath, out);
+  readRender(r, root, s.render);
+
+  const Json& quality = r.object(root, "quality", "quality");
+  r.warnUnknown(quality, "quality.", {"preset", "resolution"});
+  s.qualityPreset = r.text(r.require(quality, "quality.preset", "preset"), "quality.preset");
+  if (!s.qualityPreset.empty()) {
+    try {
+      s.qualityPreset = findQualityPreset(s.qualityPreset).name;
+    } catch (const Error& e) {
+      r.fail("quality.preset", std::string("is wrong: ") + e.what());
+    }
+  }
+  auto res =
+      r.wholes(r.require(quality, "quality.resolution", "resolution"), "quality.resolution", 2);
+  if (res[0] < 0 || res[1] < 0 || res[0] > 16384 || res[1] > 16384 ||
+      (res[0] == 0) != (res[1] == 0))
+    r.fail("quality.resolution", "must be [0, 0] (the view's size) or 1 ... 16384 each");
+  s.resolution = {res[0], res[1]};
+
+  const Json& slices = r.object(root, "slices", "slices");
+  r.warnUnknown(slices, "slices.",
+                {"window-width", "window-level", "crosshair", "interp", "centre", "views"});
+  s.windowWidth =
+      r.number(r.require(slices, "slices.window-width", "window-width"), "slices.window-width");
+  if (!(s.windowWidth > 0.0)) r.fail("slices.window-width", "must be greater than 0");
+  s.windowLevel =
+      r.number(r.require(slices, "slices.window-level", "window-level"), "slices.window-level");
+  auto c = r.wholes(r.require(slices, "slices.crosshair", "crosshair"), "slices.crosshair", 3);
+  s.crosshair = {c[0], c[1], c[2]};
+  try {
+    s.sliceInterp =
+        parseInterp(r.text(r.require(slices, "slices.interp", "interp"), "slices.interp"));
+  } catch (const Error& e) {
+    r.fail("slices.interp", std::string("is wrong: ") + e.what());
+  }
+  readViews(r, slices, s);
+
+  s.layout = r.text(r.require(root, "layout", "layout"), "layout");
+  const auto& layouts = sessionLayouts();
+  if (std::find(layouts.begin(), layouts.end(), s.layout) == layouts.end())
+    r.fail("layout", "must be one of grid, 3d, axial, coronal, sagittal");
+  if (root.contains("measurements")) {
+    if (!root.at("measurements").is_array()) r.fail("measurements", "must be an array [ ... ]");
+    s.measurements = root.at("measurements").dump();
+  }
+  out.warnings = r.allWarnings();
+  return out;
+}
+
+std::string movedDataMessage(const std::string& sessionPath, const std::vector<std::string>& tried,
+                             const std::string& fix) {
+  std::string where;
+  for (size_t i = 0; i < tried.size(); ++i)
+    where += (i ? (i + 1 == tried.size() ? " nor at " : ", ") : "") + tried[i];
+  return "session " + sessionPath + ": its data is missing (not at " + where +
+         "); the data moved or was deleted. " + fix;
+}
+
+}  // namespace voxray

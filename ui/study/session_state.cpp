@@ -1,0 +1,66 @@
+#include "session_state.h"
+
+#include "measurement_json.h"
+#include "study_state.h"
+
+namespace voxray {
+
+Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
+                          const std::string& layout) {
+  Session s;
+  s.input = m.source;
+  s.render = m.render.params();
+  s.render.width = viewSize.x;
+  s.render.height = viewSize.y;
+  s.qualityPreset = m.render.quality().preset;
+  s.resolution = m.render.quality().resolution;
+  s.windowWidth = m.windowLevel.value().width;
+  s.windowLevel = m.windowLevel.value().level;
+  s.crosshair = m.crosshair.voxel();
+  if (m.crosshair.rotated()) s.centre = m.crosshair.centre();
+  for (size_t o = 0; o < s.views.size(); ++o)
+    s.views[o] = {m.crosshair.rotation(Orientation(o)), m.crosshair.slab(Orientation(o))};
+  s.sliceInterp = m.render.sliceInterp();
+  s.layout = layout;
+  s.measurements = measurementsToJson(m.measurements).at("items").dump();
+  return s;
+}
+
+void openSession(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
+                 const Session& s) {
+  openStudy(m, std::move(v), std::move(name));
+  applySession(m, s);
+}
+
+void applySession(AppModels& m, const Session& s) {
+  m.source = s.input;
+  // The session keeps the list only: whether exports show measurements stays the user's
+  // choice each time (off), as burned-in measurements must be.
+  measurementsFromJson(
+      {{"show_in_exports", false}, {"items", nlohmann::json::parse(s.measurements)}},
+      m.measurements);
+  Quality q = m.render.quality();
+  q.preset = s.qualityPreset;
+  q.resolution = s.resolution;
+  m.render.setQuality(q);  // checked when read: a known preset or custom
+  m.render.update(kAll, [&](RenderParams& p) {
+    const int width = p.width, height = p.height;  // the view decides the size
+    p = s.render;
+    p.width = width;
+    p.height = height;
+  });
+  m.render.setSliceInterp(s.sliceInterp);
+  m.windowLevel.set({s.windowWidth, s.windowLevel});
+  std::array<glm::dmat3, 3> rotations;
+  for (size_t o = 0; o < s.views.size(); ++o) {
+    rotations[o] = s.views[o].rotation;
+    m.crosshair.setSlab(Orientation(o), s.views[o].slab);
+  }
+  m.crosshair.setPlanes(s.centre.value_or(glm::dvec3(s.crosshair)), rotations);
+}
+
+bool isSessionPath(const std::string& path) {
+  return path.size() > 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+}
+
+}  // namespace voxray

@@ -1,0 +1,33 @@
+#pragma once
+// The workstation's state as a session file (voxray/engine/session.h) and back: what
+// File → Save session writes and Open session restores, Qt-free so that a test can save
+// the models' state and compare voxray-cli's render of it with the 3D view's frame.
+#include <memory>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "app_models.h"
+#include "no_qt.h"
+#include "session.h"
+
+namespace voxray {
+
+// M's state: its input (M.source), every render parameter with "size" set to VIEWSIZE (the
+// 3D view's size in pixels), the quality choice, the slice window/level, crosshair and
+// interpolation, LAYOUT (a sessionLayouts() name) and the measurements.
+Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
+                          const std::string& layout);
+
+// Sets everything S holds on the study just opened (openStudy) from S.input: render
+// parameters (the view keeps deciding the size), quality, window/level, crosshair, slice
+// interpolation, measurements, the input. The layout is the window's to apply.
+void applySession(AppModels& m, const Session& s);
+// openStudy of V, then applySession.
+void openSession(AppModels& m, std::shared_ptr<const Volume> v, std::string name, const Session& s);
+
+// Whether PATH names a session file (".json") rather than a volume: the recent-files list
+// holds both.
+bool isSessionPath(const std::string& path);
+
+}  // namespace voxray

@@ -1,0 +1,120 @@
+#include "study_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace voxray {
+
+namespace {
+
+constexpr WindowLevel kCtDefaultWindow{400.0, 40.0};
+
+// The quality choice's and slice interpolation's lines in RenderStateModel::toText:
+// preferences too.
+bool isQualityLine(const std::string& key) { return key.rfind("ui-", 0) == 0; }
+
+// The lines of TEXT (RenderStateModel::toText) that hold preferences.
+std::string preferenceLines(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    const std::string key = line.substr(0, line.find('='));
+    if (isPreference(key) || isQualityLine(key)) out += line + "\n";
+  }
+  return out;
+}
+
+// Every per-study render parameter of FROM into TO, through the specs so that a parameter
+// added later is covered without a second list. The specs run in declaration order:
+// "light" (which fixes the light) before "light-follows-camera".
+void copyStudyParams(const RenderParams& from, RenderParams& to) {
+  for (const auto& spec : renderParamSpecs())
+    if (!isPreference(spec.key) && spec.key != "size") spec.parse(to, spec.format(from));
+}
+
+}  // namespace
+
+const std::vector<std::string>& preferenceKeys() {
+  // The look the user chose and the camera's projection; not where they looked or what
+  // they cut away.
+  static const std::vector<std::string> keys = {
+      // presets and their adjustments
+      "mode", "preset", "tf", "preset-shift", "iso", "window",
+      // reconstruction and compositing
+      "gradient", "interp", "step", "refine", "jitter", "shading", "opacity-correction",
+      "early-termination",
+      // light terms, colours, projection
+      "ambient", "diffuse", "specular", "shininess", "surface-color", "background", "projection",
+      "fov"};
+  return keys;
+}
+
+bool isPreference(const std::string& key) {
+  const auto& keys = preferenceKeys();
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+std::string preferencesText(const RenderStateModel& m) { return preferenceLines(m.toText()); }
+
+void applyPreferences(RenderStateModel& m, const std::string& text) {
+  m.fromText(preferenceLines(text));
+}
+
+InitialWindow initialWindow(const Volume& v) {
+  if (v.window) {
+    const std::string& why = v.window->explanation;
+    return {{v.window->width, v.window->level},
+            why.empty() ? v.window->origin : why + " (" + v.window->origin + ")"};
+  }
+  if (v.modality == "CT") return {kCtDefaultWindow, "CT default (no window given)"};
+  const ValueRange r = storedRange(v);
+  const double a = v.toPhysical(r.min), b = v.toPhysical(r.max);
+  const std::string what = v.modality.empty() ? "modality unknown" : v.modality;
+  return {{std::max(std::abs(b - a), 1.0), 0.5 * (a + b)},
+          "value range (" + what + ", no window given)"};
+}
+
+void openStudy(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
+               const std::map<std::string, std::string>& values) {
+  std::map<std::string, std::string> forStudy;
+  for (const auto& [key, value] : values)
+    if (!isPreference(key)) forStudy.emplace(key, value);
+  auto& previous = m.previousStudy;
+  previous.valid = !m.document.empty();
+  if (previous.valid) {
+    previous.render = m.render.params();
+    previous.wl = m.windowLevel.value();
+    previous.wlSource = m.windowLevel.source();
+    previous.dims = m.crosshair.dims();
+    previous.crosshair = m.crosshair.voxel();
+    previous.source = m.source;
+    previous.spacingMm = m.crosshair.spacingMm();
+    previous.direction = m.crosshair.direction();
+  }
+  m.render.update(kCamera | kClip | kLight,
+                  [](RenderParams& p) { copyStudyParams(RenderParams{}, p); });
+  if (!forStudy.empty()) m.render.applyValues(forStudy);
+  const InitialWindow w = initialWindow(*v);
+  m.windowLevel.reset(w.wl, w.source);
+  m.crosshair.setGeometry(v->dims, v->spacingMm, v->direction);
+  m.measurements.clear();  // a study's own; a session brings them back
+  // Last: whoever hears the document change sees the new study's state with it.
+  m.document.set(std::move(v), std::move(name));
+}
+
+void restorePreviousStudy(AppModels& m) {
+  auto& previous = m.previousStudy;
+  if (previous.valid) {
+    previous.valid = false;
+    m.render.update(kCamera | kClip | kLight,
+                    [&](RenderParams& p) { copyStudyParams(previous.render, p); });
+    m.windowLevel.reset(previous.wl, previous.wlSource);
+    m.crosshair.setGeometry(previous.dims, previous.spacingMm, previous.direction);
+    m.crosshair.setVoxel(previous.crosshair);
+    m.source = previous.source;
+  }
+  m.document.restorePrevious();
+}
+
+}  // namespace voxray
