@@ -8,10 +8,10 @@
 
 #include "commands.h"
 #include "input_options.h"
+#include "movie.h"
 #include "progress.h"
 #include "render_flags.h"
 #include "voxray/engine/cl_context.h"
-#include "movie.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
 #include "voxray/io/volume.h"
@@ -46,9 +46,9 @@ MoviePlan plan(const MovieOptions& o, const Volume& v) {
   MoviePlan plan;
   plan.cine = !o.cine.empty();
   plan.orbit = o.orbit == "elevation" ? Orbit::Elevation : Orbit::Azimuth;
-  plan.view = o.cine == "coronal"    ? CineView::Coronal
-              : o.cine == "sagittal" ? CineView::Sagittal
-                                     : CineView::Axial;
+  plan.view = o.cine == "coronal"    ? Orientation::Coronal
+              : o.cine == "sagittal" ? Orientation::Sagittal
+                                     : Orientation::Axial;
   plan.frames = o.frames >= 0 ? o.frames : plan.cine ? 0 : 36;
   // The quality preset first, then every flag given: what the user wrote wins.
   RenderParams p;
@@ -60,6 +60,8 @@ MoviePlan plan(const MovieOptions& o, const Volume& v) {
     p.height = 768;
   }
   plan.params = p;
+  // A cine's window is --window, the flag that sets mip's grey window.
+  if (plan.cine) plan.window = {p.windowWidth, p.windowLevel};
   return plan;
 }
 

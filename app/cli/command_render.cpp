@@ -6,10 +6,10 @@
 #include "input_options.h"
 #include "render_flags.h"
 #include "render_state_model.h"
+#include "session.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/quality.h"
 #include "voxray/engine/raycaster.h"
-#include "session.h"
 #include "voxray/io/error.h"
 #include "voxray/io/secondary_capture.h"
 

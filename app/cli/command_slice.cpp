@@ -27,8 +27,7 @@ struct SliceOptions {
 };
 
 Orientation parseOrientation(const std::string& s) {
-  for (Orientation o :
-       {Orientation::Axial, Orientation::Coronal, Orientation::Sagittal})
+  for (Orientation o : {Orientation::Axial, Orientation::Coronal, Orientation::Sagittal})
     if (s == toString(o)) return o;
   throw inputError("--plane '" + s + "' is not one of axial, coronal, sagittal");
 }
@@ -117,8 +116,7 @@ Run addSliceCommand(CLI::App& app) {
     Volume v = o->input.load();
     if (v.voxelCount() == 0) throw inputError("the volume is empty: nothing to slice");
     const Chosen c = choosePlane(v, *o);
-    if (planeInBox(v, c.centre,
-                       rotateFrame(c.rotation, baseFrame(v.direction, c.axes)).normal)
+    if (planeInBox(v, c.centre, rotateFrame(c.rotation, baseFrame(v.direction, c.axes)).normal)
             .empty())
       throw inputError("the plane misses the volume: give a --point or --mm inside it");
     WindowLevel wl = initialWindow(v).wl;

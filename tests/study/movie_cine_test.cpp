@@ -24,14 +24,13 @@ int expectedGrey(const Volume& v, int i, int j, int k) {
   return int(std::clamp((hu - (kLevel - kWidth / 2)) / kWidth * 255.0 + 0.5, 0.0, 255.0));
 }
 
-MoviePlan cine(CineView view, int frames) {
+MoviePlan cine(Orientation view, int frames) {
   MoviePlan plan;
   plan.cine = true;
   plan.view = view;
   plan.frames = frames;
   plan.params.width = plan.params.height = 0;
-  plan.params.windowWidth = kWidth;
-  plan.params.windowLevel = kLevel;
+  plan.window = {kWidth, kLevel};
   return plan;
 }
 
@@ -42,7 +41,7 @@ constexpr int kLevels = 1;
 TEST(MovieCine, AxialFramesAreTheSlicesInOrderWithThePatientsLeftOnTheRight) {
   const Volume* v = cthead();
   if (!v) GTEST_SKIP() << "shared CThead not found";
-  MoviePlan plan = cine(CineView::Axial, 3);
+  MoviePlan plan = cine(Orientation::Axial, 3);
   settleMovieSize(plan, *v, MovieFormat::ImageSequence);
   MovieFrames frames(*v, nullptr, plan);
   ASSERT_EQ(frames.count(), 3);
@@ -63,7 +62,7 @@ TEST(MovieCine, AxialFramesAreTheSlicesInOrderWithThePatientsLeftOnTheRight) {
 TEST(MovieCine, CoronalAndSagittalFramesHaveSuperiorAtTheTop) {
   const Volume* v = cthead();
   if (!v) GTEST_SKIP() << "shared CThead not found";
-  for (CineView view : {CineView::Coronal, CineView::Sagittal}) {
+  for (Orientation view : {Orientation::Coronal, Orientation::Sagittal}) {
     MoviePlan plan = cine(view, 0);
     settleMovieSize(plan, *v, MovieFormat::ImageSequence);
     MovieFrames frames(*v, nullptr, plan);
@@ -78,17 +77,17 @@ TEST(MovieCine, CoronalAndSagittalFramesHaveSuperiorAtTheTop) {
     int worst = 0;
     for (int x = 0; x < 256; ++x)
       for (auto [row, k] : {std::pair{0, 0}, std::pair{225, 112}}) {
-        const int i = view == CineView::Coronal ? x : slice;
-        const int j = view == CineView::Coronal ? slice : x;  // sagittal: posterior right
+        const int i = view == Orientation::Coronal ? x : slice;
+        const int j = view == Orientation::Coronal ? slice : x;  // sagittal: posterior right
         worst = std::max(worst, std::abs(img.pixel(x, row)[0] - expectedGrey(*v, i, j, k)));
       }
-    EXPECT_LE(worst, kLevels) << (view == CineView::Coronal ? "coronal" : "sagittal");
+    EXPECT_LE(worst, kLevels) << (view == Orientation::Coronal ? "coronal" : "sagittal");
   }
 }
 
 TEST(MovieCine, AnotherAspectIsLetterboxedNotStretched) {
   const Volume v = makeHeadPhantom(32);  // a cube: square slices
-  MoviePlan plan = cine(CineView::Axial, 1);
+  MoviePlan plan = cine(Orientation::Axial, 1);
   plan.params.width = 64;
   plan.params.height = 32;
   MovieFrames frames(v, nullptr, plan);
@@ -126,7 +125,7 @@ TEST(MovieWrite, CancelLeavesNothingUnderTheFinalNames) {
     TempFolder dir;
     std::atomic<bool> cancel{false};
     int reported = 0;
-    MoviePlan plan = cine(CineView::Axial, 8);
+    MoviePlan plan = cine(Orientation::Axial, 8);
     plan.params.width = plan.params.height = 32;
     MovieFrames sized(v, nullptr, plan);
     try {
@@ -150,7 +149,7 @@ TEST(MovieWrite, CancelLeavesNothingUnderTheFinalNames) {
 TEST(MovieWrite, ProgressEstimatesTheTimeLeftFromTheFramesSoFar) {
   const Volume v = makeHeadPhantom(32);
   TempFolder dir;
-  MoviePlan plan = cine(CineView::Sagittal, 4);
+  MoviePlan plan = cine(Orientation::Sagittal, 4);
   plan.params.width = plan.params.height = 32;
   MovieFrames frames(v, nullptr, plan);
   std::vector<MovieProgress> seen;

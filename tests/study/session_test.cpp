@@ -92,8 +92,7 @@ Session unusualSession() {
   }
   s.qualityPreset = "reference";
   s.resolution = {800, 600};
-  s.windowWidth = 350.5;
-  s.windowLevel = 45.25;
+  s.window = {350.5, 45.25};
   s.crosshair = {12, 34, 56};
   s.sliceInterp = Interp::Nearest;
   s.layout = "coronal";
@@ -150,8 +149,8 @@ TEST(Session, EveryFieldRoundTripsExactly) {
   EXPECT_EQ(r.input.flags, s.input.flags);
   EXPECT_EQ(r.qualityPreset, "reference");
   EXPECT_EQ(r.resolution, glm::ivec2(800, 600));
-  EXPECT_EQ(r.windowWidth, 350.5);
-  EXPECT_EQ(r.windowLevel, 45.25);
+  EXPECT_EQ(r.window.width, 350.5);
+  EXPECT_EQ(r.window.level, 45.25);
   EXPECT_EQ(r.crosshair, glm::ivec3(12, 34, 56));
   EXPECT_EQ(r.sliceInterp, Interp::Nearest);
   EXPECT_EQ(r.layout, "coronal");

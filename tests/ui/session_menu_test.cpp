@@ -86,8 +86,7 @@ class SessionMenuTest : public QObject {
     // a field from a newer version.
     SessionRead read = readSessionFile((file + ".json").toStdString());
     read.session.input.path = dir_.filePath("gone/CThead").toStdString();
-    read.session.windowWidth = 900.0;
-    read.session.windowLevel = 120.0;
+    read.session.window = {900.0, 120.0};
     const QString moved = dir_.filePath("moved.json");
     QByteArray json = QByteArray::fromStdString(sessionToJson(read.session, moved.toStdString()));
     json.replace("{\n", "{\n  \"annotations\": [],\n");

@@ -6,8 +6,8 @@
 #include "measurement_model.h"
 #include "no_qt.h"
 #include "render_state_model.h"
-#include "volume_document.h"
 #include "session.h"
+#include "volume_document.h"
 #include "window_level.h"
 
 namespace voxray {

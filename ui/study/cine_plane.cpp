@@ -7,33 +7,6 @@
 namespace voxray {
 namespace {
 
-// The view's normal, screen right and screen down as patient (LPS) directions; the slice
-// views' convention (ui/study/slice_geometry.cpp).
-struct ViewAxes {
-  glm::dvec3 normal, right, down;
-};
-
-ViewAxes viewAxes(CineView view) {
-  switch (view) {
-    case CineView::Coronal:
-      return {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}};
-    case CineView::Sagittal:
-      return {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-    case CineView::Axial:
-      break;
-  }
-  return {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
-}
-
-// The voxel axis whose direction lies closest to the view's normal: the cine steps along it.
-int normalAxis(const Volume& v, CineView view) {
-  const glm::dvec3 n = viewAxes(view).normal;
-  int best = 0;
-  for (int a = 1; a < 3; ++a)
-    if (std::abs(glm::dot(v.direction[a], n)) > std::abs(glm::dot(v.direction[best], n))) best = a;
-  return best;
-}
-
 // D without its component along the unit vector N, normalised (or zero).
 glm::dvec3 reject(const glm::dvec3& d, const glm::dvec3& n) {
   const glm::dvec3 r = d - glm::dot(d, n) * n;
@@ -43,11 +16,14 @@ glm::dvec3 reject(const glm::dvec3& d, const glm::dvec3& n) {
 
 }  // namespace
 
-int cineSliceCount(const Volume& v, CineView view) { return v.dims[normalAxis(v, view)]; }
+// The cine steps along the voxel axis closest to the view's normal, as the slice views do.
+int cineSliceCount(const Volume& v, Orientation view) {
+  return v.dims[sliceAxes(v.direction, view).nAxis];
+}
 
-PlaneGrid cinePlane(const Volume& v, CineView view, int slice, glm::ivec2 size) {
-  const int a = normalAxis(v, view);
-  const ViewAxes want = viewAxes(view);
+PlaneGrid cinePlane(const Volume& v, Orientation view, int slice, glm::ivec2 size) {
+  const int a = sliceAxes(v.direction, view).nAxis;
+  const PatientAxes want = patientAxes(view);
   const glm::dvec3 normal = v.direction[a];
   PlaneGrid g;
   g.uDir = reject(want.right, normal);

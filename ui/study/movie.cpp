@@ -18,11 +18,6 @@ int cineSlice(int k, int frames, int slices) {
   return int(std::lround(double(k) * (slices - 1) / (frames - 1)));
 }
 
-// DICOM-style linear ramp: level - width/2 is black, level + width/2 white.
-uint8_t grey(float value, double lo, double width) {
-  return uint8_t(std::lround(std::clamp((value - lo) / width, 0.0, 1.0) * 255.0));
-}
-
 }  // namespace
 
 MovieSize settleMovieSize(MoviePlan& plan, const Volume& v, MovieFormat format) {
@@ -80,7 +75,8 @@ Image MovieFrames::frame(int k) {
   // Outside the slice (the margins of another aspect ratio): black.
   const std::vector<float> values =
       samplePlane(v_, g, p.interp, std::numeric_limits<float>::lowest());
-  double width = p.windowWidth, lo = p.windowLevel - 0.5 * p.windowWidth;
+  const WindowLevel& wl = plan_.window;
+  double width = wl.width, lo = wl.level - 0.5 * wl.width;
   if (width <= 0.0) {  // the volume's whole range, as mip's window
     const ValueRange r = storedRange(v_);
     const double a = v_.toPhysical(r.min), b = v_.toPhysical(r.max);
@@ -90,7 +86,7 @@ Image MovieFrames::frame(int k) {
   Image img(g.size.x, g.size.y);
   for (size_t i = 0; i < values.size(); ++i) {
     uint8_t* q = &img.rgba[i * 4];
-    q[0] = q[1] = q[2] = grey(values[i], lo, width);
+    q[0] = q[1] = q[2] = greyRamp(values[i], lo, width);
     q[3] = 255;
   }
   return img;

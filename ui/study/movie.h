@@ -7,10 +7,12 @@
 #include <functional>
 #include <memory>
 
+#include "slice_geometry.h"
 #include "voxray/engine/orbit.h"
 #include "voxray/engine/plane_sampler.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/movie_writer.h"
+#include "window_level.h"
 
 namespace voxray {
 
@@ -18,19 +20,18 @@ struct Volume;
 class ClContext;
 class Raycaster;
 
-enum class CineView { Axial, Coronal, Sagittal };
-
 struct MoviePlan {
   bool cine = false;
   Orbit orbit = Orbit::Azimuth;
-  CineView view = CineView::Axial;
+  Orientation view = Orientation::Axial;
   // Orbit: frames over 360 degrees. Cine: slices shown, spread evenly from the first to the
   // last; 0 = every slice.
   int frames = 0;
   // Orbit: everything but the camera's azimuth (and elevation for an elevation orbit).
-  // Cine: width and height (0 x 0: the slice at its finest in-plane spacing), interp, and
-  // the window (windowWidth 0: the volume's whole value range).
+  // Cine: width and height (0 x 0: the slice at its finest in-plane spacing) and interp.
   RenderParams params;
+  // Cine: the slice views' window (width 0: the volume's whole value range).
+  WindowLevel window{0.0, 0.0};
 };
 
 // Index plane SLICE (along the voxel axis closest to the view's normal) of a cine view,
@@ -38,8 +39,8 @@ struct MoviePlan {
 // slice, centred. Screen axes as the slice views show them (radiological: the patient's
 // right on the left; anterior or superior at the top), each the patient axis projected
 // into the plane, so an oblique acquisition is shown upright.
-PlaneGrid cinePlane(const Volume& v, CineView view, int slice, glm::ivec2 size);
-int cineSliceCount(const Volume& v, CineView view);
+PlaneGrid cinePlane(const Volume& v, Orientation view, int slice, glm::ivec2 size);
+int cineSliceCount(const Volume& v, Orientation view);
 
 // Settles PLAN's frame size for FORMAT: a cine's 0 x 0 becomes the slice's own size, and
 // MP4 rounds an odd width or height up (movieFrameSize). Returns the size asked for before

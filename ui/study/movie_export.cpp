@@ -22,9 +22,9 @@ MoviePlan planMovie(const MovieChoice& choice, const RenderStateModel& view, con
   MoviePlan plan;
   plan.cine = choice.kind >= 2;
   plan.orbit = choice.kind == 1 ? Orbit::Elevation : Orbit::Azimuth;
-  plan.view = choice.kind == 3   ? CineView::Coronal
-              : choice.kind == 4 ? CineView::Sagittal
-                                 : CineView::Axial;
+  plan.view = choice.kind == 3   ? Orientation::Coronal
+              : choice.kind == 4 ? Orientation::Sagittal
+                                 : Orientation::Axial;
   plan.frames = choice.frames;
   Quality q = view.quality();
   q.preset = choice.quality;
@@ -34,8 +34,7 @@ MoviePlan planMovie(const MovieChoice& choice, const RenderStateModel& view, con
   plan.params.width = choice.size.x;  // exactly the size asked for (planFrame keeps >= 16)
   plan.params.height = choice.size.y;
   if (plan.cine) {  // as the slice views show it
-    plan.params.windowWidth = wl.width;
-    plan.params.windowLevel = wl.level;
+    plan.window = wl;
     plan.params.interp = view.sliceInterp();
   }
   settleMovieSize(plan, v, movieFormat(path));

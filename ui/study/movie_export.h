@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "background_task.h"
+#include "movie.h"
 #include "no_qt.h"
 #include "render_state_model.h"
-#include "movie.h"
 #include "window_level.h"
 
 namespace voxray {

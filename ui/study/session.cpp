@@ -290,8 +290,8 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
   for (const auto& spec : renderParamSpecs()) render[spec.key] = spec.format(s.render);
   j["render"] = render;
   j["quality"] = {{"preset", s.qualityPreset}, {"resolution", {s.resolution.x, s.resolution.y}}};
-  j["slices"] = {{"window-width", s.windowWidth},
-                 {"window-level", s.windowLevel},
+  j["slices"] = {{"window-width", s.window.width},
+                 {"window-level", s.window.level},
                  {"crosshair", {s.crosshair.x, s.crosshair.y, s.crosshair.z}},
                  {"interp", toString(s.sliceInterp)}};
   if (s.centre) j["slices"]["centre"] = {s.centre->x, s.centre->y, s.centre->z};
@@ -369,10 +369,10 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   const Json& slices = r.object(root, "slices", "slices");
   r.warnUnknown(slices, "slices.",
                 {"window-width", "window-level", "crosshair", "interp", "centre", "views"});
-  s.windowWidth =
+  s.window.width =
       r.number(r.require(slices, "slices.window-width", "window-width"), "slices.window-width");
-  if (!(s.windowWidth > 0.0)) r.fail("slices.window-width", "must be greater than 0");
-  s.windowLevel =
+  if (!(s.window.width > 0.0)) r.fail("slices.window-width", "must be greater than 0");
+  s.window.level =
       r.number(r.require(slices, "slices.window-level", "window-level"), "slices.window-level");
   auto c = r.wholes(r.require(slices, "slices.crosshair", "crosshair"), "slices.crosshair", 3);
   s.crosshair = {c[0], c[1], c[2]};

@@ -16,6 +16,7 @@
 
 #include "voxray/engine/plane_sampler.h"
 #include "voxray/engine/render_params.h"
+#include "window_level.h"
 
 namespace voxray {
 
@@ -42,8 +43,7 @@ struct Session {
   RenderParams render;
   std::string qualityPreset = "balanced";  // resources/quality name; empty: custom
   glm::ivec2 resolution{0, 0};             // the resolution choice; {0, 0}: the view's size
-  double windowWidth = 400.0;              // the slice views' window/level (HU for CT)
-  double windowLevel = 40.0;
+  WindowLevel window;                      // the slice views' window/level (HU for CT)
   glm::ivec3 crosshair{0};  // the slice views' voxel (i, j, k): the three slice positions
   // While a view is turned the crosshair moves off voxel centres: its continuous voxel
   // position (none: the crosshair voxel). Optional in the file, as are the views.

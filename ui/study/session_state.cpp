@@ -14,8 +14,7 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   s.render.height = viewSize.y;
   s.qualityPreset = m.render.quality().preset;
   s.resolution = m.render.quality().resolution;
-  s.windowWidth = m.windowLevel.value().width;
-  s.windowLevel = m.windowLevel.value().level;
+  s.window = m.windowLevel.value();
   s.crosshair = m.crosshair.voxel();
   if (m.crosshair.rotated()) s.centre = m.crosshair.centre();
   for (size_t o = 0; o < s.views.size(); ++o)
@@ -50,7 +49,7 @@ void applySession(AppModels& m, const Session& s) {
     p.height = height;
   });
   m.render.setSliceInterp(s.sliceInterp);
-  m.windowLevel.set({s.windowWidth, s.windowLevel});
+  m.windowLevel.set(s.window);
   std::array<glm::dmat3, 3> rotations;
   for (size_t o = 0; o < s.views.size(); ++o) {
     rotations[o] = s.views[o].rotation;

@@ -66,6 +66,16 @@ const char* toString(Orientation o) {
   return "?";
 }
 
+PatientAxes patientAxes(Orientation o) {
+  const ViewAxes w = wanted(o);
+  auto unit = [](Wanted a) {
+    glm::dvec3 d(0.0);
+    d[a.axis] = a.sign;
+    return d;
+  };
+  return {unit(w.u), unit(w.v), unit(w.n)};
+}
+
 SliceAxes sliceAxes(const glm::dmat3& direction, Orientation o) {
   ViewAxes w = wanted(o);
   SliceAxes a;

@@ -33,6 +33,14 @@ struct SliceAxes {
 
 SliceAxes sliceAxes(const glm::dmat3& direction, Orientation o);
 
+// A view's screen right, screen down and normal as patient (LPS) unit vectors: the rule
+// above, which the slice views (through sliceAxes), the movie cine and voxray-cli slice
+// share.
+struct PatientAxes {
+  glm::dvec3 right, down, normal;
+};
+PatientAxes patientAxes(Orientation o);
+
 // Slice-pixel coordinates (u, v in voxel units from the screen's top left, continuous,
 // pixel centres at k + 0.5) to a voxel position with the given slice index. On a rotated
 // (oblique) view these are the coordinates of the acquisition plane before the rotation

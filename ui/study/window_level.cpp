@@ -19,10 +19,21 @@ const std::vector<WindowLevelPreset>& windowLevelPresets() {
   return presets;
 }
 
+const WindowLevelDomain& windowLevelDomain() {
+  // The ends a spin box offers: wider than any CT window, and the levels from air to metal.
+  static const WindowLevelDomain domain{
+      ParamDomain().atLeast(kMinWidth).offer({}, 10000.0).steps(10.0, 0),
+      ParamDomain().offer(-3000.0, 10000.0).steps(10.0, 0)};
+  return domain;
+}
+
 uint8_t mapToGrey(double value, const WindowLevel& wl) {
-  double width = std::max(wl.width, kMinWidth);
-  double t = (value - (wl.level - 0.5 * width)) / width;
-  return uint8_t(std::lround(std::clamp(t, 0.0, 1.0) * 255.0));
+  const double width = std::max(wl.width, kMinWidth);
+  return greyRamp(value, wl.level - 0.5 * width, width);
+}
+
+uint8_t greyRamp(double value, double lo, double width) {
+  return uint8_t(std::lround(std::clamp((value - lo) / width, 0.0, 1.0) * 255.0));
 }
 
 WindowLevel dragWindowLevel(const WindowLevel& start, double dx, double dy) {

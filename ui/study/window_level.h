@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "notifier.h"
+#include "voxray/engine/param_spec.h"
 
 namespace voxray {
 
@@ -20,8 +21,18 @@ struct WindowLevelPreset {
 };
 const std::vector<WindowLevelPreset>& windowLevelPresets();
 
+// The values a window may take, declared with the other parameters' domains: the slice
+// group's controls take their ranges from here.
+struct WindowLevelDomain {
+  ParamDomain width, level;
+};
+const WindowLevelDomain& windowLevelDomain();
+
 // DICOM-style linear ramp: level - width/2 maps to 0, level + width/2 to 255.
 uint8_t mapToGrey(double value, const WindowLevel& wl);
+// The same ramp from LO (black) over WIDTH (to white), for a window given by its low end
+// (a movie cine over the volume's whole range): the one grey mapping of slices and cines.
+uint8_t greyRamp(double value, double lo, double width);
 
 // A mouse drag from START by (dx, dy) pixels: right widens the window, down raises the
 // level (as in 3D Slicer). Sensitivity scales with the window so narrow windows stay fine.

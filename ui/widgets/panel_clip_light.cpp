@@ -27,15 +27,6 @@ namespace voxray::ui {
 
 namespace {
 
-QDoubleSpinBox* spin(double lo, double hi, double step, int decimals) {
-  auto* s = new QDoubleSpinBox;
-  s->setRange(lo, hi);
-  s->setSingleStep(step);
-  s->setDecimals(decimals);
-  s->setKeyboardTracking(false);
-  return s;
-}
-
 // GROUP under a header that folds it away, so that the panel fits a 1080-line screen with
 // the groups not in use folded. The whole box hides: rows the group itself shows or hides
 // (by mode) keep their own state.
@@ -269,8 +260,8 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state) {
   for (const auto& p : windowLevelPresets())
     preset->addItem(
         QString("%1 (%2/%3)").arg(QString::fromStdString(p.name)).arg(p.wl.width).arg(p.wl.level));
-  auto* width = spin(1, 10000, 10, 0);
-  auto* level = spin(-3000, 10000, 10, 0);
+  auto* width = makeSpin("windowWidth", windowLevelDomain().width);
+  auto* level = makeSpin("windowLevel", windowLevelDomain().level);
   width->setToolTip("Window width of the slice views (right drag in a slice: left-right)");
   level->setToolTip("Window level (centre) of the slice views (right drag in a slice: up-down)");
   auto* source = new QLabel;
