@@ -1,9 +1,12 @@
 #pragma once
 // All UI state of one workstation window, owned outside the widgets so that it outlives
 // them (widgets disconnect from the models when they are destroyed).
+#include <optional>
+#include <string>
 #include "crosshair_model.h"
 #include "lighting_figures.h"
 #include "measurement_model.h"
+
 #include "no_qt.h"
 #include "render_state_model.h"
 #include "session.h"
@@ -21,6 +24,9 @@ struct AppModels {
   LightingFigures lighting;       // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;
+  // While a volume whose values are not HU is open (value_look.h): the user's HU look
+  // (preferencesText), saved as the preferences and put back when a CT opens.
+  std::optional<std::string> huLook;
 
   // The per-study state of the volume the document keeps as its previous one: openStudy
   // saves it, restorePreviousStudy (study_state.h) brings it back with that volume.

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
+
+#include "value_look.h"
 
 namespace voxray {
 
@@ -25,12 +28,57 @@ std::string preferenceLines(const std::string& text) {
   return out;
 }
 
+// The preferences in HU: a volume whose values are not HU gets its own (value_look.h).
+bool isHuValued(const std::string& key) {
+  return key == "preset" || key == "tf" || key == "preset-shift" || key == "iso" || key == "window";
+}
+
+// The HU-valued lines of TEXT (key=value lines).
+std::string huLines(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (isHuValued(line.substr(0, line.find('=')))) out += line + "\n";
+  return out;
+}
+
+// TEXT's lines, with the HU-valued ones taken from HU's (huLines) instead.
+std::string withHuLines(const std::string& text, const std::string& hu) {
+  std::map<std::string, std::string> huLine;
+  std::istringstream h(hu);
+  std::string line, out;
+  while (std::getline(h, line)) huLine[line.substr(0, line.find('='))] = line;
+  std::istringstream in(text);
+  while (std::getline(in, line)) {
+    const std::string key = line.substr(0, line.find('='));
+    if (!isHuValued(key)) {
+      out += line + "\n";
+    } else if (auto it = huLine.find(key); it != huLine.end()) {
+      out += it->second + "\n";
+    }
+  }
+  return out;
+}
+
 // Every per-study render parameter of FROM into TO, through the specs so that a parameter
 // added later is covered without a second list. The specs run in declaration order:
 // "light" (which fixes the light) before "light-follows-camera".
 void copyStudyParams(const RenderParams& from, RenderParams& to) {
   for (const auto& spec : renderParamSpecs())
     if (!isPreference(spec.key) && spec.key != "size") spec.parse(to, spec.format(from));
+}
+
+// The appearance V opens with: a volume whose values are not HU gets its iso range, dvr
+// table and mip window from its own histogram, the user's HU look kept aside; a CT gets
+// that look back (its HU lines only: a mode or gradient chosen meanwhile stays).
+void applyLookFor(AppModels& m, const Volume& v) {
+  if (valuesAreHu(v)) {
+    if (m.huLook) applyPreferences(m.render, *std::exchange(m.huLook, std::nullopt));
+    return;
+  }
+  if (!m.huLook) m.huLook = huLines(preferencesText(m.render));
+  const ValueLook look = valueLook(v);
+  m.render.update(kAppearance, [&](RenderParams& p) { applyValueLook(p, look); });
 }
 
 }  // namespace
@@ -56,6 +104,11 @@ bool isPreference(const std::string& key) {
 }
 
 std::string preferencesText(const RenderStateModel& m) { return preferenceLines(m.toText()); }
+
+std::string preferencesText(const AppModels& m) {
+  const std::string own = preferencesText(m.render);
+  return m.huLook ? withHuLines(own, *m.huLook) : own;
+}
 
 void applyPreferences(RenderStateModel& m, const std::string& text) {
   m.fromText(preferenceLines(text));
@@ -94,6 +147,7 @@ void openStudy(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
   }
   m.render.update(kCamera | kClip | kLight,
                   [](RenderParams& p) { copyStudyParams(RenderParams{}, p); });
+  applyLookFor(m, *v);
   if (!forStudy.empty()) m.render.applyValues(forStudy);
   const InitialWindow w = initialWindow(*v);
   m.windowLevel.reset(w.wl, w.source);
@@ -115,6 +169,7 @@ void restorePreviousStudy(AppModels& m) {
     m.source = previous.source;
   }
   m.document.restorePrevious();
+  if (m.document.volume()) applyLookFor(m, *m.document.volume());
 }
 
 }  // namespace voxray

@@ -30,6 +30,9 @@ bool isPreference(const std::string& key);
 // old settings file cannot bring back a clip box or a camera.
 std::string preferencesText(const RenderStateModel& m);
 void applyPreferences(RenderStateModel& m, const std::string& text);
+// The preferences to save: M's, with the user's HU look in place of the histogram look of
+// a volume whose values are not HU (value_look.h).
+std::string preferencesText(const AppModels& m);
 
 // The window/level a volume opens with, and where it came from, for display beside it.
 struct InitialWindow {
@@ -42,8 +45,10 @@ InitialWindow initialWindow(const Volume& v);
 
 // Makes V the document and starts every per-study state from V's defaults: the full clip
 // box, the framed camera (projection and field of view are preferences and stay), the
-// default light, the initial window and the crosshair at the centre. VALUES: render values
-// by key for this volume (the command line's --azimuth, --clip, ... for the volume it
+// default light, the initial window and the crosshair at the centre. A volume whose values
+// are not HU (MR, PET, unknown) gets its iso range, dvr table and mip window from its own
+// histogram (valueLook), the mode staying the user's; the next CT gets the HU look back. VALUES:
+// render values by key for this volume (the command line's --azimuth, --clip, ... for the volume it
 // opens), applied on top; preference keys among them are skipped (they were applied when
 // given). A bad value throws Error (Input), as RenderStateModel::applyValues, before the
 // document changes.

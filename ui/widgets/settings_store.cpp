@@ -19,7 +19,7 @@ QString rawKey(const std::string& path) {
 }  // namespace
 
 void saveModelSettings(QSettings& s, const AppModels& m) {
-  s.setValue("render/preferences", QString::fromStdString(preferencesText(m.render)));
+  s.setValue("render/preferences", QString::fromStdString(preferencesText(m)));
   // Older versions saved the whole state, window/level included: per-study state that
   // must not come back (study_state.h).
   for (const char* old : {"render/state", "slices/window", "slices/level"}) s.remove(old);
