@@ -76,7 +76,7 @@ class Raycaster {
                   FrameStats* stats = nullptr);
   // A frame from the -D HIT_OUTPUT=1 variant that also gives each pixel's hit (row by row):
   // xyz the hit point in voxel coordinates, w 1 for an iso surface crossing or where dvr's
-  // accumulated opacity reaches 0.5 (DVR_HIT_ALPHA, kernels/hit_output.cl: interpolated
+  // accumulated opacity reaches 0.5 (DVR_HIT_ALPHA, kernels/march/hit_output.cl: interpolated
   // within the segment that crosses it), 0 for an iso hit at the first sample (entry face
   // or clip cap), -1 for none (a dvr ray that stays below 0.5 or stops earlier by early
   // termination, and every mip pixel).
