@@ -323,7 +323,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     // get_global_id, which counts the offset, and drop items past the image.
     size_t gx = size_t(p.width), gy = size_t(y1), oy = size_t(y0);
     if (m.packets()) {  // one work-item per 4 x (lanes / 4) pixels
-      // MIP_HALVES packets of 4 x (lanes / 4) pixels, one below the other (march_lanes.cl).
+      // MIP_HALVES packets of 4 x (lanes / 4) pixels, one below the other (mip_packet.cl).
       size_t rows = size_t(sw.LANES / 4) * size_t(sw.MIP_HALVES);
       gx = (gx + 3) / 4;
       gy = (gy + rows - 1) / rows;

@@ -25,7 +25,7 @@ struct RaycasterOptions {
   bool emptySpaceSkipping = true;  // leap macro cells that cannot change the pixel
   bool countSamples = false;       // fill FrameStats::samples (an atomic add per ray)
   // A CPU device with buffer storage: each work-item marches a packet of rays in SIMD
-  // (kernels/march_lanes.cl). Ignored elsewhere (GPUs diverge less one ray per work-item).
+  // (kernels/march/). Ignored elsewhere (GPUs diverge less one ray per work-item).
   bool packets = true;
   // Rays per packet, 8 (4x2) or 16 (4x4). 0: 16 where the device's native float vector
   // holds 16 (AVX-512), else 8, in every mode.
