@@ -1,16 +1,18 @@
-# voxray_embed_files(TARGET NAMESPACE FILES...)
+# voxray_embed_files(TARGET NAMESPACE [BASE DIR] FILES...)
 # Turns text files (OpenCL kernels, presets) into a static library holding a
 # name -> contents table, regenerated whenever one of the files changes, so the
-# binaries need no files on disk at run time.
+# binaries need no files on disk at run time. Keys are file names, or with BASE the
+# paths below DIR ("shading/shading.cl"), so files may sit in subfolders.
 set(VOXRAY_EMBED_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/EmbedFilesScript.cmake)
 
 function(voxray_embed_files target function_name)
-  set(files ${ARGN})
+  cmake_parse_arguments(PARSE_ARGV 2 EMBED "" "BASE" "")
+  set(files ${EMBED_UNPARSED_ARGUMENTS})
   set(out ${CMAKE_CURRENT_BINARY_DIR}/${target}_embedded.cpp)
   add_custom_command(
     OUTPUT ${out}
     COMMAND ${CMAKE_COMMAND} -DOUT=${out} -DFUNCTION=${function_name} "-DFILES=${files}"
-            -P ${VOXRAY_EMBED_SCRIPT}
+            "-DBASE=${EMBED_BASE}" -P ${VOXRAY_EMBED_SCRIPT}
     DEPENDS ${files} ${VOXRAY_EMBED_SCRIPT}
     COMMENT "Embedding ${target}"
     VERBATIM)

@@ -1,9 +1,14 @@
 # Run in script mode by voxray_embed_files(): writes OUT, a C++ file defining
 #   const std::map<std::string, std::string_view>& FUNCTION();
-# keyed by file name. Contents are written as hex bytes, so any text survives.
+# keyed by file name, or by the path below BASE when it is set. Contents are written as
+# hex bytes, so any text survives.
 set(body "")
 foreach(f IN LISTS FILES)
-  get_filename_component(name ${f} NAME)
+  if(BASE)
+    file(RELATIVE_PATH name ${BASE} ${f})
+  else()
+    get_filename_component(name ${f} NAME)
+  endif()
   file(READ ${f} hex HEX)
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "'\\\\x\\1'," bytes "${hex}")
   string(MAKE_C_IDENTIFIER ${name} id)

@@ -29,10 +29,10 @@ VOXRAY_PARAM(int4, cells)  // macro-cell grid x, y, z (cells of CELL^3 voxels), 
 VOXRAY_PARAM(int4, slabs)  // slices each z slab owns (SLABS > 1, slabs.cl), unused x 3
 // Every switch's value by its slot (switch_slots.h); read through P_SWITCH.
 VOXRAY_PARAM(int4, switches[VOXRAY_SWITCH_VECTORS])
-// Lighting beyond Phong (LIGHTING, kernels/light_volume.cl): the light in voxel coordinates;
-// rows of the voxel -> world matrix (mm lengths of voxel steps); the light grid's points x,
-// y, z and its cell edge in voxels; ao radius (mm), march step (mm), 1 / cell, shadow offset
-// (mm: shadowOffsetMm() of engine/include/voxray/engine/monte_carlo_reference.h).
+// Lighting beyond Phong (LIGHTING, kernels/lighting/light_volume.cl): the light in voxel
+// coordinates; rows of the voxel -> world matrix (mm lengths of voxel steps); the light grid's
+// points x, y, z and its cell edge in voxels; ao radius (mm), march step (mm), 1 / cell, shadow
+// offset (mm: shadowOffsetMm() of engine/include/voxray/engine/monte_carlo_reference.h).
 VOXRAY_PARAM(float4, light_v)
 VOXRAY_PARAM(float4, to_world_x)
 VOXRAY_PARAM(float4, to_world_y)

@@ -1,5 +1,5 @@
 // The path tracer's counter-based random numbers, one formula for the kernel
-// (kernels/path_trace.cl, uint) and the C++ reference (engine/src/path_reference.cpp,
+// (kernels/lighting/path_trace.cl, uint) and the C++ reference (engine/src/path_reference.cpp,
 // uint32_t): draw i of the path (seed, pixel, sample) is a hash of those four counters, so
 // a pixel's estimate depends on nothing but them (no state carried between work-items,
 // passes or devices). The hash is Wellons' lowbias32 (two multiply-xorshift rounds).

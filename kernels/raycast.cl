@@ -1,5 +1,5 @@
 // The raycaster: one work-item per pixel, or per packet of rays on CPUs (PACKET,
-// march_lanes.cl). Compiled per frame variant with the -D switches of switches.h, which says
+// march/*_packet.cl). Compiled per frame variant with the -D switches of switches.h, which says
 // what each one does. Only what the variant needs is compiled: MIP and unshaded frames take
 // no gradient. engine/src/reference_renderer.cpp is the same algorithm in double precision.
 //
@@ -13,18 +13,20 @@
 //             its midpoint and its opacity corrected for its length. Segment 0 is the
 //             j * step stub before the first full step; with j = 0 it is empty and this is
 //             exactly the unjittered march.
-#include "march.cl"
-#include "ray.cl"
+#include "intersection/ray.cl"
+#include "march/march.cl"
 #include "variant.cl"
 // After the scalar files: what only packets use is compiled only with PACKET.
 #if PACKET
-#include "march_lanes.cl"
+#include "march/dvr_packet.cl"
+#include "march/iso_packet.cl"
+#include "march/mip_packet.cl"
 #endif
 
 // count: COUNT_SAMPLES adds each ray's samples to one of 64 counters (fewer collisions
 // than one; the host sums them). Unused otherwise, like leap and range without ESS.
 // PACKET 1 (CPUs): each work-item marches the 4 x PACKET_ROWS pixels at (4 x, PACKET_ROWS y)
-// together in SIMD (march_lanes.cl); otherwise one work-item per pixel.
+// together in SIMD (march/*_packet.cl); otherwise one work-item per pixel.
 __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
                       __global uchar4* out, CELL_ARGS, __global uint* count
 #if HIT_OUTPUT

@@ -1,7 +1,8 @@
 // The switches of a kernel variant, declared once. Everything else is generated from this
 // list: the -D options and the frame parameters' switch slots (engine/src/kernel_switches.cpp),
 // the host's KernelSwitches struct, the variant names of tests and logs. The rules that set
-// them from a frame's RenderParams live in one function, kernelSwitches() (same file).
+// them from a frame's RenderParams and the raycaster's facts (storage, packets: KernelFacts)
+// live in one function, kernelSwitches() (same file).
 //
 // VOXRAY_SWITCH(NAME, DEFAULT, KIND, LABELS), KIND:
 //   FRAME    a -D literal in a specialised kernel, so `if (SHADING)` folds away and only what
@@ -12,9 +13,19 @@
 //   BUILD    always a -D literal: it changes the kernel's arguments, stores or vector width.
 // LABELS names the values for variant names, "|"-separated from 0; an empty label leaves the
 // switch out of the name; no labels at all: NAME and the number, unless it is the default.
+// GRADIENT is named only where SHADING is on (no other frame takes a gradient).
 // Adding a switch: a line here, its rule in kernelSwitches(), the kernel code that uses it.
 //
-// Included by the kernels (params.cl) and by the engine; deliberately without a guard.
+// VOXRAY_TUNING(NAME, AT_8_LANES, AT_16_LANES): the packets' measured tuning (the list at the
+// end), not a choice of the frame: a -D literal in every PACKET variant, the value for its
+// LANES; neither a slot, nor a field of KernelSwitches, nor part of the variant's name.
+//
+// Included by the kernels (params.cl) and by the engine; deliberately without a guard. An
+// includer that leaves VOXRAY_TUNING undefined reads the switches only.
+#ifndef VOXRAY_TUNING
+#define VOXRAY_TUNING(NAME, AT_8_LANES, AT_16_LANES)
+#define VOXRAY_TUNING_UNSET
+#endif
 
 // 0 iso (first hit of a HU range, refined by bisection, shaded), 1 dvr (front-to-back
 // emission-absorption, the seed's transparency formula), 2 mip.
@@ -22,7 +33,7 @@ VOXRAY_SWITCH(MODE, 0, FRAME, "iso|dvr|mip")
 // Blinn-Phong from the gradient (never for mip).
 VOXRAY_SWITCH(SHADING, 0, FRAME, "|shaded")
 // The gradient operator when shading: central differences, Sobel 3D, Zucker-Hummel.
-VOXRAY_SWITCH(GRADIENT, 0, FRAME, "|sobel|zh")
+VOXRAY_SWITCH(GRADIENT, 0, FRAME, "central|sobel|zh")
 // 0 nearest voxel, 1 trilinear.
 VOXRAY_SWITCH(INTERP, 1, FRAME, "nearest|")
 VOXRAY_SWITCH(ORTHO, 0, FRAME, "|ortho")
@@ -42,7 +53,7 @@ VOXRAY_SWITCH(SLABS, 1, BUILD, "")
 VOXRAY_SWITCH(COUNT_SAMPLES, 0, BUILD, "|counted")
 // iso and dvr: each pixel's hit point to an extra output (march_iso, hit_output.cl).
 VOXRAY_SWITCH(HIT_OUTPUT, 0, BUILD, "|hits")
-// CPUs: a work-item marches LANES rays in SIMD (march_lanes.cl); LANES 8 (4x2) or 16 (4x4).
+// CPUs: a work-item marches LANES rays in SIMD (march/*_packet.cl); LANES 8 (4x2) or 16 (4x4).
 VOXRAY_SWITCH(PACKET, 0, BUILD, "|packet")
 VOXRAY_SWITCH(LANES, 8, BUILD, "")
 // Lighting beyond Phong (issue 15): 0 phong, 1 shadows (diffuse and specular times the
@@ -53,9 +64,41 @@ VOXRAY_SWITCH(LIGHTING, 0, FRAME, "|shadows|ao")
 // (RenderParams::adaptiveError, classify.cl's adaptive_level); set only with ESS, whose
 // macro cells hold the levels. BUILD: its code is compiled only where it is used (#if).
 VOXRAY_SWITCH(ADAPTIVE, 0, BUILD, "|adaptive")
-// Packet rules the host must follow too, so it sets them (Raycaster's switches()) and the
-// kernels only read them. mip: 4 x 2 packets a work-item marches together (march_lanes.cl),
+// Packet rules the host must follow too, so it sets them (kernelSwitches() from the
+// raycaster's facts) and the kernels only read them. mip: 4 x 2 packets a work-item marches
+// together (mip_packet.cl),
 // which sets the work-item grid's rows. iso: empty 2^3 voxel blocks a lane may pass per
 // march iteration; the host makes the block bits only where this is above 0.
 VOXRAY_SWITCH(MIP_HALVES, 1, BUILD, "")
 VOXRAY_SWITCH(ISO_BLOCK_TRIES, 0, BUILD, "")
+
+// The packets' tuning (VOXRAY_TUNING above), measured on CPUs (docs/bench/history). An
+// experiment in a kernel directory (VOXRAY_KERNEL_DIR) tries another value with #undef and
+// #define in its copy of the packet file.
+// iso: samples loaded at once (iso_packet). Their gathers' misses are most of the kernel's
+// time on a large volume; an 8-lane gather issues half the loads of a 16-lane one, so 8-lane
+// packets keep four samples in flight (CT 512x512x400: three against two about -10 % kernel
+// CPU; four against three -2 % in AVX-512 and in AVX2 builds, where session 9 under load
+// could not tell); at 16 lanes three were no faster than two.
+VOXRAY_TUNING(ISO_BATCH, 4, 2)
+// dvr: samples per iteration (dvr_packet). 2 ran about 5 % faster than 1; 3 and 4 no faster
+// than 2 (CThead, VTK's orbit).
+VOXRAY_TUNING(DVR_BATCH, 2, 2)
+// mip: a lane with no span left takes its next cell when at least 1 / MIP_REFILL of the
+// active lanes wait, so that the packet's lanes keep sampling while one finishes a long span
+// (before, every lane waited for the packet's longest span). Each refill scans every walked
+// cell: refilling at every idle lane ran slower, at 1 / 4 no faster than at half (16 lanes).
+// 8 lanes with two packets a work-item (MIP_HALVES): at 1 / 4 (2 of 8 lanes) CT kernel CPU
+// -4 %, CThead -5 % (docs/bench, session 9).
+VOXRAY_TUNING(MIP_REFILL, 4, 2)
+// mip: samples a turn (mip_cells_brightest_firstN).
+VOXRAY_TUNING(MIP_BATCH, 4, 4)
+// mip: prefetch the voxel rows of turns MIP_PREFETCH_FROM .. MIP_PREFETCH_TO ahead (0: off).
+VOXRAY_TUNING(MIP_PREFETCH, 1, 1)
+VOXRAY_TUNING(MIP_PREFETCH_FROM, 1, 1)
+VOXRAY_TUNING(MIP_PREFETCH_TO, 1, 1)
+
+#ifdef VOXRAY_TUNING_UNSET
+#undef VOXRAY_TUNING
+#undef VOXRAY_TUNING_UNSET
+#endif

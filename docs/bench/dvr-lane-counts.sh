@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Where a dvr packet's lane slots go (issue 16), counted by instrumented copies of the kernels
-# (experiments/dvr-lane-counts.patch on kernels/march_lanes.cl, one copy per count, VOXRAY_KERNEL_DIR): the
+# (experiments/dvr-lane-counts.patch, made on kernels/march_lanes.cl before it was split, applied
+# to its dvr part kernels/march/dvr_packet.cl, one copy per count, VOXRAY_KERNEL_DIR): the
 # bench's sample counter then adds the chosen count instead of the samples. One view (the
 # orbit's first frame), VTK's table, the ct400-raw.py raw, millions per frame:
 #   1 slots       lanes with a ray, times iterations times DVR_BATCH
@@ -30,8 +31,9 @@ input=("$raw" --raw-dims "512,512" --raw-type i16 --raw-spacing "1,1,1" --tf "$t
 names=(- slots live seen empty "empty early" "fine empty" "bound, per-lane leaps" "bound, + 2^3 sub-cells")
 for n in ${COUNTS:-1 2 3 4 5 6 7 8}; do
   cp -r "$here/../../kernels" "$work/k$n"
-  patch -s -d "$work/k$n" -p2 <"$here/experiments/dvr-lane-counts.patch"
-  sed -i "1i #define CNT $n" "$work/k$n/march_lanes.cl"
+  sed 's|kernels/march_lanes.cl|kernels/march/dvr_packet.cl|' \
+    "$here/experiments/dvr-lane-counts.patch" | patch -s -d "$work/k$n" -p2
+  sed -i "1i #define CNT $n" "$work/k$n/march/dvr_packet.cl"
   orbit=(--orbit elevation --zoom 1.37)
   [ -n "${QUALITY:-}" ] && orbit=()
   VOXRAY_KERNEL_DIR=$work/k$n "$cli" bench "${input[@]}" --mode dvr "${orbit[@]}" --sizes "$size" \

@@ -75,7 +75,8 @@ bool intersectBox(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& lo
   for (int a = 0; a < 3; ++a) {
     if (d[a] == 0.0) {
       // Parallel to this slab: inside it everywhere or nowhere. A ray in a face's plane is
-      // inside, within the kernel's margin (kernels/intersect.cl), so float and double agree.
+      // inside, within the kernel's margin (kernels/intersection/intersect.cl), so float and double
+      // agree.
       double margin = 1e-5 * (1.0 + std::abs(lo[a]) + std::abs(hi[a]));
       if (o[a] < lo[a] - margin || o[a] > hi[a] + margin) return false;
       continue;

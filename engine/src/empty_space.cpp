@@ -38,7 +38,7 @@ void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims) {
     leapBytes_ = 10 * n;
   }
   if (!aheadScratch_()) aheadScratch_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 6 * n);
-  cl::Kernel pass = cl.kernel("classify.cl", "leap_distance_ahead", "");
+  cl::Kernel pass = cl.kernel("empty_space/classify.cl", "leap_distance_ahead", "");
   const int len[3] = {dims.s[0], dims.s[1], dims.s[2]};
   auto run = [&](const cl::Buffer& in, size_t inAt, const cl::Buffer& out, size_t outAt, int axis,
                  bool positive) {
@@ -70,7 +70,7 @@ void EmptySpace::isoBlocks(ContextImpl& cl, const RaycastParams& k) {
   const glm::ivec3 n = cells_.dims, d = v.dims;
   const size_t cells = cells_.minMax.size() / 2;
   const float lo = k.values.s[0], hi = k.values.s[1];
-  // classify's test and margin (kernels/classify.cl), on a block's voxels instead.
+  // classify's test and margin (kernels/empty_space/classify.cl), on a block's voxels instead.
   auto meets = [&](float a, float b) { return b + 0.5f >= lo && a - 0.5f <= hi; };
   blocks_.assign(cells, 0);
   parallelFor(size_t(n.z), [&](size_t cz) {
@@ -136,7 +136,7 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     if (!opaque.empty())
       q.enqueueWriteBuffer(opaqueBefore_, CL_TRUE, 0, opaque.size() * sizeof(cl_int),
                            opaque.data());
-    cl::Kernel kernel = cl.kernel("classify.cl", "classify", "");
+    cl::Kernel kernel = cl.kernel("empty_space/classify.cl", "classify", "");
     kernel.setArg(0, range_);
     kernel.setArg(1, params);
     kernel.setArg(2, opaqueBefore_);
@@ -160,12 +160,12 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
         isoBlocks(cl, k);
         ++isoBlockScans_;
       }
-      cl::Kernel octants = cl.kernel("classify.cl", "leap_distance_from_octants", "");
+      cl::Kernel octants = cl.kernel("empty_space/classify.cl", "leap_distance_from_octants", "");
       octants.setArg(0, leap_);
       octants.setArg(1, cl_int(cells));
       q.enqueueNDRangeKernel(octants, cl::NullRange, cl::NDRange(global), cl::NullRange);
     }
-    cl::Kernel pass = cl.kernel("classify.cl", "leap_distance", "");
+    cl::Kernel pass = cl.kernel("empty_space/classify.cl", "leap_distance", "");
     const cl::Buffer* from[3] = {&occ_, &leap_, &scratch_};
     const cl::Buffer* to[3] = {&leap_, &scratch_, &leap_};
     for (int axis = 0; axis < 3 && !oneSided; ++axis) {
@@ -177,7 +177,7 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
       q.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange(global), cl::NullRange);
     }
     if (adaptive) {
-      cl::Kernel level = cl.kernel("classify.cl", "adaptive_level", "");
+      cl::Kernel level = cl.kernel("empty_space/classify.cl", "adaptive_level", "");
       level.setArg(0, range_);
       level.setArg(1, params);
       level.setArg(2, lutBuffer);

@@ -22,7 +22,7 @@ class EmptySpace {
   void upload(ContextImpl& cl, const Volume& v);
   // Brings the occupancy up to date for a frame whose parameters k are already enqueued
   // in params and lutBuffer (the queue is in order). mip needs none: it reads the min/max
-  // directly. adaptive (dvr): also each cell's step level (kernels/classify.cl,
+  // directly. adaptive (dvr): also each cell's step level (kernels/empty_space/classify.cl,
   // adaptive_level) behind the distances in leap(). iso: packets also read the one-sided
   // distances, and with blockBits (ISO_BLOCK_TRIES > 0) the iso block bits.
   void classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
@@ -31,11 +31,11 @@ class EmptySpace {
   const glm::ivec3& dims() const { return cells_.dims; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
-  // capped at MAX_LEAP (kernels/classify.cl); then, after every cell's, each cell's
+  // capped at MAX_LEAP (kernels/empty_space/classify.cl); then, after every cell's, each cell's
   // adaptive step level (valid after an adaptive dvr classification), or after an iso
-  // classification for packets the eight one-sided distances (kernels/skip_ahead_lanes.cl)
-  // and, where ISO_BLOCK_TRIES > 0 (8-lane packets), each cell's eight iso block bits
-  // (isoBlocks).
+  // classification for packets the eight one-sided distances
+  // (kernels/empty_space/skip_ahead_lanes.cl) and, where ISO_BLOCK_TRIES > 0 (8-lane packets), each
+  // cell's eight iso block bits (isoBlocks).
   const cl::Buffer& leap() const { return leap_; }
   int classifications() const { return classifications_; }
   int isoBlockScans() const { return isoBlockScans_; }
@@ -44,8 +44,8 @@ class EmptySpace {
   // The one-sided distances of iso packets, one region per octant behind the distances.
   void aheadDistances(ContextImpl& cl, const cl_int4& dims);
   // For iso packets, per macro cell one bit per 2^3 voxel block: whether a sample in the
-  // block can hit the iso range (kernels/skip_ahead_lanes.cl, iso_block_emptyN). Made on
-  // the host from the volume, for occupied cells only (about 4 % of a CT's at bone).
+  // block can hit the iso range (kernels/empty_space/skip_ahead_lanes.cl, iso_block_emptyN). Made
+  // on the host from the volume, for occupied cells only (about 4 % of a CT's at bone).
   void isoBlocks(ContextImpl& cl, const RaycastParams& k);
 
   MacroCells cells_;

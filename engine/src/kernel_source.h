@@ -1,7 +1,7 @@
 #pragma once
 // The kernels' OpenCL C, from the table embedded at build time (or from
-// $VOXRAY_KERNEL_DIR while iterating on a kernel), with #include "x.cl" resolved on the
-// host so the device compiler needs no file system.
+// $VOXRAY_KERNEL_DIR while iterating on a kernel), with #include "folder/x.cl" (a path below
+// kernels/, the table's key) resolved on the host so the device compiler needs no file system.
 #include <string>
 
 namespace voxray {

@@ -31,6 +31,24 @@ const std::vector<SwitchEntry>& switchList() {
   return list;
 }
 
+// The packets' tuning: a value for 8 lanes and one for 16.
+struct TuningEntry {
+  const char* name;
+  int at8;
+  int at16;
+};
+
+const std::vector<TuningEntry>& tuningList() {
+  static const std::vector<TuningEntry> list = {
+#define VOXRAY_SWITCH(NAME, DEFAULT, KIND, LABELS)
+#define VOXRAY_TUNING(NAME, AT_8_LANES, AT_16_LANES) {#NAME, AT_8_LANES, AT_16_LANES},
+#include "switches.h"
+#undef VOXRAY_TUNING
+#undef VOXRAY_SWITCH
+  };
+  return list;
+}
+
 // Label `value` of "a|b|c"; "" past the end.
 std::string label(const std::string& labels, int value) {
   std::istringstream in(labels);
@@ -60,6 +78,25 @@ KernelSwitches kernelSwitches(const RenderParams& p) {
   return s;
 }
 
+KernelSwitches kernelSwitches(const RenderParams& p, const KernelFacts& f) {
+  KernelSwitches s = kernelSwitches(p);
+  s.ESS = f.emptySpaceSkipping;
+  s.ADAPTIVE = s.ADAPTIVE && s.ESS;  // the levels live with the macro cells
+  s.STORAGE_IMAGE = f.storageImage;
+  s.SLABS = f.slabs;
+  s.COUNT_SAMPLES = f.countSamples;
+  s.HIT_OUTPUT = f.hitOutput;
+  if (f.packetLanes > 0) {
+    s.PACKET = 1;
+    s.LANES = f.packetLanes;
+    // 8-lane packets only (docs/bench/README.md, session 9): mip marches two per work-item,
+    // iso passes empty voxel blocks (their bits ride with the leap distances: ESS).
+    if (s.LANES == 8 && p.mode == Mode::Mip) s.MIP_HALVES = 2;
+    if (s.LANES == 8 && p.mode == Mode::Iso && s.ESS) s.ISO_BLOCK_TRIES = 4;
+  }
+  return s;
+}
+
 std::string switchOptions(const KernelSwitches& s, bool uber) {
   std::ostringstream o;
   o << "-D VOXRAY_SWITCHES_SET=1";
@@ -71,6 +108,9 @@ std::string switchOptions(const KernelSwitches& s, bool uber) {
     else
       o << s.*e.field;
   }
+  if (s.PACKET)
+    for (const TuningEntry& t : tuningList())
+      o << " -D " << t.name << "=" << (s.LANES == 8 ? t.at8 : t.at16);
   return o.str();
 }
 
@@ -83,6 +123,8 @@ std::string variantName(const KernelSwitches& s) {
   std::string out;
   for (const SwitchEntry& e : switchList()) {
     int value = s.*e.field;
+    // Only a shaded frame takes a gradient: elsewhere "central" would name nothing measured.
+    if (e.field == &KernelSwitches::GRADIENT && !s.SHADING) continue;
     std::string part;
     if (*e.labels)
       part = label(e.labels, value);

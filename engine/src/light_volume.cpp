@@ -102,7 +102,7 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
     cl_int n = cl_int(points_);
     cl::NDRange global((points_ + 63) / 64 * 64);
     if (!sigmaKept) {  // a light or model change alone keeps it
-      cl::Kernel sigma = cl.kernel("light_volume.cl", "light_sigma", options);
+      cl::Kernel sigma = cl.kernel("lighting/light_volume.cl", "light_sigma", options);
       cl_uint arg = dev.setArgs(sigma, 0);  // vol, or vol0 .. per slab
       sigma.setArg(arg++, params);
       sigma.setArg(arg++, lut);
@@ -116,7 +116,7 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
     }
     // A kernel (params, from, grid, points) over the grid's points.
     auto perPoint = [&](const char* name, const cl::Buffer& from) {
-      cl::Kernel kernel = cl.kernel("light_volume.cl", name, options);
+      cl::Kernel kernel = cl.kernel("lighting/light_volume.cl", name, options);
       setArgs(kernel, params, from, grid_, n);
       cl.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global, cl::NullRange);
     };
@@ -128,7 +128,7 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
     if (model == 1 && axis >= 0) {
       // One work-group sweeps every slice (barriers between them): as large as the device
       // allows, up to a slice's points.
-      cl::Kernel sweep = cl.kernel("light_volume.cl", "light_sweep", options);
+      cl::Kernel sweep = cl.kernel("lighting/light_volume.cl", "light_sweep", options);
       setArgs(sweep, params, sigma_, grid_, cl_int(axis), cl_int(k.light_v.s[axis] > 0.0f ? 1 : -1),
               cl_int(kSweepReach));
       size_t across = size_t(dims_[(axis + 1) % 3]) * size_t(dims_[(axis + 2) % 3]);
@@ -145,12 +145,12 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
       cl_int4 lattice = {{m.x, m.y, m.z, 0}};
       size_t count = size_t(m.x) * size_t(m.y) * size_t(m.z);
       cl::Buffer& target = every > 1 ? lattice_ : grid_;
-      cl::Kernel ao = cl.kernel("light_volume.cl", "light_ao", options);
+      cl::Kernel ao = cl.kernel("lighting/light_volume.cl", "light_ao", options);
       setArgs(ao, params, sigma_, target, lattice, cl_int(every));
       cl.queue.enqueueNDRangeKernel(ao, cl::NullRange, cl::NDRange((count + 63) / 64 * 64),
                                     cl::NullRange);
       if (every > 1) {
-        cl::Kernel fill = cl.kernel("light_volume.cl", "light_ao_fill", options);
+        cl::Kernel fill = cl.kernel("lighting/light_volume.cl", "light_ao_fill", options);
         setArgs(fill, params, lattice_, grid_, lattice, cl_int(every));
         cl.queue.enqueueNDRangeKernel(fill, cl::NullRange, global, cl::NullRange);
       }

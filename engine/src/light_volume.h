@@ -1,10 +1,10 @@
 #pragma once
-// The device side of the shadows and ao lighting models (kernels/light_volume.cl): a coarse
-// grid of the classified volume's extinction and, from it, each grid point's transmittance
+// The device side of the shadows and ao lighting models (kernels/lighting/light_volume.cl): a
+// coarse grid of the classified volume's extinction and, from it, each grid point's transmittance
 // toward the light (shadows) or ambient visibility (ao). Rebuilt only when what it depends
 // on changes (the model, the table's opacities, the clip box, the light for shadows), never
 // for a camera move alone; the raycaster copies it behind the table in the table's buffer,
-// where the shading reads it (kernels/shading.cl, frame_light).
+// where the shading reads it (kernels/shading/shading.cl, frame_light).
 #include <string>
 #include <vector>
 

@@ -1,7 +1,8 @@
 #pragma once
 // Min/max of the volume over macro cells, the basis of empty-space skipping. Computed
 // once per volume on the host; the device classifies it per transfer function
-// (kernels/classify.cl) and the raycaster leaps empty cells (kernels/skip.cl).
+// (kernels/empty_space/classify.cl) and the raycaster leaps empty cells
+// (kernels/empty_space/skip.cl).
 #include <cstdint>
 #include <vector>
 

@@ -1,10 +1,10 @@
 #pragma once
 // The path tracer's majorant grid: the largest extinction (per mm) any sample inside each
 // cell of kPathCell^3 voxels can have under the frame's table, so that tracking leaps
-// empty cells and takes short steps only where the volume is dense (kernels/path_trace.cl).
-// A trilinear (or nearest) sample in a cell reads voxels from one before the cell to one
-// after it, and the table interpolates between entries, so the bound is the largest
-// opacity of the entries spanning those voxels' value range.
+// empty cells and takes short steps only where the volume is dense
+// (kernels/lighting/path_trace.cl). A trilinear (or nearest) sample in a cell reads voxels from one
+// before the cell to one after it, and the table interpolates between entries, so the bound is the
+// largest opacity of the entries spanning those voxels' value range.
 #include <vector>
 
 #include <glm/glm.hpp>

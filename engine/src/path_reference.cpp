@@ -15,7 +15,7 @@ namespace voxray {
 
 namespace {
 
-constexpr int kMaxSteps = 1048576;  // as PT_MAX_STEPS in kernels/path_trace.cl
+constexpr int kMaxSteps = 1048576;  // as PT_MAX_STEPS in kernels/lighting/path_trace.cl
 
 struct Rng {
   voxray_u32 key;

@@ -127,7 +127,7 @@ PathProgress PathTracer::accumulate(const RenderParams& params, int samples, Ima
                         cl_uint(m.opts.maxBounces)}};
   size_t pixels = size_t(params.width) * size_t(params.height);
   std::string opts = switchOptions(f.switches, false);  // no fast maths: logs of tiny numbers
-  cl::Kernel kernel = f.cl.kernel("path_trace.cl", "path_trace", opts);
+  cl::Kernel kernel = f.cl.kernel("lighting/path_trace.cl", "path_trace", opts);
   image.width = params.width;
   image.height = params.height;
   image.rgba.resize(pixels * 4);

@@ -161,22 +161,14 @@ void Raycaster::Impl::upload() {
 }
 
 KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
-  KernelSwitches s = kernelSwitches(p);
-  s.ESS = opts.emptySpaceSkipping;
-  s.ADAPTIVE = s.ADAPTIVE && s.ESS;  // the levels live with the macro cells
-  s.STORAGE_IMAGE = storage == VolumeStorage::Image3d;
-  s.SLABS = device.plan().count();
-  s.COUNT_SAMPLES = opts.countSamples;
-  s.HIT_OUTPUT = hitsOut != nullptr;
-  if (packets()) {
-    s.PACKET = 1;
-    s.LANES = lanes(p);
-    // 8-lane packets only (docs/bench/README.md, session 9): mip marches two per work-item,
-    // iso passes empty voxel blocks (their bits ride with the leap distances: ESS).
-    if (s.LANES == 8 && p.mode == Mode::Mip) s.MIP_HALVES = 2;
-    if (s.LANES == 8 && p.mode == Mode::Iso && s.ESS) s.ISO_BLOCK_TRIES = 4;
-  }
-  return s;
+  KernelFacts f;
+  f.emptySpaceSkipping = opts.emptySpaceSkipping;
+  f.storageImage = storage == VolumeStorage::Image3d;
+  f.slabs = device.plan().count();
+  f.countSamples = opts.countSamples;
+  f.hitOutput = hitsOut != nullptr;
+  f.packetLanes = packets() ? lanes(p) : 0;
+  return kernelSwitches(p, f);
 }
 
 std::string Raycaster::Impl::options(const KernelSwitches& s) const {
@@ -331,7 +323,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     // get_global_id, which counts the offset, and drop items past the image.
     size_t gx = size_t(p.width), gy = size_t(y1), oy = size_t(y0);
     if (m.packets()) {  // one work-item per 4 x (lanes / 4) pixels
-      // MIP_HALVES packets of 4 x (lanes / 4) pixels, one below the other (march_lanes.cl).
+      // MIP_HALVES packets of 4 x (lanes / 4) pixels, one below the other (mip_packet.cl).
       size_t rows = size_t(sw.LANES / 4) * size_t(sw.MIP_HALVES);
       gx = (gx + 3) / 4;
       gy = (gy + rows - 1) / rows;

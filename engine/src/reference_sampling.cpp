@@ -11,8 +11,8 @@ namespace voxray {
 
 namespace {
 
-// kernels/gradients.cl's GRADIENT_ZERO_REL: a gradient at most this fraction of the largest
-// |voxel| its stencil read is cancellation noise in float, so both renderers call it 0.
+// kernels/reconstruction/gradients.cl's GRADIENT_ZERO_REL: a gradient at most this fraction of the
+// largest |voxel| its stencil read is cancellation noise in float, so both renderers call it 0.
 constexpr double kGradientZeroRel = 1e-5;
 
 // sampleVolume that also raises *largest to the largest |voxel| it read.

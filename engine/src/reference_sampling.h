@@ -1,6 +1,6 @@
 #pragma once
-// Double-precision reconstruction and gradients, mirroring kernels/sampling.cl and
-// kernels/gradients.cl (the same clamping, rounding and operator weights).
+// Double-precision reconstruction and gradients, mirroring kernels/reconstruction/sampling.cl and
+// kernels/reconstruction/gradients.cl (the same clamping, rounding and operator weights).
 #include <glm/glm.hpp>
 
 #include "voxray/engine/camera.h"
@@ -21,7 +21,8 @@ int gradientSamples(Gradient op);
 float jitterFraction(int px, int py);
 
 // Pixel (px, py)'s ray in world (ow, dw; dw unit) and voxel coordinates (ov, dv per mm),
-// clipped to the clip box [t0, t1] in mm, as kernels/ray.cl's pixel_ray. False on a miss.
+// clipped to the clip box [t0, t1] in mm, as kernels/intersection/ray.cl's pixel_ray. False on a
+// miss.
 struct PixelRay {
   glm::dvec3 ow, dw, ov, dv;
   double t0 = 0.0, t1 = 0.0;

@@ -3,7 +3,7 @@
 // ("bricks"). Slab s owns slices [s * depth, min((s + 1) * depth, dimZ)) and stores kApron
 // more on each side (clamped to the volume), so every stencil a kernel reads around a point
 // whose floor(z) the slab owns (trilinear, nearest, the gradients' 4x4x4 block from floor - 1
-// to floor + 2) lies in that one slab: kernels/slabs.cl picks it per sample.
+// to floor + 2) lies in that one slab: kernels/reconstruction/slabs.cl picks it per sample.
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -11,7 +11,7 @@
 namespace voxray {
 
 struct SlabPlan {
-  static constexpr int kApron = 2;     // kernels/slabs.cl: SLAB_APRON
+  static constexpr int kApron = 2;     // kernels/reconstruction/slabs.cl: SLAB_APRON
   static constexpr int kMaxSlabs = 8;  // kernel arguments vol0 .. vol7
   struct Slab {
     int first = 0;   // first stored slice (apron included)

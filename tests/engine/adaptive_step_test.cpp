@@ -1,8 +1,8 @@
-// Adaptive dvr steps (RenderParams::adaptiveError; kernels/classify.cl, adaptive_level):
-// where the table varies within the bound E over the values around a macro cell, segments
-// whose midpoint lies in it are 2 or 4 base steps long, their opacity corrected for it. The stated
-// bound: each long segment changes the composite by at most E times the transmittance in front of
-// it (opacity, and each colour channel before shading). Where the table is constant over
+// Adaptive dvr steps (RenderParams::adaptiveError; kernels/empty_space/classify.cl,
+// adaptive_level): where the table varies within the bound E over the values around a macro cell,
+// segments whose midpoint lies in it are 2 or 4 base steps long, their opacity corrected for it.
+// The stated bound: each long segment changes the composite by at most E times the transmittance in
+// front of it (opacity, and each colour channel before shading). Where the table is constant over
 // the values a cell holds the bound is 0: the long segment's transmittance (1 - a)^(4h) is
 // that of its four short ones, so only float rounding (at most one 8-bit level) remains.
 #include <gtest/gtest.h>

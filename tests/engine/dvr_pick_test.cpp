@@ -1,5 +1,5 @@
 // The dvr pick (Raycaster::renderWithHits in dvr mode): each pixel's point where the
-// accumulated opacity first reaches 0.5 (kernels/hit_output.cl), from the CPU packets
+// accumulated opacity first reaches 0.5 (kernels/march/hit_output.cl), from the CPU packets
 // (march_lanes.cl) and from one ray per work-item (the GPUs' kernel; on a buffer and on
 // image3d_t), against the analytic answer: the same point on the same ray, found by
 // integrating the transfer function of the analytic field (not of the voxels) in steps of
@@ -23,7 +23,7 @@
 namespace voxray {
 namespace {
 
-constexpr double kThreshold = 0.5;  // DVR_HIT_ALPHA in kernels/hit_output.cl
+constexpr double kThreshold = 0.5;  // DVR_HIT_ALPHA in kernels/march/hit_output.cl
 const SyntheticSpec kSphere{SyntheticShape::Sphere, 48};
 const double kRadius = 0.35 * (kSphere.size - 1);
 const glm::dvec3 kCentre(0.5 * (kSphere.size - 1));

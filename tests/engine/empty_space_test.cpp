@@ -66,7 +66,7 @@ const Volume& noisyVolume() {
 }
 
 // Long along x: a ray along it crosses more macro cells than a mip packet's walk keeps
-// (kernels/march_lanes.cl, MIP_WALK), so it takes the in-order loop.
+// (kernels/march/mip_packet.cl, MIP_WALK), so it takes the in-order loop.
 const Volume& longVolume() {
   static Volume v = noisy({2000, 12, 12});  // 500 cells along x
   return v;

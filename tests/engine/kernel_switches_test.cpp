@@ -28,6 +28,17 @@ RenderParams frame(Mode mode, Gradient gradient, Interp interp) {
   return p;
 }
 
+// The tuning entries of switches.h (VOXRAY_TUNING), counted.
+int tuningCount() {
+  int n = 0;
+#define VOXRAY_SWITCH(NAME, DEFAULT, KIND, LABELS)
+#define VOXRAY_TUNING(NAME, AT_8_LANES, AT_16_LANES) ++n;
+#include "switches.h"
+#undef VOXRAY_TUNING
+#undef VOXRAY_SWITCH
+  return n;
+}
+
 }  // namespace
 
 TEST(KernelSwitches, SwitchesThatCannotMatterKeepTheirDefaults) {
@@ -63,7 +74,8 @@ TEST(KernelSwitches, EverySwitchIsPassedOnceAsALiteralOrItsSlot) {
   s.PACKET = 1;
   s.LANES = 16;
   std::string special = switchOptions(s, false);
-  EXPECT_EQ(count(special, "-D "), size_t(VOXRAY_SWITCH_COUNT) + 1);  // + VOXRAY_SWITCHES_SET
+  // + VOXRAY_SWITCHES_SET, + the packets' tuning
+  EXPECT_EQ(count(special, "-D "), size_t(VOXRAY_SWITCH_COUNT) + 1 + size_t(tuningCount()));
   EXPECT_EQ(count(special, " -D MODE=1"), 1u);
   EXPECT_EQ(count(special, " -D GRADIENT=2"), 1u);
   EXPECT_EQ(count(special, " -D LANES=16"), 1u);
@@ -71,10 +83,73 @@ TEST(KernelSwitches, EverySwitchIsPassedOnceAsALiteralOrItsSlot) {
   EXPECT_EQ(count(special, " -D REFINE_STEPS=P_SWITCH(VOXRAY_SLOT_REFINE_STEPS)"), 1u);
 
   std::string uber = switchOptions(s, true);
-  EXPECT_EQ(count(uber, "-D "), size_t(VOXRAY_SWITCH_COUNT) + 1);
+  EXPECT_EQ(count(uber, "-D "), size_t(VOXRAY_SWITCH_COUNT) + 1 + size_t(tuningCount()));
   EXPECT_EQ(count(uber, " -D MODE=P_SWITCH(VOXRAY_SLOT_MODE)"), 1u);
   EXPECT_EQ(count(uber, " -D ESS=P_SWITCH(VOXRAY_SLOT_ESS)"), 1u);
   EXPECT_EQ(count(uber, " -D LANES=16"), 1u);  // BUILD switches stay literals
+}
+
+TEST(KernelSwitches, TheRaycastersFactsSetStorageOutputAndPackets) {
+  RenderParams mip = frame(Mode::Mip, Gradient::Central, Interp::Linear);
+  KernelFacts f;
+  f.storageImage = true;
+  f.slabs = 3;
+  f.countSamples = true;
+  f.hitOutput = true;
+  KernelSwitches s = kernelSwitches(mip, f);
+  EXPECT_EQ(s.STORAGE_IMAGE, 1);
+  EXPECT_EQ(s.SLABS, 3);
+  EXPECT_EQ(s.COUNT_SAMPLES, 1);
+  EXPECT_EQ(s.HIT_OUTPUT, 1);
+  EXPECT_EQ(s.ESS, 0);
+  EXPECT_EQ(s.PACKET, 0);  // one ray per work-item
+  EXPECT_EQ(s.MIP_HALVES, 1);
+
+  f = KernelFacts{};
+  f.packetLanes = 8;
+  s = kernelSwitches(mip, f);
+  EXPECT_EQ(s.PACKET, 1);
+  EXPECT_EQ(s.LANES, 8);
+  EXPECT_EQ(s.MIP_HALVES, 2);  // two 4 x 2 packets a work-item
+  f.packetLanes = 16;
+  EXPECT_EQ(kernelSwitches(mip, f).MIP_HALVES, 1);
+
+  // iso passes empty voxel blocks in 8-lane packets with ESS only (their bits ride with it).
+  RenderParams iso = frame(Mode::Iso, Gradient::Central, Interp::Linear);
+  f.packetLanes = 8;
+  EXPECT_EQ(kernelSwitches(iso, f).ISO_BLOCK_TRIES, 0);
+  f.emptySpaceSkipping = true;
+  EXPECT_EQ(kernelSwitches(iso, f).ESS, 1);
+  EXPECT_EQ(kernelSwitches(iso, f).ISO_BLOCK_TRIES, 4);
+  f.packetLanes = 16;
+  EXPECT_EQ(kernelSwitches(iso, f).ISO_BLOCK_TRIES, 0);
+
+  // Adaptive steps read their levels from the macro cells: ESS or not at all.
+  RenderParams dvr = frame(Mode::Dvr, Gradient::Central, Interp::Linear);
+  dvr.adaptiveError = 0.01;
+  ASSERT_EQ(kernelSwitches(dvr).ADAPTIVE, 1);
+  EXPECT_EQ(kernelSwitches(dvr, f).ADAPTIVE, 1);
+  f.emptySpaceSkipping = false;
+  EXPECT_EQ(kernelSwitches(dvr, f).ADAPTIVE, 0);
+}
+
+TEST(KernelSwitches, PacketsGetTheTuningOfTheirLanes) {
+  KernelSwitches s = kernelSwitches(frame(Mode::Iso, Gradient::Central, Interp::Linear));
+  EXPECT_EQ(count(switchOptions(s, false), "ISO_BATCH"), 0u);  // one ray per work-item
+  s.PACKET = 1;
+  s.LANES = 8;
+  std::string at8 = switchOptions(s, false);
+  EXPECT_EQ(count(at8, " -D ISO_BATCH=4"), 1u);
+  EXPECT_EQ(count(at8, " -D MIP_REFILL=4"), 1u);
+  EXPECT_EQ(count(at8, " -D DVR_BATCH=2"), 1u);
+  EXPECT_EQ(count(at8, " -D MIP_BATCH=4"), 1u);
+  EXPECT_EQ(count(at8, " -D MIP_PREFETCH=1"), 1u);
+  EXPECT_EQ(count(at8, " -D MIP_PREFETCH_FROM=1 -D MIP_PREFETCH_TO=1"), 1u);
+  s.LANES = 16;
+  std::string at16 = switchOptions(s, false);
+  EXPECT_EQ(count(at16, " -D ISO_BATCH=2"), 1u);
+  EXPECT_EQ(count(at16, " -D MIP_REFILL=2"), 1u);
+  EXPECT_EQ(count(at16, " -D MIP_BATCH=4"), 1u);
 }
 
 TEST(KernelSwitches, EachSwitchSitsInItsSlot) {
@@ -97,7 +172,9 @@ TEST(KernelSwitches, VariantNamesComeFromTheLabels) {
   EXPECT_EQ(kernelVariantName(p), "dvr_shaded_zh_nearest_oc");
   p = frame(Mode::Iso, Gradient::Central, Interp::Linear);
   p.refine = 4;
-  EXPECT_EQ(kernelVariantName(p), "iso_shaded_refine_steps4");
+  EXPECT_EQ(kernelVariantName(p), "iso_shaded_central_refine_steps4");  // the default named too
+  p.shading = false;
+  EXPECT_EQ(kernelVariantName(p), "iso_refine_steps4");  // no gradient taken, none named
   p = frame(Mode::Mip, Gradient::Sobel, Interp::Linear);
   p.camera.projection = Projection::Orthographic;
   EXPECT_EQ(kernelVariantName(p), "mip_ortho");

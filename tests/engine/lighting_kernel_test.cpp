@@ -1,4 +1,4 @@
-// shadows and ao in the kernels (kernels/light_volume.cl, frame_light in shading.cl)
+// shadows and ao in the kernels (kernels/lighting/light_volume.cl, frame_light in shading.cl)
 // against the Monte Carlo reference, on both kernel paths (CPU packets and one ray per
 // work-item, the GPUs' path); the light grid's rebuilds; phong untouched.
 #include <gtest/gtest.h>

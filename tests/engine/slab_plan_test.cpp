@@ -56,8 +56,8 @@ TEST(SlabPlan, NoPlanWhenEightSlabsDoNotFit) {
   EXPECT_TRUE(planSlabs(100, 17));
 }
 
-// kernels/slabs.cl: a point with floor(z) = f reads slices f - 1 .. f + 2 (the gradients'
-// 4x4x4 block; trilinear and nearest read fewer), clamped to the volume, from the slab
+// kernels/reconstruction/slabs.cl: a point with floor(z) = f reads slices f - 1 .. f + 2 (the
+// gradients' 4x4x4 block; trilinear and nearest read fewer), clamped to the volume, from the slab
 // owning f (the nearest end slab outside the volume). Clamped to that slab's stored range
 // instead, they must be the same slices.
 TEST(SlabPlan, EveryStencilLiesInTheSlabOwningItsFloor) {

@@ -1,8 +1,8 @@
-// A volume split into z slabs (kernels/slabs.cl) must render exactly as one volume: each
-// sample reads the same voxels with the same weights from the slab owning floor(z), z
-// shifted by an integer (exact in float). The slab limit is forced low so that a small
-// ball, whose surface crosses every slab boundary, is stored in 2 to 4 slabs. Both sides
-// run the one-ray-per-work-item kernel (slabs leave the 4x2 packets out).
+// A volume split into z slabs (kernels/reconstruction/slabs.cl) must render exactly as one volume:
+// each sample reads the same voxels with the same weights from the slab owning floor(z), z shifted
+// by an integer (exact in float). The slab limit is forced low so that a small ball, whose surface
+// crosses every slab boundary, is stored in 2 to 4 slabs. Both sides run the one-ray-per-work-item
+// kernel (slabs leave the 4x2 packets out).
 #include <gtest/gtest.h>
 
 #include <tuple>

@@ -23,7 +23,7 @@ std::string pickMissMessage(const RenderParams& p) {
     case Mode::Iso:
       return "No surface under the cursor to measure on";
     case Mode::Dvr:
-      // The kernel's threshold (DVR_HIT_ALPHA, kernels/hit_output.cl) is 0.5.
+      // The kernel's threshold (DVR_HIT_ALPHA, kernels/march/hit_output.cl) is 0.5.
       if (p.earlyTermination < 0.5)
         return "Early termination stops rays at " +
                std::to_string(int(std::lround(100.0 * p.earlyTermination))) +

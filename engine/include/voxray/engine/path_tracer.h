@@ -3,7 +3,7 @@
 // classified volume, sharing a Raycaster's device volume and frame setup. Each call adds
 // samples (paths per pixel) to a float accumulation and returns the mean so far; anything in
 // the frame changing (any render parameter: camera, transfer function, light, clip box,
-// size) or the options restarts it. The model (kernels/path_trace.cl has the details):
+// size) or the options restarts it. The model (kernels/lighting/path_trace.cl has the details):
 //   - extinction per mm sigma = -ln(1 - min(a, opacityCap)) / s, a the transfer function's
 //     opacity, which is defined per reference step s (the smallest voxel spacing, as dvr's
 //     opacity correction reads it): a slab of d mm with opacity a has transmittance

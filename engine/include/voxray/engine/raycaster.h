@@ -25,7 +25,7 @@ struct RaycasterOptions {
   bool emptySpaceSkipping = true;  // leap macro cells that cannot change the pixel
   bool countSamples = false;       // fill FrameStats::samples (an atomic add per ray)
   // A CPU device with buffer storage: each work-item marches a packet of rays in SIMD
-  // (kernels/march_lanes.cl). Ignored elsewhere (GPUs diverge less one ray per work-item).
+  // (kernels/march/). Ignored elsewhere (GPUs diverge less one ray per work-item).
   bool packets = true;
   // Rays per packet, 8 (4x2) or 16 (4x4). 0: 16 where the device's native float vector
   // holds 16 (AVX-512), else 8, in every mode.
@@ -76,7 +76,7 @@ class Raycaster {
                   FrameStats* stats = nullptr);
   // A frame from the -D HIT_OUTPUT=1 variant that also gives each pixel's hit (row by row):
   // xyz the hit point in voxel coordinates, w 1 for an iso surface crossing or where dvr's
-  // accumulated opacity reaches 0.5 (DVR_HIT_ALPHA, kernels/hit_output.cl: interpolated
+  // accumulated opacity reaches 0.5 (DVR_HIT_ALPHA, kernels/march/hit_output.cl: interpolated
   // within the segment that crosses it), 0 for an iso hit at the first sample (entry face
   // or clip cap), -1 for none (a dvr ray that stays below 0.5 or stops earlier by early
   // termination, and every mip pixel).

@@ -70,7 +70,7 @@ struct RenderParams {
   bool jitter = false;  // offset each ray's first sample by a per-pixel fraction of a step
   double earlyTermination = 0.99;  // dvr: stop once this opacity is reached
   // dvr: 2 or 4 times longer steps in macro cells where the table varies little enough that
-  // each long step changes the composite by at most this (kernels/classify.cl,
+  // each long step changes the composite by at most this (kernels/empty_space/classify.cl,
   // adaptive_level); 0 = every step the base step. Needs opacity correction.
   double adaptiveError = 0.0;
   double windowWidth = 0.0;  // mip grey mapping in HU; width 0 = the volume's range

@@ -3,8 +3,8 @@
 #ifndef VOXRAY_HIT_OUTPUT_LANES_CL
 #define VOXRAY_HIT_OUTPUT_LANES_CL
 
-#include "hit_output.cl"
-#include "lanes.cl"
+#include "march/hit_output.cl"
+#include "simd/lanes.cl"
 
 // dvr_hit_crossing for the lanes whose segment [ta, tb] crosses DVR_HIT_ALPHA: their *t_hit,
 // and *found.

@@ -3,8 +3,8 @@
 #ifndef VOXRAY_SKIP_LANES_CL
 #define VOXRAY_SKIP_LANES_CL
 
-#include "ray_lanes.cl"
-#include "skip.cl"
+#include "empty_space/skip.cl"
+#include "intersection/ray_lanes.cl"
 
 // The macro cell (cx, cy, cz) that the point at t lies in, clamped to the grid; returns
 // its index (0 for lanes outside `pending`).

@@ -17,10 +17,10 @@
 // extent on every axis is marched per point instead (light_shadow, at P->light_march.y mm).
 // ao marches each point's directions to the radius (light_ao). The sigma grid is kept for
 // the next build when only the light or the model changes.
-#include "intersect.cl"
-#include "lut.cl"
-#include "sampling.cl"
-#include "shading.cl"
+#include "classification/lut.cl"
+#include "intersection/intersect.cl"
+#include "reconstruction/sampling.cl"
+#include "shading/shading.cl"
 
 #define LIGHT_MAX_DEPTH 20.0f  // exp(-20) = 2e-9: the rest of the ray cannot matter
 #define AO_DIRECTIONS 16       // a Fibonacci sphere (light_ao)

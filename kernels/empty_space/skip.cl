@@ -12,7 +12,7 @@
 #ifndef VOXRAY_SKIP_CL
 #define VOXRAY_SKIP_CL
 
-#include "ray.cl"
+#include "intersection/ray.cl"
 #include "variant.cl"
 
 #define CELL_ARGS __global const uchar *leap, __global const short2 *range

@@ -5,9 +5,9 @@
 #ifndef VOXRAY_GRADIENTS_LANES_CL
 #define VOXRAY_GRADIENTS_LANES_CL
 
-#include "gradients.cl"
-#include "sampling_lanes.cl"
-#include "shading_lanes.cl"
+#include "reconstruction/gradients.cl"
+#include "reconstruction/sampling_lanes.cl"
+#include "shading/shading_lanes.cl"
 
 // Each lane's clamped 4x4x4 voxel block around p, as neighbourhood_trilinear sets it up:
 // the x index, row offset and slice offset of each tap, and p's fractional offset.

@@ -1,4 +1,4 @@
-// The shading queue of dvr packets (march_lanes.cl): seen samples wait here until LANES of
+// The shading queue of dvr packets (dvr_packet.cl): seen samples wait here until LANES of
 // them fill one gradient-and-shade call. Shading each step's seen lanes in place ran
 // calls with 65 % of their lanes useful on average (CThead, VTK's transfer function); the
 // gradient's gathers and the shading cost the same for the idle lanes. A sample's weight
@@ -9,9 +9,9 @@
 #ifndef VOXRAY_SHADE_QUEUE_CL
 #define VOXRAY_SHADE_QUEUE_CL
 
-#include "gradients_lanes.cl"
-#include "lut_lanes.cl"
-#include "ray_lanes.cl"
+#include "classification/lut_lanes.cl"
+#include "intersection/ray_lanes.cl"
+#include "reconstruction/gradients_lanes.cl"
 
 typedef struct {
   float t[2 * LANES], value[2 * LANES], weight[2 * LANES];

@@ -2,9 +2,9 @@
 #ifndef VOXRAY_LUT_LANES_CL
 #define VOXRAY_LUT_LANES_CL
 
-#include "lanes.cl"
-#include "lut.cl"
-#include "sampling_lanes.cl"
+#include "classification/lut.cl"
+#include "reconstruction/sampling_lanes.cl"
+#include "simd/lanes.cl"
 
 // Where each lane's value falls in the table (lut_lookup, march.cl): entries *k and *k1,
 // mixed by *f.

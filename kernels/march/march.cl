@@ -4,14 +4,14 @@
 #ifndef VOXRAY_MARCH_CL
 #define VOXRAY_MARCH_CL
 
-#include "gradients.cl"
-#include "lut.cl"
+#include "classification/lut.cl"
+#include "empty_space/skip.cl"
 #include "math.cl"
-#include "sampling.cl"
-#include "shading.cl"
-#include "skip.cl"
+#include "reconstruction/gradients.cl"
+#include "reconstruction/sampling.cl"
+#include "shading/shading.cl"
 #if HIT_OUTPUT
-#include "hit_output.cl"
+#include "march/hit_output.cl"
 #endif
 
 // Normal at p (voxel coordinates) in world space; not normalised.

@@ -3,9 +3,9 @@
 #ifndef VOXRAY_RAY_LANES_CL
 #define VOXRAY_RAY_LANES_CL
 
+#include "intersection/ray.cl"
 #include "jitter_hash.h"
-#include "lanes.cl"
-#include "ray.cl"
+#include "simd/lanes.cl"
 #include "variant.cl"
 
 // LANES rays (lanes.cl), one per lane, in voxel coordinates (see Ray in ray.cl).

@@ -7,7 +7,7 @@
 #ifndef VOXRAY_GRADIENTS_CL
 #define VOXRAY_GRADIENTS_CL
 
-#include "sampling.cl"
+#include "reconstruction/sampling.cl"
 
 // Volume samples one gradient takes (for the sample counter).
 #define GRADIENT_TAPS (GRADIENT == 0 ? 6 : 26)

@@ -5,7 +5,7 @@
 #ifndef VOXRAY_HIT_OUTPUT_CL
 #define VOXRAY_HIT_OUTPUT_CL
 
-#include "ray.cl"
+#include "intersection/ray.cl"
 
 // Half: what lies in front hides as much as it shows of what lies behind.
 #define DVR_HIT_ALPHA 0.5f

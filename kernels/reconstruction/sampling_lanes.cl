@@ -4,7 +4,7 @@
 #ifndef VOXRAY_SAMPLING_LANES_CL
 #define VOXRAY_SAMPLING_LANES_CL
 
-#include "lanes.cl"
+#include "simd/lanes.cl"
 #include "variant.cl"
 
 // On x86 CPUs each load below is one gather instruction with 32-bit indices. From lane-by-

@@ -5,7 +5,7 @@
 #ifndef VOXRAY_MATH_LANES_CL
 #define VOXRAY_MATH_LANES_CL
 
-#include "lanes.cl"
+#include "simd/lanes.cl"
 
 // log2 of x > 0 (normal), within 1.5e-5: log2(1 + f) for f in [0, 1) by a degree-5
 // polynomial fitted for the least maximum error, exact at f = 0.

@@ -20,12 +20,12 @@
 //               scattering shows the background colour.
 //   bounces     at most MAX_BOUNCES scatters per path (counters.w), no roulette.
 // The same -D switches as raycast.cl (sampling and ray setup); MODE is dvr.
-#include "lut.cl"
+#include "classification/lut.cl"
+#include "intersection/ray.cl"
 #include "math.cl"
 #include "path_rng.h"
-#include "ray.cl"
-#include "sampling.cl"
-#include "shading.cl"
+#include "reconstruction/sampling.cl"
+#include "shading/shading.cl"
 
 #define PT_MAX_STEPS 1048576  // tentative collisions per segment: a bound, never reached
 #define PT_CELL 8             // voxels per majorant cell edge (path_majorants.h: kPathCell)

@@ -53,7 +53,7 @@ inline float sample_slab(SLAB_TYPE vol, int4 dims, __constant RaycastParams* P, 
   return mix(c0, c1, f.z);
 }
 
-#include "slabs.cl"
+#include "reconstruction/slabs.cl"
 
 inline float sample_volume(VOLUME_ARG, __constant RaycastParams* P, float3 p) {
   RETURN_FROM_SLAB(sample_slab, P, p);

@@ -2,9 +2,9 @@
 #ifndef VOXRAY_SHADING_LANES_CL
 #define VOXRAY_SHADING_LANES_CL
 
-#include "lanes.cl"
-#include "math_lanes.cl"
-#include "shading.cl"
+#include "shading/shading.cl"
+#include "simd/lanes.cl"
+#include "simd/math_lanes.cl"
 
 // Vectors in lanes, as x, y, z components.
 typedef struct {

@@ -1,0 +1,141 @@
+// march_dvr (march.cl) for a packet of rays (march_lanes.cl): front-to-back compositing
+// lane by lane, the seen samples shaded from a queue (shade_queue.cl).
+#ifndef VOXRAY_DVR_PACKET_CL
+#define VOXRAY_DVR_PACKET_CL
+
+#include "classification/lut_lanes.cl"
+#include "empty_space/skip_lanes.cl"
+#include "intersection/ray_lanes.cl"
+#include "march/march_lanes.cl"
+#include "reconstruction/sampling_lanes.cl"
+#include "shading/shade_queue.cl"
+#include "simd/math_lanes.cl"
+
+// One dvr sample into the composite: opacity (and colour) c of the segment of length seg
+// at t, for the lanes in `live`. Updates alpha, active, samples and the colour (acc, or
+// the shading queue).
+inline void dvr_compositeN(__global const short* restrict vol, __constant RaycastParams* P,
+                           __global const float4* lut, ShadeQueue* queue, floatN acc[3],
+                           floatN* alpha, intN* active, intN* samples, intN live, floatN seg,
+                           floatN t, floatN value, const floatN c[4]) {
+  *samples -= live;
+  intN seen = live & (c[3] > 0.0f);
+  if (!any(seen)) return;
+  floatN a = c[3];
+  if (OPACITY_CORRECTION) {
+    floatN ratio = seg / P->view.w;
+    a = CORRECTED_OPACITY_BY(a, ratio, fast_log2N, fast_exp2N);
+  }
+  floatN w = select((floatN)(0.0f), (1.0f - *alpha) * a, seen);
+  if (SHADING) {
+    shade_queue_push(vol, P, lut, queue, t, value, w, seen);
+    *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+  } else {
+    for (int ch = 0; ch < 3; ++ch) acc[ch] += w * c[ch];
+  }
+  *alpha += w;
+  *active &= ~(seen & (*alpha >= P->dvr.z));
+}
+
+#if ADAPTIVE
+// adaptive_segment (march.cl) for the lanes in `live` (f 1 for the others), `reach` as
+// adaptive_reach's for each lane.
+inline void adaptive_segmentN(__global const uchar* leap, __constant RaycastParams* P,
+                              const RayPacket* r, intN i, float step, intN live, intN reach,
+                              floatN* a, floatN* b, intN* f) {
+  floatN b4, unused;
+  segmentN(r, i, step, a, b);
+  segmentN(r, i + ADAPTIVE_STEPS - 1, step, &unused, &b4);
+  intN cx, cy, cz;
+  intN k = cellN(P, r, 0.5f * (*a + b4), live & reach, &cx, &cy, &cz);
+  __global const uchar* level = leap + P->cells.x * P->cells.y * P->cells.z;
+#define LEVEL_LANE(l, n) level[k.s##l]
+  intN longer = live & reach & (convert_intN((ucharN)(LANE_LIST(LEVEL_LANE))) != 0);
+#undef LEVEL_LANE
+  *f = select((intN)(1), (intN)(ADAPTIVE_STEPS), longer);
+  *b = select(*b, b4, longer);
+}
+
+// adaptive_reach (march.cl) for each lane.
+inline intN adaptive_reachN(const RayPacket* r, float step) {
+  floatN dmax = fmax(fabs(r->dx), fmax(fabs(r->dy), fabs(r->dz)));
+  return (ADAPTIVE_STEPS - 1) * 0.5f * step * dmax <= 1.0f;
+}
+#endif
+
+// march_dvr (march.cl) for a packet: the same segments, leaps, opacity and early
+// termination lane by lane. Seen samples are shaded LANES at a time (shade_queue.cl).
+// DVR_BATCH (switches.h) samples per iteration: the later ones' loads need not wait for the
+// first's compositing (a lane that ends early drops the rest).
+inline void dvr_packet(PACKET_ARGS) {
+  float step = P->view.z;
+  RayPacket r;
+  floatN world[6];
+  pixel_raysN(P, gx, gy, &r, world);
+  floatN acc[3] = {0.0f, 0.0f, 0.0f}, alpha = 0.0f;
+  intN i = 0, check = 0, samples = 0;
+  intN active = r.n >= 0;
+  ShadeQueue queue;
+  if (SHADING) shade_queue_init(&queue, &r, world);
+#if ADAPTIVE
+  intN reach = adaptive_reachN(&r, step);  // long segments allowed (ADAPTIVE)
+#endif
+#if HIT_OUTPUT
+  floatN t_hit = 0.0f;
+  intN found = 0;
+#endif
+  while (any(active)) {
+    if (ESS) {
+      // Waiting for every lane took 3 % less CPU time than iso's half (CThead, VTK's
+      // transfer function, both orbits).
+      active = leap_packetN(leap, range, P, &r, (intN)(0), &i, &check, active, step, true, true);
+      if (!any(active)) break;
+    }
+    floatN sa[DVR_BATCH], sb[DVR_BATCH], t[DVR_BATCH], value[DVR_BATCH], c[DVR_BATCH][4];
+    intN live[DVR_BATCH];
+    intN at = i;
+    for (int k = 0; k < DVR_BATCH; ++k) {
+#if ADAPTIVE
+      intN f;
+      adaptive_segmentN(leap, P, &r, at, step, active & (at <= r.n), reach, &sa[k], &sb[k], &f);
+#else
+      const int f = 1;
+      segmentN(&r, at, step, &sa[k], &sb[k]);
+#endif
+      live[k] = active & (at <= r.n) & (sb[k] - sa[k] > 0.0f);  // segment 0 without jitter is empty
+      at += f;
+      t[k] = 0.5f * (sa[k] + sb[k]);
+      value[k] = sampleN(vol, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
+      if (SHADING)
+        c[k][3] = lut_alphaN(lut, P, value[k]);
+      else
+        lutN(lut, P, value[k], c[k]);
+    }
+    for (int k = 0; k < DVR_BATCH; ++k) {
+#if HIT_OUTPUT
+      floatN before = alpha;
+#endif
+      dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
+                     sb[k] - sa[k], t[k], value[k], c[k]);
+#if HIT_OUTPUT
+      dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
+#endif
+    }
+    i = at;
+    active &= i <= r.n;
+  }
+  if (SHADING) {
+    if (queue.n > 0) shade_queue_flush(vol, P, lut, &queue, queue.n);
+    for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, queue.acc[ch]);
+  }
+  VecN color = {acc[0] + (1.0f - alpha) * P->background.x,
+                acc[1] + (1.0f - alpha) * P->background.y,
+                acc[2] + (1.0f - alpha) * P->background.z};
+#if HIT_OUTPUT
+  write_hits_packet(P, hits, gx, gy, r.ox + t_hit * r.dx, r.oy + t_hit * r.dy, r.oz + t_hit * r.dz,
+                    select((floatN)(-1.0f), (floatN)(1.0f), found));
+#endif
+  write_packet(P, out, count, gx, gy, color, samples);
+}
+
+#endif
