@@ -6,8 +6,8 @@
 #include "measurement_model.h"
 #include "no_qt.h"
 #include "render_state_model.h"
-#include "volume_document.h"
 #include "session.h"
+#include "volume_document.h"
 #include "window_level.h"
 
 namespace voxray {
@@ -21,6 +21,9 @@ struct AppModels {
   LightingFigures lighting;       // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;
+  // The OpenCL selector the window renders with ("": $VOXRAY_DEVICE or auto), for the
+  // contexts of its own of a movie export or a lighting measurement.
+  std::string device;
 
   // The per-study state of the volume the document keeps as its previous one: openStudy
   // saves it, restorePreviousStudy (study_state.h) brings it back with that volume.
