@@ -229,16 +229,24 @@ FloatImage PathTracer::radiance() const {
   return f;
 }
 
+namespace {
+
+// A frame's stats from the path tracer's progress after it (TOTALMS: the frame's wall time).
+void setPathStats(FrameStats* stats, const PathProgress& g, double totalMs) {
+  if (!stats) return;
+  *stats = FrameStats{};
+  stats->totalMs = totalMs;
+  stats->pathSamples = g.samples;
+  stats->pathSeconds = g.seconds;
+  stats->variant = "path_trace";
+}
+
+}  // namespace
+
 void PathTracer::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = Clock::now();
   PathProgress g = accumulate(p, 1, out);
-  if (stats) {
-    *stats = FrameStats{};
-    stats->totalMs = secondsSince(start) * 1e3;
-    stats->pathSamples = g.samples;
-    stats->pathSeconds = g.seconds;
-    stats->variant = "path_trace";
-  }
+  setPathStats(stats, g, secondsSince(start) * 1e3);
 }
 
 void PathTracer::renderRows(const RenderParams& p, Image& out, int, int, FrameStats* stats) {
@@ -248,13 +256,8 @@ void PathTracer::renderRows(const RenderParams& p, Image& out, int, int, FrameSt
 void PathTracer::renderStill(const RenderParams& p, const StillBudget& budget, Image& out,
                              FrameStats* stats) {
   PathProgress g = run(p, budget.samples, budget.seconds, out);
-  if (stats) {
-    *stats = FrameStats{};
-    stats->totalMs = stats->kernelMs = g.seconds * 1e3;
-    stats->pathSamples = g.samples;
-    stats->pathSeconds = g.seconds;
-    stats->variant = "path_trace";
-  }
+  setPathStats(stats, g, g.seconds * 1e3);
+  if (stats) stats->kernelMs = g.seconds * 1e3;  // launches and read-back alike
 }
 
 }  // namespace voxray

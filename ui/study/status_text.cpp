@@ -11,7 +11,7 @@ namespace {
 constexpr double kFpsSmoothing = 0.3;  // weight of the newest frame in the fps average
 }
 
-std::string formatFrameStats(const FrameStats& s) {
+std::string formatFrameStats(const FrameRateStats& s) {
   if (!s.any) return "no frame yet";
   char buf[64];
   if (s.fps <= 0.0) {  // no rate to tell

@@ -10,7 +10,7 @@
 
 namespace voxray {
 
-struct FrameStats {
+struct FrameRateStats {
   bool any = false;  // false until the first frame
   double fps = 0.0;  // 0 = no rate: frames did not follow each other closely enough
   double lastMs = 0.0;
@@ -19,7 +19,7 @@ struct FrameStats {
 
 // "12.5 fps · 80 ms", "12.5 fps · 80 ms (interactive)", "80 ms" when there is no rate (one
 // frame after a pause) or "no frame yet".
-std::string formatFrameStats(const FrameStats& s);
+std::string formatFrameStats(const FrameRateStats& s);
 
 // The HU probe's two lines: "-998 HU  [128, 200, 75]" and "R 12.3  A 45.6  S 78.9 mm"
 // (the user's convention: R/L, A/P, S/I letters rather than signed LPS). Outside the volume

@@ -89,7 +89,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<ViewHistory> history_;
   // Owns the connections to history_; deleted before history_ (children go after members).
   QObject* historyListeners_;
-  FrameStats stats_;
+  FrameRateStats stats_;
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
   SessionActions* sessions_ = nullptr;

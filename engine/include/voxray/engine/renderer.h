@@ -45,8 +45,8 @@ class Renderer {
                           FrameStats* stats = nullptr) = 0;
   // A still image: one frame; a progressive renderer accumulates afresh to BUDGET (STATS:
   // totalMs and kernelMs its seconds, pathSamples, pathSeconds).
-  virtual void renderStill(const RenderParams& params, const StillBudget& budget, Image& out,
-                           FrameStats* stats = nullptr) {
+  virtual void renderStill(const RenderParams& params, [[maybe_unused]] const StillBudget& budget,
+                           Image& out, FrameStats* stats = nullptr) {
     render(params, out, stats);
   }
   Image render(const RenderParams& params, FrameStats* stats = nullptr) {
