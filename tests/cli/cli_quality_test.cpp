@@ -20,7 +20,6 @@
 #include "voxray/io/sample_volume.h"
 
 using namespace voxray;
-using namespace voxray::ui;
 
 namespace {
 

@@ -16,7 +16,6 @@
 #include "voxray/io/phantom.h"
 
 using namespace voxray;
-using namespace voxray::ui;
 
 namespace {
 
