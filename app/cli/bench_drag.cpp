@@ -18,7 +18,7 @@ DragReplay replayDrag(Raycaster& rc, const RenderParams& base, const glm::ivec2&
     orbitCamera(b.camera, orbit, i, 180);
     const RenderParams p = planFrame(b, {}, view, true, minSpacingMm, &adaptive.setting());
     FrameStats stats;
-    rc.render(p, image, &stats);
+    rc.rendererFor(p).render(p, image, &stats);
     d.ms.push_back(stats.totalMs);
     d.widths.push_back(p.width);
     // As RenderScheduler::onFrame reads the setting back from the frame.

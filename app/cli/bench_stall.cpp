@@ -38,7 +38,7 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
   RenderParams d = drag, s = sharp;
   auto dragTo = [&](int i) {
     orbitCamera(d.camera, orbit, i, 180);
-    rc.render(d, dragImage);
+    rc.rendererFor(d).render(d, dragImage);
   };
   StallFigures f;
   // Rest: the drag, then nothing moves until the sharp frame is whole.
@@ -54,7 +54,7 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
   std::this_thread::sleep_until(lastMove + std::chrono::milliseconds(c.settleMs));
   const double sharpCpu0 = cpuMs();
   for (const RowBand& b : sharpBands(s, c.bands)) {
-    rc.renderRows(s, sharpImage, b.y0, b.y1);
+    rc.rendererFor(s).renderRows(s, sharpImage, b.y0, b.y1);
     const double now = msSince(t0);
     const double nowCpu = cpuMs();
     f.restGapMs = std::max(f.restGapMs, now - shown);
@@ -75,7 +75,7 @@ StallFigures replayStall(Raycaster& rc, const RenderParams& drag, const RenderPa
   const Clock::time_point moved = asked + std::chrono::milliseconds(resumeMs);
   const double askedCpu = cpuMs();
   const RowBand first = sharpBands(s, c.bands).front();
-  rc.renderRows(s, sharpImage, first.y0, first.y1);
+  rc.rendererFor(s).renderRows(s, sharpImage, first.y0, first.y1);
   std::this_thread::sleep_until(moved);  // (no wait when the band took longer)
   dragTo(dragFrames);
   f.resumeWaitMs = msSince(moved);

@@ -56,30 +56,22 @@ void CinematicFlags::add(CLI::App& cmd) {
       ->check(CLI::Range(1, 64));
 }
 
-Image renderCinematic(Raycaster& rc, const RenderParams& p, const CinematicFlags& f,
-                      std::ostream& log, FrameStats& stats) {
-  PathTracer pt(rc);
-  pt.setOptions(f.tracer);
-  int spp = f.spp == 0 && f.seconds <= 0.0 ? CinematicFlags::kDefaultSpp : f.spp;
-  Image img;
-  PathProgress g = pt.run(p, spp, f.seconds, img);
-  log << "path-traced " << g.samples << " samples per pixel in " << g.seconds << " s ("
-      << f.tracer.maxBounces << " bounces, seed " << f.tracer.seed << ")\n";
-  stats.totalMs = stats.kernelMs = g.seconds * 1e3;
-  stats.pathSamples = g.samples;
-  stats.pathSeconds = g.seconds;
-  return img;
+StillBudget CinematicFlags::budget() const {
+  return StillBudget{spp == 0 && seconds <= 0.0 ? kDefaultSpp : spp, seconds};
 }
 
-BenchRow benchCinematic(Raycaster& rc, const RenderParams& p, const BenchRun& run,
-                        const CinematicFlags& f) {
-  PathTracer pt(rc);
-  pt.setOptions(f.tracer);
+void logPathRun(const FrameStats& stats, const CinematicFlags& f, std::ostream& log) {
+  if (stats.pathSamples == 0) return;
+  log << "path-traced " << stats.pathSamples << " samples per pixel in " << stats.pathSeconds
+      << " s (" << f.tracer.maxBounces << " bounces, seed " << f.tracer.seed << ")\n";
+}
+
+BenchRow benchPasses(Renderer& renderer, const RenderParams& p, const BenchRun& run) {
   Image img;
   std::vector<double> ms;
   for (int i = -run.warmup; i < run.frames; ++i) {
     auto t = std::chrono::steady_clock::now();
-    pt.accumulate(p, 1, img);
+    renderer.render(p, img);
     if (i >= 0)
       ms.push_back(
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count());

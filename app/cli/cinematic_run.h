@@ -20,17 +20,16 @@ struct CinematicFlags {
   PathTracerOptions tracer;
   static constexpr int kDefaultSpp = 64;
   void add(CLI::App& cmd);
+  // The still image's samples or seconds (kDefaultSpp when neither is given).
+  StillBudget budget() const;
 };
 
-// Path-traces p for the flags' samples or seconds and says how many it took on log;
-// stats: the time (total and kernel alike: launches and read-back) and samples.
-Image renderCinematic(Raycaster& rc, const RenderParams& p, const CinematicFlags& f,
-                      std::ostream& log, FrameStats& stats);
+// After a progressive still (STATS.pathSamples > 0): how many samples it took, on LOG.
+void logPathRun(const FrameStats& stats, const CinematicFlags& f, std::ostream& log);
 
-// bench: one sample per pixel per frame after the warm-up, the camera still (the
-// accumulation never restarts); rays/s is paths per second.
-BenchRow benchCinematic(Raycaster& rc, const RenderParams& p, const BenchRun& run,
-                        const CinematicFlags& f);
+// bench of a progressive renderer: one sample per pixel per frame after the warm-up, the
+// camera still (the accumulation never restarts); rays/s is paths per second.
+BenchRow benchPasses(Renderer& renderer, const RenderParams& p, const BenchRun& run);
 
 struct ConvergenceFlags {
   int convergedSpp = 4096;

@@ -181,9 +181,10 @@ Run addBenchCommand(CLI::App& app) {
                                        : RaycasterOptions::Kernel::Specialised;
             ro.packets = kern != "per-ray";
             rc.setOptions(ro);
-            BenchRow r = p.lighting == Lighting::Cinematic
-                             ? benchCinematic(rc, p, o->run, o->cinematic)
-                             : benchCase(rc, p, o->run);
+            rc.setPathTracerOptions(o->cinematic.tracer);  // a progressive case starts afresh
+            Renderer& renderer = rc.rendererFor(p);
+            BenchRow r = renderer.progressive() ? benchPasses(renderer, p, o->run)
+                                                : benchCase(rc, p, o->run);
             r.input = name;
             if (rc.slabCount() > 1) r.input += "/" + std::to_string(rc.slabCount()) + "slabs";
             const double* seed = p.gradient == Gradient::Central        ? seedCentral

@@ -139,10 +139,11 @@ Run addRenderCommand(CLI::App& app) {
     RaycasterOptions ro;
     ro.maxSlabBytes = o->slabMib << 20;
     rc.setOptions(ro);
+    rc.setPathTracerOptions(o->cinematic.tracer);
     FrameStats stats;
-    Image img = p.lighting == Lighting::Cinematic
-                    ? renderCinematic(rc, p, o->cinematic, std::cerr, stats)
-                    : rc.render(p, &stats);
+    Image img;
+    rc.rendererFor(p).renderStill(p, o->cinematic.budget(), img, &stats);
+    logPathRun(stats, o->cinematic, std::cerr);
     writeRenderOutput(o->output, img, v);
     std::cerr << "rendered " << p.width << "x" << p.height << " " << toString(p.mode) << " on "
               << ctx.device().name << " in " << stats.totalMs << " ms (kernel " << stats.kernelMs

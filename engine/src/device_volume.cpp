@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cl_context_impl.h"
-#include "voxray/engine/raycaster.h"
+#include "voxray/engine/volume_storage.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {

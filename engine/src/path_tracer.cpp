@@ -5,8 +5,9 @@
 #include <cmath>
 #include <string>
 
+#include "device_frame.h"
 #include "path_majorants.h"
-#include "raycaster_access.h"
+#include "voxray/engine/raycaster.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -41,14 +42,13 @@ double pathMajorant(const Lut& lut, double referenceStepMm, double opacityCap) {
 }
 
 struct PathTracer::Impl {
-  Raycaster& raycaster;
+  std::shared_ptr<DeviceFrame> frame;  // the raycaster's
   PathTracerOptions opts;
   std::string frameKey;  // toText of the frame being accumulated; empty: restart
   PathProgress progress;
   cl::Buffer accum, out;
   size_t pixels = 0;
   int width = 0, height = 0;
-  ContextImpl* cl = nullptr;  // the raycaster's, known from the first frame
   PathMajorants majorants;
   bool volumeScanned = false;
   Lut majorantLut;  // the table (and step, cap) the grid on the device was made for
@@ -56,12 +56,29 @@ struct PathTracer::Impl {
   cl::Buffer majorantBuffer;
 
   // The majorant grid for this frame's table, rebuilt and uploaded when it changed.
-  void updateMajorants(const SharedFrame& f);
+  void updateMajorants(const DeviceFrame& f);
+  // Sets the frame up for P (cinematicFrame) and uploads its parameters and table; returns
+  // the one-ray-per-work-item switches they were built with.
+  KernelSwitches prepare(const RenderParams& p);
 
-  explicit Impl(Raycaster& r) : raycaster(r) {}
+  explicit Impl(std::shared_ptr<DeviceFrame> f) : frame(std::move(f)) {}
 };
 
-void PathTracer::Impl::updateMajorants(const SharedFrame& f) {
+KernelSwitches PathTracer::Impl::prepare(const RenderParams& p) {
+  DeviceFrame& f = *frame;
+  f.updateSetup(p);
+  KernelSwitches sw = kernelSwitches(p);  // one ray per work-item: no packets, no leaps
+  sw.STORAGE_IMAGE = f.storage == VolumeStorage::Image3d;
+  sw.SLABS = f.device.plan().count();
+  RaycastParams k = f.frameParams(p, sw);
+  clCall([&] {
+    f.uploadFrame(k);
+    return 0;
+  });
+  return sw;
+}
+
+void PathTracer::Impl::updateMajorants(const DeviceFrame& f) {
   const Lut& lut = f.setup.lut;
   if (!volumeScanned) {
     majorants.setVolume(f.volume);
@@ -83,7 +100,8 @@ void PathTracer::Impl::updateMajorants(const SharedFrame& f) {
   majorantCap = opts.opacityCap;
 }
 
-PathTracer::PathTracer(Raycaster& raycaster) : impl_(std::make_unique<Impl>(raycaster)) {}
+PathTracer::PathTracer(Raycaster& raycaster)
+    : impl_(std::make_unique<Impl>(raycaster.deviceFrame())) {}
 PathTracer::~PathTracer() = default;
 
 PathProgress PathTracer::progress() const { return impl_->progress; }
@@ -115,7 +133,8 @@ PathProgress PathTracer::accumulate(const RenderParams& params, int samples, Ima
     m.frameKey = key;
   }
   RenderParams q = cinematicFrame(params);
-  SharedFrame f = RaycasterAccess::prepare(m.raycaster, q);
+  const KernelSwitches sw = m.prepare(q);
+  const DeviceFrame& f = *m.frame;
   const FrameSetup& s = f.setup;
   const glm::dmat3& w2v = s.view.worldToVoxel;
   double majorant = pathMajorant(s.lut, s.referenceStepMm, m.opts.opacityCap);
@@ -126,7 +145,7 @@ PathProgress PathTracer::accumulate(const RenderParams& params, int samples, Ima
   cl_uint4 counters = {{cl_uint(m.opts.seed), cl_uint(m.progress.samples), cl_uint(samples),
                         cl_uint(m.opts.maxBounces)}};
   size_t pixels = size_t(params.width) * size_t(params.height);
-  std::string opts = switchOptions(f.switches, false);  // no fast maths: logs of tiny numbers
+  std::string opts = switchOptions(sw, false);  // no fast maths: logs of tiny numbers
   cl::Kernel kernel = f.cl.kernel("lighting/path_trace.cl", "path_trace", opts);
   image.width = params.width;
   image.height = params.height;
@@ -138,8 +157,8 @@ PathProgress PathTracer::accumulate(const RenderParams& params, int samples, Ima
       m.pixels = pixels;
     }
     cl_uint arg = f.device.setArgs(kernel, 0);
-    kernel.setArg(arg++, f.params);
-    kernel.setArg(arg++, f.lut);
+    kernel.setArg(arg++, f.paramsBuffer);
+    kernel.setArg(arg++, f.lutBuffer);
     kernel.setArg(arg++, m.accum);
     kernel.setArg(arg++, m.out);
     kernel.setArg(arg++, m.majorantBuffer);
@@ -161,7 +180,6 @@ PathProgress PathTracer::accumulate(const RenderParams& params, int samples, Ima
   });
   m.width = params.width;
   m.height = params.height;
-  m.cl = &f.cl;
   m.progress.samples += samples;
   m.progress.seconds += secondsSince(start);
   return m.progress;
@@ -200,7 +218,8 @@ FloatImage PathTracer::radiance() const {
   size_t pixels = size_t(m.width) * size_t(m.height);
   std::vector<cl_float4> sum(pixels);
   clCall([&] {
-    m.cl->queue.enqueueReadBuffer(m.accum, CL_TRUE, 0, pixels * sizeof(cl_float4), sum.data());
+    m.frame->cl.queue.enqueueReadBuffer(m.accum, CL_TRUE, 0, pixels * sizeof(cl_float4),
+                                        sum.data());
     return 0;
   });
   f.rgb.resize(pixels * 3);
@@ -210,17 +229,35 @@ FloatImage PathTracer::radiance() const {
   return f;
 }
 
-void renderCinematic(Raycaster& r, const RenderParams& p, Image& out, FrameStats* stats) {
+namespace {
+
+// A frame's stats from the path tracer's progress after it (TOTALMS: the frame's wall time).
+void setPathStats(FrameStats* stats, const PathProgress& g, double totalMs) {
+  if (!stats) return;
+  *stats = FrameStats{};
+  stats->totalMs = totalMs;
+  stats->pathSamples = g.samples;
+  stats->pathSeconds = g.seconds;
+  stats->variant = "path_trace";
+}
+
+}  // namespace
+
+void PathTracer::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = Clock::now();
-  PathTracer& pt = RaycasterAccess::cinematic(r);
-  PathProgress g = pt.accumulate(p, 1, out);
-  if (stats) {
-    *stats = FrameStats{};
-    stats->totalMs = secondsSince(start) * 1e3;
-    stats->pathSamples = g.samples;
-    stats->pathSeconds = g.seconds;
-    stats->variant = "path_trace";
-  }
+  PathProgress g = accumulate(p, 1, out);
+  setPathStats(stats, g, secondsSince(start) * 1e3);
+}
+
+void PathTracer::renderRows(const RenderParams& p, Image& out, int, int, FrameStats* stats) {
+  render(p, out, stats);
+}
+
+void PathTracer::renderStill(const RenderParams& p, const StillBudget& budget, Image& out,
+                             FrameStats* stats) {
+  PathProgress g = run(p, budget.samples, budget.seconds, out);
+  setPathStats(stats, g, g.seconds * 1e3);
+  if (stats) stats->kernelMs = g.seconds * 1e3;  // launches and read-back alike
 }
 
 }  // namespace voxray

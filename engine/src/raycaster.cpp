@@ -6,58 +6,41 @@
 #include <cmath>
 #include <sstream>
 
-#include "cl_context_impl.h"
-#include "device_volume.h"
+#include "device_frame.h"
 #include "empty_space.h"
-#include "frame_setup.h"
-#include "kernel_params.h"
-#include "kernel_switches.h"
 #include "light_volume.h"
-#include "raycaster_access.h"
 #include "voxray/engine/path_tracer.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
 
-namespace {
-
-cl_float4 f4(const glm::dvec3& v, double w = 0.0) {
-  return {{float(v.x), float(v.y), float(v.z), float(w)}};
-}
-cl_float4 f4(double x, double y, double z, double w) {
-  return {{float(x), float(y), float(z), float(w)}};
-}
-
-}  // namespace
-
 struct Raycaster::Impl {
+  std::shared_ptr<DeviceFrame> frame;  // shared with the path tracers made from this
   ContextImpl& cl;
   const Volume& volume;
-  VolumeStorage storage;
-  DeviceVolume device;
-  cl::Buffer paramsBuffer;
-  cl::Buffer lutBuffer;
-  size_t lutCapacity = 0;
+  VolumeStorage& storage;
+  DeviceVolume& device;
   cl::Buffer outBuffer;
   size_t outCapacity = 0;
-  std::vector<glm::vec4> lutUploaded;  // the table on the device: uploaded on change only
   EmptySpace space;
-  LightVolume light;         // shadows, ao (issue 15): the light grid behind the table
-  bool lightCopied = false;  // the table's buffer holds the current grid
-  cl::Buffer countBuffer;    // 64 sample counters (COUNT_SAMPLES)
+  LightVolume light;  // shadows, ao (issue 15): the light grid behind the table
+  // The frame's table buffer (DeviceFrame::lutAllocations) the current grid was copied
+  // into; -1: none.
+  int lightCopiedInto = -1;
+  cl::Buffer countBuffer;                     // 64 sample counters (COUNT_SAMPLES)
   std::vector<glm::vec4>* hitsOut = nullptr;  // set by renderWithHits (HIT_OUTPUT)
   glm::ivec2 rows{0, 0};                      // set by renderRows: rows [x, y) only
   cl::Buffer hitBuffer;
   size_t hitCapacity = 0;
   RaycasterOptions opts;
-  // The last frame's setup. Its table, thresholds and step do not depend on the camera
-  // or the image size but cost two passes over the volume (its value range), so an orbit
-  // only recomputes the view.
-  FrameSetup setup;
-  std::string setupKey;
 
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s)
-      : cl(ctx.impl()), volume(v), storage(s), light(v) {}
+      : frame(std::make_shared<DeviceFrame>(ctx.impl(), v, s)),
+        cl(frame->cl),
+        volume(v),
+        storage(frame->storage),
+        device(frame->device),
+        light(v) {}
 
   void upload();
   KernelSwitches switches(const RenderParams& p) const;
@@ -65,95 +48,13 @@ struct Raycaster::Impl {
   bool packets() const;
   int lanes(const RenderParams& p) const;
   cl::NDRange local() const;
-  void updateSetup(const RenderParams& p);
-  // The frame's kernel parameters from the current setup; the parameters and table to the
-  // device (the table only when it changed). Shared with the path tracer.
-  RaycastParams frameParams(const RenderParams& p, const KernelSwitches& sw) const;
-  // EXTRA: bytes after the table in its buffer (the shadows / ao light grid).
-  void uploadFrame(const RaycastParams& k, size_t extraBytes = 0);
-  RaycastParams paramsUploaded{};
   std::unique_ptr<PathTracer> pathTracer;  // lighting cinematic, made on first use
+  PathTracer& tracer(Raycaster& r);
 };
 
-void Raycaster::Impl::updateSetup(const RenderParams& p) {
-  RenderParams q = p;
-  q.camera = CameraParams{};
-  q.width = q.height = 1;
-  // Nor the quality presets' step and bisections: a drag frame and the sharp one after it
-  // differ only there and in size, and the setup of a 512x512x400 CT costs more than a band.
-  q.stepMm = 0.0;
-  q.refine = 0;
-  std::string key = toText(q);
-  if (key == setupKey) {
-    setup.view = makeViewGeometry(volume, p);
-    setup.stepMm = effectiveStepMm(p, setup.referenceStepMm);
-    return;
-  }
-  setup = makeFrameSetup(volume, p);
-  setupKey = std::move(key);
-}
-
-RaycastParams Raycaster::Impl::frameParams(const RenderParams& p, const KernelSwitches& sw) const {
-  const Volume& v = volume;
-  const FrameSetup& s = setup;
-  const ViewGeometry& g = s.view;
-  RaycastParams k{};
-  k.eye_w = f4(g.eye);
-  k.forward_w = f4(g.forward);
-  k.right_w = f4(g.right);
-  k.up_w = f4(g.up);
-  k.eye_v = f4(g.toVoxel(g.eye));
-  k.forward_v = f4(g.dirToVoxel(g.forward));
-  k.right_v = f4(g.dirToVoxel(g.right));
-  k.up_v = f4(g.dirToVoxel(g.up));
-  k.clip_lo = f4(g.clipLo);
-  k.clip_hi = f4(g.clipHi);
-  glm::dmat3 gw = g.gradToWorld;  // glm is column-major: row r is (gw[0][r], gw[1][r], gw[2][r])
-  k.grad_x = f4(gw[0][0], gw[1][0], gw[2][0], 0);
-  k.grad_y = f4(gw[0][1], gw[1][1], gw[2][1], 0);
-  k.grad_z = f4(gw[0][2], gw[1][2], gw[2][2], 0);
-  k.light_w = f4(g.lightWorld);
-  k.light = f4(p.light.ambient, p.light.diffuse, p.light.specular, p.light.shininess);
-  k.background = f4(p.background);
-  k.view = f4(g.halfHeight, g.aspect, s.stepMm, s.referenceStepMm);
-  k.values = f4(s.isoLoStored, s.isoHiStored, s.lut.storedMin, s.lut.scale);
-  k.dvr =
-      f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, sw.ADAPTIVE ? p.adaptiveError : 0);
-  k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
-  k.image = {{p.width, p.height, 0, 0}};
-  glm::ivec3 cells = space.dims();
-  k.cells = {{cells.x, cells.y, cells.z, 0}};
-  packSwitches(sw, k);
-  k.slabs = {{device.plan().depth, 0, 0, 0}};
-  return k;
-}
-
-void Raycaster::Impl::uploadFrame(const RaycastParams& k, size_t extraBytes) {
-  size_t lutBytes = setup.lut.rgba.size() * sizeof(cl_float4);
-  if (lutBytes + extraBytes > lutCapacity) {
-    lutBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, lutBytes + extraBytes);
-    lutCapacity = lutBytes + extraBytes;
-    lutUploaded.clear();
-    lightCopied = false;
-  }
-  cl::CommandQueue& q = cl.queue;
-  paramsUploaded = k;  // the asynchronous write reads this copy, which outlives the caller's
-  q.enqueueWriteBuffer(paramsBuffer, CL_FALSE, 0, sizeof(k), &paramsUploaded);
-  if (setup.lut.rgba != lutUploaded) {
-    lutUploaded = setup.lut.rgba;  // the asynchronous write reads this copy
-    q.enqueueWriteBuffer(lutBuffer, CL_FALSE, 0, lutBytes, lutUploaded.data());
-  }
-}
-
 void Raycaster::Impl::upload() {
-  const DeviceInfo& d = cl.info;
-  if (volume.voxelCount() == 0 || volume.voxels.size() != volume.voxelCount())
-    throw inputError("the volume is empty or its voxel count does not match its dimensions");
-  if (storage == VolumeStorage::Auto)
-    storage = d.isGpu && d.imageSupport ? VolumeStorage::Image3d : VolumeStorage::Buffer;
-  device.upload(cl, volume, storage, opts.maxSlabBytes);
+  frame->upload(opts.maxSlabBytes);
   clCall([&] {
-    paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
     countBuffer = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 64 * sizeof(cl_uint));
     return 0;
   });
@@ -238,26 +139,42 @@ int Raycaster::lightingBuilds() const { return impl_->light.builds(); }
 
 int Raycaster::lightingSigmaBuilds() const { return impl_->light.sigmaBuilds(); }
 
-Image Raycaster::render(const RenderParams& params, FrameStats* stats) {
-  Image out;
-  render(params, out, stats);
-  return out;
+std::shared_ptr<DeviceFrame> Raycaster::deviceFrame() const { return impl_->frame; }
+
+PathTracer& Raycaster::Impl::tracer(Raycaster& r) {
+  if (!pathTracer) pathTracer = std::make_unique<PathTracer>(r);
+  return *pathTracer;
+}
+
+Renderer& Raycaster::rendererFor(const RenderParams& p) {
+  if (p.lighting == Lighting::Cinematic) return impl_->tracer(*this);
+  return *this;
+}
+
+void Raycaster::setPathTracerOptions(const PathTracerOptions& options) {
+  impl_->tracer(*this).setOptions(options);
 }
 
 void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   auto start = std::chrono::steady_clock::now();
   if (p.lighting == Lighting::Cinematic) {
-    if (!impl_->hitsOut) return renderCinematic(*this, p, out, stats);
+    if (!impl_->hitsOut)
+      throw inputError(
+          "the raycaster renders phong, shadows and ao; a cinematic frame is the "
+          "path tracer's: render it through Raycaster::rendererFor");
     RenderParams phong = p;  // a pick's hits come from the phong frame: paths find no surface
     phong.lighting = Lighting::Phong;
     return render(phong, out, stats);
   }
   Impl& m = *impl_;
-  m.updateSetup(p);
-  const FrameSetup& s = m.setup;
+  DeviceFrame& f = *m.frame;
+  f.updateSetup(p);
+  const FrameSetup& s = f.setup;
 
   KernelSwitches sw = m.switches(p);
-  RaycastParams k = m.frameParams(p, sw);
+  RaycastParams k = f.frameParams(p, sw);
+  glm::ivec3 cells = m.space.dims();
+  k.cells = {{cells.x, cells.y, cells.z, 0}};
   if (sw.LIGHTING) m.light.prepare(s, k);
 
   size_t pixels = size_t(p.width) * size_t(p.height);
@@ -280,11 +197,11 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       m.outCapacity = pixels * 4;
     }
     cl::CommandQueue& q = m.cl.queue;
-    m.uploadFrame(k, sw.LIGHTING ? m.light.bytes() : 0);
+    f.uploadFrame(k, sw.LIGHTING ? m.light.bytes() : 0);
     // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
     bool leaps = p.mode != Mode::Mip || m.packets();
     if (m.opts.emptySpaceSkipping && leaps)
-      m.space.classify(m.cl, m.paramsBuffer, m.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
+      m.space.classify(m.cl, f.paramsBuffer, f.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
                        sw.PACKET != 0, sw.ISO_BLOCK_TRIES > 0);
     if (sw.LIGHTING) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
@@ -292,20 +209,20 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       storage.SLABS = sw.SLABS;
       if (m.light.update(
               m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false), sw.LIGHTING,
-              p.mode == Mode::Iso, m.paramsBuffer, m.lutBuffer,
+              p.mode == Mode::Iso, f.paramsBuffer, f.lutBuffer,
               m.opts.emptySpaceSkipping && p.mode == Mode::Dvr ? &m.space.leap() : nullptr, k,
               s.lut.rgba)) {
         lightingMs = m.light.lastMs();
-        m.lightCopied = false;
+        m.lightCopiedInto = -1;
       }
-      if (!m.lightCopied) m.light.copyInto(m.cl, m.lutBuffer, lutBytes);
-      m.lightCopied = true;
+      if (m.lightCopiedInto != f.lutAllocations) m.light.copyInto(m.cl, f.lutBuffer, lutBytes);
+      m.lightCopiedInto = f.lutAllocations;
     }
     if (m.opts.countSamples)
       q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     cl_uint arg = m.device.setArgs(kernel, 0);  // vol, or vol0 .. per slab
-    kernel.setArg(arg++, m.paramsBuffer);
-    kernel.setArg(arg++, m.lutBuffer);
+    kernel.setArg(arg++, f.paramsBuffer);
+    kernel.setArg(arg++, f.lutBuffer);
     kernel.setArg(arg++, m.outBuffer);
     kernel.setArg(arg++, m.space.leap());
     kernel.setArg(arg++, m.space.range());
@@ -358,26 +275,6 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     stats->totalMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
-}
-
-SharedFrame RaycasterAccess::prepare(Raycaster& r, const RenderParams& p) {
-  Raycaster::Impl& m = *r.impl_;
-  m.updateSetup(p);
-  KernelSwitches sw = kernelSwitches(p);  // one ray per work-item: no packets, no leaps
-  sw.STORAGE_IMAGE = m.storage == VolumeStorage::Image3d;
-  sw.SLABS = m.device.plan().count();
-  RaycastParams k = m.frameParams(p, sw);
-  clCall([&] {
-    m.uploadFrame(k);
-    return 0;
-  });
-  return SharedFrame{m.cl, m.volume, m.device, m.setup, m.paramsBuffer, m.lutBuffer, sw};
-}
-
-PathTracer& RaycasterAccess::cinematic(Raycaster& r) {
-  Raycaster::Impl& m = *r.impl_;
-  if (!m.pathTracer) m.pathTracer = std::make_unique<PathTracer>(r);
-  return *m.pathTracer;
 }
 
 void Raycaster::renderRows(const RenderParams& params, Image& out, int y0, int y1,

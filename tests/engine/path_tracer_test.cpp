@@ -146,11 +146,11 @@ TEST(PathTracer, RestartsWhenTheFrameChanges) {
     pt.accumulate(p, 1, img);
     EXPECT_EQ(pt.accumulate(q, 1, img).samples, 1) << "change " << change;
   }
-  // Raycaster::render with lighting cinematic: one pass per call, counted in its stats.
+  // The raycaster's renderer for lighting cinematic: one pass per call, counted in its stats.
   p.lighting = Lighting::Cinematic;
   FrameStats s;
-  rc.render(p, img, &s);
-  rc.render(p, img, &s);
+  rc.rendererFor(p).render(p, img, &s);
+  rc.rendererFor(p).render(p, img, &s);
   EXPECT_EQ(s.pathSamples, 2);
   EXPECT_GT(s.pathSeconds, 0.0);
   // A pick's frame with hits is the phong frame's (one hit record per pixel) and leaves
@@ -160,7 +160,7 @@ TEST(PathTracer, RestartsWhenTheFrameChanges) {
   rc.renderWithHits(p, hits, &h);
   EXPECT_EQ(hits.size(), size_t(p.width) * size_t(p.height));
   EXPECT_EQ(h.pathSamples, 0);
-  rc.render(p, img, &s);
+  rc.rendererFor(p).render(p, img, &s);
   EXPECT_EQ(s.pathSamples, 3);
 }
 

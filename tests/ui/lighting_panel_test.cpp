@@ -191,6 +191,12 @@ class LightingPanelTest : public QObject {
     QCOMPARE(label->text().toStdString(), models_->lighting.text(Lighting::Shadows));
     QVERIFY2(label->text().split('\n')[0].contains("at 256"), qPrintable(label->text()));
   }
+
+  // The lighting measurement makes its OpenCL context on the device the window renders
+  // with: the window's selector ("cpu" in the fixture) reaches the panel through the models.
+  void measurementDeviceIsTheWindows() {
+    QCOMPARE(QString::fromStdString(models_->device), QString("cpu"));
+  }
 };
 
 QTEST_MAIN(LightingPanelTest)

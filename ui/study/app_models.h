@@ -27,6 +27,9 @@ struct AppModels {
   // While a volume whose values are not HU is open (value_look.h): the user's HU look
   // (preferencesText), saved as the preferences and put back when a CT opens.
   std::optional<std::string> huLook;
+  // The OpenCL selector the window renders with ("": $VOXRAY_DEVICE or auto), for the
+  // contexts of its own of a movie export or a lighting measurement.
+  std::string device;
 
   // The per-study state of the volume the document keeps as its previous one: openStudy
   // saves it, restorePreviousStudy (study_state.h) brings it back with that volume.

@@ -69,7 +69,7 @@ RenderParams MovieFrames::params(int k) const {
 
 Image MovieFrames::frame(int k) {
   const RenderParams p = params(k);
-  if (!plan_.cine) return raycaster_->render(p);
+  if (!plan_.cine) return raycaster_->rendererFor(p).render(p);
   const int slice = cineSlice(k, count_, cineSliceCount(v_, plan_.view));
   const PlaneGrid g = cinePlane(v_, plan_.view, slice, {p.width, p.height});
   // Outside the slice (the margins of another aspect ratio): black.

@@ -4,9 +4,11 @@
 
 namespace voxray {
 
-bool ProgressiveRender::onFrame(const RenderParams& p, bool interactive, int samples,
+bool ProgressiveRender::onFrame(const RenderParams&, bool interactive, int samples,
                                 double seconds) {
-  active_ = p.lighting == Lighting::Cinematic;
+  // Only the path tracer (Raycaster::rendererFor, lighting cinematic) counts path samples:
+  // its frames have at least one.
+  active_ = samples > 0;
   if (!active_) {
     samples_ = 0;
     seconds_ = 0.0;

@@ -16,8 +16,9 @@ class ProgressiveRender {
   // GPU; the image stops changing visibly long before.
   static constexpr int kMaxSamples = 1024;
 
-  // A view frame arrived with the path tracer's counts (FrameStats::pathSamples,
-  // pathSeconds). Returns whether to ask for another pass of the same frame.
+  // A view frame of P arrived with the path tracer's counts (FrameStats::pathSamples,
+  // pathSeconds; 0 from the raycaster, which no pass refines). Returns whether to ask for
+  // another pass of the same frame.
   bool onFrame(const RenderParams& p, bool interactive, int samples, double seconds);
   bool active() const { return active_; }  // the last frame was cinematic
   int samples() const { return samples_; }

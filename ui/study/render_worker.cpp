@@ -47,11 +47,12 @@ void RenderWorker::requestBands(const RenderParams& params, std::vector<RowBand>
 void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view) {
   const RenderParams& p = req.params;
   view = upscaleNearest(view, p.width, p.height);
+  Renderer& renderer = raycaster.rendererFor(p);
   FrameStats sum;
   for (size_t i = 0; i < req.bands.size(); ++i) {
     const RowBand b = req.bands[i];
     FrameStats s;
-    raycaster.renderRows(p, view, b.y0, b.y1, &s);
+    renderer.renderRows(p, view, b.y0, b.y1, &s);
     sum.kernelMs += s.kernelMs;
     sum.totalMs += s.totalMs;
     sum.lightingMs += s.lightingMs;
@@ -136,7 +137,7 @@ void RenderWorker::run() {
       if (req->withHits)
         frame->image = raycaster->renderWithHits(req->params, frame->hits, &frame->stats);
       else
-        raycaster->render(req->params, frame->image, &frame->stats);
+        raycaster->rendererFor(req->params).render(req->params, frame->image, &frame->stats);
       if (req->tag == 0) view = frame->image;
       if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
     } catch (const std::exception& e) {

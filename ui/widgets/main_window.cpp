@@ -45,6 +45,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
       historyListeners_(new QObject(this)) {
   setObjectName("mainWindow");
   setAcceptDrops(true);
+  models_.device = device.toStdString();
   scheduler_ = new RenderScheduler(models.render, models.document, device, this);
   volumeView_ = new VolumeView(models.render, models.document, models.crosshair, *scheduler_);
   const Orientation orientations[] = {Orientation::Axial, Orientation::Coronal,
@@ -100,7 +101,6 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
             showError(rejected ? "Cannot show this volume" : "Rendering failed", message);
           });
 
-  device_ = device;
   movies_ = new MovieController(this);
   connect(movies_, &MovieController::written, this,
           [this](const QString& path) { statusBar()->showMessage("Movie saved: " + path, 10000); });
@@ -329,7 +329,7 @@ void MainWindow::exportScreenshot() {
 }
 
 void MainWindow::exportMovie() {
-  MovieDialog dialog(this, models_, *movies_, device_);
+  MovieDialog dialog(this, models_, *movies_, QString::fromStdString(models_.device));
   if (errorSink_)
     dialog.setErrorSink([this](const QString& m) { errorSink_("Cannot export the movie", m); });
   dialog.exec();

@@ -39,7 +39,6 @@ class MainWindow : public QMainWindow {
   ViewGrid& grid() { return *grid_; }
   SessionActions& sessions() { return *sessions_; }
   MovieController& movies() { return *movies_; }
-  const QString& device() const { return device_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
@@ -95,7 +94,6 @@ class MainWindow : public QMainWindow {
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
   SessionActions* sessions_ = nullptr;
   SessionInput loading_;               // the input being loaded, for AppModels::source
-  QString device_;                     // the OpenCL selector, for exports' own contexts
   MovieController* movies_ = nullptr;  // File → Export movie, in the background
 };
 

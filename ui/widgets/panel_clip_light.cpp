@@ -18,7 +18,6 @@
 #include "gui_post.h"
 #include "light_gizmo.h"
 #include "lighting_meter.h"
-#include "main_window.h"
 #include "spec_widgets.h"
 #include "volume_view.h"
 #include "voxray/engine/quality.h"
@@ -96,13 +95,12 @@ void addLightingFigures(QFormLayout* form, QGroupBox* box, AppModels& models) {
   onModelChange<unsigned>(figures, m.changed, [refresh](unsigned what) {
     if (what & kAppearance) refresh();
   });
-  QObject::connect(measure, &QPushButton::clicked, box, [box, holder, &models] {
+  QObject::connect(measure, &QPushButton::clicked, box, [holder, &models] {
     if (models.document.empty()) return;
     const glm::ivec2 size{256, 192};
     RenderParams view = settledFrame(models.render.params(), models.render.quality().preset, size,
                                      size, models.document.minSpacingMm());
-    auto* window = qobject_cast<MainWindow*>(box->window());
-    holder->meter.measure(view, window ? window->device().toStdString() : "");
+    holder->meter.measure(view, models.device);
   });
   form->addRow(figures);
   form->addRow(measure);

@@ -23,11 +23,13 @@
 
 #include "voxray/engine/reference_renderer.h"
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/renderer.h"
 #include "voxray/io/image.h"
 
 namespace voxray {
 
 class Raycaster;
+struct DeviceFrame;
 
 struct PathTracerOptions {
   uint32_t seed = 1;
@@ -45,12 +47,26 @@ RenderParams cinematicFrame(const RenderParams& p);
 // The majorant of a frame: the largest extinction per mm its table can give.
 double pathMajorant(const Lut& lut, double referenceStepMm, double opacityCap);
 
-class PathTracer {
+class PathTracer : public Renderer {
  public:
-  // Shares the raycaster's device volume, setup and frame buffers; it must outlive this.
+  // Shares the raycaster's device volume, setup and frame buffers (Raycaster::deviceFrame).
   // Not copyable (it owns device buffers).
   explicit PathTracer(Raycaster& raycaster);
-  ~PathTracer();
+  ~PathTracer() override;
+  PathTracer(const PathTracer&) = delete;
+  PathTracer& operator=(const PathTracer&) = delete;
+
+  bool progressive() const override { return true; }
+  using Renderer::render;
+  // One pass of one path per pixel (accumulate(P, 1, OUT)), counted in STATS' pathSamples
+  // and pathSeconds.
+  void render(const RenderParams& p, Image& out, FrameStats* stats = nullptr) override;
+  // The whole next pass: paths do not refine in bands.
+  void renderRows(const RenderParams& p, Image& out, int y0, int y1,
+                  FrameStats* stats = nullptr) override;
+  // run(P, BUDGET's samples, its seconds, OUT).
+  void renderStill(const RenderParams& p, const StillBudget& budget, Image& out,
+                   FrameStats* stats = nullptr) override;
 
   // Adds `samples` paths per pixel in one kernel launch (restarting first when the frame
   // changed) and writes the mean so far into out (8-bit, clamped like render()).

@@ -8,14 +8,17 @@
 #include <glm/glm.hpp>
 
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/renderer.h"
+#include "voxray/engine/volume_storage.h"
 #include "voxray/io/image.h"
 
 namespace voxray {
 
 struct Volume;
 class ClContext;
-
-enum class VolumeStorage { Auto, Buffer, Image3d };
+struct DeviceFrame;
+class PathTracer;
+struct PathTracerOptions;
 
 // How frames are computed; none of it changes the image (beyond float rounding).
 struct RaycasterOptions {
@@ -37,21 +40,7 @@ struct RaycasterOptions {
   size_t maxSlabBytes = 0;
 };
 
-struct FrameStats {
-  double kernelMs = 0.0;  // from OpenCL profiling events
-  double totalMs = 0.0;   // wall time including upload of parameters and read-back
-  double samples = 0.0;   // volume samples taken (0 unless RaycasterOptions::countSamples)
-  std::string variant;    // the -D options of the kernel that ran
-  // shadows, ao: wall time of the light grid's precomputation in this frame (0 when the
-  // grid was reused), included in totalMs.
-  double lightingMs = 0.0;
-  // lighting cinematic (path_tracer.h): samples per pixel accumulated so far, and the
-  // seconds they took since the last restart.
-  int pathSamples = 0;
-  double pathSeconds = 0.0;
-};
-
-class Raycaster {
+class Raycaster : public Renderer {
  public:
   // Uploads the volume. Auto storage: image3d_t with hardware filtering on a GPU, a
   // buffer with manual trilinear on a CPU. A volume larger than one allocation or 3D image
@@ -63,17 +52,20 @@ class Raycaster {
   Raycaster(const Raycaster&) = delete;
   Raycaster& operator=(const Raycaster&) = delete;
 
-  // Lighting cinematic adds one pass of path samples per call to the raycaster's own
-  // PathTracer (restarting it when the frame changed) and returns the mean so far.
-  Image render(const RenderParams& params, FrameStats* stats = nullptr);
-  // The same, into a caller's image (reused between frames: no allocation per frame).
-  void render(const RenderParams& params, Image& out, FrameStats* stats = nullptr);
+  // The renderer of a frame with PARAMS: this raycaster, or for lighting cinematic its own
+  // PathTracer (made on first use), which adds one pass of path samples per frame.
+  Renderer& rendererFor(const RenderParams& params);
+  // The options of that path tracer (restarts it; throws as PathTracer::setOptions).
+  void setPathTracerOptions(const PathTracerOptions& options);
+
+  using Renderer::render;
+  // Phong, shadows and ao (lighting cinematic throws Error (Input): ask rendererFor).
+  void render(const RenderParams& params, Image& out, FrameStats* stats = nullptr) override;
   // Only rows [Y0, Y1) of the frame (the workstation refines its sharp frame in bands, so
   // that a camera move waits for one band, not a whole frame): OUT keeps its other rows
   // when it already has the frame's size. Pixel for pixel the rows of render(PARAMS).
-  // Lighting cinematic renders its whole next pass.
   void renderRows(const RenderParams& params, Image& out, int y0, int y1,
-                  FrameStats* stats = nullptr);
+                  FrameStats* stats = nullptr) override;
   // A frame from the -D HIT_OUTPUT=1 variant that also gives each pixel's hit (row by row):
   // xyz the hit point in voxel coordinates, w 1 for an iso surface crossing or where dvr's
   // accumulated opacity reaches 0.5 (DVR_HIT_ALPHA, kernels/march/hit_output.cl: interpolated
@@ -82,6 +74,9 @@ class Raycaster {
   // termination, and every mip pixel).
   Image renderWithHits(const RenderParams& params, std::vector<glm::vec4>& hits,
                        FrameStats* stats = nullptr);
+
+  // The volume on the device and the frame set up on it, which a PathTracer shares.
+  std::shared_ptr<DeviceFrame> deviceFrame() const;
 
   // The -D options a frame with these parameters compiles with.
   std::string variantOptions(const RenderParams& params) const;
@@ -102,7 +97,6 @@ class Raycaster {
   int lightingSigmaBuilds() const;
 
  private:
-  friend struct RaycasterAccess;  // the path tracer shares the device volume and setup
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

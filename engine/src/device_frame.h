@@ -1,0 +1,50 @@
+#pragma once
+// What the raycaster and the path tracer both render from, held by both: the volume on the
+// device, the last frame's setup, and the frame parameters and table uploaded for it.
+#include <string>
+#include <vector>
+
+#include <CL/opencl.hpp>
+
+#include "cl_context_impl.h"
+#include "device_volume.h"
+#include "frame_setup.h"
+#include "kernel_params.h"
+#include "kernel_switches.h"
+#include "voxray/engine/volume_storage.h"
+
+namespace voxray {
+
+struct DeviceFrame {
+  ContextImpl& cl;
+  const Volume& volume;
+  VolumeStorage storage;  // Auto until upload() resolves it
+  DeviceVolume device;
+  cl::Buffer paramsBuffer;
+  cl::Buffer lutBuffer;
+  size_t lutCapacity = 0;
+  int lutAllocations = 0;  // counts new table buffers (what was copied after the table is gone)
+  // The last frame's setup. Its table, thresholds and step do not depend on the camera
+  // or the image size but cost two passes over the volume (its value range), so an orbit
+  // only recomputes the view.
+  FrameSetup setup;
+  std::string setupKey;
+
+  DeviceFrame(ContextImpl& c, const Volume& v, VolumeStorage s) : cl(c), volume(v), storage(s) {}
+
+  // The volume (resolving Auto storage) and the parameter buffer to the device.
+  void upload(size_t maxSlabBytes);
+  void updateSetup(const RenderParams& p);
+  // The frame's kernel parameters from the current setup (cells left 0: the raycaster's
+  // macro-cell grid fills them).
+  RaycastParams frameParams(const RenderParams& p, const KernelSwitches& sw) const;
+  // The parameters and table to the device (the table only when it changed). EXTRA: bytes
+  // after the table in its buffer (the shadows / ao light grid).
+  void uploadFrame(const RaycastParams& k, size_t extraBytes = 0);
+
+ private:
+  std::vector<glm::vec4> lutUploaded;  // the table on the device: uploaded on change only
+  RaycastParams paramsUploaded{};
+};
+
+}  // namespace voxray
