@@ -4,6 +4,7 @@
 // the reference renderer cannot disagree about it.
 #include "voxray/engine/camera.h"
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/step.h"
 #include "voxray/engine/transfer_function.h"
 
 namespace voxray {
