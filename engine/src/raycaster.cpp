@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "cl_context_impl.h"
@@ -50,11 +51,11 @@ struct Raycaster::Impl {
   cl::Buffer hitBuffer;
   size_t hitCapacity = 0;
   RaycasterOptions opts;
-  // The last frame's setup. Its table, thresholds and step do not depend on the camera
-  // or the image size but cost two passes over the volume (its value range), so an orbit
-  // only recomputes the view.
+  // The last frame's setup. Its table and thresholds do not depend on the camera, the image
+  // size or the step but cost two passes over the volume (its value range), so an orbit, and
+  // a drag frame and the sharp one after it, only recompute the view and the step.
   FrameSetup setup;
-  std::string setupKey;
+  std::optional<SetupKey> setupKey;  // what the table and thresholds were made from
 
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s)
       : cl(ctx.impl()), volume(v), storage(s), light(v) {}
@@ -76,21 +77,12 @@ struct Raycaster::Impl {
 };
 
 void Raycaster::Impl::updateSetup(const RenderParams& p) {
-  RenderParams q = p;
-  q.camera = CameraParams{};
-  q.width = q.height = 1;
-  // Nor the quality presets' step and bisections: a drag frame and the sharp one after it
-  // differ only there and in size, and the setup of a 512x512x400 CT costs more than a band.
-  q.stepMm = 0.0;
-  q.refine = 0;
-  std::string key = toText(q);
-  if (key == setupKey) {
-    setup.view = makeViewGeometry(volume, p);
-    setup.stepMm = effectiveStepMm(p, setup.referenceStepMm);
-    return;
+  SetupKey key = setupKeyOf(p);
+  if (key != setupKey) {
+    setup = makeValueSetup(volume, key);
+    setupKey = std::move(key);
   }
-  setup = makeFrameSetup(volume, p);
-  setupKey = std::move(key);
+  placeFrame(setup, volume, p);
 }
 
 RaycastParams Raycaster::Impl::frameParams(const RenderParams& p, const KernelSwitches& sw) const {
