@@ -29,21 +29,12 @@ void DeviceFrame::upload(size_t maxSlabBytes) {
 }
 
 void DeviceFrame::updateSetup(const RenderParams& p) {
-  RenderParams q = p;
-  q.camera = CameraParams{};
-  q.width = q.height = 1;
-  // Nor the quality presets' step and bisections: a drag frame and the sharp one after it
-  // differ only there and in size, and the setup of a 512x512x400 CT costs more than a band.
-  q.stepMm = 0.0;
-  q.refine = 0;
-  std::string key = toText(q);
-  if (key == setupKey) {
-    setup.view = makeViewGeometry(volume, p);
-    setup.stepMm = effectiveStepMm(p, setup.referenceStepMm);
-    return;
+  SetupKey key = setupKeyOf(p);
+  if (key != setupKey) {
+    setup = makeValueSetup(volume, key);
+    setupKey = std::move(key);
   }
-  setup = makeFrameSetup(volume, p);
-  setupKey = std::move(key);
+  placeFrame(setup, volume, p);
 }
 
 RaycastParams DeviceFrame::frameParams(const RenderParams& p, const KernelSwitches& sw) const {

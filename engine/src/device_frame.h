@@ -1,6 +1,7 @@
 #pragma once
 // What the raycaster and the path tracer both render from, held by both: the volume on the
 // device, the last frame's setup, and the frame parameters and table uploaded for it.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,11 +25,11 @@ struct DeviceFrame {
   cl::Buffer lutBuffer;
   size_t lutCapacity = 0;
   int lutAllocations = 0;  // counts new table buffers (what was copied after the table is gone)
-  // The last frame's setup. Its table, thresholds and step do not depend on the camera
-  // or the image size but cost two passes over the volume (its value range), so an orbit
-  // only recomputes the view.
+  // The last frame's setup. Its table and thresholds do not depend on the camera, the image
+  // size or the step but cost two passes over the volume (its value range), so an orbit, and
+  // a drag frame and the sharp one after it, only recompute the view and the step.
   FrameSetup setup;
-  std::string setupKey;
+  std::optional<SetupKey> setupKey;  // what the table and thresholds were made from
 
   DeviceFrame(ContextImpl& c, const Volume& v, VolumeStorage s) : cl(c), volume(v), storage(s) {}
 

@@ -3,47 +3,65 @@
 #include <algorithm>
 #include <cmath>
 
+#include "voxray/engine/step.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
 
-TransferFunction frameTransferFunction(const RenderParams& p) {
+SetupKey setupKeyOf(const RenderParams& p) {
+  return {p.mode,  p.preset, p.presetShiftHu, p.transferFunction, p.surfaceColor,
+          p.isoLo, p.isoHi,  p.windowWidth,   p.windowLevel};
+}
+
+TransferFunction frameTransferFunction(const SetupKey& k) {
   auto shifted = [&](TransferFunction tf) {
-    for (auto& c : tf.points) c.hu += p.presetShiftHu;
+    for (auto& c : tf.points) c.hu += k.presetShiftHu;
     return tf;
   };
-  if (!p.transferFunction.empty()) return shifted(TransferFunction{p.transferFunction});
-  if (!p.preset.empty()) {
-    const Preset& preset = findPreset(p.preset);
+  if (!k.transferFunction.empty()) return shifted(TransferFunction{k.transferFunction});
+  if (!k.preset.empty()) {
+    const Preset& preset = findPreset(k.preset);
     if (!preset.tf.points.empty()) return shifted(preset.tf);
   }
-  if (p.mode == Mode::Dvr) return shifted(findPreset("CT-Bone").tf);
+  if (k.mode == Mode::Dvr) return shifted(findPreset("CT-Bone").tf);
   // iso: a plain surface colour; mip does not use the table.
-  glm::dvec4 c(p.surfaceColor, 1.0);
+  glm::dvec4 c(k.surfaceColor, 1.0);
   return TransferFunction{{{0.0, c}}};
 }
 
-FrameSetup makeFrameSetup(const Volume& v, const RenderParams& p) {
+TransferFunction frameTransferFunction(const RenderParams& p) {
+  return frameTransferFunction(setupKeyOf(p));
+}
+
+FrameSetup makeValueSetup(const Volume& v, const SetupKey& k) {
   FrameSetup s;
-  s.view = makeViewGeometry(v, p);
-  s.lut = bakeLut(frameTransferFunction(p), v);
-  double minSpacing = v.minSpacingMm();
-  s.stepMm = effectiveStepMm(p, minSpacing);
-  s.referenceStepMm = minSpacing;
-  double a = v.toStored(p.isoLo), b = v.toStored(p.isoHi);
+  s.lut = bakeLut(frameTransferFunction(k), v);
+  s.referenceStepMm = v.minSpacingMm();
+  double a = v.toStored(k.isoLo), b = v.toStored(k.isoHi);
   s.isoLoStored = std::min(a, b);
   s.isoHiStored = std::max(a, b);
   ValueRange r = storedRange(v);
   double lo, width;
-  if (p.windowWidth > 0.0) {
-    width = p.windowWidth / std::abs(v.slope);
-    lo = v.toStored(p.windowLevel) - 0.5 * width;
+  if (k.windowWidth > 0.0) {
+    width = k.windowWidth / std::abs(v.slope);
+    lo = v.toStored(k.windowLevel) - 0.5 * width;
   } else {
     lo = r.min;
     width = std::max(1.0, double(r.max) - double(r.min));
   }
   s.windowLoStored = lo;
   s.windowInvWidth = 1.0 / width;
+  return s;
+}
+
+void placeFrame(FrameSetup& s, const Volume& v, const RenderParams& p) {
+  s.view = makeViewGeometry(v, p);
+  s.stepMm = effectiveStepMm(p, s.referenceStepMm);
+}
+
+FrameSetup makeFrameSetup(const Volume& v, const RenderParams& p) {
+  FrameSetup s = makeValueSetup(v, setupKeyOf(p));
+  placeFrame(s, v, p);
   return s;
 }
 

@@ -2,6 +2,9 @@
 // What both renderers derive from (volume, parameters) before marching rays: the view,
 // the lookup table, thresholds in stored units, the step. One place, so the kernel and
 // the reference renderer cannot disagree about it.
+#include <string>
+#include <vector>
+
 #include "voxray/engine/camera.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/engine/transfer_function.h"
@@ -9,6 +12,22 @@
 namespace voxray {
 
 struct Volume;
+
+// Exactly the parameters the costly part of a setup reads (its table and thresholds; the
+// window costs two passes over the volume for its value range). That part is made from
+// this key alone (makeValueSetup), so it cannot read a field the raycaster's cache does not
+// compare: a field it needs must be added here first.
+struct SetupKey {
+  Mode mode = Mode::Iso;
+  std::string preset;
+  double presetShiftHu = 0.0;
+  std::vector<ControlPoint> transferFunction;
+  glm::dvec3 surfaceColor{0.0};
+  double isoLo = 0.0, isoHi = 0.0;
+  double windowWidth = 0.0, windowLevel = 0.0;
+  bool operator==(const SetupKey&) const = default;
+};
+SetupKey setupKeyOf(const RenderParams& p);
 
 struct FrameSetup {
   ViewGeometry view;
@@ -22,7 +41,12 @@ struct FrameSetup {
 };
 
 // The transfer function a frame uses: the named preset's, or the mode's default.
+TransferFunction frameTransferFunction(const SetupKey& k);
 TransferFunction frameTransferFunction(const RenderParams& p);
+// The setup's costly part: table, thresholds, window and reference step; no view or step.
+FrameSetup makeValueSetup(const Volume& v, const SetupKey& k);
+// The per-frame part into S (made by makeValueSetup for P's key): P's view and step.
+void placeFrame(FrameSetup& s, const Volume& v, const RenderParams& p);
 FrameSetup makeFrameSetup(const Volume& v, const RenderParams& p);
 
 }  // namespace voxray

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "voxray/engine/step.h"
 #include "voxray/io/error.h"
 #include "voxray/io/volume.h"
 
@@ -78,7 +79,7 @@ RenderParams pickQualityPreset(RenderParams p, const QualityPreset& q) {
 
 RenderParams applyQuality(RenderParams p, const QualityPreset& q, double minSpacingMm) {
   p = pickQualityPreset(std::move(p), q);
-  p.stepMm = q.stepVoxels * minSpacingMm;
+  p.stepMm = stepMmOf(q.stepVoxels, minSpacingMm);
   p.refine = q.refine;
   p.jitter = q.jitter;
   p.width = std::max(1, int(p.width * q.resolutionScale + 0.5));

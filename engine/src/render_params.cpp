@@ -333,8 +333,4 @@ void applyRenderValues(RenderParams& p, const std::map<std::string, std::string>
     if (auto it = values.find(spec.key); it != values.end()) spec.parse(p, it->second);
 }
 
-double effectiveStepMm(const RenderParams& p, double minSpacingMm) {
-  return p.stepMm > 0.0 ? p.stepMm : 0.5 * minSpacingMm;
-}
-
 }  // namespace voxray

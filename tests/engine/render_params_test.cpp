@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/step.h"
 #include "voxray/io/error.h"
 
 namespace voxray {

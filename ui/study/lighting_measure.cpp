@@ -8,6 +8,7 @@
 #include "voxray/engine/path_tracer.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/reference_renderer.h"
+#include "voxray/engine/step.h"
 #include "voxray/io/error.h"
 #include "voxray/io/statistics.h"
 #include "voxray/lab/accuracy.h"
@@ -61,7 +62,7 @@ LightingMeasurement measureGridModel(Raycaster& rc, const Volume& v, const Rende
   const double h = v.minSpacingMm();
   // The sweep's fine reference (voxray-cli accuracy): trilinear, its bisections.
   RenderParams ref =
-      fineParams(p, Interp::Linear, o.referenceStepVoxels * h, SweepOptions{}.fineRefine);
+      fineParams(p, Interp::Linear, stepMmOf(o.referenceStepVoxels, h), SweepOptions{}.fineRefine);
   FloatImage truth;
   if (p.lighting == Lighting::Phong) {
     truth = renderReferenceFloat(v, ref);
@@ -69,7 +70,7 @@ LightingMeasurement measureGridModel(Raycaster& rc, const Volume& v, const Rende
   } else {
     MonteCarloOptions mc;
     mc.samples = o.referenceSamples;
-    mc.stepMm = o.rayStepVoxels * h;
+    mc.stepMm = stepMmOf(o.rayStepVoxels, h);
     MonteCarloImage r = renderMonteCarlo(v, ref, mc);
     truth = std::move(r.mean);
     m.referenceSamples = r.samples;

@@ -7,6 +7,7 @@
 
 #include "quality_choice.h"
 #include "voxray/engine/quality.h"
+#include "voxray/engine/step.h"
 #include "voxray/engine/transfer_function.h"
 #include "voxray/io/error.h"
 
@@ -160,8 +161,7 @@ DragSetting dragPresetSetting() {
 }
 
 DragSetting dragSettingOf(const RenderParams& frame, int fullWidth, double minSpacingMm) {
-  return {double(frame.width) / std::max(fullWidth, 1),
-          effectiveStepMm(frame, minSpacingMm) / minSpacingMm};
+  return {double(frame.width) / std::max(fullWidth, 1), stepVoxelsOf(frame.stepMm, minSpacingMm)};
 }
 
 }  // namespace voxray

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "voxray/engine/step.h"
+
 namespace voxray {
 
 std::optional<glm::dvec3> surfaceHitAt(const std::vector<glm::vec4>& hits, glm::ivec2 size,
@@ -12,9 +14,13 @@ std::optional<glm::dvec3> surfaceHitAt(const std::vector<glm::vec4>& hits, glm::
   return glm::dvec3(hits[i]);
 }
 
+namespace {
+constexpr double kPickStepVoxels = 0.5;  // the longest dvr step of a pick (surface_pick.h)
+}  // namespace
+
 RenderParams pickFrameParams(RenderParams p, double minSpacingMm) {
-  if (p.mode == Mode::Dvr && effectiveStepMm(p, minSpacingMm) > 0.5 * minSpacingMm)
-    p.stepMm = 0.5 * minSpacingMm;
+  const double longest = stepMmOf(kPickStepVoxels, minSpacingMm);
+  if (p.mode == Mode::Dvr && effectiveStepMm(p, minSpacingMm) > longest) p.stepMm = longest;
   return p;
 }
 

@@ -8,6 +8,7 @@
 #include "voxray/engine/kernel_variant.h"
 #include "voxray/engine/monte_carlo_reference.h"
 #include "voxray/engine/raycaster.h"
+#include "voxray/engine/step.h"
 #include "voxray/io/statistics.h"
 #include "voxray/io/volume.h"
 
@@ -34,8 +35,8 @@ RenderParams fineParams(RenderParams p, Interp interp, double stepMm, int refine
 std::string settingLabel(const RenderParams& p, double minSpacingMm) {
   std::ostringstream s;
   // The kernel variant's name says what the kernel switches say (no gradient for mip, ...).
-  s << "step=" << p.stepMm / minSpacingMm << " " << kernelVariantName(p) << " " << p.width << "x"
-    << p.height;
+  s << "step=" << stepVoxelsOf(p.stepMm, minSpacingMm) << " " << kernelVariantName(p) << " "
+    << p.width << "x" << p.height;
   return s.str();
 }
 
@@ -44,7 +45,7 @@ std::vector<SweepCase> standardCases(const SweepScene& scene, bool reduced) {
   std::vector<RenderParams> list;
   auto with = [&](double stepVoxels, auto&& change) {
     RenderParams p = scene.base;
-    p.stepMm = stepVoxels * h;
+    p.stepMm = stepMmOf(stepVoxels, h);
     p.interp = Interp::Linear;
     p.gradient = Gradient::ZuckerHummel;
     p.refine = 4;
@@ -92,7 +93,7 @@ std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
   std::map<std::string, Fine> fine;
   auto fineFor = [&](const RenderParams& p, Interp interp) -> const Fine& {
     // The same operator, trilinear (images) or the case's own reconstruction (hit points).
-    RenderParams f = fineParams(p, interp, o.fineStepVoxels * h, o.fineRefine);
+    RenderParams f = fineParams(p, interp, stepMmOf(o.fineStepVoxels, h), o.fineRefine);
     std::string key = toText(f);
     auto it = fine.find(key);
     if (it != fine.end()) return it->second;
@@ -104,7 +105,7 @@ std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
       // lighting moves no surface). Shadow and occlusion rays at half a voxel.
       MonteCarloOptions mc;
       mc.samples = 4;
-      mc.stepMm = 0.5 * h;
+      mc.stepMm = stepMmOf(0.5, h);
       r.image = renderMonteCarlo(v, f, mc).mean;
     }
     return fine.emplace(key, std::move(r)).first->second;
@@ -150,8 +151,8 @@ std::vector<SweepRow> runSweep(ClContext& ctx, const SweepScene& scene,
     row.image = compareImages(test, fi.image);
     if (c.params.mode == Mode::Iso && c.params.width == scene.base.width) {
       // A crossing more than one step from the fine one is a different crossing.
-      row.hitPoint =
-          hitPointError(hits, fineFor(c.params, c.params.interp).hits, c.params.stepMm / h);
+      row.hitPoint = hitPointError(hits, fineFor(c.params, c.params.interp).hits,
+                                   stepVoxelsOf(c.params.stepMm, h));
       if (scene.truth) {
         row.hasSurface = true;
         row.surface = surfaceError(hits, *scene.truth);

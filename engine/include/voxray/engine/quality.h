@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/step.h"
 
 namespace voxray {
 
@@ -16,8 +17,8 @@ struct Volume;
 struct QualityPreset {
   std::string name;  // interactive, balanced, reference
   std::string description;
-  double stepVoxels = 0.5;       // ray step in units of the smallest voxel spacing
-  double resolutionScale = 1.0;  // image size factor (the drag mode renders smaller)
+  double stepVoxels = kDefaultStepVoxels;  // ray step in units of the smallest voxel spacing
+  double resolutionScale = 1.0;            // image size factor (the drag mode renders smaller)
   Interp interp = Interp::Linear;
   Gradient gradient = Gradient::ZuckerHummel;
   int refine = 4;

@@ -63,7 +63,7 @@ struct RenderParams {
   double isoHi = 32767.0;
   Gradient gradient = Gradient::Central;
   Interp interp = Interp::Linear;
-  double stepMm = 0.0;  // 0 = half the smallest voxel spacing
+  double stepMm = 0.0;  // 0 = half the smallest voxel spacing (step.h)
   int refine = 4;       // bisection steps refining an iso hit
   bool shading = true;
   bool opacityCorrection = true;
@@ -108,8 +108,5 @@ Mode parseMode(const std::string& s);
 Gradient parseGradient(const std::string& s);
 Interp parseInterp(const std::string& s);
 Lighting parseLighting(const std::string& s);
-
-// The step actually used for a volume with this smallest spacing.
-double effectiveStepMm(const RenderParams& p, double minSpacingMm);
 
 }  // namespace voxray

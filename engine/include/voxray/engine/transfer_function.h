@@ -12,6 +12,7 @@ struct Volume;
 struct ControlPoint {
   double hu;
   glm::dvec4 rgba;  // colour 0..1, opacity 0..1 per reference step (one voxel)
+  bool operator==(const ControlPoint&) const = default;
 };
 
 struct TransferFunction {
