@@ -27,8 +27,8 @@ for round in 1 2 3; do
   for which in OLD B; do
     for m in iso dvr mip; do
       echo "round $round $which $m"
-      ${!which} bench $CT --device gpu --sizes 1920x1080 --mode $m --frames 36 2>&1 | grep -E "ms|fps" | tail -2
+      ${!which} bench $CT --device gpu --sizes 1920x1080 --mode $m --frames 36 2>&1 | grep -A1 median_ms | tail -1
     done
-    ${!which} bench $CT --device gpu --sizes 1280x720 --mode dvr --lighting cinematic --frames 8 2>&1 | grep -E "ms|fps" | tail -2
+    ${!which} bench $CT --device gpu --sizes 1280x720 --mode dvr --lighting cinematic --frames 8 2>&1 | grep -A1 median_ms | tail -1
   done
 done
