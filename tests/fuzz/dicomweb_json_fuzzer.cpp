@@ -1,4 +1,4 @@
-// Fuzzes the reading of QIDO-RS answers (io/src/pacs/dicom_json.h): whatever JSON a node
+// Fuzzes the reading of QIDO-RS answers (io/pacs/src/dicom_json.h): whatever JSON a node
 // sends, each object becomes a match without an exception (a value of the wrong JSON type
 // reads as absent), and every count it reports is a whole number >= 0.
 #include <cstddef>

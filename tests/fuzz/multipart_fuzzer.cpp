@@ -1,4 +1,4 @@
-// Fuzzes the WADO-RS multipart/related splitter (io/src/pacs/multipart.h), the one parser
+// Fuzzes the WADO-RS multipart/related splitter (io/pacs/src/multipart.h), the one parser
 // Voxray wrote by hand for network input: the first byte chooses the feed size, the rest is
 // a body with boundary "XYZ". Only voxray::Error may come out; every part handed over lies
 // inside the input, and a body that finishes had its close delimiter.

@@ -1,5 +1,6 @@
 # DICOM import (issue 3): DCMTK parses and decodes, OpenJPEG decodes JPEG 2000 (DCMTK has
-# no free JPEG 2000 codec). Both stay PRIVATE: public headers expose std and GLM only.
+# no free JPEG 2000 codec). Both stay PRIVATE: public headers expose std and GLM only. The
+# Secondary Capture writer is here too: it writes a DICOM file (dcmdata), no network.
 find_package(DCMTK REQUIRED CONFIG)
 pkg_check_modules(OPENJPEG REQUIRED IMPORTED_TARGET libopenjp2)
 target_sources(voxray_io PRIVATE
@@ -12,6 +13,7 @@ target_sources(voxray_io PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/j2k_decode.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pixel_decode.cpp
   ${CMAKE_CURRENT_LIST_DIR}/resample.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/secondary_capture.cpp
   ${CMAKE_CURRENT_LIST_DIR}/series_grouping.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stack_geometry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/text_decode.cpp

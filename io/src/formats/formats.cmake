@@ -33,7 +33,7 @@ target_include_directories(voxray_io_formats PRIVATE include)
 # SYSTEM: the libraries' headers are not ours to keep warning-free.
 target_include_directories(voxray_io_formats SYSTEM PRIVATE ${METAIO_INCLUDE_DIR}
   ${TEEM_INCLUDE_DIR})
-target_link_libraries(voxray_io_formats PRIVATE glm::glm voxray_nifti2 ${METAIO_LIBRARY}
+target_link_libraries(voxray_io_formats PRIVATE voxray_core glm::glm voxray_nifti2 ${METAIO_LIBRARY}
   ${TEEM_LIBRARY})
 target_link_libraries(voxray_io PRIVATE voxray_io_formats voxray_nifti2 ${METAIO_LIBRARY}
   ${TEEM_LIBRARY})

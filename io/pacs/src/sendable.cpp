@@ -9,7 +9,7 @@
 
 #include <dcmtk/dcmdata/dcdeftag.h>
 
-#include "../dicom/bounded_load.h"
+#include "dicom/bounded_load.h"
 #include "voxray/io/error.h"
 
 namespace voxray::pacs {

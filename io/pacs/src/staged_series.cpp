@@ -13,7 +13,7 @@
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 
-#include "../dicom/bounded_load.h"
+#include "dicom/bounded_load.h"
 #include "voxray/io/error.h"
 
 namespace fs = std::filesystem;

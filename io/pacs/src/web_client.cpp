@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "../dicom/codec_registry.h"
+#include "dicom/codec_registry.h"
 #include "dicom_json.h"
 #include "http_session.h"
 #include "multipart.h"
