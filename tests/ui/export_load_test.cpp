@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QEventLoop>
 #include <QFile>
 #include <QMouseEvent>
 #include <QProgressDialog>
@@ -10,6 +11,7 @@
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QTimer>
 
 #include "export_dialog.h"
 #include "gui_message.h"
@@ -55,6 +57,7 @@ class ExportLoadTest : public QObject {
     QVERIFY(fixture_.start());
     models_ = fixture_.models.get();
     window_ = fixture_.window.get();
+    lastError_ = {};  // the last test function's, when the class runs in one process
     window_->setErrorSink([this](const QString& t, const QString& m) { lastError_ = {t, m}; });
   }
   void cleanup() { fixture_.stop(); }
@@ -246,6 +249,33 @@ class ExportLoadTest : public QObject {
     QVERIFY(failed.wait(30000));
     QCOMPARE(lastError_.first, QString("Cannot open"));
     QVERIFY(visibleWhenReported.empty());
+  }
+
+  void loadErrorLeavesNoProgressBoxBehind() {
+    // Issue 41 item 1: a load that fails at once, before the progress box's 300 ms. The
+    // error box's own event loop (modal, as QMessageBox::exec) ran the progress box's show
+    // timer, and the hidden box came up over the message, modal: OK did nothing until
+    // Cancel. The sink waits in such a loop past those 300 ms and looks.
+    bool shownOverTheError = false;
+    window_->setErrorSink([&](const QString& t, const QString& m) {
+      lastError_ = {t, m};
+      QEventLoop box;
+      QTimer::singleShot(700, &box, &QEventLoop::quit);
+      box.exec();
+      for (auto* d : window_->findChildren<QProgressDialog*>())
+        if (d->isVisible()) shownOverTheError = true;
+    });
+    // A text file named .nii, as reported: the reader reports progress, then refuses it.
+    const QString bogus = tempPath("bogus.nii");
+    QFile text(bogus);
+    QVERIFY(text.open(QIODevice::WriteOnly));
+    text.write(QByteArray("not a NIfTI header, just some words\n").repeated(20));
+    text.close();
+    QSignalSpy failed(&window_->loader(), &LoadController::failed);
+    window_->open(bogus.toStdString(), {});
+    QVERIFY(failed.wait(30000));
+    QCOMPARE(lastError_.first, QString("Cannot open"));
+    QVERIFY(!shownOverTheError);
   }
 
   void loadCancelShowsNoErrorBox() {

@@ -34,6 +34,9 @@ struct PhantomWindow {
   std::unique_ptr<MainWindow> window;
 
   bool start() {
+    // Fresh models for each test function when the whole class runs in one process (ctest
+    // runs each function alone; stop() drops the last test's).
+    if (!models) models = std::make_unique<AppModels>();
     window = std::make_unique<MainWindow>(*models, "cpu");
     Quality q;
     q.resolution = {128, 96};

@@ -7,9 +7,7 @@
 
 namespace voxray {
 
-namespace {
-constexpr double kFpsSmoothing = 0.3;  // weight of the newest frame in the fps average
-}
+namespace {}
 
 std::string formatFrameStats(const FrameRateStats& s) {
   if (!s.any) return "no frame yet";
@@ -53,16 +51,17 @@ std::string formatWindowTitle(const std::string& name) {
   return name.empty() ? "Voxray" : name + " — Voxray";
 }
 
-double FrameRateMeter::frameAt(double nowS) {
-  double gap = nowS - lastAt_;
-  if (lastAt_ < 0.0 || gap <= 0.0 || gap > kIdleGapS) {
-    fps_ = 0.0;
-  } else {
-    double instant = 1.0 / gap;
-    fps_ = fps_ <= 0.0 ? instant : kFpsSmoothing * instant + (1.0 - kFpsSmoothing) * fps_;
+double FrameRateMeter::frameAt(double nowS, bool interactive) {
+  if (!interactive) {  // the drag (if any) is over
+    dragFrames_.clear();
+    return 0.0;
   }
-  lastAt_ = nowS;
-  return fps_;
+  if (!dragFrames_.empty() && !(nowS - dragFrames_.back() <= kIdleGapS)) dragFrames_.clear();
+  dragFrames_.push_back(nowS);
+  if (dragFrames_.size() > kWindow) dragFrames_.pop_front();
+  const double span = dragFrames_.back() - dragFrames_.front();
+  if (dragFrames_.size() < kMinFrames || !(span > 0.0)) return 0.0;
+  return double(dragFrames_.size() - 1) / span;
 }
 
 }  // namespace voxray

@@ -2,6 +2,7 @@
 // The frame statistics as the status bar shows them, and the window title (the document
 // name only: a title that changed every frame could not be read, and the device is in the
 // status bar).
+#include <deque>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -33,18 +34,20 @@ std::string formatPatientMm(const glm::dvec3& lpsMm);
 // folder name, never patient data).
 std::string formatWindowTitle(const std::string& name);
 
-// Frames per second over frames that follow each other: a frame after a pause (the view was
-// idle, nothing to render) starts the rate afresh instead of counting the idle time, which
-// showed "0.0 fps · 32 ms" for a 32 ms frame.
+// A drag's frames per second, from the times its recent frames finished. A still frame has
+// no rate, only its time: the instant rate of the sharp frame after a drag, or of a
+// progressive pass, read "381.6 fps · 72 ms". A drag shows a rate once kMinFrames of its
+// frames followed each other (none more than kIdleGapS apart), over at most kWindow.
 class FrameRateMeter {
  public:
-  // Seconds between frames beyond which the view counts as having been idle.
   static constexpr double kIdleGapS = 1.0;
-  // The rate after a frame finished at NOW (seconds, any monotonic clock); 0 = no rate yet.
-  double frameAt(double nowS);
+  static constexpr size_t kMinFrames = 5, kWindow = 10;
+  // The rate to show after a frame finished at NOW (seconds, any monotonic clock);
+  // INTERACTIVE: a drag frame. 0 = no rate.
+  double frameAt(double nowS, bool interactive);
 
  private:
-  double lastAt_ = -1.0, fps_ = 0.0;
+  std::deque<double> dragFrames_;  // finish times of the drag's latest frames
 };
 
 }  // namespace voxray

@@ -50,13 +50,12 @@ void LoadController::finish(std::shared_ptr<const Volume> volume, const QString&
                             bool wasCancelled) {
   task_.wait();  // the job has posted its last event: it returns at once
   busy_ = false;
-  if (dialog_) {
-    // Hidden now, not when deleteLater comes: the error box that may follow runs its own
-    // event loop, in which the deferred delete does not happen, and the progress box
-    // stayed on top of the message.
-    dialog_->hide();
-    dialog_->deleteLater();
-  }
+  // Gone now, not when a deleteLater comes: the error box that may follow runs its own
+  // event loop, in which a deferred delete does not happen, and there the box's show timer
+  // (started by its first progress value; hide() does not stop it) brought it back up over
+  // the message, modal. Nothing of the box's is on the stack here: this runs from the
+  // task's posted event.
+  delete dialog_;
   // A load that finished while the user pressed Cancel is dropped too: they asked for
   // nothing to change.
   if (wasCancelled || task_.cancelled())

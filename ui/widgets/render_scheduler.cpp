@@ -116,7 +116,7 @@ void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
     emit bandReady(frame);
     return;
   }
-  double fps = rate_.frameAt(clock_.nsecsElapsed() * 1e-9);
+  double fps = rate_.frameAt(clock_.nsecsElapsed() * 1e-9, frame->interactive);
   if (frame->interactive) {
     // The setting this frame was rendered with, read back from its size and step.
     const glm::ivec2 r = state_.quality().resolution;

@@ -48,7 +48,7 @@ class Raycaster : public Renderer {
   // the device, naming sizes and limits. The volume must outlive the raycaster (on a
   // CPU device the kernels read its voxels in place).
   Raycaster(ClContext& ctx, const Volume& volume, VolumeStorage storage = VolumeStorage::Auto);
-  ~Raycaster();
+  ~Raycaster() override;
   Raycaster(const Raycaster&) = delete;
   Raycaster& operator=(const Raycaster&) = delete;
 
