@@ -17,15 +17,23 @@ constexpr WindowLevel kCtDefaultWindow{400.0, 40.0};
 // preferences too.
 bool isQualityLine(const std::string& key) { return key.rfind("ui-", 0) == 0; }
 
-// The lines of TEXT (RenderStateModel::toText) that hold preferences.
-std::string preferenceLines(const std::string& text) {
+// The key of a key=value line of RenderStateModel::toText.
+std::string keyOf(const std::string& line) { return line.substr(0, line.find('=')); }
+
+// The lines of TEXT (key=value lines) whose key KEEP accepts, in their order.
+template <class Keep>
+std::string linesWhere(const std::string& text, Keep keep) {
   std::istringstream in(text);
   std::string line, out;
-  while (std::getline(in, line)) {
-    const std::string key = line.substr(0, line.find('='));
-    if (isPreference(key) || isQualityLine(key)) out += line + "\n";
-  }
+  while (std::getline(in, line))
+    if (keep(keyOf(line))) out += line + "\n";
   return out;
+}
+
+// The lines of TEXT (RenderStateModel::toText) that hold preferences.
+std::string preferenceLines(const std::string& text) {
+  return linesWhere(text,
+                    [](const std::string& key) { return isPreference(key) || isQualityLine(key); });
 }
 
 // The preferences in HU: a volume whose values are not HU gets its own (value_look.h).
@@ -33,24 +41,16 @@ bool isHuValued(const std::string& key) {
   return key == "preset" || key == "tf" || key == "preset-shift" || key == "iso" || key == "window";
 }
 
-// The HU-valued lines of TEXT (key=value lines).
-std::string huLines(const std::string& text) {
-  std::istringstream in(text);
-  std::string line, out;
-  while (std::getline(in, line))
-    if (isHuValued(line.substr(0, line.find('=')))) out += line + "\n";
-  return out;
-}
-
-// TEXT's lines, with the HU-valued ones taken from HU's (huLines) instead.
+// TEXT's lines, with the HU-valued ones taken from HU's instead (linesWhere isHuValued);
+// in TEXT's order, which fromText applies them in (a preset before its table).
 std::string withHuLines(const std::string& text, const std::string& hu) {
   std::map<std::string, std::string> huLine;
   std::istringstream h(hu);
   std::string line, out;
-  while (std::getline(h, line)) huLine[line.substr(0, line.find('='))] = line;
+  while (std::getline(h, line)) huLine[keyOf(line)] = line;
   std::istringstream in(text);
   while (std::getline(in, line)) {
-    const std::string key = line.substr(0, line.find('='));
+    const std::string key = keyOf(line);
     if (!isHuValued(key)) {
       out += line + "\n";
     } else if (auto it = huLine.find(key); it != huLine.end()) {
@@ -76,7 +76,7 @@ void applyLookFor(AppModels& m, const Volume& v) {
     if (m.huLook) applyPreferences(m.render, *std::exchange(m.huLook, std::nullopt));
     return;
   }
-  if (!m.huLook) m.huLook = huLines(preferencesText(m.render));
+  if (!m.huLook) m.huLook = linesWhere(preferencesText(m.render), isHuValued);
   const ValueLook look = valueLook(v);
   m.render.update(kAppearance, [&](RenderParams& p) { applyValueLook(p, look); });
 }
@@ -120,7 +120,7 @@ InitialWindow initialWindow(const Volume& v) {
     return {{v.window->width, v.window->level},
             why.empty() ? v.window->origin : why + " (" + v.window->origin + ")"};
   }
-  if (v.modality == "CT") return {kCtDefaultWindow, "CT default (no window given)"};
+  if (valuesAreHu(v)) return {kCtDefaultWindow, "CT default (no window given)"};
   const ValueRange r = storedRange(v);
   const double a = v.toPhysical(r.min), b = v.toPhysical(r.max);
   const std::string what = v.modality.empty() ? "modality unknown" : v.modality;
