@@ -53,7 +53,7 @@ MoviePlan plan(const MovieOptions& o, const Volume& v) {
   // The quality preset first, then every flag given: what the user wrote wins.
   RenderParams p;
   if (o.quality != "custom") p = applyQuality(p, findQualityPreset(o.quality), v);
-  applyRenderValues(p, o.flags.given);
+  o.flags.applyTo(p);
   if (plan.cine && !o.flags.given.count("size")) p.width = p.height = 0;  // the slice's own
   if (!plan.cine && !o.flags.given.count("size")) {
     p.width = 1024;

@@ -53,7 +53,7 @@ Session sessionToRender(const RenderOptions& o) {
     s.qualityPreset = q.name;
     s.render = pickQualityPreset(s.render, q);
   }
-  applyRenderValues(s.render, o.flags.given);
+  o.flags.applyTo(s.render);
   return s;
 }
 

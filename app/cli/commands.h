@@ -19,5 +19,6 @@ Run addMeasureCommand(CLI::App& app);
 Run addSliceCommand(CLI::App& app);
 Run addPacsCommand(CLI::App& app);
 Run addMovieCommand(CLI::App& app);
+Run addTfCommand(CLI::App& app);
 
 }  // namespace voxray::cli

@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
       voxray::cli::addRenderCommand(app),  voxray::cli::addPresetsCommand(app),
       voxray::cli::addBenchCommand(app),   voxray::cli::addAccuracyCommand(app),
       voxray::cli::addMeasureCommand(app), voxray::cli::addSliceCommand(app),
-      voxray::cli::addPacsCommand(app),    voxray::cli::addMovieCommand(app)};
+      voxray::cli::addPacsCommand(app),    voxray::cli::addMovieCommand(app),
+      voxray::cli::addTfCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

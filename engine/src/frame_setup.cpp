@@ -9,8 +9,8 @@
 namespace voxray {
 
 SetupKey setupKeyOf(const RenderParams& p) {
-  return {p.mode,  p.preset, p.presetShiftHu, p.transferFunction, p.surfaceColor,
-          p.isoLo, p.isoHi,  p.windowWidth,   p.windowLevel};
+  return {p.mode,         p.preset, p.presetShiftHu, p.transferFunction, p.opacityUnitMm,
+          p.surfaceColor, p.isoLo,  p.isoHi,         p.windowWidth,      p.windowLevel};
 }
 
 TransferFunction frameTransferFunction(const SetupKey& k) {
@@ -37,6 +37,13 @@ FrameSetup makeValueSetup(const Volume& v, const SetupKey& k) {
   FrameSetup s;
   s.lut = bakeLut(frameTransferFunction(k), v);
   s.referenceStepMm = v.minSpacingMm();
+  // Opacities stated per another length become per reference step: the same absorption
+  // over the same millimetres, 1 - (1 - a)^(reference / unit).
+  if (k.opacityUnitMm > 0.0 && k.opacityUnitMm != s.referenceStepMm) {
+    double e = s.referenceStepMm / k.opacityUnitMm;
+    for (glm::vec4& c : s.lut.rgba)
+      if (c.a < 1.0f) c.a = float(1.0 - std::pow(1.0 - double(c.a), e));
+  }
   double a = v.toStored(k.isoLo), b = v.toStored(k.isoHi);
   s.isoLoStored = std::min(a, b);
   s.isoHiStored = std::max(a, b);

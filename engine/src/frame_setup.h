@@ -22,6 +22,7 @@ struct SetupKey {
   std::string preset;
   double presetShiftHu = 0.0;
   std::vector<ControlPoint> transferFunction;
+  double opacityUnitMm = 0.0;
   glm::dvec3 surfaceColor{0.0};
   double isoLo = 0.0, isoHi = 0.0;
   double windowWidth = 0.0, windowLevel = 0.0;

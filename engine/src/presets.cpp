@@ -59,6 +59,7 @@ void applyPreset(RenderParams& p, const Preset& preset) {
   p.preset = preset.name;
   p.transferFunction.clear();  // the preset's table, not an earlier custom one
   p.presetShiftHu = 0.0;       // a shift tuned for one preset means nothing for another
+  p.opacityUnitMm = 0.0;       // preset opacities are per smallest voxel spacing
   p.mode = parseMode(preset.mode);
   if (preset.isoHi > preset.isoLo) {
     p.isoLo = preset.isoLo;

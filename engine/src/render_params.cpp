@@ -204,6 +204,10 @@ std::vector<ParamSpec> makeSpecs() {
        "per voxel) at each HU, linear between; a repeated HU makes a step",
        none, [](P& p, S s) { p.transferFunction = parseTransferFunction(s); },
        [](const P& p) { return formatTransferFunction(p.transferFunction); }},
+      number("opacity-unit", "MM",
+             "ray length in mm over which the table's opacities hold (0 = the smallest voxel "
+             "spacing, as the presets)",
+             ParamDomain().atLeast(0).in("mm"), FIELD(opacityUnitMm)),
       number("preset-shift", "HU", "move the preset's transfer function along HU",
              ParamDomain().in("HU"), FIELD(presetShiftHu)),
       // Any HU is accepted; a control offers the range of CT values.

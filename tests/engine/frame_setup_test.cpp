@@ -56,6 +56,7 @@ TEST(FrameSetupKey, ChangesWithEveryFieldTheTablesRead) {
        [](RenderParams& p) {
          p.transferFunction = {{0.0, {1, 0, 0, 0.5}}};
        }},
+      {"opacity unit", same, [](RenderParams& p) { p.opacityUnitMm = 2.0; }},
       {"surface colour", plainIso,
        [](RenderParams& p) {
          p.surfaceColor = {0.2, 0.4, 0.9};

@@ -116,9 +116,9 @@ TEST(ParamDomain, EverySingleNumberSpecChecksItsDomain) {
                 "--" + spec.key + ": must " + d.rangeText() + ", got '" + above + "'");
     }
   }
-  // step, refine, adaptive, early-termination, zoom, distance, fov, ambient, diffuse,
-  // specular, shininess
-  EXPECT_EQ(checked, 11);
+  // opacity-unit, step, refine, adaptive, early-termination, zoom, distance, fov, ambient,
+  // diffuse, specular, shininess
+  EXPECT_EQ(checked, 12);
 }
 
 TEST(ParamDomain, UiEndsLieInsideTheDomain) {

@@ -55,6 +55,7 @@ void applyValueLook(RenderParams& p, const ValueLook& look) {
   // Opacity 0.05 per voxel at the bright end: a brain's surface shows, and its inside
   // shines through a little, as a CT's soft-tissue preset does.
   p.transferFunction = {{look.threshold, {1.0, 1.0, 1.0, 0.0}}, {look.high, {1.0, 1.0, 1.0, 0.05}}};
+  p.opacityUnitMm = 0.0;  // 0.05 per voxel
   p.windowWidth = look.high - look.low;
   p.windowLevel = 0.5 * (look.low + look.high);
 }

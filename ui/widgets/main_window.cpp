@@ -30,6 +30,7 @@
 #include "settings_store.h"
 #include "slice_view.h"
 #include "study_state.h"
+#include "tf_editor_dialog.h"
 #include "theme.h"
 #include "volume_view.h"
 #include "voxray/engine/input_flags.h"
@@ -184,6 +185,14 @@ void MainWindow::buildMenus() {
   studyText->setToolTip(
       "Show the patient's name, ID and the study in the views' corners "
       "(never in exports unless ticked there)");
+  // Issue 35: shaping the dvr table on the volume's histogram.
+  view->addAction("&Transfer function editor…", QKeySequence("Ctrl+T"), this,
+                  [this] {
+                    if (!tfEditor_) tfEditor_ = new TfEditorDialog(models_, this);
+                    tfEditor_->show();
+                    tfEditor_->raise();
+                  })
+      ->setObjectName("viewTfEditor");
   view->addAction("Reset slice &planes", QKeySequence("Ctrl+Shift+R"), this,
                   [this] { models_.crosshair.resetRotation(); })
       ->setToolTip("Turn the slice views back to the acquisition planes");

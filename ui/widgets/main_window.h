@@ -23,6 +23,7 @@
 namespace voxray::ui {
 
 class SliceView;
+class TfEditorDialog;
 class VolumeView;
 
 class MainWindow : public QMainWindow {
@@ -93,8 +94,9 @@ class MainWindow : public QMainWindow {
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
   SessionActions* sessions_ = nullptr;
-  SessionInput loading_;               // the input being loaded, for AppModels::source
-  MovieController* movies_ = nullptr;  // File → Export movie, in the background
+  SessionInput loading_;                // the input being loaded, for AppModels::source
+  MovieController* movies_ = nullptr;   // File → Export movie, in the background
+  TfEditorDialog* tfEditor_ = nullptr;  // View → Transfer function editor, made when first asked
 };
 
 }  // namespace voxray::ui

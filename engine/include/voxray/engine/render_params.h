@@ -59,6 +59,9 @@ struct RenderParams {
   // A custom table (sorted by HU; a repeated HU makes a step) used instead of the
   // preset's; the shift moves it too. Empty: the preset's.
   std::vector<ControlPoint> transferFunction;
+  // The ray length (mm) over which the table's opacities hold; 0 = the smallest voxel
+  // spacing, what the presets are made for (issue 35: Slicer's scalar opacity unit distance).
+  double opacityUnitMm = 0.0;
   double isoLo = 400.0;  // HU range of the first-hit surface (the seed's two sliders)
   double isoHi = 32767.0;
   Gradient gradient = Gradient::Central;

@@ -1,0 +1,71 @@
+#pragma once
+// The transfer function the user shapes in the editor (issue 35): a VolumeProperty, its two
+// lists of points edited one at a time, each edit rendered at once (the view's table becomes
+// the property's) and undoable. A drag is one undo step (beginGesture ... endGesture).
+#include <functional>
+#include <vector>
+
+#include "no_qt.h"
+#include "notifier.h"
+#include "render_state_model.h"
+#include "voxray/engine/volume_property.h"
+
+namespace voxray {
+
+class TfEditorModel {
+ public:
+  // Follows RENDER: a preset or table chosen elsewhere (the panel, a session) while dvr
+  // shows becomes the property being edited (takeFromView).
+  explicit TfEditorModel(RenderStateModel& render);
+  ~TfEditorModel();
+  TfEditorModel(const TfEditorModel&) = delete;
+  TfEditorModel& operator=(const TfEditorModel&) = delete;
+
+  const VolumeProperty& property() const { return vp_; }
+
+  // Starts from what the 3D view renders now (its preset or table, as volumePropertyOf
+  // reads it; in iso or mip, what dvr would show), with an empty history. Does not change
+  // the view.
+  void takeFromView();
+  // A whole property (a file read by readVolumePropertyFile, already validated): one step.
+  void setProperty(const VolumeProperty& vp);
+
+  // Point edits. A point stays between its neighbours (the lists stay sorted) and its
+  // opacity and colour within 0 ... 1; a list keeps at least one point. Indices are the
+  // list's; an add returns the new point's index.
+  size_t addOpacityPoint(double hu, double opacity);
+  void moveOpacityPoint(size_t i, double hu, double opacity);
+  void removeOpacityPoint(size_t i);
+  size_t addColorPoint(double hu);  // with the colour the curve has there
+  void moveColorPoint(size_t i, double hu);
+  void setPointColor(size_t i, glm::dvec3 rgb);
+  void removeColorPoint(size_t i);
+  void setCurve(TfCurve curve);
+  void setUnitDistance(double mm);  // 0 = one voxel
+
+  // Every edit between the two is one undo step (a drag). Unbalanced ends do nothing.
+  void beginGesture();
+  void endGesture();
+  bool canUndo() const { return !undo_.empty(); }
+  bool canRedo() const { return !redo_.empty(); }
+  void undo();
+  void redo();
+
+  Notifier<> changed;  // the property changed (an edit, an undo, takeFromView)
+
+ private:
+  void edit(const std::function<void(VolumeProperty&)>& change);
+  void show();  // the property onto the render state
+
+  void viewChanged(unsigned what);
+
+  RenderStateModel& render_;
+  int listener_ = 0;
+  bool showing_ = false;  // our own edit reaching the render state
+  VolumeProperty vp_;
+  std::vector<VolumeProperty> undo_, redo_;
+  int gesture_ = 0;
+  bool gestureRecorded_ = false;
+};
+
+}  // namespace voxray

@@ -1,0 +1,308 @@
+#include "tf_editor_dialog.h"
+
+#include <chrono>
+
+#include <QColorDialog>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QMessageBox>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include "coupling.h"
+#include "gui_post.h"
+#include "voxray/io/error.h"
+
+namespace voxray::ui {
+
+namespace {
+
+QDoubleSpinBox* huSpin(const char* name) {
+  auto* s = new QDoubleSpinBox;
+  s->setObjectName(name);
+  s->setRange(-32768.0, 32767.0);
+  s->setDecimals(1);
+  s->setSingleStep(10.0);
+  s->setKeyboardTracking(false);
+  return s;
+}
+
+}  // namespace
+
+TfEditorDialog::TfEditorDialog(AppModels& models, QWidget* parent)
+    : QDialog(parent),
+      models_(models),
+      model_(std::make_unique<TfEditorModel>(models.render)),
+      histogramTask_(postTo(this)) {
+  setObjectName("tfEditor");
+  setWindowTitle("Transfer function");
+  setModal(false);
+
+  curve_ = new TfCurveView(*model_, this);
+  curveType_ = new QComboBox;
+  curveType_->setObjectName("tfCurveType");
+  curveType_->addItems({"Straight lines", "Smooth (monotone cubic)"});
+  curveType_->setToolTip("Between points: straight lines, or a smooth curve that never overshoots");
+  unit_ = new QDoubleSpinBox;
+  unit_->setObjectName("tfUnit");
+  unit_->setRange(0.0, 100.0);
+  unit_->setDecimals(2);
+  unit_->setSuffix(" mm");
+  unit_->setSpecialValueText("one voxel");
+  unit_->setKeyboardTracking(false);
+  unit_->setToolTip(
+      "The ray length an opacity is stated for (3D Slicer's scalar opacity unit distance); "
+      "'one voxel' = the smallest voxel spacing, as Voxray's presets");
+  auto* logScale = new QCheckBox("Log histogram");
+  logScale->setObjectName("tfLogHistogram");
+  logScale->setChecked(true);
+  auto* top = new QComboBox;
+  top->setObjectName("tfOpacityTop");
+  for (double t : {1.0, 0.5, 0.2, 0.1, 0.05}) top->addItem(QString::number(t), t);
+  top->setToolTip("The opacity at the top of the curve: smaller to shape small opacities");
+
+  huLo_ = huSpin("tfHuLo");
+  huHi_ = huSpin("tfHuHi");
+  auto* fitVisibleButton = new QPushButton("Fit to visible");
+  fitVisibleButton->setObjectName("tfFitVisible");
+  fitVisibleButton->setToolTip("Show the HU range where the opacity is above 0");
+  auto* fitVolumeButton = new QPushButton("Whole volume");
+  fitVolumeButton->setObjectName("tfFitVolume");
+
+  pointHu_ = huSpin("tfPointHu");
+  pointOpacity_ = new QDoubleSpinBox;
+  pointOpacity_->setObjectName("tfPointOpacity");
+  pointOpacity_->setRange(0.0, 1.0);
+  pointOpacity_->setDecimals(4);
+  pointOpacity_->setSingleStep(0.01);
+  pointOpacity_->setKeyboardTracking(false);
+  pointColor_ = new QPushButton("Colour…");
+  pointColor_->setObjectName("tfPointColor");
+
+  auto* load = new QPushButton("Load…");
+  load->setObjectName("tfLoad");
+  load->setToolTip("Voxray transfer function (.json) or 3D Slicer volume property (.vp)");
+  auto* save = new QPushButton("Save…");
+  save->setObjectName("tfSave");
+  undo_ = new QPushButton("Undo");
+  undo_->setObjectName("tfUndo");
+  redo_ = new QPushButton("Redo");
+  redo_->setObjectName("tfRedo");
+  status_ = new QLabel;
+  status_->setObjectName("tfStatus");
+  status_->setWordWrap(true);
+
+  auto* options = new QHBoxLayout;
+  options->addWidget(new QLabel("Curve"));
+  options->addWidget(curveType_);
+  options->addWidget(new QLabel("Opacity per"));
+  options->addWidget(unit_);
+  options->addWidget(logScale);
+  options->addWidget(new QLabel("Top"));
+  options->addWidget(top);
+  options->addStretch();
+  auto* axis = new QHBoxLayout;
+  axis->addWidget(new QLabel("HU from"));
+  axis->addWidget(huLo_);
+  axis->addWidget(new QLabel("to"));
+  axis->addWidget(huHi_);
+  axis->addWidget(fitVisibleButton);
+  axis->addWidget(fitVolumeButton);
+  axis->addStretch();
+  auto* point = new QHBoxLayout;
+  point->addWidget(new QLabel("Point: HU"));
+  point->addWidget(pointHu_);
+  point->addWidget(new QLabel("opacity"));
+  point->addWidget(pointOpacity_);
+  point->addWidget(pointColor_);
+  point->addStretch();
+  auto* buttons = new QHBoxLayout;
+  for (QPushButton* b : {load, save, undo_, redo_}) buttons->addWidget(b);
+  buttons->addStretch();
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(options);
+  layout->addWidget(curve_, 1);
+  layout->addLayout(axis);
+  layout->addLayout(point);
+  layout->addLayout(buttons);
+  layout->addWidget(status_);
+  resize(640, 420);
+
+  auto refresh = [this] {
+    QSignalBlocker b1(curveType_), b2(unit_);
+    curveType_->setCurrentIndex(model_->property().curve == TfCurve::Smooth ? 1 : 0);
+    unit_->setValue(model_->property().unitDistanceMm);
+    undo_->setEnabled(model_->canUndo());
+    redo_->setEnabled(model_->canRedo());
+    showSelection();
+  };
+  modelLinks_ = new QObject(this);
+  onModelChange<>(modelLinks_, model_->changed, refresh);
+  curve_->selectionChanged = [this] { showSelection(); };
+  connect(curveType_, &QComboBox::currentIndexChanged, this,
+          [this](int i) { model_->setCurve(i == 1 ? TfCurve::Smooth : TfCurve::Linear); });
+  connect(unit_, &QDoubleSpinBox::valueChanged, this,
+          [this](double mm) { model_->setUnitDistance(mm); });
+  connect(logScale, &QCheckBox::toggled, curve_, &TfCurveView::setLogHistogram);
+  connect(top, &QComboBox::currentIndexChanged, this,
+          [this, top](int) { curve_->setOpacityTop(top->currentData().toDouble()); });
+  auto axisChanged = [this] { curve_->setHuRange(huLo_->value(), huHi_->value()); };
+  connect(huLo_, &QDoubleSpinBox::valueChanged, this, axisChanged);
+  connect(huHi_, &QDoubleSpinBox::valueChanged, this, axisChanged);
+  connect(fitVisibleButton, &QPushButton::clicked, this, [this] { fitVisible(); });
+  connect(fitVolumeButton, &QPushButton::clicked, this, [this] { fitVolume(); });
+  connect(pointHu_, &QDoubleSpinBox::valueChanged, this, [this](double hu) {
+    auto s = curve_->selection();
+    if (!s) return;
+    if (s->list == TfCurveView::List::Opacity)
+      model_->moveOpacityPoint(s->index, hu, model_->property().opacity[s->index].opacity);
+    else
+      model_->moveColorPoint(s->index, hu);
+  });
+  connect(pointOpacity_, &QDoubleSpinBox::valueChanged, this, [this](double a) {
+    auto s = curve_->selection();
+    if (s && s->list == TfCurveView::List::Opacity)
+      model_->moveOpacityPoint(s->index, model_->property().opacity[s->index].x, a);
+  });
+  connect(pointColor_, &QPushButton::clicked, this, [this] {
+    auto s = curve_->selection();
+    if (!s || s->list != TfCurveView::List::Color) return;
+    glm::dvec3 c = model_->property().color[s->index].rgb;
+    QColor picked = QColorDialog::getColor(QColor::fromRgbF(float(c.r), float(c.g), float(c.b)),
+                                           this, "Colour of the point");
+    if (picked.isValid())
+      model_->setPointColor(s->index, {picked.redF(), picked.greenF(), picked.blueF()});
+  });
+  connect(undo_, &QPushButton::clicked, this, [this] { model_->undo(); });
+  connect(redo_, &QPushButton::clicked, this, [this] { model_->redo(); });
+  connect(load, &QPushButton::clicked, this, [this] {
+    QString file = QFileDialog::getOpenFileName(this, "Load transfer function", QString(),
+                                                "Transfer functions (*.json *.vp)");
+    if (file.isEmpty()) return;
+    QString error = loadFile(file);
+    if (!error.isEmpty()) QMessageBox::warning(this, "Transfer function", error);
+  });
+  connect(save, &QPushButton::clicked, this, [this] {
+    // The file dialog asks before it replaces a file.
+    QString file = QFileDialog::getSaveFileName(
+        this, "Save transfer function", QString(),
+        "Voxray transfer function (*.json);;3D Slicer volume property (*.vp)");
+    if (file.isEmpty()) return;
+    QString error = saveFile(file);
+    if (!error.isEmpty()) QMessageBox::warning(this, "Transfer function", error);
+  });
+  onModelChange<>(this, models_.document.changed, [this] { countHistogram(); });
+
+  refresh();
+  fitVolume();
+  countHistogram();
+}
+
+TfEditorDialog::~TfEditorDialog() {
+  histogramTask_.cancel();
+  // What listens to the model goes before the model (a member, gone before the children).
+  delete curve_;
+  delete modelLinks_;
+}
+
+QString TfEditorDialog::loadFile(const QString& file) {
+  try {
+    model_->setProperty(readVolumePropertyFile(file.toStdString()));
+    if (hasGradientOpacity(model_->property()))
+      status_->setText(
+          "This file has a gradient-magnitude opacity, which Voxray does not render yet; its "
+          "colour and scalar opacity are shown.");
+    return {};
+  } catch (const Error& e) {
+    return QString::fromStdString(e.what());
+  }
+}
+
+QString TfEditorDialog::saveFile(const QString& file) {
+  try {
+    writeVolumePropertyFile(model_->property(), file.toStdString());
+    return {};
+  } catch (const Error& e) {
+    return QString::fromStdString(e.what());
+  }
+}
+
+void TfEditorDialog::countHistogram() {
+  histogramReady_ = false;
+  std::shared_ptr<const Volume> v = models_.document.volume();
+  if (!v) {
+    curve_->setHistogram({}, 1.0, 0.0);
+    status_->setText("No volume open.");
+    return;
+  }
+  status_->setText("Counting the histogram…");
+  histogramTask_.cancel();
+  histogramTask_.wait();
+  histogramTask_.start([this, v] {
+    auto start = std::chrono::steady_clock::now();
+    StoredHistogram h = storedHistogram(*v, histogramTask_.cancelFlag());
+    double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (h.empty()) return;  // cancelled: a newer count follows
+    histogramTask_.post([this, h = std::move(h), v, ms]() mutable {
+      if (models_.document.volume() != v) return;  // another volume meanwhile
+      uint64_t total = h.total;
+      curve_->setHistogram(std::move(h), v->slope, v->intercept);
+      status_->setText(
+          QString("Histogram of %1 voxels (%2 ms).").arg(qulonglong(total)).arg(ms, 0, 'f', 0));
+      histogramReady_ = true;
+    });
+  });
+}
+
+void TfEditorDialog::showSelection() {
+  auto s = curve_->selection();
+  QSignalBlocker b1(pointHu_), b2(pointOpacity_);
+  pointHu_->setEnabled(bool(s));
+  pointOpacity_->setEnabled(s && s->list == TfCurveView::List::Opacity);
+  pointColor_->setEnabled(s && s->list == TfCurveView::List::Color);
+  if (!s) return;
+  const VolumeProperty& vp = model_->property();
+  if (s->list == TfCurveView::List::Opacity) {
+    pointHu_->setValue(vp.opacity[s->index].x);
+    pointOpacity_->setValue(vp.opacity[s->index].opacity);
+  } else {
+    pointHu_->setValue(vp.color[s->index].hu);
+  }
+}
+
+void TfEditorDialog::fitVisible() {
+  const VolumeProperty& vp = model_->property();
+  double lo = 0.0, hi = 0.0;
+  bool any = false;
+  for (size_t i = 0; i < vp.opacity.size(); ++i) {
+    // A point counts when the curve is above 0 next to it.
+    bool visible = vp.opacity[i].opacity > 0.0 || (i > 0 && vp.opacity[i - 1].opacity > 0.0) ||
+                   (i + 1 < vp.opacity.size() && vp.opacity[i + 1].opacity > 0.0);
+    if (!visible) continue;
+    lo = any ? std::min(lo, vp.opacity[i].x) : vp.opacity[i].x;
+    hi = any ? std::max(hi, vp.opacity[i].x) : vp.opacity[i].x;
+    any = true;
+  }
+  if (!any || !(hi > lo)) return;
+  double pad = 0.1 * (hi - lo);
+  huLo_->setValue(lo - pad);
+  huHi_->setValue(hi + pad);
+}
+
+void TfEditorDialog::fitVolume() {
+  double lo = -1024.0, hi = 3071.0;
+  if (auto v = models_.document.volume()) {
+    ValueRange r = storedRange(*v);
+    lo = std::min(v->toPhysical(r.min), v->toPhysical(r.max));
+    hi = std::max(v->toPhysical(r.min), v->toPhysical(r.max));
+    if (!(hi > lo)) hi = lo + 1.0;
+  }
+  QSignalBlocker b1(huLo_), b2(huHi_);
+  huLo_->setValue(lo);
+  huHi_->setValue(hi);
+  curve_->setHuRange(lo, hi);
+}
+
+}  // namespace voxray::ui
