@@ -31,7 +31,8 @@ void DeviceFrame::upload(size_t maxSlabBytes) {
 void DeviceFrame::updateSetup(const RenderParams& p) {
   SetupKey key = setupKeyOf(p);
   if (key != setupKey) {
-    setup = makeValueSetup(volume, key);
+    if (!valueRange) valueRange = storedRange(volume);
+    setup = makeValueSetup(volume, key, *valueRange);
     setupKey = std::move(key);
   }
   placeFrame(setup, volume, p);

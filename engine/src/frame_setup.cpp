@@ -34,8 +34,12 @@ TransferFunction frameTransferFunction(const RenderParams& p) {
 }
 
 FrameSetup makeValueSetup(const Volume& v, const SetupKey& k) {
+  return makeValueSetup(v, k, storedRange(v));
+}
+
+FrameSetup makeValueSetup(const Volume& v, const SetupKey& k, const ValueRange& r) {
   FrameSetup s;
-  s.lut = bakeLut(frameTransferFunction(k), v);
+  s.lut = bakeLut(frameTransferFunction(k), v, r);
   s.referenceStepMm = v.minSpacingMm();
   // Opacities stated per another length become per reference step: the same absorption
   // over the same millimetres, 1 - (1 - a)^(reference / unit).
@@ -47,7 +51,6 @@ FrameSetup makeValueSetup(const Volume& v, const SetupKey& k) {
   double a = v.toStored(k.isoLo), b = v.toStored(k.isoHi);
   s.isoLoStored = std::min(a, b);
   s.isoHiStored = std::max(a, b);
-  ValueRange r = storedRange(v);
   double lo, width;
   if (k.windowWidth > 0.0) {
     width = k.windowWidth / std::abs(v.slope);

@@ -45,6 +45,8 @@ struct FrameSetup {
 TransferFunction frameTransferFunction(const SetupKey& k);
 TransferFunction frameTransferFunction(const RenderParams& p);
 // The setup's costly part: table, thresholds, window and reference step; no view or step.
+// RANGE: V's storedRange, when the caller keeps it (a pass over the volume otherwise).
+FrameSetup makeValueSetup(const Volume& v, const SetupKey& k, const ValueRange& range);
 FrameSetup makeValueSetup(const Volume& v, const SetupKey& k);
 // The per-frame part into S (made by makeValueSetup for P's key): P's view and step.
 void placeFrame(FrameSetup& s, const Volume& v, const RenderParams& p);

@@ -34,7 +34,10 @@ glm::dvec4 Lut::lookup(double stored) const {
 }
 
 Lut bakeLut(const TransferFunction& tf, const Volume& v, int maxEntries) {
-  ValueRange r = storedRange(v);
+  return bakeLut(tf, v, storedRange(v), maxEntries);
+}
+
+Lut bakeLut(const TransferFunction& tf, const Volume& v, const ValueRange& r, int maxEntries) {
   Lut lut;
   lut.storedMin = r.min;
   double span = double(r.max) - double(r.min);

@@ -12,6 +12,7 @@
 #include "qt_image.h"
 #include "study_text.h"
 #include "surface_pick.h"
+#include "tf_drag.h"
 #include "volume_overlay.h"
 
 namespace voxray::ui {
@@ -143,7 +144,11 @@ void VolumeView::mousePressEvent(QMouseEvent* e) {
     scheduler_.requestPick();
     return;
   }
-  if (e->button() == Qt::LeftButton && proj && !(e->modifiers() & Qt::ShiftModifier)) {
+  if (e->button() == Qt::LeftButton && !doc_.empty() &&
+      (tfDragMode_ || (e->modifiers() & Qt::AltModifier))) {
+    drag_ = Drag::TransferFunction;
+    dragStartParams_ = state_.params();
+  } else if (e->button() == Qt::LeftButton && proj && !(e->modifiers() & Qt::ShiftModifier)) {
     const Volume& v = *doc_.volume();
     glm::dvec2 at = toImage(e->position());
     auto light = proj->project(lightHandleWorld(v, state_.params()));
@@ -197,6 +202,25 @@ void VolumeView::mouseMoveEvent(QMouseEvent* e) {
     case Drag::Light: {
       LightParams l = lightFromScreen(v, state_.params(), *projection(), toImage(e->position()));
       state_.update(kLight, [&](RenderParams& p) { p.light = l; });
+      break;
+    }
+    case Drag::TransferFunction: {
+      // A drag across the view's height moves the table over the volume's value range.
+      QPointF total = e->position() - dragStart_;
+      ValueRange r = storedRange(v);
+      double span = std::max(100.0, std::abs(v.toPhysical(r.max) - v.toPhysical(r.min)));
+      glm::dvec2 moved(total.x() / std::max(1, width()), -total.y() / std::max(1, height()));
+      RenderParams shaped = dragTransferFunction(dragStartParams_, moved, span,
+                                                 e->modifiers().testFlag(Qt::ControlModifier));
+      state_.update(kAppearance, [&](RenderParams& p) {
+        p.preset = shaped.preset;
+        p.presetShiftHu = shaped.presetShiftHu;
+        p.transferFunction = shaped.transferFunction;
+        p.isoLo = shaped.isoLo;
+        p.isoHi = shaped.isoHi;
+        p.windowWidth = shaped.windowWidth;
+        p.windowLevel = shaped.windowLevel;
+      });
       break;
     }
     case Drag::None:

@@ -4,7 +4,9 @@
 // right-drag zooms, middle-drag or Shift+left pans, arrow keys rotate; dragging a clip-box
 // face handle moves that face; dragging the sun-shaped handle moves the light. Ctrl+click
 // picks a point on the iso surface, or in dvr where the ray's opacity reaches 0.5 (two picks
-// make a distance, MeasurementModel::addPick).
+// make a distance, MeasurementModel::addPick). Alt+left drag (or any left drag in the
+// transfer-function mode) shapes what shows: up/down moves it along HU, left/right stretches
+// it, with Ctrl up/down scales the opacity (tf_drag.h; iso: the threshold, mip: the window).
 #include <memory>
 #include <optional>
 
@@ -40,6 +42,8 @@ class VolumeView : public QWidget {
   std::optional<ViewProjection> projection() const;
   // The measurements that 3D picks add to and that the view draws (none: no picking).
   void setMeasurements(MeasurementModel* m);
+  // Left drags shape the transfer function instead of turning the volume (View menu).
+  void setTransferFunctionDrag(bool on) { tfDragMode_ = on; }
 
  signals:
   void doubleClicked();
@@ -57,7 +61,7 @@ class VolumeView : public QWidget {
   void keyPressEvent(QKeyEvent*) override;
 
  private:
-  enum class Drag { None, Rotate, Pan, Zoom, ClipFace, Light };
+  enum class Drag { None, Rotate, Pan, Zoom, ClipFace, Light, TransferFunction };
   glm::dvec2 toImage(QPointF p) const;
 
   RenderStateModel& state_;
@@ -72,6 +76,8 @@ class VolumeView : public QWidget {
   QPointF dragStart_, lastPos_;
   int dragFace_ = -1;
   ClipBox dragStartBox_;
+  RenderParams dragStartParams_;  // a transfer-function drag starts from these
+  bool tfDragMode_ = false;
   int stateConnection_ = 0, crosshairConnection_ = 0, measureConnection_ = 0;
   MeasurementModel* measurements_ = nullptr;
   std::optional<glm::dvec2> pickAt_;  // the Ctrl+click waiting for its hit frame, 0..1 of the image

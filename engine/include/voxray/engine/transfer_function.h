@@ -8,6 +8,7 @@
 namespace voxray {
 
 struct Volume;
+struct ValueRange;
 
 struct ControlPoint {
   double hu;
@@ -31,6 +32,9 @@ struct Lut {
   glm::dvec4 lookup(double stored) const;
 };
 Lut bakeLut(const TransferFunction& tf, const Volume& v, int maxEntries = 4096);
+// The same with V's storedRange given (it costs a pass over the volume).
+Lut bakeLut(const TransferFunction& tf, const Volume& v, const ValueRange& range,
+            int maxEntries = 4096);
 
 struct Preset {
   std::string name;
