@@ -5,6 +5,7 @@
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QGroupBox>
 #include <QMenuBar>
 #include <QPainter>
@@ -22,9 +23,19 @@ using namespace voxray::ui;
 
 namespace {
 
-QAction* menuAction(QMenuBar& bar, const QString& text) {
-  for (QAction* a : bar.findChildren<QAction*>())
+// The action a user finds in the menus (walked as shown: a dock's toggle action belongs to
+// the dock, not to the menu bar).
+QAction* findInMenu(const QList<QAction*>& actions, const QString& text) {
+  for (QAction* a : actions) {
     if (a->text().remove('&') == text) return a;
+    if (a->menu())
+      if (QAction* found = findInMenu(a->menu()->actions(), text)) return found;
+  }
+  return nullptr;
+}
+
+QAction* menuAction(QMenuBar& bar, const QString& text) {
+  if (QAction* a = findInMenu(bar.actions(), text)) return a;
   qFatal("no menu action '%s'", qPrintable(text));
 }
 
@@ -108,6 +119,22 @@ class DesktopTest : public QObject {
     // The sample CT is BSD-2-Clause: its copyright notice must reach the user.
     QVERIFY(about.contains("Chris Rorden"));
     QVERIFY(about.contains("BSD-2-Clause"));
+  }
+
+  // Issue 41 item 1: a closed Measurements dock had no way back.
+  void measurementsDockReopensFromTheViewMenu() {
+    auto* dock = fixture_.window->findChild<QDockWidget*>("measurementDock");
+    QVERIFY(dock);
+    QVERIFY(dock->isVisible());
+    QAction* show = menuAction(*fixture_.window->menuBar(), "Measurements");
+    QVERIFY(show->isCheckable());
+    QVERIFY(show->isChecked());
+    QVERIFY(dock->close());  // its title bar's close button
+    QVERIFY(!dock->isVisible());
+    QVERIFY(!show->isChecked());
+    show->trigger();
+    QVERIFY(dock->isVisible());
+    QVERIFY(show->isChecked());
   }
 
   void everyPanelControlHasATooltip() {

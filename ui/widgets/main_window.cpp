@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
@@ -144,8 +145,8 @@ MainWindow::~MainWindow() {
 void MainWindow::wireMeasurements() {
   for (SliceView* s : slices_) s->setMeasurements(&models_.measurements);
   volumeView_->setMeasurements(&models_.measurements);
-  addDockWidget(Qt::RightDockWidgetArea,
-                makeMeasurementDock(models_.measurements, models_.document));
+  measureDock_ = makeMeasurementDock(models_.measurements, models_.document);
+  addDockWidget(Qt::RightDockWidgetArea, measureDock_);
   connect(volumeView_, &VolumeView::pickMissed, this,
           [this](const QString& m) { statusBar()->showMessage(m, 5000); });
   // Measurements are voxel positions of one volume: another volume starts without them.
@@ -177,6 +178,12 @@ void MainWindow::buildMenus() {
     QWidget* focused = QApplication::focusWidget();
     grid_->toggleMaximised(focused ? focused : volumeView_);
   });
+  // A closed dock comes back from here (its own action: checked while it is shown).
+  QAction* measurements = measureDock_->toggleViewAction();
+  measurements->setText("&Measurements");
+  measurements->setObjectName("viewMeasurements");
+  measurements->setToolTip("Show or hide the Measurements panel");
+  view->addAction(measurements);
   QAction* studyText = view->addAction("&Patient and study text", this,
                                        [this](bool on) { models_.render.setStudyText(on); });
   studyText->setCheckable(true);
