@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QSlider>
+#include <QStyleHints>
 
 #include "clip_box_math.h"
 #include "light_gizmo.h"
@@ -164,6 +165,27 @@ class WidgetTest : public QObject {
         v, coronal.axes(), int(s.y), models_->windowLevel.value(), models_->render.sliceInterp()));
     QCOMPARE(coronal.sliceImage(), expected);
     QVERIFY(coronal.sliceImage() != coronalBefore);
+  }
+
+  // Issue 41 item 2: the double-click that maximised a slice view also moved the crosshair
+  // to where it was clicked. Sent through the window as a platform delivers it.
+  void doubleClickMaximisesWithoutMovingTheCrosshair() {
+    SliceView& axial = window_->sliceView(0);
+    const glm::dvec3 before = models_->crosshair.centre();
+    QPointF at = axial.toWidget(40.5, 20.5);  // far from the centre (32, 32)
+    QCOMPARE(window_->grid().maximisedIndex(), -1);
+    QWindow* handle = window_->windowHandle();
+    QTest::mouseDClick(handle, Qt::LeftButton, {}, axial.mapTo(window_, at.toPoint()));
+    QCOMPARE(window_->grid().maximisedIndex(), 1);  // the axial view (grid order: 3D first)
+    QCOMPARE(models_->crosshair.centre().x, before.x);
+    QCOMPARE(models_->crosshair.centre().y, before.y);
+    QCOMPARE(models_->crosshair.centre().z, before.z);
+    // A single click still moves it (a later one, not taken for a double-click).
+    at = axial.toWidget(20.5, 40.5);
+    QTest::mouseClick(handle, Qt::LeftButton, {}, axial.mapTo(window_, at.toPoint()),
+                      QApplication::styleHints()->mouseDoubleClickInterval() + 50);
+    QCOMPARE(models_->crosshair.voxel().x, 20);
+    QCOMPARE(models_->crosshair.voxel().y, 40);
   }
 
   void sliceEdgeDragMovesClipBox() {
