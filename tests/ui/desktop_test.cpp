@@ -15,6 +15,7 @@
 
 #include "help_dialogs.h"
 #include "orientation_marker.h"
+#include "slice_overlay.h"
 #include "volume_overlay.h"
 #include "window_fixture.h"
 
@@ -135,6 +136,33 @@ class DesktopTest : public QObject {
     show->trigger();
     QVERIFY(dock->isVisible());
     QVERIFY(show->isChecked());
+  }
+
+  // Issue 41 item 3: the clip box's edges (255, 200, 0) were nearly the sagittal crosshair's
+  // yellow (230, 200, 40). Every pair of overlay colours differs by 150 or more (RGB distance),
+  // and a slice view draws its clip edges in that colour.
+  void clipBoxColourIsClearOfThePlaneColours() {
+    auto distance = [](QColor a, QColor b) {
+      return std::hypot(a.red() - b.red(), a.green() - b.green(), a.blue() - b.blue());
+    };
+    for (int axis = 0; axis < 3; ++axis)
+      QVERIFY2(
+          distance(clipBoxColor(), planeColor(axis)) >= 150.0,
+          qPrintable(
+              QString("axis %1: %2").arg(axis).arg(distance(clipBoxColor(), planeColor(axis)))));
+    QImage img(200, 200, QImage::Format_RGB32);
+    img.fill(Qt::black);
+    {
+      QPainter p(&img);
+      SliceOverlay o;
+      o.crosshair = {150, 150};
+      o.showClip = true;
+      o.clipEdges = {SliceClipEdge{0, true, 40}, SliceClipEdge{1, true, 120},
+                     SliceClipEdge{2, false, 40}, SliceClipEdge{3, false, 120}};
+      o.sliceCount = 1;
+      drawSliceOverlay(p, o, img.rect(), [](double u, double v) { return QPointF(u, v); });
+    }
+    QCOMPARE(img.pixelColor(40, 80), clipBoxColor());  // the left edge, halfway down
   }
 
   void everyPanelControlHasATooltip() {
