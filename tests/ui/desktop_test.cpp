@@ -122,6 +122,31 @@ class DesktopTest : public QObject {
     QVERIFY(about.contains("BSD-2-Clause"));
   }
 
+  // Issue 41 item 6: About left out FFmpeg and x264 (GPL), libcurl, NIfTI, Teem and MetaIO,
+  // and gave a path in the source tree for the sample data's licence.
+  void aboutListsEveryLibraryAndTheDataLicence() {
+    const QString about = aboutHtml("cpu");
+    for (const char* expected :
+         {"<td>FFmpeg (libavcodec, libavformat, libavutil, libswscale)</td><td>MP4 export</td>"
+          "<td>LGPL-2.1-or-later; as Debian builds it, with GPL parts: GPL-2.0-or-later</td>",
+          "<td>x264</td><td>H.264 encoding of MP4 movies</td><td>GPL-2.0-or-later</td>",
+          "<td>libcurl</td><td>DICOMweb PACS client</td><td>curl licence (MIT-style)</td>",
+          "<td>NIfTI C library (nifti2, znz)</td><td>NIfTI import</td><td>public domain</td>",
+          "<td>Teem</td><td>NRRD import</td><td>LGPL-2.1-or-later",
+          "<td>MetaIO (from ITK)</td><td>MetaImage import</td><td>Apache-2.0</td>",
+          "<td>DCMTK</td>", "<td>OpenJPEG</td>", "<td>OpenImageIO</td>", "<td>Qt</td>",
+          "<td>nlohmann/json</td>", "<td>zlib</td>", "<td>GLM</td>", "<td>PoCL</td>",
+          "© 2019 Chris Rorden, BSD-2-Clause licence.",
+          "provided that its copyright notice, the licence's two conditions and its disclaimer "
+          "go with it"})
+      QVERIFY2(about.contains(QString(expected).toHtmlEscaped()) || about.contains(expected),
+               expected);
+    QVERIFY2(!about.contains("resources/"), qPrintable(about));  // no path in the sources
+    const QString licence = sampleDataLicence();
+    QVERIFY(licence.startsWith("BSD 2-Clause License\n\nCopyright (c) 2019, Chris Rorden"));
+    QVERIFY(licence.contains("THIS SOFTWARE IS PROVIDED BY THE COPYRIGHT HOLDERS"));
+  }
+
   // Issue 41 item 1: a closed Measurements dock had no way back.
   void measurementsDockReopensFromTheViewMenu() {
     auto* dock = fixture_.window->findChild<QDockWidget*>("measurementDock");
