@@ -66,7 +66,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
 
   auto* splitter = new QSplitter;
   splitter->addWidget(grid_);
-  splitter->addWidget(makeControlPanel(models, *volumeView_));
+  splitter->addWidget(makeControlPanel(models));
   splitter->setStretchFactor(0, 1);
   setCentralWidget(splitter);
 
