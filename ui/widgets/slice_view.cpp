@@ -304,7 +304,7 @@ void SliceView::paintOverlay(QPainter& p) {
   }
   drawSliceOverlay(p, o, rect(), [this](double u, double vv) { return toWidget(u, vv); });
   if (measurements_ && measurable() && (!exporting_ || measurements_->showInExports()))
-    drawSliceMeasurements(p, v, *measurements_, axes_, o.slice,
+    drawSliceMeasurements(p, rect(), v, *measurements_, axes_, o.slice,
                           [this](const glm::dvec3& voxel) { return voxelToWidget(voxel); });
 }
 

@@ -101,7 +101,7 @@ void VolumeView::paintEvent(QPaintEvent*) {
   if (shown.clipHandles) drawClipBox(painter, v, state_.params().clip, *proj, dragFace_);
   if (shown.lightHandle) drawLightHandle(painter, v, state_.params(), *proj, drag_ == Drag::Light);
   if (measurements_)
-    drawPickedMeasurements(painter, v, *measurements_,
+    drawPickedMeasurements(painter, QRectF(rect()).translated(-r.topLeft()), v, *measurements_,
                            [&](const glm::dvec3& voxel) -> std::optional<QPointF> {
                              auto at = proj->project(voxelToWorldMm(v, voxel));
                              if (!at) return std::nullopt;
