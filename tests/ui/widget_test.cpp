@@ -282,6 +282,37 @@ class WidgetTest : public QObject {
     }
   }
 
+  // Issue 41 item 11: lighting cinematic in iso mode rendered the dvr classification while
+  // the iso range stayed on show; MIP showed a Gradient it does not use.
+  void cinematicSaysWhatItRendersAndHidesWhatDoesNotApply() {
+    auto* isoLo = window_->findChild<QDoubleSpinBox*>("isoLo");
+    auto* gradient = window_->findChild<QComboBox*>("gradient");
+    auto* mipWindow = window_->findChild<QDoubleSpinBox*>("mipWindow");
+    auto* lighting = window_->findChild<QComboBox*>("lighting");
+    auto* note = window_->findChild<QLabel*>("renderNote");
+    QVERIFY(isoLo && gradient && mipWindow && lighting && note);
+    models_->render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Iso; });
+    QVERIFY(!isoLo->isHidden());
+    QVERIFY(!gradient->isHidden());
+    QVERIFY(note->isHidden());
+    lighting->setCurrentIndex(lighting->findData("cinematic"));
+    QCOMPARE(models_->render.params().lighting, Lighting::Cinematic);
+    QVERIFY(isoLo->isHidden());
+    QVERIFY(gradient->isHidden());
+    QVERIFY(!note->isHidden());
+    QVERIFY2(note->text().startsWith("Cinematic lighting path-traces the volume as dvr with "
+                                     "the iso preset's colour table"),
+             qPrintable(note->text()));
+    lighting->setCurrentIndex(lighting->findData("phong"));
+    QVERIFY(!isoLo->isHidden());
+    QVERIFY(note->isHidden());
+    models_->render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Mip; });
+    QVERIFY(gradient->isHidden());
+    QVERIFY(!mipWindow->isHidden());
+    models_->render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Dvr; });
+    QVERIFY(!gradient->isHidden());
+  }
+
   void panelTakesChoicesAndRangesFromSpecs() {
     // Each combo box lists its spec's labels in the enum's order, and picks by them.
     for (const char* key : {"mode", "gradient", "interp", "lighting"}) {
