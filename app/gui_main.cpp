@@ -16,11 +16,34 @@
 using namespace voxray;
 using namespace voxray::ui;
 
+namespace {
+
+void nameApplication() {
+  QCoreApplication::setOrganizationName("Voxray");
+  QCoreApplication::setApplicationName("voxray");
+  QCoreApplication::setApplicationVersion("0.1.0");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  // --help and --version print and exit: a QCoreApplication answers them, so that they work
+  // without a display (a QApplication aborts without one). An option that took "--help" as
+  // its value leaves the parser without exiting: then the workstation starts as usual.
+  QStringList arguments;
+  for (int i = 0; i < argc; ++i) arguments << QString::fromLocal8Bit(argv[i]);
+  if (asksForHelpOrVersion(arguments)) {
+    QCoreApplication core(argc, argv);
+    nameApplication();
+    try {
+      parseStartOptions(QCoreApplication::arguments());
+    } catch (const std::exception& e) {
+      std::cerr << "voxray: " << e.what() << "\n";
+      return 2;
+    }
+  }
   QApplication app(argc, argv);
-  QApplication::setOrganizationName("Voxray");
-  QApplication::setApplicationName("voxray");
-  QApplication::setApplicationVersion("0.1.0");
+  nameApplication();
   QApplication::setWindowIcon(QIcon::fromTheme("voxray"));
 
   StartOptions options;

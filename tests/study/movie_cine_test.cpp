@@ -9,6 +9,8 @@
 
 #include "accuracy_cthead.h"
 #include "movie.h"
+#include "movie_export.h"
+#include "render_state_model.h"
 #include "voxray/io/error.h"
 #include "voxray/io/phantom.h"
 
@@ -162,6 +164,38 @@ TEST(MovieWrite, ProgressEstimatesTheTimeLeftFromTheFramesSoFar) {
   }
   EXPECT_EQ(seen.back().leftS, 0.0);
   EXPECT_TRUE(fs::is_regular_file(dir.path() / "s.mp4"));
+}
+
+// Issue 41 item 8: the workstation's orbit started from the front whatever the view showed,
+// and by default lasted 12 frames at 25 fps (0.48 s).
+TEST(MovieOrbit, TheWorkstationsOrbitStartsFromTheViewsCamera) {
+  const Volume v = makeHeadPhantom(16);
+  RenderStateModel view;
+  view.update(kCamera, [](RenderParams& p) {
+    p.camera.azimuthDeg = 40.0;
+    p.camera.elevationDeg = 20.0;
+  });
+  MovieChoice choice;
+  EXPECT_EQ(choice.frames, 72);  // one turn in 3 s
+  EXPECT_EQ(choice.fps, 24.0);
+  MoviePlan azimuth = planMovie(choice, view, {}, v, "orbit.mp4");
+  const CameraParams first = orbitFrameCamera(azimuth, 0, 72);
+  EXPECT_EQ(first.azimuthDeg, 40.0);
+  EXPECT_EQ(first.elevationDeg, 20.0);
+  const CameraParams quarter = orbitFrameCamera(azimuth, 18, 72);
+  EXPECT_EQ(quarter.azimuthDeg, 130.0);
+  EXPECT_EQ(quarter.elevationDeg, 20.0);
+
+  choice.kind = 1;  // over the top, at the view's azimuth
+  MoviePlan elevation = planMovie(choice, view, {}, v, "orbit.mp4");
+  EXPECT_EQ(orbitFrameCamera(elevation, 0, 72).elevationDeg, 20.0);
+  EXPECT_EQ(orbitFrameCamera(elevation, 18, 72).elevationDeg, 110.0);
+  EXPECT_EQ(orbitFrameCamera(elevation, 18, 72).azimuthDeg, 40.0);
+
+  // voxray-cli's plan (orbitFromView off) keeps the fixed orbit that `bench` times.
+  azimuth.orbitFromView = false;
+  EXPECT_EQ(orbitFrameCamera(azimuth, 18, 72).azimuthDeg, 90.0);
+  EXPECT_EQ(orbitFrameCamera(azimuth, 18, 72).elevationDeg, 20.0);
 }
 
 }  // namespace

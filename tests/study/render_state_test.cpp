@@ -4,6 +4,7 @@
 #include "light_gizmo.h"
 #include "quality_choice.h"
 #include "recent_files.h"
+#include "render_controls.h"
 #include "render_state_model.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
@@ -201,4 +202,59 @@ TEST(RenderState, CommandLineValuesKeepTheWorkstationsRules) {
   // A bad value leaves the state as it was.
   EXPECT_THROW(m.applyValues({{"azimuth", "10"}, {"zoom", "-1"}}), Error);
   EXPECT_EQ(m.params().camera.azimuthDeg, 40.0);
+}
+
+// Issue 41 item 11: with lighting cinematic the iso controls stayed while the image was the
+// dvr classification's; MIP showed a Gradient control it does not use.
+TEST(RenderControls, EachControlShowsWhereItChangesTheImage) {
+  RenderParams p;
+  p.mode = Mode::Iso;
+  RenderControls c = renderControlsFor(p);
+  EXPECT_TRUE(c.isoRange);
+  EXPECT_FALSE(c.mipWindow);
+  EXPECT_TRUE(c.gradient);
+  EXPECT_EQ(c.note, "");
+  p.mode = Mode::Dvr;
+  c = renderControlsFor(p);
+  EXPECT_FALSE(c.isoRange);
+  EXPECT_FALSE(c.mipWindow);
+  EXPECT_TRUE(c.gradient);
+  p.mode = Mode::Mip;
+  c = renderControlsFor(p);
+  EXPECT_FALSE(c.isoRange);
+  EXPECT_TRUE(c.mipWindow);
+  EXPECT_FALSE(c.gradient);  // nothing is shaded in a MIP
+  EXPECT_EQ(c.note, "");
+  for (Lighting l : {Lighting::Shadows, Lighting::Ao}) {
+    p.lighting = l;
+    p.mode = Mode::Iso;
+    EXPECT_TRUE(renderControlsFor(p).isoRange);
+    EXPECT_EQ(renderControlsFor(p).note, "");
+  }
+}
+
+TEST(RenderControls, CinematicSaysItRendersDvrAndHidesTheModesControls) {
+  RenderParams p;
+  p.lighting = Lighting::Cinematic;
+  for (Mode mode : {Mode::Iso, Mode::Dvr, Mode::Mip}) {
+    p.mode = mode;
+    const RenderControls c = renderControlsFor(p);
+    EXPECT_FALSE(c.isoRange) << toString(mode);
+    EXPECT_FALSE(c.mipWindow) << toString(mode);
+    EXPECT_FALSE(c.gradient) << toString(mode);  // isotropic scattering: no gradient
+  }
+  p.mode = Mode::Iso;
+  EXPECT_EQ(renderControlsFor(p).note,
+            "Cinematic lighting path-traces the volume as dvr with the iso preset's colour table "
+            "(without one: CT-Bone's), not the iso surface: the iso range and the gradient do "
+            "not apply. Phong, shadows or ao show the iso surface.");
+  p.mode = Mode::Mip;
+  EXPECT_EQ(renderControlsFor(p).note,
+            "Cinematic lighting path-traces the volume as dvr with CT-Bone's colour table (MIP "
+            "presets have none), not a maximum intensity projection: the MIP window and the "
+            "gradient do not apply. Phong shows the MIP.");
+  p.mode = Mode::Dvr;
+  EXPECT_EQ(renderControlsFor(p).note,
+            "Cinematic lighting path-traces the volume, scattering light evenly in all "
+            "directions: the gradient does not apply.");
 }

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "session.h"
+#include "session_state.h"
 #include "voxray/io/error.h"
 
 using namespace voxray;
@@ -388,4 +389,44 @@ TEST(Session, TurnedAndSlabViewsRoundTripAndAbsentMeansAcquisitionPlanesThin) {
             std::string::npos);
   EXPECT_NE(withView({{"slab-mode", "max"}}).find("field 'slices.views.axial.slab-mode' is wrong"),
             std::string::npos);
+}
+
+// Issue 41 item 7: "Handles in 3D view" and "Show planes in 3D view" were not in sessions.
+TEST(Session, OverlaysRoundTripAndAnOlderSessionKeepsTheDefaults) {
+  Session s;
+  s.overlays = {false, false, true};
+  const Json j = jsonOf(s, "s.json");
+  EXPECT_EQ(j.at("overlays").dump(),
+            R"({"clip-handles":false,"light-handle":false,"planes":true})");
+  const SessionRead read = sessionFromJson(j.dump(), "s.json");
+  EXPECT_TRUE(read.warnings.empty()) << read.warnings.front();
+  EXPECT_EQ(read.session.overlays, (ViewOverlays{false, false, true}));
+
+  // A session saved before: no object, or some keys only. Nothing to warn about.
+  Json old = j;
+  old.erase("overlays");
+  const SessionRead before = sessionFromJson(old.dump(), "s.json");
+  EXPECT_TRUE(before.warnings.empty()) << before.warnings.front();
+  EXPECT_EQ(before.session.overlays, ViewOverlays{});
+  old["overlays"] = {{"planes", true}};
+  EXPECT_EQ(sessionFromJson(old.dump(), "s.json").session.overlays,
+            (ViewOverlays{true, true, true}));
+
+  old["overlays"] = {{"planes", "yes"}};
+  EXPECT_EQ(readError(old), "session s.json: field 'overlays.planes' must be true or false");
+  old["overlays"] = true;
+  EXPECT_EQ(readError(old), "session s.json: field 'overlays' must be an object { ... }");
+}
+
+TEST(Session, TheModelsOverlaysAreSavedAndRestored) {
+  AppModels saved;
+  saved.render.setOverlays({false, true, true});
+  const Session s = sessionFromModels(saved, {320, 240}, "grid");
+  EXPECT_EQ(s.overlays, (ViewOverlays{false, true, true}));
+  AppModels opened;
+  int redraws = 0;
+  opened.render.changed.connect([&](unsigned what) { redraws += (what & kSlices) != 0; });
+  applySession(opened, sessionFromJson(sessionToJson(s, "s.json"), "s.json").session);
+  EXPECT_EQ(opened.render.overlays(), (ViewOverlays{false, true, true}));
+  EXPECT_GT(redraws, 0);  // the views and the panel hear of it
 }

@@ -52,6 +52,27 @@ TEST(ViewHistory, UndoAndRedoWalkBackAndForthThroughEdits) {
   EXPECT_DOUBLE_EQ(m.render.params().clip.lo.x, 0.5);
 }
 
+// Issue 41 item 10: undoing a window change gave the value back but not where it came from.
+TEST(ViewHistory, UndoingAWindowChangeBringsBackItsSource) {
+  AppModels m;
+  m.windowLevel.reset({80.0, 40.0}, "DICOM window 1");
+  ViewHistory h(m);
+  m.windowLevel.set({1500.0, -600.0});  // the user's: no source
+  EXPECT_EQ(m.windowLevel.source(), "");
+  h.undo();
+  EXPECT_DOUBLE_EQ(m.windowLevel.value().width, 80.0);
+  EXPECT_DOUBLE_EQ(m.windowLevel.value().level, 40.0);
+  EXPECT_EQ(m.windowLevel.source(), "DICOM window 1");
+  EXPECT_EQ(formatWindowLevel(m.windowLevel.value(), m.windowLevel.source()),
+            "W 80  L 40\nDICOM window 1");
+  h.redo();
+  EXPECT_DOUBLE_EQ(m.windowLevel.value().width, 1500.0);
+  EXPECT_EQ(m.windowLevel.source(), "");
+  h.undo();
+  EXPECT_EQ(m.windowLevel.source(), "DICOM window 1");
+  EXPECT_FALSE(h.canUndo());
+}
+
 TEST(ViewHistory, ADragIsOneStep) {
   AppModels m;
   ViewHistory h(m);

@@ -5,6 +5,7 @@
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QGroupBox>
 #include <QMenuBar>
 #include <QPainter>
@@ -14,6 +15,7 @@
 
 #include "help_dialogs.h"
 #include "orientation_marker.h"
+#include "slice_overlay.h"
 #include "volume_overlay.h"
 #include "window_fixture.h"
 
@@ -22,9 +24,19 @@ using namespace voxray::ui;
 
 namespace {
 
-QAction* menuAction(QMenuBar& bar, const QString& text) {
-  for (QAction* a : bar.findChildren<QAction*>())
+// The action a user finds in the menus (walked as shown: a dock's toggle action belongs to
+// the dock, not to the menu bar).
+QAction* findInMenu(const QList<QAction*>& actions, const QString& text) {
+  for (QAction* a : actions) {
     if (a->text().remove('&') == text) return a;
+    if (a->menu())
+      if (QAction* found = findInMenu(a->menu()->actions(), text)) return found;
+  }
+  return nullptr;
+}
+
+QAction* menuAction(QMenuBar& bar, const QString& text) {
+  if (QAction* a = findInMenu(bar.actions(), text)) return a;
   qFatal("no menu action '%s'", qPrintable(text));
 }
 
@@ -108,6 +120,74 @@ class DesktopTest : public QObject {
     // The sample CT is BSD-2-Clause: its copyright notice must reach the user.
     QVERIFY(about.contains("Chris Rorden"));
     QVERIFY(about.contains("BSD-2-Clause"));
+  }
+
+  // Issue 41 item 6: About left out FFmpeg and x264 (GPL), libcurl, NIfTI, Teem and MetaIO,
+  // and gave a path in the source tree for the sample data's licence.
+  void aboutListsEveryLibraryAndTheDataLicence() {
+    const QString about = aboutHtml("cpu");
+    for (const char* expected :
+         {"<td>FFmpeg (libavcodec, libavformat, libavutil, libswscale)</td><td>MP4 export</td>"
+          "<td>LGPL-2.1-or-later; as Debian builds it, with GPL parts: GPL-2.0-or-later</td>",
+          "<td>x264</td><td>H.264 encoding of MP4 movies</td><td>GPL-2.0-or-later</td>",
+          "<td>libcurl</td><td>DICOMweb PACS client</td><td>curl licence (MIT-style)</td>",
+          "<td>NIfTI C library (nifti2, znz)</td><td>NIfTI import</td><td>public domain</td>",
+          "<td>Teem</td><td>NRRD import</td><td>LGPL-2.1-or-later",
+          "<td>MetaIO (from ITK)</td><td>MetaImage import</td><td>Apache-2.0</td>",
+          "<td>DCMTK</td>", "<td>OpenJPEG</td>", "<td>OpenImageIO</td>", "<td>Qt</td>",
+          "<td>nlohmann/json</td>", "<td>zlib</td>", "<td>GLM</td>", "<td>PoCL</td>",
+          "© 2019 Chris Rorden, BSD-2-Clause licence.",
+          "provided that its copyright notice, the licence's two conditions and its disclaimer "
+          "go with it"})
+      QVERIFY2(about.contains(QString(expected).toHtmlEscaped()) || about.contains(expected),
+               expected);
+    QVERIFY2(!about.contains("resources/"), qPrintable(about));  // no path in the sources
+    const QString licence = sampleDataLicence();
+    QVERIFY(licence.startsWith("BSD 2-Clause License\n\nCopyright (c) 2019, Chris Rorden"));
+    QVERIFY(licence.contains("THIS SOFTWARE IS PROVIDED BY THE COPYRIGHT HOLDERS"));
+  }
+
+  // Issue 41 item 1: a closed Measurements dock had no way back.
+  void measurementsDockReopensFromTheViewMenu() {
+    auto* dock = fixture_.window->findChild<QDockWidget*>("measurementDock");
+    QVERIFY(dock);
+    QVERIFY(dock->isVisible());
+    QAction* show = menuAction(*fixture_.window->menuBar(), "Measurements");
+    QVERIFY(show->isCheckable());
+    QVERIFY(show->isChecked());
+    QVERIFY(dock->close());  // its title bar's close button
+    QVERIFY(!dock->isVisible());
+    QVERIFY(!show->isChecked());
+    show->trigger();
+    QVERIFY(dock->isVisible());
+    QVERIFY(show->isChecked());
+  }
+
+  // Issue 41 item 3: the clip box's edges (255, 200, 0) were nearly the sagittal crosshair's
+  // yellow (230, 200, 40). Every pair of overlay colours differs by 150 or more (RGB distance),
+  // and a slice view draws its clip edges in that colour.
+  void clipBoxColourIsClearOfThePlaneColours() {
+    auto distance = [](QColor a, QColor b) {
+      return std::hypot(a.red() - b.red(), a.green() - b.green(), a.blue() - b.blue());
+    };
+    for (int axis = 0; axis < 3; ++axis)
+      QVERIFY2(
+          distance(clipBoxColor(), planeColor(axis)) >= 150.0,
+          qPrintable(
+              QString("axis %1: %2").arg(axis).arg(distance(clipBoxColor(), planeColor(axis)))));
+    QImage img(200, 200, QImage::Format_RGB32);
+    img.fill(Qt::black);
+    {
+      QPainter p(&img);
+      SliceOverlay o;
+      o.crosshair = {150, 150};
+      o.showClip = true;
+      o.clipEdges = {SliceClipEdge{0, true, 40}, SliceClipEdge{1, true, 120},
+                     SliceClipEdge{2, false, 40}, SliceClipEdge{3, false, 120}};
+      o.sliceCount = 1;
+      drawSliceOverlay(p, o, img.rect(), [](double u, double v) { return QPointF(u, v); });
+    }
+    QCOMPARE(img.pixelColor(40, 80), clipBoxColor());  // the left edge, halfway down
   }
 
   void everyPanelControlHasATooltip() {

@@ -14,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "pacs_dialog.h"
 #include "raw_import_dialog.h"
 #include "series_picker.h"
 #include "settings_store.h"
@@ -291,6 +292,49 @@ class DialogTest : public QObject {
                              [&](const std::string&) { return ++questions > 0; });
     QVERIFY(picked.has_value());
     QCOMPARE(questions, 0);
+  }
+
+  // Issue 41 item 4: with no node configured the PACS dialog said nothing of how to give
+  // one, and an error widened the dialog past the screen (one line) rather than wrapping.
+  void pacsDialogSaysHowToGiveANodeAndWrapsItsErrors() {
+    const QByteArray config = qgetenv("XDG_CONFIG_HOME");
+    qputenv("XDG_CONFIG_HOME", QFile::encodeName(dir_.path() + "/no-config"));
+    PacsDialog d(nullptr, (dir_.path() + "/pacs-cache").toStdString());
+    qputenv("XDG_CONFIG_HOME", config);
+    d.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&d));
+    auto* hint = d.findChild<QLabel*>("pacsNodeHint");
+    QVERIFY(hint);
+    QVERIFY(hint->isVisible());
+    QVERIFY2(hint->text().startsWith("No PACS node is configured. Type an address in Node: "
+                                     "dicom://CALLED_AE@host:port (DIMSE) or "
+                                     "https://host/dicom-web (DICOMweb). Or name nodes in " +
+                                     dir_.path() + "/no-config/voxray/pacs-nodes.json"),
+             qPrintable(hint->text()));
+    QCOMPARE(d.node()->count(), 0);
+
+    QSignalSpy failed(&d, &PacsDialog::failed);
+    d.node()->setEditText("dicom://PACS-without-a-port@pacs.example");
+    d.search();
+    QVERIFY(failed.wait(10000));
+    auto* status = d.findChild<QLabel*>("pacsStatus");
+    const QString message = failed.takeFirst().at(0).toString();
+    QCOMPARE(status->text(), message);
+    QVERIFY2(message.contains("lacks the AE title or port; give dicom://CALLED_AE@host:port"),
+             qPrintable(message));
+    // At 560 pixels wide (a small screen) the dialog fits and the label shows all of it.
+    d.resize(560, 600);
+    QTest::qWait(50);
+    QCOMPARE(d.width(), 560);
+    const QRect needed = status->fontMetrics().boundingRect(QRect(0, 0, status->width(), 100000),
+                                                            Qt::TextWordWrap, message);
+    QVERIFY2(needed.width() <= status->width() && needed.height() <= status->height(),
+             qPrintable(QString("needs %1x%2, has %3x%4")
+                            .arg(needed.width())
+                            .arg(needed.height())
+                            .arg(status->width())
+                            .arg(status->height())));
+    QVERIFY(hint->height() >= 2 * hint->fontMetrics().height());  // wrapped, not cut
   }
 #endif
 };

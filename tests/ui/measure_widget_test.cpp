@@ -3,6 +3,7 @@
 // distance picked on the iso surface in the 3D view, and one on dvr's first opaque points.
 #include <QListWidget>
 
+#include "measure_overlay.h"
 #include "slice_view.h"
 #include "volume_view.h"
 #include "voxray/engine/measure.h"
@@ -95,6 +96,43 @@ class MeasureWidgetTest : public QObject {
     QTest::keyClick(&axial, Qt::Key_Delete);
     QCOMPARE(int(fixture_.models->measurements.items().size()), 0);
     QCOMPARE(list->count(), 0);
+  }
+
+  // Issue 41 item 9: an ROI's numbers (mean, SD, min, max, area, pixels) ran off the view's
+  // right edge. Drawn at the ROI's last corner near the bottom right of a grid-sized axial
+  // view, they break into lines and stay inside the view, all of them.
+  void roiLabelStaysInsideTheView() {
+    SliceView& axial = fixture_.window->sliceView(0);
+    const Volume& v = *fixture_.models->document.volume();
+    fixture_.models->measurements.setTool(MeasureTool::Ellipse);
+    dragMouse(&axial, at(axial, 40, 40), at(axial, 62, 62));
+    QCOMPARE(int(fixture_.models->measurements.items().size()), 1);
+    const Measurement& m = fixture_.models->measurements.items().front();
+    const QString text = QString::fromStdString(measurementText(v, m));
+    QVERIFY2(text.startsWith("mean ") && text.endsWith(" px"), qPrintable(text));
+    const QFontMetricsF fm(axial.font());
+    const QRectF view(axial.rect());
+    const glm::dvec2 last = voxelToSlice(axial.axes(), v.dims, m.points.back());
+    const QPointF corner = axial.toWidget(last.x, last.y);  // where the view labels it
+    QVERIFY2(corner.x() + 8 + fm.horizontalAdvance(text) > view.right(),
+             "the one-line label would not run off: the view is too wide for this test");
+    const MeasureLabel label = layoutMeasureLabel(fm, view, corner, text);
+    QVERIFY2(view.contains(label.rect), qPrintable(QString("label %1,%2 %3x%4 in %5x%6")
+                                                       .arg(label.rect.x())
+                                                       .arg(label.rect.y())
+                                                       .arg(label.rect.width())
+                                                       .arg(label.rect.height())
+                                                       .arg(view.width())
+                                                       .arg(view.height())));
+    QVERIFY(label.lines.size() >= 2);
+    for (const QString& line : label.lines) QVERIFY(fm.horizontalAdvance(line) <= view.width());
+    QCOMPARE(label.lines.join(" ").simplified(), text.simplified());  // every number shown
+    QCOMPARE(label.rect.height(), label.lines.size() * fm.lineSpacing());
+
+    // A short label where there is room keeps its place: right of the point, above it.
+    const MeasureLabel shortLabel = layoutMeasureLabel(fm, view, QPointF(20, 40), "12.3 mm");
+    QCOMPARE(shortLabel.lines, QStringList{"12.3 mm"});
+    QCOMPARE(shortLabel.rect.topLeft(), QPointF(28, 34 - fm.ascent()));
   }
 
   void exportsShowMeasurementsOnlyWhenTicked() {

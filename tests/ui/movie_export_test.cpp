@@ -2,6 +2,7 @@
 // MovieController of a MainWindow showing the 64^3 head phantom. Frames are compared with
 // what the workstation itself shows or exports, pixel for pixel (same code, same device).
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QTemporaryDir>
 
@@ -66,9 +67,14 @@ class MovieExportTest : public QObject {
   }
 
   // Frame 0 of an orbit is the screenshot export at the same quality, although the view is
-  // in the middle of a drag (whose frames are cheaper): the movie renders at export quality.
+  // in the middle of a drag (whose frames are cheaper): the movie renders at export quality,
+  // from the view's camera (issue 41 item 8: it started from the front).
   void orbitFrameIsTheExportQualityFrameEvenDuringADrag() {
     fixture_.models->render.setQualityPreset("reference");
+    fixture_.models->render.update(kCamera, [](RenderParams& p) {
+      p.camera.azimuthDeg = 40.0;
+      p.camera.elevationDeg = 20.0;
+    });
     fixture_.window->scheduler().beginInteraction();
     auto d = makeDialog(0, 2, {96, 64});
     QVERIFY(exportAndWait(*d, dir_.filePath("orbit/")));
@@ -77,11 +83,20 @@ class MovieExportTest : public QObject {
     fixture_.window->scheduler().requestExport(QSize(96, 64));
     QVERIFY(ready.wait(60000));
     const auto still = ready.first().at(0).value<std::shared_ptr<const Frame>>();
-    QCOMPARE(still->params.camera.azimuthDeg, 0.0);
+    QCOMPARE(still->params.camera.azimuthDeg, 40.0);
+    QCOMPARE(still->params.camera.elevationDeg, 20.0);
     const Image written = readImage(frame("orbit", 0).toStdString());
     QVERIFY(written.rgba == still->image.rgba);
     // Frame 1 is half a turn away: another image.
     QVERIFY(readImage(frame("orbit", 1).toStdString()).rgba != still->image.rgba);
+  }
+
+  // Issue 41 item 8: the dialog offered 0.48 s of orbit; its defaults are one turn in 3 s.
+  void orbitDefaultsToOneTurnInThreeSeconds() {
+    MovieDialog d(fixture_.window.get(), *fixture_.models, fixture_.window->movies(), "cpu");
+    QCOMPARE(d.findChild<QComboBox*>("movieKind")->currentIndex(), 0);
+    QCOMPARE(d.findChild<QSpinBox*>("movieFrames")->value(), 72);
+    QCOMPARE(d.findChild<QDoubleSpinBox*>("movieFps")->value(), 24.0);
   }
 
   void existingFilesAreReplacedOnlyAfterYes() {

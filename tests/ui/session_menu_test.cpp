@@ -1,6 +1,7 @@
 // QTest on the offscreen platform, issue 13: File → Save session asks before replacing a
 // file, and Open session on a session whose data moved asks where it is, lists the fields
 // it ignores and brings back the view it was saved from, pixel for pixel.
+#include <QCheckBox>
 #include <QFile>
 #include <QTemporaryDir>
 
@@ -53,6 +54,14 @@ class SessionMenuTest : public QObject {
       p.clip.hi.x = 0.55;
     });
     models.windowLevel.set({900.0, 120.0});
+    // Issue 41 item 7: the 3D view's overlays, as the panel's boxes set them.
+    auto* clipHandles = window.findChild<QCheckBox*>("showClipHandles");
+    auto* planes = window.findChild<QCheckBox*>("showPlanes");
+    QVERIFY(clipHandles && planes);
+    QVERIFY(clipHandles->isChecked() && !planes->isChecked());  // the defaults
+    clipHandles->click();
+    planes->click();
+    QVERIFY(!models.render.overlays().clipHandles && models.render.overlays().planes);
     window.grid().setMaximised(0);  // the 3D view alone
     const QImage saved = settledFrame(window);
     QVERIFY(!saved.isNull());
@@ -101,6 +110,9 @@ class SessionMenuTest : public QObject {
       p.clip = ClipBox{};
     });
     window.grid().setMaximised(-1);
+    clipHandles->click();
+    planes->click();
+    QCOMPARE(models.render.overlays(), ViewOverlays{});
     QString question;
     sessions.locateData = [&](const QString& message) {
       question = message;
@@ -117,6 +129,9 @@ class SessionMenuTest : public QObject {
              QString::fromStdString(savedParams));
     QCOMPARE(models.windowLevel.value().width, 900.0);
     QCOMPARE(window.grid().maximisedIndex(), 0);
+    QVERIFY(!clipHandles->isChecked());
+    QVERIFY(planes->isChecked());
+    QVERIFY(!models.render.overlays().clipHandles && models.render.overlays().planes);
     QCOMPARE(QString::fromStdString(models.source.path), QString::fromStdString(kCtHead));
     // The same state on the same device: the same frame (tolerance 0).
     QCOMPARE(test::differingPixels(settledFrame(window), saved), 0);

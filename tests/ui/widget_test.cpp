@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QSlider>
+#include <QStyleHints>
 
 #include "clip_box_math.h"
 #include "light_gizmo.h"
@@ -166,6 +167,27 @@ class WidgetTest : public QObject {
     QVERIFY(coronal.sliceImage() != coronalBefore);
   }
 
+  // Issue 41 item 2: the double-click that maximised a slice view also moved the crosshair
+  // to where it was clicked. Sent through the window as a platform delivers it.
+  void doubleClickMaximisesWithoutMovingTheCrosshair() {
+    SliceView& axial = window_->sliceView(0);
+    const glm::dvec3 before = models_->crosshair.centre();
+    QPointF at = axial.toWidget(40.5, 20.5);  // far from the centre (32, 32)
+    QCOMPARE(window_->grid().maximisedIndex(), -1);
+    QWindow* handle = window_->windowHandle();
+    QTest::mouseDClick(handle, Qt::LeftButton, {}, axial.mapTo(window_, at.toPoint()));
+    QCOMPARE(window_->grid().maximisedIndex(), 1);  // the axial view (grid order: 3D first)
+    QCOMPARE(models_->crosshair.centre().x, before.x);
+    QCOMPARE(models_->crosshair.centre().y, before.y);
+    QCOMPARE(models_->crosshair.centre().z, before.z);
+    // A single click still moves it (a later one, not taken for a double-click).
+    at = axial.toWidget(20.5, 40.5);
+    QTest::mouseClick(handle, Qt::LeftButton, {}, axial.mapTo(window_, at.toPoint()),
+                      QApplication::styleHints()->mouseDoubleClickInterval() + 50);
+    QCOMPARE(models_->crosshair.voxel().x, 20);
+    QCOMPARE(models_->crosshair.voxel().y, 40);
+  }
+
   void sliceEdgeDragMovesClipBox() {
     models_->render.update(kClip, [](RenderParams& p) { p.clip.lo = {0.1, 0.1, 0.1}; });
     SliceView& axial = window_->sliceView(0);
@@ -258,6 +280,37 @@ class WidgetTest : public QObject {
       QCOMPARE(isoLo->isHidden(), m != Mode::Iso);
       QCOMPARE(isoHi->isHidden(), m != Mode::Iso);
     }
+  }
+
+  // Issue 41 item 11: lighting cinematic in iso mode rendered the dvr classification while
+  // the iso range stayed on show; MIP showed a Gradient it does not use.
+  void cinematicSaysWhatItRendersAndHidesWhatDoesNotApply() {
+    auto* isoLo = window_->findChild<QDoubleSpinBox*>("isoLo");
+    auto* gradient = window_->findChild<QComboBox*>("gradient");
+    auto* mipWindow = window_->findChild<QDoubleSpinBox*>("mipWindow");
+    auto* lighting = window_->findChild<QComboBox*>("lighting");
+    auto* note = window_->findChild<QLabel*>("renderNote");
+    QVERIFY(isoLo && gradient && mipWindow && lighting && note);
+    models_->render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Iso; });
+    QVERIFY(!isoLo->isHidden());
+    QVERIFY(!gradient->isHidden());
+    QVERIFY(note->isHidden());
+    lighting->setCurrentIndex(lighting->findData("cinematic"));
+    QCOMPARE(models_->render.params().lighting, Lighting::Cinematic);
+    QVERIFY(isoLo->isHidden());
+    QVERIFY(gradient->isHidden());
+    QVERIFY(!note->isHidden());
+    QVERIFY2(note->text().startsWith("Cinematic lighting path-traces the volume as dvr with "
+                                     "the iso preset's colour table"),
+             qPrintable(note->text()));
+    lighting->setCurrentIndex(lighting->findData("phong"));
+    QVERIFY(!isoLo->isHidden());
+    QVERIFY(note->isHidden());
+    models_->render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Mip; });
+    QVERIFY(gradient->isHidden());
+    QVERIFY(!mipWindow->isHidden());
+    models_->render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Dvr; });
+    QVERIFY(!gradient->isHidden());
   }
 
   void panelTakesChoicesAndRangesFromSpecs() {

@@ -61,9 +61,23 @@ MovieFrames::~MovieFrames() = default;
 
 MovieSize MovieFrames::size() const { return {plan_.params.width, plan_.params.height}; }
 
+CameraParams orbitFrameCamera(const MoviePlan& plan, int frame, int frames) {
+  CameraParams c = plan.params.camera;
+  if (!plan.orbitFromView) {
+    orbitCamera(c, plan.orbit, frame, frames);
+    return c;
+  }
+  const double turn = 360.0 * frame / frames;
+  if (plan.orbit == Orbit::Azimuth)
+    c.azimuthDeg += turn;
+  else
+    c.elevationDeg += turn;  // past 90 the camera looks from behind, upside down: a tumble
+  return c;
+}
+
 RenderParams MovieFrames::params(int k) const {
   RenderParams p = plan_.params;
-  if (!plan_.cine) orbitCamera(p.camera, plan_.orbit, k, count_);
+  if (!plan_.cine) p.camera = orbitFrameCamera(plan_, k, count_);
   return p;
 }
 

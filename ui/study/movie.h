@@ -32,7 +32,15 @@ struct MoviePlan {
   RenderParams params;
   // Cine: the slice views' window (width 0: the volume's whole value range).
   WindowLevel window{0.0, 0.0};
+  // Orbit: start from params.camera (the view's) and turn from there, rather than from
+  // the front as orbitCamera does (voxray-cli's movie is the orbit `bench` times).
+  bool orbitFromView = false;
 };
+
+// The camera of orbit frame FRAME of FRAMES: orbitCamera's, or with orbitFromView the
+// view's camera turned by 360 * FRAME / FRAMES degrees: an azimuth orbit about the long
+// axis at the view's elevation, an elevation orbit over the top at the view's azimuth.
+CameraParams orbitFrameCamera(const MoviePlan& plan, int frame, int frames);
 
 // Index plane SLICE (along the voxel axis closest to the view's normal) of a cine view,
 // filling SIZE pixels (0 x 0: square pixels of the plane's finer spacing) with the whole

@@ -26,6 +26,7 @@ MoviePlan planMovie(const MovieChoice& choice, const RenderStateModel& view, con
               : choice.kind == 4 ? Orientation::Sagittal
                                  : Orientation::Axial;
   plan.frames = choice.frames;
+  plan.orbitFromView = true;  // the movie turns the view the user looks at
   Quality q = view.quality();
   q.preset = choice.quality;
   q.resolution = choice.size;

@@ -20,10 +20,12 @@ namespace voxray {
 struct MovieChoice {
   // 0, 1: azimuth and elevation orbits; 2, 3, 4: axial, coronal and sagittal cines.
   int kind = 0;
-  int frames = 36;                    // orbit: over 360 degrees; cine: slices, 0 = every one
+  // Orbit: frames over 360 degrees, turning from the view's camera; cine: slices, 0 = every
+  // one. 72 at 24 fps: one turn in 3 s, 5 degrees a frame.
+  int frames = 72;
   glm::ivec2 size{1024, 768};         // a cine's {0, 0}: the slice's own size
   std::string quality = "reference";  // a quality preset; empty = custom (the view's own)
-  double fps = 25.0;
+  double fps = 24.0;
 };
 
 // The kinds' labels, in MovieChoice::kind order.

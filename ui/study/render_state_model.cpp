@@ -51,6 +51,12 @@ void RenderStateModel::setStudyText(bool on) {
   changed.notify(kSlices);
 }
 
+void RenderStateModel::setOverlays(const ViewOverlays& o) {
+  if (o == overlays_) return;
+  overlays_ = o;
+  changed.notify(kSlices);
+}
+
 void RenderStateModel::setQualityPreset(const std::string& name) {
   Quality q = quality_;
   q.preset = name;

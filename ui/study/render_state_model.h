@@ -9,6 +9,7 @@
 
 #include "adaptive_quality.h"
 #include "notifier.h"
+#include "view_overlays.h"
 #include "voxray/engine/render_params.h"
 
 namespace voxray {
@@ -19,7 +20,7 @@ enum Change : unsigned {
   kLight = 1u << 2,
   kAppearance = 1u << 3,  // mode, preset, iso range, gradient, interpolation, colours
   kQuality = 1u << 4,     // resolution and quality preset
-  kSlices = 1u << 5,      // the slice views' interpolation: no new 3D frame
+  kSlices = 1u << 5,      // the slice views' interpolation, the overlays: no new 3D frame
   kAll = 0x3fu,
 };
 
@@ -68,6 +69,9 @@ class RenderStateModel {
   // start: it identifies the patient, so it is shown only while the user asks for it.
   bool studyText() const { return studyText_; }
   void setStudyText(bool on);  // notifies kSlices (the views redraw; no new 3D frame)
+  // What the 3D view draws over its image (view_overlays.h); saved in sessions.
+  const ViewOverlays& overlays() const { return overlays_; }
+  void setOverlays(const ViewOverlays& o);  // notifies kSlices (a redraw, no new 3D frame)
   // Values by key from the command line, as voxray-cli reads them (applyRenderValues: a
   // preset first, then the values given); --size picks the resolution, and an explicit
   // step, refinement or jitter switches the quality preset to custom so that it wins.
@@ -85,6 +89,7 @@ class RenderStateModel {
   Quality quality_;
   Interp sliceInterp_ = Interp::Linear;
   bool studyText_ = false;
+  ViewOverlays overlays_;
 };
 
 // Whether the transfer-function preset PRESET (by its exact name) was made for MODE; false

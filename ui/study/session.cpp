@@ -275,6 +275,23 @@ void readViews(Reader& r, const Json& slices, Session& s) {
   }
 }
 
+// Sessions before the overlays were saved lack the object, or a key of it: the defaults.
+void readOverlays(Reader& r, const Json& root, ViewOverlays& o) {
+  if (!root.contains("overlays")) return;
+  const Json& overlays = r.object(root, "overlays", "overlays");
+  r.warnUnknown(overlays, "overlays.", {"clip-handles", "light-handle", "planes"});
+  const std::pair<const char*, bool ViewOverlays::*> fields[] = {
+      {"clip-handles", &ViewOverlays::clipHandles},
+      {"light-handle", &ViewOverlays::lightHandle},
+      {"planes", &ViewOverlays::planes}};
+  for (const auto& [key, field] : fields) {
+    if (!overlays.contains(key)) continue;
+    const Json& v = overlays.at(key);
+    if (!v.is_boolean()) r.fail(std::string("overlays.") + key, "must be true or false");
+    o.*field = v.get<bool>();
+  }
+}
+
 }  // namespace
 
 const std::vector<std::string>& sessionLayouts() {
@@ -297,6 +314,9 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
   if (s.centre) j["slices"]["centre"] = {s.centre->x, s.centre->y, s.centre->z};
   if (Json views = viewsJson(s.views); !views.empty()) j["slices"]["views"] = views;
   j["layout"] = s.layout;
+  j["overlays"] = {{"clip-handles", s.overlays.clipHandles},
+                   {"light-handle", s.overlays.lightHandle},
+                   {"planes", s.overlays.planes}};
   try {
     j["measurements"] = Json::parse(s.measurements);
   } catch (const Json::exception& e) {
@@ -342,8 +362,9 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
     throw inputError("session " + sessionPath + ": written by a newer Voxray (session version " +
                      version.dump() + "; this one reads up to " + std::to_string(kSessionVersion) +
                      "); open it with a newer Voxray");
-  r.warnUnknown(root, "",
-                {kVersionKey, "input", "render", "quality", "slices", "layout", "measurements"});
+  r.warnUnknown(
+      root, "",
+      {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays", "measurements"});
   SessionRead out;
   Session& s = out.session;
   readInput(r, root, sessionPath, out);
@@ -388,6 +409,7 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   const auto& layouts = sessionLayouts();
   if (std::find(layouts.begin(), layouts.end(), s.layout) == layouts.end())
     r.fail("layout", "must be one of grid, 3d, axial, coronal, sagittal");
+  readOverlays(r, root, s.overlays);
   if (root.contains("measurements")) {
     if (!root.at("measurements").is_array()) r.fail("measurements", "must be an array [ ... ]");
     s.measurements = root.at("measurements").dump();

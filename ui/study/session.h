@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "view_overlays.h"
 #include "voxray/engine/plane_sampler.h"
 #include "voxray/engine/render_params.h"
 #include "window_level.h"
@@ -50,7 +51,9 @@ struct Session {
   std::optional<glm::dvec3> centre;
   std::array<SessionView, 3> views{};  // axial, coronal, sagittal
   Interp sliceInterp = Interp::Linear;
-  std::string layout = "grid";      // one of sessionLayouts()
+  std::string layout = "grid";  // one of sessionLayouts()
+  // The 3D view's overlays; optional in the file (older sessions: the defaults).
+  ViewOverlays overlays;
   std::string measurements = "[]";  // a JSON array owned by the measuring tools, kept as read
 };
 

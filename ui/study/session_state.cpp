@@ -21,6 +21,7 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
     s.views[o] = {m.crosshair.rotation(Orientation(o)), m.crosshair.slab(Orientation(o))};
   s.sliceInterp = m.render.sliceInterp();
   s.layout = layout;
+  s.overlays = m.render.overlays();
   s.measurements = measurementsToJson(m.measurements).at("items").dump();
   return s;
 }
@@ -49,6 +50,7 @@ void applySession(AppModels& m, const Session& s) {
     p.height = height;
   });
   m.render.setSliceInterp(s.sliceInterp);
+  m.render.setOverlays(s.overlays);
   m.windowLevel.set(s.window);
   std::array<glm::dmat3, 3> rotations;
   for (size_t o = 0; o < s.views.size(); ++o) {

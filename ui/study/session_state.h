@@ -15,13 +15,15 @@ namespace voxray {
 
 // M's state: its input (M.source), every render parameter with "size" set to VIEWSIZE (the
 // 3D view's size in pixels), the quality choice, the slice window/level, crosshair and
-// interpolation, LAYOUT (a sessionLayouts() name) and the measurements.
+// interpolation, the 3D view's overlays, LAYOUT (a sessionLayouts() name) and the
+// measurements.
 Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
                           const std::string& layout);
 
 // Sets everything S holds on the study just opened (openStudy) from S.input: render
 // parameters (the view keeps deciding the size), quality, window/level, crosshair, slice
-// interpolation, measurements, the input. The layout is the window's to apply.
+// interpolation, the 3D view's overlays, measurements, the input. The layout is the
+// window's to apply.
 void applySession(AppModels& m, const Session& s);
 // openStudy of V, then applySession.
 void openSession(AppModels& m, std::shared_ptr<const Volume> v, std::string name, const Session& s);

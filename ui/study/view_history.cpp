@@ -21,7 +21,13 @@ bool sameSlabs(const std::array<Slab, 3>& a, const std::array<Slab, 3>& b) {
 
 ViewSnapshot takeViewSnapshot(const AppModels& m) {
   const RenderParams& p = m.render.params();
-  ViewSnapshot s{p.camera, p.clip, p.light, p.windowWidth, p.windowLevel, m.windowLevel.value()};
+  ViewSnapshot s{p.camera,
+                 p.clip,
+                 p.light,
+                 p.windowWidth,
+                 p.windowLevel,
+                 m.windowLevel.value(),
+                 m.windowLevel.source()};
   for (size_t o = 0; o < s.planes.size(); ++o) {
     s.planes[o] = m.crosshair.rotation(Orientation(o));
     s.slabs[o] = m.crosshair.slab(Orientation(o));
@@ -32,8 +38,8 @@ ViewSnapshot takeViewSnapshot(const AppModels& m) {
 bool sameView(const ViewSnapshot& a, const ViewSnapshot& b) {
   return sameCamera(a.camera, b.camera) && a.clip.lo == b.clip.lo && a.clip.hi == b.clip.hi &&
          sameLight(a.light, b.light) && a.mipWidth == b.mipWidth && a.mipLevel == b.mipLevel &&
-         a.wl.width == b.wl.width && a.wl.level == b.wl.level && a.planes == b.planes &&
-         sameSlabs(a.slabs, b.slabs);
+         a.wl.width == b.wl.width && a.wl.level == b.wl.level && a.wlSource == b.wlSource &&
+         a.planes == b.planes && sameSlabs(a.slabs, b.slabs);
 }
 
 ViewHistory::ViewHistory(AppModels& m) : m_(m), current_(takeViewSnapshot(m)) {
@@ -88,8 +94,10 @@ void ViewHistory::apply(const ViewSnapshot& s) {
     p.windowWidth = s.mipWidth;
     p.windowLevel = s.mipLevel;
   });
+  // The window with where it came from: set() would leave "DICOM window 1" behind.
   const WindowLevel& wl = m_.windowLevel.value();
-  if (wl.width != s.wl.width || wl.level != s.wl.level) m_.windowLevel.set(s.wl);
+  if (wl.width != s.wl.width || wl.level != s.wl.level || m_.windowLevel.source() != s.wlSource)
+    m_.windowLevel.reset(s.wl, s.wlSource);
   // The planes turn back about where the crosshair is now (its position is not recorded).
   for (size_t o = 0; o < s.slabs.size(); ++o) m_.crosshair.setSlab(Orientation(o), s.slabs[o]);
   m_.crosshair.setPlanes(m_.crosshair.centre(), s.planes);

@@ -7,6 +7,7 @@
 // quality is a preference. Opening a study starts a new history (that study's defaults are the
 // first state).
 #include <array>
+#include <string>
 #include <vector>
 
 #include "app_models.h"
@@ -22,6 +23,7 @@ struct ViewSnapshot {
   LightParams light;
   double mipWidth = 0.0, mipLevel = 0.0;
   WindowLevel wl;
+  std::string wlSource;  // where the window came from ("DICOM window 1"), back with it on undo
   // The slice views' rotations and slabs by Orientation (CrosshairModel).
   std::array<glm::dmat3, 3> planes{glm::dmat3(1.0), glm::dmat3(1.0), glm::dmat3(1.0)};
   std::array<Slab, 3> slabs{};

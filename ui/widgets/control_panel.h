@@ -1,6 +1,7 @@
 #pragma once
 // The side panel: groups of controls, each bound to the models by couplings. Building each
 // group is its own function (panel_*.cpp) so the files stay small.
+#include <QCheckBox>
 #include <QGroupBox>
 #include <QScrollArea>
 
@@ -8,17 +9,20 @@
 
 namespace voxray::ui {
 
-class VolumeView;
-
 QGroupBox* makeRenderGroup(RenderStateModel& m);
 QGroupBox* makeQualityGroup(RenderStateModel& m);
 QGroupBox* makeCameraGroup(RenderStateModel& m);
-QGroupBox* makeClipGroup(AppModels& models, VolumeView& view);
-QGroupBox* makeLightGroup(AppModels& models, VolumeView& view);
+QGroupBox* makeClipGroup(AppModels& models);
+QGroupBox* makeLightGroup(AppModels& models);
 QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state);
-QGroupBox* makeMprGroup(CrosshairModel& crosshair, VolumeView& view);  // panel_mpr.cpp
+QGroupBox* makeMprGroup(CrosshairModel& crosshair, RenderStateModel& state);  // panel_mpr.cpp
+
+// A check box named NAME bound both ways to one of the 3D view's overlays (a session sets
+// them too). In panel_mpr.cpp.
+QCheckBox* makeOverlayCheck(RenderStateModel& m, bool ViewOverlays::*field, const QString& text,
+                            const QString& name, const QString& tooltip);
 
 // All groups in a scrollable column.
-QScrollArea* makeControlPanel(AppModels& models, VolumeView& view);
+QScrollArea* makeControlPanel(AppModels& models);
 
 }  // namespace voxray::ui

@@ -1,5 +1,9 @@
 #include "help_dialogs.h"
 
+#include <map>
+#include <string>
+#include <string_view>
+
 #include <QAction>
 #include <QApplication>
 #include <QMenu>
@@ -7,6 +11,11 @@
 #include <QMessageBox>
 
 #include "voxray/io/sample_volume.h"
+
+namespace voxray {
+// resources/sample/LICENSE-head-phantom-ct, embedded (resources/CMakeLists.txt).
+const std::map<std::string, std::string_view>& embeddedSampleCtLicence();
+}  // namespace voxray
 
 namespace voxray::ui {
 
@@ -59,20 +68,64 @@ QString shortcutsHtml(const QMenuBar& menus) {
   return "<table cellspacing=4>" + rows + "</table>";
 }
 
+QString sampleDataLicence() {
+  const auto& files = embeddedSampleCtLicence();
+  auto it = files.find("LICENSE-head-phantom-ct");
+  return it == files.end() ? QString() : QString::fromUtf8(it->second.data(), it->second.size());
+}
+
 QString aboutHtml(const QString& device) {
+  // Every library the workstation links, what for, and its licence (Debian's builds).
+  struct Library {
+    const char* name;
+    const char* use;
+    const char* licence;
+  };
+  static const Library libraries[] = {
+      {"Qt", "the workstation's windows", "LGPL-3.0"},
+      {"OpenCL headers", "the raycaster", "Apache-2.0"},
+      {"OpenCL ICD loader (ocl-icd)", "the raycaster", "BSD-2-Clause"},
+      {"PoCL", "OpenCL on CPUs", "MIT"},
+      {"GLM", "geometry", "MIT"},
+      {"nlohmann/json", "sessions, presets, DICOMweb", "MIT"},
+      {"zlib", "the sample CT, compressed files", "Zlib"},
+      {"OpenImageIO", "image export and import", "Apache-2.0"},
+      {"FFmpeg (libavcodec, libavformat, libavutil, libswscale)", "MP4 export",
+       "LGPL-2.1-or-later; as Debian builds it, with GPL parts: GPL-2.0-or-later"},
+      {"x264", "H.264 encoding of MP4 movies", "GPL-2.0-or-later"},
+#ifdef VOXRAY_HAS_DICOM
+      {"DCMTK", "DICOM import, DIMSE PACS client", "BSD-3-Clause"},
+      {"OpenJPEG", "JPEG 2000 DICOM images", "BSD-2-Clause"},
+      {"libcurl", "DICOMweb PACS client", "curl licence (MIT-style)"},
+#endif
+#ifdef VOXRAY_HAS_FORMATS
+      {"NIfTI C library (nifti2, znz)", "NIfTI import", "public domain"},
+      {"Teem", "NRRD import",
+       "LGPL-2.1-or-later with a static-linking exception (Simple Library Usage License)"},
+      {"MetaIO (from ITK)", "MetaImage import", "Apache-2.0"},
+#endif
+  };
+  QString rows;
+  for (const Library& l : libraries)
+    rows += QString("<tr><td>%1</td><td>%2</td><td>%3</td></tr>")
+                .arg(QString(l.name).toHtmlEscaped(), QString(l.use).toHtmlEscaped(),
+                     QString(l.licence).toHtmlEscaped());
   return QString(
              "<h3>Voxray %1</h3>"
              "<p>CT and MR volume viewer with an OpenCL raycaster.</p>"
              "<p><b>OpenCL device:</b> %2</p>"
-             "<p><b>Libraries and their licences:</b> Qt %3 (LGPL-3.0), DCMTK (BSD-3-Clause), "
-             "OpenJPEG (BSD-2-Clause), OpenImageIO (Apache-2.0), GLM (MIT), CLI11 "
-             "(BSD-3-Clause), OpenCL headers (Apache-2.0), zlib (Zlib); on CPUs PoCL (MIT).</p>"
-             "<p><b>Data:</b> %4 Its licence: resources/sample/LICENSE-head-phantom-ct. "
-             "The built-in head phantom is synthetic (made by Voxray). Test "
-             "scans: Stanford volume archive (CThead, MRbrain), InVesalius examples (GPL-2), "
-             "visvis stent (BSD), DICOM sets from dcm_qa (BSD-2) and pydicom (MIT).</p>")
+             "<p><b>Libraries and their licences</b> (Qt %3; voxray-cli also uses CLI11, "
+             "BSD-3-Clause):</p><table cellspacing=2>%4</table>"
+             "<p><b>Data:</b> %5 It may be redistributed, changed or not, in source or binary "
+             "form, provided that its copyright notice, the licence's two conditions and its "
+             "disclaimer go with it; it comes as is, without any warranty (Show Details… "
+             "gives the licence in full). The built-in head phantom is synthetic (made by "
+             "Voxray). Test scans: Stanford volume archive (CThead, MRbrain), InVesalius "
+             "examples (GPL-2), visvis stent (BSD), DICOM sets from dcm_qa (BSD-2) and pydicom "
+             "(MIT).</p>")
       .arg(QApplication::applicationVersion().toHtmlEscaped(), device.toHtmlEscaped(),
-           QString(qVersion()), QString::fromStdString(sampleCtAttribution()).toHtmlEscaped());
+           QString(qVersion()), rows,
+           QString::fromStdString(sampleCtAttribution()).toHtmlEscaped());
 }
 
 void showShortcuts(QWidget* parent, const QMenuBar& menus) {
@@ -86,6 +139,8 @@ void showAbout(QWidget* parent, const QString& device) {
   QMessageBox box(QMessageBox::NoIcon, "About Voxray", aboutHtml(device), QMessageBox::Close,
                   parent);
   box.setTextFormat(Qt::RichText);
+  // The sample CT's BSD-2-Clause licence asks binaries to reproduce it: here, in full.
+  box.setDetailedText(sampleDataLicence());
   box.exec();
 }
 

@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
@@ -66,7 +67,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
 
   auto* splitter = new QSplitter;
   splitter->addWidget(grid_);
-  splitter->addWidget(makeControlPanel(models, *volumeView_));
+  splitter->addWidget(makeControlPanel(models));
   splitter->setStretchFactor(0, 1);
   setCentralWidget(splitter);
 
@@ -145,8 +146,8 @@ MainWindow::~MainWindow() {
 void MainWindow::wireMeasurements() {
   for (SliceView* s : slices_) s->setMeasurements(&models_.measurements);
   volumeView_->setMeasurements(&models_.measurements);
-  addDockWidget(Qt::RightDockWidgetArea,
-                makeMeasurementDock(models_.measurements, models_.document));
+  measureDock_ = makeMeasurementDock(models_.measurements, models_.document);
+  addDockWidget(Qt::RightDockWidgetArea, measureDock_);
   connect(volumeView_, &VolumeView::pickMissed, this,
           [this](const QString& m) { statusBar()->showMessage(m, 5000); });
   // Measurements are voxel positions of one volume: another volume starts without them.
@@ -178,6 +179,12 @@ void MainWindow::buildMenus() {
     QWidget* focused = QApplication::focusWidget();
     grid_->toggleMaximised(focused ? focused : volumeView_);
   });
+  // A closed dock comes back from here (its own action: checked while it is shown).
+  QAction* measurements = measureDock_->toggleViewAction();
+  measurements->setText("&Measurements");
+  measurements->setObjectName("viewMeasurements");
+  measurements->setToolTip("Show or hide the Measurements panel");
+  view->addAction(measurements);
   QAction* studyText = view->addAction("&Patient and study text", this,
                                        [this](bool on) { models_.render.setStudyText(on); });
   studyText->setCheckable(true);

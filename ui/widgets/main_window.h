@@ -20,6 +20,8 @@
 #include "view_grid.h"
 #include "view_history.h"
 
+class QDockWidget;
+
 namespace voxray::ui {
 
 class SliceView;
@@ -94,6 +96,7 @@ class MainWindow : public QMainWindow {
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
   SessionActions* sessions_ = nullptr;
+  QDockWidget* measureDock_ = nullptr;  // View → Measurements reopens it
   SessionInput loading_;                // the input being loaded, for AppModels::source
   MovieController* movies_ = nullptr;   // File → Export movie, in the background
   TfEditorDialog* tfEditor_ = nullptr;  // View → Transfer function editor, made when first asked

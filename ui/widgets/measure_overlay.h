@@ -3,7 +3,9 @@
 // handles on their points, and each one's numbers beside it (measurementText).
 #include <functional>
 
+#include <QFontMetricsF>
 #include <QPainter>
+#include <QStringList>
 
 #include "measurement_model.h"
 
@@ -15,14 +17,26 @@ constexpr double kHandlePickPixels = 8.0;
 
 using VoxelToWidget = std::function<QPointF(const glm::dvec3& voxel)>;
 
-// The measurements shown whole on this slice, and 3D-picked points lying on it.
-void drawSliceMeasurements(QPainter& p, const Volume& v, const MeasurementModel& m,
-                           const SliceAxes& axes, int slice, const VoxelToWidget& toWidget);
+// A measurement's numbers as drawn: beside AT (right of it and above, else left of it),
+// broken at the text's ", " and double-space separators into lines no wider than BOUNDS
+// where it must be, and moved inside BOUNDS (the view), so that no number runs off it.
+struct MeasureLabel {
+  QStringList lines;
+  QRectF rect;  // the lines' box; the first baseline is rect.top() + the font's ascent
+};
+MeasureLabel layoutMeasureLabel(const QFontMetricsF& fm, const QRectF& bounds, QPointF at,
+                                const QString& text);
+
+// The measurements shown whole on this slice, and 3D-picked points lying on it; their
+// labels stay inside BOUNDS.
+void drawSliceMeasurements(QPainter& p, const QRectF& bounds, const Volume& v,
+                           const MeasurementModel& m, const SliceAxes& axes, int slice,
+                           const VoxelToWidget& toWidget);
 
 // The 3D picks (distances with normal axis -1, and the pending first point) in the 3D view;
 // TOWIDGET returns nothing for a point behind the eye.
 using VoxelToScreen = std::function<std::optional<QPointF>(const glm::dvec3& voxel)>;
-void drawPickedMeasurements(QPainter& p, const Volume& v, const MeasurementModel& m,
-                            const VoxelToScreen& toWidget);
+void drawPickedMeasurements(QPainter& p, const QRectF& bounds, const Volume& v,
+                            const MeasurementModel& m, const VoxelToScreen& toWidget);
 
 }  // namespace voxray::ui

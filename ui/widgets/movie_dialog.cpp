@@ -25,13 +25,17 @@ MovieDialog::MovieDialog(QWidget* window, AppModels& models, MovieController& co
   kind_ = new QComboBox;
   kind_->setObjectName("movieKind");
   for (const auto& label : movieKindLabels()) kind_->addItem(QString::fromStdString(label));
-  kind_->setToolTip("A 360° orbit of the 3D view, or a cine through one slice view's slices");
+  kind_->setToolTip(
+      "A 360° orbit of the 3D view from its current camera, or a cine through one slice view's "
+      "slices");
   form->addRow("Movie", kind_);
   frames_ = new QSpinBox;
   frames_->setObjectName("movieFrames");
   frames_->setRange(0, 100000);
   frames_->setSpecialValueText("every slice");
-  frames_->setToolTip("Orbit: frames over 360°. Cine: slices, spread from the first to the last");
+  frames_->setToolTip(
+      "Orbit: frames over 360° (72 at 24 fps: one turn in 3 s). Cine: slices, spread from the "
+      "first to the last");
   form->addRow("Frames", frames_);
   width_ = new QSpinBox;
   height_ = new QSpinBox;
@@ -56,7 +60,7 @@ MovieDialog::MovieDialog(QWidget* window, AppModels& models, MovieController& co
   fps_ = new QDoubleSpinBox;
   fps_->setObjectName("movieFps");
   fps_->setRange(1.0, 120.0);
-  fps_->setValue(25.0);
+  fps_->setValue(MovieChoice{}.fps);
   fps_->setToolTip("Frames per second of the MP4");
   form->addRow("Frame rate", fps_);
   path_ = new QLineEdit;
@@ -83,7 +87,7 @@ MovieDialog::MovieDialog(QWidget* window, AppModels& models, MovieController& co
 }
 
 void MovieDialog::kindChanged() {
-  // Each kind starts from its own defaults: 36 frames at 1024 x 768, or every slice at the
+  // Each kind starts from its own defaults: 72 frames at 1024 x 768, or every slice at the
   // slice's own size.
   const bool cine = kind_->currentIndex() >= 2;
   const MovieChoice defaults;

@@ -39,7 +39,20 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
   for (const auto& n : PacsBrowser::configuredNodes()) node_->addItem(q(n));
   node_->setToolTip("A node from " + q(pacsConfigPath()) +
                     ", or dicom://AE@host:port, or https://host/dicom-web");
+  node_->lineEdit()->setPlaceholderText("dicom://CALLED_AE@host:port or https://host/dicom-web");
   form->addRow("Node", node_);
+  // Without a configured node the combo is empty and says nothing: say how to give one.
+  if (node_->count() == 0) {
+    auto* hint = new QLabel(
+        "No PACS node is configured. Type an address in Node: dicom://CALLED_AE@host:port "
+        "(DIMSE) or https://host/dicom-web (DICOMweb). Or name nodes in " +
+        q(pacsConfigPath()) +
+        ", for example {\"nodes\": {\"hospital\": {\"url\": \"dicom://PACS@pacs.example:104\"}}}");
+    hint->setObjectName("pacsNodeHint");
+    hint->setWordWrap(true);
+    hint->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addRow(hint);
+  }
   for (const auto& f : kFields) {
     auto* edit = new QLineEdit;
     edit->setObjectName(f[0]);
@@ -63,6 +76,11 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
   status_ = new QLabel(
       "Search a node; expand a study for its series; double-click a series "
       "to open it, or a study to choose among its series");
+  // Errors name the node, the file or the certificate and what to do: all of it must show,
+  // and it can be copied.
+  status_->setObjectName("pacsStatus");
+  status_->setWordWrap(true);
+  status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   progress_ = new QProgressBar;
   progress_->setVisible(false);
   searchButton_ = new QPushButton("&Search");

@@ -19,7 +19,6 @@
 #include "light_gizmo.h"
 #include "lighting_meter.h"
 #include "spec_widgets.h"
-#include "volume_view.h"
 #include "voxray/engine/quality.h"
 
 namespace voxray::ui {
@@ -108,7 +107,7 @@ void addLightingFigures(QFormLayout* form, QGroupBox* box, AppModels& models) {
 
 }  // namespace
 
-QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
+QGroupBox* makeClipGroup(AppModels& models) {
   RenderStateModel& m = models.render;
   auto* box = new QGroupBox("Clip box (% of extent)");
   auto* grid = new QGridLayout(box);
@@ -156,10 +155,9 @@ QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
   reset->setToolTip("Back to the whole volume");
   QObject::connect(reset, &QPushButton::clicked, reset,
                    [&m] { m.update(kClip, [](RenderParams& p) { p.clip = ClipBox{}; }); });
-  auto* handles = new QCheckBox("Handles in 3D view");
-  handles->setToolTip("Show the box's edges and face handles (drag a handle to move a face)");
-  handles->setChecked(view.showClipHandles());
-  QObject::connect(handles, &QCheckBox::toggled, &view, &VolumeView::setShowClipHandles);
+  QCheckBox* handles = makeOverlayCheck(
+      models.render, &ViewOverlays::clipHandles, "Handles in 3D view", "showClipHandles",
+      "Show the box's edges and face handles (drag a handle to move a face)");
   grid->addWidget(reset, 4, 0, 1, 3);
   grid->addWidget(handles, 5, 0, 1, 3);
   refreshAxes();
@@ -167,7 +165,7 @@ QGroupBox* makeClipGroup(AppModels& models, VolumeView& view) {
   return box;
 }
 
-QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
+QGroupBox* makeLightGroup(AppModels& models) {
   RenderStateModel& m = models.render;
   auto* box = new QGroupBox("Light");
   auto* form = new QFormLayout(box);
@@ -240,11 +238,9 @@ QGroupBox* makeLightGroup(AppModels& models, VolumeView& view) {
         [field](RenderParams& p, double v) { p.light.*field = v; });
     form->addRow(t.name, s);
   }
-  auto* gizmo = new QCheckBox("Light handle in 3D view");
-  gizmo->setToolTip("Show the light as a sun in the 3D view (drag it to move the light)");
-  gizmo->setChecked(view.showLightGizmo());
-  QObject::connect(gizmo, &QCheckBox::toggled, &view, &VolumeView::setShowLightGizmo);
-  form->addRow(gizmo);
+  form->addRow(
+      makeOverlayCheck(m, &ViewOverlays::lightHandle, "Light handle in 3D view", "showLightHandle",
+                       "Show the light as a sun in the 3D view (drag it to move the light)"));
   return box;
 }
 
@@ -310,7 +306,7 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state) {
   return box;
 }
 
-QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
+QScrollArea* makeControlPanel(AppModels& models) {
   auto* column = new QWidget;
   auto* layout = new QVBoxLayout(column);
   // Folded at start: the light (set once and left) and the standard views (the mouse and R
@@ -320,9 +316,9 @@ QScrollArea* makeControlPanel(AppModels& models, VolumeView& view) {
       {makeQualityGroup(models.render), true},
       {makeCameraGroup(models.render), false},
       {makeSliceGroup(models.windowLevel, models.render), true},
-      {makeClipGroup(models, view), true},
-      {makeLightGroup(models, view), false},
-      {makeMprGroup(models.crosshair, view), false}};
+      {makeClipGroup(models), true},
+      {makeLightGroup(models), false},
+      {makeMprGroup(models.crosshair, models.render), false}};
   const char* names[] = {"Rendering", "Quality", "Camera", "Slices", "Clip", "Light", "Mpr"};
   for (size_t i = 0; i < std::size(groups); ++i) {
     groups[i].first->setObjectName(QString(names[i]) + "Group");

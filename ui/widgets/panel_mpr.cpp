@@ -8,10 +8,10 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalBlocker>
 
 #include "control_panel.h"
 #include "coupling.h"
-#include "volume_view.h"
 
 namespace voxray::ui {
 
@@ -60,14 +60,33 @@ QWidget* slabRow(CrosshairModel& crosshair, Orientation o, QWidget* owner) {
 
 }  // namespace
 
-QGroupBox* makeMprGroup(CrosshairModel& crosshair, VolumeView& view) {
+QCheckBox* makeOverlayCheck(RenderStateModel& m, bool ViewOverlays::*field, const QString& text,
+                            const QString& name, const QString& tooltip) {
+  auto* check = new QCheckBox(text);
+  check->setObjectName(name);
+  check->setToolTip(tooltip);
+  auto refresh = [check, &m, field] {
+    QSignalBlocker b(check);
+    check->setChecked(m.overlays().*field);
+  };
+  refresh();
+  onModelChange<unsigned>(check, m.changed, [refresh](unsigned what) {
+    if (what & kSlices) refresh();
+  });
+  QObject::connect(check, &QCheckBox::toggled, check, [&m, field](bool on) {
+    ViewOverlays o = m.overlays();
+    o.*field = on;
+    m.setOverlays(o);
+  });
+  return check;
+}
+
+QGroupBox* makeMprGroup(CrosshairModel& crosshair, RenderStateModel& state) {
   auto* box = new QGroupBox("Planes: oblique and slabs");
   auto* form = new QFormLayout(box);
-  auto* planes = new QCheckBox("Show planes in 3D view");
-  planes->setToolTip("Outline the three slice planes in the 3D view, in the slice views' colours");
-  planes->setChecked(view.showPlanes());
-  QObject::connect(planes, &QCheckBox::toggled, &view, &VolumeView::setShowPlanes);
-  form->addRow(planes);
+  form->addRow(makeOverlayCheck(
+      state, &ViewOverlays::planes, "Show planes in 3D view", "showPlanes",
+      "Outline the three slice planes in the 3D view, in the slice views' colours"));
   for (Orientation o : {Orientation::Axial, Orientation::Coronal, Orientation::Sagittal}) {
     QString label = QString(toString(o)) + " slab";
     label[0] = label[0].toUpper();

@@ -17,6 +17,7 @@
 #include "control_panel.h"
 #include "coupling.h"
 #include "quality_choice.h"
+#include "render_controls.h"
 #include "spec_widgets.h"
 #include "voxray/engine/transfer_function.h"
 
@@ -75,6 +76,11 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   auto* form = new QFormLayout(box);
 
   form->addRow("Mode", makeParamCombo(m, kAppearance, "mode"));
+  // What lighting cinematic renders when the mode says otherwise (renderControlsFor).
+  auto* note = new QLabel;
+  note->setObjectName("renderNote");
+  note->setWordWrap(true);
+  form->addRow(note);
 
   // Only the presets made for the current mode: a dvr table named in MIP would be a label
   // for something not rendered. The preset's name is each item's data.
@@ -128,22 +134,26 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   auto* mipLevel = fieldSpin(m, "window", "mipLevel", &RenderParams::windowLevel);
   form->addRow("MIP window", mipWidth);
   form->addRow("MIP level", mipLevel);
-  // The iso range means nothing to dvr and mip, the window nothing to iso and dvr: their
-  // rows show in their own mode only.
-  auto showModeRows = [form, isoLo, isoHi, mipWidth, mipLevel, &m] {
-    Mode mode = m.params().mode;
-    form->setRowVisible(isoLo, mode == Mode::Iso);
-    form->setRowVisible(isoHi, mode == Mode::Iso);
-    form->setRowVisible(mipWidth, mode == Mode::Mip);
-    form->setRowVisible(mipLevel, mode == Mode::Mip);
+  auto* gradient = makeParamCombo(m, kAppearance, "gradient");
+  form->addRow("Gradient", gradient);
+  form->addRow("Interpolation", makeParamCombo(m, kAppearance, "interp"));
+  // The iso range means nothing to dvr and mip, the window nothing to iso and dvr, the
+  // gradient nothing to mip, and none of them to lighting cinematic (its own dvr): a row
+  // shows only where it changes the image, and the note says what cinematic renders.
+  auto showModeRows = [form, note, isoLo, isoHi, mipWidth, mipLevel, gradient, &m] {
+    const RenderControls c = renderControlsFor(m.params());
+    form->setRowVisible(isoLo, c.isoRange);
+    form->setRowVisible(isoHi, c.isoRange);
+    form->setRowVisible(mipWidth, c.mipWindow);
+    form->setRowVisible(mipLevel, c.mipWindow);
+    form->setRowVisible(gradient, c.gradient);
+    note->setText(QString::fromStdString(c.note));
+    form->setRowVisible(note, !c.note.empty());
   };
   showModeRows();
   onModelChange<unsigned>(box, m.changed, [showModeRows](unsigned what) {
     if (what & kAppearance) showModeRows();
   });
-
-  form->addRow("Gradient", makeParamCombo(m, kAppearance, "gradient"));
-  form->addRow("Interpolation", makeParamCombo(m, kAppearance, "interp"));
   return box;
 }
 

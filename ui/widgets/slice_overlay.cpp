@@ -18,7 +18,7 @@ double niceLengthMm(double target) {
 namespace {
 
 // The orientation letters' colour: none of the plane colours (yellow, green, red) nor the
-// clip box's orange, so that a crosshair line is never read as part of a letter.
+// clip box's magenta, so that a crosshair line is never read as part of a letter.
 const QColor kLetterColor(150, 215, 255);
 constexpr int kLetterMargin = 4;
 
@@ -105,7 +105,7 @@ void drawSliceOverlay(QPainter& p, const SliceOverlay& o, const QRect& r,
                           std::min(o.clipEdges[2].position, o.clipEdges[3].position));
     QPointF br = toWidget(std::max(o.clipEdges[0].position, o.clipEdges[1].position),
                           std::max(o.clipEdges[2].position, o.clipEdges[3].position));
-    p.setPen(QPen(QColor(255, 200, 0), 2, o.clipActive ? Qt::SolidLine : Qt::DashLine));
+    p.setPen(QPen(clipBoxColor(), 2, o.clipActive ? Qt::SolidLine : Qt::DashLine));
     p.setBrush(Qt::NoBrush);
     p.drawRect(QRectF(tl, br));
   }

@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include <QGuiApplication>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QStyleHints>
 #include <QWheelEvent>
 
 #include "gui_post.h"
@@ -302,13 +304,14 @@ void SliceView::paintOverlay(QPainter& p) {
   }
   drawSliceOverlay(p, o, rect(), [this](double u, double vv) { return toWidget(u, vv); });
   if (measurements_ && measurable() && (!exporting_ || measurements_->showInExports()))
-    drawSliceMeasurements(p, v, *measurements_, axes_, o.slice,
+    drawSliceMeasurements(p, rect(), v, *measurements_, axes_, o.slice,
                           [this](const glm::dvec3& voxel) { return voxelToWidget(voxel); });
 }
 
 void SliceView::mousePressEvent(QMouseEvent* e) {
   lastPos_ = dragStart_ = e->position();
   drag_ = Drag::None;
+  const std::optional<ClickChain> chain = std::exchange(clickChain_, std::nullopt);
   if (doc_.empty()) return;
   if (e->button() == Qt::LeftButton && pressMeasure(e->position())) {
     drag_ = Drag::Handle;
@@ -318,6 +321,12 @@ void SliceView::mousePressEvent(QMouseEvent* e) {
             : onRotationHandle(e->position()) ? Drag::Rotate
                                               : Drag::Crosshair;
     if (drag_ == Drag::Crosshair) {
+      // Where the crosshair was before the first press of presses that may make a
+      // double-click (Qt 6 sends both presses before the double-click event).
+      const auto within = ulong(QGuiApplication::styleHints()->mouseDoubleClickInterval());
+      clickChain_ = chain && e->timestamp() - chain->at <= within
+                        ? ClickChain{chain->before, e->timestamp()}
+                        : ClickChain{crosshair_.centre(), e->timestamp()};
       glm::dvec2 s = toSlice(e->position());
       crosshair_.clickInView(axes_, s.x, s.y);
     }
@@ -383,7 +392,18 @@ void SliceView::mouseReleaseEvent(QMouseEvent*) {
   update();
 }
 
-void SliceView::mouseDoubleClickEvent(QMouseEvent*) { emit doubleClicked(); }
+void SliceView::mouseDoubleClickEvent(QMouseEvent*) {
+  // A double-click maximises or restores the view only: the crosshair goes back to where
+  // it was before the double-click's presses moved it.
+  if (clickChain_) {
+    std::array<glm::dmat3, 3> rotations;
+    for (size_t o = 0; o < rotations.size(); ++o)
+      rotations[o] = crosshair_.rotation(Orientation(o));
+    crosshair_.setPlanes(clickChain_->before, rotations);
+    clickChain_.reset();
+  }
+  emit doubleClicked();
+}
 
 void SliceView::wheelEvent(QWheelEvent* e) {
   int notches = e->angleDelta().y() / 120;

@@ -114,6 +114,13 @@ class SliceView : public QWidget {
   Drag drag_ = Drag::None;
   int dragFace_ = -1;
   QPointF lastPos_, dragStart_;
+  // The crosshair before the first of the left presses that may yet make a double-click,
+  // and when the last of them came (event timestamps, ms).
+  struct ClickChain {
+    glm::dvec3 before;
+    ulong at = 0;
+  };
+  std::optional<ClickChain> clickChain_;
   WindowLevel dragStartWl_;
   QPointF hover_{-1, -1};
   bool annotations_ = true;

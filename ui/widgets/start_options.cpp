@@ -66,4 +66,11 @@ StartOptions parseStartOptions(const QStringList& arguments) {
   return o;
 }
 
+bool asksForHelpOrVersion(const QStringList& arguments) {
+  static const QStringList asks = {"-h", "--help", "-?", "--help-all", "-v", "--version"};
+  for (qsizetype i = 1; i < arguments.size() && arguments[i] != "--"; ++i)
+    if (asks.contains(arguments[i])) return true;
+  return false;
+}
+
 }  // namespace voxray::ui

@@ -25,4 +25,8 @@ struct StartOptions {
 // Throws Error (Input) for a malformed value; --help and --version exit like Qt's parser.
 StartOptions parseStartOptions(const QStringList& arguments);
 
+// Whether ARGUMENTS (the program first) ask for help or the version (-h, --help, -?,
+// --help-all, -v, --version, before a "--"): those print and exit, and need no display.
+bool asksForHelpOrVersion(const QStringList& arguments);
+
 }  // namespace voxray::ui

@@ -48,9 +48,17 @@ QColor planeColor(int normalAxis) {
   return colors[normalAxis % 3];
 }
 
+QColor clipBoxColor() {
+  // Magenta: clear of the planes' red, green and yellow (its old orange was read as the
+  // sagittal plane's yellow) and of the letters' light blue.
+  return {235, 80, 235};
+}
+
 void drawClipBox(QPainter& p, const Volume& v, const ClipBox& box, const ViewProjection& view,
                  int activeFace) {
-  p.setPen(QPen(QColor(255, 200, 0, 200), 1.0));
+  QColor edge = clipBoxColor();
+  edge.setAlpha(200);
+  p.setPen(QPen(edge, 1.0));
   p.setBrush(Qt::NoBrush);
   drawVoxelBox(p, v, fractionToVoxel(v.dims, box.lo), fractionToVoxel(v.dims, box.hi), view);
   for (int face = 0; face < kFaceCount; ++face) {
@@ -58,7 +66,7 @@ void drawClipBox(QPainter& p, const Volume& v, const ClipBox& box, const ViewPro
     if (!c) continue;
     bool active = face == activeFace;
     p.setPen(QPen(Qt::black, 1.0));
-    p.setBrush(active ? QColor(255, 255, 255) : QColor(255, 200, 0));
+    p.setBrush(active ? QColor(255, 255, 255) : clipBoxColor());
     p.drawEllipse(*c, kHandleRadius, kHandleRadius);
   }
 }

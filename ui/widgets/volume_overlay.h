@@ -29,5 +29,7 @@ void drawCornerLines(QPainter& p, const std::vector<std::string>& lines, const Q
 
 // The colours the slice views use for their frames, so the 3D planes can be matched.
 QColor planeColor(int normalAxis);
+// The clip box's edges and handles, in the 3D and slice views alike.
+QColor clipBoxColor();
 
 }  // namespace voxray::ui

@@ -40,7 +40,7 @@ VolumeView::VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairMo
           [this](std::shared_ptr<const Frame> f) { onPickFrame(*f); });
   stateConnection_ = state_.changed.connect([this](unsigned) { update(); });
   crosshairConnection_ = crosshair_.changed.connect([this] {
-    if (showPlanes_) update();
+    if (state_.overlays().planes) update();
   });
 }
 
@@ -48,19 +48,6 @@ VolumeView::~VolumeView() {
   if (measurements_) measurements_->changed.disconnect(measureConnection_);
   state_.changed.disconnect(stateConnection_);
   crosshair_.changed.disconnect(crosshairConnection_);
-}
-
-void VolumeView::setShowClipHandles(bool on) {
-  showClip_ = on;
-  update();
-}
-void VolumeView::setShowLightGizmo(bool on) {
-  showLight_ = on;
-  update();
-}
-void VolumeView::setShowPlanes(bool on) {
-  showPlanes_ = on;
-  update();
 }
 
 void VolumeView::setMeasurements(MeasurementModel* m) {
@@ -110,11 +97,12 @@ void VolumeView::paintEvent(QPaintEvent*) {
   painter.translate(r.topLeft());
   painter.setRenderHint(QPainter::Antialiasing);
   const Volume& v = *doc_.volume();
-  if (showPlanes_) drawCrosshairPlanes(painter, v, crosshair_, *proj);
-  if (showClip_) drawClipBox(painter, v, state_.params().clip, *proj, dragFace_);
-  if (showLight_) drawLightHandle(painter, v, state_.params(), *proj, drag_ == Drag::Light);
+  const ViewOverlays& shown = state_.overlays();
+  if (shown.planes) drawCrosshairPlanes(painter, v, crosshair_, *proj);
+  if (shown.clipHandles) drawClipBox(painter, v, state_.params().clip, *proj, dragFace_);
+  if (shown.lightHandle) drawLightHandle(painter, v, state_.params(), *proj, drag_ == Drag::Light);
   if (measurements_)
-    drawPickedMeasurements(painter, v, *measurements_,
+    drawPickedMeasurements(painter, QRectF(rect()).translated(-r.topLeft()), v, *measurements_,
                            [&](const glm::dvec3& voxel) -> std::optional<QPointF> {
                              auto at = proj->project(voxelToWorldMm(v, voxel));
                              if (!at) return std::nullopt;
@@ -152,10 +140,11 @@ void VolumeView::mousePressEvent(QMouseEvent* e) {
     const Volume& v = *doc_.volume();
     glm::dvec2 at = toImage(e->position());
     auto light = proj->project(lightHandleWorld(v, state_.params()));
-    if (showLight_ && light && glm::distance(*light, at) <= kLightPickPixels) {
+    const ViewOverlays& shown = state_.overlays();
+    if (shown.lightHandle && light && glm::distance(*light, at) <= kLightPickPixels) {
       drag_ = Drag::Light;
-    } else if (auto face =
-                   showClip_ ? pickClipFace(v, state_.params().clip, *proj, at) : std::nullopt) {
+    } else if (auto face = shown.clipHandles ? pickClipFace(v, state_.params().clip, *proj, at)
+                                             : std::nullopt) {
       drag_ = Drag::ClipFace;
       dragFace_ = *face;
       dragStartBox_ = state_.params().clip;

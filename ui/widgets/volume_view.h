@@ -27,14 +27,8 @@ class VolumeView : public QWidget {
              RenderScheduler& scheduler, QWidget* parent = nullptr);
   ~VolumeView() override;
 
-  void setShowClipHandles(bool on);
-  void setShowLightGizmo(bool on);
-  void setShowPlanes(bool on);
   // Leaves out the patient and study text while an export grabs the view (unless chosen).
   void setStudyTextHidden(bool hidden);
-  bool showClipHandles() const { return showClip_; }
-  bool showLightGizmo() const { return showLight_; }
-  bool showPlanes() const { return showPlanes_; }
   const QImage& lastFrame() const { return frame_; }
   bool lastFrameInteractive() const { return frameInteractive_; }
   // Where the 3D image is drawn inside the widget, and its projection (for overlays, tests).
@@ -70,7 +64,6 @@ class VolumeView : public QWidget {
   RenderScheduler& scheduler_;
   QImage frame_;
   bool frameInteractive_ = false;
-  bool showClip_ = true, showLight_ = true, showPlanes_ = false;
   bool studyTextHidden_ = false;
   Drag drag_ = Drag::None;
   QPointF dragStart_, lastPos_;
