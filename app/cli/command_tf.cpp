@@ -1,5 +1,6 @@
 // voxray-cli tf: transfer-function files between Voxray's JSON and 3D Slicer's .vp, and the
 // built-in presets as either (issue 35).
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 
@@ -14,14 +15,27 @@ namespace voxray::cli {
 namespace {
 
 struct TfOptions {
-  std::string input, output;
+  std::string input, output, name, list;
   bool force = false;
 };
 
+bool isPresetList(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".xml";
+}
+
 constexpr const char* kPresetPrefix = "preset:";
 
-// A file, or "preset:NAME": a built-in preset as a property (its table, linear, per voxel).
-VolumeProperty readSource(const std::string& input) {
+// A file, a Slicer preset list (.xml) with NAME, or "preset:NAME": a built-in preset as a
+// property (its table, linear, per voxel).
+VolumeProperty readSource(const std::string& input, const std::string& name) {
+  if (isPresetList(input)) {
+    if (name.empty())
+      throw inputError(input + " is a preset list: give --name (voxray-cli tf list " + input +
+                       " shows them)");
+    return findProperty(readSlicerPresetFile(input), name, input);
+  }
   if (input.rfind(kPresetPrefix, 0) == 0) {
     RenderParams p;
     applyPreset(p, findPreset(input.substr(std::string(kPresetPrefix).size())));
@@ -41,14 +55,26 @@ Run addTfCommand(CLI::App& app) {
   tf->require_subcommand(1);
   auto* convert = tf->add_subcommand(
       "convert",
-      "Read a transfer function (.json, .vp or preset:NAME) and write it as .json or .vp. "
+      "Read a transfer function (.json, .vp, a Slicer presets.xml with --name, or "
+      "preset:NAME) and write it as .json or .vp. "
       "Slicer's .vp has no curve, unit distance or name: a smooth curve is written as "
       "straight lines within 1/1024 of it");
-  convert->add_option("input", o->input, "FILE.json, FILE.vp or preset:NAME")->required();
+  convert->add_option("input", o->input, "FILE.json, FILE.vp, presets.xml or preset:NAME")
+      ->required();
   convert->add_option("output", o->output, "FILE.json or FILE.vp")->required();
   convert->add_flag("--force", o->force, "overwrite OUTPUT if it exists");
-  return [o] {
-    VolumeProperty vp = readSource(o->input);
+  convert->add_option("--name", o->name, "which preset of a Slicer preset list (presets.xml)");
+  auto* list = tf->add_subcommand("list", "The presets of a 3D Slicer preset list (presets.xml)");
+  list->add_option("file", o->list, "presets.xml")->required();
+  return [o, list] {
+    if (list->parsed()) {
+      for (const VolumeProperty& p : readSlicerPresetFile(o->list))
+        std::cout << p.name << ": " << p.color.size() << " colour and " << p.opacity.size()
+                  << " opacity points" << (hasGradientOpacity(p) ? ", gradient opacity" : "")
+                  << "\n";
+      return 0;
+    }
+    VolumeProperty vp = readSource(o->input, o->name);
     std::error_code ec;
     if (!o->force && std::filesystem::exists(o->output, ec))
       throw outputError(o->output + " exists; give --force to overwrite it");

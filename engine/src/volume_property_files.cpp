@@ -198,19 +198,19 @@ std::string toVolumePropertyJson(const VolumeProperty& vp) {
 VolumeProperty parseSlicerVolumeProperty(const std::string& text, const std::string& origin) {
   Numbers in(text, origin);
   VolumeProperty vp;
-  double interpolation = in.next("interpolation type (first line)");
+  double interpolation = in.next("interpolation type (first number)");
   if (interpolation != 0.0 && interpolation != 1.0 && interpolation != 2.0)
     throw inputError(origin + ": the interpolation type is " + exact(interpolation) +
                      "; it must be 0 (nearest), 1 (linear) or 2 (cubic, read as linear)");
   vp.nearest = interpolation == 0.0;
-  double shade = in.next("shading flag (second line)");
+  double shade = in.next("shading flag (second number)");
   if (shade != 0.0 && shade != 1.0)
     throw inputError(origin + ": the shading flag is " + exact(shade) + "; it must be 0 or 1");
   vp.shade = shade == 1.0;
-  vp.diffuse = in.next("diffuse reflection (third line)");
-  vp.ambient = in.next("ambient reflection (fourth line)");
-  vp.specular = in.next("specular reflection (fifth line)");
-  vp.specularPower = in.next("specular power (sixth line)");
+  vp.diffuse = in.next("diffuse reflection (third number)");
+  vp.ambient = in.next("ambient reflection (fourth number)");
+  vp.specular = in.next("specular reflection (fifth number)");
+  vp.specularPower = in.next("specular power (sixth number)");
   vp.opacity = opacityNodes(in.function("scalar opacity function", 2));
   vp.gradientOpacity = opacityNodes(in.function("gradient opacity function", 2));
   for (const auto& r : in.function("colour function", 4))

@@ -169,7 +169,7 @@ TEST(VolumePropertyFiles, ABadSlicerFileNamesTheField) {
   EXPECT_EQ(slicerRefusal(with("278.93 0.190476", "278.93 nan")),
             "b.vp: opacity point 3 has nan; it must lie in 0 ... 1");
   EXPECT_EQ(slicerRefusal(with("0.9\n", "O.9\n")),
-            "b.vp: the diffuse reflection (third line) is 'O.9', not a number");
+            "b.vp: the diffuse reflection (third number) is 'O.9', not a number");
   EXPECT_EQ(slicerRefusal(with("16 -1000", "2000000 -1000")),
             "b.vp: the colour function has 500000 points; at most 4096 are read");
   EXPECT_EQ(slicerRefusal("1\n1\n0.9\n0.1\n0.2\n10\n8 -1000 0 152.19 0\n"),
@@ -208,6 +208,63 @@ TEST(VolumePropertyFiles, ABadJsonFileNamesTheField) {
   EXPECT_EQ(jsonRefusal(many), "b.json: opacity has 1000000 points; at most 4096 are read");
   EXPECT_EQ(jsonRefusal("{\"format\": "), jsonRefusal("{\"format\": "));  // stable
   EXPECT_NE(jsonRefusal("{\"format\": ").find("b.json: not valid JSON"), std::string::npos);
+}
+
+}  // namespace voxray
+
+namespace voxray {
+
+namespace {
+
+// A preset list in 3D Slicer's form (its VolumeRendering module's presets.xml): written here
+// from the format, two presets, one with a gradient opacity.
+const char* kPresetList = R"(<?xml version="1.0" encoding="UTF-8"?>
+<PresetList>
+  <VolumeProperty name="Bone-Test" interpolation="1" shade="1" ambient="0.1" diffuse="0.9"
+    specular="0.2" specularPower="10" gradientOpacity="4 0 1 255 1"
+    scalarOpacity="8 -1000 0 152.19 0 278.93 0.190476 3071 0.705882"
+    colorTransfer="16 -1000 0.3 0.3 1 152.19 1 0.5 0.25 278.93 1 1 0.9 3071 0.827 0.658 1"
+    effectiveRange="152.19 3071" selectable="true"/>
+  <VolumeProperty name="Edges-Test" interpolation="0" shade="0" ambient="0.3" diffuse="0.6"
+    specular="0" specularPower="1" gradientOpacity="6 0 0 20 0.5 255 1"
+    scalarOpacity="4 0 0 500 1" colorTransfer="8 0 0 0 0 500 1 1 1"/>
+</PresetList>
+)";
+
+}  // namespace
+
+TEST(VolumePropertyFiles, ASlicerPresetListGivesEveryPreset) {
+  const std::vector<VolumeProperty> presets = parseSlicerPresets(kPresetList, "presets.xml");
+  ASSERT_EQ(presets.size(), 2u);
+  EXPECT_EQ(presets[0].name, "Bone-Test");
+  // The same fields as the .vp file of the same numbers, but for the gradient opacity.
+  VolumeProperty fromVp = parseSlicerVolumeProperty(kSlicerBone, "bone.vp");
+  fromVp.name = "Bone-Test";
+  fromVp.gradientOpacity.clear();  // the list's Bone-Test has Slicer's constant 1 (off)
+  EXPECT_EQ(presets[0], fromVp);
+  const VolumeProperty& edges = findProperty(presets, "edges-test", "presets.xml");
+  EXPECT_TRUE(edges.nearest);
+  EXPECT_FALSE(edges.shade);
+  EXPECT_EQ(edges.ambient, 0.3);
+  EXPECT_TRUE(hasGradientOpacity(edges));
+  EXPECT_EQ(refusal([&] { findProperty(presets, "CT-AAA", "presets.xml"); }),
+            "presets.xml: no preset named 'CT-AAA'; it has Bone-Test, Edges-Test");
+}
+
+TEST(VolumePropertyFiles, ABadPresetListNamesThePresetAndTheAttribute) {
+  auto refused = [](std::string xml) { return refusal([&] { parseSlicerPresets(xml, "p.xml"); }); };
+  std::string noShade = kPresetList;
+  noShade.replace(noShade.find("shade=\"1\" "), 10, "");
+  EXPECT_EQ(refused(noShade), "p.xml, preset 'Bone-Test': the attribute 'shade' is missing");
+  std::string badCount = kPresetList;
+  badCount.replace(badCount.find("scalarOpacity=\"4"), 16, "scalarOpacity=\"5");
+  EXPECT_EQ(refused(badCount),
+            "p.xml, preset 'Edges-Test': the scalar opacity function count is 5; it counts the "
+            "numbers that follow, 2 per point");
+  EXPECT_EQ(refused("<PresetList></PresetList>"),
+            "p.xml: no <VolumeProperty> presets in it; 3D Slicer's list is "
+            "<PresetList><VolumeProperty name=... /></PresetList>");
+  EXPECT_EQ(refused("<PresetList><VolumeProperty").rfind("p.xml: not valid XML (", 0), 0u);
 }
 
 }  // namespace voxray

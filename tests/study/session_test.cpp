@@ -14,6 +14,7 @@
 
 #include "session.h"
 #include "session_state.h"
+#include "tf_editor_model.h"
 #include "voxray/io/error.h"
 
 using namespace voxray;
@@ -430,3 +431,45 @@ TEST(Session, TheModelsOverlaysAreSavedAndRestored) {
   EXPECT_EQ(opened.render.overlays(), (ViewOverlays{false, true, true}));
   EXPECT_GT(redraws, 0);  // the views and the panel hear of it
 }
+
+namespace voxray {
+
+// Issue 35: the editor's lists and curve go into the session and come back into the editor,
+// exactly; a table changed elsewhere since is saved as a table only.
+TEST(Session, TheShapedTransferFunctionRoundTripsIntoTheEditor) {
+  AppModels saved;
+  saved.render.applyPreset("CT-Bone");
+  TfEditorModel editor(saved.render);
+  editor.setCurve(TfCurve::Smooth);
+  editor.addOpacityPoint(777.25, 0.375);
+  editor.setUnitDistance(1.0 / 3.0);
+  const VolumeProperty shaped = editor.property();
+  const Session s = sessionFromModels(saved, {320, 240}, "grid");
+  ASSERT_TRUE(s.transferFunction.has_value());
+  EXPECT_EQ(*s.transferFunction, shaped);
+  const SessionRead read = sessionFromJson(sessionToJson(s, "s.json"), "s.json");
+  EXPECT_TRUE(read.warnings.empty()) << read.warnings.front();
+  ASSERT_TRUE(read.session.transferFunction.has_value());
+  EXPECT_EQ(*read.session.transferFunction, shaped);
+
+  AppModels opened;
+  TfEditorModel reopened(opened.render);  // open before the session, as a user may
+  applySession(opened, read.session);
+  EXPECT_EQ(reopened.property(), shaped);
+  EXPECT_EQ(opened.render.params().transferFunction, renderTable(shaped));
+
+  // A preset chosen after shaping: the session keeps no stale lists.
+  saved.render.applyPreset("CT-Skin");
+  EXPECT_FALSE(sessionFromModels(saved, {320, 240}, "grid").transferFunction.has_value());
+  // Older sessions have none; a bad one names the field.
+  Json j = jsonOf(s, "s.json");
+  j.erase("transfer-function");
+  EXPECT_FALSE(sessionFromJson(j.dump(), "s.json").session.transferFunction.has_value());
+  j = jsonOf(s, "s.json");
+  j["transfer-function"]["opacity"][0][1] = 2.0;
+  EXPECT_EQ(readError(j),
+            "session s.json: field 'transfer-function' is wrong: opacity point 1 has 2; it must "
+            "lie in 0 ... 1");
+}
+
+}  // namespace voxray

@@ -136,6 +136,27 @@ class TfEditorTest : public QObject {
     editor->model().undo();
     QCOMPARE(editor->loadFile(good), QString());
     QCOMPARE(editor->model().property(), saved);
+
+    // A Slicer preset list: the user picks one of its presets.
+    const QString list = dir.filePath("presets.xml");
+    QFile x(list);
+    QVERIFY(x.open(QIODevice::WriteOnly));
+    x.write(R"(<PresetList><VolumeProperty name="A" interpolation="1" shade="1" ambient="0.1"
+      diffuse="0.9" specular="0.2" specularPower="10" gradientOpacity="4 0 1 255 1"
+      scalarOpacity="4 0 0 100 0.5" colorTransfer="4 0 1 0 0"/><VolumeProperty name="B"
+      interpolation="1" shade="1" ambient="0.1" diffuse="0.9" specular="0.2" specularPower="10"
+      gradientOpacity="4 0 1 255 1" scalarOpacity="4 -200 0 300 0.25"
+      colorTransfer="4 0 0 0 1"/></PresetList>)");
+    x.close();
+    QStringList offered;
+    editor->choosePreset = [&](const QStringList& names) {
+      offered = names;
+      return QString("B");
+    };
+    QCOMPARE(editor->loadFile(list), QString());
+    QCOMPARE(offered, (QStringList{"A", "B"}));
+    QCOMPARE(editor->model().property().name, std::string("B"));
+    QCOMPARE(editor->model().property().opacity[1], (OpacityNode{300.0, 0.25}));
   }
 };
 

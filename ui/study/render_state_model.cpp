@@ -51,6 +51,16 @@ void RenderStateModel::setStudyText(bool on) {
   changed.notify(kSlices);
 }
 
+std::optional<VolumeProperty> RenderStateModel::shapedTransferFunction() const {
+  if (!shaped_ || !params_.preset.empty() || params_.transferFunction != renderTable(*shaped_))
+    return std::nullopt;
+  return shaped_;
+}
+
+void RenderStateModel::setShapedTransferFunction(std::optional<VolumeProperty> vp) {
+  shaped_ = std::move(vp);
+}
+
 void RenderStateModel::setOverlays(const ViewOverlays& o) {
   if (o == overlays_) return;
   overlays_ = o;

@@ -5,12 +5,14 @@
 // update() so every bound widget and the render scheduler hear about them.
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "adaptive_quality.h"
 #include "notifier.h"
 #include "view_overlays.h"
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/volume_property.h"
 
 namespace voxray {
 
@@ -71,6 +73,10 @@ class RenderStateModel {
   void setStudyText(bool on);  // notifies kSlices (the views redraw; no new 3D frame)
   // What the 3D view draws over its image (view_overlays.h); saved in sessions.
   const ViewOverlays& overlays() const { return overlays_; }
+  // The transfer function the editor shaped (its two lists and curve), while the view's
+  // table is still the one it makes; none once a preset or another table replaced it.
+  std::optional<VolumeProperty> shapedTransferFunction() const;
+  void setShapedTransferFunction(std::optional<VolumeProperty> vp);  // no notification
   void setOverlays(const ViewOverlays& o);  // notifies kSlices (a redraw, no new 3D frame)
   // Values by key from the command line, as voxray-cli reads them (applyRenderValues: a
   // preset first, then the values given); --size picks the resolution, and an explicit
@@ -90,6 +96,7 @@ class RenderStateModel {
   Interp sliceInterp_ = Interp::Linear;
   bool studyText_ = false;
   ViewOverlays overlays_;
+  std::optional<VolumeProperty> shaped_;
 };
 
 // Whether the transfer-function preset PRESET (by its exact name) was made for MODE; false

@@ -317,6 +317,8 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
   j["overlays"] = {{"clip-handles", s.overlays.clipHandles},
                    {"light-handle", s.overlays.lightHandle},
                    {"planes", s.overlays.planes}};
+  if (s.transferFunction)
+    j["transfer-function"] = Json::parse(toVolumePropertyJson(*s.transferFunction));
   try {
     j["measurements"] = Json::parse(s.measurements);
   } catch (const Json::exception& e) {
@@ -362,9 +364,9 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
     throw inputError("session " + sessionPath + ": written by a newer Voxray (session version " +
                      version.dump() + "; this one reads up to " + std::to_string(kSessionVersion) +
                      "); open it with a newer Voxray");
-  r.warnUnknown(
-      root, "",
-      {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays", "measurements"});
+  r.warnUnknown(root, "",
+                {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays",
+                 "transfer-function", "measurements"});
   SessionRead out;
   Session& s = out.session;
   readInput(r, root, sessionPath, out);
@@ -410,6 +412,17 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   if (std::find(layouts.begin(), layouts.end(), s.layout) == layouts.end())
     r.fail("layout", "must be one of grid, 3d, axial, coronal, sagittal");
   readOverlays(r, root, s.overlays);
+  if (root.contains("transfer-function")) {
+    try {
+      s.transferFunction =
+          parseVolumePropertyJson(root.at("transfer-function").dump(), "transfer-function");
+    } catch (const Error& e) {
+      std::string what = e.what();
+      const std::string origin = "transfer-function: ";
+      if (what.rfind(origin, 0) == 0) what.erase(0, origin.size());
+      r.fail("transfer-function", "is wrong: " + what);
+    }
+  }
   if (root.contains("measurements")) {
     if (!root.at("measurements").is_array()) r.fail("measurements", "must be an array [ ... ]");
     s.measurements = root.at("measurements").dump();

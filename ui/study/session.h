@@ -17,6 +17,7 @@
 #include "view_overlays.h"
 #include "voxray/engine/plane_sampler.h"
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/volume_property.h"
 #include "window_level.h"
 
 namespace voxray {
@@ -54,6 +55,9 @@ struct Session {
   std::string layout = "grid";  // one of sessionLayouts()
   // The 3D view's overlays; optional in the file (older sessions: the defaults).
   ViewOverlays overlays;
+  // The transfer function the editor shaped, when the render table is still its own: its
+  // colour and opacity lists and curve (the table alone loses them). Optional in the file.
+  std::optional<VolumeProperty> transferFunction;
   std::string measurements = "[]";  // a JSON array owned by the measuring tools, kept as read
 };
 

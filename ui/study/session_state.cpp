@@ -22,6 +22,7 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   s.sliceInterp = m.render.sliceInterp();
   s.layout = layout;
   s.overlays = m.render.overlays();
+  s.transferFunction = m.render.shapedTransferFunction();
   s.measurements = measurementsToJson(m.measurements).at("items").dump();
   return s;
 }
@@ -43,6 +44,8 @@ void applySession(AppModels& m, const Session& s) {
   q.preset = s.qualityPreset;
   q.resolution = s.resolution;
   m.render.setQuality(q);  // checked when read: a known preset or custom
+  // Before the render state: the editor, told of the new table, then takes these lists.
+  m.render.setShapedTransferFunction(s.transferFunction);
   m.render.update(kAll, [&](RenderParams& p) {
     const int width = p.width, height = p.height;  // the view decides the size
     p = s.render;

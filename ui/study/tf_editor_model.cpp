@@ -53,7 +53,9 @@ void TfEditorModel::takeFromView() {
     p.mode = Mode::Dvr;
     if (!p.preset.empty() && !presetFitsMode(p.preset, Mode::Dvr)) p.preset.clear();
   }
-  vp_ = volumePropertyOf(p);
+  // The editor's own lists and curve where the view still shows them (a session brings them).
+  std::optional<VolumeProperty> shaped = render_.shapedTransferFunction();
+  vp_ = shaped ? *shaped : volumePropertyOf(p);
   undo_.clear();
   redo_.clear();
   changed.notify();
@@ -155,6 +157,7 @@ void TfEditorModel::edit(const std::function<void(VolumeProperty&)>& change) {
 
 void TfEditorModel::show() {
   showing_ = true;
+  render_.setShapedTransferFunction(vp_);
   render_.update(kAppearance, [&](RenderParams& p) { applyVolumeProperty(p, vp_); });
   showing_ = false;
   changed.notify();

@@ -6,6 +6,7 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QInputDialog>
 #include <QMessageBox>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -82,7 +83,9 @@ TfEditorDialog::TfEditorDialog(AppModels& models, QWidget* parent)
 
   auto* load = new QPushButton("Load…");
   load->setObjectName("tfLoad");
-  load->setToolTip("Voxray transfer function (.json) or 3D Slicer volume property (.vp)");
+  load->setToolTip(
+      "Voxray transfer function (.json), 3D Slicer volume property (.vp) or one preset of a "
+      "Slicer preset list (presets.xml)");
   auto* save = new QPushButton("Save…");
   save->setObjectName("tfSave");
   undo_ = new QPushButton("Undo");
@@ -177,8 +180,10 @@ TfEditorDialog::TfEditorDialog(AppModels& models, QWidget* parent)
   connect(undo_, &QPushButton::clicked, this, [this] { model_->undo(); });
   connect(redo_, &QPushButton::clicked, this, [this] { model_->redo(); });
   connect(load, &QPushButton::clicked, this, [this] {
-    QString file = QFileDialog::getOpenFileName(this, "Load transfer function", QString(),
-                                                "Transfer functions (*.json *.vp)");
+    QString file = QFileDialog::getOpenFileName(
+        this, "Load transfer function", QString(),
+        "Transfer functions (*.json *.vp *.xml);;Voxray (*.json);;3D Slicer volume property "
+        "(*.vp);;3D Slicer preset list (*.xml)");
     if (file.isEmpty()) return;
     QString error = loadFile(file);
     if (!error.isEmpty()) QMessageBox::warning(this, "Transfer function", error);
@@ -193,6 +198,11 @@ TfEditorDialog::TfEditorDialog(AppModels& models, QWidget* parent)
     if (!error.isEmpty()) QMessageBox::warning(this, "Transfer function", error);
   });
   onModelChange<>(this, models_.document.changed, [this] { countHistogram(); });
+  choosePreset = [this](const QStringList& names) {
+    bool ok = false;
+    QString name = QInputDialog::getItem(this, "3D Slicer presets", "Preset", names, 0, false, &ok);
+    return ok ? name : QString();
+  };
 
   refresh();
   fitVolume();
@@ -208,7 +218,16 @@ TfEditorDialog::~TfEditorDialog() {
 
 QString TfEditorDialog::loadFile(const QString& file) {
   try {
-    model_->setProperty(readVolumePropertyFile(file.toStdString()));
+    if (file.endsWith(".xml", Qt::CaseInsensitive)) {
+      std::vector<VolumeProperty> presets = readSlicerPresetFile(file.toStdString());
+      QStringList names;
+      for (const VolumeProperty& p : presets) names << QString::fromStdString(p.name);
+      QString name = choosePreset(names);
+      if (name.isEmpty()) return {};
+      model_->setProperty(findProperty(presets, name.toStdString(), file.toStdString()));
+    } else {
+      model_->setProperty(readVolumePropertyFile(file.toStdString()));
+    }
     if (hasGradientOpacity(model_->property()))
       status_->setText(
           "This file has a gradient-magnitude opacity, which Voxray does not render yet; its "

@@ -27,7 +27,10 @@ class TfEditorDialog : public QDialog {
   TfCurveView& curve() { return *curve_; }
   // Reads FILE into the editor; a bad file leaves the transfer function as it was and
   // returns the message (empty on success). The Load button shows it in a box.
+  // A 3D Slicer preset list (.xml) asks which preset through choosePreset (a list box by
+  // default; tests answer it); no answer changes nothing.
   QString loadFile(const QString& file);
+  std::function<QString(const QStringList& names)> choosePreset;
   QString saveFile(const QString& file);  // same for writing
   // The histogram's count is done (tests wait for it).
   bool histogramReady() const { return histogramReady_; }

@@ -87,6 +87,16 @@ std::string toVolumePropertyJson(const VolumeProperty& vp);
 VolumeProperty parseSlicerVolumeProperty(const std::string& text, const std::string& origin);
 std::string toSlicerVolumeProperty(const VolumeProperty& vp);
 
+// 3D Slicer's preset list (presets.xml): each <VolumeProperty> element's attributes hold the
+// same fields as a .vp file (name, interpolation, shade, ambient, diffuse, specular,
+// specularPower, scalarOpacity, gradientOpacity, colorTransfer). Throws Error (Input) naming
+// the preset and the attribute that is missing or wrong.
+std::vector<VolumeProperty> parseSlicerPresets(const std::string& xml, const std::string& origin);
+std::vector<VolumeProperty> readSlicerPresetFile(const std::string& path);
+// The preset named NAME (case-insensitive) of PRESETS; throws Error (Input) listing the names.
+const VolumeProperty& findProperty(const std::vector<VolumeProperty>& presets,
+                                   const std::string& name, const std::string& origin);
+
 // By the file's extension (.json or .vp); throws Error (Input) for another or a bad file.
 VolumeProperty readVolumePropertyFile(const std::string& path);
 // Throws Error (Output) when the file cannot be written.
