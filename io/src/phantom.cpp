@@ -86,6 +86,7 @@ Volume makeHeadPhantom(int size) {
   v.originMm = glm::dvec3(-(size - 1) * 0.5 * v.spacingMm.x);  // centre of the box at 0
   v.sourceType = "phantom";
   v.modality = "CT";  // a CT-like head in HU: it opens with the CT default window
+  v.unit = "HU";
   v.voxels.assign(v.voxelCount(), int16_t(kAir));
 
   // Voxel i has its centre at (i + 0.5 - half) / half in half-box units.

@@ -45,14 +45,27 @@ uint64_t sizeOf(const std::string& path) {
   return ec ? 0 : uint64_t(n);
 }
 
+// A pattern such as slices/%03d.tif: not a file itself, but it names some.
+bool isPattern(const std::string& input) {
+  std::error_code ec;
+  return input.find('%') != std::string::npos && !fs::exists(input, ec);
+}
+
+// The slice files of a folder or a pattern (the importer's own rules), in slice order.
+std::vector<detail::SliceFile> stackFiles(const std::string& input, const RawLayout& l) {
+  std::error_code ec;
+  return fs::is_directory(input, ec) ? detail::listSliceFolder(input, l.range)
+                                     : detail::listSlicePattern(input, l.range);
+}
+
 }  // namespace
 
 RawSizeCheck checkRawSize(const std::string& input, const RawLayout& l) {
   RawSizeCheck c;
   std::error_code ec;
   try {
-    if (fs::is_directory(input, ec)) {
-      auto files = detail::listSliceFolder(input, l.range);
+    if (fs::is_directory(input, ec) || isPattern(input)) {
+      auto files = stackFiles(input, l);
       c.files = int(files.size());
       c.filesWanted = std::max(l.dims.z, 0);
       for (const auto& f : files) {  // the first file whose size is off decides
@@ -112,8 +125,8 @@ std::optional<std::vector<double>> readMiddleRawSlice(const std::string& input,
   size_t offset = l.headerBytes;
   std::error_code ec;
   try {
-    if (fs::is_directory(input, ec)) {
-      auto files = detail::listSliceFolder(input, l.range);
+    if (fs::is_directory(input, ec) || isPattern(input)) {
+      auto files = stackFiles(input, l);
       file = files[files.size() / 2].path;  // never empty: an empty folder throws
     } else {
       offset += sliceBytes * size_t(std::max(l.dims.z, 1) / 2);

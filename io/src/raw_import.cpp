@@ -229,7 +229,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   v.direction = layout.direction;
   v.slope = storage.slope;
   v.intercept = storage.intercept;
-  v.unit = "HU";  // raw data are taken as given: HU once the user's rescale is applied
+  v.unit = rawValueUnit(layout);
   v.sourceType = toString(layout.type);
   if (!storage.warning.empty()) v.warnings.push_back(storage.warning);
   if (inPlace)
@@ -255,6 +255,10 @@ std::string lower(std::string s) {
   return s;
 }
 }  // namespace
+
+std::string rawValueUnit(const RawLayout& layout) {
+  return layout.slope != 1.0 || layout.intercept != 0.0 ? "HU" : "value";
+}
 
 SampleType parseSampleType(const std::string& s) {
   const std::string t = lower(s);

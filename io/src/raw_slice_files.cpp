@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <map>
 #include <system_error>
 
 #include "file_kind.h"
@@ -47,14 +48,31 @@ void requireComplete(const std::vector<SliceFile>& files, long long first, long 
   if (expected <= last) throw missingSlices(expected, last, previous, nullptr, where);
 }
 
-// The number a file name ends in ("CThead.57" -> 57); none for names without one, or with
+// A file name's slice number and what follows it: "CThead.57" -> 57 and "", "001.tif" ->
+// 1 and ".tif" (a number before a short extension). None for names without one, or with
 // more digits than any real stack needs.
+struct NumberedName {
+  long long number = 0;
+  std::string suffix;
+};
+
 std::optional<long long> trailingNumber(const std::string& name) {
   size_t start = name.size();
   while (start > 0 && std::isdigit(static_cast<unsigned char>(name[start - 1]))) --start;
   const size_t digits = name.size() - start;
   if (digits == 0 || digits > 15) return std::nullopt;
   return std::stoll(name.substr(start));
+}
+
+std::optional<NumberedName> numberedName(const std::string& name) {
+  if (auto n = trailingNumber(name)) return NumberedName{*n, ""};
+  const size_t dot = name.rfind('.');
+  constexpr size_t kMaxExtension = 8;  // ".tif", ".raw", ".dcm", ".img", ".tiff"
+  if (dot == std::string::npos || dot == 0 || name.size() - dot > kMaxExtension ||
+      name.size() - dot < 2)
+    return std::nullopt;
+  if (auto n = trailingNumber(name.substr(0, dot))) return NumberedName{*n, name.substr(dot)};
+  return std::nullopt;
 }
 
 struct Pattern {
@@ -104,6 +122,41 @@ Pattern parsePattern(const std::string& text) {
   return p;
 }
 
+// The first and last numbers of the files PATTERN names, found by listing its folder: the
+// range need not be given. Throws Error (Input) when no file matches.
+std::pair<int, int> patternRange(const Pattern& p, const std::string& pattern) {
+  const auto needRange = [&](const std::string& why) {
+    return inputError(pattern + ": " + why + "; give the slice numbers with --raw-range " +
+                      "FIRST-LAST (e.g. 1-113)");
+  };
+  if (p.after.find('/') != std::string::npos)
+    throw needRange("the number is in a folder's name, so the files cannot be listed");
+  const fs::path before(p.before);
+  const std::string prefix = before.filename().string();
+  fs::path folder = before.parent_path();
+  if (folder.empty()) folder = ".";
+  long long lo = -1, hi = -1;
+  std::error_code ec;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() + p.after.size() || name.rfind(prefix, 0) != 0 ||
+        name.compare(name.size() - p.after.size(), p.after.size(), p.after) != 0)
+      continue;
+    const std::string digits =
+        name.substr(prefix.size(), name.size() - prefix.size() - p.after.size());
+    if (digits.size() > 9 || !std::all_of(digits.begin(), digits.end(),
+                                          [](unsigned char c) { return std::isdigit(c) != 0; }))
+      continue;
+    const long long n = std::stoll(digits);
+    if (fs::path(p.format(n)).filename().string() != name) continue;  // "1.tif" for %03d
+    lo = lo < 0 ? n : std::min(lo, n);
+    hi = std::max(hi, n);
+  }
+  if (ec) throw needRange("cannot list " + folder.string() + " (" + ec.message() + ")");
+  if (lo < 0) throw needRange("no file in " + folder.string() + " matches it");
+  return {int(lo), int(hi)};
+}
+
 }  // namespace
 
 long long sliceCount(const std::pair<int, int>& range) {
@@ -117,20 +170,36 @@ long long sliceCount(const std::pair<int, int>& range) {
 
 std::vector<SliceFile> listSliceFolder(const std::string& folder, const SliceRange& range) {
   if (range) sliceCount(*range);
-  std::vector<SliceFile> files;
+  // By what follows the number: the largest group is the stack (CThead.1 ... beside a
+  // notes2.txt, or 001.tif ... beside a readme).
+  std::map<std::string, std::vector<SliceFile>> bySuffix;
   std::error_code ec;
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
     std::error_code typeError;
     if (!it->is_regular_file(typeError)) continue;
     const std::string name = it->path().filename().string();
-    if (auto n = trailingNumber(name)) files.push_back({*n, it->path().string()});
+    if (auto n = numberedName(name))
+      bySuffix[n->suffix].push_back({n->number, it->path().string()});
   }
   if (ec) throw inputError(folder + ": cannot list the folder (" + ec.message() + ")");
-  if (files.empty()) {
+  if (bySuffix.empty()) {
     throw inputError(folder +
                      ": no slice files in this folder (raw slices are files whose names end in "
-                     "their number, like CThead.1)");
+                     "their number, like CThead.1 or 001.raw)");
   }
+  auto largest = bySuffix.begin();
+  for (auto it = bySuffix.begin(); it != bySuffix.end(); ++it)
+    if (it->second.size() > largest->second.size()) largest = it;
+  for (const auto& [suffix, group] : bySuffix) {
+    if (&group != &largest->second && group.size() == largest->second.size()) {
+      const auto shown = [](const std::string& x) { return x.empty() ? "no extension" : x; };
+      throw inputError(folder + ": " + std::to_string(group.size()) + " numbered files each with " +
+                       shown(largest->first) + " and " + shown(suffix) +
+                       ": which are the slices? Give a pattern such as " + folder + "/%03d" +
+                       largest->first + ", or move the others out");
+    }
+  }
+  std::vector<SliceFile> files = std::move(largest->second);
   std::sort(files.begin(), files.end(),
             [](const SliceFile& a, const SliceFile& b) { return a.number < b.number; });
   for (size_t i = 1; i < files.size(); ++i) {
@@ -161,13 +230,9 @@ std::vector<SliceFile> listSliceFolder(const std::string& folder, const SliceRan
   return files;
 }
 
-std::vector<SliceFile> listSlicePattern(const std::string& pattern, const SliceRange& range) {
+std::vector<SliceFile> listSlicePattern(const std::string& pattern, const SliceRange& given) {
   const Pattern p = parsePattern(pattern);
-  if (!range) {
-    throw inputError(pattern +
-                     ": a slice pattern needs the slice numbers: give --raw-range FIRST-LAST "
-                     "(e.g. 1-113)");
-  }
+  const SliceRange range = given ? given : patternRange(p, pattern);
   sliceCount(*range);
   const auto [first, last] = *range;
   // Stops at the first gap: a range of two billion names must not be walked when slice 4

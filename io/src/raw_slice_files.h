@@ -13,13 +13,16 @@ struct SliceFile {
 };
 using SliceRange = std::optional<std::pair<int, int>>;
 
-// Every regular file of `folder` whose name ends in a number, ordered by that number (not
-// by text: CThead.10 follows CThead.9), limited to `range` when given. Throws Error (Input)
-// for an empty folder, two files with one number, or a gap in the numbers.
+// Every regular file of `folder` whose name ends in a number, or has a number before a short
+// extension (001.tif), ordered by that number (not by text: CThead.10 follows CThead.9),
+// limited to `range` when given. Of names that end differently (.tif, .txt) the largest
+// group is the stack. Throws Error (Input) for an empty folder, two files with one number,
+// two groups of one size, or a gap in the numbers.
 std::vector<SliceFile> listSliceFolder(const std::string& folder, const SliceRange& range);
 
 // The files named by `pattern` (one %d or %0Nd; %% is a literal %) for every number in
-// `range`, which is required. Throws Error (Input) for a bad pattern or a missing file.
+// `range`; without one, from the lowest to the highest number of the files in the pattern's
+// folder that it names. Throws Error (Input) for a bad pattern or a missing file.
 std::vector<SliceFile> listSlicePattern(const std::string& pattern, const SliceRange& range);
 
 // Number of slices `range` names; throws Error (Input) if first > last or first < 0.

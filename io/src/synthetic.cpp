@@ -104,6 +104,7 @@ Volume makeSyntheticVolume(const SyntheticSpec& spec) {
   v.spacingMm = glm::dvec3(1.0);
   v.originMm = -centre(spec);
   v.sourceType = std::string("synthetic ") + toString(spec.shape);
+  v.unit = "value";  // test shapes, not HU: they open with a look from their own values
   // A power-of-two slope: the ramp's values (multiples of 50) stay exact.
   v.slope = std::ldexp(1.0, int(std::ceil(std::log2(storedMaxAbs(spec) / 32000.0))));
   v.voxels.resize(v.voxelCount());

@@ -1,5 +1,9 @@
 // Series discovery, listing and the default choice (issue 3: ct-philips-phantom and
 // folders without any volume).
+#include <filesystem>
+#include <fstream>
+#include <random>
+
 #include "test_data.h"
 
 namespace voxray {
@@ -131,6 +135,49 @@ TEST(DicomSeriesDiscovery, MissingPathSaysSo) {
 TEST(DicomSeriesDiscovery, NonDicomFileIsRefusedNotCrashed) {
   std::string m = test::importError(dicomPath("ct-ge-tilt/LICENSE"));
   EXPECT_NE(m.find("no DICOM image found"), std::string::npos) << m;
+}
+
+// Issue 41 item 8: "401 file(s) skipped: not a DICOM file" for the .tif files of a mixed
+// folder; the note says what they are and how to open them.
+class MixedFolder : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("voxray-mixed-" + std::to_string(std::random_device{}()));
+    std::filesystem::create_directories(dir_);
+    for (int k = 1; k <= 3; ++k) write("slice" + std::to_string(k) + ".tif", {'I', 'I', '*', 0});
+    write("big-endian.tif", {'M', 'M', 0, '*'});
+    write("photo.png", {char(0x89), 'P', 'N', 'G'});
+    write("notes.txt", {'h', 'i'});
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  void write(const std::string& name, std::vector<char> bytes) {
+    bytes.resize(200, 0);  // past a DICOM preamble, so no reader stops at the length
+    std::ofstream(dir_ / name, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(MixedFolder, SkippedFilesSayWhatTheyAre) {
+  // Alone: the refusal says what the folder holds.
+  const std::string m = test::importError(dir_.string());
+  EXPECT_NE(m.find("no DICOM image found in 6 file(s) (1 PNG image (not DICOM): "),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("; 4 TIFF images (not DICOM): if uncompressed, open the folder as a raw slice "
+                   "stack (File > Open raw volume"),
+            std::string::npos)
+      << m;
+  // Beside a DICOM series: listed, and each kind counted with what to do.
+  for (const char* slice : {"01.dcm", "02.dcm"})
+    std::filesystem::copy_file(dicomPath(std::string("ct-ge-tilt/") + slice), dir_ / slice);
+  const DicomListing l = listDicomSeries(dir_.string());
+  EXPECT_EQ(l.filesSkipped, 6);
+  EXPECT_TRUE(anyContains(l.notes,
+                          "4 TIFF images (not DICOM): if uncompressed, open the folder "
+                          "as a raw slice stack (File > Open raw volume"));
+  EXPECT_TRUE(anyContains(l.notes, "1 PNG image (not DICOM): convert the stack to NIfTI"));
+  EXPECT_TRUE(anyContains(l.notes, "1 file(s) skipped: not a DICOM file"));  // the text file
 }
 
 }  // namespace

@@ -65,6 +65,23 @@ TEST(RawSizeCheck, AFolderWithOtherThanZFilesDoesNotMatch) {
   EXPECT_TRUE(checkRawSize(kCtHead, l).matches());
 }
 
+// Issue 41 item 8: the dialog checks a pattern as the importer reads it, its range found
+// by listing its folder; and a folder of 001.tif ... is a stack.
+TEST(RawSizeCheck, PatternAndNumberedNamesWithAnExtension) {
+  TempDir dir;
+  for (int k = 1; k <= 3; ++k) zeros(dir, "00" + std::to_string(k) + ".tif", 32);
+  RawLayout l;
+  l.dims = {4, 4, 0};
+  for (const std::string& input : {dir.file("%03d.tif"), dir.path().string()}) {
+    RawSizeCheck c = checkRawSize(input, l);
+    EXPECT_TRUE(c.matches()) << input << ": " << c.problem;
+    EXPECT_EQ(c.files, 3) << input;
+    ASSERT_TRUE(readMiddleRawSlice(input, l).has_value()) << input;
+  }
+  l.dims = {4, 3, 0};
+  EXPECT_EQ(sizeMismatchText(checkRawSize(dir.file("%03d.tif"), l)), "001.tif is 8 bytes too long");
+}
+
 // One short file in the middle of a stack: the check names it, as the importer does.
 TEST(RawSizeCheck, NamesTheFirstSliceFileWhoseSizeIsOff) {
   TempDir dir;

@@ -147,11 +147,49 @@ TEST(RawErrors, AbsurdDimsRefusedBeforeAllocating) {
               HasSubstr("are more than"));
 }
 
-TEST(RawErrors, PatternNeedsRange) {
-  EXPECT_THAT(errorMessage([&] {
-                importRaw(dataPath("stanford/CThead/CThead.%d"), i16Layout(256, 256, 0));
-              }),
-              HasSubstr("needs the slice numbers: give --raw-range FIRST-LAST"));
+// Issue 41 item 8: a pattern without --raw-range was refused; its folder tells the range.
+// 0013.tif (four digits) is not %03d's and 999.txt is not .tif: neither widens it.
+TEST(RawErrors, PatternFindsItsRangeInItsFolder) {
+  test::TempDir dir;
+  for (int n = 7; n <= 12; ++n) {
+    char name[16];
+    std::snprintf(name, sizeof name, "%03d.tif", n);
+    test::writeBytes(dir.file(name), std::vector<uint8_t>(32, uint8_t(n)));
+  }
+  test::writeBytes(dir.file("0013.tif"), std::vector<uint8_t>(32));
+  test::writeBytes(dir.file("999.txt"), std::vector<uint8_t>(32));
+  const Volume v = importRaw(dir.file("%03d.tif"), i16Layout(4, 4, 0));
+  EXPECT_EQ(v.dims, glm::ivec3(4, 4, 6));
+  EXPECT_EQ(v.at(0, 0, 0), int16_t(0x0707));
+  EXPECT_EQ(v.at(3, 3, 5), int16_t(0x0c0c));
+  // A gap inside the listed range is still a missing slice, not a shorter stack.
+  std::filesystem::remove(dir.file("009.tif"));
+  EXPECT_THAT(errorMessage([&] { importRaw(dir.file("%03d.tif"), i16Layout(4, 4, 0)); }),
+              HasSubstr("slice 9 missing between 008.tif and 010.tif"));
+  // Nothing matches: the message says so, and how to give the numbers.
+  EXPECT_THAT(errorMessage([&] { importRaw(dir.file("img%d.raw"), i16Layout(4, 4, 0)); }),
+              HasSubstr("no file in " + dir.path().string() +
+                        " matches it; give the slice numbers with --raw-range FIRST-LAST"));
+}
+
+// Issue 41 item 8: a folder of 001.tif ... was refused ("no slice files in this folder").
+// The number before a short extension counts; the largest group of one ending is the stack.
+TEST(RawErrors, FolderOfNumberedNamesWithAnExtension) {
+  test::TempDir dir;
+  for (int n = 1; n <= 5; ++n) {
+    char name[16];
+    std::snprintf(name, sizeof name, "%03d.tif", n);
+    test::writeBytes(dir.file(name), std::vector<uint8_t>(32, uint8_t(n)));
+  }
+  test::writeBytes(dir.file("notes2.txt"), {'h', 'i'});  // numbered too, but alone
+  test::writeBytes(dir.file("readme"), {'h', 'i'});
+  const Volume v = importRaw(dir.path().string(), i16Layout(4, 4, 0));
+  EXPECT_EQ(v.dims, glm::ivec3(4, 4, 5));
+  EXPECT_EQ(v.at(0, 0, 4), int16_t(0x0505));
+  // Two endings with as many files: which is the stack is not guessed.
+  for (int n = 1; n <= 5; ++n) test::writeBytes(dir.file(std::to_string(n) + ".raw"), {0, 0});
+  EXPECT_THAT(errorMessage([&] { importRaw(dir.path().string(), i16Layout(4, 4, 0)); }),
+              HasSubstr("5 numbered files each with .raw and .tif: which are the slices?"));
 }
 
 TEST(RawErrors, BadPatternAndRange) {

@@ -34,7 +34,7 @@ TEST(RawRealData, CtHeadFolder) {
   EXPECT_EQ(v.slope, 1.0);
   EXPECT_EQ(v.intercept, 0.0);
   EXPECT_EQ(v.sourceType, "i16");
-  EXPECT_EQ(v.unit, "HU");
+  EXPECT_EQ(v.unit, "value");  // no rescale given: nothing says these are HU
   EXPECT_TRUE(v.warnings.empty());
   const ValueRange r = storedRange(v);
   EXPECT_EQ(r.min, 0);

@@ -51,4 +51,57 @@ TEST(OrientationMarker, FollowsTheCamera) {
   EXPECT_NEAR(find(above, 'A').tip.y, 1.0, 1e-6);
 }
 
+// Issue 41 item 8: the letters crowded while rotating: an arm pointing nearly at the viewer
+// put its letter on the centre, over the others'. Such letters hide, fade in as the arm
+// turns side-on, and no two shown letters overlap, at any camera.
+TEST(OrientationMarker, EndOnLettersHideAndFadeIn) {
+  auto front = markerFor(0.0, 0.0);
+  EXPECT_EQ(find(front, 'A').labelAlpha, 0.0);
+  EXPECT_EQ(find(front, 'P').labelAlpha, 0.0);
+  for (char c : {'L', 'R', 'S', 'I'}) EXPECT_EQ(find(front, c).labelAlpha, 1.0) << c;
+  const MarkerLayout layout;
+  EXPECT_NEAR(find(front, 'L').label.x, layout.armPx + layout.gapPx, 1e-9);
+  EXPECT_NEAR(find(front, 'S').label.y, -(layout.armPx + layout.gapPx), 1e-9);
+
+  // Turned 20 degrees: A's arm is 0.34 long; its letter sat 13 px from the centre, among
+  // the arms. Hidden now. At 30 degrees (0.5) it fades in, at 45 (0.71) it is opaque.
+  EXPECT_EQ(find(markerFor(20.0, 0.0), 'A').labelAlpha, 0.0);
+  EXPECT_NEAR(find(markerFor(30.0, 0.0), 'A').labelAlpha, 0.6, 1e-9);
+  // At 45 degrees A's arm lies on R's on screen: both letters show, one turned aside.
+  const auto diagonal = markerFor(45.0, 0.0);
+  const MarkerAxis a = find(diagonal, 'A'), r = find(diagonal, 'R');
+  EXPECT_NEAR(glm::length(a.tip - r.tip), 0.0, 1e-9);
+  EXPECT_EQ(a.labelAlpha, 1.0);
+  EXPECT_EQ(r.labelAlpha, 1.0);
+  EXPECT_GE(glm::length(a.label - r.label), layout.letterPx);
+}
+
+TEST(OrientationMarker, ShownLettersNeverOverlap) {
+  const MarkerLayout layout;
+  int turnedAside = 0, checked = 0;
+  for (double azimuth = -180.0; azimuth < 180.0; azimuth += 7.0)
+    for (double elevation = -85.0; elevation <= 85.0; elevation += 11.0) {
+      const auto m = markerFor(azimuth, elevation);
+      for (const MarkerAxis& a : m) {
+        const double length = glm::length(a.tip);
+        if (length < kMarkerHideLength) {
+          EXPECT_EQ(a.labelAlpha, 0.0);
+        }
+        if (a.labelAlpha <= 0.0) continue;
+        // Beyond its own arm's tip, within 40 degrees of where the arm points.
+        const double cosine = glm::dot(a.label, a.tip) / (glm::length(a.label) * length);
+        EXPECT_GE(cosine, std::cos(glm::radians(40.0)) - 1e-9) << a.letter;
+        turnedAside += cosine < 1.0 - 1e-9;
+        for (const MarkerAxis& b : m)
+          if (&a != &b && b.labelAlpha > 0.0) {
+            ++checked;
+            EXPECT_GE(glm::length(a.label - b.label), layout.letterPx - 1e-9)
+                << a.letter << b.letter << " at " << azimuth << "/" << elevation;
+          }
+      }
+    }
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(turnedAside, 0);  // the rule was needed: some letters had to move
+}
+
 }  // namespace

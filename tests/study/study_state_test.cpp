@@ -203,7 +203,8 @@ TEST(StudyState, InitialWindowFromTheFileThenModality) {
   EXPECT_DOUBLE_EQ(w.wl.width, 800.0);
   EXPECT_DOUBLE_EQ(w.wl.level, 610.0);
   EXPECT_NE(w.source.find("value range (MR"), std::string::npos);
-  mr.modality.clear();  // raw data: nothing says what it is
+  mr.modality.clear();  // raw data without a rescale: nothing says what it is
+  mr.unit = "value";    // as the raw importer labels it
   EXPECT_NE(initialWindow(mr).source.find("modality unknown"), std::string::npos);
 }
 

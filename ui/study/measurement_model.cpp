@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iterator>
 
+#include "value_look.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -142,7 +143,7 @@ std::string measurementText(const Volume& v, const Measurement& m) {
   }
   const RoiStats s = measurementStats(v, m);
   return "mean " + number(s.mean, 1) + "  SD " + number(s.sd, 1) + "  min " + number(s.min, 0) +
-         "  max " + number(s.max, 0) + " " + v.unit + ", " + number(s.areaMm2, 1) + " mm², " +
+         "  max " + number(s.max, 0) + " " + valueUnit(v) + ", " + number(s.areaMm2, 1) + " mm², " +
          std::to_string(s.pixels) + " px";
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "value_look.h"
 #include "voxray/engine/measure.h"
 #include "voxray/io/volume.h"
 
@@ -80,7 +81,7 @@ namespace voxray {
 
 CursorProbe probeAt(const Volume& v, const glm::dvec3& voxel, Interp interp) {
   CursorProbe p;
-  p.unit = v.unit;
+  p.unit = valueUnit(v);  // HU only for values that are HU
   p.voxel = glm::ivec3(glm::round(voxel));
   const glm::dvec3 at = interp == Interp::Nearest ? glm::dvec3(p.voxel) : voxel;
   p.patientMm = voxelToPatient(v, at);

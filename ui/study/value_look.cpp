@@ -24,7 +24,22 @@ int16_t storedQuantile(const std::vector<uint64_t>& counts, uint64_t total, doub
 
 }  // namespace
 
-bool valuesAreHu(const Volume& v) { return v.modality == "CT"; }
+bool valuesAreHu(const Volume& v) {
+  // An MR or a PET is never HU, whatever its unit field says (Volume's default is "HU").
+  return v.modality == "CT" || (v.modality.empty() && v.unit == "HU");
+}
+
+std::string valueUnit(const Volume& v) {
+  if (valuesAreHu(v)) return "HU";
+  return v.unit.empty() ? "value" : v.unit;
+}
+
+std::string valueUnitLabel(const Volume& v) {
+  // "MR signal (scanner units)" and the like say only that the unit is not known.
+  constexpr size_t kLabelChars = 8;
+  std::string unit = valueUnit(v);
+  return unit.size() <= kLabelChars && unit.find("unit") == std::string::npos ? unit : "value";
+}
 
 ValueLook valueLook(const Volume& v) {
   std::vector<uint64_t> counts(size_t(1) << 16, 0);

@@ -5,6 +5,7 @@
 // threshold of 400 may lie above every voxel and the 3D view opens empty. Such a volume
 // opens with a classification from its own value histogram instead, and the user's HU look
 // is kept for the next CT.
+#include <string>
 #include <vector>
 
 #include "no_qt.h"
@@ -14,8 +15,16 @@ namespace voxray {
 
 struct Volume;
 
-// CT: its values are HU.
+// Its values are HU: a CT, or a volume of unknown modality whose unit says HU (raw data with
+// the user's rescale to HU).
 bool valuesAreHu(const Volume& v);
+
+// The unit a readout puts after a value of V: "HU" when valuesAreHu, else the unit the
+// source states ("MR signal (scanner units)"), or "value" when it states none. Never "HU"
+// for an MR or an unscaled raw file.
+std::string valueUnit(const Volume& v);
+// valueUnit short enough for a control's suffix: a long one ("scanner units") is "value".
+std::string valueUnitLabel(const Volume& v);
 
 struct ValueLook {
   // Physical values at the 1st and the 99.5th percentile of the voxels: the background

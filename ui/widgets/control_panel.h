@@ -9,12 +9,13 @@
 
 namespace voxray::ui {
 
-QGroupBox* makeRenderGroup(RenderStateModel& m);
+// DOC: the open volume, whose unit the value controls show (HU for a CT).
+QGroupBox* makeRenderGroup(RenderStateModel& m, VolumeDocument& doc);
 QGroupBox* makeQualityGroup(RenderStateModel& m);
 QGroupBox* makeCameraGroup(RenderStateModel& m);
 QGroupBox* makeClipGroup(AppModels& models);
 QGroupBox* makeLightGroup(AppModels& models);
-QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state);
+QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeDocument& doc);
 QGroupBox* makeMprGroup(CrosshairModel& crosshair, RenderStateModel& state);  // panel_mpr.cpp
 
 // A check box named NAME bound both ways to one of the 3D view's overlays (a session sets

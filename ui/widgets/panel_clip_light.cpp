@@ -19,6 +19,7 @@
 #include "light_gizmo.h"
 #include "lighting_meter.h"
 #include "spec_widgets.h"
+#include "value_look.h"
 #include "voxray/engine/quality.h"
 
 namespace voxray::ui {
@@ -244,12 +245,12 @@ QGroupBox* makeLightGroup(AppModels& models) {
   return box;
 }
 
-QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state) {
+QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state, VolumeDocument& doc) {
   auto* box = new QGroupBox("Slices");
   auto* form = new QFormLayout(box);
   auto* preset = new QComboBox;
   preset->setObjectName("windowLevelPreset");
-  preset->setToolTip("Window/level of the slice views (width/level in HU)");
+  preset->setToolTip("Window/level of the slice views (CT presets: width/level in HU)");
   preset->addItem("(custom)");
   for (const auto& p : windowLevelPresets())
     preset->addItem(
@@ -261,8 +262,13 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state) {
   auto* source = new QLabel;
   source->setObjectName("windowLevelSource");
   source->setWordWrap(true);
-  auto refresh = [preset, width, level, source, &wl] {
+  auto refresh = [preset, width, level, source, &wl, &doc] {
     QSignalBlocker b1(preset), b2(width), b3(level);
+    // The volume's unit (value_look.h): HU only for values that are HU.
+    const QString unit = " " + QString::fromStdString(doc.empty() ? std::string("HU")
+                                                                  : valueUnitLabel(*doc.volume()));
+    width->setSuffix(unit);
+    level->setSuffix(unit);
     width->setValue(wl.value().width);
     level->setValue(wl.value().level);
     source->setText(QString::fromStdString(wl.source()));
@@ -275,6 +281,7 @@ QGroupBox* makeSliceGroup(WindowLevelModel& wl, RenderStateModel& state) {
   };
   refresh();
   onModelChange<>(box, wl.changed, refresh);
+  onModelChange<>(box, doc.changed, refresh);
   QObject::connect(preset, &QComboBox::currentIndexChanged, box, [&wl](int i) {
     if (i > 0) wl.applyPreset(windowLevelPresets()[size_t(i - 1)].name);
   });
@@ -312,10 +319,10 @@ QScrollArea* makeControlPanel(AppModels& models) {
   // Folded at start: the light (set once and left) and the standard views (the mouse and R
   // do the same), so that the rest fits 1920x1080 unscrolled.
   const std::pair<QGroupBox*, bool> groups[] = {
-      {makeRenderGroup(models.render), true},
+      {makeRenderGroup(models.render, models.document), true},
       {makeQualityGroup(models.render), true},
       {makeCameraGroup(models.render), false},
-      {makeSliceGroup(models.windowLevel, models.render), true},
+      {makeSliceGroup(models.windowLevel, models.render, models.document), true},
       {makeClipGroup(models), true},
       {makeLightGroup(models), false},
       {makeMprGroup(models.crosshair, models.render), false}};

@@ -19,15 +19,21 @@
 #include "quality_choice.h"
 #include "render_controls.h"
 #include "spec_widgets.h"
+#include "value_look.h"
 #include "voxray/engine/transfer_function.h"
 
 namespace voxray::ui {
 
 namespace {
 
+// The unit of the open volume's values (valueUnit): HU before any volume, as the presets.
+QString unitOf(const VolumeDocument& doc) {
+  return QString::fromStdString(doc.empty() ? std::string("HU") : valueUnitLabel(*doc.volume()));
+}
+
 // The seed's shift slider: moves the preset's transfer function along HU, e.g. to show
 // bone at a lower density. Clicking the value sets it back to 0.
-QWidget* makePresetShiftRow(RenderStateModel& m) {
+QWidget* makePresetShiftRow(RenderStateModel& m, VolumeDocument& doc) {
   auto* row = new QWidget;
   auto* layout = new QHBoxLayout(row);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -36,21 +42,22 @@ QWidget* makePresetShiftRow(RenderStateModel& m) {
   slider->setRange(int(-kPresetShiftLimitHu), int(kPresetShiftLimitHu));
   slider->setSingleStep(10);
   slider->setPageStep(100);
-  slider->setToolTip("Move the preset's transfer function along HU");
+  slider->setToolTip("Move the preset's transfer function along the values (HU for a CT)");
   auto* value = new QPushButton;
   value->setObjectName("presetShiftReset");
   value->setFlat(true);
   value->setToolTip("Back to 0");
-  value->setFixedWidth(value->fontMetrics().horizontalAdvance("+1000 HU") + 12);
-  auto refresh = [slider, value, &m] {
+  value->setFixedWidth(value->fontMetrics().horizontalAdvance("+1000 value") + 12);
+  auto refresh = [slider, value, &m, &doc] {
     QSignalBlocker block(slider);
     slider->setValue(int(std::lround(m.params().presetShiftHu)));
-    value->setText(QString::asprintf("%+d HU", slider->value()));
+    value->setText(QString::asprintf("%+d ", slider->value()) + unitOf(doc));
   };
   refresh();
   onModelChange<unsigned>(slider, m.changed, [refresh](unsigned what) {
     if (what & kAppearance) refresh();
   });
+  onModelChange<>(slider, doc.changed, refresh);
   QObject::connect(slider, &QSlider::valueChanged, slider, [&m](int hu) { m.setPresetShift(hu); });
   QObject::connect(value, &QPushButton::clicked, value, [&m] { m.setPresetShift(0.0); });
   layout->addWidget(slider, 1);
@@ -71,7 +78,7 @@ QDoubleSpinBox* fieldSpin(RenderStateModel& m, const char* key, const char* name
 
 }  // namespace
 
-QGroupBox* makeRenderGroup(RenderStateModel& m) {
+QGroupBox* makeRenderGroup(RenderStateModel& m, VolumeDocument& doc) {
   auto* box = new QGroupBox("Rendering");
   auto* form = new QFormLayout(box);
 
@@ -86,7 +93,9 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   // for something not rendered. The preset's name is each item's data.
   auto* preset = new QComboBox;
   preset->setObjectName("preset");
-  preset->setToolTip("Transfer-function preset: which HU ranges show, in which colours");
+  preset->setToolTip(
+      "Transfer-function preset: which HU ranges show, in which colours (presets are made for "
+      "CT)");
   auto refreshPreset = [preset, &m] {
     QSignalBlocker block(preset);
     preset->clear();
@@ -121,7 +130,7 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
     }
   });
   form->addRow("Preset", preset);
-  form->addRow("Shift", makePresetShiftRow(m));
+  form->addRow("Shift", makePresetShiftRow(m, doc));
 
   auto* isoLo = fieldSpin(m, "iso", "isoLo", &RenderParams::isoLo);
   auto* isoHi = fieldSpin(m, "iso", "isoHi", &RenderParams::isoHi);
@@ -134,6 +143,13 @@ QGroupBox* makeRenderGroup(RenderStateModel& m) {
   auto* mipLevel = fieldSpin(m, "window", "mipLevel", &RenderParams::windowLevel);
   form->addRow("MIP window", mipWidth);
   form->addRow("MIP level", mipLevel);
+  // The specs say HU (the CT presets'); an MR or an unscaled raw volume has its own unit.
+  auto showUnit = [isoLo, isoHi, mipWidth, mipLevel, &doc] {
+    for (QDoubleSpinBox* spin : {isoLo, isoHi, mipWidth, mipLevel})
+      spin->setSuffix(" " + unitOf(doc));
+  };
+  showUnit();
+  onModelChange<>(box, doc.changed, showUnit);
   auto* gradient = makeParamCombo(m, kAppearance, "gradient");
   form->addRow("Gradient", gradient);
   form->addRow("Interpolation", makeParamCombo(m, kAppearance, "interp"));

@@ -81,7 +81,8 @@ RawImportDialog::RawImportDialog(QWidget* parent, const QString& startFolder, La
   auto* form = new QFormLayout;
   path_ = new QLineEdit;
   path_->setObjectName("path");
-  path_->setPlaceholderText("raw file, or folder of numbered slice files");
+  path_->setPlaceholderText(
+      "raw file, folder of numbered slice files, or a pattern such as slices/%03d.tif");
   auto* browseFile = new QPushButton("File…");
   auto* browseDir = new QPushButton("Slice folder…");
   auto* pathRow = new QHBoxLayout;

@@ -1,5 +1,7 @@
 #include "theme.h"
 
+#include <iterator>
+
 #include <QApplication>
 #include <QPalette>
 #include <QStyle>
@@ -32,14 +34,31 @@ QPalette darkPalette() {
   return p;
 }
 
+// The classes a platform theme may give palettes of their own (QPlatformTheme's
+// MenuBarPalette, MenuPalette): a light desktop's menu bar must not stay light in Dark.
+constexpr const char* kMenuClasses[] = {"QMenuBar", "QMenu"};
+
 struct Platform {
   QString style;
   QPalette palette;
+  QPalette menuPalettes[2];  // kMenuClasses' palettes as the platform gave them
 };
 
 const Platform& platform() {
-  static const Platform p{QApplication::style()->name(), QApplication::palette()};
+  static const Platform p{
+      QApplication::style()->name(),
+      QApplication::palette(),
+      {QApplication::palette(kMenuClasses[0]), QApplication::palette(kMenuClasses[1])}};
   return p;
+}
+
+// PALETTE for the whole application, the menu bar and menus by name: setting the
+// application's palette drops the class palettes, but a platform theme puts its own back
+// when the desktop's theme changes.
+void setPalettes(const QPalette& palette, const QPalette (&menus)[2]) {
+  QApplication::setPalette(palette);
+  for (size_t i = 0; i < std::size(kMenuClasses); ++i)
+    QApplication::setPalette(menus[i], kMenuClasses[i]);
 }
 
 }  // namespace
@@ -53,12 +72,12 @@ void applyTheme(const QString& name) {
   const Platform& system = platform();
   if (name == "Light" || name == "Dark") {
     QApplication::setStyle(QStyleFactory::create("Fusion"));
-    QApplication::setPalette(name == "Dark" ? darkPalette()
-                                            : QApplication::style()->standardPalette());
+    const QPalette p = name == "Dark" ? darkPalette() : QApplication::style()->standardPalette();
+    setPalettes(p, {p, p});
     return;
   }
   QApplication::setStyle(QStyleFactory::create(system.style));
-  QApplication::setPalette(system.palette);
+  setPalettes(system.palette, system.menuPalettes);
 }
 
 }  // namespace voxray::ui

@@ -90,9 +90,12 @@ void drawLightHandle(QPainter& p, const Volume& v, const RenderParams& params,
 }
 
 void drawOrientationMarker(QPainter& p, const ViewGeometry& g, QSizeF size) {
-  const double arm = std::clamp(std::min(size.width(), size.height()) * 0.06, 18.0, 40.0);
+  MarkerLayout layout;
+  layout.armPx = std::clamp(std::min(size.width(), size.height()) * 0.06, 18.0, 40.0);
+  layout.letterPx = std::max(16.0, double(p.fontMetrics().height()));
+  const double arm = layout.armPx;
   const QPointF centre(arm + 14.0, size.height() - arm - 14.0);
-  for (const MarkerAxis& a : orientationMarker(g)) {
+  for (const MarkerAxis& a : orientationMarker(g, layout)) {
     // The slice planes' colours: the L-R axis is the sagittal plane's normal, and so on.
     const int axis = a.letter == 'L' || a.letter == 'R'   ? 0
                      : a.letter == 'P' || a.letter == 'A' ? 1
@@ -102,9 +105,12 @@ void drawOrientationMarker(QPainter& p, const ViewGeometry& g, QSizeF size) {
     const QPointF tip = centre + QPointF(a.tip.x, a.tip.y) * arm;
     p.setPen(QPen(c, 2.0));
     p.drawLine(centre, tip);
-    if (glm::length(a.tip) < 0.3) continue;  // end-on: the letter would sit on the centre
-    const QPointF label = centre + QPointF(a.tip.x, a.tip.y) * (arm + 9.0);
-    p.drawText(QRectF(label.x() - 8.0, label.y() - 8.0, 16.0, 16.0), Qt::AlignCenter,
+    if (a.labelAlpha <= 0.0) continue;  // end-on, or no room beside the longer arms' letters
+    c.setAlphaF(float(a.labelAlpha));
+    p.setPen(c);
+    const QPointF label = centre + QPointF(a.label.x, a.label.y);
+    const double half = 0.5 * layout.letterPx;
+    p.drawText(QRectF(label.x() - half, label.y() - half, 2 * half, 2 * half), Qt::AlignCenter,
                QString(QChar(a.letter)));
   }
 }

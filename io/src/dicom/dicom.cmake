@@ -11,6 +11,7 @@ target_sources(voxray_io PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/file_scan.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frame_header.cpp
   ${CMAKE_CURRENT_LIST_DIR}/j2k_decode.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/not_dicom.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pixel_decode.cpp
   ${CMAKE_CURRENT_LIST_DIR}/resample.cpp
   ${CMAKE_CURRENT_LIST_DIR}/secondary_capture.cpp

@@ -13,6 +13,7 @@
 
 #include "arrived_files.h"
 #include "file_scan.h"
+#include "not_dicom.h"
 #include "pixel_decode.h"
 #include "resample.h"
 #include "series_grouping.h"
@@ -53,6 +54,7 @@ Scan scan(const std::string& input, const LoadOptions& options, const ArrivedFil
   const auto& files = s.input.files;
   std::vector<std::vector<FrameHeader>> perFile(files.size());
   std::map<std::string, int> skippedWhy;
+  std::map<std::string, int> notDicomKinds;  // files that are something Voxray can name
   std::mutex mutex;
   std::atomic<size_t> done{0};
   parallelFor(
@@ -63,8 +65,10 @@ Scan scan(const std::string& input, const LoadOptions& options, const ArrivedFil
           perFile[i] = early->frames;
           for (auto& f : perFile[i]) f.path = files[i];  // as the folder names it
         } else if (readFrameHeaders(files[i], perFile[i], why) != ScanResult::Image) {
+          const std::string kind =
+              why == "not a DICOM file" ? notDicomKind(files[i]) : std::string();
           std::lock_guard lock(mutex);
-          ++skippedWhy[why];
+          ++(kind.empty() ? skippedWhy[why] : notDicomKinds[kind]);
         }
         size_t d = ++done;
         if (d % 16 == 0 || d == files.size())
@@ -75,13 +79,20 @@ Scan scan(const std::string& input, const LoadOptions& options, const ArrivedFil
   std::vector<FrameHeader> frames;
   for (auto& list : perFile)
     for (auto& f : list) frames.push_back(std::move(f));
+  for (auto& [kind, count] : notDicomKinds) {
+    s.skipped += count;
+    s.notes.push_back(notDicomNote(kind, count));
+  }
   for (auto& [why, count] : skippedWhy) {
     s.skipped += count;
     s.notes.push_back(std::to_string(count) + " file(s) skipped: " + why);
   }
   s.notes.insert(s.notes.end(), s.input.notes.begin(), s.input.notes.end());
   if (frames.empty()) {
-    std::string detail = s.notes.empty() ? std::string() : " (" + s.notes.front() + ")";
+    // What the folder holds instead, each kind once (a few: TIFF, PNG, not DICOM ...).
+    std::string detail;
+    for (size_t i = 0; i < s.notes.size() && i < 3; ++i) detail += (i ? "; " : "") + s.notes[i];
+    if (!detail.empty()) detail = " (" + detail + ")";
     throw inputError(input + ": no DICOM image found in " + std::to_string(files.size()) +
                      " file(s)" + detail + ". Choose a DICOM file, folder or DICOMDIR.");
   }

@@ -25,6 +25,7 @@ find_library(TEEM_LIBRARY teem REQUIRED)
 add_library(voxray_io_formats OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/metaimage_read.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nifti_header_check.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/nifti_hints.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nifti_read.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nrrd_header_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nrrd_read.cpp

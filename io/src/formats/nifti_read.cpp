@@ -1,12 +1,14 @@
 #include "nifti_read.h"
 
 #include "nifti_header_check.h"
+#include "nifti_hints.h"
 
 #include <nifti2_io.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 
@@ -115,6 +117,12 @@ SampleGrid readNifti(const std::string& path) {
     g.decoding.intercept = n.scl_inter;
   }
   chooseGeometry(g, n, path);
+  // The library ends both with a NUL; strnlen keeps a damaged one from running on.
+  const ValueHint hint =
+      niftiValueHint(std::string(n.descrip, strnlen(n.descrip, sizeof n.descrip)),
+                     std::string(n.intent_name, strnlen(n.intent_name, sizeof n.intent_name)));
+  g.modality = hint.modality;
+  if (!hint.unit.empty()) g.unit = hint.unit;
   if (volumes > 1)
     g.warnings.push_back("the file holds " + std::to_string(volumes) +
                          " volumes (4D: time points, phases or diffusion directions); this is " +

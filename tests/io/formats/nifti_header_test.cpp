@@ -203,5 +203,33 @@ TEST(FormatsNifti, ShearedSformFallsBackToTheQform) {
   EXPECT_THAT(m, testing::HasSubstr("sheared"));
 }
 
+// Issue 41 item 2: NIfTI has no modality field; a header whose descrip or intent_name says
+// CT or HU, PET or SUV, MR, names it, conservatively (a whole word, nothing contradicting).
+TEST(FormatsNifti, DescripAndIntentNameHintTheModalityAndUnit) {
+  struct Case {
+    std::string descrip, intentName, modality, unit;
+  };
+  const Case cases[] = {
+      {"", "", "", "scanner units"},  // nothing said: unknown, as before
+      {"CT head 1.25 mm", "", "CT", "HU"},
+      {"", "HU", "CT", "HU"},
+      {"values in Hounsfield units", "", "CT", "HU"},
+      {"PET/CT FDG", "SUVbw", "PT", "SUV"},  // a PET/CT's PET image says CT too
+      {"PET", "", "PT", "scanner units"},
+      {"T1w MPRAGE", "", "MR", "scanner units"},
+      {"MR after CT", "", "", "scanner units"},           // contradicting: nothing is claimed
+      {"Hu Wei, sub-01", "", "", "scanner units"},        // a name, not the unit
+      {"ACT pipeline; Doctor", "", "", "scanner units"},  // CT only as a whole word
+  };
+  for (const Case& c : cases) {
+    NiftiSpec s;
+    s.descrip = c.descrip;
+    s.intentName = c.intentName;
+    const Volume v = writeAndLoad(s);
+    EXPECT_EQ(v.modality, c.modality) << c.descrip << " | " << c.intentName;
+    EXPECT_EQ(v.unit, c.unit) << c.descrip << " | " << c.intentName;
+  }
+}
+
 }  // namespace
 }  // namespace voxray

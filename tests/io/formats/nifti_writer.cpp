@@ -2,6 +2,7 @@
 
 #include <nifti2_io.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <utility>
@@ -60,6 +61,9 @@ void writeNifti(const std::string& path, const NiftiSpec& spec) {
   nim->scl_slope = spec.sclSlope;
   nim->scl_inter = spec.sclInter;
   nim->xyz_units = spec.xyzUnits;
+  std::snprintf(nim->descrip, sizeof nim->descrip, "%s", spec.descrip.c_str());
+  std::snprintf(nim->intent_name, sizeof nim->intent_name, "%s", spec.intentName.c_str());
+  nim->intent_code = spec.intentCode;
   if (nifti_set_filenames(nim, path.c_str(), 0, 1) != 0) {
     nifti_image_free(nim);
     throw std::runtime_error("writeNifti: bad file name " + path);

@@ -19,7 +19,9 @@ struct NiftiSpec {
   double qfac = 1.0;
   double pixdim[3] = {1, 1, 1};
   double sclSlope = 0.0, sclInter = 0.0;
-  int xyzUnits = 2;  // NIFTI_UNITS_MM
+  int xyzUnits = 2;                 // NIFTI_UNITS_MM
+  std::string descrip, intentName;  // free text, up to 79 and 15 characters
+  int intentCode = 0;
 };
 
 // Writes SPEC to PATH (.nii or .nii.gz). Throws std::runtime_error when the library cannot.

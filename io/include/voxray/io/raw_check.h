@@ -23,7 +23,8 @@ struct RawSizeCheck {
   }
 };
 
-// INPUT: a single raw file or a folder of numbered slice files (limited to layout.range).
+// INPUT: a single raw file, a folder of numbered slice files or a pattern such as
+// slices/%03d.tif (limited to layout.range; a pattern without one: every file it names).
 // Never throws.
 RawSizeCheck checkRawSize(const std::string& input, const RawLayout& layout);
 

@@ -42,6 +42,11 @@ struct RawFeedback {
 };
 Volume importRaw(const std::string& input, const RawLayout& layout, const RawFeedback& feedback);
 
+// The unit of a raw volume's values: raw files carry none. "HU" once the user gave a rescale
+// (anything but slope 1, intercept 0: the rescale field and --raw-rescale say "to HU"),
+// else "value", so that an MR or an unscaled stack is never labelled HU.
+std::string rawValueUnit(const RawLayout& layout);
+
 SampleType parseSampleType(const std::string& s);  // u8, i16, u16, f32
 ByteOrder parseByteOrder(const std::string& s);    // big, little
 const char* toString(SampleType t);
