@@ -111,13 +111,39 @@ ClContext::~ClContext() = default;
 
 const DeviceInfo& ClContext::device() const { return impl_->info; }
 
-cl::Kernel ContextImpl::kernel(const std::string& sourceName, const std::string& entry,
-                               const std::string& options) {
+void ClContext::prebuild(const std::string& sourceName, const std::string& options) {
+  impl_->program(sourceName, options);
+}
+
+int ClContext::programsBuilt() const { return impl_->programsBuilt(); }
+
+int ContextImpl::programsBuilt() {
   std::lock_guard<std::mutex> lock(mutex_);
-  std::string key = sourceName + "|" + options;
+  return int(programs_.size());
+}
+
+cl::Program ContextImpl::program(const std::string& sourceName, const std::string& options) {
+  const std::string key = sourceName + "|" + options;
+  std::unique_lock<std::mutex> lock(mutex_);
+  built_.wait(lock, [&] { return building_.count(key) == 0; });
   auto it = programs_.find(key);
-  if (it == programs_.end()) {
-    cl::Program program(context, kernelSource(sourceName));
+  if (it != programs_.end()) return it->second;
+  building_.insert(key);
+  lock.unlock();
+  struct Done {  // wakes the waiters whether the build succeeded or threw
+    ContextImpl& c;
+    const std::string& key;
+    ~Done() {
+      {
+        std::lock_guard<std::mutex> l(c.mutex_);
+        c.building_.erase(key);
+      }
+      c.built_.notify_all();
+    }
+  };
+  Done done{*this, key};
+  cl::Program program(context, kernelSource(sourceName));
+  {
     try {
       program.build({device}, options.c_str());
     } catch (const cl::Error& e) {
@@ -130,9 +156,16 @@ cl::Kernel ContextImpl::kernel(const std::string& sourceName, const std::string&
           clErrorMessage("clBuildProgram(" + sourceName + " " + options + ")", e.err()) +
           "\nbuild log for " + info.name + ":\n" + log);
     }
-    it = programs_.emplace(key, program).first;
+    std::lock_guard<std::mutex> l(mutex_);
+    programs_.emplace(key, program);
   }
-  return clCall([&] { return cl::Kernel(it->second, entry.c_str()); });
+  return program;
+}
+
+cl::Kernel ContextImpl::kernel(const std::string& sourceName, const std::string& entry,
+                               const std::string& options) {
+  cl::Program p = program(sourceName, options);
+  return clCall([&] { return cl::Kernel(p, entry.c_str()); });
 }
 
 }  // namespace voxray

@@ -24,6 +24,7 @@ TEST(Labels, BalancedMeansOneRenderingFromTheStart) {
   // same label meant Zucker-Hummel.
   RenderStateModel m;
   const QualityPreset& balanced = findQualityPreset("balanced");
+  m.setQualityPreset("balanced");  // a first start is custom (firstStartLook): no figures
   EXPECT_EQ(m.quality().preset, "balanced");
   EXPECT_EQ(m.params().gradient, balanced.gradient);
   EXPECT_EQ(m.params().interp, balanced.interp);

@@ -6,6 +6,7 @@
 #include "recent_files.h"
 #include "render_controls.h"
 #include "render_state_model.h"
+#include "study_state.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
 #include "voxray/io/phantom.h"
@@ -16,7 +17,7 @@ TEST(RenderState, DragFramesUseTheInteractivePresetAndIdleFramesTheChosenOne) {
   const QualityPreset& drag = findQualityPreset("interactive");
   const QualityPreset& ref = findQualityPreset("reference");
   RenderStateModel m;
-  EXPECT_EQ(m.quality().preset, "balanced");  // the default
+  m.setQualityPreset("balanced");
   m.update(kAppearance, [](RenderParams& p) {
     p.gradient = Gradient::Sobel;  // the user's choices, unlike every preset's
     p.interp = Interp::Nearest;
@@ -185,7 +186,8 @@ TEST(RecentFiles, MostRecentFirstWithoutDuplicates) {
 
 TEST(RenderState, CommandLineValuesKeepTheWorkstationsRules) {
   RenderStateModel m;
-  m.setPresetShift(300.0);  // from saved state, tuned for another preset
+  m.setQualityPreset("balanced");  // a preset chosen before: flags without a step keep it
+  m.setPresetShift(300.0);         // from saved state, tuned for another preset
   int notified = 0;
   m.changed.connect([&](unsigned what) { notified += what == kAll; });
   m.applyValues({{"preset", "CT-Bone"}, {"size", "320x240"}, {"azimuth", "40"}});
@@ -202,6 +204,36 @@ TEST(RenderState, CommandLineValuesKeepTheWorkstationsRules) {
   // A bad value leaves the state as it was.
   EXPECT_THROW(m.applyValues({{"azimuth", "10"}, {"zoom", "-1"}}), Error);
   EXPECT_EQ(m.params().camera.azimuthDeg, 40.0);
+}
+
+// Issue 41 item 6: the sample CT's 5 mm slices opened as a 400 HU iso surface at 1.5-voxel
+// steps, striped and holed where the thin skull dips below the threshold between slices.
+TEST(RenderState, AFirstStartOpensDvrCtBoneAtHalfVoxelStepsWithJitter) {
+  RenderStateModel m;
+  const RenderParams& p = m.params();
+  EXPECT_EQ(p.mode, Mode::Dvr);
+  EXPECT_EQ(p.preset, "CT-Bone");
+  EXPECT_EQ(p.interp, Interp::Linear);
+  EXPECT_EQ(p.gradient, Gradient::ZuckerHummel);
+  EXPECT_TRUE(p.jitter);
+  EXPECT_TRUE(p.shading);
+  EXPECT_EQ(m.quality().preset, "");  // custom: the step and jitter are no preset's
+  // The sample's smallest spacing is 0.902 mm: a still steps 0.451 mm, a drag 2 voxels.
+  const double h = 0.90234375;
+  RenderParams still = planFrame(p, m.quality(), {640, 480}, false, h);
+  EXPECT_DOUBLE_EQ(still.stepMm, 0.5 * h);
+  EXPECT_TRUE(still.jitter);
+  EXPECT_EQ(still.width, 640);
+  RenderParams drag = planFrame(p, m.quality(), {640, 480}, true, h);
+  EXPECT_DOUBLE_EQ(drag.stepMm, findQualityPreset("interactive").stepVoxels * h);
+  EXPECT_FALSE(drag.jitter);
+  // Saved preferences (another user's iso look) still win over it.
+  RenderStateModel iso;
+  iso.update(kAppearance, [](RenderParams& q) { q.mode = Mode::Iso; });
+  RenderStateModel restored;
+  applyPreferences(restored, preferencesText(iso));
+  EXPECT_EQ(restored.params().mode, Mode::Iso);
+  EXPECT_EQ(restored.params().preset, "");
 }
 
 // Issue 41 item 11: with lighting cinematic the iso controls stayed while the image was the

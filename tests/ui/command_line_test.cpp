@@ -109,12 +109,15 @@ TEST_F(CommandLine, CliAndGuiApplyAPresetFirstThenTheFlags) {
   RenderParams fromCli = cli.render.params();
   RenderStateModel model;
   model.applyValues(readGui(args).renderValues);
-  // The one default that differs: the workstation starts with the gradient its default
-  // quality preset (Balanced) was measured with, so that the preset's label is true; the
-  // CLI keeps its own default. A flag sets both alike.
-  EXPECT_EQ(model.params().gradient, findQualityPreset("balanced").gradient);
+  // The defaults that differ: the workstation's first start has its own look
+  // (firstStartLook: Zucker-Hummel, jitter; issue 41 item 6); the CLI keeps the engine's.
+  // A flag sets both alike.
+  EXPECT_EQ(model.params().gradient, Gradient::ZuckerHummel);
   EXPECT_EQ(fromCli.gradient, RenderParams{}.gradient);
+  EXPECT_TRUE(model.params().jitter);
+  EXPECT_EQ(fromCli.jitter, RenderParams{}.jitter);
   fromCli.gradient = model.params().gradient;
+  fromCli.jitter = model.params().jitter;
   EXPECT_EQ(toText(model.params()), toText(fromCli));
   RenderStateModel central;
   central.applyValues(readGui({"--gradient", "central"}).renderValues);

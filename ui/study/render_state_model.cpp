@@ -19,9 +19,17 @@ bool presetFitsMode(const std::string& preset, Mode mode) {
   return false;
 }
 
-RenderStateModel::RenderStateModel() {
-  params_ = pickQualityPreset(params_, findQualityPreset(quality_.preset));
+RenderParams firstStartLook() {
+  RenderParams p;
+  applyPreset(p, findPreset("CT-Bone"));
+  p.interp = Interp::Linear;
+  p.gradient = Gradient::ZuckerHummel;
+  p.stepMm = 0.0;  // half the smallest spacing (step.h)
+  p.jitter = true;
+  return p;
 }
+
+RenderStateModel::RenderStateModel() : params_(firstStartLook()) { quality_.preset.clear(); }
 
 void RenderStateModel::update(unsigned what, const std::function<void(RenderParams&)>& edit) {
   Mode before = params_.mode;

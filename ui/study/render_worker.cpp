@@ -1,6 +1,13 @@
 #include "render_worker.h"
 
-#include "voxray/engine/cl_context.h"
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <thread>
+#include <utility>
+
 #include "voxray/io/error.h"
 
 namespace voxray {
@@ -42,6 +49,40 @@ void RenderWorker::requestBands(const RenderParams& params, std::vector<RowBand>
     pendingView_ = Request{params, false, 0, false, std::move(bands), total};
   }
   wake_.notify_all();
+}
+
+void RenderWorker::prepare(std::vector<RenderParams> params) {
+  {
+    std::lock_guard lock(mutex_);
+    pendingPrepare_ = std::move(params);
+  }
+  wake_.notify_all();
+}
+
+void RenderWorker::buildLoop(ClContext& ctx) {
+  // Behind the view's frames and the UI on a shared CPU: PoCL compiles on this thread.
+  setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
+  while (true) {
+    std::string options;
+    int left = 0;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return task_.cancelled() || !toBuild_.empty(); });
+      if (task_.cancelled()) return;
+      options = toBuild_.front();
+      toBuild_.erase(toBuild_.begin());
+    }
+    try {
+      ctx.prebuild("raycast.cl", options);
+    } catch (const std::exception& e) {
+      reportError(e.what(), false);  // the frame that needs it would fail alike
+    }
+    {
+      std::lock_guard lock(mutex_);
+      left = int(toBuild_.size());
+    }
+    if (callbacks_.preparing) task_.post([f = callbacks_.preparing, left] { f(left); });
+  }
 }
 
 void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view) {
@@ -92,15 +133,25 @@ void RenderWorker::run() {
   std::unique_ptr<Raycaster> raycaster;
   std::shared_ptr<const Volume> volume;  // kept alive while the raycaster uses it
   Image view;                            // the last view frame: banded frames paint over it
+  std::thread builder;                   // prepare()'s builds; joined before ctx goes
+  struct Join {
+    std::thread& t;
+    ~Join() {
+      if (t.joinable()) t.join();  // cancelled: it ends after the build in progress
+    }
+  } join{builder};
   while (true) {
     std::shared_ptr<const Volume> nextVolume;
     std::optional<Request> req;
+    std::vector<RenderParams> prepare;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] {
-        return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_;
+        return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
+               (!pendingPrepare_.empty() && raycaster);
       });
       if (task_.cancelled()) return;
+      if (raycaster) prepare = std::exchange(pendingPrepare_, {});
       nextVolume = std::move(pendingVolume_);
       pendingVolume_.reset();
       if (pendingExport_) {
@@ -112,6 +163,21 @@ void RenderWorker::run() {
       }
     }
     if (!ctx) continue;  // reported once above; nothing can render
+    if (!prepare.empty()) {
+      // The options depend on the volume on the device (storage, slabs, packets): the
+      // raycaster says them here, on its own thread.
+      std::vector<std::string> options;
+      for (const RenderParams& p : prepare) {
+        std::string o = raycaster->variantOptions(p);
+        if (std::find(options.begin(), options.end(), o) == options.end()) options.push_back(o);
+      }
+      {
+        std::lock_guard lock(mutex_);
+        toBuild_ = std::move(options);
+      }
+      if (!builder.joinable()) builder = std::thread([this, c = ctx.get()] { buildLoop(*c); });
+      wake_.notify_all();
+    }
     if (nextVolume) {
       try {
         raycaster = std::make_unique<Raycaster>(*ctx, *nextVolume);

@@ -17,6 +17,7 @@
 #include "background_task.h"
 #include "no_qt.h"
 #include "refine_bands.h"
+#include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
@@ -43,6 +44,8 @@ struct RenderCallbacks {
   // given to setVolume could not be uploaded; the previous one is still rendered.
   std::function<void(const std::string& message, bool volumeRejected)> error;
   std::function<void(const std::string& deviceName)> deviceReady;
+  // Kernel variants that prepare() builds in the background: LEFT still to build (0: done).
+  std::function<void(int left)> preparing;
 };
 
 class RenderWorker {
@@ -61,8 +64,14 @@ class RenderWorker {
   // The view's sharp frame in BANDS (in order; empty or one: a whole frame), each band
   // posted as a Frame when it finishes.
   void requestBands(const RenderParams& params, std::vector<RowBand> bands);
+  // Builds the kernel variants of PARAMS (frames likely soon: a drag, another mode) on a
+  // low-priority thread of their own, in order, so that such a frame does not wait for the
+  // compiler (issue 41 item 9: a variant took 2-3 s on PoCL). Frames render meanwhile. A new
+  // call replaces the variants not yet started; a new volume keeps them.
+  void prepare(std::vector<RenderParams> params);
 
  private:
+  void buildLoop(ClContext& ctx);
   void run();
   void reportError(const std::string& message, bool volumeRejected) const;
 
@@ -82,9 +91,11 @@ class RenderWorker {
   // Renders REQ's bands into VIEW (the last view frame) until done or a newer view request
   // or volume arrives; what is left goes back as the pending view request unless replaced.
   void renderBands(Raycaster& raycaster, Request req, Image& view);
-  std::optional<Request> pendingView_;    // latest view frame wins
-  std::optional<Request> pendingExport_;  // exports are never replaced by view frames
-  BackgroundTask task_;                   // cancelled: the loop ends
+  std::optional<Request> pendingView_;        // latest view frame wins
+  std::optional<Request> pendingExport_;      // exports are never replaced by view frames
+  std::vector<RenderParams> pendingPrepare_;  // for the render thread: to options
+  std::vector<std::string> toBuild_;          // for the build thread: raycast options
+  BackgroundTask task_;                       // cancelled: the loop ends
 };
 
 }  // namespace voxray

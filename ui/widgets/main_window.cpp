@@ -12,6 +12,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -96,10 +97,24 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
           });
   connect(scheduler_, &RenderScheduler::deviceReady, this,
           [this](const QString& name) { deviceLabel_->setText(name); });
+  // Issue 41 item 9: the first start compiles kernels for seconds; say so meanwhile.
+  preparingLabel_ = new QLabel(kPreparingRenderer);
+  preparingLabel_->setObjectName("preparingLabel");
+  preparingLabel_->setToolTip(
+      "The 3D view's OpenCL kernels are compiled on first use (cached afterwards); the "
+      "slice views do not need them");
+  statusBar()->addWidget(preparingLabel_);
+  connect(scheduler_, &RenderScheduler::firstFullFrame, this,
+          [this] { preparingLabel_->setText(""); });
+  connect(scheduler_, &RenderScheduler::preparingChanged, this, [this](int left) {
+    preparingLabel_->setText(left > 0 ? QString("Preparing the other 3D modes (%1 left)…").arg(left)
+                                      : QString());
+  });
   connect(scheduler_, &RenderScheduler::renderError, this,
           [this](const QString& message, bool rejected) {
             // The engine's message says what failed; the previous volume stays on screen.
             if (rejected) restorePreviousStudy(models_);
+            preparingLabel_->setText("");
             showError(rejected ? "Cannot show this volume" : "Rendering failed", message);
           });
 
@@ -135,7 +150,15 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   qApp->installEventFilter(this);
   updateTitle();
   onModelChange<>(this, models_.document.changed, [this] { updateTitle(); });
-  resize(1400, 900);
+  resize(defaultWindowSize(screen() ? screen()->availableGeometry().size() : QSize()));
+}
+
+QSize defaultWindowSize(QSize available) {
+  // Room for the side panel unscrolled beside four views at 1920x1080 (issue 41 item 6:
+  // 1400x900 scrolled it and clipped the scale bars' labels); smaller screens get all of it.
+  const QSize wanted(1880, 1000);
+  if (available.isEmpty()) return wanted;
+  return wanted.boundedTo(available - QSize(20, 40));
 }
 
 MainWindow::~MainWindow() {

@@ -28,6 +28,13 @@ class SliceView;
 class TfEditorDialog;
 class VolumeView;
 
+// What the status bar says until the first 3D frame (and a test looks for).
+inline const QString kPreparingRenderer = "Preparing the 3D renderer…";
+
+// The window's first size (before a saved geometry): 1880x1000, less where the screen's
+// AVAILABLE area is smaller (empty: unknown).
+QSize defaultWindowSize(QSize available);
+
 class MainWindow : public QMainWindow {
   Q_OBJECT
  public:
@@ -87,6 +94,7 @@ class MainWindow : public QMainWindow {
   LoadController* loader_;
   QLabel* fpsLabel_;
   QLabel* deviceLabel_;
+  QLabel* preparingLabel_;  // kPreparingRenderer, then the background builds left
   QMenu* recentMenu_ = nullptr;
   QString theme_ = "System";  // View → Theme, saved with the window layout
   std::unique_ptr<ViewHistory> history_;

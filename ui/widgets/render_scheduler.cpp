@@ -35,6 +35,7 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
   cb.deviceReady = [this](const std::string& name) {
     emit deviceReady(QString::fromStdString(name));
   };
+  cb.preparing = [this](int left) { emit preparingChanged(left); };
   worker_ = std::make_unique<RenderWorker>(device.toStdString(), cb, postTo(this));
   stateConnection_ = state_.changed.connect([this](unsigned what) {
     if (what != kSlices) requestFrame();  // the slice views' interpolation is not in 3D
@@ -103,6 +104,22 @@ void RenderScheduler::requestFrame() {
     worker_->request(p, interacting_);
 }
 
+std::vector<RenderParams> RenderScheduler::likelyFrames() const {
+  const glm::ivec2 size{viewSize_.width(), viewSize_.height()};
+  const double h = doc_.minSpacingMm();
+  const RenderParams& base = state_.params();
+  std::vector<RenderParams> out = {
+      planFrame(base, state_.quality(), size, true, h, &adaptive_.setting())};
+  for (Mode m : {Mode::Iso, Mode::Dvr, Mode::Mip}) {
+    if (m == base.mode) continue;
+    RenderParams p = base;
+    p.mode = m;
+    out.push_back(planFrame(p, state_.quality(), size, false, h));
+    out.push_back(planFrame(p, state_.quality(), size, true, h, &adaptive_.setting()));
+  }
+  return out;
+}
+
 void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
   if (frame->tag == kPickTag) {
     emit pickReady(frame);
@@ -134,6 +151,9 @@ void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
   if (!frame->interactive && !sawFullFrame_) {
     sawFullFrame_ = true;
     emit firstFullFrame();
+    const std::vector<RenderParams> next = likelyFrames();
+    emit preparingChanged(int(next.size()));
+    worker_->prepare(next);
   }
 }
 

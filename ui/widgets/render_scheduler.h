@@ -58,10 +58,15 @@ class RenderScheduler : public QObject {
   void renderError(const QString& message, bool volumeRejected);
   // Lighting cinematic: "cinematic: 128 samples · 12.3 s", or "" for other lighting.
   void progressChanged(const QString& text);
+  // After a volume's first sharp frame the kernels of a drag and of the other modes build in
+  // the background (RenderWorker::prepare): LEFT of them still to build, 0 when done.
+  void preparingChanged(int left);
 
  private:
   void requestFrame();
   void onFrame(std::shared_ptr<const Frame> frame);
+  // The frames likely next: this look's drag frames, the other modes' still and drag frames.
+  std::vector<RenderParams> likelyFrames() const;
 
   RenderStateModel& state_;
   VolumeDocument& doc_;

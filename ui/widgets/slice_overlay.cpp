@@ -15,6 +15,22 @@ double niceLengthMm(double target) {
   return power;
 }
 
+ScaleBar scaleBarLayout(const QFontMetricsF& fm, double mmPerPixel, const QRect& r) {
+  ScaleBar out;
+  const double mm = niceLengthMm(0.2 * r.width() * mmPerPixel);
+  const double px = mm / mmPerPixel;
+  const QPointF end(r.right() - 10, r.bottom() - 22);
+  out.bar = QLineF(end - QPointF(px, 0), end);
+  out.text = QString("%1 mm").arg(mm);
+  // Centred under the bar but never narrower than its text (a label as wide as a short bar
+  // was clipped to "0 mr"), and kept inside the view's right edge.
+  const double w = std::max(px, std::ceil(fm.horizontalAdvance(out.text)) + 2.0);
+  double left = end.x() - px / 2 - w / 2;
+  left = std::min(left, double(r.right()) - 2.0 - w);
+  out.label = QRectF(left, end.y() + 2, w, std::ceil(fm.height()) + 1.0);
+  return out;
+}
+
 namespace {
 
 // The orientation letters' colour: none of the plane colours (yellow, green, red) nor the
@@ -41,15 +57,13 @@ void drawLabels(QPainter& p, const SliceAxes& a, const QRect& r) {
 }
 
 void drawScaleBar(QPainter& p, double mmPerPixel, const QRect& r) {
-  double mm = niceLengthMm(0.2 * r.width() * mmPerPixel);
-  double px = mm / mmPerPixel;
-  QPointF end(r.right() - 10, r.bottom() - 22);
-  QPointF start = end - QPointF(px, 0);
+  const ScaleBar bar = scaleBarLayout(QFontMetricsF(p.font()), mmPerPixel, r);
+  const QPointF start = bar.bar.p1(), end = bar.bar.p2();
   p.setPen(QPen(Qt::white, 2));
   p.drawLine(start, end);
   p.drawLine(start, start - QPointF(0, 4));
   p.drawLine(end, end - QPointF(0, 4));
-  p.drawText(QRectF(start.x(), end.y() + 2, px, 16), Qt::AlignHCenter, QString("%1 mm").arg(mm));
+  p.drawText(bar.label, Qt::AlignHCenter, bar.text);
 }
 
 // The part of the line through C along D inside R (Liang-Barsky); false if it misses.

@@ -52,4 +52,13 @@ constexpr double kRotateHandleRadius = 5.0;
 // A round scale-bar length (1, 2 or 5 times a power of ten) near TARGET_MM.
 double niceLengthMm(double targetMm);
 
+// The scale bar in the bottom right corner of R (about a fifth of its width) and its label,
+// whose rectangle holds the whole text in FM's font, inside R.
+struct ScaleBar {
+  QLineF bar;
+  QRectF label;
+  QString text;  // "50 mm"
+};
+ScaleBar scaleBarLayout(const QFontMetricsF& fm, double mmPerPixel, const QRect& r);
+
 }  // namespace voxray::ui

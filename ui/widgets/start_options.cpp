@@ -43,6 +43,8 @@ StartOptions parseStartOptions(const QStringList& arguments) {
       {"screenshot", "after the first full-quality frame, save the window to FILE", "file"},
       {"quit-after-first-frame", "quit after the first full-quality frame (tests)"},
       {"reset-settings", "ignore the saved window state and settings"},
+      {"startup-times",
+       "print to stderr when the slice views and the first 3D images were shown (ms since start)"},
       {"phantom", "open the synthetic head phantom instead of the sample CT (no INPUT)"},
   });
   addSpecOptions(parser, inputFlagSpecs());
@@ -63,6 +65,7 @@ StartOptions parseStartOptions(const QStringList& arguments) {
   o.screenshot = parser.value("screenshot").toStdString();
   o.quitAfterFirstFrame = parser.isSet("quit-after-first-frame");
   o.resetSettings = parser.isSet("reset-settings");
+  o.startupTimes = parser.isSet("startup-times");
   return o;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The voxray command line: an input with voxray-cli's input flags (input_flags.h), every
 // declared render parameter as --KEY VALUE (the same keys as voxray-cli render), and the
-// smoke-test switches --screenshot FILE and --quit-after-first-frame.
+// smoke-test switches --screenshot FILE, --quit-after-first-frame and --startup-times.
 #include <map>
 #include <optional>
 #include <string>
@@ -20,6 +20,7 @@ struct StartOptions {
   std::string screenshot;
   bool quitAfterFirstFrame = false;
   bool resetSettings = false;  // start from defaults, ignoring saved state
+  bool startupTimes = false;   // print when slices and 3D images first showed (issue 41 item 9)
 };
 
 // Throws Error (Input) for a malformed value; --help and --version exit like Qt's parser.

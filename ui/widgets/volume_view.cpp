@@ -36,6 +36,10 @@ VolumeView::VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairMo
   };
   connect(&scheduler_, &RenderScheduler::frameReady, this, show);
   connect(&scheduler_, &RenderScheduler::bandReady, this, show);  // the sharp frame so far
+  connect(&scheduler_, &RenderScheduler::renderError, this, [this] {
+    failed_ = true;
+    update();
+  });
   connect(&scheduler_, &RenderScheduler::pickReady, this,
           [this](std::shared_ptr<const Frame> f) { onPickFrame(*f); });
   stateConnection_ = state_.changed.connect([this](unsigned) { update(); });
@@ -92,6 +96,10 @@ void VolumeView::paintEvent(QPaintEvent*) {
   painter.fillRect(rect(), Qt::black);
   QRect r = imageRect();
   if (!frame_.isNull()) painter.drawImage(r, frame_);
+  if (const QString n = note(); !n.isEmpty()) {
+    painter.setPen(QColor(220, 220, 220));
+    painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, n);
+  }
   auto proj = projection();
   if (!proj) return;
   painter.translate(r.topLeft());
@@ -111,6 +119,12 @@ void VolumeView::paintEvent(QPaintEvent*) {
   drawOrientationMarker(painter, proj->g, r.size());
   if (state_.studyText() && !studyTextHidden_)
     drawCornerLines(painter, studyTextLines(v.study), QRect(QPoint(6, 4), r.size()));
+}
+
+QString VolumeView::note() const {
+  if (doc_.empty() || !frame_.isNull()) return {};
+  return failed_ ? QString("No 3D image: the renderer failed (see the message)")
+                 : QString("Preparing the 3D renderer…");
 }
 
 void VolumeView::setStudyTextHidden(bool hidden) {

@@ -30,6 +30,10 @@ class VolumeView : public QWidget {
   // Leaves out the patient and study text while an export grabs the view (unless chosen).
   void setStudyTextHidden(bool hidden);
   const QImage& lastFrame() const { return frame_; }
+  // What the view says over its image while it has none: "Preparing the 3D renderer…"
+  // from the volume's arrival to the first frame (the first start compiles the kernels:
+  // seconds on PoCL, issue 41 item 9), or that rendering failed; "" once a frame shows.
+  QString note() const;
   bool lastFrameInteractive() const { return frameInteractive_; }
   // Where the 3D image is drawn inside the widget, and its projection (for overlays, tests).
   QRect imageRect() const;
@@ -65,6 +69,7 @@ class VolumeView : public QWidget {
   QImage frame_;
   bool frameInteractive_ = false;
   bool studyTextHidden_ = false;
+  bool failed_ = false;  // a render error came before any frame
   Drag drag_ = Drag::None;
   QPointF dragStart_, lastPos_;
   int dragFace_ = -1;

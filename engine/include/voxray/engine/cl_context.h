@@ -40,6 +40,11 @@ class ClContext {
 
   const DeviceInfo& device() const;
   ContextImpl& impl() { return *impl_; }
+  // Builds kernels/SOURCENAME with -D OPTIONS (Raycaster::variantOptions) unless built, so
+  // that the first frame needing it does not wait for the compiler. Thread-safe: another
+  // thread may render meanwhile. Throws Error (Device) with the build log.
+  void prebuild(const std::string& sourceName, const std::string& options);
+  int programsBuilt() const;  // programs compiled so far (each source and options once)
 
  private:
   std::unique_ptr<ContextImpl> impl_;
