@@ -56,6 +56,7 @@ const std::map<std::string, std::string> kUnusual = {
     {"preset", "CT-Bone"},
     {"tf", "-100.5:0.1:0.2:0.3:0,300.25:1:0.9:0.8:0.05"},
     {"opacity-unit", "0.7071067811865476"},
+    {"gradient-opacity", "0:0,33.333333333333336:0.25,150.5:1"},
     {"preset-shift", "-123.456789012345"},
     {"iso", "150,2000"},
     {"gradient", "sobel"},
