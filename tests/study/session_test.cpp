@@ -392,6 +392,20 @@ TEST(Session, TurnedAndSlabViewsRoundTripAndAbsentMeansAcquisitionPlanesThin) {
             std::string::npos);
 }
 
+// Issue 35: sessions saved before the gradient opacity was rendered read with it off.
+TEST(Session, AnOlderSessionReadsWithoutTheGradientOpacity) {
+  Session s;
+  s.render.mode = Mode::Dvr;
+  Json j = jsonOf(s, "s.json");
+  ASSERT_EQ(j["render"]["gradient-opacity"], "");
+  j["render"].erase("gradient-opacity");
+  const SessionRead read = sessionFromJson(j.dump(), "s.json");
+  ASSERT_EQ(read.warnings.size(), 1u);
+  EXPECT_EQ(read.warnings[0], "field 'render.gradient-opacity' missing: left at its default ()");
+  EXPECT_TRUE(read.session.render.gradientOpacity.empty());
+  EXPECT_EQ(read.session.render.mode, Mode::Dvr);
+}
+
 // Issue 41 item 7: "Handles in 3D view" and "Show planes in 3D view" were not in sessions.
 TEST(Session, OverlaysRoundTripAndAnOlderSessionKeepsTheDefaults) {
   Session s;
