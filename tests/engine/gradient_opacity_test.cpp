@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "frame_setup.h"  // engine-internal: the frame's view, for the pixels of chosen points
+#include "gradient_table.h"
 #include "reference_sampling.h"
 #include "stability_helpers.h"
 #include "test_volumes.h"
@@ -108,6 +109,26 @@ glm::ivec3 rgbAt(const Image& im, glm::ivec2 px) {
 }
 
 }  // namespace
+
+// The table the kernels read: factors over |gradient| in stored units per mm, the slope
+// folded in (a slope of 2 HU per stored unit: 50 stored units / mm are 100 HU/mm), linear
+// between points, a repeated point a step, the ends held.
+TEST(GradientOpacity, TheTableIsInHuPerMm) {
+  GradientTable t = bakeGradientTable({{0.0, 0.0}, {100.0, 0.5}, {200.0, 0.5}, {200.0, 1.0}}, 2.0);
+  ASSERT_EQ(t.factor.size(), size_t(VOXRAY_GRADIENT_TABLE_ENTRIES));
+  // 256 entries over 0 ... 200 HU/mm: linear pieces are exact at the entries, a bend
+  // between two entries is cut by at most half an entry's change (here 0.002).
+  EXPECT_DOUBLE_EQ(t.lookup(0.0), 0.0);
+  EXPECT_NEAR(t.lookup(25.0), 0.25, 1e-6);  // 50 HU/mm
+  EXPECT_NEAR(t.lookup(50.0), 0.5, 2e-3);   // 100 HU/mm: the bend
+  EXPECT_NEAR(t.lookup(75.0), 0.5, 1e-6);
+  EXPECT_NEAR(t.lookup(100.0), 1.0, 1e-9);  // the step at 200 HU/mm: the upper point
+  EXPECT_DOUBLE_EQ(t.lookup(1e6), 1.0);
+  EXPECT_TRUE(bakeGradientTable({}, 1.0).factor.empty());
+  EXPECT_DOUBLE_EQ(bakeGradientTable({}, 1.0).lookup(10.0), 1.0);  // off
+  // One point: its factor everywhere.
+  EXPECT_DOUBLE_EQ(bakeGradientTable({{0.0, 0.3}}, 1.0).lookup(123.0), double(0.3f));
+}
 
 // Shaded or not, one ray per work-item (march.cl's dvr_segment) or packets (dvr_packet.cl and
 // its shading queue), with empty-space skipping (the default): kernel and reference agree,
