@@ -160,6 +160,40 @@ TEST(GradientOpacity, KernelsAgreeWithTheReference) {
     }
 }
 
+// The other ways a frame is computed (none changes the image): 8-lane packets, no empty-space
+// skipping, the uber kernel, z slabs, image3d_t storage where the device has it.
+TEST(GradientOpacity, EveryWayOfComputingAgreesWithTheReference) {
+  const Volume& v = ballVolume();
+  RenderParams p = ballParams();
+  Image ref = renderReference(v, p);
+  struct Way {
+    const char* name;
+    VolumeStorage storage;
+    RaycasterOptions options;
+  };
+  std::vector<Way> ways(5, {"", VolumeStorage::Buffer, {}});
+  ways[0].name = "8-lane packets";
+  ways[0].options.packetLanes = 8;
+  ways[1].name = "no empty-space skipping";
+  ways[1].options.emptySpaceSkipping = false;
+  ways[2].name = "uber";
+  ways[2].options.kernel = RaycasterOptions::Kernel::Uber;
+  ways[3].name = "z slabs";
+  ways[3].options.maxSlabBytes = 40 * 36 * 8 * sizeof(int16_t);
+  ways[4].name = "image3d_t";
+  ways[4].storage = VolumeStorage::Image3d;
+  for (const Way& w : ways) {
+    if (w.storage == VolumeStorage::Image3d && !context().device().imageSupport) continue;
+    Raycaster rc(context(), v, w.storage);
+    rc.setOptions(w.options);
+    Diff d = compare(rc.render(p), ref);
+    std::string what = std::string(w.name) + " (max " + std::to_string(d.maxAbs) + ")";
+    if (w.options.maxSlabBytes) EXPECT_GT(rc.slabCount(), 1) << what;
+    EXPECT_LE(d.meanAbs, 0.5) << what;
+    EXPECT_LE(d.fractionOver3, 0.005) << what;
+  }
+}
+
 // A factor of 1 everywhere switches GRADIENT_OPACITY on and changes no pixel: shadows and ao
 // read their light grid behind the gradient table (where it moves with it), the packets'
 // shading queue shades with the gradient it stored.
