@@ -39,3 +39,6 @@ VOXRAY_PARAM(float4, to_world_y)
 VOXRAY_PARAM(float4, to_world_z)
 VOXRAY_PARAM(int4, light_grid)
 VOXRAY_PARAM(float4, light_march)
+// GRADIENT_OPACITY (gradient_table.h): table entries per stored unit / mm of |gradient|, the
+// last entry, unused x 2.
+VOXRAY_PARAM(float4, gradient_opacity)

@@ -13,7 +13,8 @@
 //   BUILD    always a -D literal: it changes the kernel's arguments, stores or vector width.
 // LABELS names the values for variant names, "|"-separated from 0; an empty label leaves the
 // switch out of the name; no labels at all: NAME and the number, unless it is the default.
-// GRADIENT is named only where SHADING is on (no other frame takes a gradient).
+// GRADIENT is named only where SHADING or GRADIENT_OPACITY is on (no other frame takes a
+// gradient).
 // Adding a switch: a line here, its rule in kernelSwitches(), the kernel code that uses it.
 //
 // VOXRAY_TUNING(NAME, AT_8_LANES, AT_16_LANES): the packets' measured tuning (the list at the
@@ -71,6 +72,12 @@ VOXRAY_SWITCH(ADAPTIVE, 0, BUILD, "|adaptive")
 // march iteration; the host makes the block bits only where this is above 0.
 VOXRAY_SWITCH(MIP_HALVES, 1, BUILD, "")
 VOXRAY_SWITCH(ISO_BLOCK_TRIES, 0, BUILD, "")
+// dvr: each sample's opacity times a factor of its gradient magnitude (issue 35, VTK's gradient
+// opacity; RenderParams::gradientOpacity), from the table behind the colour table
+// (gradient_table.h, classification/gradient_opacity.cl). Set only with that field, so
+// every other variant compiles as before (#if). Not with ADAPTIVE (its levels read the colour
+// table alone); the light grid (shadows, ao) and the path tracer ignore the factor.
+VOXRAY_SWITCH(GRADIENT_OPACITY, 0, BUILD, "|gopacity")
 
 // The packets' tuning (VOXRAY_TUNING above), measured on CPUs (docs/bench/history). An
 // experiment in a kernel directory (VOXRAY_KERNEL_DIR) tries another value with #undef and

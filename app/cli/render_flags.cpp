@@ -1,7 +1,5 @@
 #include "render_flags.h"
 
-#include <iostream>
-
 #include "spec_options.h"
 #include "voxray/engine/volume_property.h"
 #include "voxray/io/error.h"
@@ -23,10 +21,6 @@ void RenderFlags::applyTo(RenderParams& p) const {
         throw inputError(std::string("--tf-file and --") + key +
                          " both choose the transfer function; give one of them");
     VolumeProperty vp = readVolumePropertyFile(tfFile);
-    if (hasGradientOpacity(vp))
-      std::cerr << "voxray-cli: note: " << tfFile
-                << " has a gradient-magnitude opacity, which Voxray does not render yet; its "
-                   "colour and scalar opacity are used\n";
     applyVolumeProperty(p, vp);
   }
   applyRenderValues(p, given);

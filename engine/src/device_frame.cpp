@@ -66,17 +66,24 @@ RaycastParams DeviceFrame::frameParams(const RenderParams& p, const KernelSwitch
       f4(s.windowLoStored, s.windowInvWidth, p.earlyTermination, sw.ADAPTIVE ? p.adaptiveError : 0);
   k.dims = {{v.dims.x, v.dims.y, v.dims.z, int(s.lut.rgba.size())}};
   k.image = {{p.width, p.height, 0, 0}};
+  if (sw.GRADIENT_OPACITY)
+    k.gradient_opacity = f4(s.gradient.scale, double(s.gradient.factor.size()) - 1.0, 0, 0);
   packSwitches(sw, k);
   k.slabs = {{device.plan().depth, 0, 0, 0}};
   return k;
 }
 
+size_t DeviceFrame::tableBytes() const {
+  return setup.lut.rgba.size() * sizeof(cl_float4) + setup.gradient.factor.size() * sizeof(float);
+}
+
 void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
-  size_t lutBytes = setup.lut.rgba.size() * sizeof(cl_float4);
-  if (lutBytes + extraBytes > lutCapacity) {
-    lutBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, lutBytes + extraBytes);
-    lutCapacity = lutBytes + extraBytes;
+  size_t lutBytes = setup.lut.rgba.size() * sizeof(cl_float4), bytes = tableBytes() + extraBytes;
+  if (bytes > lutCapacity) {
+    lutBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, bytes);
+    lutCapacity = bytes;
     lutUploaded.clear();
+    gradientUploaded.clear();
     ++lutAllocations;
   }
   cl::CommandQueue& q = cl.queue;
@@ -85,6 +92,12 @@ void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
   if (setup.lut.rgba != lutUploaded) {
     lutUploaded = setup.lut.rgba;  // the asynchronous write reads this copy
     q.enqueueWriteBuffer(lutBuffer, CL_FALSE, 0, lutBytes, lutUploaded.data());
+  }
+  if (setup.gradient.factor != gradientUploaded) {
+    gradientUploaded = setup.gradient.factor;
+    if (!gradientUploaded.empty())
+      q.enqueueWriteBuffer(lutBuffer, CL_FALSE, lutBytes, gradientUploaded.size() * sizeof(float),
+                           gradientUploaded.data());
   }
 }
 

@@ -44,11 +44,14 @@ struct DeviceFrame {
   // macro-cell grid fills them).
   RaycastParams frameParams(const RenderParams& p, const KernelSwitches& sw) const;
   // The parameters and table to the device (the table only when it changed). EXTRA: bytes
-  // after the table in its buffer (the shadows / ao light grid).
+  // after the tables in their buffer (the shadows / ao light grid, at tableBytes()).
   void uploadFrame(const RaycastParams& k, size_t extraBytes = 0);
+  // The colour table's bytes and the gradient-opacity table's behind it (gradient_table.h).
+  size_t tableBytes() const;
 
  private:
-  std::vector<glm::vec4> lutUploaded;  // the table on the device: uploaded on change only
+  std::vector<glm::vec4> lutUploaded;   // the table on the device: uploaded on change only
+  std::vector<float> gradientUploaded;  // likewise the gradient-opacity table
   RaycastParams paramsUploaded{};
 };
 

@@ -9,8 +9,13 @@
 namespace voxray {
 
 SetupKey setupKeyOf(const RenderParams& p) {
-  return {p.mode,         p.preset, p.presetShiftHu, p.transferFunction, p.opacityUnitMm,
-          p.surfaceColor, p.isoLo,  p.isoHi,         p.windowWidth,      p.windowLevel};
+  // Only dvr renders the gradient opacity (kernelSwitches' GRADIENT_OPACITY): elsewhere no
+  // table is made for it, so none rides in the table buffer.
+  std::vector<glm::dvec2> gradientOpacity;
+  if (p.mode == Mode::Dvr) gradientOpacity = p.gradientOpacity;
+  return {p.mode,          p.preset,        p.presetShiftHu, p.transferFunction,
+          p.opacityUnitMm, gradientOpacity, p.surfaceColor,  p.isoLo,
+          p.isoHi,         p.windowWidth,   p.windowLevel};
 }
 
 TransferFunction frameTransferFunction(const SetupKey& k) {
@@ -40,6 +45,7 @@ FrameSetup makeValueSetup(const Volume& v, const SetupKey& k) {
 FrameSetup makeValueSetup(const Volume& v, const SetupKey& k, const ValueRange& r) {
   FrameSetup s;
   s.lut = bakeLut(frameTransferFunction(k), v, r);
+  s.gradient = bakeGradientTable(k.gradientOpacity, v.slope);
   s.referenceStepMm = v.minSpacingMm();
   // Opacities stated per another length become per reference step: the same absorption
   // over the same millimetres, 1 - (1 - a)^(reference / unit).

@@ -23,6 +23,7 @@ struct SetupKey {
   double presetShiftHu = 0.0;
   std::vector<ControlPoint> transferFunction;
   double opacityUnitMm = 0.0;
+  std::vector<glm::dvec2> gradientOpacity;  // dvr only: other modes leave it empty
   glm::dvec3 surfaceColor{0.0};
   double isoLo = 0.0, isoHi = 0.0;
   double windowWidth = 0.0, windowLevel = 0.0;
@@ -33,6 +34,7 @@ SetupKey setupKeyOf(const RenderParams& p);
 struct FrameSetup {
   ViewGeometry view;
   Lut lut;
+  GradientTable gradient;  // dvr's gradient opacity; empty: off
   double stepMm = 1.0;
   double referenceStepMm = 1.0;  // the step the preset's opacities are defined for
   double isoLoStored = 0.0, isoHiStored = 0.0;

@@ -64,12 +64,14 @@ KernelSwitches kernelSwitches(const RenderParams& p) {
   KernelSwitches s;
   s.MODE = int(p.mode);
   s.SHADING = p.shading && p.mode != Mode::Mip;
-  if (s.SHADING) s.GRADIENT = int(p.gradient);
+  s.GRADIENT_OPACITY = p.mode == Mode::Dvr && !p.gradientOpacity.empty();
+  if (s.SHADING || s.GRADIENT_OPACITY) s.GRADIENT = int(p.gradient);
   s.INTERP = int(p.interp);
   s.ORTHO = p.camera.projection == Projection::Orthographic;
   if (p.mode == Mode::Dvr) s.OPACITY_CORRECTION = p.opacityCorrection;
-  // Long steps rest on opacity correction and on the macro cells' levels (ESS).
-  s.ADAPTIVE = s.OPACITY_CORRECTION && p.adaptiveError > 0.0;
+  // Long steps rest on opacity correction and on the macro cells' levels (ESS), which read
+  // the colour table alone: the gradient opacity would need them per gradient too.
+  s.ADAPTIVE = s.OPACITY_CORRECTION && p.adaptiveError > 0.0 && !s.GRADIENT_OPACITY;
   s.JITTER = p.jitter;
   if (p.mode == Mode::Iso) s.REFINE_STEPS = p.refine;
   // shadows and ao change the shading only; cinematic is the path tracer's (not a switch).
@@ -123,8 +125,9 @@ std::string variantName(const KernelSwitches& s) {
   std::string out;
   for (const SwitchEntry& e : switchList()) {
     int value = s.*e.field;
-    // Only a shaded frame takes a gradient: elsewhere "central" would name nothing measured.
-    if (e.field == &KernelSwitches::GRADIENT && !s.SHADING) continue;
+    // Only shaded or gradient-opacity frames take a gradient: elsewhere "central" would name
+    // nothing measured.
+    if (e.field == &KernelSwitches::GRADIENT && !s.SHADING && !s.GRADIENT_OPACITY) continue;
     std::string part;
     if (*e.labels)
       part = label(e.labels, value);

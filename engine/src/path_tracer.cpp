@@ -68,6 +68,8 @@ KernelSwitches PathTracer::Impl::prepare(const RenderParams& p) {
   DeviceFrame& f = *frame;
   f.updateSetup(p);
   KernelSwitches sw = kernelSwitches(p);  // one ray per work-item: no packets, no leaps
+  // The paths ignore the gradient opacity (README): one program with or without it.
+  sw.GRADIENT_OPACITY = 0;
   sw.STORAGE_IMAGE = f.storage == VolumeStorage::Image3d;
   sw.SLABS = f.device.plan().count();
   RaycastParams k = f.frameParams(p, sw);

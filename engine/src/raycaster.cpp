@@ -25,8 +25,10 @@ struct Raycaster::Impl {
   EmptySpace space;
   LightVolume light;  // shadows, ao (issue 15): the light grid behind the table
   // The frame's table buffer (DeviceFrame::lutAllocations) the current grid was copied
-  // into; -1: none.
+  // into, -1: none; and where in it (behind the tables, whose bytes change with the gradient
+  // opacity).
   int lightCopiedInto = -1;
+  size_t lightCopiedAt = 0;
   cl::Buffer countBuffer;                     // 64 sample counters (COUNT_SAMPLES)
   std::vector<glm::vec4>* hitsOut = nullptr;  // set by renderWithHits (HIT_OUTPUT)
   glm::ivec2 rows{0, 0};                      // set by renderRows: rows [x, y) only
@@ -191,7 +193,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   std::array<cl_uint, 64> counts{};
   double lightingMs = 0.0;
   clCall([&] {
-    size_t lutBytes = s.lut.rgba.size() * sizeof(cl_float4);
+    size_t tableBytes = f.tableBytes();  // the light grid goes behind
     if (pixels * 4 > m.outCapacity) {
       m.outBuffer = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * 4);
       m.outCapacity = pixels * 4;
@@ -215,8 +217,10 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
         lightingMs = m.light.lastMs();
         m.lightCopiedInto = -1;
       }
-      if (m.lightCopiedInto != f.lutAllocations) m.light.copyInto(m.cl, f.lutBuffer, lutBytes);
+      if (m.lightCopiedInto != f.lutAllocations || m.lightCopiedAt != tableBytes)
+        m.light.copyInto(m.cl, f.lutBuffer, tableBytes);
       m.lightCopiedInto = f.lutAllocations;
+      m.lightCopiedAt = tableBytes;
     }
     if (m.opts.countSamples)
       q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());

@@ -41,7 +41,8 @@ struct Marcher {
   const Volume& v;
   const RenderParams& p;
   const FrameSetup& s;
-  bool shading = kernelSwitches(p).SHADING != 0;  // the kernels' rule
+  bool shading = kernelSwitches(p).SHADING != 0;  // the kernels' rules
+  bool gradientOpacity = kernelSwitches(p).GRADIENT_OPACITY != 0;
   double gradSamples = double(gradientSamples(p.gradient));
   const ReferenceHooks* hooks = nullptr;
 
@@ -89,11 +90,17 @@ struct Marcher {
         glm::dvec3 pv = ov + t * dv;
         glm::dvec4 c = s.lut.lookup(sample(pv, o));
         if (c.a <= 0.0) continue;
+        glm::dvec3 g(0.0);
+        if (gradientOpacity) {  // the factor at |gradient| (stored units per mm), then shading
+          g = worldGradient(pv, o);
+          c.a *= s.gradient.lookup(glm::length(g));
+          if (c.a <= 0.0) continue;
+        }
         double al = p.opacityCorrection ? 1.0 - std::pow(1.0 - c.a, seg / s.referenceStepMm) : c.a;
         glm::dvec3 rgb(c);
         if (shading)
-          rgb = shade(rgb, worldGradient(pv, o), ow + t * dw, view, s.view.lightWorld,
-                      lightAt(ow + t * dw, rng));
+          rgb = shade(rgb, gradientOpacity ? g : worldGradient(pv, o), ow + t * dw, view,
+                      s.view.lightWorld, lightAt(ow + t * dw, rng));
         acc += (1.0 - alpha) * al * rgb;
         alpha += (1.0 - alpha) * al;
         if (alpha >= p.earlyTermination) break;

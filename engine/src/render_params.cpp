@@ -130,6 +130,36 @@ std::string formatTransferFunction(const std::vector<ControlPoint>& points) {
   return out;
 }
 
+// "G:A,G:A,...": |gradient| in HU/mm and a factor 0 ... 1, sorted by |gradient| (stable).
+std::vector<glm::dvec2> parseGradientOpacity(const std::string& s) {
+  std::vector<glm::dvec2> points;
+  std::istringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    std::vector<double> v;
+    std::istringstream fields(item);
+    std::string field;
+    while (std::getline(fields, field, ':')) v.push_back(toDouble("gradient-opacity", field));
+    if (v.size() != 2 || !std::isfinite(v[0]) || v[0] < 0.0)
+      throw inputError(
+          "--gradient-opacity: each point is G:A, G a gradient magnitude in HU/mm (0 or more), "
+          "got '" +
+          item + "'");
+    if (!(v[1] >= 0.0 && v[1] <= 1.0))
+      throw inputError("--gradient-opacity: the factor A must lie in 0 ... 1, got '" + item + "'");
+    points.push_back({v[0], v[1]});
+  }
+  std::stable_sort(points.begin(), points.end(),
+                   [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x; });
+  return points;
+}
+
+std::string formatGradientOpacity(const std::vector<glm::dvec2>& points) {
+  std::string out;
+  for (const glm::dvec2& g : points) out += (out.empty() ? "" : ",") + fmt(g.x) + ":" + fmt(g.y);
+  return out;
+}
+
 // Builders for the common kinds. FIELD is a generic lambda giving the field of a
 // RenderParams, const or not, so that one accessor serves both parse and format.
 template <class Field>
@@ -208,6 +238,11 @@ std::vector<ParamSpec> makeSpecs() {
              "ray length in mm over which the table's opacities hold (0 = the smallest voxel "
              "spacing, as the presets)",
              ParamDomain().atLeast(0).in("mm"), FIELD(opacityUnitMm)),
+      {"gradient-opacity", "G:A,...",
+       "dvr: opacity times a factor A (0 ... 1) of the gradient magnitude G (HU/mm), linear "
+       "between points, so homogeneous regions can fade and boundaries show (empty = off)",
+       none, [](P& p, S s) { p.gradientOpacity = parseGradientOpacity(s); },
+       [](const P& p) { return formatGradientOpacity(p.gradientOpacity); }},
       number("preset-shift", "HU", "move the preset's transfer function along HU",
              ParamDomain().in("HU"), FIELD(presetShiftHu)),
       // Any HU is accepted; a control offers the range of CT values.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gradient_table.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -51,6 +52,41 @@ Lut bakeLut(const TransferFunction& tf, const Volume& v, const ValueRange& r, in
     lut.rgba[size_t(k)] = glm::vec4(glm::clamp(tf.evaluate(v.toPhysical(stored)), 0.0, 1.0));
   }
   return lut;
+}
+
+double GradientTable::lookup(double storedPerMm) const {
+  if (factor.empty()) return 1.0;
+  double last = double(factor.size() - 1);
+  double x = std::clamp(storedPerMm * scale, 0.0, last);
+  double i = std::floor(x);
+  size_t k = size_t(i);
+  double a = factor[k];
+  if (k + 1 >= factor.size()) return a;
+  return a + (double(factor[k + 1]) - a) * (x - i);
+}
+
+GradientTable bakeGradientTable(const std::vector<glm::dvec2>& points, double slope) {
+  GradientTable t;
+  if (points.empty()) return t;
+  // The factor at |gradient| g: linear between points, constant beyond; a repeated g makes
+  // a step (the upper point wins, as TransferFunction::evaluate).
+  auto at = [&](double g) {
+    if (g <= points.front().x) return points.front().y;
+    if (g >= points.back().x) return points.back().y;
+    auto hi = std::upper_bound(points.begin(), points.end(), g,
+                               [](double v, const glm::dvec2& p) { return v < p.x; });
+    auto lo = hi - 1;
+    double span = hi->x - lo->x;
+    return span > 0.0 ? glm::mix(lo->y, hi->y, (g - lo->x) / span) : hi->y;
+  };
+  const int n = VOXRAY_GRADIENT_TABLE_ENTRIES;
+  double maxHuPerMm = points.back().x > 0.0 ? points.back().x : 1.0;
+  double huPerStored = std::abs(slope) > 0.0 ? std::abs(slope) : 1.0;
+  t.scale = double(n - 1) * huPerStored / maxHuPerMm;
+  t.factor.resize(size_t(n));
+  for (int k = 0; k < n; ++k)
+    t.factor[size_t(k)] = float(std::clamp(at(maxHuPerMm * double(k) / double(n - 1)), 0.0, 1.0));
+  return t;
 }
 
 }  // namespace voxray

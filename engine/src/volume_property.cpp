@@ -170,7 +170,31 @@ std::vector<ControlPoint> renderTable(const VolumeProperty& vp) {
   return out;
 }
 
+namespace {
+
+// The render parameter's gradient opacity (linear points): the property's points, or for a
+// smooth curve 64 straight pieces along it; empty where it changes nothing.
+std::vector<glm::dvec2> gradientOpacityPoints(const VolumeProperty& vp) {
+  std::vector<glm::dvec2> out;
+  if (!hasGradientOpacity(vp)) return out;
+  if (vp.curve == TfCurve::Linear || vp.gradientOpacity.size() < 2) {
+    for (const OpacityNode& n : vp.gradientOpacity) out.push_back({n.x, n.opacity});
+    return out;
+  }
+  MonotoneCurve c = opacityCurve(vp.gradientOpacity, vp.curve);
+  double lo = vp.gradientOpacity.front().x, hi = vp.gradientOpacity.back().x;
+  constexpr int kPieces = 64;
+  for (int i = 0; i <= kPieces; ++i) {
+    double x = lo + (hi - lo) * double(i) / kPieces;
+    out.push_back({x, c.at(x)});
+  }
+  return out;
+}
+
+}  // namespace
+
 void applyVolumeProperty(RenderParams& p, const VolumeProperty& vp) {
+  p.gradientOpacity = gradientOpacityPoints(vp);
   p.preset.clear();
   p.presetShiftHu = 0.0;
   p.transferFunction = renderTable(vp);
@@ -191,6 +215,7 @@ VolumeProperty volumePropertyOf(const RenderParams& p) {
     vp.color.push_back({c.hu, glm::dvec3(c.rgba)});
     vp.opacity.push_back({c.hu, c.rgba.a});
   }
+  for (const glm::dvec2& g : p.gradientOpacity) vp.gradientOpacity.push_back({g.x, g.y});
   vp.unitDistanceMm = p.opacityUnitMm;
   vp.shade = p.shading;
   vp.nearest = p.interp == Interp::Nearest;

@@ -3,6 +3,7 @@
 #ifndef VOXRAY_DVR_PACKET_CL
 #define VOXRAY_DVR_PACKET_CL
 
+#include "classification/gradient_opacity_lanes.cl"
 #include "classification/lut_lanes.cl"
 #include "empty_space/skip_lanes.cl"
 #include "intersection/ray_lanes.cl"
@@ -11,13 +12,34 @@
 #include "shading/shade_queue.cl"
 #include "simd/math_lanes.cl"
 
+#if GRADIENT_OPACITY
+// The lanes in `live` whose table opacity is above 0 take their gradient at t now (their
+// opacity, which the composite needs, depends on it): c[3] times the factor at |gradient|
+// (dvr_segment of march.cl); *normal keeps the gradient for shading (the queue stores it).
+inline void dvr_gradient_opacityN(__global const short* restrict vol, __constant RaycastParams* P,
+                                  __global const float4* lut, const RayPacket* r, intN live,
+                                  floatN t, floatN c[4], VecN* normal, intN* samples) {
+  intN seen = live & (c[3] > 0.0f);
+  if (!any(seen)) return;
+  VecN at = {r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz};
+  *normal = gradient_to_worldN(P, volume_gradientN(vol, P, at));
+  c[3] *= gradient_opacityN(lut, P, *normal);
+  *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+}
+#define DVR_NORMAL_PARAM , VecN normal
+#define DVR_NORMAL_ARG(n) , n
+#else
+#define DVR_NORMAL_PARAM
+#define DVR_NORMAL_ARG(n)
+#endif
+
 // One dvr sample into the composite: opacity (and colour) c of the segment of length seg
 // at t, for the lanes in `live`. Updates alpha, active, samples and the colour (acc, or
-// the shading queue).
+// the shading queue). GRADIENT_OPACITY: c[3] already scaled, normal its gradient.
 inline void dvr_compositeN(__global const short* restrict vol, __constant RaycastParams* P,
                            __global const float4* lut, ShadeQueue* queue, floatN acc[3],
                            floatN* alpha, intN* active, intN* samples, intN live, floatN seg,
-                           floatN t, floatN value, const floatN c[4]) {
+                           floatN t, floatN value, const floatN c[4] DVR_NORMAL_PARAM) {
   *samples -= live;
   intN seen = live & (c[3] > 0.0f);
   if (!any(seen)) return;
@@ -28,8 +50,10 @@ inline void dvr_compositeN(__global const short* restrict vol, __constant Raycas
   }
   floatN w = select((floatN)(0.0f), (1.0f - *alpha) * a, seen);
   if (SHADING) {
-    shade_queue_push(vol, P, lut, queue, t, value, w, seen);
+    shade_queue_push(vol, P, lut, queue, t, value, w, seen DVR_NORMAL_ARG(normal));
+#if !GRADIENT_OPACITY
     *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+#endif
   } else {
     for (int ch = 0; ch < 3; ++ch) acc[ch] += w * c[ch];
   }
@@ -115,8 +139,12 @@ inline void dvr_packet(PACKET_ARGS) {
 #if HIT_OUTPUT
       floatN before = alpha;
 #endif
+#if GRADIENT_OPACITY
+      VecN normal = {0.0f, 0.0f, 0.0f};
+      dvr_gradient_opacityN(vol, P, lut, &r, live[k] & active, t[k], c[k], &normal, &samples);
+#endif
       dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
-                     sb[k] - sa[k], t[k], value[k], c[k]);
+                     sb[k] - sa[k], t[k], value[k], c[k] DVR_NORMAL_ARG(normal));
 #if HIT_OUTPUT
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
@@ -137,5 +165,8 @@ inline void dvr_packet(PACKET_ARGS) {
 #endif
   write_packet(P, out, count, gx, gy, color, samples);
 }
+
+#undef DVR_NORMAL_PARAM
+#undef DVR_NORMAL_ARG
 
 #endif

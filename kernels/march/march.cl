@@ -4,6 +4,7 @@
 #ifndef VOXRAY_MARCH_CL
 #define VOXRAY_MARCH_CL
 
+#include "classification/gradient_opacity.cl"
 #include "classification/lut.cl"
 #include "empty_space/skip.cl"
 #include "math.cl"
@@ -118,12 +119,24 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
   ++*count;
   float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
   if (c.w <= 0.0f) return false;
+#if GRADIENT_OPACITY
+  // The opacity per reference step times the factor at |gradient|, before the correction
+  // to the segment's length; the gradient is the one shading uses.
+  float3 n_w = world_gradient(VOLUME, P, p_v);
+  *count += GRADIENT_TAPS;
+  c.w *= gradient_opacity(lut, P, n_w);
+  if (c.w <= 0.0f) return false;
+#endif
   float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
   float3 rgb = c.xyz;
   if (SHADING) {
+#if GRADIENT_OPACITY
+    rgb = shade(rgb, n_w, origin_w + t * dir_w, -dir_w, P->light_w, frame_light(lut, P, p_v));
+#else
     rgb = shade(rgb, world_gradient(VOLUME, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,
                 frame_light(lut, P, p_v));
     *count += GRADIENT_TAPS;
+#endif
   }
   *acc += (1.0f - *alpha) * a * rgb;
 #if HIT_OUTPUT

@@ -5,7 +5,9 @@
 // in the composite is known when it is queued (opacity does not depend on shading), so
 // only its colour waits: acc[lane] += weight * lit colour, in the order the lane took its
 // samples, as without the queue. An entry keeps only t, the value and the weight; its
-// position, colour and view come back from its lane's ray at the flush.
+// position, colour and view come back from its lane's ray at the flush. With
+// GRADIENT_OPACITY the weight needs the gradient first (dvr_gradient_opacityN), taken when
+// the sample is: the entry keeps it too, so the flush shades without taking it again.
 #ifndef VOXRAY_SHADE_QUEUE_CL
 #define VOXRAY_SHADE_QUEUE_CL
 
@@ -16,6 +18,9 @@
 typedef struct {
   float t[2 * LANES], value[2 * LANES], weight[2 * LANES];
   int lane[2 * LANES];  // whose ray entry e belongs to
+#if GRADIENT_OPACITY
+  float normal[3][2 * LANES];  // each entry's world gradient
+#endif
   int n;
   // The part of each lane's ray that differs between lanes: voxel and world origins with
   // ORTHO, else voxel and world directions (pixel_raysN).
@@ -32,6 +37,9 @@ inline void shade_queue_init(ShadeQueue* q, const RayPacket* r, const floatN wor
   // Entries past n still go through the gradient (whole vectors): t = 0 and lane 0 put
   // them at a lane's entry point, in the volume.
   for (int e = 0; e < 2 * LANES; ++e) q->t[e] = q->value[e] = q->weight[e] = 0.0f, q->lane[e] = 0;
+#if GRADIENT_OPACITY
+  for (int e = 0; e < 2 * LANES; ++e) q->normal[0][e] = q->normal[1][e] = q->normal[2][e] = 0.0f;
+#endif
   for (int c = 0; c < 3; ++c)
     for (int l = 0; l < LANES; ++l) q->acc[c][l] = 0.0f;
   q->n = 0;
@@ -64,7 +72,11 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
   floatN c[4];
   lutN(lut, P, vloadN(0, q->value), c);
   VecN color = {c[0], c[1], c[2]};
+#if GRADIENT_OPACITY
+  VecN normal = {vloadN(0, q->normal[0]), vloadN(0, q->normal[1]), vloadN(0, q->normal[2])};
+#else
   VecN normal = gradient_to_worldN(P, volume_gradientN(vol, P, at));
+#endif
   VecN lit = shade_frameN(lut, P, at, color, normal, pos, view);
   floatN w = vloadN(0, q->weight);
   float add[3][LANES];
@@ -79,26 +91,43 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
     q->value[e - count] = q->value[e];
     q->weight[e - count] = q->weight[e];
     q->lane[e - count] = q->lane[e];
+#if GRADIENT_OPACITY
+    for (int k = 0; k < 3; ++k) q->normal[k][e - count] = q->normal[k][e];
+#endif
   }
   q->n = n - count;
 }
 
-// Queues the lanes in `seen` (their t, value and weight); shades a full call's worth when
-// there is one.
+// Queues the lanes in `seen` (their t, value and weight, GRADIENT_OPACITY: and gradient);
+// shades a full call's worth when there is one.
 inline void shade_queue_push(__global const short* restrict vol, __constant RaycastParams* P,
                              __global const float4* lut, ShadeQueue* q, floatN t, floatN value,
-                             floatN weight, intN seen) {
+                             floatN weight, intN seen
+#if GRADIENT_OPACITY
+                             ,
+                             VecN normal
+#endif
+) {
   float ts[LANES], vs[LANES], ws[LANES];
   int take[LANES];
   vstoreN(t, 0, ts);
   vstoreN(value, 0, vs);
   vstoreN(weight, 0, ws);
   vstoreN(seen, 0, take);
+#if GRADIENT_OPACITY
+  float ns[3][LANES];
+  vstoreN(normal.x, 0, ns[0]);
+  vstoreN(normal.y, 0, ns[1]);
+  vstoreN(normal.z, 0, ns[2]);
+#endif
   // Without branches (which lanes are seen is hard to predict): every lane is written at
   // n, and n moves on past the seen ones. n < LANES before, so n + LANES - 1 fits.
   int n = q->n;
   for (int l = 0; l < LANES; ++l) {
     q->t[n] = ts[l], q->value[n] = vs[l], q->weight[n] = ws[l], q->lane[n] = l;
+#if GRADIENT_OPACITY
+    q->normal[0][n] = ns[0][l], q->normal[1][n] = ns[1][l], q->normal[2][n] = ns[2][l];
+#endif
     n += take[l] & 1;
   }
   q->n = n;

@@ -2,6 +2,7 @@
 #ifndef VOXRAY_SHADING_CL
 #define VOXRAY_SHADING_CL
 
+#include "gradient_table.h"
 #include "math.cl"
 #include "params.cl"
 
@@ -68,10 +69,14 @@ inline float toward_light(__constant RaycastParams* P, float3 p, float3* dv) {
 // the shadow offset toward the light (the model's T, monte_carlo_reference.h): there, unlike
 // at p_v, the grid's interpolation does not reach points inside the sample's own surface,
 // which darkened lit surfaces (the grid held T from each point's own offset before).
-// The grid's value at voxel position p_v, read where it is stored: behind the table.
+// The grid's value at voxel position p_v, read where it is stored: behind the table (and
+// behind the gradient-opacity table, GRADIENT_OPACITY).
 inline float light_grid_at(__global const float4* lut, __constant RaycastParams* P, float3 p_v) {
-  return grid_trilinear((__global const float*)(lut + P->dims.w), P->light_grid,
-                        p_v * P->light_march.z);
+  __global const float4* grid = lut + P->dims.w;
+#if GRADIENT_OPACITY
+  grid += VOXRAY_GRADIENT_TABLE_FLOAT4S;
+#endif
+  return grid_trilinear((__global const float*)grid, P->light_grid, p_v * P->light_march.z);
 }
 
 inline float light_grid(__global const float4* lut, __constant RaycastParams* P, float3 p_v) {

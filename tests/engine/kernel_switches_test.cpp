@@ -69,6 +69,28 @@ TEST(KernelSwitches, SwitchesThatCannotMatterKeepTheirDefaults) {
   EXPECT_EQ(kernelSwitches(dvr).JITTER, 1);
 }
 
+// Issue 35: the gradient opacity is dvr's, off without points, takes the gradient operator
+// even unshaded, and turns adaptive steps off (their levels read the colour table alone).
+TEST(KernelSwitches, GradientOpacityIsDvrsAndTurnsAdaptiveStepsOff) {
+  RenderParams dvr = frame(Mode::Dvr, Gradient::Sobel, Interp::Linear);
+  dvr.adaptiveError = 0.01;
+  dvr.shading = false;
+  EXPECT_EQ(kernelSwitches(dvr).GRADIENT_OPACITY, 0);
+  EXPECT_EQ(kernelSwitches(dvr).GRADIENT, 0);
+  EXPECT_EQ(kernelSwitches(dvr).ADAPTIVE, 1);
+  dvr.gradientOpacity = {{0.0, 0.0}, {100.0, 1.0}};
+  KernelSwitches s = kernelSwitches(dvr);
+  EXPECT_EQ(s.GRADIENT_OPACITY, 1);
+  EXPECT_EQ(s.GRADIENT, 1);
+  EXPECT_EQ(s.ADAPTIVE, 0);
+  EXPECT_EQ(variantName(s), "dvr_sobel_oc_gopacity");
+  for (Mode m : {Mode::Iso, Mode::Mip}) {
+    RenderParams other = dvr;
+    other.mode = m;
+    EXPECT_EQ(kernelSwitches(other).GRADIENT_OPACITY, 0) << toString(m);
+  }
+}
+
 TEST(KernelSwitches, EverySwitchIsPassedOnceAsALiteralOrItsSlot) {
   KernelSwitches s = kernelSwitches(frame(Mode::Dvr, Gradient::ZuckerHummel, Interp::Linear));
   s.PACKET = 1;

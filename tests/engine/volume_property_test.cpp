@@ -167,6 +167,54 @@ TEST(VolumeProperty, ApplyingTakesShadingSamplingAndTheUnit) {
   EXPECT_EQ(back.transferFunction, p.transferFunction);
 }
 
+// Issue 35: the gradient opacity reaches the render parameters (and saved state), linear
+// points as they are, a smooth curve as straight pieces along it; all 1 changes nothing.
+TEST(VolumeProperty, ApplyingTakesTheGradientOpacity) {
+  VolumeProperty vp = tent(TfCurve::Linear);
+  vp.gradientOpacity = {{0.0, 0.0}, {40.0, 0.5}, {100.0, 1.0}};
+  RenderParams p;
+  applyVolumeProperty(p, vp);
+  ASSERT_EQ(p.gradientOpacity.size(), 3u);
+  EXPECT_EQ(p.gradientOpacity[1], glm::dvec2(40.0, 0.5));
+  RenderParams back;
+  fromText(back, toText(p));
+  EXPECT_EQ(back.gradientOpacity, p.gradientOpacity);
+  EXPECT_EQ(findRenderParamSpec("gradient-opacity").format(p), "0:0,40:0.5,100:1");
+  EXPECT_EQ(volumePropertyOf(p).gradientOpacity, vp.gradientOpacity);
+
+  vp.curve = TfCurve::Smooth;
+  applyVolumeProperty(p, vp);
+  ASSERT_EQ(p.gradientOpacity.size(), 65u);
+  EXPECT_EQ(p.gradientOpacity.front(), glm::dvec2(0.0, 0.0));
+  EXPECT_EQ(p.gradientOpacity.back(), glm::dvec2(100.0, 1.0));
+  for (const glm::dvec2& g : p.gradientOpacity)
+    EXPECT_NEAR(g.y, gradientOpacityAt(vp, g.x), 1e-12) << g.x;
+
+  vp.gradientOpacity = {{0.0, 1.0}, {50.0, 1.0}};  // factor 1 everywhere: off
+  applyVolumeProperty(p, vp);
+  EXPECT_TRUE(p.gradientOpacity.empty());
+}
+
+TEST(RenderParamsGradientOpacity, BadPointsAreRefusedWithTheRule) {
+  RenderParams p;
+  auto message = [&](const std::string& text) {
+    try {
+      findRenderParamSpec("gradient-opacity").parse(p, text);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message("10:0.5,0:0"), "");
+  EXPECT_EQ(p.gradientOpacity, (std::vector<glm::dvec2>{{0.0, 0.0}, {10.0, 0.5}}));  // sorted
+  EXPECT_NE(message("10:1.5").find("the factor A must lie in 0 ... 1, got '10:1.5'"),
+            std::string::npos);
+  EXPECT_NE(message("-1:0.5").find("0 or more), got '-1:0.5'"), std::string::npos);
+  EXPECT_NE(message("10").find("each point is G:A"), std::string::npos);
+  EXPECT_EQ(message(""), "");
+  EXPECT_TRUE(p.gradientOpacity.empty());
+}
+
 TEST(VolumeProperty, ValidationNamesTheFieldThatIsWrong) {
   auto message = [](const VolumeProperty& vp) {
     try {

@@ -57,6 +57,7 @@ const std::map<std::string, std::string> kUnusual = {
     {"preset", "CT-Bone"},
     {"tf", "-100.5:0.1:0.2:0.3:0,300.25:1:0.9:0.8:0.05"},
     {"opacity-unit", "0.7071067811865476"},
+    {"gradient-opacity", "0:0,33.333333333333336:0.25,150.5:1"},
     {"preset-shift", "-123.456789012345"},
     {"iso", "150,2000"},
     {"gradient", "sobel"},
@@ -390,6 +391,20 @@ TEST(Session, TurnedAndSlabViewsRoundTripAndAbsentMeansAcquisitionPlanesThin) {
             std::string::npos);
   EXPECT_NE(withView({{"slab-mode", "max"}}).find("field 'slices.views.axial.slab-mode' is wrong"),
             std::string::npos);
+}
+
+// Issue 35: sessions saved before the gradient opacity was rendered read with it off.
+TEST(Session, AnOlderSessionReadsWithoutTheGradientOpacity) {
+  Session s;
+  s.render.mode = Mode::Dvr;
+  Json j = jsonOf(s, "s.json");
+  ASSERT_EQ(j["render"]["gradient-opacity"], "");
+  j["render"].erase("gradient-opacity");
+  const SessionRead read = sessionFromJson(j.dump(), "s.json");
+  ASSERT_EQ(read.warnings.size(), 1u);
+  EXPECT_EQ(read.warnings[0], "field 'render.gradient-opacity' missing: left at its default ()");
+  EXPECT_TRUE(read.session.render.gradientOpacity.empty());
+  EXPECT_EQ(read.session.render.mode, Mode::Dvr);
 }
 
 // Issue 41 item 7: "Handles in 3D view" and "Show planes in 3D view" were not in sessions.

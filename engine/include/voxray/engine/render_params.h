@@ -62,6 +62,10 @@ struct RenderParams {
   // The ray length (mm) over which the table's opacities hold; 0 = the smallest voxel
   // spacing, what the presets are made for (issue 35: Slicer's scalar opacity unit distance).
   double opacityUnitMm = 0.0;
+  // dvr: each sample's opacity times a factor of the gradient magnitude there (issue 35; VTK's
+  // and Slicer's gradient opacity): points (|gradient| in HU/mm, factor 0 ... 1) sorted by
+  // |gradient|, linear between, constant beyond the ends. Empty: off (factor 1).
+  std::vector<glm::dvec2> gradientOpacity;
   double isoLo = 400.0;  // HU range of the first-hit surface (the seed's two sliders)
   double isoHi = 32767.0;
   Gradient gradient = Gradient::Central;

@@ -36,6 +36,17 @@ Lut bakeLut(const TransferFunction& tf, const Volume& v, int maxEntries = 4096);
 Lut bakeLut(const TransferFunction& tf, const Volume& v, const ValueRange& range,
             int maxEntries = 4096);
 
+// The gradient opacity as the kernels read it (RenderParams::gradientOpacity, issue 35): equally
+// spaced factors over |gradient| 0 ... the last point's, in stored units per mm (the volume's
+// slope folded in), linear between entries, the last beyond. The reference renderer uses it too.
+struct GradientTable {
+  double scale = 0.0;                       // entries per stored unit / mm
+  std::vector<float> factor;                // empty: off
+  double lookup(double storedPerMm) const;  // 1 when off
+};
+// POINTS: (|gradient| in HU/mm, factor), sorted; SLOPE: HU per stored unit. Empty when POINTS is.
+GradientTable bakeGradientTable(const std::vector<glm::dvec2>& points, double slope);
+
 struct Preset {
   std::string name;
   std::string description;
