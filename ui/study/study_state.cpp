@@ -38,8 +38,8 @@ std::string preferenceLines(const std::string& text) {
 
 // The preferences in HU: a volume whose values are not HU gets its own (value_look.h).
 bool isHuValued(const std::string& key) {
-  return key == "preset" || key == "tf" || key == "opacity-unit" || key == "preset-shift" ||
-         key == "iso" || key == "window";
+  return key == "preset" || key == "tf" || key == "opacity-unit" || key == "gradient-opacity" ||
+         key == "preset-shift" || key == "iso" || key == "window";
 }
 
 // TEXT's lines, with the HU-valued ones taken from HU's instead (linesWhere isHuValued);
@@ -89,7 +89,7 @@ const std::vector<std::string>& preferenceKeys() {
   // they cut away.
   static const std::vector<std::string> keys = {
       // presets and their adjustments
-      "mode", "preset", "tf", "opacity-unit", "preset-shift", "iso", "window",
+      "mode", "preset", "tf", "opacity-unit", "gradient-opacity", "preset-shift", "iso", "window",
       // reconstruction and compositing
       "gradient", "interp", "step", "refine", "jitter", "shading", "opacity-correction",
       "early-termination",

@@ -230,8 +230,9 @@ QString TfEditorDialog::loadFile(const QString& file) {
     }
     if (hasGradientOpacity(model_->property()))
       status_->setText(
-          "This file has a gradient-magnitude opacity, which Voxray does not render yet; its "
-          "colour and scalar opacity are shown.");
+          "This transfer function has a gradient-magnitude opacity: dvr fades flat regions and "
+          "keeps boundaries (not in shadows, ambient occlusion or cinematic). The curve above "
+          "is the scalar opacity.");
     return {};
   } catch (const Error& e) {
     return QString::fromStdString(e.what());
