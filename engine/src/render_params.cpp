@@ -97,17 +97,28 @@ void parseClip(RenderParams& p, const std::string& s) {
   }
 }
 
-// "HU:R:G:B:A,HU:R:G:B:A,...": sorted by HU, stable, so coincident points keep their order
-// (the step goes from the first to the last of them).
-std::vector<ControlPoint> parseTransferFunction(const std::string& s) {
-  std::vector<ControlPoint> points;
+// "X:Y:...,X:Y:...": each comma-separated item with its colon-separated numbers (KEY names
+// the flag when one is not a number), the shape of both point lists below.
+std::vector<std::pair<std::string, std::vector<double>>> colonPoints(const std::string& key,
+                                                                     const std::string& s) {
+  std::vector<std::pair<std::string, std::vector<double>>> out;
   std::istringstream in(s);
   std::string item;
   while (std::getline(in, item, ',')) {
     std::vector<double> v;
     std::istringstream fields(item);
     std::string field;
-    while (std::getline(fields, field, ':')) v.push_back(toDouble("tf", field));
+    while (std::getline(fields, field, ':')) v.push_back(toDouble(key, field));
+    out.emplace_back(item, std::move(v));
+  }
+  return out;
+}
+
+// "HU:R:G:B:A,HU:R:G:B:A,...": sorted by HU, stable, so coincident points keep their order
+// (the step goes from the first to the last of them).
+std::vector<ControlPoint> parseTransferFunction(const std::string& s) {
+  std::vector<ControlPoint> points;
+  for (const auto& [item, v] : colonPoints("tf", s)) {
     if (v.size() != 5 || !std::isfinite(v[0]))
       throw inputError("--tf: each point is HU:R:G:B:A with a finite HU, got '" + item + "'");
     for (int c = 1; c < 5; ++c)
@@ -133,13 +144,7 @@ std::string formatTransferFunction(const std::vector<ControlPoint>& points) {
 // "G:A,G:A,...": |gradient| in HU/mm and a factor 0 ... 1, sorted by |gradient| (stable).
 std::vector<glm::dvec2> parseGradientOpacity(const std::string& s) {
   std::vector<glm::dvec2> points;
-  std::istringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    std::vector<double> v;
-    std::istringstream fields(item);
-    std::string field;
-    while (std::getline(fields, field, ':')) v.push_back(toDouble("gradient-opacity", field));
+  for (const auto& [item, v] : colonPoints("gradient-opacity", s)) {
     if (v.size() != 2 || !std::isfinite(v[0]) || v[0] < 0.0)
       throw inputError(
           "--gradient-opacity: each point is G:A, G a gradient magnitude in HU/mm (0 or more), "

@@ -2,6 +2,7 @@
 // <VolumeProperty> element per preset, its attributes the fields of a .vp file.
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -61,10 +62,12 @@ std::vector<VolumeProperty> parseSlicerPresets(const std::string& xml, const std
 std::vector<VolumeProperty> readSlicerPresetFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw inputError(path + ": cannot open the preset list; check the path");
+  // Asked before reading it: Slicer's own list is about 30 kB.
+  std::error_code ec;
+  if (std::filesystem::file_size(path, ec) > (std::uintmax_t(64) << 20) && !ec)
+    throw inputError(path + ": over 64 MB, too large for a preset list");
   std::ostringstream text;
   text << in.rdbuf();
-  if (text.tellp() > (std::streampos(64) << 20))
-    throw inputError(path + ": over 64 MB, too large for a preset list");
   return parseSlicerPresets(text.str(), path);
 }
 

@@ -109,6 +109,13 @@ class Numbers {
   std::string origin_;
 };
 
+// ".json", ".vp": how the two file forms are told apart, whatever the case.
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
 std::string vpFunction(const std::vector<std::vector<double>>& rows, size_t width) {
   std::string out = std::to_string(rows.size() * width);
   for (const auto& r : rows)
@@ -241,18 +248,18 @@ std::string toSlicerVolumeProperty(const VolumeProperty& vp) {
 
 VolumeProperty readVolumePropertyFile(const std::string& path) {
   namespace fs = std::filesystem;
-  std::string ext = fs::path(path).extension().string();
-  for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowerExtension(path);
   if (ext != ".json" && ext != ".vp")
     throw inputError(path + ": a transfer function file ends in .json (Voxray) or .vp (3D Slicer)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw inputError(path + ": cannot open the transfer function file; check the path");
-  std::ostringstream text;
-  // A transfer function is a few kB; more than 16 MB is not one.
-  constexpr std::streamsize kMaxBytes = std::streamsize(16) << 20;
-  text << in.rdbuf();
-  if (std::streamsize(text.tellp()) > kMaxBytes)
+  // A transfer function is a few kB; more than 16 MB is not one (asked before reading it).
+  constexpr std::uintmax_t kMaxBytes = std::uintmax_t(16) << 20;
+  std::error_code ec;
+  if (fs::file_size(path, ec) > kMaxBytes && !ec)
     throw inputError(path + ": over 16 MB, too large for a transfer function file");
+  std::ostringstream text;
+  text << in.rdbuf();
   if (ext == ".json") return parseVolumePropertyJson(text.str(), path);
   VolumeProperty vp = parseSlicerVolumeProperty(text.str(), path);
   vp.name = fs::path(path).stem().string();
@@ -260,9 +267,7 @@ VolumeProperty readVolumePropertyFile(const std::string& path) {
 }
 
 void writeVolumePropertyFile(const VolumeProperty& vp, const std::string& path) {
-  namespace fs = std::filesystem;
-  std::string ext = fs::path(path).extension().string();
-  for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowerExtension(path);
   if (ext != ".json" && ext != ".vp")
     throw outputError(path + ": name the file .json (Voxray) or .vp (3D Slicer)");
   std::string text = ext == ".json" ? toVolumePropertyJson(vp) : toSlicerVolumeProperty(vp);
