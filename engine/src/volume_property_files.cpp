@@ -32,6 +32,16 @@ std::string countText(double v) {
   return exact(v);
 }
 
+// J's KEY as text, FALLBACK when absent; a value that is not text is refused naming the field
+// (nlohmann's value() would throw its own type error, which no caller expects).
+std::string textField(const Json& j, const char* key, const char* fallback,
+                      const std::string& origin) {
+  auto it = j.find(key);
+  if (it == j.end()) return fallback;
+  if (!it->is_string()) throw inputError(origin + ": " + key + " must be text");
+  return it->get<std::string>();
+}
+
 double number(const Json& j, const std::string& origin, const std::string& field) {
   if (!j.is_number()) throw inputError(origin + ": " + field + " must be a number");
   return j.get<double>();
@@ -132,7 +142,8 @@ VolumeProperty parseVolumePropertyJson(const std::string& text, const std::strin
   } catch (const Json::exception& e) {
     throw inputError(origin + ": not valid JSON (" + std::string(e.what()) + ")");
   }
-  if (!j.is_object() || j.value("format", "") != kFormat)
+  if (!j.is_object() || !j.contains("format") || !j["format"].is_string() ||
+      j["format"].get<std::string>() != kFormat)
     throw inputError(origin + ": not a Voxray transfer function (its \"format\" must be \"" +
                      kFormat + "\")");
   if (!j.contains("version") || !j["version"].is_number_integer() ||
@@ -145,7 +156,7 @@ VolumeProperty parseVolumePropertyJson(const std::string& text, const std::strin
     if (!j["name"].is_string()) throw inputError(origin + ": name must be text");
     vp.name = j["name"].get<std::string>();
   }
-  std::string curve = j.value("curve", "linear");
+  std::string curve = textField(j, "curve", "linear", origin);
   if (curve != "linear" && curve != "smooth")
     throw inputError(origin + ": curve is '" + curve + "'; it must be linear or smooth");
   vp.curve = curve == "smooth" ? TfCurve::Smooth : TfCurve::Linear;
@@ -157,7 +168,7 @@ VolumeProperty parseVolumePropertyJson(const std::string& text, const std::strin
         opacityNodes(pointList(j["gradientOpacity"], origin, "gradient opacity", 2));
   if (j.contains("unitDistanceMm"))
     vp.unitDistanceMm = number(j["unitDistanceMm"], origin, "unitDistanceMm");
-  std::string interpolation = j.value("interpolation", "linear");
+  std::string interpolation = textField(j, "interpolation", "linear", origin);
   if (interpolation != "linear" && interpolation != "nearest")
     throw inputError(origin + ": interpolation is '" + interpolation +
                      "'; it must be linear or nearest");

@@ -199,6 +199,16 @@ TEST(VolumePropertyFiles, ABadJsonFileNamesTheField) {
   EXPECT_EQ(jsonRefusal(head + R"("color": [[0, 1, 1, 1]], "opacity": [[10, 0], [0, 1]]})"),
             "b.json: opacity point 2 (at 0) comes after one at 10; points must be sorted by "
             "position");
+  // Found by the transfer-function fuzzer: a number where text belongs threw nlohmann's
+  // type error past every caller (the editor's Load would have ended the workstation).
+  EXPECT_EQ(jsonRefusal(head + R"("color": [[0, 1, 1, 1]], "opacity": [[0, 1]], "curve": 2})"),
+            "b.json: curve must be text");
+  EXPECT_EQ(
+      jsonRefusal(head + R"("color": [[0, 1, 1, 1]], "opacity": [[0, 1]], "interpolation": [1]})"),
+      "b.json: interpolation must be text");
+  EXPECT_EQ(jsonRefusal(R"({"format": 7})"),
+            "b.json: not a Voxray transfer function (its \"format\" must be "
+            "\"voxray-transfer-function\")");
   EXPECT_EQ(
       jsonRefusal(head + R"("color": [[0, 1, 1, 1]], "opacity": [[0, 1]], "curve": "cubic"})"),
       "b.json: curve is 'cubic'; it must be linear or smooth");
