@@ -118,6 +118,16 @@ def check_seg(path, want):
     got = sorted((n, [round(v, 3) for v in p], s) for n, p, s in frames)
     exp = sorted((f["segment"], [round(v, 3) for v in f["position"]], f.get("source")) for f in want["frames"])
     expect(got == exp, f"frames differ:\n got {got[:4]}...\nwant {exp[:4]}...")
+    if "labels_raw" in want:  # voxel for voxel: each frame's pixels where its slice has them
+        x, y, z = want["dims"]
+        labels = np.fromfile(want["labels_raw"], dtype=np.uint8).reshape(z, y, x)
+        slice_at = {(f["segment"], tuple(round(v, 3) for v in f["position"])): f["slice"] for f in want["frames"]}
+        rebuilt = np.zeros_like(labels)
+        for (number, position, _), frame in zip(frames, pixels):
+            k = slice_at.get((number, tuple(round(v, 3) for v in position)))
+            if k is not None:
+                rebuilt[k][frame != 0] = number
+        expect((rebuilt == labels).all(), f"{int((rebuilt != labels).sum())} voxels differ from the label map")
 
 
 def check_source(path, folder):

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -118,6 +119,7 @@ void checkWithPython(const std::string& mode, const std::string& file, const std
                               status);
   ASSERT_NE(status, 3) << out << "run scripts/bootstrap";
   EXPECT_EQ(status, 0) << out;
+  if (!out.empty()) std::cout << mode << " check: " << out;
 }
 
 std::string writeJson(const TempFolder& dir, const json& j) {
@@ -160,6 +162,48 @@ json rasAffine(const VoxelGrid& g) {
   }
   a.push_back({0, 0, 0, 1});
   return a;
+}
+
+// What highdicom must find in a SEG of SEG (segments numbered 1.. in order): each frame at
+// its slice's position and source image, and the label map (renumbered) voxel for voxel.
+json segExpectation(const TempFolder& dir, const Volume& v, const Segmentation& seg,
+                    const json& segments) {
+  json frames = json::array();
+  const size_t slice = size_t(v.dims.x) * size_t(v.dims.y);
+  std::vector<uint8_t> renumbered(seg.labels.size(), 0);
+  json counts = json::object();
+  int number = 0;
+  for (const Segment& s : seg.segments) {
+    ++number;
+    int count = 0;
+    for (size_t i = 0; i < seg.labels.size(); ++i)
+      if (seg.labels[i] == s.label) {
+        renumbered[i] = uint8_t(number);
+        ++count;
+      }
+    counts[std::to_string(number)] = count;
+    for (int k = 0; k < v.dims.z; ++k) {
+      bool has = false;
+      for (size_t i = 0; i < slice; ++i) has |= seg.labels[size_t(k) * slice + i] == s.label;
+      if (!has) continue;
+      const glm::dvec3 p = seg.grid.toPatient(glm::dvec3(0, 0, k));
+      frames.push_back({{"segment", number},
+                        {"slice", k},
+                        {"position", {p.x, p.y, p.z}},
+                        {"source", v.study.sliceSopInstanceUids[size_t(k)]}});
+    }
+  }
+  const std::string raw = dir / "labels.raw";
+  std::ofstream(raw, std::ios::binary)
+      .write(reinterpret_cast<const char*>(renumbered.data()), std::streamsize(renumbered.size()));
+  return {{"frame_of_reference", v.study.frameOfReferenceUid},
+          {"study", v.study.studyInstanceUid},
+          {"series", v.study.seriesInstanceUid},
+          {"segments", segments},
+          {"counts", counts},
+          {"frames", frames},
+          {"dims", {v.dims.x, v.dims.y, v.dims.z}},
+          {"labels_raw", raw}};
 }
 
 TEST(SegmentFiles, ANiftiLabelMapReadsBackVoxelForVoxelAtTheVolumesRasAffine) {
@@ -257,22 +301,6 @@ TEST(SegmentFiles, ADicomSegReadsBackVoxelForVoxelWithNamesColoursAndCodes) {
   expectSameSegments(back, renumbered, 0.005f);
 
   // highdicom: every frame at its slice's position, referencing its slice's image.
-  json frames = json::array();
-  const size_t slice = size_t(v.dims.x) * size_t(v.dims.y);
-  int number = 0;
-  for (const Segment& s : seg.segments) {
-    ++number;
-    for (int k = 0; k < v.dims.z; ++k) {
-      bool has = false;
-      for (size_t i = 0; i < slice; ++i) has |= seg.labels[size_t(k) * slice + i] == s.label;
-      if (!has) continue;
-      const glm::dvec3 p = seg.grid.toPatient(glm::dvec3(0, 0, k));
-      frames.push_back({{"segment", number},
-                        {"position", {p.x, p.y, p.z}},
-                        {"source", v.study.sliceSopInstanceUids[size_t(k)]}});
-    }
-  }
-  const auto counts = countsOf(seg);
   json segments = json::array();
   segments.push_back({{"number", 1},
                       {"name", "Pelvis"},
@@ -284,13 +312,30 @@ TEST(SegmentFiles, ADicomSegReadsBackVoxelForVoxelWithNamesColoursAndCodes) {
                       {"type_code", "VOXRAY-FREE-TEXT"},
                       {"category_code", "VOXRAY-FREE-TEXT"},
                       {"algorithm", "MANUAL"}});
-  checkWithPython("seg", path,
-                  writeJson(dir, {{"frame_of_reference", v.study.frameOfReferenceUid},
-                                  {"study", v.study.studyInstanceUid},
-                                  {"series", v.study.seriesInstanceUid},
-                                  {"segments", segments},
-                                  {"counts", {{"1", counts.at(1)}, {"2", counts.at(3)}}},
-                                  {"frames", frames}}));
+  checkWithPython("seg", path, writeJson(dir, segExpectation(dir, v, seg, segments)));
+}
+
+TEST(SegmentFiles, DicomSegFramesWhoseBitsDoNotFillWholeBytesReadBack) {
+  // 13 x 11 = 143 pixels: binary frames are packed one after another, so frame 2 starts in
+  // the middle of a byte.
+  TempFolder dir;
+  Volume v = obliqueVolume();
+  v.dims = {13, 11, 10};
+  v.voxels.assign(v.voxelCount(), 0);
+  Segmentation seg = emptySegmentation(v);
+  for (size_t i = 0; i < seg.labels.size(); ++i) seg.labels[i] = (i * 7 + i / 5) % 3 == 0 ? 1 : 0;
+  Segment s;
+  s.name = "Pattern";
+  seg.segments = {s};
+  writeDicomSeg(dir / "odd.dcm", seg, v.study);
+  EXPECT_EQ(readSegmentationFile(dir / "odd.dcm", v).labels, seg.labels);
+  json segments = json::array();
+  segments.push_back({{"number", 1},
+                      {"name", "Pattern"},
+                      {"type_code", "85756007"},
+                      {"category_code", "91723000"},
+                      {"algorithm", "SEMIAUTOMATIC"}});
+  checkWithPython("seg", dir / "odd.dcm", writeJson(dir, segExpectation(dir, v, seg, segments)));
 }
 
 // dciodvfy checks the object against the IOD; its output names each problem "Error - ...".
@@ -299,6 +344,7 @@ void expectNoIodError(const std::string& path) {
   const std::string out = run("dciodvfy '" + path + "'", status);
   ASSERT_NE(out.find("Segmentation"), std::string::npos) << "dciodvfy did not run:\n" << out;
   EXPECT_EQ(out.find("Error"), std::string::npos) << out;
+  std::cout << "dciodvfy: " << out;  // warnings, if any, for the reader of the log
 }
 
 TEST(SegmentFiles, DciodvfyFindsNoErrorInTheDicomSeg) {

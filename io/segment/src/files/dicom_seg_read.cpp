@@ -8,7 +8,6 @@
 #include <dcmtk/dcmiod/cielabutil.h>
 #include <dcmtk/dcmseg/segdoc.h>
 #include <dcmtk/dcmseg/segment.h>
-#include <dcmtk/dcmseg/segutils.h>
 
 #include <cmath>
 #include <memory>
@@ -111,6 +110,20 @@ Segmentation readSeg(const std::string& path, const Volume& onto) {
     seg.segments.push_back(out);
   }
 
+  // The frames' bits one after another, the first pixel in the lowest bit (read here, not
+  // through DCMTK 3.6.7, which misplaces frames that start inside a byte).
+  const Uint8* bits = nullptr;
+  unsigned long bytes = 0;
+  if (d.findAndGetUint8Array(DCM_PixelData, bits, &bytes).bad() || !bits)
+    throw inputError(path +
+                     ": its pixel data cannot be read (compressed or missing); Voxray "
+                     "reads uncompressed binary DICOM SEG");
+  const size_t needed = (doc->getNumberOfFrames() * size_t(rows) * size_t(columns) + 7) / 8;
+  if (bytes < needed)
+    throw inputError(path + ": holds " + std::to_string(bytes) + " bytes of pixel data for " +
+                     std::to_string(doc->getNumberOfFrames()) + " frames that need " +
+                     std::to_string(needed) + ": the file is truncated or damaged");
+
   // Every frame must lie in the plane of one of the volume's slices.
   FGInterface& groups = doc->getFunctionalGroups();
   const size_t frames = doc->getNumberOfFrames();
@@ -159,14 +172,11 @@ Segmentation readSeg(const std::string& path, const Volume& onto) {
     if (number < 1 || number > segments)
       throw inputError(where + " names segment " + std::to_string(number) +
                        ", which is not in the file");
-    const DcmIODTypes::Frame* packed = doc->getFrame(f);
-    if (!packed) throw inputError(where + " has no pixel data: the file is truncated");
-    std::unique_ptr<DcmIODTypes::Frame> bits(DcmSegUtils::unpackBinaryFrame(packed, rows, columns));
-    if (!bits || bits->length < sliceSize)
-      throw inputError(where + ": its pixel data cannot be read");
     uint8_t* slice = seg.labels.data() + size_t(k) * sliceSize;
+    const size_t first = f * sliceSize;
     for (size_t i = 0; i < sliceSize; ++i)
-      if (bits->pixData[i]) slice[i] = uint8_t(number);  // overlaps: the later segment wins
+      if (bits[(first + i) / 8] & (1u << ((first + i) % 8)))
+        slice[i] = uint8_t(number);  // overlaps: the later segment wins
   }
   return seg;
 }

@@ -177,6 +177,14 @@ std::string writeSeg(const std::string& temporary, const Segmentation& seg,
 
   const Segment::Code tissue{"85756007", "SCT", "Tissue"};
   std::vector<Uint8> frame(sliceSize);
+  // The pixel data as the standard packs it: every frame's bits one after another, the first
+  // pixel in the lowest bit. DCMTK 3.6.7 misplaces the bits of frames that start inside a
+  // byte (rows x columns not a multiple of 8); what it writes is replaced by these.
+  size_t frames = 0;
+  for (const Segment& s : seg.segments)
+    for (const auto& labels : inSlice) frames += labels[s.label] ? 1 : 0;
+  std::vector<Uint8> bits((frames * sliceSize + 7) / 8, 0);
+  size_t bit = 0;
   for (const Segment& s : seg.segments) {
     DcmSegment* segment = nullptr;
     check(DcmSegment::create(
@@ -198,7 +206,11 @@ std::string writeSeg(const std::string& temporary, const Segmentation& seg,
     for (int k = 0; k < g.dims.z; ++k) {
       if (!inSlice[size_t(k)][s.label]) continue;
       const uint8_t* labels = seg.labels.data() + size_t(k) * sliceSize;
-      for (size_t i = 0; i < sliceSize; ++i) frame[i] = labels[i] == s.label ? 1 : 0;
+      for (size_t i = 0; i < sliceSize; ++i) {
+        frame[i] = labels[i] == s.label ? 1 : 0;
+        if (frame[i]) bits[(bit + i) / 8] |= Uint8(1u << ((bit + i) % 8));
+      }
+      bit += sliceSize;
       const glm::dvec3 p = g.toPatient(glm::dvec3(0, 0, k));
       FGPlanePosPatient position;
       check(position.setImagePositionPatient(ds(p.x).c_str(), ds(p.y).c_str(), ds(p.z).c_str()),
@@ -228,6 +240,11 @@ std::string writeSeg(const std::string& temporary, const Segmentation& seg,
 
   DcmFileFormat file;
   check(doc->writeDataset(*file.getDataset()), "the object is not complete");
+  bits.resize((bit + 7) / 8);
+  if (bits.size() % 2) bits.push_back(0);  // DICOM values have even length
+  check(file.getDataset()->putAndInsertUint8Array(DCM_PixelData, bits.data(),
+                                                  (unsigned long)bits.size()),
+        "pixel data");
   addReferencedSeries(*file.getDataset(), source);
   check(file.saveFile(temporary.c_str(), EXS_LittleEndianExplicit), "cannot write " + temporary);
   return sopUid;
