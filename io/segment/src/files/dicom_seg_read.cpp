@@ -47,6 +47,7 @@ std::set<std::string> referencedSeries(DcmItem& d) {
 }  // namespace
 
 Segmentation readSeg(const std::string& path, const Volume& onto) {
+  quietDcmtkObjectLibraries();
   DcmFileFormat file;
   OFCondition read = file.loadFile(path.c_str());
   if (read.bad())

@@ -9,6 +9,7 @@
 #include <dcmtk/dcmiod/cielabutil.h>
 #include <dcmtk/dcmseg/segdoc.h>
 #include <dcmtk/dcmseg/segment.h>
+#include <dcmtk/oflog/oflog.h>
 
 #include <algorithm>
 #include <array>
@@ -93,8 +94,18 @@ void addReferencedSeries(DcmDataset& d, const StudyIdentity& source) {
 
 }  // namespace
 
+void quietDcmtkObjectLibraries() {
+  static const bool once = [] {
+    for (const char* name : {"dcmtk.dcmiod", "dcmtk.dcmfg", "dcmtk.dcmseg"})
+      OFLog::getLogger(name).setLogLevel(OFLogger::ERROR_LOG_LEVEL);
+    return true;
+  }();
+  (void)once;
+}
+
 std::string writeSeg(const std::string& temporary, const Segmentation& seg,
                      const StudyIdentity& source, const DicomSegOptions& options) {
+  quietDcmtkObjectLibraries();
   requireUid(source.studyInstanceUid, "Study Instance UID");
   requireUid(source.seriesInstanceUid, "Series Instance UID");
   requireUid(source.frameOfReferenceUid, "Frame of Reference UID");

@@ -44,7 +44,9 @@ std::string writeDicomSeg(const std::string& path, const Segmentation& seg,
 // Reads any of the three (by content: NIfTI, NRRD, DICOM) onto ONTO's grid. A NIfTI or NRRD
 // label map must lie on that grid (Input error naming the difference otherwise; nothing is
 // resampled). A DICOM SEG's frames are placed by their positions onto ONTO's slices; one that
-// references another series or frame of reference is refused.
+// references another series or frame of reference is refused; where its segments overlap,
+// the later segment's label is kept (one label per voxel). Segments are numbered as in the
+// SEG (label = segment number).
 Segmentation readSegmentationFile(const std::string& path, const Volume& onto);
 
 }  // namespace voxray
