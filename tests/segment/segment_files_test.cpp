@@ -446,6 +446,33 @@ TEST(SegmentFiles, TruncatedFilesAreRefusedWithAMessage) {
   expectError([&] { readSegmentationFile(dir / "a.txt", v); }, "is neither NIfTI, NRRD nor DICOM");
 }
 
+TEST(SegmentFiles, AnImageOpenedAsALabelMapIsRefusedNamingItsValue) {
+  // A CT in HU is not a label map: 1000 is no label (0..255). Label 200 in 16 bits is one.
+  TempFolder dir;
+  Volume v;
+  v.dims = {4, 3, 2};
+  v.spacingMm = {1.0, 1.0, 2.0};
+  v.originMm = {10, 20, 30};
+  v.voxels.assign(v.voxelCount(), 0);
+  const auto write = [&](const std::string& name, int16_t value) {
+    std::ofstream f(dir / name, std::ios::binary);
+    f << "NRRD0004\ntype: short\ndimension: 3\nspace: left-posterior-superior\n"
+         "sizes: 4 3 2\nspace directions: (1,0,0) (0,1,0) (0,0,2)\nspace origin: (10,20,30)\n"
+         "endian: little\nencoding: raw\n\n";
+    std::vector<int16_t> data(24, 0);
+    data[5] = value;
+    f.write(reinterpret_cast<const char*>(data.data()), 48);
+  };
+  write("ct.nrrd", 1000);
+  expectError([&] { readSegmentationFile(dir / "ct.nrrd", v); },
+              "holds the value 1000, which is not a label (whole numbers 0 to 255)");
+  write("labels.nrrd", 200);
+  const Segmentation seg = readSegmentationFile(dir / "labels.nrrd", v);
+  EXPECT_EQ(int(seg.labels[5]), 200);
+  ASSERT_EQ(seg.segments.size(), 1u);
+  EXPECT_EQ(seg.segments[0].name, "Label 200");
+}
+
 TEST(SegmentFiles, ASegOfTheRealPelvisSeriesReferencesEachSourceImage) {
   const std::string series = std::string(VOXRAY_DATA_DIR) + "/dicom/ct-visible-human-pelvis";
   ASSERT_TRUE(fs::is_directory(series)) << series << " is missing (see /work/shared/data)";

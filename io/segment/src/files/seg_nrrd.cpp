@@ -144,8 +144,8 @@ template <typename T>
 void copyLabels(const Nrrd& n, LabelFile& out, const std::string& path) {
   const T* v = static_cast<const T*>(n.data);
   for (size_t i = 0; i < out.labels.size(); ++i) {
-    if (v[i] < T(0) || v[i] > T(255) || double(v[i]) != std::floor(double(v[i])))
-      throw inputError(labelValueProblem(double(v[i]), path));
+    const double value = double(v[i]);  // integer types only: whole numbers
+    if (value < 0 || value > 255) throw inputError(labelValueProblem(value, path));
     out.labels[i] = uint8_t(v[i]);
   }
 }
