@@ -499,3 +499,30 @@ TEST(SegmentFiles, ASegOfTheRealPelvisSeriesReferencesEachSourceImage) {
 
 }  // namespace
 }  // namespace voxray
+
+namespace voxray {
+namespace {
+
+TEST(SegmentFiles, ASegOfAResampledSeriesReferencesItsStudyAndFrameOfReferenceOnly) {
+  // Gantry tilt: the volume's slices are resampled, none is a file's image, so the loader
+  // keeps no per-slice instances and the SEG references no image it does not lie on.
+  const std::string series = std::string(VOXRAY_DATA_DIR) + "/dicom/ct-ge-tilt";
+  ASSERT_TRUE(fs::is_directory(series)) << series << " is missing (see /work/shared/data)";
+  const Volume v = importDicom(series);
+  EXPECT_TRUE(v.study.sliceSopInstanceUids.empty());
+  EXPECT_EQ(v.study.sopClassUid, "1.2.840.10008.5.1.4.1.1.2");  // CT Image Storage
+  Segmentation seg = emptySegmentation(v);
+  for (size_t i = 0; i < seg.labels.size(); ++i)
+    if (v.toPhysical(v.voxels[i]) >= 300) seg.labels[i] = 1;
+  Segment bone;
+  bone.name = "Skull";
+  seg.segments = {bone};
+  TempFolder dir;
+  const std::string path = dir / "tilt-seg.dcm";
+  writeDicomSeg(path, seg, v.study);
+  EXPECT_EQ(readSegmentationFile(path, v).labels, seg.labels);
+  expectNoIodError(path);
+}
+
+}  // namespace
+}  // namespace voxray

@@ -139,7 +139,7 @@ std::string writeSeg(const std::string& temporary, const Segmentation& seg,
 
   IODGeneralEquipmentModule::EquipmentInfo equipment("Voxray", "Voxray", "1", "1.0");
   ContentIdentificationMacro content("1", "SEGMENTATION", options.seriesDescription.c_str(),
-                                     "Voxray");
+                                     "Voxray^");  // PN: family name^, not the retired one-part form
   DcmSegmentation* raw = nullptr;
   check(DcmSegmentation::createBinarySegmentation(raw, Uint16(g.dims.y), Uint16(g.dims.x),
                                                   equipment, content),
