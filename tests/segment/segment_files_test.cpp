@@ -524,5 +524,15 @@ TEST(SegmentFiles, ASegOfAResampledSeriesReferencesItsStudyAndFrameOfReferenceOn
   expectNoIodError(path);
 }
 
+TEST(SegmentFiles, AMultiFrameSeriesKeepsNoPerSliceInstances) {
+  // The frames of one enhanced file are one instance: a SEG references the series only.
+  const std::string file = std::string(VOXRAY_DATA_DIR) + "/dicom/pydicom-data/emri_small.dcm";
+  ASSERT_TRUE(fs::exists(file)) << file << " is missing (see /work/shared/data)";
+  const Volume v = importDicom(file);
+  EXPECT_GT(v.dims.z, 1);
+  EXPECT_TRUE(v.study.sliceSopInstanceUids.empty());
+  EXPECT_FALSE(v.study.sopClassUid.empty());
+}
+
 }  // namespace
 }  // namespace voxray
