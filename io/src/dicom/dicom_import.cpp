@@ -5,6 +5,7 @@
 
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -459,6 +460,14 @@ Volume importWith(const std::string& input, const LoadOptions& options, ArrivedF
   v.modality = f0.modality;
   v.window = f0.window;  // the first slice's: what a viewer shows when the series opens
   v.study = studyIdentity(f0);
+  v.study.sopClassUid = f0.sopClassUid;
+  // Slice k is frame k of the sorted stack only when nothing was resampled.
+  if (!g.needsResampling && !f0.isEnhanced() && int(c.frames.size()) == v.dims.z) {
+    for (auto& f : c.frames) v.study.sliceSopInstanceUids.push_back(f.sopInstanceUid);
+    if (std::any_of(c.frames.begin(), c.frames.end(),
+                    [](const FrameHeader& f) { return f.sopInstanceUid.empty(); }))
+      v.study.sliceSopInstanceUids.clear();
+  }
   v.sourceType = sampleTypeName(f0);
   v.warnings = c.warnings;
   v.warnings.insert(v.warnings.end(), g.warnings.begin(), g.warnings.end());

@@ -164,6 +164,7 @@ ScanResult headersOf(DcmFileFormat& file, const std::string& failure,
   FrameHeader h;
   h.path = path;
   h.sopClassUid = str(ds, DCM_SOPClassUID, text);
+  h.sopInstanceUid = str(ds, DCM_SOPInstanceUID, text);
   h.rows = intValue(ds, DCM_Rows);
   h.columns = intValue(ds, DCM_Columns);
   if (h.rows <= 0 || h.columns <= 0) {

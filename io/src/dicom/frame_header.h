@@ -19,7 +19,7 @@ struct FrameHeader {
   std::string path;
   int frame = 0;       // index inside the file
   int fileFrames = 1;  // NumberOfFrames of the file
-  std::string seriesUid, sopClassUid, modality, description, imageType, photometric;
+  std::string seriesUid, sopClassUid, sopInstanceUid, modality, description, imageType, photometric;
   std::string transferSyntaxUid;
   int seriesNumber = 0, instanceNumber = 0, acquisitionNumber = 0;
   int temporalIndex = 0;  // TemporalPositionIndex / DimensionIndexValues, 0 when absent

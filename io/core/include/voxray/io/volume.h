@@ -34,6 +34,12 @@ struct StudyIdentity {
   std::string studyId;  // StudyID, the site's short study number
   std::string seriesInstanceUid, seriesDescription, frameOfReferenceUid;
   int seriesNumber = 0;
+  // What a derived object (a DICOM SEG) references: the images' SOP Class and, per slice k
+  // of the volume, its SOP Instance UID. Empty when the volume's slices are not the files'
+  // (resampled for tilt or uneven gaps, or frames of one multi-frame file): then only the
+  // series can be referenced.
+  std::string sopClassUid;
+  std::vector<std::string> sliceSopInstanceUids;
 };
 
 struct Volume {
