@@ -26,9 +26,14 @@ struct SurfaceOptions {
   bool preserveTopology = false;
 };
 
-// Where the time of one makeSurface went (seconds), for the bench.
+// Where the time of one makeSurface went, for the bench: seconds of wall clock and of CPU
+// (all threads; on a shared machine the CPU time says what the wall time would be alone).
 struct SurfaceTimings {
-  double crop = 0, extract = 0, decimate = 0, smooth = 0, finish = 0;
+  struct Stage {
+    double wall = 0, cpu = 0;
+  };
+  Stage crop, extract, decimate, smooth, finish;
+  size_t extractedTriangles = 0;  // flying edges' output, before simplification
 };
 
 struct SegmentSurface {
