@@ -106,6 +106,14 @@ int main(int argc, char** argv) {
       "non-manifold %zu, misoriented %zu -> %s\n",
       last.triangleCount(), last.vertices.size(), last.areaMm2, last.volumeMm3, e.edges, e.boundary,
       e.nonManifold, e.misoriented, e.closedManifold() ? "closed manifold" : "NOT closed manifold");
+  {  // the edges of flying edges' own output, to tell its defects from the simplifier's
+    SurfaceOptions raw;
+    raw.targetTriangles = 0;
+    raw.smoothingIterations = 0;
+    const EdgeCount r = countEdges(makeSurface(s, 1, raw));
+    std::printf("flying edges alone: edges %zu: boundary %zu, non-manifold %zu, misoriented %zu\n",
+                r.edges, r.boundary, r.nonManifold, r.misoriented);
+  }
   std::printf("STL: %ju bytes\n", std::uintmax_t(std::filesystem::file_size(out)));
   std::ifstream load("/proc/loadavg");
   std::string l;

@@ -5,6 +5,7 @@
 #include <ctime>
 #include <string>
 #include <thread>
+#include <tuple>
 
 #include <meshoptimizer.h>
 #include <vtkCellArray.h>
@@ -164,6 +165,52 @@ std::vector<uint32_t> simplifyPart(const std::vector<float>& xyz,
   return out;
 }
 
+// Edge collapses can fold a thin part flat: two triangles on the same three vertices, back to
+// back, whose edges then sit in four triangles. The pair encloses nothing; removing it leaves
+// the surface around it closed.
+size_t removeFolds(Mesh& m) {
+  struct Key {
+    uint32_t v[3];
+    bool flipped;
+    size_t triangle;
+  };
+  std::vector<Key> keys(m.indices.size() / 3);
+  for (size_t t = 0; t < keys.size(); ++t) {
+    uint32_t a = m.indices[3 * t], b = m.indices[3 * t + 1], c = m.indices[3 * t + 2];
+    // Rotate the smallest first; then the order of the other two is the winding.
+    if (b < a && b < c)
+      std::tie(a, b, c) = std::make_tuple(b, c, a);
+    else if (c < a && c < b)
+      std::tie(a, b, c) = std::make_tuple(c, a, b);
+    const bool flipped = c < b;
+    keys[t] = {{a, flipped ? c : b, flipped ? b : c}, flipped, t};
+  }
+  const auto sameVertices = [](const Key& p, const Key& q) {
+    return p.v[0] == q.v[0] && p.v[1] == q.v[1] && p.v[2] == q.v[2];
+  };
+  std::sort(keys.begin(), keys.end(), [](const Key& p, const Key& q) {
+    return std::tie(p.v[0], p.v[1], p.v[2], p.flipped) <
+           std::tie(q.v[0], q.v[1], q.v[2], q.flipped);
+  });
+  std::vector<char> drop(keys.size(), 0);
+  size_t dropped = 0;
+  for (size_t i = 0; i < keys.size();) {
+    size_t j = i, flipped = 0;
+    while (j < keys.size() && sameVertices(keys[i], keys[j])) flipped += keys[j++].flipped;
+    // As many of one winding as of the other cancel out: drop them all.
+    if (j - i > 1 && 2 * flipped == j - i)
+      for (size_t k = i; k < j; ++k) drop[keys[k].triangle] = 1, ++dropped;
+    i = j;
+  }
+  if (!dropped) return 0;
+  size_t out = 0;
+  for (size_t t = 0; t < drop.size(); ++t)
+    if (!drop[t])
+      for (int c = 0; c < 3; ++c) m.indices[out++] = m.indices[3 * t + c];
+  m.indices.resize(out);
+  return dropped;
+}
+
 // The simplifier is serial; the mesh is cut into slabs of equal triangle counts along z, each
 // simplified on its own core with the cut's vertices locked, so that the slabs still meet
 // vertex for vertex; then welded by the vertices' original numbers.
@@ -212,12 +259,14 @@ void simplify(Mesh& m, size_t targetTriangles) {
     });
     for (const auto& r : results) kept.insert(kept.end(), r.begin(), r.end());
   }
+  m.indices = std::move(kept);
+  removeFolds(m);
   std::vector<float> xyz(m.xyz.size());
-  const size_t vertices = meshopt_optimizeVertexFetch(
-      xyz.data(), kept.data(), kept.size(), m.xyz.data(), m.xyz.size() / 3, 3 * sizeof(float));
+  const size_t vertices =
+      meshopt_optimizeVertexFetch(xyz.data(), m.indices.data(), m.indices.size(), m.xyz.data(),
+                                  m.xyz.size() / 3, 3 * sizeof(float));
   xyz.resize(vertices * 3);
   m.xyz = std::move(xyz);
-  m.indices = std::move(kept);
 }
 
 vtkSmartPointer<vtkPolyData> decimateKeepingTopology(vtkPolyData* poly, size_t targetTriangles) {
