@@ -97,6 +97,12 @@ int main(int argc, char** argv) {
   stage("crop", &SurfaceTimings::crop);
   stage("flying edges", &SurfaceTimings::extract);
   stage("simplify", &SurfaceTimings::decimate);
+  {
+    std::vector<double> longest, sum;
+    for (const auto& t : timings) longest.push_back(t.slabCpuMax), sum.push_back(t.slabCpuSum);
+    std::printf("    of which meshoptimizer in slabs: longest slab %.3f, all slabs %.3f CPU s\n",
+                median(longest), median(sum));
+  }
   stage("smooth", &SurfaceTimings::smooth);
   stage("finish", &SurfaceTimings::finish);
   std::printf("  surface       %6.3f\n  whole STL export (surface + file) %6.3f\n", median(surface),

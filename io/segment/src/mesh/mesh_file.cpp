@@ -21,6 +21,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "voxray/io/error.h"
+#include "voxray/io/parallel.h"
 #include "voxray/io/segmentation_check.h"
 
 namespace fs = std::filesystem;
@@ -270,7 +271,12 @@ void writeMeshFile(const std::string& path, const Segmentation& s,
                          " exists already: choose another name, or allow overwriting.");
   }
 
-  for (auto& p : parts) p.surface = makeSurface(s, p.segment->label, options.surface);
+  // One segment per core: flying edges and smoothing are threaded (vtkSMPTools) but the
+  // crop, the slabs' seams and the writing are not. The error of the first segment that
+  // fails is the one reported, as a serial loop would.
+  parallelFor(parts.size(), [&](size_t i) {
+    parts[i].surface = makeSurface(s, parts[i].segment->label, options.surface);
+  });
 
   std::vector<std::pair<fs::path, fs::path>> written;  // temporary -> final
   try {

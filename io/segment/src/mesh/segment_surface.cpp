@@ -31,6 +31,12 @@ namespace voxray {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 struct Start {
   Clock::time_point wall = Clock::now();
   std::clock_t cpu = std::clock();  // every thread of the process
@@ -214,13 +220,15 @@ size_t removeFolds(Mesh& m) {
 // The simplifier is serial; the mesh is cut into slabs of equal triangle counts along z, each
 // simplified on its own core with the cut's vertices locked, so that the slabs still meet
 // vertex for vertex; then welded by the vertices' original numbers.
-void simplify(Mesh& m, size_t targetTriangles) {
+void simplify(Mesh& m, size_t targetTriangles, SurfaceTimings& timings) {
   const size_t triangles = m.indices.size() / 3;
   const size_t slabs =
       std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), triangles / 100000 + 1);
   std::vector<uint32_t> kept;
   if (slabs <= 1) {
+    const double cpu = threadCpuSeconds();
     kept = simplifyPart(m.xyz, m.indices, targetTriangles, 0);
+    timings.slabCpuMax = timings.slabCpuSum = threadCpuSeconds() - cpu;
   } else {
     std::vector<float> zs(triangles);
     for (size_t t = 0; t < triangles; ++t)
@@ -237,7 +245,9 @@ void simplify(Mesh& m, size_t targetTriangles) {
     for (size_t t = 0; t < triangles; ++t)
       slabOf[t] = uint32_t(std::upper_bound(cuts.begin(), cuts.end(), zs[t]) - cuts.begin());
     std::vector<std::vector<uint32_t>> results(slabs);
+    std::vector<double> cpu(slabs);
     parallelFor(slabs, [&](size_t k) {
+      const double cpuStart = threadCpuSeconds();
       std::vector<uint32_t> local(m.xyz.size() / 3, UINT32_MAX), global, indices;
       std::vector<float> xyz;
       for (size_t t = 0; t < triangles; ++t) {
@@ -256,7 +266,10 @@ void simplify(Mesh& m, size_t targetTriangles) {
       std::vector<uint32_t> out = simplifyPart(xyz, indices, target, meshopt_SimplifyLockBorder);
       for (auto& i : out) i = global[i];
       results[k] = std::move(out);
+      cpu[k] = threadCpuSeconds() - cpuStart;
     });
+    timings.slabCpuMax = *std::max_element(cpu.begin(), cpu.end());
+    for (double c : cpu) timings.slabCpuSum += c;
     for (const auto& r : results) kept.insert(kept.end(), r.begin(), r.end());
   }
   m.indices = std::move(kept);
@@ -342,7 +355,7 @@ SegmentSurface makeSurface(const Segmentation& s, uint8_t label, const SurfaceOp
     poly = decimateKeepingTopology(poly, options.targetTriangles);
   } else if (reduce) {
     mesh = meshOf(poly);
-    simplify(mesh, options.targetTriangles);
+    simplify(mesh, options.targetTriangles, t);
     poly = options.smoothingIterations > 0 ? polyOf(mesh) : nullptr;
   }
   t.decimate = since(start);

@@ -33,6 +33,8 @@ struct SurfaceTimings {
     double wall = 0, cpu = 0;
   };
   Stage crop, extract, decimate, smooth, finish;
+  // CPU seconds of meshoptimizer in its slabs' threads: the longest is the stage's critical path.
+  double slabCpuMax = 0, slabCpuSum = 0;
   size_t extractedTriangles = 0;  // flying edges' output, before simplification
 };
 
