@@ -91,6 +91,8 @@ TEST_F(SphereSurface, SimplifiedKeepsVolumeAndAreaAndStaysClosed) {
   const EdgeCount e = countEdges(simplified);
   EXPECT_EQ(e.boundary, 0u);
   EXPECT_EQ(e.misoriented, 0u);
+  // Pinches stay rare (4 of ~46k edges when written; 0.6 % on the noisy bone of the bench).
+  EXPECT_LT(e.nonManifold * 1000, e.edges);
   std::printf("meshoptimizer: %zu of %zu triangles, %zu non-manifold edges\n",
               simplified.triangleCount(), surface_->triangleCount(), e.nonManifold);
 }

@@ -112,6 +112,19 @@ int main(int argc, char** argv) {
       "non-manifold %zu, misoriented %zu -> %s\n",
       last.triangleCount(), last.vertices.size(), last.areaMm2, last.volumeMm3, e.edges, e.boundary,
       e.nonManifold, e.misoriented, e.closedManifold() ? "closed manifold" : "NOT closed manifold");
+  for (const char* extension : {".obj", ".ply"}) {  // the other formats, once each
+    const std::string other = out.substr(0, out.size() - 4) + extension;
+    MeshFileOptions o;
+    o.overwrite = true;
+    const auto start = Clock::now();
+    writeMeshFile(other, s, {1}, o);
+    std::printf("whole %s export (1 run) %.3f s, %ju bytes\n", extension,
+                std::chrono::duration<double>(Clock::now() - start).count(),
+                std::uintmax_t(std::filesystem::file_size(other)));
+    std::filesystem::remove(other);
+    if (std::string(extension) == ".obj")
+      std::filesystem::remove(out.substr(0, out.size() - 4) + ".mtl");
+  }
   {  // the edges of flying edges' own output, to tell its defects from the simplifier's
     SurfaceOptions raw;
     raw.targetTriangles = 0;

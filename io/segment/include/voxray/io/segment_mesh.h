@@ -22,7 +22,8 @@ struct SurfaceOptions {
   // millions a bone gives.
   size_t targetTriangles = 500000;
   // meshoptimizer is ~50x faster than VTK's decimators but may pinch the surface where two
-  // sheets meet; true uses vtkDecimatePro with PreserveTopology for a manifold result.
+  // sheets meet; true uses vtkDecimatePro with PreserveTopology for a manifold result (tens of
+  // seconds on a bone; it may stop short of the target where topology forbids collapses).
   bool preserveTopology = false;
 };
 
