@@ -134,6 +134,22 @@ TEST(SegmentSurface, UnsmoothedBoxHasTheBevelledBoxsVolume) {
   EXPECT_TRUE(countEdges(surface).closedManifold());
 }
 
+// A segment that runs out of the grid (here: a whole 3x3x3 grid) is closed at the grid's faces:
+// the cropped copy has a ring of empty voxels around it. Unsmoothed, counted as for the box
+// above: 8 inner cells + 6 faces x 4 half cells + 12 edges x 2 x 1/8 + 8 x 1/48 = 23 1/6 voxels.
+TEST(SegmentSurface, SegmentFillingTheGridIsClosed) {
+  Segmentation s;
+  s.grid.dims = {3, 3, 3};
+  s.labels.assign(s.grid.voxelCount(), 4);
+  s.segments.push_back(Segment{});
+  s.segments.back().label = 4;
+  SurfaceOptions o;
+  o.smoothingIterations = 0;
+  const SegmentSurface surface = makeSurface(s, 4, o);
+  EXPECT_TRUE(countEdges(surface).closedManifold());
+  EXPECT_NEAR(surface.volumeMm3, 23.0 + 1.0 / 6.0, 1e-4);
+}
+
 TEST(SegmentSurface, EmptySegmentIsRefusedByName) {
   Segmentation s = sphereSegmentation(5.0, 1.0);
   Segment empty;
