@@ -36,7 +36,8 @@ bool upper(const std::string& s, const char* word) {
 }
 
 auto acquisitionOrder(const FrameHeader& f) {
-  return std::make_tuple(f.temporalIndex, f.acquisitionNumber, f.instanceNumber, f.path, f.frame);
+  return std::make_tuple(f.temporalIndex, f.triggerTime, f.acquisitionNumber, f.instanceNumber,
+                         f.path, f.frame);
 }
 
 // Splits one grid group into time points when positions repeat.
@@ -115,6 +116,7 @@ std::vector<Candidate> groupIntoCandidates(std::vector<FrameHeader> frames) {
   }
 
   std::vector<Candidate> out;
+  int groups = 0;
   for (auto& [key, list] : series) {
     std::vector<std::vector<FrameHeader>> grids;
     for (auto& f : list) {
@@ -134,8 +136,10 @@ std::vector<Candidate> groupIntoCandidates(std::vector<FrameHeader> frames) {
     for (auto& g : grids) {
       bool uneven = false;
       auto volumes = splitTimePoints(std::move(g), uneven);
+      ++groups;
       for (size_t t = 0; t < volumes.size(); ++t) {
         Candidate c;
+        c.group = groups;
         c.frames = std::move(volumes[t]);
         c.timePoint = int(t) + 1;
         c.timePoints = int(volumes.size());
@@ -143,9 +147,9 @@ std::vector<Candidate> groupIntoCandidates(std::vector<FrameHeader> frames) {
           c.warnings.push_back(
               "the series holds " + std::to_string(c.timePoints) +
               " images at each slice position (4D: time points, phases or diffusion "
-              "directions); this is volume " +
-              std::to_string(c.timePoint) + " of " + std::to_string(c.timePoints) +
-              ", never stacked with the others");
+              "directions); this is time point " +
+              std::to_string(c.timePoint - 1) + " of 0-" + std::to_string(c.timePoints - 1) +
+              " (--time chooses another), never stacked with the others");
           if (uneven)
             c.warnings.push_back(
                 "some slice positions have fewer repeats than others; "

@@ -14,6 +14,7 @@ struct Candidate {
   std::string selector;               // unique name: series number, UID, plus ":part"
   int part = 0;                       // 1.. when the series was split, else 0
   int timePoint = 0, timePoints = 1;  // 4D: which volume of how many (1-based)
+  int group = 0;                      // the same for the time points of one 4D series
   bool isVolume = false;
   std::string notVolumeReason;
   std::vector<std::string> warnings;

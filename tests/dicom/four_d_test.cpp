@@ -1,0 +1,161 @@
+// 4D series (issue 36): the beating-sphere phantom (10 phases, the sphere's radius known per
+// phase) written by the project's writer, grouped into time points by Temporal Position
+// Identifier, by Trigger Time alone, or by repeated positions in instance order; and the same
+// phases as a 4D NIfTI (written by the NIfTI library) read at each time point.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "../io/formats/nifti_writer.h"
+#include "../io/test_support.h"
+#include "test_data.h"
+#include "voxray/io/load.h"
+#include "voxray/io/phantom_series.h"
+
+namespace voxray {
+namespace {
+
+// Voxel centres inside a sphere of radius R mm about the volume's centre: what phase t
+// should show (the phantom writes inside <= R exactly, so the count is exact).
+size_t analyticCount(const BeatingSpherePhantom& p, double r) {
+  size_t n = 0;
+  for (int k = 0; k < p.dims.z; ++k)
+    for (int j = 0; j < p.dims.y; ++j)
+      for (int i = 0; i < p.dims.x; ++i) {
+        const glm::dvec3 d = (glm::dvec3(i, j, k) - 0.5 * glm::dvec3(p.dims - 1)) * p.spacingMm;
+        n += glm::length(d) <= r;
+      }
+  return n;
+}
+
+// Voxels of V above 100 HU (inside: 300 HU, outside: -50 HU).
+size_t sphereCount(const Volume& v) {
+  size_t n = 0;
+  for (int16_t s : v.voxels) n += v.toPhysical(s) > 100.0;
+  return n;
+}
+
+TEST(FourD, TenPhasesInTimeOrderWhicheverWayTheyAreMarked) {
+  for (const char* timing : {"temporal", "trigger", "repeated"}) {
+    SCOPED_TRACE(timing);
+    test::TempDir dir;
+    BeatingSpherePhantom p;
+    p.timing = timing;
+    writeBeatingSpherePhantom(dir.file("ct"), p);
+    const std::vector<Volume> all = loadVolumeSeries(dir.file("ct"));
+    ASSERT_EQ(all.size(), 10u);
+    for (int t = 0; t < 10; ++t) {
+      const Volume& v = all[size_t(t)];
+      EXPECT_EQ(v.timePoint, t);
+      EXPECT_EQ(v.timePoints, 10);
+      EXPECT_EQ(v.dims, p.dims);
+      EXPECT_EQ(v.spacingMm, p.spacingMm);
+      EXPECT_EQ(sphereCount(v), analyticCount(p, p.radiusAt(t))) << "phase " << t;
+    }
+    // The phases differ: radius 24 mm at phase 0, 31.6 mm at phase 2 (24 + 8 sin 72 deg).
+    EXPECT_GT(sphereCount(all[2]), sphereCount(all[0]) + 10000);
+  }
+}
+
+TEST(FourD, TimeOptionOpensThatPhase) {
+  test::TempDir dir;
+  BeatingSpherePhantom p;
+  writeBeatingSpherePhantom(dir.file("ct"), p);
+  for (int t : {0, 3, 7, 9}) {
+    LoadOptions o;
+    o.timePoint = t;
+    const Volume v = loadVolume(dir.file("ct"), o);
+    EXPECT_EQ(v.timePoint, t);
+    EXPECT_EQ(v.timePoints, 10);
+    EXPECT_EQ(sphereCount(v), analyticCount(p, p.radiusAt(t))) << "phase " << t;
+  }
+  // Without --time: time point 0, said in a warning.
+  const Volume first = loadVolume(dir.file("ct"));
+  EXPECT_EQ(first.timePoint, 0);
+  EXPECT_TRUE(test::anyContains(first.warnings, "this is time point 0 of 0-9"));
+}
+
+TEST(FourD, TimeOutOfRangeSaysTheRange) {
+  test::TempDir dir;
+  BeatingSpherePhantom p;
+  p.dims = {16, 16, 8};
+  writeBeatingSpherePhantom(dir.file("ct"), p);
+  LoadOptions o;
+  o.timePoint = 10;
+  try {
+    loadVolume(dir.file("ct"), o);
+    ADD_FAILURE() << "--time 10 accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::Input);
+    EXPECT_EQ(
+        std::string(e.what()),
+        dir.file("ct") + ": --time 10 is out of range: series 1 has 10 time point(s), 0 to 9");
+  }
+  // A 3D input has time point 0 only.
+  o.timePoint = 1;
+  try {
+    loadVolume("", o);
+    ADD_FAILURE() << "--time 1 accepted for the phantom";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--time 1 is out of range: it has 1 time point"),
+              std::string::npos);
+  }
+}
+
+// The 4D NIfTI of the DICOM phases (LPS -> RAS in the sform) gives, at each time point, the
+// very voxels and geometry of that DICOM phase.
+TEST(FourD, NiftiTimePointEqualsTheDicomPhase) {
+  test::TempDir dir;
+  BeatingSpherePhantom p;
+  p.dims = {32, 24, 16};
+  writeBeatingSpherePhantom(dir.file("ct"), p);
+  const std::vector<Volume> dicom = loadVolumeSeries(dir.file("ct"));
+  ASSERT_EQ(dicom.size(), 10u);
+  const Volume& v0 = dicom[0];
+  test::NiftiSpec spec;
+  spec.dims = {p.dims.x, p.dims.y, p.dims.z, 10};
+  spec.sformCode = 1;
+  for (int r = 0; r < 3; ++r) {
+    const double flip = r < 2 ? -1.0 : 1.0;  // L, P -> R, A
+    for (int c = 0; c < 3; ++c) spec.sform[r][c] = flip * v0.direction[c][r] * v0.spacingMm[c];
+    spec.sform[r][3] = flip * v0.originMm[r];
+    spec.pixdim[r] = v0.spacingMm[r];
+  }
+  for (const auto& v : dicom)
+    for (int16_t s : v.voxels) spec.values.push_back(v.toPhysical(s));
+  const std::string nii = dir.file("beating.nii.gz");
+  test::writeNifti(nii, spec);
+  for (int t : {0, 2, 5, 9}) {
+    LoadOptions o;
+    o.timePoint = t;
+    const Volume n = loadVolume(nii, o);
+    const Volume& d = dicom[size_t(t)];
+    EXPECT_EQ(n.timePoint, t);
+    EXPECT_EQ(n.timePoints, 10);
+    ASSERT_EQ(n.dims, d.dims);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(n.originMm[a], d.originMm[a], 1e-4) << a;  // float32 sform
+      EXPECT_NEAR(n.spacingMm[a], d.spacingMm[a], 1e-5) << a;
+    }
+    size_t differ = 0;
+    for (size_t i = 0; i < n.voxels.size(); ++i)
+      differ += n.toPhysical(n.voxels[i]) != d.toPhysical(d.voxels[i]);
+    EXPECT_EQ(differ, 0u) << "time point " << t;
+    EXPECT_EQ(sphereCount(n), analyticCount(p, p.radiusAt(t)));
+  }
+  LoadOptions o;
+  o.timePoint = 10;
+  try {
+    loadVolume(nii, o);
+    ADD_FAILURE() << "--time 10 accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--time 10 is out of range: the file has 10 time "
+                                         "point(s), 0 to 9"),
+              std::string::npos);
+  }
+  EXPECT_EQ(loadVolumeSeries(nii).size(), 10u);
+}
+
+}  // namespace
+}  // namespace voxray
