@@ -118,6 +118,10 @@ std::vector<InputFlagSpec> makeSpecs() {
        "--series names)",
        timePoint,
        [timePoint](O& o, S s) {
+         if (s.empty()) {  // what format writes for none
+           o.timePoint.reset();
+           return;
+         }
          o.timePoint = int(checkInDomain("time", timePoint, toInt("time", s), s));
        },
        [](const O& o) { return o.timePoint ? std::to_string(*o.timePoint) : std::string(); }},

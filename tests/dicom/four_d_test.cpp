@@ -7,6 +7,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcuid.h>
+
 #include "../io/formats/nifti_writer.h"
 #include "../io/test_support.h"
 #include "test_data.h"
@@ -100,6 +105,79 @@ TEST(FourD, TimeOutOfRangeSaysTheRange) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("--time 1 is out of range: it has 1 time point"),
               std::string::npos);
+  }
+}
+
+// The beating sphere as one enhanced multi-frame file (the test's own, DCMTK): frames stored
+// position-major (every phase of slice 0, then of slice 1 ...), each frame's phase only in its
+// Frame Content Sequence's Temporal Position Index.
+void writeEnhancedBeatingSphere(const std::string& path, const BeatingSpherePhantom& p) {
+  DcmFileFormat file;
+  DcmDataset* d = file.getDataset();
+  auto put = [](DcmItem* item, const DcmTagKey& tag, const std::string& value) {
+    item->putAndInsertString(tag, value.c_str());
+  };
+  char uid[100];
+  put(d, DCM_SOPClassUID, UID_EnhancedCTImageStorage);
+  put(d, DCM_SOPInstanceUID, dcmGenerateUniqueIdentifier(uid));
+  put(d, DCM_SeriesInstanceUID, dcmGenerateUniqueIdentifier(uid));
+  put(d, DCM_StudyInstanceUID, dcmGenerateUniqueIdentifier(uid));
+  put(d, DCM_Modality, "CT");
+  put(d, DCM_SeriesNumber, "3");
+  put(d, DCM_ImageType, "ORIGINAL\\PRIMARY\\AXIAL\\NONE");
+  const int frames = p.phases * p.dims.z;
+  put(d, DCM_NumberOfFrames, std::to_string(frames));
+  d->putAndInsertUint16(DCM_Rows, Uint16(p.dims.y));
+  d->putAndInsertUint16(DCM_Columns, Uint16(p.dims.x));
+  d->putAndInsertUint16(DCM_SamplesPerPixel, 1);
+  put(d, DCM_PhotometricInterpretation, "MONOCHROME2");
+  d->putAndInsertUint16(DCM_BitsAllocated, 16);
+  d->putAndInsertUint16(DCM_BitsStored, 16);
+  d->putAndInsertUint16(DCM_HighBit, 15);
+  d->putAndInsertUint16(DCM_PixelRepresentation, 1);
+  DcmItem *shared = nullptr, *g = nullptr;
+  d->findOrCreateSequenceItem(DCM_SharedFunctionalGroupsSequence, shared, 0);
+  shared->findOrCreateSequenceItem(DCM_PixelMeasuresSequence, g, 0);
+  put(g, DCM_PixelSpacing, std::to_string(p.spacingMm.y) + "\\" + std::to_string(p.spacingMm.x));
+  put(g, DCM_SliceThickness, std::to_string(p.spacingMm.z));
+  shared->findOrCreateSequenceItem(DCM_PlaneOrientationSequence, g, 0);
+  put(g, DCM_ImageOrientationPatient, "1\\0\\0\\0\\1\\0");
+  shared->findOrCreateSequenceItem(DCM_PixelValueTransformationSequence, g, 0);
+  put(g, DCM_RescaleSlope, "1");
+  put(g, DCM_RescaleIntercept, "0");
+  std::vector<Uint16> pixels;
+  const glm::dvec3 origin = -0.5 * glm::dvec3(p.dims - 1) * p.spacingMm;
+  for (int k = 0, f = 0; k < p.dims.z; ++k)
+    for (int t = 0; t < p.phases; ++t, ++f) {
+      DcmItem* frame = nullptr;
+      d->findOrCreateSequenceItem(DCM_PerFrameFunctionalGroupsSequence, frame, f);
+      frame->findOrCreateSequenceItem(DCM_PlanePositionSequence, g, 0);
+      put(g, DCM_ImagePositionPatient,
+          std::to_string(origin.x) + "\\" + std::to_string(origin.y) + "\\" +
+              std::to_string(origin.z + k * p.spacingMm.z));
+      frame->findOrCreateSequenceItem(DCM_FrameContentSequence, g, 0);
+      put(g, DCM_TemporalPositionIndex, std::to_string(t + 1));
+      for (int j = 0; j < p.dims.y; ++j)
+        for (int i = 0; i < p.dims.x; ++i) {
+          const glm::dvec3 c = (glm::dvec3(i, j, k) - 0.5 * glm::dvec3(p.dims - 1)) * p.spacingMm;
+          pixels.push_back(Uint16(Sint16(glm::length(c) <= p.radiusAt(t) ? p.insideHu
+                                                                          : p.outsideHu)));
+        }
+    }
+  d->putAndInsertUint16Array(DCM_PixelData, pixels.data(), pixels.size());
+  ASSERT_TRUE(file.saveFile(path.c_str(), EXS_LittleEndianExplicit).good()) << path;
+}
+
+TEST(FourD, EnhancedMultiFrameWithATemporalIndex) {
+  test::TempDir dir;
+  BeatingSpherePhantom p;
+  p.dims = {32, 32, 12};
+  writeEnhancedBeatingSphere(dir.file("enhanced.dcm"), p);
+  const std::vector<Volume> all = loadVolumeSeries(dir.file("enhanced.dcm"));
+  ASSERT_EQ(all.size(), 10u);
+  for (int t = 0; t < 10; ++t) {
+    EXPECT_EQ(all[size_t(t)].dims, p.dims);
+    EXPECT_EQ(sphereCount(all[size_t(t)]), analyticCount(p, p.radiusAt(t))) << "phase " << t;
   }
 }
 
