@@ -160,8 +160,8 @@ void writeEnhancedBeatingSphere(const std::string& path, const BeatingSpherePhan
       for (int j = 0; j < p.dims.y; ++j)
         for (int i = 0; i < p.dims.x; ++i) {
           const glm::dvec3 c = (glm::dvec3(i, j, k) - 0.5 * glm::dvec3(p.dims - 1)) * p.spacingMm;
-          pixels.push_back(Uint16(Sint16(glm::length(c) <= p.radiusAt(t) ? p.insideHu
-                                                                          : p.outsideHu)));
+          pixels.push_back(
+              Uint16(Sint16(glm::length(c) <= p.radiusAt(t) ? p.insideHu : p.outsideHu)));
         }
     }
   d->putAndInsertUint16Array(DCM_PixelData, pixels.data(), pixels.size());
