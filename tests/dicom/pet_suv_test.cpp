@@ -144,7 +144,24 @@ TEST(PetSuv, UnitsOtherThanBqmlAndUnknownDecayAreRefused) {
                  "SUVbw cannot be computed: Units (0054,1001) is 'CNTS', not BQML (activity "
                  "concentration); values are shown in Bq/mL");
   }
+  // An injection after the scan's start (by Start DateTime) is a damaged header.
   a.units = "BQML";
+  a.seriesDate = "20260115";
+  a.seriesTime = "090000";
+  a.injectionDateTime = "20260115100000";
+  a.injectedDoseBq = a.halfLifeS = a.weightKg = 1.0;
+  try {
+    suvbwScale(a);
+    ADD_FAILURE() << "an injection after the scan accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the radiopharmaceutical start is after the scan's start"),
+              std::string::npos);
+  }
+  // Four days (Zr-89 imaging): decayed over 345600 s.
+  a.injectionDateTime = "20260111090000";
+  a.halfLifeS = 282240.0;  // 78.4 h
+  EXPECT_NEAR(suvDecaySeconds(a), 4 * 86400.0, 1e-6);
+  EXPECT_NEAR(suvbwScale(a).factor, 1000.0 / std::exp2(-345600.0 / 282240.0), 1e-9);
   a.decayCorrection = "NONE";
   try {
     suvbwScale(a);

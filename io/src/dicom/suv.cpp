@@ -94,8 +94,8 @@ double suvDecaySeconds(const PetSuvAttributes& a) {
     refuse("Decay Correction (0054,1102) is '" + a.decayCorrection + "', not START or ADMIN");
   const double scan = scanStart(a);
   const double seconds = scan - injection(a, scan);
-  if (seconds < 0 || seconds > kSecondsPerDay)
-    refuse("the injection is not within the day before the scan's start");
+  // Days are possible (zirconium-89 is imaged up to a week after the injection).
+  if (seconds < 0) refuse("the radiopharmaceutical start is after the scan's start");
   return seconds;
 }
 
