@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <dcmtk/config/osconfig.h>
@@ -60,6 +61,40 @@ TEST(FourD, TenPhasesInTimeOrderWhicheverWayTheyAreMarked) {
     }
     // The phases differ: radius 24 mm at phase 0, 31.6 mm at phase 2 (24 + 8 sin 72 deg).
     EXPECT_GT(sphereCount(all[2]), sphereCount(all[0]) + 10000);
+  }
+}
+
+// Phase 3's image at one position is lost. Named phases (Trigger Time) keep the others
+// whole; unnamed ones (positions merely repeated) cannot be told apart: refused for the series.
+TEST(FourD, AMissingImageStaysInItsOwnPhaseOrIsRefused) {
+  for (const char* timing : {"trigger", "repeated"}) {
+    SCOPED_TRACE(timing);
+    test::TempDir dir;
+    BeatingSpherePhantom p;
+    p.dims = {32, 32, 16};
+    p.timing = timing;
+    writeBeatingSpherePhantom(dir.file("ct"), p);
+    // Phase 3, slice 5: instance 3 * 16 + 5 + 1 = 54 ("trigger" numbers backwards: 160 - 53).
+    const int instance = std::string(timing) == "trigger" ? 160 - 53 : 54;
+    char name[32];
+    std::snprintf(name, sizeof name, "CT%05d.dcm", instance);
+    ASSERT_TRUE(std::filesystem::remove(dir.file("ct") + "/" + name));
+    if (std::string(timing) == "repeated") {
+      try {
+        loadVolumeSeries(dir.file("ct"));
+        ADD_FAILURE() << "uneven unnamed phases accepted";
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot be split into time points reliably"),
+                  std::string::npos)
+            << e.what();
+      }
+      continue;
+    }
+    const std::vector<Volume> all = loadVolumeSeries(dir.file("ct"));
+    ASSERT_EQ(all.size(), 10u);
+    for (int t = 0; t < 10; ++t)
+      if (t != 3) EXPECT_EQ(sphereCount(all[size_t(t)]), analyticCount(p, p.radiusAt(t))) << t;
+    EXPECT_TRUE(test::anyContains(all[3].warnings, "1 slice(s) missing"));
   }
 }
 

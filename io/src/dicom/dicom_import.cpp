@@ -537,6 +537,13 @@ std::vector<Volume> importDicomTimePoints(const std::string& input, const LoadOp
   Scan s = scan(input, options, nullptr);
   std::vector<std::string> warnings;
   const int chosen = chooseCandidate(s, input, options, warnings);
+  if (s.candidates[size_t(chosen)].unevenTimePoints)
+    throw inputError(input + ": series " +
+                     std::to_string(s.candidates[size_t(chosen)].first().seriesNumber) +
+                     " has fewer images at some slice positions than at others and its images "
+                     "do not say their time point (Temporal Position Identifier, Trigger Time): "
+                     "it cannot be split into time points reliably; open them one by one with "
+                     "--time, or check the series is complete");
   std::vector<int> indices(size_t(s.candidates[size_t(chosen)].timePoints), chosen);
   for (size_t i = 0; i < s.candidates.size(); ++i)
     if (s.candidates[i].group == s.candidates[size_t(chosen)].group)
