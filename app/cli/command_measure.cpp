@@ -116,6 +116,23 @@ int runMeasure(const InputOptions& in, const MeasureOptions& o) {
         << "max      " << optionalText(s.max) << " " << v.unit << "\n"
         << "area     " << optionalText(s.areaMm2) << " mm2\n"
         << "pixels   " << s.pixels << "\n";
+    // PET: the same statistics in SUV (a linear scale: SD scales alike).
+    if (v.suv) {
+      auto suv = [&](const std::optional<double>& x) -> std::optional<double> {
+        if (!x) return std::nullopt;
+        return v.suv->toSuv(*x);
+      };
+      j["suv"] = {{"unit", v.suv->unit},
+                  {"factor", v.suv->factor},
+                  {"mean", optionalJson(suv(s.mean))},
+                  {"sd", optionalJson(suv(s.sd))},
+                  {"min", optionalJson(suv(s.min))},
+                  {"max", optionalJson(suv(s.max))}};
+      out << "SUVmean  " << optionalText(suv(s.mean)) << " " << v.suv->unit << "\n"
+          << "SUVsd    " << optionalText(suv(s.sd)) << " " << v.suv->unit << "\n"
+          << "SUVmin   " << optionalText(suv(s.min)) << " " << v.suv->unit << "\n"
+          << "SUVmax   " << optionalText(suv(s.max)) << " " << v.suv->unit << "\n";
+    }
   }
   if (o.json) {
     std::cout << jsonText(j) << "\n";

@@ -14,6 +14,7 @@
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
+#include "voxray/io/load.h"
 #include "voxray/io/volume.h"
 
 namespace voxray::cli {
@@ -79,8 +80,10 @@ Run addMovieCommand(CLI::App& app) {
                                 "azimuth (around the long axis, from anterior; the default) or "
                                 "elevation (over the top): the orbit of `bench --orbit`")
                     ->check(CLI::IsMember({"azimuth", "elevation"}));
-  cmd->add_option("--cine", o->cine, "a cine through the slices of one MPR view instead")
-      ->check(CLI::IsMember({"axial", "coronal", "sagittal"}))
+  cmd->add_option("--cine", o->cine,
+                  "a cine through the slices of one MPR view instead, or `time`: the axial "
+                  "middle slice over every time point of a 4D series")
+      ->check(CLI::IsMember({"axial", "coronal", "sagittal", "time"}))
       ->excludes(orbit);
   cmd->add_option("--frames", o->frames,
                   "orbit: frames over 360 degrees (default 36); cine: slices, spread evenly "
@@ -101,9 +104,17 @@ Run addMovieCommand(CLI::App& app) {
   o->flags.add(*cmd);
   return [o] {
     const MovieFormat format = movieFormat(o->output);
-    Volume v = o->input.load();
-    MoviePlan p = plan(*o, v);
-    const MovieSize asked = settleMovieSize(p, v, format);
+    std::vector<Volume> times;  // --cine time: every time point
+    if (o->cine == "time") {
+      if (o->input.flags.count("time"))
+        throw inputError("movie: --cine time shows every time point; leave out --time");
+      times = loadVolumeSeries(o->input.input, o->input.loadOptions());
+    }
+    Volume v = times.empty() ? o->input.load() : Volume{};
+    const Volume& shown = times.empty() ? v : times.front();
+    MoviePlan p = plan(*o, shown);
+    if (!times.empty()) p.timePoints = &times;
+    const MovieSize asked = settleMovieSize(p, shown, format);
     if (asked.width != p.params.width || asked.height != p.params.height) {
       std::cerr << "note: H.264 (4:2:0) needs an even width and height: frames are "
                 << p.params.width << "x" << p.params.height << ", not " << asked.width << "x"
@@ -111,7 +122,7 @@ Run addMovieCommand(CLI::App& app) {
     }
     std::unique_ptr<ClContext> ctx;
     if (!p.cine) ctx = std::make_unique<ClContext>(o->device);
-    MovieFrames frames(v, ctx.get(), p);
+    MovieFrames frames(shown, ctx.get(), p);
     std::error_code ec;
     for (const auto& file : movieFiles(o->output, frames.count()))
       if (!o->overwrite && std::filesystem::exists(file, ec))

@@ -18,6 +18,10 @@ nlohmann::json volumeJson(const Volume& v) {
           {"sample_type", v.sourceType},
           {"rescale", {{"slope", v.slope}, {"intercept", v.intercept}}},
           {"bytes", v.byteSize()},
+          {"time_point", v.timePoint},
+          {"time_points", v.timePoints},
+          {"suv", v.suv ? nlohmann::json{{"factor", v.suv->factor}, {"unit", v.suv->unit}}
+                        : nlohmann::json(nullptr)},
           {"warnings", v.warnings}};
 }
 
@@ -48,6 +52,8 @@ nlohmann::json seriesJson(const DicomListing& l) {
 }
 
 }  // namespace
+
+nlohmann::json timePointJson(const Volume& v) { return volumeJson(v); }
 
 nlohmann::json infoJson(const Volume& v, const DicomListing* listing) {
   nlohmann::json j = volumeJson(v);

@@ -10,5 +10,7 @@ namespace voxray::cli {
 
 // LISTING may be null (raw data, or a build without DICOM).
 nlohmann::json infoJson(const Volume& v, const DicomListing* listing);
+// One time point's entry of `info --all-time-points --json` (the volume's fields alone).
+nlohmann::json timePointJson(const Volume& v);
 
 }  // namespace voxray::cli

@@ -50,6 +50,7 @@ std::vector<InputFlagSpec> makeSpecs() {
   const ParamDomain spacing = ParamDomain().above(0).steps(0.1, 3).in("mm").offer({}, 100);
   const ParamDomain offset = ParamDomain().atLeast(0).steps(1, 0).in("bytes");
   const std::vector<EnumLabel> types = sampleTypeLabels();
+  const ParamDomain timePoint = ParamDomain().atLeast(0).steps(1, 0);
   return {
       {"raw-dims", "X,Y[,Z]", "raw: voxels along x, y and z (Z: the number of slice files)", dims,
        [dims](O& o, S s) {
@@ -112,6 +113,18 @@ std::vector<InputFlagSpec> makeSpecs() {
        {},
        [](O& o, S s) { o.series = s; },
        [](const O& o) { return o.series; }},
+      {"time", "K",
+       "4D (DICOM, NIfTI): the time point (phase) to open, 0-based (default 0, or the one "
+       "--series names)",
+       timePoint,
+       [timePoint](O& o, S s) {
+         if (s.empty()) {  // what format writes for none
+           o.timePoint.reset();
+           return;
+         }
+         o.timePoint = int(checkInDomain("time", timePoint, toInt("time", s), s));
+       },
+       [](const O& o) { return o.timePoint ? std::to_string(*o.timePoint) : std::string(); }},
   };
 }
 

@@ -38,9 +38,18 @@ bool mayBeDicom(const fs::path& file) {
   return groupLittle == 0x0002 || groupLittle == 0x0008 || groupBig == 0x0008;
 }
 
+// Inputs with one time point take --time 0 only.
+void refuseTimePoint(const std::string& input, const LoadOptions& options) {
+  if (options.timePoint && *options.timePoint != 0)
+    throw inputError((input.empty() ? std::string("the head phantom") : input) + ": --time " +
+                     std::to_string(*options.timePoint) +
+                     " is out of range: it has 1 time point (4D is read from DICOM and NIfTI)");
+}
+
 }  // namespace
 
 Volume loadVolume(const std::string& input, const LoadOptions& options) {
+  if (input.empty() || input == kSampleCtInput || options.raw) refuseTimePoint(input, options);
   if (input.empty()) return makeHeadPhantom();
   if (input == kSampleCtInput) return loadSampleCt();
   if (options.raw) return importRaw(input, *options.raw, {options.progress, options.cancel});
@@ -65,6 +74,25 @@ Volume loadVolume(const std::string& input, const LoadOptions& options) {
   throw inputError(input + ": this build of Voxray cannot read DICOM (it was built without " +
                    "DCMTK); " + detail::kRawUsage);
 #endif
+}
+
+std::vector<Volume> loadVolumeSeries(const std::string& input, const LoadOptions& options) {
+  LoadOptions first = options;
+  first.timePoint.reset();
+#ifdef VOXRAY_LOAD_DICOM
+  std::error_code ec;
+  if (!input.empty() && input != kSampleCtInput && !options.raw && !isVolumeFile(input) &&
+      fs::exists(input, ec) && (!fs::is_regular_file(input, ec) || mayBeDicom(input)))
+    return importDicomTimePoints(input, first);
+#endif
+  std::vector<Volume> out;
+  out.push_back(loadVolume(input, first));
+  for (int t = 1; t < out.front().timePoints; ++t) {
+    LoadOptions next = first;
+    next.timePoint = t;
+    out.push_back(loadVolume(input, next));
+  }
+  return out;
 }
 
 }  // namespace voxray

@@ -24,6 +24,7 @@ const std::vector<std::pair<std::string, std::string>>& fields() {
       {"raw-axes", "Orientation (x, y, z)"},
       {"raw-range", "Slice range"},
       {"series", "the series picker (File \u2192 Open DICOM folder\u2026)"},
+      {"time", "the time point of a 4D series"},
   };
   return table;
 }

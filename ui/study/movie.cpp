@@ -35,6 +35,7 @@ MovieSize settleMovieSize(MoviePlan& plan, const Volume& v, MovieFormat format) 
 }
 
 int movieFrameCount(const MoviePlan& plan, const Volume& v) {
+  if (plan.cine && plan.timePoints) return int(plan.timePoints->size());
   if (plan.frames > 0 || !plan.cine) return plan.frames;
   return cineSliceCount(v, plan.view);
 }
@@ -45,7 +46,11 @@ MovieFrames::MovieFrames(const Volume& v, ClContext* ctx, MoviePlan plan)
   const int slices = plan_.cine ? cineSliceCount(v, plan_.view) : 0;
   count_ = movieFrameCount(plan_, v);
   if (count_ <= 0) throw inputError("--frames: an orbit needs at least one frame");
-  if (plan_.cine && count_ > slices) {
+  if (plan_.cine && plan_.timePoints) {
+    for (const Volume& t : *plan_.timePoints)
+      if (t.dims != v.dims)
+        throw inputError("the time points differ in size: a cine over time needs one grid");
+  } else if (plan_.cine && count_ > slices) {
     throw inputError("--frames: this view has " + std::to_string(slices) +
                      " slices; ask for at most that many (or 0 for every slice)");
   }
@@ -84,18 +89,30 @@ RenderParams MovieFrames::params(int k) const {
 Image MovieFrames::frame(int k) {
   const RenderParams p = params(k);
   if (!plan_.cine) return raycaster_->rendererFor(p).render(p);
-  const int slice = cineSlice(k, count_, cineSliceCount(v_, plan_.view));
-  const PlaneGrid g = cinePlane(v_, plan_.view, slice, {p.width, p.height});
+  // Over time: time point K at the middle slice; else slice K of the one volume.
+  const Volume& v = plan_.timePoints ? (*plan_.timePoints)[size_t(k)] : v_;
+  const int slices = cineSliceCount(v, plan_.view);
+  const int slice = plan_.timePoints ? (slices - 1) / 2 : cineSlice(k, count_, slices);
+  const PlaneGrid g = cinePlane(v, plan_.view, slice, {p.width, p.height});
   // Outside the slice (the margins of another aspect ratio): black.
   const std::vector<float> values =
-      samplePlane(v_, g, p.interp, std::numeric_limits<float>::lowest());
+      samplePlane(v, g, p.interp, std::numeric_limits<float>::lowest());
   const WindowLevel& wl = plan_.window;
   double width = wl.width, lo = wl.level - 0.5 * wl.width;
-  if (width <= 0.0) {  // the volume's whole range, as mip's window
-    const ValueRange r = storedRange(v_);
-    const double a = v_.toPhysical(r.min), b = v_.toPhysical(r.max);
-    lo = std::min(a, b);
-    width = std::max(std::abs(b - a), 1e-6);
+  if (width <= 0.0) {  // the whole range (of every time point), as mip's window
+    double a = std::numeric_limits<double>::max(), b = std::numeric_limits<double>::lowest();
+    auto widen = [&](const Volume& each) {
+      const ValueRange r = storedRange(each);
+      const double x = each.toPhysical(r.min), y = each.toPhysical(r.max);
+      a = std::min({a, x, y});
+      b = std::max({b, x, y});
+    };
+    if (plan_.timePoints)
+      for (const Volume& t : *plan_.timePoints) widen(t);
+    else
+      widen(v_);
+    lo = a;
+    width = std::max(b - a, 1e-6);
   }
   Image img(g.size.x, g.size.y);
   for (size_t i = 0; i < values.size(); ++i) {

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "slice_geometry.h"
 #include "voxray/engine/orbit.h"
@@ -32,6 +33,9 @@ struct MoviePlan {
   RenderParams params;
   // Cine: the slice views' window (width 0: the volume's whole value range).
   WindowLevel window{0.0, 0.0};
+  // Cine over time (4D): frame K is time point K of *timePoints (one frame each; FRAMES is
+  // ignored) at the view's middle slice, in one window for all. Null: a cine through slices.
+  const std::vector<Volume>* timePoints = nullptr;
   // Orbit: start from params.camera (the view's) and turn from there, rather than from
   // the front as orbitCamera does (voxray-cli's movie is the orbit `bench` times).
   bool orbitFromView = false;

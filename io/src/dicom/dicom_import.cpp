@@ -11,6 +11,7 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <tuple>
 
 #include "arrived_files.h"
 #include "file_scan.h"
@@ -23,6 +24,7 @@
 #include "voxray/io/error.h"
 #include "voxray/io/parallel.h"
 #include "voxray/io/raw_import.h"
+#include "voxray/io/suv.h"
 
 namespace voxray {
 namespace {
@@ -405,6 +407,51 @@ DicomListing listDicomSeries(const std::string& input, const LoadOptions& option
 
 namespace {
 
+// The time point options.timePoint of the series of candidate INDEX (itself for a 3D series).
+int chooseTimePoint(const Scan& s, int index, const std::string& input,
+                    const LoadOptions& options) {
+  const Candidate& c = s.candidates[size_t(index)];
+  if (!options.timePoint) return index;
+  const int t = *options.timePoint;
+  if (t < 0 || t >= c.timePoints)
+    throw inputError(input + ": --time " + std::to_string(t) + " is out of range: series " +
+                     std::to_string(c.first().seriesNumber) + " has " +
+                     std::to_string(c.timePoints) + " time point(s)" +
+                     (c.timePoints > 1 ? ", 0 to " + std::to_string(c.timePoints - 1) : ""));
+  for (size_t i = 0; i < s.candidates.size(); ++i)
+    if (s.candidates[i].group == c.group && s.candidates[i].timePoint == t + 1) return int(i);
+  return index;
+}
+
+// PET: Bq/mL and, when the attributes allow it, the SUVbw scale; else why not, as a warning.
+void describePet(const Candidate& c, Volume& v) {
+  const FrameHeader& f0 = c.first();
+  if (!f0.pet) return;
+  PetSuvAttributes a = *f0.pet;
+  // The earliest image (DA and TM text compare in time order when both are given).
+  for (const auto& f : c.frames) {
+    if (f.acquisitionTime.empty()) continue;
+    if (a.acquisitionTime.empty() || std::tie(f.acquisitionDate, f.acquisitionTime) <
+                                         std::tie(a.acquisitionDate, a.acquisitionTime)) {
+      a.acquisitionDate = f.acquisitionDate;
+      a.acquisitionTime = f.acquisitionTime;
+    }
+  }
+  if (a.units == "BQML")
+    v.unit = "Bq/mL";
+  else if (!a.units.empty())
+    v.unit = a.units;
+  try {
+    v.suv = suvbwScale(a);
+  } catch (const Error& e) {
+    v.warnings.push_back(e.what());
+  }
+}
+
+Volume decodeCandidate(const Scan& s, int index, const std::string& input,
+                       const LoadOptions& options, ArrivedFiles* arrived,
+                       std::vector<std::string> warnings);
+
 Volume importWith(const std::string& input, const LoadOptions& options, ArrivedFiles* arrived) {
   if (arrived) {
     arrived->drain(options.cancel);
@@ -412,7 +459,14 @@ Volume importWith(const std::string& input, const LoadOptions& options, ArrivedF
   }
   Scan s = scan(input, options, arrived);
   std::vector<std::string> warnings;
-  const int index = chooseCandidate(s, input, options, warnings);
+  const int index =
+      chooseTimePoint(s, chooseCandidate(s, input, options, warnings), input, options);
+  return decodeCandidate(s, index, input, options, arrived, std::move(warnings));
+}
+
+Volume decodeCandidate(const Scan& s, int index, const std::string& input,
+                       const LoadOptions& options, ArrivedFiles* arrived,
+                       std::vector<std::string> warnings) {
   const Candidate& c = s.candidates[size_t(index)];
   const FrameHeader& f0 = c.first();
   if (std::string why = unsupportedReason(f0); !why.empty()) throw inputError(f0.path + ": " + why);
@@ -469,12 +523,15 @@ Volume importWith(const std::string& input, const LoadOptions& options, ArrivedF
       v.study.sliceSopInstanceUids.clear();
   }
   v.sourceType = sampleTypeName(f0);
+  v.timePoint = c.timePoint - 1;
+  v.timePoints = c.timePoints;
   v.warnings = c.warnings;
   v.warnings.insert(v.warnings.end(), g.warnings.begin(), g.warnings.end());
   v.warnings.insert(v.warnings.end(), warnings.begin(), warnings.end());
   if (isLuminanceRgb(f0))
     v.warnings.push_back("colour (RGB) images: shown as their luminance, greyscale 0-255");
   for (auto& note : s.notes) v.warnings.push_back(note);
+  describePet(c, v);
   report(options, 1.0, "Loaded");
   return v;
 }
@@ -483,6 +540,35 @@ Volume importWith(const std::string& input, const LoadOptions& options, ArrivedF
 
 Volume importDicom(const std::string& input, const LoadOptions& options) {
   return importWith(input, options, nullptr);
+}
+
+std::vector<Volume> importDicomTimePoints(const std::string& input, const LoadOptions& options) {
+  Scan s = scan(input, options, nullptr);
+  std::vector<std::string> warnings;
+  const int chosen = chooseCandidate(s, input, options, warnings);
+  if (s.candidates[size_t(chosen)].unevenTimePoints)
+    throw inputError(input + ": series " +
+                     std::to_string(s.candidates[size_t(chosen)].first().seriesNumber) +
+                     " has fewer images at some slice positions than at others and its images "
+                     "do not say their time point (Temporal Position Identifier, Trigger Time): "
+                     "it cannot be split into time points reliably; open them one by one with "
+                     "--time, or check the series is complete");
+  std::vector<int> indices(size_t(s.candidates[size_t(chosen)].timePoints), chosen);
+  for (size_t i = 0; i < s.candidates.size(); ++i)
+    if (s.candidates[i].group == s.candidates[size_t(chosen)].group)
+      indices[size_t(s.candidates[i].timePoint - 1)] = int(i);
+  std::vector<Volume> out;
+  for (int i : indices) {
+    out.push_back(decodeCandidate(s, i, input, options, nullptr, warnings));
+    const Volume& v = out.back();
+    if (v.dims != out.front().dims || v.spacingMm != out.front().spacingMm ||
+        v.originMm != out.front().originMm)
+      throw inputError(input + ": time point " + std::to_string(v.timePoint) + " of series " +
+                       s.candidates[size_t(i)].selector +
+                       " has another geometry than time point 0; open them one by one with "
+                       "--time");
+  }
+  return out;
 }
 
 DicomImport::DicomImport(LoadOptions options)

@@ -136,6 +136,30 @@ void readFrameGroups(DcmItem* perFrame, DcmItem* shared, const TextDecoder& text
   }
 }
 
+std::optional<double> positive(DcmItem* item, const DcmTagKey& tag) {
+  double v = 0;
+  if (doubles(item, tag, &v, 1) && v > 0) return v;
+  return std::nullopt;
+}
+
+// What SUV needs (suv.h); the times of the images themselves are added by the importer.
+std::shared_ptr<const PetSuvAttributes> readPet(DcmDataset* ds, const TextDecoder& text) {
+  auto p = std::make_shared<PetSuvAttributes>();
+  p->units = str(ds, DCM_Units, text);
+  p->decayCorrection = str(ds, DCM_DecayCorrection, text);
+  p->seriesDate = str(ds, DCM_SeriesDate, text);
+  p->seriesTime = str(ds, DCM_SeriesTime, text);
+  p->weightKg = positive(ds, DCM_PatientWeight);
+  DcmItem* drug = nullptr;
+  if (ds->findAndGetSequenceItem(DCM_RadiopharmaceuticalInformationSequence, drug, 0).good()) {
+    p->injectionTime = str(drug, DCM_RadiopharmaceuticalStartTime, text);
+    p->injectionDateTime = str(drug, DCM_RadiopharmaceuticalStartDateTime, text);
+    p->injectedDoseBq = positive(drug, DCM_RadionuclideTotalDose);
+    p->halfLifeS = positive(drug, DCM_RadionuclideHalfLife);
+  }
+  return p;
+}
+
 // "DICM" after the 128-byte preamble (PS3.10 7.1).
 bool hasDicomPreamble(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -188,6 +212,11 @@ ScanResult headersOf(DcmFileFormat& file, const std::string& failure,
   h.instanceNumber = intValue(ds, DCM_InstanceNumber);
   h.acquisitionNumber = intValue(ds, DCM_AcquisitionNumber);
   h.temporalIndex = intValue(ds, DCM_TemporalPositionIdentifier);
+  double trigger = 0;
+  if (doubles(ds, DCM_TriggerTime, &trigger, 1)) h.triggerTime = trigger;
+  h.acquisitionDate = str(ds, DCM_AcquisitionDate, text);
+  h.acquisitionTime = str(ds, DCM_AcquisitionTime, text);
+  if (h.modality == "PT") h.pet = readPet(ds, text);
   h.samplesPerPixel = intValue(ds, DCM_SamplesPerPixel, 1);
   h.planarConfiguration = intValue(ds, DCM_PlanarConfiguration, 0);
   h.bitsAllocated = intValue(ds, DCM_BitsAllocated, 16);

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "voxray/io/suv.h"
 #include "voxray/io/volume.h"
 
 class DcmFileFormat;
@@ -24,6 +25,10 @@ struct FrameHeader {
   int seriesNumber = 0, instanceNumber = 0, acquisitionNumber = 0;
   int temporalIndex = 0;  // TemporalPositionIndex / DimensionIndexValues, 0 when absent
   int stackId = 0;
+  double triggerTime = 0.0;  // TriggerTime (ms): orders cardiac phases at one position
+  std::string acquisitionDate, acquisitionTime;  // of this image; PET's scan time
+  // PET only (Modality PT): what SUV needs, read from the file's first frame.
+  std::shared_ptr<const PetSuvAttributes> pet;
   int rows = 0, columns = 0, samplesPerPixel = 1;
   int planarConfiguration = 0;  // colour: 0 = RGBRGB..., 1 = RR..GG..BB..
   int bitsAllocated = 16, bitsStored = 16, pixelRepresentation = 0;

@@ -36,12 +36,17 @@ bool upper(const std::string& s, const char* word) {
 }
 
 auto acquisitionOrder(const FrameHeader& f) {
-  return std::make_tuple(f.temporalIndex, f.acquisitionNumber, f.instanceNumber, f.path, f.frame);
+  return std::make_tuple(f.temporalIndex, f.triggerTime, f.acquisitionNumber, f.instanceNumber,
+                         f.path, f.frame);
 }
 
 // Splits one grid group into time points when positions repeat.
-std::vector<std::vector<FrameHeader>> splitTimePoints(std::vector<FrameHeader> g, bool& uneven) {
+// UNEVEN: some positions have fewer images than others; UNNAMED: the images do not say which
+// time point they are.
+std::vector<std::vector<FrameHeader>> splitTimePoints(std::vector<FrameHeader> g, bool& uneven,
+                                                      bool& unnamed) {
   uneven = false;
+  unnamed = true;
   if (!g.front().hasPosition) {
     std::sort(g.begin(), g.end(),
               [](auto& a, auto& b) { return acquisitionOrder(a) < acquisitionOrder(b); });
@@ -63,11 +68,30 @@ std::vector<std::vector<FrameHeader>> splitTimePoints(std::vector<FrameHeader> g
   }
   size_t repeats = 1;
   for (auto& p : positions) repeats = std::max(repeats, p.size());
+  // When the images name their time point (Temporal Position Identifier or Index, Trigger
+  // Time), the phases are those names: an image missing from one phase leaves a gap in that
+  // phase only. Without names the k-th image at each position is time point k.
+  std::set<std::pair<int, double>> phases;
+  for (auto& p : positions)
+    for (auto& f : p) phases.insert({f.temporalIndex, f.triggerTime});
+  bool named = phases.size() == repeats && repeats > 1;
+  for (auto& p : positions) {
+    std::set<std::pair<int, double>> here;
+    for (auto& f : p) here.insert({f.temporalIndex, f.triggerTime});
+    named = named && here.size() == p.size();
+  }
   std::vector<std::vector<FrameHeader>> volumes(repeats);
   for (auto& p : positions) {
     uneven |= p.size() != repeats;
-    for (size_t t = 0; t < p.size(); ++t) volumes[t].push_back(std::move(p[t]));
+    for (size_t t = 0; t < p.size(); ++t) {
+      const size_t phase =
+          named ? size_t(std::distance(phases.begin(),
+                                       phases.find({p[t].temporalIndex, p[t].triggerTime})))
+                : t;
+      volumes[phase].push_back(std::move(p[t]));
+    }
   }
+  unnamed = !named;
   return volumes;
 }
 
@@ -115,6 +139,7 @@ std::vector<Candidate> groupIntoCandidates(std::vector<FrameHeader> frames) {
   }
 
   std::vector<Candidate> out;
+  int groups = 0;
   for (auto& [key, list] : series) {
     std::vector<std::vector<FrameHeader>> grids;
     for (auto& f : list) {
@@ -132,10 +157,12 @@ std::vector<Candidate> groupIntoCandidates(std::vector<FrameHeader> frames) {
     if (!file.empty()) base += "@" + std::filesystem::path(file).filename().string();
     std::vector<Candidate> parts;
     for (auto& g : grids) {
-      bool uneven = false;
-      auto volumes = splitTimePoints(std::move(g), uneven);
+      bool uneven = false, unnamed = true;
+      auto volumes = splitTimePoints(std::move(g), uneven, unnamed);
+      ++groups;
       for (size_t t = 0; t < volumes.size(); ++t) {
         Candidate c;
+        c.group = groups;
         c.frames = std::move(volumes[t]);
         c.timePoint = int(t) + 1;
         c.timePoints = int(volumes.size());
@@ -143,13 +170,17 @@ std::vector<Candidate> groupIntoCandidates(std::vector<FrameHeader> frames) {
           c.warnings.push_back(
               "the series holds " + std::to_string(c.timePoints) +
               " images at each slice position (4D: time points, phases or diffusion "
-              "directions); this is volume " +
-              std::to_string(c.timePoint) + " of " + std::to_string(c.timePoints) +
-              ", never stacked with the others");
-          if (uneven)
-            c.warnings.push_back(
-                "some slice positions have fewer repeats than others; "
-                "the later volumes miss slices");
+              "directions); this is time point " +
+              std::to_string(c.timePoint - 1) + " of 0-" + std::to_string(c.timePoints - 1) +
+              " (--time chooses another), never stacked with the others");
+          if (uneven) {
+            c.warnings.push_back(unnamed ? "some slice positions have fewer repeats than others; "
+                                           "the images do not say their time point, so the later "
+                                           "volumes miss slices or mix time points"
+                                         : "some slice positions have fewer repeats than others; "
+                                           "those time points miss slices");
+            c.unevenTimePoints = unnamed;
+          }
         }
         parts.push_back(std::move(c));
       }

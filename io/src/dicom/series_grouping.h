@@ -14,6 +14,10 @@ struct Candidate {
   std::string selector;               // unique name: series number, UID, plus ":part"
   int part = 0;                       // 1.. when the series was split, else 0
   int timePoint = 0, timePoints = 1;  // 4D: which volume of how many (1-based)
+  int group = 0;                      // the same for the time points of one 4D series
+  // 4D whose positions have unequal repeats and whose images do not name their time point:
+  // which image belongs to which time point is a guess.
+  bool unevenTimePoints = false;
   bool isVolume = false;
   std::string notVolumeReason;
   std::vector<std::string> warnings;

@@ -88,7 +88,7 @@ void checkDataFits(const std::string& path, const nifti_image& n, uint64_t volum
 
 }  // namespace
 
-SampleGrid readNifti(const std::string& path) {
+SampleGrid readNifti(const std::string& path, int timePoint) {
   nifti_set_debug_level(0);  // the library would print to stderr; our messages say it all
   if (const std::string problem = niftiHeaderProblem(path); !problem.empty())
     throw inputError(path + ": not a readable NIfTI file (" + problem + ")");
@@ -123,14 +123,23 @@ SampleGrid readNifti(const std::string& path) {
                      std::string(n.intent_name, strnlen(n.intent_name, sizeof n.intent_name)));
   g.modality = hint.modality;
   if (!hint.unit.empty()) g.unit = hint.unit;
+  if (timePoint < 0 || uint64_t(timePoint) >= volumes)
+    throw inputError(path + ": --time " + std::to_string(timePoint) +
+                     " is out of range: the file has " + std::to_string(volumes) +
+                     " time point(s)" +
+                     (volumes > 1 ? ", 0 to " + std::to_string(volumes - 1) : std::string()));
+  g.timePoint = timePoint;
+  g.timePoints = int(volumes);
   if (volumes > 1)
     g.warnings.push_back("the file holds " + std::to_string(volumes) +
                          " volumes (4D: time points, phases or diffusion directions); this is " +
-                         "volume 1 of " + std::to_string(volumes));
+                         "volume " + std::to_string(timePoint + 1) + " of " +
+                         std::to_string(volumes) + " (time point " + std::to_string(timePoint) +
+                         "; --time chooses another)");
 
   checkDataFits(path, n, g.dims[0] * g.dims[1] * g.dims[2] * detail::sampleBytes(g.decoding.kind));
-  // Only the first 3D volume is read (a 4D file can be many times larger).
-  const int64_t first[1] = {0};
+  // Only the chosen 3D volume is read (a 4D file can be many times larger).
+  const int64_t first[1] = {timePoint};
   nifti_brick_list bricks{};
   NiftiPtr data(nifti_image_read_bricks(path.c_str(), 1, first, &bricks));
   if (!data || bricks.nbricks != 1 || !bricks.bricks || !bricks.bricks[0]) {

@@ -27,6 +27,7 @@ struct SampleGrid {
   std::string unit = "scanner units";
   std::string modality;
   std::vector<std::string> warnings;
+  int timePoint = 0, timePoints = 1;  // 4D: which 3D volume of the file this is (0-based)
 };
 
 // A format's type codes of the kinds Voxray reads, in SampleKind order (u8, i8, u16, i16,

@@ -93,11 +93,15 @@ std::string dataFileInFolder(const std::string& path, const std::string& name,
 namespace {
 
 // PATH ends in one of volumeFileExtensions(): ".gz" can only be ".nii.gz".
-formats::SampleGrid readGrid(const std::string& path) {
+formats::SampleGrid readGrid(const std::string& path, int timePoint) {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext == ".nii" || ext == ".gz") return formats::readNifti(path);
+  if (ext == ".nii" || ext == ".gz") return formats::readNifti(path, timePoint);
+  if (timePoint != 0)
+    throw inputError(path + ": --time " + std::to_string(timePoint) +
+                     " is out of range: the file has 1 time point (Voxray reads 4D from NIfTI "
+                     "and DICOM)");
   if (ext == ".nrrd" || ext == ".nhdr") return formats::readNrrd(path);
   return formats::readMetaImage(path);
 }
@@ -150,7 +154,7 @@ Volume importVolumeFile(const std::string& path, const LoadOptions& options) {
   if (fs::file_size(path, ec) == 0 && !ec)
     throw inputError(path + ": the file is empty (0 bytes); it was not saved completely");
   report(options, 0.0, "Reading " + fs::path(path).filename().string());
-  formats::SampleGrid g = readGrid(path);
+  formats::SampleGrid g = readGrid(path, options.timePoint.value_or(0));
   throwIfCancelled(options);
 
   // Slices are scanned, then stored, in parallel; the value range decides the storage.
@@ -180,6 +184,8 @@ Volume importVolumeFile(const std::string& path, const LoadOptions& options) {
   v.unit = g.unit;
   v.modality = g.modality;
   v.sourceType = g.sourceType;
+  v.timePoint = g.timePoint;
+  v.timePoints = g.timePoints;
   v.warnings = g.warnings;
   if (!storage.warning.empty()) v.warnings.push_back(storage.warning);
   if (!isIntegerKind(g.decoding.kind) && storage.slope != 1.0 && storage.warning.empty())

@@ -58,6 +58,11 @@ DicomListing listDicomSeries(const std::string& input, const LoadOptions& option
 // a message naming the file and the reason when the data cannot be one volume.
 Volume importDicom(const std::string& input, const LoadOptions& options = {});
 
+// Every time point of the series importDicom would open (options.timePoint ignored), in time
+// order; one volume for a 3D series. Throws Error (Input) when time points differ in geometry.
+std::vector<Volume> importDicomTimePoints(const std::string& input,
+                                          const LoadOptions& options = {});
+
 // importDicom for files that arrive while the import runs (a PACS retrieval into a folder):
 // each file handed to add() has its headers read and its pixels decoded on a worker at once,
 // and finish() imports INPUT as importDicom(INPUT, OPTIONS) does, using that work for the

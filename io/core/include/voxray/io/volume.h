@@ -42,6 +42,14 @@ struct StudyIdentity {
   std::vector<std::string> sliceSopInstanceUids;
 };
 
+// PET: how a value in Bq/mL becomes an SUV (QIBA's SUVbw: body weight over the injected dose
+// decay-corrected to the scan's start). SUV = physical value * factor.
+struct SuvScale {
+  double factor = 1.0;  // g/mL per Bq/mL: weight (g) / decay-corrected injected dose (Bq)
+  std::string unit = "SUVbw";
+  double toSuv(double physical) const { return physical * factor; }
+};
+
 struct Volume {
   glm::ivec3 dims{0};         // columns (i), rows (j), slices (k)
   glm::dvec3 spacingMm{1.0};  // distance between voxel centres along i, j, k
@@ -53,6 +61,9 @@ struct Volume {
   std::string modality;                 // DICOM Modality ("CT", "MR", ...); empty: not known
   std::optional<DisplayWindow> window;  // none when the source gives no window
   StudyIdentity study;
+  std::optional<SuvScale> suv;  // PET with every attribute SUV needs; none: values as stored
+  int timePoint = 0;            // 4D: which time point this is (0-based) of timePoints
+  int timePoints = 1;
   std::string sourceType = "i16";     // sample type it was read from
   std::vector<std::string> warnings;  // things the user should know (clamping, NaN, ...)
   VoxelVector voxels;  // 2 MiB-aligned huge pages where Linux gives them (voxel_memory.h)
