@@ -50,13 +50,13 @@ struct Marcher {
   const ReferenceHooks* hooks = nullptr;
   // Label-aware dvr (kernels/classification/labels.cl): the label map and segment table, or
   // none (no segmentation, not dvr, or a table that changes nothing, as the raycaster).
-  const Segmentation* seg = nullptr;
+  const Segmentation* labelMap = nullptr;
   std::vector<glm::vec4> segTable{};
 
   // C classified by the label of the voxel nearest to pv (label_classify).
   glm::dvec4 labelled(const glm::dvec4& c, const glm::dvec3& pv) const {
     glm::ivec3 i = glm::clamp(glm::ivec3(glm::floor(pv + 0.5)), glm::ivec3(0), v.dims - 1);
-    size_t l = seg->labels[seg->grid.index(i.x, i.y, i.z)];
+    size_t l = labelMap->labels[labelMap->grid.index(i.x, i.y, i.z)];
     glm::dvec4 s(segTable[2 * l]);
     return glm::dvec4(glm::mix(glm::dvec3(c), glm::dvec3(s), s.w),
                       c.a * double(segTable[2 * l + 1].x));
@@ -106,7 +106,7 @@ struct Marcher {
         glm::dvec3 pv = ov + t * dv;
         glm::dvec4 c = s.lut.lookup(sample(pv, o));
         if (c.a <= 0.0) continue;
-        if (seg) {
+        if (labelMap) {
           c = labelled(c, pv);
           if (c.a <= 0.0) continue;
         }
@@ -206,7 +206,7 @@ FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, Referenc
     if (seg->grid.dims != v.dims || seg->labels.size() != v.voxelCount())
       throw inputError("the segmentation's label map does not lie on the volume's voxels");
     m.segTable = segmentTable(seg->segments, p);
-    if (!changesNothing(m.segTable)) m.seg = seg;
+    if (!changesNothing(m.segTable)) m.labelMap = seg;
   }
   FloatImage out;
   out.width = p.width;
