@@ -144,6 +144,10 @@ TEST(Labels, ASegmentationThatChangesNothingRendersThePixelsWithout) {
     EXPECT_NE(rc.variantOptions(p).find("LABELS=0"), std::string::npos);
     rc.setSegmentation(red);
     EXPECT_NE(rc.variantOptions(p).find("LABELS=1"), std::string::npos);
+    // Adaptive steps read the colour table's levels alone: off while labels show.
+    RenderParams adaptive = p;
+    adaptive.adaptiveError = 0.01;
+    EXPECT_NE(rc.variantOptions(adaptive).find("ADAPTIVE=0"), std::string::npos);
     EXPECT_NE(rc.render(p).rgba, plain.rgba);
     rc.clearSegmentation();
     EXPECT_EQ(rc.render(p).rgba, plain.rgba);
