@@ -78,6 +78,14 @@ VOXRAY_SWITCH(ISO_BLOCK_TRIES, 0, BUILD, "")
 // every other variant compiles as before (#if). Not with ADAPTIVE (its levels read the colour
 // table alone); the light grid (shadows, ao) and the path tracer ignore the factor.
 VOXRAY_SWITCH(GRADIENT_OPACITY, 0, BUILD, "|gopacity")
+// dvr: label-aware classification (issue 34, classification/labels.cl): each sample's colour
+// mixed toward its nearest voxel's segment colour and its opacity times the label's factor
+// (segment opacity, RenderParams::segmentMask), from the label map and the segment table
+// (segment_table.h), two more kernel arguments. Set only where the raycaster holds a
+// segmentation whose table changes something (Raycaster::setSegmentation), so every other
+// variant compiles and renders as before (#if). Not with ADAPTIVE (its levels read the colour
+// table alone); the light grid (shadows, ao) and the path tracer ignore the labels.
+VOXRAY_SWITCH(LABELS, 0, BUILD, "|labels")
 
 // The packets' tuning (VOXRAY_TUNING above), measured on CPUs (docs/bench/history). An
 // experiment in a kernel directory (VOXRAY_KERNEL_DIR) tries another value with #undef and

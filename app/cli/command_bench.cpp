@@ -18,6 +18,7 @@
 #include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
+#include "labels_option.h"
 #include "quality_choice.h"
 #include "render_flags.h"
 #include "render_state_model.h"
@@ -46,6 +47,7 @@ struct BenchOptions {
   size_t slabMib = 0;
   int lanes = 0;
   CinematicFlags cinematic;
+  LabelsOption labels;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -147,6 +149,7 @@ Run addBenchCommand(CLI::App& app) {
   cmd->add_flag("--csv", o->csv, "CSV output");
   o->flags.add(*cmd, {"size", "gradient", "azimuth"});
   o->cinematic.add(*cmd);
+  o->labels.add(*cmd);
   return [o, sizesOption, gradientsOption] {
     if (o->stallRepeats > 0 && o->quality.empty())
       throw inputError("--stall needs --quality (the sharp frame's preset, e.g. balanced)");
@@ -166,6 +169,7 @@ Run addBenchCommand(CLI::App& app) {
                      const std::vector<std::string>& sizes, const std::vector<std::string>& grads,
                      const double* seedCentral, const double* seedZucker) {
       Raycaster rc(ctx, v, parseStorage(o->storage));
+      if (auto seg = o->labels.load(v)) rc.setSegmentation(*seg);
       for (size_t si = 0; si < sizes.size(); ++si)
         for (const auto& grad : grads)
           for (const auto& kern : kernels) {

@@ -4,6 +4,7 @@
 #include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
+#include "labels_option.h"
 #include "render_flags.h"
 #include "render_state_model.h"
 #include "session.h"
@@ -24,6 +25,7 @@ struct RenderOptions {
   std::string session, quality, saveSession;
   bool force = false;
   CinematicFlags cinematic;
+  LabelsOption labels;
 };
 
 // What this command line renders: the session's state (when --session is given) with what
@@ -121,6 +123,7 @@ Run addRenderCommand(CLI::App& app) {
   cmd->add_flag("--force", o->force, "--save-session may replace an existing file");
   o->flags.add(*cmd);
   o->cinematic.add(*cmd);
+  o->labels.add(*cmd);
   return [o] {
     const Session s = sessionToRender(*o);
     InputOptions input = o->input;
@@ -140,6 +143,7 @@ Run addRenderCommand(CLI::App& app) {
     ro.maxSlabBytes = o->slabMib << 20;
     rc.setOptions(ro);
     rc.setPathTracerOptions(o->cinematic.tracer);
+    if (auto seg = o->labels.load(v)) rc.setSegmentation(*seg);
     FrameStats stats;
     Image img;
     rc.rendererFor(p).renderStill(p, o->cinematic.budget(), img, &stats);

@@ -13,6 +13,7 @@ namespace voxray {
 void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
   cells_ = computeMacroCells(v);
   volume_ = &v;
+  shown_.clear();
   size_t n = cells_.minMax.size() / 2;
   clCall([&] {
     range_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(cl_short2),
@@ -26,6 +27,22 @@ void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
     return 0;
   });
   key_.clear();
+}
+
+void EmptySpace::setShownCells(ContextImpl& cl, std::vector<uint8_t> shown) {
+  if (shown == shown_) return;
+  shown_ = std::move(shown);
+  key_.clear();
+  if (shown_.empty()) return;
+  // classify.cl's dvr test finds no table entry between a min above its max.
+  std::vector<int16_t> masked = cells_.minMax;
+  for (size_t c = 0; c < shown_.size() && 2 * c + 1 < masked.size(); ++c)
+    if (!shown_[c]) masked[2 * c] = INT16_MAX, masked[2 * c + 1] = INT16_MIN;
+  clCall([&] {
+    shownRange_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                             masked.size() * sizeof(int16_t), masked.data());
+    return 0;
+  });
 }
 
 void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims) {
@@ -137,7 +154,7 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
       q.enqueueWriteBuffer(opaqueBefore_, CL_TRUE, 0, opaque.size() * sizeof(cl_int),
                            opaque.data());
     cl::Kernel kernel = cl.kernel("empty_space/classify.cl", "classify", "");
-    kernel.setArg(0, range_);
+    kernel.setArg(0, m == 1 && !shown_.empty() ? shownRange_ : range_);
     kernel.setArg(1, params);
     kernel.setArg(2, opaqueBefore_);
     kernel.setArg(3, cl_int(m));

@@ -28,6 +28,10 @@ class EmptySpace {
   void classify(ContextImpl& cl, const cl::Buffer& params, const cl::Buffer& lutBuffer,
                 const RaycastParams& k, Mode mode, const Lut& lut, bool adaptive, bool packets,
                 bool blockBits);
+  // Label-aware dvr (issue 34): per cell 0 where no sample can show (LabelCells,
+  // cellsShown), which dvr then classifies empty whatever its values; empty: no such cells.
+  // The next dvr classification follows a change.
+  void setShownCells(ContextImpl& cl, std::vector<uint8_t> shown);
   const glm::ivec3& dims() const { return cells_.dims; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
@@ -54,6 +58,8 @@ class EmptySpace {
   cl::Buffer range_, occ_, leap_, scratch_, opaqueBefore_;
   size_t opaqueCapacity_ = 0, leapBytes_ = 0;
   cl::Buffer aheadScratch_;
+  std::vector<uint8_t> shown_;  // setShownCells
+  cl::Buffer shownRange_;       // range_ with the cells not shown empty (min above max)
   // What the occupancy was classified for; equal keys skip the work.
   std::vector<float> key_;
   std::vector<int> opaque_;

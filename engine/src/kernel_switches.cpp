@@ -83,7 +83,9 @@ KernelSwitches kernelSwitches(const RenderParams& p) {
 KernelSwitches kernelSwitches(const RenderParams& p, const KernelFacts& f) {
   KernelSwitches s = kernelSwitches(p);
   s.ESS = f.emptySpaceSkipping;
-  s.ADAPTIVE = s.ADAPTIVE && s.ESS;  // the levels live with the macro cells
+  s.LABELS = f.labels && p.mode == Mode::Dvr;
+  // The levels live with the macro cells, and read the colour table alone (not the labels).
+  s.ADAPTIVE = s.ADAPTIVE && s.ESS && !s.LABELS;
   s.STORAGE_IMAGE = f.storageImage;
   s.SLABS = f.slabs;
   s.COUNT_SAMPLES = f.countSamples;

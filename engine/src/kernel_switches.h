@@ -24,6 +24,8 @@ struct KernelFacts {
   bool countSamples = false;
   bool hitOutput = false;  // renderWithHits
   int packetLanes = 0;     // packets of 8 or 16 lanes; 0: one ray per work-item
+  // A dvr frame with a segmentation whose table changes something (Raycaster::setSegmentation).
+  bool labels = false;
 };
 
 // The switches a frame's parameters decide (the rest keep their defaults). A switch that

@@ -8,8 +8,12 @@
 
 #include "device_frame.h"
 #include "empty_space.h"
+#include "label_cells.h"
+#include "label_table.h"
 #include "light_volume.h"
+#include "segment_table.h"  // kernels/: the table's size
 #include "voxray/engine/path_tracer.h"
+#include "voxray/io/segmentation.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -35,6 +39,13 @@ struct Raycaster::Impl {
   cl::Buffer hitBuffer;
   size_t hitCapacity = 0;
   RaycasterOptions opts;
+  // Label-aware dvr (setSegmentation): the label map on the device, the segments, the
+  // labels' macro-cell occupancy and the segment table last uploaded.
+  bool labels = false;
+  cl::Buffer labelBuffer, segmentBuffer;
+  std::vector<Segment> segments;
+  LabelCells labelCells;
+  std::vector<glm::vec4> segmentsUploaded;
 
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s)
       : frame(std::make_shared<DeviceFrame>(ctx.impl(), v, s)),
@@ -71,6 +82,7 @@ KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
   f.countSamples = opts.countSamples;
   f.hitOutput = hitsOut != nullptr;
   f.packetLanes = packets() ? lanes(p) : 0;
+  f.labels = labels && p.mode == Mode::Dvr && !changesNothing(segmentTable(segments, p));
   return kernelSwitches(p, f);
 }
 
@@ -143,6 +155,63 @@ int Raycaster::lightingSigmaBuilds() const { return impl_->light.sigmaBuilds(); 
 
 std::shared_ptr<DeviceFrame> Raycaster::deviceFrame() const { return impl_->frame; }
 
+void Raycaster::setSegmentation(const Segmentation& seg) {
+  Impl& m = *impl_;
+  if (!sameGrid(seg.grid, gridOf(m.volume)) || seg.labels.size() != m.volume.voxelCount())
+    throw inputError(
+        "the segmentation's label map does not lie on the volume's voxels (dims, spacing, "
+        "origin or direction differ): make it on this volume or resample it to it");
+  if (seg.labels.size() > m.cl.info.maxAllocBytes)
+    throw deviceError("the label map needs " + std::to_string(seg.labels.size()) +
+                      " bytes in one allocation; the device allows " +
+                      std::to_string(m.cl.info.maxAllocBytes) +
+                      ": render this volume without labels or on a device with more memory");
+  clCall([&] {
+    m.labelBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, seg.labels.size());
+    m.cl.queue.enqueueWriteBuffer(m.labelBuffer, CL_TRUE, 0, seg.labels.size(), seg.labels.data());
+    if (!m.segmentBuffer())
+      m.segmentBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY,
+                                   VOXRAY_SEGMENT_TABLE_FLOAT4S * sizeof(cl_float4));
+    return 0;
+  });
+  m.labelCells = computeLabelCells(seg);
+  m.segments = seg.segments;
+  m.segmentsUploaded.clear();
+  m.labels = true;
+}
+
+void Raycaster::updateSegmentation(const Segmentation& seg, glm::ivec3 lo, glm::ivec3 hi) {
+  Impl& m = *impl_;
+  if (!m.labels || seg.labels.size() != m.volume.voxelCount() || seg.grid.dims != m.volume.dims)
+    return setSegmentation(seg);
+  m.segments = seg.segments;
+  lo = glm::clamp(lo, glm::ivec3(0), m.volume.dims - 1);
+  hi = glm::clamp(hi, glm::ivec3(0), m.volume.dims - 1);
+  if (glm::any(glm::greaterThan(lo, hi))) return;
+  // Whole planes lo.z ... hi.z: one contiguous write (a box's rows would be many small ones).
+  const size_t plane = size_t(m.volume.dims.x) * size_t(m.volume.dims.y);
+  clCall([&] {
+    m.cl.queue.enqueueWriteBuffer(m.labelBuffer, CL_TRUE, size_t(lo.z) * plane,
+                                  size_t(hi.z - lo.z + 1) * plane,
+                                  seg.labels.data() + size_t(lo.z) * plane);
+    return 0;
+  });
+  updateLabelCells(m.labelCells, seg, lo, hi);
+  m.space.setShownCells(m.cl, {});  // recomputed for the next labelled frame
+}
+
+void Raycaster::clearSegmentation() {
+  Impl& m = *impl_;
+  m.labels = false;
+  m.labelBuffer = cl::Buffer();
+  m.segments.clear();
+  m.labelCells = LabelCells{};
+  m.segmentsUploaded.clear();
+  m.space.setShownCells(m.cl, {});
+}
+
+bool Raycaster::hasSegmentation() const { return impl_->labels; }
+
 PathTracer& Raycaster::Impl::tracer(Raycaster& r) {
   if (!pathTracer) pathTracer = std::make_unique<PathTracer>(r);
   return *pathTracer;
@@ -178,6 +247,8 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   glm::ivec3 cells = m.space.dims();
   k.cells = {{cells.x, cells.y, cells.z, 0}};
   if (sw.LIGHTING) m.light.prepare(s, k);
+  std::vector<glm::vec4> segmentTableNow;
+  if (sw.LABELS) segmentTableNow = segmentTable(m.segments, p);
 
   size_t pixels = size_t(p.width) * size_t(p.height);
   out.width = p.width;
@@ -202,6 +273,16 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     f.uploadFrame(k, sw.LIGHTING ? m.light.bytes() : 0);
     // mip leaps by occupancy only in packets; one ray per work-item reads each cell's max.
     bool leaps = p.mode != Mode::Mip || m.packets();
+    if (sw.LABELS && segmentTableNow != m.segmentsUploaded) {
+      m.segmentsUploaded = segmentTableNow;  // the asynchronous write reads this copy
+      q.enqueueWriteBuffer(m.segmentBuffer, CL_FALSE, 0,
+                           m.segmentsUploaded.size() * sizeof(cl_float4),
+                           m.segmentsUploaded.data());
+    }
+    // dvr leaps the cells where no label shows (LabelCells) as it leaps transparent ones.
+    if (p.mode == Mode::Dvr && m.opts.emptySpaceSkipping)
+      m.space.setShownCells(
+          m.cl, sw.LABELS ? cellsShown(m.labelCells, segmentTableNow) : std::vector<uint8_t>{});
     if (m.opts.emptySpaceSkipping && leaps)
       m.space.classify(m.cl, f.paramsBuffer, f.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
                        sw.PACKET != 0, sw.ISO_BLOCK_TRIES > 0);
@@ -209,11 +290,13 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
       storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;
       storage.SLABS = sw.SLABS;
-      if (m.light.update(
-              m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false), sw.LIGHTING,
-              p.mode == Mode::Iso, f.paramsBuffer, f.lutBuffer,
-              m.opts.emptySpaceSkipping && p.mode == Mode::Dvr ? &m.space.leap() : nullptr, k,
-              s.lut.rgba)) {
+      if (m.light.update(m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false),
+                         sw.LIGHTING, p.mode == Mode::Iso, f.paramsBuffer, f.lutBuffer,
+                         // the labels' leaps are not the light's (it ignores the labels)
+                         m.opts.emptySpaceSkipping && p.mode == Mode::Dvr && !sw.LABELS
+                             ? &m.space.leap()
+                             : nullptr,
+                         k, s.lut.rgba)) {
         lightingMs = m.light.lastMs();
         m.lightCopiedInto = -1;
       }
@@ -237,7 +320,11 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
         m.hitCapacity = pixels * sizeof(cl_float4);
       }
       m.hitsOut->resize(pixels);
-      kernel.setArg(arg, m.hitBuffer);
+      kernel.setArg(arg++, m.hitBuffer);
+    }
+    if (sw.LABELS) {  // LABEL_PARAMS (kernels/classification/labels.cl)
+      kernel.setArg(arg++, m.labelBuffer);
+      kernel.setArg(arg++, m.segmentBuffer);
     }
     cl::NDRange local = m.local();
     // A band starts at the work-item row holding Y0: the kernels take their pixel from

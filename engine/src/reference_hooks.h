@@ -20,7 +20,8 @@ struct ReferenceHooks {
   uint64_t stream = 0;
 };
 
+// SEG: label-aware dvr (renderReferenceFloat(v, p, seg)); null: none.
 FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, ReferenceHits* hits,
-                                const ReferenceHooks* hooks);
+                                const ReferenceHooks* hooks, const Segmentation* seg = nullptr);
 
 }  // namespace voxray

@@ -7,9 +7,12 @@
 
 #include "frame_setup.h"
 #include "kernel_switches.h"
+#include "label_table.h"
 #include "reference_hooks.h"
 #include "reference_sampling.h"
+#include "voxray/io/error.h"
 #include "voxray/io/parallel.h"
+#include "voxray/io/segmentation.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -45,6 +48,19 @@ struct Marcher {
   bool gradientOpacity = kernelSwitches(p).GRADIENT_OPACITY != 0;
   double gradSamples = double(gradientSamples(p.gradient));
   const ReferenceHooks* hooks = nullptr;
+  // Label-aware dvr (kernels/classification/labels.cl): the label map and segment table, or
+  // none (no segmentation, not dvr, or a table that changes nothing, as the raycaster).
+  const Segmentation* labelMap = nullptr;
+  std::vector<glm::vec4> segTable{};
+
+  // C classified by the label of the voxel nearest to pv (label_classify).
+  glm::dvec4 labelled(const glm::dvec4& c, const glm::dvec3& pv) const {
+    glm::ivec3 i = glm::clamp(glm::ivec3(glm::floor(pv + 0.5)), glm::ivec3(0), v.dims - 1);
+    size_t l = labelMap->labels[labelMap->grid.index(i.x, i.y, i.z)];
+    glm::dvec4 s(segTable[2 * l]);
+    return glm::dvec4(glm::mix(glm::dvec3(c), glm::dvec3(s), s.w),
+                      c.a * double(segTable[2 * l + 1].x));
+  }
 
   // The light coefficients at world position w: the frame's, or the Monte Carlo estimator's.
   LightParams lightAt(const glm::dvec3& w, Rng& rng) const {
@@ -90,6 +106,10 @@ struct Marcher {
         glm::dvec3 pv = ov + t * dv;
         glm::dvec4 c = s.lut.lookup(sample(pv, o));
         if (c.a <= 0.0) continue;
+        if (labelMap) {
+          c = labelled(c, pv);
+          if (c.a <= 0.0) continue;
+        }
         glm::dvec3 g(0.0);
         if (gradientOpacity) {  // the factor at |gradient| (stored units per mm), then shading
           g = worldGradient(pv, o);
@@ -169,11 +189,25 @@ FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, Referenc
   return renderReferenceFloat(v, p, hits, nullptr);
 }
 
+FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, const Segmentation& seg) {
+  return renderReferenceFloat(v, p, nullptr, nullptr, &seg);
+}
+
+Image renderReference(const Volume& v, const RenderParams& p, const Segmentation& seg) {
+  return quantise(renderReferenceFloat(v, p, seg));
+}
+
 FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, ReferenceHits* hits,
-                                const ReferenceHooks* hooks) {
+                                const ReferenceHooks* hooks, const Segmentation* seg) {
   FrameSetup s = makeFrameSetup(v, p);
   Marcher m{v, p, s};
   m.hooks = hooks;
+  if (seg && p.mode == Mode::Dvr) {
+    if (seg->grid.dims != v.dims || seg->labels.size() != v.voxelCount())
+      throw inputError("the segmentation's label map does not lie on the volume's voxels");
+    m.segTable = segmentTable(seg->segments, p);
+    if (!changesNothing(m.segTable)) m.labelMap = seg;
+  }
   FloatImage out;
   out.width = p.width;
   out.height = p.height;

@@ -165,6 +165,57 @@ std::string formatGradientOpacity(const std::vector<glm::dvec2>& points) {
   return out;
 }
 
+}  // namespace
+
+SegmentMask parseSegmentMask(const std::string& text) {
+  SegmentMask m;
+  if (text.empty() || text == "off") return m;
+  const auto colon = text.find(':');
+  const std::string kind = text.substr(0, colon);
+  const auto bad = [&](const std::string& why) {
+    return inputError("--segment-mask: " + why + ", got '" + text +
+                      "' (off, show:L1,L2,... or hide:L1,...; L a segment's label 1 ... 255)");
+  };
+  if (kind == "show")
+    m.kind = SegmentMask::Kind::Show;
+  else if (kind == "hide")
+    m.kind = SegmentMask::Kind::Hide;
+  else
+    throw bad("it starts with off, show or hide");
+  if (colon == std::string::npos || colon + 1 == text.size())
+    throw bad("show and hide need the labels after ':'");
+  std::istringstream in(text.substr(colon + 1));
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    size_t used = 0;
+    int label = -1;
+    try {
+      label = std::stoi(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != item.size() || item.empty() || label < 1 || label > 255)
+      throw bad("'" + item + "' is not a label 1 ... 255");
+    m.labels.push_back(label);
+  }
+  if (m.labels.empty() || text.back() == ',') throw bad("a label list has no empty items");
+  std::sort(m.labels.begin(), m.labels.end());
+  m.labels.erase(std::unique(m.labels.begin(), m.labels.end()), m.labels.end());
+  return m;
+}
+
+std::string toString(const SegmentMask& m) {
+  if (m.kind == SegmentMask::Kind::Off) return "off";
+  std::string out = m.kind == SegmentMask::Kind::Show ? "show:" : "hide:";
+  for (size_t i = 0; i < m.labels.size(); ++i) {
+    if (i > 0) out += ',';
+    out += std::to_string(m.labels[i]);
+  }
+  return out;
+}
+
+namespace {
+
 // Builders for the common kinds. FIELD is a generic lambda giving the field of a
 // RenderParams, const or not, so that one accessor serves both parse and format.
 template <class Field>
@@ -274,6 +325,15 @@ std::vector<ParamSpec> makeSpecs() {
              "dvr: longer steps where the table varies little, each changing the composite by at "
              "most E (0 = fixed steps)",
              ParamDomain().atLeast(0).atMost(1).steps(0.005, 3), FIELD(adaptiveError)),
+      {"segment-mask", "off|show:L,...|hide:L,...",
+       "dvr with a segmentation: show only what the segments of labels L cover, or hide them "
+       "(off = the whole volume)",
+       none, [](P& p, S s) { p.segmentMask = parseSegmentMask(s); },
+       [](const P& p) { return toString(p.segmentMask); }},
+      number("segment-blend", "F",
+             "dvr with a segmentation: how strongly a visible segment's colour replaces the "
+             "transfer function's (0 ... 1)",
+             unit, FIELD(segmentBlend)),
       number("early-termination", "A", "dvr stops a ray at this opacity (1 = never)", unit,
              FIELD(earlyTermination)),
       {"window", "W,L", "mip grey window width and level in HU", ParamDomain().in("HU"),

@@ -4,6 +4,7 @@
 #define VOXRAY_DVR_PACKET_CL
 
 #include "classification/gradient_opacity_lanes.cl"
+#include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
 #include "empty_space/skip_lanes.cl"
 #include "intersection/ray_lanes.cl"
@@ -33,13 +34,23 @@ inline void dvr_gradient_opacityN(__global const short* restrict vol, __constant
 #define DVR_NORMAL_ARG(n)
 #endif
 
+#if LABELS
+// Each lane's label, which the shading queue keeps for the colour it looks up at the flush.
+#define DVR_LABEL_PARAM , intN label
+#define DVR_LABEL_ARG(l) , l
+#else
+#define DVR_LABEL_PARAM
+#define DVR_LABEL_ARG(l)
+#endif
+
 // One dvr sample into the composite: opacity (and colour) c of the segment of length seg
 // at t, for the lanes in `live`. Updates alpha, active, samples and the colour (acc, or
 // the shading queue). GRADIENT_OPACITY: c[3] already scaled, normal its gradient.
 inline void dvr_compositeN(__global const short* restrict vol, __constant RaycastParams* P,
                            __global const float4* lut, ShadeQueue* queue, floatN acc[3],
                            floatN* alpha, intN* active, intN* samples, intN live, floatN seg,
-                           floatN t, floatN value, const floatN c[4] DVR_NORMAL_PARAM) {
+                           floatN t, floatN value,
+                           const floatN c[4] DVR_NORMAL_PARAM DVR_LABEL_PARAM QUEUE_SEGS_PARAM) {
   *samples -= live;
   intN seen = live & (c[3] > 0.0f);
   if (!any(seen)) return;
@@ -50,7 +61,8 @@ inline void dvr_compositeN(__global const short* restrict vol, __constant Raycas
   }
   floatN w = select((floatN)(0.0f), (1.0f - *alpha) * a, seen);
   if (SHADING) {
-    shade_queue_push(vol, P, lut, queue, t, value, w, seen DVR_NORMAL_ARG(normal));
+    shade_queue_push(vol, P, lut, queue, t, value, w,
+                     seen DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(label) QUEUE_SEGS_ARG);
 #if !GRADIENT_OPACITY
     *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
 #endif
@@ -117,6 +129,9 @@ inline void dvr_packet(PACKET_ARGS) {
     }
     floatN sa[DVR_BATCH], sb[DVR_BATCH], t[DVR_BATCH], value[DVR_BATCH], c[DVR_BATCH][4];
     intN live[DVR_BATCH];
+#if LABELS
+    intN lab[DVR_BATCH];
+#endif
     intN at = i;
     for (int k = 0; k < DVR_BATCH; ++k) {
 #if ADAPTIVE
@@ -134,6 +149,17 @@ inline void dvr_packet(PACKET_ARGS) {
         c[k][3] = lut_alphaN(lut, P, value[k]);
       else
         lutN(lut, P, value[k], c[k]);
+#if LABELS
+      // label_classify (labels.cl): the opacity now, the colour now or at the queue's flush.
+      // Lanes the table leaves transparent stay so (factors are at most 1): when all are,
+      // the labels are not read.
+      lab[k] = 0;
+      if (any(c[k][3] > 0.0f)) {
+        lab[k] = label_atN(labels, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
+        c[k][3] *= label_opacityN(segs, lab[k]);
+        if (!SHADING) label_colourN(segs, lab[k], c[k]);
+      }
+#endif
     }
     for (int k = 0; k < DVR_BATCH; ++k) {
 #if HIT_OUTPUT
@@ -144,7 +170,8 @@ inline void dvr_packet(PACKET_ARGS) {
       dvr_gradient_opacityN(vol, P, lut, &r, live[k] & active, t[k], c[k], &normal, &samples);
 #endif
       dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
-                     sb[k] - sa[k], t[k], value[k], c[k] DVR_NORMAL_ARG(normal));
+                     sb[k] - sa[k], t[k], value[k],
+                     c[k] DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(lab[k]) QUEUE_SEGS_ARG);
 #if HIT_OUTPUT
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
@@ -153,7 +180,7 @@ inline void dvr_packet(PACKET_ARGS) {
     active &= i <= r.n;
   }
   if (SHADING) {
-    if (queue.n > 0) shade_queue_flush(vol, P, lut, &queue, queue.n);
+    if (queue.n > 0) shade_queue_flush(vol, P, lut, &queue, queue.n QUEUE_SEGS_ARG);
     for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, queue.acc[ch]);
   }
   VecN color = {acc[0] + (1.0f - alpha) * P->background.x,
@@ -168,5 +195,7 @@ inline void dvr_packet(PACKET_ARGS) {
 
 #undef DVR_NORMAL_PARAM
 #undef DVR_NORMAL_ARG
+#undef DVR_LABEL_PARAM
+#undef DVR_LABEL_ARG
 
 #endif

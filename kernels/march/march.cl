@@ -5,6 +5,7 @@
 #define VOXRAY_MARCH_CL
 
 #include "classification/gradient_opacity.cl"
+#include "classification/labels.cl"
 #include "classification/lut.cl"
 #include "empty_space/skip.cl"
 #include "math.cl"
@@ -111,7 +112,7 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
                         ,
                         float4* hit_out
 #endif
-) {
+                            LABEL_PARAMS) {
   float seg = s.y - s.x;
   if (seg <= 0.0f) return false;  // segment 0 without jitter
   float t = 0.5f * (s.x + s.y);
@@ -119,6 +120,10 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
   ++*count;
   float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
   if (c.w <= 0.0f) return false;
+#if LABELS
+  c = label_classify(segs, label_at(labels, P, p_v), c);
+  if (c.w <= 0.0f) return false;
+#endif
 #if GRADIENT_OPACITY
   // The opacity per reference step times the factor at |gradient|, before the correction
   // to the segment's length; the gradient is the one shading uses.
@@ -159,7 +164,7 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
                         ,
                         float4* hit_out
 #endif
-) {
+                            LABEL_PARAMS) {
   float3 acc = (float3)(0.0f);
   float alpha = 0.0f;
 #if HIT_OUTPUT
@@ -180,7 +185,9 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #else
     float2 s = ray_segment(r, i);
 #endif
-    if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc, &alpha DVR_HIT_ARG)) break;
+    if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc,
+                    &alpha DVR_HIT_ARG LABEL_PASS))
+      break;
   }
 #undef DVR_HIT_ARG
   return acc + (1.0f - alpha) * P->background.xyz;

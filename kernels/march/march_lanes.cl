@@ -27,10 +27,12 @@
 #error "packets need the tuning -D options of switches.h (engine/src/kernel_switches.cpp)"
 #endif
 
-// What iso and dvr packets take: the kernel's arguments and the packet's place (gx, gy).
+// What iso and dvr packets take (LABELS: the label map and segment table too, which only dvr
+// reads): the kernel's arguments and the packet's place (gx, gy).
 #define PACKET_ARGS                                                                            \
   __global const short *restrict vol, __constant RaycastParams *P, __global const float4 *lut, \
-      __global uchar4 *out, CELL_ARGS, __global uint *count, int gx, int gy PACKET_HITS
+      __global uchar4 *out, CELL_ARGS, __global uint *count, int gx,                           \
+      int gy PACKET_HITS LABEL_PARAMS
 
 // Writes the packet's pixels that lie inside the image, and adds its samples to a counter.
 inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __global uint* count,

@@ -7,19 +7,32 @@
 // samples, as without the queue. An entry keeps only t, the value and the weight; its
 // position, colour and view come back from its lane's ray at the flush. With
 // GRADIENT_OPACITY the weight needs the gradient first (dvr_gradient_opacityN), taken when
-// the sample is: the entry keeps it too, so the flush shades without taking it again.
+// the sample is: the entry keeps it too, so the flush shades without taking it again. With
+// LABELS the entry keeps its label, whose segment colour the flush mixes in.
 #ifndef VOXRAY_SHADE_QUEUE_CL
 #define VOXRAY_SHADE_QUEUE_CL
 
+#include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
 #include "intersection/ray_lanes.cl"
 #include "reconstruction/gradients_lanes.cl"
+
+#if LABELS
+#define QUEUE_SEGS_PARAM , __constant float4* segs
+#define QUEUE_SEGS_ARG , segs
+#else
+#define QUEUE_SEGS_PARAM
+#define QUEUE_SEGS_ARG
+#endif
 
 typedef struct {
   float t[2 * LANES], value[2 * LANES], weight[2 * LANES];
   int lane[2 * LANES];  // whose ray entry e belongs to
 #if GRADIENT_OPACITY
   float normal[3][2 * LANES];  // each entry's world gradient
+#endif
+#if LABELS
+  int label[2 * LANES];  // each entry's label (its colour, labels_lanes.cl)
 #endif
   int n;
   // The part of each lane's ray that differs between lanes: voxel and world origins with
@@ -40,6 +53,9 @@ inline void shade_queue_init(ShadeQueue* q, const RayPacket* r, const floatN wor
 #if GRADIENT_OPACITY
   for (int e = 0; e < 2 * LANES; ++e) q->normal[0][e] = q->normal[1][e] = q->normal[2][e] = 0.0f;
 #endif
+#if LABELS
+  for (int e = 0; e < 2 * LANES; ++e) q->label[e] = 0;
+#endif
   for (int c = 0; c < 3; ++c)
     for (int l = 0; l < LANES; ++l) q->acc[c][l] = 0.0f;
   q->n = 0;
@@ -54,7 +70,8 @@ inline floatN lane_valuesN(const float* a, intN lane) {
 // Shades the first `count` entries (at most LANES) and adds them to their lanes' colours;
 // the rest move to the front.
 inline void shade_queue_flush(__global const short* restrict vol, __constant RaycastParams* P,
-                              __global const float4* lut, ShadeQueue* q, int count) {
+                              __global const float4* lut, ShadeQueue* q,
+                              int count QUEUE_SEGS_PARAM) {
   floatN t = vloadN(0, q->t);
   intN lane = vloadN(0, q->lane);
   // voxel origin, direction; world origin, direction: the shared part from P
@@ -71,6 +88,9 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
   VecN view = {-ray[9], -ray[10], -ray[11]};
   floatN c[4];
   lutN(lut, P, vloadN(0, q->value), c);
+#if LABELS
+  label_colourN(segs, vloadN(0, q->label), c);
+#endif
   VecN color = {c[0], c[1], c[2]};
 #if GRADIENT_OPACITY
   VecN normal = {vloadN(0, q->normal[0]), vloadN(0, q->normal[1]), vloadN(0, q->normal[2])};
@@ -94,6 +114,9 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
 #if GRADIENT_OPACITY
     for (int k = 0; k < 3; ++k) q->normal[k][e - count] = q->normal[k][e];
 #endif
+#if LABELS
+    q->label[e - count] = q->label[e];
+#endif
   }
   q->n = n - count;
 }
@@ -107,13 +130,21 @@ inline void shade_queue_push(__global const short* restrict vol, __constant Rayc
                              ,
                              VecN normal
 #endif
-) {
+#if LABELS
+                             ,
+                             intN label
+#endif
+                                 QUEUE_SEGS_PARAM) {
   float ts[LANES], vs[LANES], ws[LANES];
   int take[LANES];
   vstoreN(t, 0, ts);
   vstoreN(value, 0, vs);
   vstoreN(weight, 0, ws);
   vstoreN(seen, 0, take);
+#if LABELS
+  int ls[LANES];
+  vstoreN(label, 0, ls);
+#endif
 #if GRADIENT_OPACITY
   float ns[3][LANES];
   vstoreN(normal.x, 0, ns[0]);
@@ -128,10 +159,13 @@ inline void shade_queue_push(__global const short* restrict vol, __constant Rayc
 #if GRADIENT_OPACITY
     q->normal[0][n] = ns[0][l], q->normal[1][n] = ns[1][l], q->normal[2][n] = ns[2][l];
 #endif
+#if LABELS
+    q->label[n] = ls[l];
+#endif
     n += take[l] & 1;
   }
   q->n = n;
-  if (n >= LANES) shade_queue_flush(vol, P, lut, q, LANES);
+  if (n >= LANES) shade_queue_flush(vol, P, lut, q, LANES QUEUE_SEGS_ARG);
 }
 
 #endif

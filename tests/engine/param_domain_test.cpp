@@ -116,9 +116,9 @@ TEST(ParamDomain, EverySingleNumberSpecChecksItsDomain) {
                 "--" + spec.key + ": must " + d.rangeText() + ", got '" + above + "'");
     }
   }
-  // opacity-unit, step, refine, adaptive, early-termination, zoom, distance, fov, ambient,
-  // diffuse, specular, shininess
-  EXPECT_EQ(checked, 12);
+  // opacity-unit, step, refine, adaptive, segment-blend, early-termination, zoom, distance,
+  // fov, ambient, diffuse, specular, shininess
+  EXPECT_EQ(checked, 13);
 }
 
 TEST(ParamDomain, UiEndsLieInsideTheDomain) {

@@ -68,6 +68,8 @@ const std::map<std::string, std::string> kUnusual = {
     {"opacity-correction", "off"},
     {"jitter", "on"},
     {"adaptive", "0.05"},
+    {"segment-mask", "hide:2,7"},
+    {"segment-blend", "0.35"},
     {"early-termination", "0.95"},
     {"window", "1500,-600"},
     {"azimuth", "0.3333333333333333"},

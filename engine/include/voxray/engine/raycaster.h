@@ -15,6 +15,7 @@
 namespace voxray {
 
 struct Volume;
+struct Segmentation;
 class ClContext;
 struct DeviceFrame;
 class PathTracer;
@@ -74,6 +75,21 @@ class Raycaster : public Renderer {
   // termination, and every mip pixel).
   Image renderWithHits(const RenderParams& params, std::vector<glm::vec4>& hits,
                        FrameStats* stats = nullptr);
+
+  // Label-aware dvr (issue 34): SEG's label map goes to the device beside the volume and
+  // its segments' colours, opacities and visibility into the segment table, so that dvr
+  // frames show each visible segment in its colour (RenderParams::segmentBlend) and
+  // RenderParams::segmentMask shows only, or hides, what segments cover. A frame whose
+  // segments and mask change nothing (no segment, none visible, blend 0 and mask off)
+  // renders as without a segmentation. The light grid (shadows, ao) and the path tracer
+  // ignore the labels. Throws Error (Input) when SEG's grid is not the volume's, Error
+  // (Device) when its label map exceeds one allocation.
+  void setSegmentation(const Segmentation& seg);
+  // After an edit of SEG (set before): its segments again, and its label map within the
+  // voxel box LO ... HI (inclusive, clamped to the volume).
+  void updateSegmentation(const Segmentation& seg, glm::ivec3 lo, glm::ivec3 hi);
+  void clearSegmentation();
+  bool hasSegmentation() const;
 
   // The volume on the device and the frame set up on it, which a PathTracer shares.
   std::shared_ptr<DeviceFrame> deviceFrame() const;

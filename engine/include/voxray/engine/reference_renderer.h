@@ -11,6 +11,7 @@
 namespace voxray {
 
 struct Volume;
+struct Segmentation;
 
 // Linear RGB in 0..1 per pixel, before quantisation to 8 bits.
 struct FloatImage {
@@ -38,6 +39,9 @@ FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p);
 // The same, also filling hits (iso hit points and normals; samples for every mode).
 FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, ReferenceHits* hits);
 Image renderReference(const Volume& v, const RenderParams& p);
+// Label-aware dvr (issue 34), as Raycaster::setSegmentation: SEG lies on V's grid.
+FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, const Segmentation& seg);
+Image renderReference(const Volume& v, const RenderParams& p, const Segmentation& seg);
 Image quantise(const FloatImage& f);
 
 }  // namespace voxray

@@ -50,6 +50,16 @@ struct LightParams {
   double shininess = 32.0;
 };
 
+// dvr with a segmentation (issue 34, Raycaster::setSegmentation): which labels the volume
+// shows. Off: all of it; Show: only samples whose nearest voxel holds one of `labels` (what
+// a segment covers, e.g. bone without the table); Hide: all but those.
+struct SegmentMask {
+  enum class Kind { Off, Show, Hide } kind = Kind::Off;
+  std::vector<int> labels;  // 1 ... 255, sorted, each once
+  bool operator==(const SegmentMask& o) const { return kind == o.kind && labels == o.labels; }
+  bool operator!=(const SegmentMask& o) const { return !(*this == o); }
+};
+
 struct RenderParams {
   int width = 512;
   int height = 384;
@@ -80,6 +90,10 @@ struct RenderParams {
   // each long step changes the composite by at most this (kernels/empty_space/classify.cl,
   // adaptive_level); 0 = every step the base step. Needs opacity correction.
   double adaptiveError = 0.0;
+  // dvr with a segmentation: the labels shown (segment-mask) and how strongly a visible
+  // segment's colour replaces the table's colour (0: not at all, 1: wholly).
+  SegmentMask segmentMask;
+  double segmentBlend = 1.0;
   double windowWidth = 0.0;  // mip grey mapping in HU; width 0 = the volume's range
   double windowLevel = 0.0;
   glm::dvec3 surfaceColor{0.93, 0.89, 0.80};  // iso colour (bone) when no preset colours it
@@ -115,5 +129,8 @@ Mode parseMode(const std::string& s);
 Gradient parseGradient(const std::string& s);
 Interp parseInterp(const std::string& s);
 Lighting parseLighting(const std::string& s);
+// "off", "show:1,2", "hide:3" (segment-mask); throws Error (Input) naming what is wrong.
+SegmentMask parseSegmentMask(const std::string& s);
+std::string toString(const SegmentMask& m);
 
 }  // namespace voxray

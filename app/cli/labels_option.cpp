@@ -1,0 +1,62 @@
+#include "labels_option.h"
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+
+#include "voxray/io/error.h"
+#include "voxray/io/volume.h"
+
+namespace voxray::cli {
+
+namespace {
+
+// Distinct colours for labels 1, 2, ... (then repeating): a raw map names no colours.
+glm::vec3 paletteColour(int label) {
+  static const std::array<glm::vec3, 8> kPalette = {{{0.90f, 0.20f, 0.20f},
+                                                     {0.20f, 0.75f, 0.25f},
+                                                     {0.25f, 0.45f, 0.95f},
+                                                     {0.95f, 0.85f, 0.20f},
+                                                     {0.20f, 0.85f, 0.90f},
+                                                     {0.85f, 0.30f, 0.85f},
+                                                     {0.95f, 0.55f, 0.15f},
+                                                     {0.55f, 0.35f, 0.85f}}};
+  return kPalette[size_t(label - 1) % kPalette.size()];
+}
+
+}  // namespace
+
+void LabelsOption::add(CLI::App& cmd) {
+  cmd.add_option("--labels-raw", raw,
+                 "label map for dvr (uint8 per voxel, x fastest, on the volume's dims): each "
+                 "label a segment in its own colour; see --segment-mask, --segment-blend");
+}
+
+std::optional<Segmentation> LabelsOption::load(const Volume& v) const {
+  if (raw.empty()) return std::nullopt;
+  Segmentation s = emptySegmentation(v);
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(raw, ec);
+  if (ec) throw inputError("--labels-raw " + raw + ": cannot read it (" + ec.message() + ")");
+  if (bytes != s.labels.size())
+    throw inputError("--labels-raw " + raw + ": it has " + std::to_string(bytes) +
+                     " bytes; a uint8 label map of this volume (" + std::to_string(v.dims.x) +
+                     " x " + std::to_string(v.dims.y) + " x " + std::to_string(v.dims.z) +
+                     ") has " + std::to_string(s.labels.size()));
+  std::ifstream in(raw, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(s.labels.data()), std::streamsize(s.labels.size())))
+    throw inputError("--labels-raw " + raw + ": reading it stopped early");
+  std::array<bool, 256> present{};
+  for (uint8_t l : s.labels) present[l] = true;
+  for (int l = 1; l < 256; ++l) {
+    if (!present[size_t(l)]) continue;
+    Segment seg;
+    seg.label = uint8_t(l);
+    seg.name = "Segment " + std::to_string(l);
+    seg.colour = paletteColour(l);
+    s.segments.push_back(seg);
+  }
+  return s;
+}
+
+}  // namespace voxray::cli

@@ -1,0 +1,23 @@
+#pragma once
+// --labels-raw FILE (render, bench): a label map for label-aware dvr (issue 34,
+// Raycaster::setSegmentation), with --segment-mask and --segment-blend from the render flags.
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "voxray/io/segmentation.h"
+
+namespace voxray::cli {
+
+struct LabelsOption {
+  std::string raw;  // uint8 per voxel, x fastest, then y, then z, on the volume's dims
+
+  void add(CLI::App& cmd);
+  // The segmentation on V's grid, one segment per label the map holds (named "Segment L",
+  // coloured from a fixed palette); none without --labels-raw. Throws Error (Input) naming
+  // the file and the size it should have when it does not fit V.
+  std::optional<Segmentation> load(const Volume& v) const;
+};
+
+}  // namespace voxray::cli

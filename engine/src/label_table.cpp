@@ -1,0 +1,37 @@
+#include "label_table.h"
+
+#include <algorithm>
+
+#include "segment_table.h"  // kernels/: the layout
+
+namespace voxray {
+
+std::vector<glm::vec4> segmentTable(const std::vector<Segment>& segments, const RenderParams& p) {
+  constexpr int kLabels = VOXRAY_SEGMENT_LABELS;
+  std::vector<glm::vec4> t(VOXRAY_SEGMENT_TABLE_FLOAT4S, glm::vec4(0.0f));
+  const SegmentMask& m = p.segmentMask;
+  const auto listed = [&](int label) {
+    return std::binary_search(m.labels.begin(), m.labels.end(), label);
+  };
+  for (int l = 0; l < kLabels; ++l) {
+    float keep = 1.0f;
+    if (m.kind == SegmentMask::Kind::Show) keep = listed(l) ? 1.0f : 0.0f;
+    if (m.kind == SegmentMask::Kind::Hide) keep = listed(l) ? 0.0f : 1.0f;
+    t[2 * l + 1].x = keep;
+  }
+  for (const Segment& s : segments) {
+    if (s.label == 0 || !s.visible) continue;  // an invisible segment is plain volume
+    const int l = s.label;
+    t[2 * l] = glm::vec4(glm::clamp(s.colour, 0.0f, 1.0f), float(p.segmentBlend));
+    t[2 * l + 1].x *= std::clamp(s.opacity, 0.0f, 1.0f);
+  }
+  return t;
+}
+
+bool changesNothing(const std::vector<glm::vec4>& table) {
+  for (size_t l = 0; l < table.size() / 2; ++l)
+    if (table[2 * l].w != 0.0f || table[2 * l + 1].x != 1.0f) return false;
+  return true;
+}
+
+}  // namespace voxray
