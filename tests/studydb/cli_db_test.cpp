@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include <gmock/gmock.h>
@@ -114,6 +115,35 @@ TEST(StudyDbCli, ImportFindSeriesVerifyAndOpenASeriesByUid) {
   CliRun again = cli("db delete " + kPhilipsStudy + " --db " + db, true);
   EXPECT_EQ(again.status, 1);
   EXPECT_THAT(again.out, HasSubstr("is not in the study database"));
+}
+
+// db import --pacs-cache: every cached series, copied into the database's store (the cache
+// evicts its series; the database keeps its copies).
+TEST(StudyDbCli, PacsCacheSeriesAreCopiedIntoTheStore) {
+  const std::string cache = tempFolder("cache"), db = tempFolder("db");
+  const std::string series = cache + "/series/" + kTiltSeries;
+  fs::create_directories(series);
+  for (const auto& f : fs::directory_iterator(dicomPath("ct-ge-tilt")))
+    if (f.path().extension() == ".dcm")
+      fs::copy_file(f.path(), series + "/" + f.path().filename().string());
+  json index = {{"series",
+                 {{{"studyUid", "1.2.826.0.1.3680043.9.4245.1760717064491086528325869788156915668"},
+                   {"seriesUid", kTiltSeries},
+                   {"folder", series},
+                   {"bytes", 0},
+                   {"lastUsed", 0},
+                   {"images", 28}}}}};
+  std::ofstream(cache + "/index.json") << index.dump();
+  json imported =
+      parsed(cli("db import --pacs-cache --cache " + cache + " --db " + db + " --json"));
+  EXPECT_EQ(imported.at("added"), 28);
+  fs::remove_all(cache);
+  json verified = parsed(cli("db verify --db " + db + " --json"));
+  EXPECT_EQ(verified.at("ok"), 28);
+  int stored = 0;
+  for (const auto& f : fs::recursive_directory_iterator(db + "/store"))
+    stored += f.is_regular_file() ? 1 : 0;
+  EXPECT_EQ(stored, 28);
 }
 
 TEST(StudyDbCli, TheDefaultDatabaseIsInTheUsersDataFolder) {

