@@ -2,6 +2,7 @@
 // scriptable. Patient names and IDs appear in find's and priors' output (the user asked for
 // the patient) and nowhere else: not in messages, not on stderr.
 #include <iostream>
+#include <memory>
 
 #include "commands.h"
 #include "json_text.h"
@@ -23,6 +24,15 @@ struct DbOptions {
   bool json = false, copy = false, pacsCache = false, rebuild = false;
 };
 
+// The database, saying on stderr when its file was damaged and has been made again.
+std::unique_ptr<StudyDb> openDb(const std::string& folder) {
+  auto db = std::make_unique<StudyDb>(folder);
+  if (db->rebuiltOnOpen())
+    std::cerr << "the study database file in " << terminalText(db->folder())
+              << " was damaged: rebuilt from its journal (imports.jsonl)\n";
+  return db;
+}
+
 nlohmann::json studyJson(const StudyRow& r) {
   return {{"patient_name", r.patient.name},
           {"patient_id", r.patient.patientId},
@@ -39,13 +49,14 @@ nlohmann::json studyJson(const StudyRow& r) {
           {"images", r.instanceCount}};
 }
 
-void printStudies(const std::vector<StudyRow>& rows, bool json) {
+void printStudies(const std::vector<StudyRow>& rows, bool json, const char* none) {
   if (json) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& r : rows) list.push_back(studyJson(r));
     std::cout << jsonText(list) << "\n";
     return;
   }
+  if (rows.empty()) std::cerr << none << "\n";
   for (const auto& r : rows)
     std::cout << terminalText(r.study.date.empty() ? "--------" : r.study.date) << "  "
               << terminalText(r.modalities) << "  " << r.seriesCount << " series  "
@@ -57,7 +68,8 @@ void printStudies(const std::vector<StudyRow>& rows, bool json) {
 int runImport(const DbOptions& o) {
   if (o.paths.empty() && !o.pacsCache)
     throw inputError("db import needs folders or files to import (or --pacs-cache)");
-  StudyDb db(o.db);
+  auto opened = openDb(o.db);
+  StudyDb& db = *opened;
   ImportOptions options;
   std::vector<std::string> paths = o.paths;
   if (o.pacsCache) {
@@ -112,7 +124,8 @@ int runImport(const DbOptions& o) {
 }
 
 int runSeries(const DbOptions& o) {
-  StudyDb db(o.db);
+  auto opened = openDb(o.db);
+  StudyDb& db = *opened;
   if (db.study(o.study).empty())
     throw inputError("Study " + o.study + " is not in the study database " + db.folder() +
                      ": find its UID with voxray-cli db find");
@@ -147,7 +160,8 @@ int runSeries(const DbOptions& o) {
 int runDelete(const DbOptions& o) {
   if (o.study.empty() == o.series.empty())
     throw inputError("db delete needs a STUDY_UID or --series SERIES_UID (one of them)");
-  StudyDb db(o.db);
+  auto opened = openDb(o.db);
+  StudyDb& db = *opened;
   int n = o.study.empty() ? db.deleteSeries(o.series) : db.deleteStudy(o.study);
   const std::string& uid = o.study.empty() ? o.series : o.study;
   if (n == 0)
@@ -234,11 +248,11 @@ Run addDbCommand(CLI::App& app) {
         q.dateFrom = o->dates.substr(0, dash);
         q.dateTo = dash == std::string::npos ? q.dateFrom : o->dates.substr(dash + 1);
       }
-      printStudies(StudyDb(o->db).find(q), o->json);
+      printStudies(openDb(o->db)->find(q), o->json, "no study matched");
       return 0;
     }
     if (priors->parsed()) {
-      printStudies(StudyDb(o->db).priors(o->study), o->json);
+      printStudies(openDb(o->db)->priors(o->study), o->json, "no earlier study of this patient");
       return 0;
     }
     return runVerify(*o);

@@ -108,6 +108,17 @@ TEST(StudyDbCli, ImportFindSeriesVerifyAndOpenASeriesByUid) {
   EXPECT_EQ(verified.at("studies"), 3);
   EXPECT_TRUE(verified.at("rebuilt").get<bool>());
 
+  // A damaged database file: made again from the journal, and the user is told.
+  {
+    std::fstream f(db + "/studies.sqlite", std::ios::in | std::ios::out | std::ios::binary);
+    f.write("garbage, not SQLite", 19);
+  }
+  CliRun damaged = cli("db find --db " + db + " --modality CT", true);
+  EXPECT_EQ(damaged.status, 0) << damaged.out;
+  EXPECT_THAT(damaged.out, HasSubstr("was damaged: rebuilt from its journal"));
+  EXPECT_THAT(damaged.out, HasSubstr(kPhilipsStudy));
+  EXPECT_EQ(parsed(cli("db find --db " + db + " --json")).size(), 3u);
+
   json deleted = parsed(cli("db delete " + kPhilipsStudy + " --db " + db + " --json"));
   EXPECT_EQ(deleted.at("instances"), 35);
   EXPECT_EQ(parsed(cli("db find --db " + db + " --json")).size(), 2u);

@@ -136,10 +136,14 @@ TEST_F(StudyDbTest, ABrokenFileIsSkippedWithItsReason) {
   std::ofstream(data + "/cut.dcm", std::ios::binary) << head;
   std::ofstream(data + "/notes.txt") << "not an image\n";
   fs::copy_file(dicomPath("ct-ge-tilt/02.dcm"), data + "/02.dcm");
+  // A file without the 128-byte preamble and DICM (as old archives hold): still DICOM.
+  std::ifstream whole(dicomPath("ct-ge-tilt/04.dcm"), std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
+  std::ofstream(data + "/headerless", std::ios::binary) << bytes.substr(132);
   StudyDb db(tempFolder("db"));
   ImportReport r = db.import({data});
-  EXPECT_EQ(r.filesScanned, 3);
-  EXPECT_EQ(r.added, 1);
+  EXPECT_EQ(r.filesScanned, 4);
+  EXPECT_EQ(r.added, 2);
   ASSERT_EQ(r.skipped.size(), 2u);
   EXPECT_EQ(fs::path(r.skipped[0].path).filename(), "cut.dcm");
   EXPECT_THAT(r.skipped[0].reason, HasSubstr("damaged DICOM"));

@@ -42,9 +42,29 @@ bool hasDicomPreamble(const std::string& path) {
   return in.read(buf, sizeof buf) && std::memcmp(buf + 128, "DICM", 4) == 0;
 }
 
+// Whether PATH can be DICOM at all, from its first bytes: the DICM preamble, or (a file
+// without one, as old archives hold) a first element in group 0000, 0002, 0004 or 0008,
+// either byte order. A folder of 10,000 other files (photos, reports, a video) is then
+// skipped without DCMTK trying to parse each as a headerless dataset.
+bool mayBeDicom(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char buf[132] = {};
+  in.read(reinterpret_cast<char*>(buf), sizeof buf);
+  const auto n = in.gcount();
+  if (n == sizeof buf && std::memcmp(buf + 128, "DICM", 4) == 0) return true;
+  if (n < 8) return false;
+  for (unsigned group : {unsigned(buf[0] | buf[1] << 8), unsigned(buf[0] << 8 | buf[1])})
+    if (group == 0x0000 || group == 0x0002 || group == 0x0004 || group == 0x0008) return true;
+  return false;
+}
+
 }  // namespace
 
 HeaderResult readInstanceHeader(const std::string& path, InstanceRecord& out, std::string& why) {
+  if (!mayBeDicom(path)) {
+    why = "not a DICOM file";
+    return HeaderResult::NotDicom;
+  }
   DcmFileFormat file;
   std::string failure = dicom::loadDicomFile(file, path, kMaxReadLength, DCM_PixelData);
   DcmDataset* ds = file.getDataset();
