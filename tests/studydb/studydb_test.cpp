@@ -336,6 +336,19 @@ TEST_F(StudyDbTest, SameSopInstanceUidInTwoFilesKeepsBothAndWarns) {
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_THAT(r.warnings[0], HasSubstr("with different content"));
   EXPECT_EQ(db.instances(kTiltSeries).size(), 2u);
+  // Copied into the store, both are kept too, side by side; the same file again is not a
+  // third copy.
+  StudyDb copies(tempFolder("copies"));
+  ImportOptions copy;
+  copy.copy = true;
+  ImportReport c = copies.import({data}, copy);
+  EXPECT_EQ(c.added, 2);
+  EXPECT_EQ(c.warnings.size(), 1u);
+  EXPECT_EQ(copies.import({data + "/a"}, copy).updated, 1);
+  auto stored = copies.instances(kTiltSeries);
+  ASSERT_EQ(stored.size(), 2u);
+  EXPECT_NE(stored[0].instance.size, stored[1].instance.size);
+  for (const auto& i : stored) EXPECT_TRUE(fs::exists(i.instance.path));
 }
 
 }  // namespace

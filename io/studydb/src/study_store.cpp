@@ -2,9 +2,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 
 #include "voxray/io/error.h"
 
@@ -18,10 +21,26 @@ std::string uidFileName(const std::string& uid) {
   return plain ? uid : std::string("h").append(std::to_string(std::hash<std::string>{}(uid)));
 }
 
+namespace {
+
+bool sameContent(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::file_size(a, ec) != fs::file_size(b, ec) || ec) return false;
+  std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
+  return std::equal(std::istreambuf_iterator<char>(x), std::istreambuf_iterator<char>(),
+                    std::istreambuf_iterator<char>(y));
+}
+
+}  // namespace
+
 std::string StudyStore::copyIn(const std::string& source, const std::string& studyUid,
                                const std::string& seriesUid, const std::string& sopUid) const {
   fs::path dir = fs::path(root_) / uidFileName(studyUid) / uidFileName(seriesUid);
   fs::path target = dir / (uidFileName(sopUid) + ".dcm");
+  // Another file with this SOP Instance UID and other content is kept beside it (the issue's
+  // duplicates: keep both, warn); the same content again replaces its own copy.
+  for (int n = 2; fs::exists(target) && !sameContent(source, target); ++n)
+    target = dir / (uidFileName(sopUid) + "-" + std::to_string(n) + ".dcm");
   std::error_code ec;
   fs::create_directories(dir, ec);
   // Written aside and renamed: a full disk leaves no half file under the instance's name.
