@@ -351,5 +351,22 @@ TEST_F(StudyDbTest, SameSopInstanceUidInTwoFilesKeepsBothAndWarns) {
   for (const auto& i : stored) EXPECT_TRUE(fs::exists(i.instance.path));
 }
 
+// A database the user put inside the folder they import: its own files (the SQLite file,
+// the journal, the store's copies, the series views) are never taken for the user's.
+TEST_F(StudyDbTest, TheDatabasesOwnFilesAreNeverImported) {
+  std::string data = tempFolder("data");
+  fs::copy_file(dicomPath("ct-ge-tilt/06.dcm"), data + "/06.dcm");
+  fs::copy_file(dicomPath("ct-ge-tilt/07.dcm"), data + "/07.dcm");
+  StudyDb db(data + "/studies");
+  ImportOptions copy;
+  copy.copy = true;
+  EXPECT_EQ(db.import({data}, copy).added, 2);
+  db.seriesInput(kTiltSeries);  // makes views/ with links
+  ImportReport again = db.import({data});
+  EXPECT_EQ(again.filesScanned, 2);
+  EXPECT_TRUE(again.skipped.empty());
+  EXPECT_EQ(db.instanceCount(), 4);  // the 2 copies and the 2 files where they are
+}
+
 }  // namespace
 }  // namespace voxray::test
