@@ -268,7 +268,11 @@ void StudyDb::applyRecords(std::vector<InstanceRecord>& records, ImportReport& r
                       "INSERT OR IGNORE INTO series(uid, study, number, description, modality, "
                       "body_part) VALUES(?1, ?2, ?3, ?4, ?5, ?6)");
   Statement seriesId(*db_, "SELECT id FROM series WHERE uid = ?1");
-  Statement existing(*db_, "SELECT sop_uid FROM instances WHERE path = ?1");
+  // The study a file belonged to: a file replaced by another series' file leaves its old
+  // study's counts to recount.
+  Statement existing(*db_,
+                     "SELECT s.uid FROM instances i JOIN series x ON x.id = i.series JOIN "
+                     "studies s ON s.id = x.study WHERE i.path = ?1");
   Statement duplicate(*db_, "SELECT size FROM instances WHERE sop_uid = ?1 AND path <> ?2 LIMIT 1");
   Statement instanceUpsert(
       *db_,
@@ -316,6 +320,7 @@ void StudyDb::applyRecords(std::vector<InstanceRecord>& records, ImportReport& r
     const InstanceFields& i = r.instance;
     existing.bind(1, i.path);
     bool present = existing.step();
+    if (present) touchedStudies.insert(existing.text(0));
     existing.reset();
     (present ? report.updated : report.added)++;
     duplicate.bind(1, i.sopInstanceUid).bind(2, i.path);
