@@ -3,6 +3,7 @@
 // Patient names and IDs are printed only with --show-patient.
 #include <chrono>
 #include <iostream>
+#include <optional>
 
 #include "commands.h"
 #include "info_json.h"
@@ -15,6 +16,7 @@
 #include "voxray/io/load.h"
 #include "voxray/io/pacs.h"
 #include "voxray/io/pacs_cache.h"
+#include "voxray/studydb/study_db.h"
 
 namespace voxray::cli {
 namespace {
@@ -24,7 +26,7 @@ struct PacsOptions {
   bool json = false;
   bool showPatient = false;
   PacsQuery query;
-  std::string level = "study", dates, study, series, cacheDir;
+  std::string level = "study", dates, study, series, cacheDir, db;
   std::vector<std::string> files;
 };
 
@@ -112,6 +114,16 @@ int runGet(const PacsOptions& o) {
   auto start = std::chrono::steady_clock::now();
   CachedSeries entry = cache.retrieve(*client, o.study, o.series, options);
   auto retrieved = std::chrono::steady_clock::now();
+  std::optional<ImportReport> stored;
+  std::string dbFolder;
+  if (!o.db.empty()) {
+    // Copied: the cache evicts, the database keeps what it was given.
+    StudyDb db(o.db);
+    ImportOptions copy;
+    copy.copy = true;
+    stored = db.import({entry.folder}, copy);
+    dbFolder = db.folder();
+  }
   LoadOptions load;
   load.series = o.series;
   Volume v = loadVolume(entry.folder, load);
@@ -125,6 +137,10 @@ int runGet(const PacsOptions& o) {
   j["retrieve_s"] = retrieveS;
   j["ready_s"] = readyS;
   j["mb_per_s"] = double(entry.bytes) / 1e6 / readyS;
+  if (stored) {
+    j["study_db"] = dbFolder;
+    j["study_db_instances"] = stored->added + stored->updated;
+  }
   if (o.json) {
     std::cout << jsonText(j) << "\n";
     return 0;
@@ -134,6 +150,9 @@ int runGet(const PacsOptions& o) {
             << "dims        " << v.dims.x << " x " << v.dims.y << " x " << v.dims.z << "\n"
             << "ready in    " << readyS << " s (retrieval " << retrieveS << " s, "
             << j["mb_per_s"].get<double>() << " MB/s)\n";
+  if (stored)
+    std::cout << "stored      " << stored->added + stored->updated << " images in the study "
+              << "database " << terminalText(dbFolder) << "\n";
   return 0;
 }
 
@@ -168,6 +187,9 @@ Run addPacsCommand(CLI::App& app) {
   get->add_option("--series", o->series, "Series Instance UID")->required();
   get->add_option("--cache", o->cacheDir,
                   "cache folder (default " + defaultPacsCacheFolder() + ")");
+  get->add_option("--db", o->db,
+                  "also store the series in this study database (copied; voxray-cli db find "
+                  "finds it next time)");
   send->add_option("FILES", o->files, "DICOM files to send")->required();
   return [o, echo, find, get] {
     if (echo->parsed()) {

@@ -21,5 +21,6 @@ Run addPacsCommand(CLI::App& app);
 Run addMovieCommand(CLI::App& app);
 Run addTfCommand(CLI::App& app);
 Run addMakePhantomCommand(CLI::App& app);
+Run addDbCommand(CLI::App& app);
 
 }  // namespace voxray::cli

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include <gmock/gmock.h>
@@ -59,6 +60,29 @@ TEST_F(PacsCliTest, EchoFindAndGetThroughTheCommandLine) {
   Volume disk = loadVolume(dicomPath("ct-philips-phantom/S2010"));
   EXPECT_EQ(info.at("dims"), nlohmann::json({disk.dims.x, disk.dims.y, disk.dims.z}));
   EXPECT_EQ(info.at("cache_folder").get<std::string>().rfind(cache, 0), 0u);
+}
+
+// pacs get --db: the retrieval is copied into the study database (issue 37), found there
+// next time and opened from it as the same volume.
+TEST_F(PacsCliTest, GetWithDbStoresTheSeriesInTheStudyDatabase) {
+  std::string node = address(server().dimseNode());
+  std::string cache = tempFolder("db-cache"), db = tempFolder("db");
+  CliRun get = cli("pacs get " + node + " --study " + kPhantomStudy + " --series " +
+                   kPhantomSeries + " --cache " + cache + " --db " + db + " --json");
+  ASSERT_EQ(get.status, 0) << get.out;
+  auto info = nlohmann::json::parse(get.out);
+  EXPECT_EQ(info.at("study_db_instances"), 28);
+  CliRun series = cli("db series " + std::string(kPhantomStudy) + " --db " + db + " --json");
+  ASSERT_EQ(series.status, 0) << series.out;
+  auto list = nlohmann::json::parse(series.out);
+  ASSERT_EQ(list.size(), 1u);
+  EXPECT_EQ(list[0].at("series_uid"), kPhantomSeries);
+  EXPECT_EQ(list[0].at("images"), 28);
+  // Copies the database owns: the cache may evict its own.
+  std::filesystem::remove_all(cache);
+  CliRun opened = cli("info db:" + std::string(kPhantomSeries) + " --db " + db + " --json");
+  ASSERT_EQ(opened.status, 0) << opened.out;
+  EXPECT_EQ(nlohmann::json::parse(opened.out).at("dims"), info.at("dims"));
 }
 
 TEST_F(PacsCliTest, WrongAeExitsWithOneAndAMessage) {
