@@ -20,5 +20,6 @@ Run addSliceCommand(CLI::App& app);
 Run addPacsCommand(CLI::App& app);
 Run addMovieCommand(CLI::App& app);
 Run addTfCommand(CLI::App& app);
+Run addSegmentCommand(CLI::App& app);
 
 }  // namespace voxray::cli

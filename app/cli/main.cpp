@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
       voxray::cli::addBenchCommand(app),   voxray::cli::addAccuracyCommand(app),
       voxray::cli::addMeasureCommand(app), voxray::cli::addSliceCommand(app),
       voxray::cli::addPacsCommand(app),    voxray::cli::addMovieCommand(app),
-      voxray::cli::addTfCommand(app)};
+      voxray::cli::addTfCommand(app),      voxray::cli::addSegmentCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
