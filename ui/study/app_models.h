@@ -9,6 +9,7 @@
 
 #include "no_qt.h"
 #include "render_state_model.h"
+#include "segmentation_model.h"
 #include "session.h"
 #include "volume_document.h"
 #include "window_level.h"
@@ -21,6 +22,7 @@ struct AppModels {
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
   MeasurementModel measurements;  // a session keeps them (session_state.cpp)
+  SegmentationModel segmentation;  // the segment editor's; a session keeps it too
   LightingFigures lighting;       // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;
