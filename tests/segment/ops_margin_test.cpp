@@ -60,22 +60,26 @@ TEST(SegmentMargin, TwoMillimetresOnHalfByHalfByThreeMmVoxelsIsExactAtEveryVoxel
   EXPECT_EQ(count(grown), 49u);
 }
 
+// Small margins take a window of a few voxels along an axis, larger ones the parabola
+// envelope (segment_margin.cpp): these margins and spacings go through both, along y and z.
 TEST(SegmentMargin, GrowAndShrinkOfRandomBlobsEqualTheBruteForceDistances) {
-  const VoxelGrid g = grid({20, 18, 7}, {0.5, 0.5, 3.0});
-  std::mt19937 random(34);
-  Mask m(g.voxelCount(), 0);
-  for (int n = 0; n < 40; ++n) {
-    const glm::ivec3 p(random() % 20, random() % 18, random() % 7);
-    for (int dy = -2; dy <= 2; ++dy)
-      for (int dx = -3; dx <= 3; ++dx) {
-        const glm::ivec3 q = glm::clamp(p + glm::ivec3(dx, dy, 0), glm::ivec3(0), g.dims - 1);
-        m[g.index(q.x, q.y, q.z)] = 1;
-      }
-  }
-  for (double mm : {2.0, 3.0, 1.2, -1.0, -2.0, -3.5}) {
-    Mask out = m;
-    applyMargin(g, out, mm);
-    EXPECT_EQ(out, bruteForce(g, m, mm)) << mm << " mm";
+  for (const glm::dvec3 spacing : {glm::dvec3(0.5, 0.5, 3.0), glm::dvec3(0.7, 0.6, 0.4)}) {
+    const VoxelGrid g = grid({20, 18, 9}, spacing);
+    std::mt19937 random(34);
+    Mask m(g.voxelCount(), 0);
+    for (int n = 0; n < 40; ++n) {
+      const glm::ivec3 p(random() % 20, random() % 18, random() % 9);
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -3; dx <= 3; ++dx) {
+          const glm::ivec3 q = glm::clamp(p + glm::ivec3(dx, dy, 0), glm::ivec3(0), g.dims - 1);
+          m[g.index(q.x, q.y, q.z)] = 1;
+        }
+    }
+    for (double mm : {2.0, 3.0, 1.2, -1.0, -2.0, -3.5}) {
+      Mask out = m;
+      applyMargin(g, out, mm);
+      EXPECT_EQ(out, bruteForce(g, m, mm)) << mm << " mm on " << spacing.z << " mm slices";
+    }
   }
 }
 
