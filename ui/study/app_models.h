@@ -21,9 +21,9 @@ struct AppModels {
   RenderStateModel render;
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
-  MeasurementModel measurements;  // a session keeps them (session_state.cpp)
+  MeasurementModel measurements;   // a session keeps them (session_state.cpp)
   SegmentationModel segmentation;  // the segment editor's; a session keeps it too
-  LightingFigures lighting;       // each lighting model's cost and error on this scene
+  LightingFigures lighting;        // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;
   // While a volume whose values are not HU is open (value_look.h): the user's HU look
