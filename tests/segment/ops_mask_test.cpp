@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "ops_fixtures.h"
+#include "segment_itk.h"
 #include "voxray/io/segment_ops.h"
 
 namespace voxray {
@@ -193,6 +194,12 @@ TEST(SegmentHoles, AHollowSphereIsFilledToTheSolidBallAndAnOpenCavityIsNot) {
   Mask filled = shell;
   fillHoles(g, filled);
   EXPECT_EQ(filled, ball);
+#ifdef VOXRAY_SEGMENT_WITH_ITK
+  // ITK's BinaryFillholeImageFilter agrees (the bench compares their times).
+  itk_ops::Block block{g.dims, g.spacingMm, shell};
+  itk_ops::fillHoles(block);
+  EXPECT_EQ(block.voxels, ball);
+#endif
   EXPECT_GT(count(ball) - count(shell), 5000u);  // the cavity: 4/3 pi 11^3 = 5575 mm³
 
   // A tunnel along +x from the cavity to the outside: the cavity is no hole any more.

@@ -12,7 +12,7 @@ target_sources(voxray_segment PRIVATE
   src/segment_output.cpp)
 # ITKConfig loads every installed module, and its HDF5 one runs a C test compile.
 enable_language(C)
-find_package(ITK QUIET COMPONENTS ITKCommon ITKConnectedComponents ITKLabelVoting
+find_package(ITK QUIET COMPONENTS ITKCommon ITKConnectedComponents ITKLabelVoting ITKLabelMap
   ITKMathematicalMorphology ITKBinaryMathematicalMorphology)
 if(ITK_FOUND AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
   add_library(voxray_segment_itk OBJECT src/segment_itk.cpp)
@@ -21,6 +21,7 @@ if(ITK_FOUND AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
   set_target_properties(voxray_segment_itk PROPERTIES POSITION_INDEPENDENT_CODE ON)
   target_sources(voxray_segment PRIVATE $<TARGET_OBJECTS:voxray_segment_itk>)
   target_link_libraries(voxray_segment PRIVATE ${ITK_LIBRARIES})
+  set_property(TARGET voxray_segment PROPERTY VOXRAY_WITH_ITK ON)
 else()
   target_sources(voxray_segment PRIVATE src/segment_itk_unavailable.cpp)
 endif()

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include <itkBinaryBallStructuringElement.h>
+#include <itkBinaryFillholeImageFilter.h>
 #include <itkBinaryMedianImageFilter.h>
 #include <itkBinaryMorphologicalClosingImageFilter.h>
 #include <itkBinaryMorphologicalOpeningImageFilter.h>
@@ -94,6 +95,15 @@ void opening(Block& b, glm::ivec3 radius) {
   filter->SetKernel(ball(radius));
   filter->SetForegroundValue(1);
   filter->SetBackgroundValue(0);
+  filter->Update();
+  fromImage(filter->GetOutput(), b);
+}
+
+void fillHoles(Block& b) {
+  auto filter = itk::BinaryFillholeImageFilter<MaskImage>::New();
+  filter->SetInput(toImage(b));
+  filter->SetForegroundValue(1);
+  filter->SetFullyConnected(false);
   filter->Update();
   fromImage(filter->GetOutput(), b);
 }

@@ -27,5 +27,8 @@ Islands islands(const Block& b, bool fullyConnected);
 void median(Block& b, glm::ivec3 radius);
 void closing(Block& b, glm::ivec3 radius);
 void opening(Block& b, glm::ivec3 radius);
+// ITK's BinaryFillholeImageFilter: kept to compare with fillHoles (segment_ops.cpp) in the
+// tests and the bench.
+void fillHoles(Block& b);
 
 }  // namespace voxray::itk_ops

@@ -18,5 +18,6 @@ Islands islands(const Block&, bool) { unavailable("Keeping or removing islands")
 void median(Block&, glm::ivec3) { unavailable("Median smoothing"); }
 void closing(Block&, glm::ivec3) { unavailable("Closing"); }
 void opening(Block&, glm::ivec3) { unavailable("Opening"); }
+void fillHoles(Block&) { unavailable("ITK's fill holes"); }
 
 }  // namespace voxray::itk_ops

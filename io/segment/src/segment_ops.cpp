@@ -102,8 +102,10 @@ void removeSmallIslands(const VoxelGrid& g, Mask& m, double minMm3, Connectivity
 
 // A flood fill of the background from the block's faces (the block is the mask's box plus one
 // voxel of background where the grid allows): what it does not reach is a hole. This is the
-// seeded region's scanline fill again, linear in the box; ITK's BinaryFillholeImageFilter
-// reconstructs by dilation, a slower route to the same voxels.
+// seeded region's scanline fill again, linear in the box. ITK's BinaryFillholeImageFilter gives
+// the same voxels (ops_mask_test) but took 1.46 s on the bench's skull against 0.39 s for
+// this (segment_bench, median of 3, load 3.3 on 2 cores; ITK on the whole 512x512x400 volume,
+// this on the skull's box, 70 % of it).
 void fillHoles(const VoxelGrid& g, Mask& m) {
   onBlock(g, m, glm::ivec3(1), [&](itk_ops::Block& b) {
     std::vector<uint8_t> outside(b.voxels.size(), 0);
