@@ -2,6 +2,7 @@
 
 #include "measurement_json.h"
 #include "study_state.h"
+#include "voxray/io/error.h"
 
 namespace voxray {
 
@@ -24,16 +25,19 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   s.overlays = m.render.overlays();
   s.transferFunction = m.render.shapedTransferFunction();
   s.measurements = measurementsToJson(m.measurements).at("items").dump();
+  if (m.segmentation.active() && !m.segmentation.segmentation().segments.empty())
+    s.segmentation = m.segmentation.segmentation();
   return s;
 }
 
-void openSession(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
-                 const Session& s) {
+std::vector<std::string> openSession(AppModels& m, std::shared_ptr<const Volume> v,
+                                     std::string name, const Session& s) {
   openStudy(m, std::move(v), std::move(name));
-  applySession(m, s);
+  return applySession(m, s);
 }
 
-void applySession(AppModels& m, const Session& s) {
+std::vector<std::string> applySession(AppModels& m, const Session& s) {
+  std::vector<std::string> problems;
   m.source = s.input;
   // The session keeps the list only: whether exports show measurements stays the user's
   // choice each time (off), as burned-in measurements must be.
@@ -61,6 +65,16 @@ void applySession(AppModels& m, const Session& s) {
     m.crosshair.setSlab(Orientation(o), s.views[o].slab);
   }
   m.crosshair.setPlanes(s.centre.value_or(glm::dvec3(s.crosshair)), rotations);
+  if (s.segmentation) {
+    const auto& volume = m.document.volume();
+    try {
+      if (!volume) throw inputError("no volume is open to put it on.");
+      m.segmentation.load(*s.segmentation, *volume);
+    } catch (const Error& e) {
+      problems.push_back(std::string("The session's segmentation was left out: ") + e.what());
+    }
+  }
+  return problems;
 }
 
 bool isSessionPath(const std::string& path) {
