@@ -14,8 +14,10 @@
 #include "session_state.h"
 #include "slice_view.h"
 #include "start_options.h"
+#include "study_browser_model.h"
 #include "volume_view.h"
 #include "voxray/io/error.h"
+#include "voxray/io/sample_volume.h"
 
 using namespace voxray;
 using namespace voxray::ui;
@@ -143,6 +145,14 @@ int main(int argc, char** argv) {
     window->sessions().openFile(options.input);  // a session file: its own state
   else
     window->open(options.input, options.load, options.renderValues);
+#ifdef VOXRAY_HAS_STUDYDB
+  // Started without a file and with studies in the database: a reader's day starts from the
+  // worklist, so the study browser opens over the window (the sample CT loads behind it,
+  // for a start without a study). Never for the smoke tests' screenshots.
+  if (options.input == kSampleCtInput && options.screenshot.empty() &&
+      !options.quitAfterFirstFrame && StudyBrowserModel::hasStudies())
+    window->showStudyBrowser();
+#endif
   int rc = app.exec();
   clock.reset();
   window.reset();  // widgets go before the models they are bound to

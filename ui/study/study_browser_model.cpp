@@ -1,6 +1,9 @@
 #include "study_browser_model.h"
 
 #ifdef VOXRAY_HAS_STUDYDB
+#include <unistd.h>
+
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <system_error>
@@ -149,30 +152,40 @@ void StudyBrowserModel::makeThumbnails(const std::string& studyUid) {
   thumbTask_.wait();
   const std::string folder = db_->folder();
   std::vector<SeriesEntry> list = series(studyUid);
-  thumbTask_.start([this, folder, list] {
+  // A folder of links of its own: StudyDb::seriesInput's folder of a series is made afresh
+  // each time, so a thumbnail made from it would pull it away from an open of that series.
+  const fs::path links = fs::path(folder) / ("thumbnail-links-" + std::to_string(::getpid()) + "-" +
+                                             std::to_string(uintptr_t(this)));
+  thumbTask_.start([this, folder, list, links] {
     std::unique_ptr<StudyDb> db;
     for (const SeriesEntry& s : list) {
-      if (thumbTask_.cancelled()) return;
+      if (thumbTask_.cancelled()) break;
       Image thumb;
       if (s.missingFiles == 0 && s.row.frameCount <= kMaxThumbnailImages) {
         try {
           if (!db) db = std::make_unique<StudyDb>(folder);
-          SeriesInput in = db->seriesInput(s.row.series.uid);
+          fs::remove_all(links);
+          fs::create_directories(links);
+          int n = 0;
+          for (const auto& i : db->instances(s.row.series.uid))
+            fs::create_symlink(i.instance.path, links / (std::to_string(n++) + ".dcm"));
           LoadOptions o;
-          o.series = in.series;
+          o.series = s.row.series.uid;
           o.cancel = thumbTask_.cancelFlag();
-          Volume v = loadVolume(in.folder, o);
+          Volume v = loadVolume(links.string(), o);
           thumb = middleSliceThumbnail(v, defaultThumbnailWindow(v, s.row.series.modality, true));
         } catch (const std::exception&) {
           thumb = {};  // not a volume, a codec io lacks, cancelled: the row has no picture
         }
       }
-      if (thumbTask_.cancelled()) return;
+      if (thumbTask_.cancelled()) break;
       const std::string uid = s.row.series.uid;
       thumbTask_.post([this, uid, thumb] {
         if (events_.thumbnail) events_.thumbnail(uid, thumb);
       });
     }
+    std::error_code ec;
+    fs::remove_all(links, ec);
   });
 }
 
