@@ -221,7 +221,8 @@ void StudyBrowserDialog::showResults() {
     auto* patient = new QTreeWidgetItem;
     patient->setText(Name, nameText(p.patient.name));
     patient->setText(IdOrDate, q(p.patient.patientId));
-    patient->setText(Series, QString("%1 studies").arg(p.studies.size()));
+    patient->setText(Series, p.studies.size() == 1 ? QString("1 study")
+                                                   : QString("%1 studies").arg(p.studies.size()));
     patient->setData(0, kKindRole, PatientItem);
     patient->setData(0, kUidRole, q(p.patient.patientId));
     for (size_t i : p.studies) {
