@@ -17,7 +17,6 @@
 #include "study_browser_model.h"
 #include "volume_view.h"
 #include "voxray/io/error.h"
-#include "voxray/io/sample_volume.h"
 
 using namespace voxray;
 using namespace voxray::ui;
@@ -146,11 +145,8 @@ int main(int argc, char** argv) {
   else
     window->open(options.input, options.load, options.renderValues);
 #ifdef VOXRAY_HAS_STUDYDB
-  // Started without a file and with studies in the database: a reader's day starts from the
-  // worklist, so the study browser opens over the window (the sample CT loads behind it,
-  // for a start without a study). Never for the smoke tests' screenshots.
-  if (options.input == kSampleCtInput && options.screenshot.empty() &&
-      !options.quitAfterFirstFrame && StudyBrowserModel::hasStudies())
+  // Without a file and with studies in the database: the list of studies first.
+  if (opensStudyBrowserAtStart(options, StudyBrowserModel::hasStudies()))
     window->showStudyBrowser();
 #endif
   int rc = app.exec();
