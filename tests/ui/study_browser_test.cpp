@@ -147,6 +147,19 @@ class StudyBrowserTest : public QObject {
     QVERIFY(errors_.isEmpty());
   }
 
+  void importFolderAddsItsStudyInTheBackground() {
+    StudyBrowserDialog* b = start(tempFolder("db"));
+    QCOMPARE(b->tree()->topLevelItemCount(), 0);
+    QSignalSpy finished(b, &StudyBrowserDialog::importFinished);
+    b->importFolder(QString::fromStdString(data("ct-philips-phantom")), false);
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished[0][0].toInt(), 35);  // 28 + 6 + 1 images; the DICOMDIRs are no images
+    QCOMPARE(b->tree()->topLevelItemCount(), 1);
+    QVERIFY2(b->status()->text().startsWith("Imported 35 images (0 already there)"),
+             qPrintable(b->status()->text()));
+    QVERIFY(errors_.isEmpty());
+  }
+
   void movedFilesShowAsMissingAndDoNotOpen() {
     const std::string scans = tempFolder("scans");
     fs::remove_all(scans + ".moved");  // a failed run's
