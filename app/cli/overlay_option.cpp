@@ -45,7 +45,12 @@ void OverlayOption::add(CLI::App& cmd) {
 
 std::optional<std::pair<Volume, TransferFunction>> OverlayOption::load() const {
   if (path.empty()) return std::nullopt;
-  Volume o = loadVolume(path);
+  Volume o;
+  try {
+    o = loadVolume(path);
+  } catch (const Error& e) {
+    throw Error(e.kind(), "--overlay " + path + ": " + e.what());
+  }
   if (!tf.empty()) {
     TransferFunction table;
     if (std::filesystem::is_regular_file(tf)) {

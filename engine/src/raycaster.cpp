@@ -51,7 +51,7 @@ struct Raycaster::Impl {
   // Fused dvr (setOverlay): the overlay's voxels, table and geometry (overlay.cl's ovol,
   // olut, ogeo) and the base cells where it may show.
   bool overlay = false;
-  cl::Buffer overlayVolume, overlayLut, overlayGeometry;
+  cl::Buffer overlayVolume, overlayLut, overlayCellBuffer, overlayGeometry;
   std::vector<uint8_t> overlayCellsShown;
 
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s)
@@ -233,7 +233,10 @@ std::vector<std::string> Raycaster::setOverlay(const Volume& o, const TransferFu
     geo[size_t(r)] = {{float(map[0][r]), float(map[1][r]), float(map[2][r]), float(map[3][r])}};
   geo[3] = {{float(o.dims.x), float(o.dims.y), float(o.dims.z), float(lut.rgba.size() - 1)}};
   geo[4] = {{float(lut.storedMin), float(lut.scale), 0.0f, 0.0f}};
+  m.overlayCellsShown = overlayCells(m.volume, o, lut, map);
   clCall([&] {
+    m.overlayCellBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                     m.overlayCellsShown.size(), m.overlayCellsShown.data());
     m.overlayVolume = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, o.byteSize());
     m.cl.queue.enqueueWriteBuffer(m.overlayVolume, CL_TRUE, 0, o.byteSize(), o.voxels.data());
     m.overlayLut =
@@ -243,7 +246,6 @@ std::vector<std::string> Raycaster::setOverlay(const Volume& o, const TransferFu
                                    geo.size() * sizeof(cl_float4), geo.data());
     return 0;
   });
-  m.overlayCellsShown = overlayCells(m.volume, o, lut, map);
   m.overlay = true;
   return overlayWarnings(m.volume, o);
 }
@@ -251,7 +253,7 @@ std::vector<std::string> Raycaster::setOverlay(const Volume& o, const TransferFu
 void Raycaster::clearOverlay() {
   Impl& m = *impl_;
   m.overlay = false;
-  m.overlayVolume = m.overlayLut = m.overlayGeometry = cl::Buffer();
+  m.overlayVolume = m.overlayLut = m.overlayCellBuffer = m.overlayGeometry = cl::Buffer();
   m.overlayCellsShown.clear();
   m.space.setOverlayCells(m.cl, {});
 }
@@ -379,6 +381,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     if (sw.OVERLAY) {  // OVERLAY_PARAMS (kernels/classification/overlay.cl)
       kernel.setArg(arg++, m.overlayVolume);
       kernel.setArg(arg++, m.overlayLut);
+      kernel.setArg(arg++, m.overlayCellBuffer);
       kernel.setArg(arg++, m.overlayGeometry);
     }
     cl::NDRange local = m.local();

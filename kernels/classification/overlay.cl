@@ -5,6 +5,8 @@
 // inside its box and transparent outside it, then its own table. Arguments (OVERLAY_PARAMS):
 //   ovol  the overlay's stored values (short, x fastest)
 //   olut  its colour and opacity table (float4, as lut.cl's)
+//   ocells per base macro cell (x fastest), 1 where the overlay may show (overlay_cells.h):
+//         elsewhere its sample is transparent, so it is not taken (overlay_cell)
 //   ogeo  [0 .. 2] rows of the map base voxel -> overlay voxel (xyz linear, w translation),
 //         [3] xyz its dims, w its table's last entry, [4] x the table's first stored value,
 //         y its entries per stored unit
@@ -18,8 +20,16 @@
 #if OVERLAY
 #define OVERLAY_PARAMS                                                         \
   , __global const short *restrict ovol, __global const float4 *restrict olut, \
-      __constant float4 *ogeo
-#define OVERLAY_PASS , ovol, olut, ogeo
+      __global const uchar *restrict ocells, __constant float4 *ogeo
+#define OVERLAY_PASS , ovol, olut, ocells, ogeo
+
+// Whether base voxel position p lies in a macro cell where the overlay may show: cell
+// floor(p / CELL) (clamped), whose span (macro_cells.h) holds p.
+inline bool overlay_cell(__global const uchar* restrict ocells, __constant RaycastParams* P,
+                         float3 p) {
+  int3 c = clamp(convert_int3(floor(p * (1.0f / CELL))), (int3)(0), P->cells.xyz - 1);
+  return ocells[((size_t)c.z * P->cells.y + c.y) * P->cells.x + c.x] != 0;
+}
 
 // The overlay's colour and opacity (per reference step) at base voxel position p.
 inline float4 overlay_classify(__global const short* restrict ovol,

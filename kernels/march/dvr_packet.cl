@@ -47,8 +47,10 @@ inline void dvr_gradient_opacityN(__global const short* restrict vol, __constant
 // overlay_classify (overlay.cl) lane by lane for the lanes in `live` (transparent for the
 // others): the overlay's grid is not the rays', so its reads are gathers anyway.
 inline void overlay_classifyN(__global const short* restrict ovol,
-                              __global const float4* restrict olut, __constant float4* ogeo,
-                              floatN x, floatN y, floatN z, intN live, floatN o[4]) {
+                              __global const float4* restrict olut,
+                              __global const uchar* restrict ocells, __constant float4* ogeo,
+                              __constant RaycastParams* P, floatN x, floatN y, floatN z, intN live,
+                              floatN o[4]) {
   float xs[LANES], ys[LANES], zs[LANES], os[4][LANES];
   int ls[LANES];
   vstoreN(x, 0, xs);
@@ -57,7 +59,8 @@ inline void overlay_classifyN(__global const short* restrict ovol,
   vstoreN(live, 0, ls);
   for (int l = 0; l < LANES; ++l) {
     float4 v = (float4)(0.0f);
-    if (ls[l]) v = overlay_classify(ovol, olut, ogeo, (float3)(xs[l], ys[l], zs[l]));
+    const float3 p = (float3)(xs[l], ys[l], zs[l]);
+    if (ls[l] && overlay_cell(ocells, P, p)) v = overlay_classify(ovol, olut, ogeo, p);
     os[0][l] = v.x, os[1][l] = v.y, os[2][l] = v.z, os[3][l] = v.w;
   }
   for (int ch = 0; ch < 4; ++ch) o[ch] = vloadN(0, os[ch]);
@@ -208,7 +211,7 @@ inline void dvr_packet(PACKET_ARGS) {
       }
 #endif
 #if OVERLAY
-      overlay_classifyN(ovol, olut, ogeo, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy,
+      overlay_classifyN(ovol, olut, ocells, ogeo, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy,
                         r.oz + t[k] * r.dz, live[k], oc[k]);
 #endif
     }

@@ -124,7 +124,8 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
   // The base's classification below (labels, gradient opacity, shading) is its own; the
   // overlay's sample joins it after, unshaded (PET on CT shows as a glow, and the base's
   // gradient says nothing of the overlay's surfaces).
-  float4 o = overlay_classify(ovol, olut, ogeo, p_v);
+  float4 o =
+      overlay_cell(ocells, P, p_v) ? overlay_classify(ovol, olut, ogeo, p_v) : (float4)(0.0f);
 #define DVR_NOTHING (c.w <= 0.0f && o.w <= 0.0f)
 #else
 #define DVR_NOTHING (c.w <= 0.0f)
