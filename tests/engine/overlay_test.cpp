@@ -91,8 +91,9 @@ RenderParams params(bool shading = true) {
 }
 
 Image renderWith(const Volume& v, const RenderParams& p, const Volume* overlay,
-                 const TransferFunction& tf, bool packets, bool ess = true) {
-  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
+                 const TransferFunction& tf, bool packets, bool ess = true,
+                 VolumeStorage storage = VolumeStorage::Buffer) {
+  Raycaster rc(test::pocl(), v, storage);
   RaycasterOptions o;
   o.packets = packets;
   o.emptySpaceSkipping = ess;
@@ -182,6 +183,10 @@ TEST(Overlay, KernelsMatchTheReference) {
       expectClose(
           renderWith(v, p, &o, tf, packets), ref,
           std::string(shading ? "shaded" : "unshaded") + (packets ? " packets" : " per ray"));
+    // The volume as an image (GPUs), the overlay still a buffer beside it.
+    if (test::pocl().device().imageSupport)
+      expectClose(renderWith(v, p, &o, tf, false, true, VolumeStorage::Image3d), ref,
+                  shading ? "shaded image3d" : "unshaded image3d");
   }
 }
 
