@@ -9,6 +9,8 @@ namespace voxray::report {
 const std::vector<ProfileAttribute>& basicProfile() {
   using A = Action;
   static const std::vector<ProfileAttribute> table = {
+      {0x0008, 0x0012, A::Remove},  // Instance Creation Date
+      {0x0008, 0x0013, A::Remove},  // Instance Creation Time
       {0x0008, 0x0014, A::NewUid},  // Instance Creator UID
       {0x0008, 0x0015, A::Remove},  // Instance Coercion DateTime
       {0x0008, 0x0018, A::NewUid},  // SOP Instance UID
@@ -103,10 +105,16 @@ const std::vector<ProfileAttribute>& basicProfile() {
       {0x0018, 0x1005, A::Remove},  // Generator ID
       {0x0018, 0x1007, A::Remove},  // Cassette ID
       {0x0018, 0x1008, A::Remove},  // Gantry ID
+      {0x0018, 0x1012, A::Remove},  // Date of Secondary Capture
+      {0x0018, 0x1014, A::Remove},  // Time of Secondary Capture
       {0x0018, 0x1030, A::Remove},  // Protocol Name
+      {0x0018, 0x1200, A::Remove},  // Date of Last Calibration
+      {0x0018, 0x1201, A::Remove},  // Time of Last Calibration
       {0x0018, 0x1400, A::Remove},  // Acquisition Device Processing Description
       {0x0018, 0x4000, A::Remove},  // Acquisition Comments
       {0x0018, 0x700A, A::Remove},  // Detector ID
+      {0x0018, 0x9074, A::Remove},  // Frame Acquisition DateTime
+      {0x0018, 0x9151, A::Remove},  // Frame Reference DateTime
       {0x0018, 0x9424, A::Remove},  // Acquisition Protocol Description
       {0x0018, 0xA003, A::Remove},  // Contribution Description
       {0x0020, 0x000D, A::NewUid},  // Study Instance UID
@@ -191,6 +199,11 @@ const std::vector<ProfileAttribute>& basicProfile() {
       {0x0040, 0xA078, A::Remove},  // Author Observer Sequence
       {0x0040, 0xA07A, A::Remove},  // Participant Sequence
       {0x0040, 0xA07C, A::Remove},  // Custodial Organization Sequence
+      {0x0040, 0xA030, A::Remove},  // Verification DateTime
+      {0x0040, 0xA032, A::Remove},  // Observation DateTime
+      {0x0040, 0xA120, A::Remove},  // DateTime
+      {0x0040, 0xA121, A::Remove},  // Date
+      {0x0040, 0xA122, A::Remove},  // Time
       {0x0040, 0xA124, A::NewUid},  // UID
       {0x0040, 0xA171, A::NewUid},  // Observation UID
       {0x0040, 0xA730, A::Remove},  // Content Sequence (an image's SR content: free text)

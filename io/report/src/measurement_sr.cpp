@@ -90,6 +90,23 @@ DSRSpatialCoordinatesValue scoord(const ReportMeasurement& m) {
   return s;
 }
 
+// The slices (k) of the volume a measurement's points lie on, when they are its files' images.
+std::vector<int> touchedSlices(const Volume& v, const ReportMeasurement& m) {
+  std::vector<int> out;
+  if (int(v.study.sliceSopInstanceUids.size()) != v.dims.z) return out;
+  const int one = measurementSlice(m);
+  if (one >= 0) {
+    if (one < v.dims.z) out.push_back(one);
+    return out;
+  }
+  for (const auto& p : m.points) {
+    const int k = int(std::lround(p.z));
+    if (k >= 0 && k < v.dims.z && std::find(out.begin(), out.end(), k) == out.end())
+      out.push_back(k);
+  }
+  return out;
+}
+
 }  // namespace
 
 WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
@@ -107,7 +124,7 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
   if (!perSlice)
     out.notes.push_back(
         "the volume's slices are not its files' images (resampled, or frames of one file): the "
-        "report references the series only, without image coordinates");
+        "report is filed in the series' study but names no image and has no image coordinates");
 
   TID1500_MeasurementReport report(CMR_CID7021::ImagingMeasurementReport);
   check(report.setLanguage(CID5000_Languages::English, CID5001_Countries::UnitedStates),
@@ -119,12 +136,9 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
         "procedure");
   // The image library lists every image a measurement references, once.
   std::vector<int> slices;
-  for (const auto& m : measurements) {
-    const int k = measurementSlice(m);
-    if (perSlice && k >= 0 && k < v.dims.z &&
-        std::find(slices.begin(), slices.end(), k) == slices.end())
-      slices.push_back(k);
-  }
+  for (const auto& m : measurements)
+    for (int k : touchedSlices(v, m))
+      if (std::find(slices.begin(), slices.end(), k) == slices.end()) slices.push_back(k);
   check(report.getImageLibrary().createNewImageLibrary(), "image library");
   if (!slices.empty()) check(report.getImageLibrary().addImageGroup(), "image library group");
   for (int k : slices) {
@@ -142,9 +156,10 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
     const std::string label = m.label.empty() ? "measurement " + std::to_string(number) : m.label;
     const int k = measurementSlice(m);
     const bool onImage = perSlice && k >= 0 && k < v.dims.z;
+    const std::vector<int> touched = touchedSlices(v, m);
     if (perSlice && !onImage)
-      out.notes.push_back(label +
-                          ": not within one slice of the series; it references the series only");
+      out.notes.push_back(label + ": its points lie on " + std::to_string(touched.size()) +
+                          " slices; it references their images without image coordinates");
     check(report.addIndividualMeasurements(), "measurement group");
     Group& group = report.getIndividualMeasurements();
     check(group.setTrackingIdentifier(label), "tracking identifier");
@@ -162,6 +177,14 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
         DSRImageReferenceValue image(s.sopClassUid, s.sliceSopInstanceUids[size_t(k)]);
         check(value.addSpatialCoordinates(CODE_DCM_ImageRegion, scoord(m), image),
               label + " image region");
+      } else {
+        // Across slices a 2D region has no one image: the images of its points instead
+        // (TID 320 row 1). SCOORD3D would fit, but DCMTK's TID 300 class has no call for it.
+        for (int t : touched)
+          check(value.addImage(
+                    CODE_DCM_SourceOfMeasurement,
+                    DSRImageReferenceValue(s.sopClassUid, s.sliceSopInstanceUids[size_t(t)])),
+                label + " image");
       }
     };
     const DSRCodedEntryValue mm("mm", "UCUM", "millimeter");
