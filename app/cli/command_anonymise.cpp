@@ -34,6 +34,10 @@ int runAnonymise(AnonymiseCli& o) {
   if (r.skipped)
     std::cout << ", " << r.skipped << " other file" << (r.skipped == 1 ? "" : "s") << " skipped";
   std::cout << "\n";
+  if (r.burnedIn)
+    std::cout << "note: " << r.burnedIn << " image" << (r.burnedIn == 1 ? " has" : "s have")
+              << " text burned into the pixels (Burned In Annotation YES) and "
+              << (r.burnedIn == 1 ? "was" : "were") << " left out\n";
   return 0;
 }
 

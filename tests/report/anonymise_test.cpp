@@ -5,6 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+
 #include "voxray/io/anonymise.h"
 #include "voxray/io/error.h"
 #include "voxray/io/key_object_selection.h"
@@ -154,4 +158,21 @@ TEST(KeyImages, RefusesAResampledSeriesAndBadSlices) {
               writeKeyObjectSelection(freshDir("p.dcm").string(), pelvis, {3, 3});
             }).find("given twice"),
             std::string::npos);
+}
+
+// Pixels that show text cannot be cleaned by the Basic Profile alone: such images stay out.
+TEST(Anonymise, LeavesOutImagesWithBurnedInText) {
+  const fs::path in = freshDir("burned-in");
+  fs::create_directories(in);
+  const std::string src = kData + "ct-ge-tilt/";
+  for (const char* name : {"01.dcm", "02.dcm"}) {
+    DcmFileFormat f;
+    ASSERT_TRUE(f.loadFile((src + name).c_str()).good());
+    if (std::string(name) == "02.dcm")
+      f.getDataset()->putAndInsertString(DCM_BurnedInAnnotation, "YES");
+    ASSERT_TRUE(f.saveFile((in / name).c_str()).good());
+  }
+  const AnonymiseResult r = anonymise(in.string(), freshDir("burned-in-out").string(), {});
+  EXPECT_EQ(r.written, 1u);
+  EXPECT_EQ(r.burnedIn, 1u);
 }

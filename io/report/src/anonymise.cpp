@@ -232,6 +232,10 @@ AnonymiseResult anonymise(const std::string& input, const std::string& output,
       ++result.skipped;
       continue;
     }
+    if (str(d, DCM_BurnedInAnnotation) == "YES") {
+      ++result.burnedIn;
+      continue;
+    }
     if (!result.written) fs::create_directories(out, ec);
     clean(d, x);
     markDeidentified(d, options);

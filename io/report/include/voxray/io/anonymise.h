@@ -22,7 +22,10 @@ struct AnonymiseOptions {
 
 struct AnonymiseResult {
   size_t written = 0;
-  size_t skipped = 0;              // files that are not DICOM (or of another series)
+  size_t skipped = 0;  // files that are not DICOM (or of another series)
+  // Images whose pixels show text (Burned In Annotation YES): left out, because the Basic
+  // Profile without its Clean Pixel Data option cannot clean them.
+  size_t burnedIn = 0;
   std::vector<std::string> files;  // written, relative to the output folder
 };
 
