@@ -176,3 +176,30 @@ TEST(Anonymise, LeavesOutImagesWithBurnedInText) {
   EXPECT_EQ(r.written, 1u);
   EXPECT_EQ(r.burnedIn, 1u);
 }
+
+// The writers' success paths in this binary too (it runs under ASan in scripts/test; the
+// values are checked by check_sr.py and check_kos.py through voxray-cli): the returned UID is
+// the file's.
+TEST(Report, WritesAReportAndKeyImagesOfThePelvis) {
+  const Volume v = loadVolume(kData + "ct-visible-human-pelvis");
+  ReportMeasurement roi;
+  roi.kind = ReportKind::Ellipse;
+  roi.points = {{240, 90, 1}, {260, 110, 1}};
+  roi.mean = -1001.0, roi.sd = 10.0, roi.min = -1024.0, roi.max = -971.0;
+  roi.areaMm2 = 314.159;
+  ReportMeasurement across;
+  across.points = {{10, 10, 0}, {20, 20, 3}};
+  across.value = 14.4568;
+  const fs::path sr = freshDir("sr.dcm"), kos = freshDir("kos.dcm");
+  const WrittenReport r = writeMeasurementReport(sr.string(), v, {roi, across});
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("lie on 2 slices"), std::string::npos);
+  const std::string k = writeKeyObjectSelection(kos.string(), v, {10, 20, 5});
+  for (const auto& [path, uid] : {std::pair{sr, r.sopInstanceUid}, std::pair{kos, k}}) {
+    DcmFileFormat f;
+    ASSERT_TRUE(f.loadFile(path.c_str()).good());
+    OFString written;
+    f.getDataset()->findAndGetOFString(DCM_SOPInstanceUID, written);
+    EXPECT_EQ(uid, written.c_str());
+  }
+}
