@@ -23,5 +23,8 @@ Run addTfCommand(CLI::App& app);
 Run addMakePhantomCommand(CLI::App& app);
 Run addDbCommand(CLI::App& app);
 Run addSegmentCommand(CLI::App& app);
+Run addExportSrCommand(CLI::App& app);
+Run addKeyImagesCommand(CLI::App& app);
+Run addAnonymiseCommand(CLI::App& app);
 
 }  // namespace voxray::cli

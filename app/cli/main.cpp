@@ -18,6 +18,10 @@ int main(int argc, char** argv) {
       voxray::cli::addPacsCommand(app),    voxray::cli::addMovieCommand(app),
       voxray::cli::addTfCommand(app),      voxray::cli::addMakePhantomCommand(app),
       voxray::cli::addDbCommand(app),      voxray::cli::addSegmentCommand(app)};
+  // Issue 37, results out (after the list: the runs follow the subcommands' order).
+  runs.push_back(voxray::cli::addExportSrCommand(app));
+  runs.push_back(voxray::cli::addKeyImagesCommand(app));
+  runs.push_back(voxray::cli::addAnonymiseCommand(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

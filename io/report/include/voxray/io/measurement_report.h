@@ -1,0 +1,61 @@
+#pragma once
+// Measurements leave Voxray as CSV and as a DICOM SR (TID 1500 Measurement Report). The
+// values are the engine's (voxray/engine/measure.h); these plain structs carry them to io,
+// which knows no engine.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+enum class ReportKind { Length, Angle, Ellipse, Rect };
+
+struct ReportMeasurement {
+  ReportKind kind = ReportKind::Length;
+  std::string label;  // the tracking identifier, e.g. "line 1"; never patient text
+  // Voxel positions (i, j, k) of the volume: a line's 2 ends, an angle's 3 points (vertex in
+  // the middle), an ROI's 2 opposite corners of its bounding box.
+  std::vector<glm::dvec3> points;
+  int normalAxis = 2;           // ROI: the voxel axis across its plane (0 = i, 1 = j, 2 = k)
+  std::optional<double> value;  // length (mm) or angle (degrees); none: no value (zero arm)
+  // ROI statistics in the volume's unit (HU, or as stored); the report converts to SUVbw
+  // itself when the volume has an SUV scale.
+  std::optional<double> mean, sd, min, max;
+  double areaMm2 = 0.0;
+  size_t pixels = 0;
+};
+
+// The slice a measurement lies on when all its points share one k (the image of a source
+// file); -1 when they do not (an oblique line, an ROI across i or j).
+int measurementSlice(const ReportMeasurement& m);
+
+struct MeasurementReportInfo {
+  std::string seriesDescription = "Voxray measurements";
+};
+
+struct WrittenReport {
+  std::string sopInstanceUid;
+  std::vector<std::string> notes;  // what the user should know (series-only references, ...)
+};
+
+// Writes MEASUREMENTS of V as a Comprehensive SR following TID 1500 into PATH, in V's study.
+// Each measurement is a TID 1501 group (tracking identifier, TID 300 values with units in
+// UCUM) that references the source image of its slice (SOP Instance UID from
+// v.study.sliceSopInstanceUids) with its SCOORD in that image's pixels; without per-slice
+// UIDs it references the series only and says so in the notes. Throws Error (Input) for a
+// volume not read from DICOM or no measurements, (Output) when PATH cannot be written.
+WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
+                                     const std::vector<ReportMeasurement>& measurements,
+                                     const MeasurementReportInfo& info = {});
+
+// One row per value: label, kind, quantity, value, unit, slice, points (voxels and LPS mm).
+// Throws Error (Output) when PATH cannot be written.
+void writeMeasurementCsv(const std::string& path, const Volume& v,
+                         const std::vector<ReportMeasurement>& measurements);
+
+}  // namespace voxray
