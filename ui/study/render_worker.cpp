@@ -34,6 +34,22 @@ void RenderWorker::setVolume(std::shared_ptr<const Volume> volume) {
   wake_.notify_all();
 }
 
+void RenderWorker::setSegmentation(std::shared_ptr<const Segmentation> seg, bool whole,
+                                   glm::ivec3 boxLo, glm::ivec3 boxHi) {
+  {
+    std::lock_guard lock(mutex_);
+    SegmentationUpdate u{std::move(seg), whole, boxLo, boxHi};
+    if (pendingSegmentation_ && !u.whole) {  // not applied yet: both boxes go
+      const SegmentationUpdate& before = *pendingSegmentation_;
+      u.whole = before.whole || !before.seg;
+      u.lo = glm::min(u.lo, before.lo);
+      u.hi = glm::max(u.hi, before.hi);
+    }
+    pendingSegmentation_ = std::move(u);
+  }
+  wake_.notify_all();
+}
+
 void RenderWorker::request(const RenderParams& params, bool interactive, int tag, bool withHits) {
   {
     std::lock_guard lock(mutex_);
@@ -133,6 +149,8 @@ void RenderWorker::run() {
   std::unique_ptr<Raycaster> raycaster;
   std::shared_ptr<const Volume> volume;  // kept alive while the raycaster uses it
   Image view;                            // the last view frame: banded frames paint over it
+  std::shared_ptr<const Segmentation> segmentation;  // the latest given (setSegmentation)
+  bool segShown = false;                             // the raycaster holds it
   std::thread builder;                   // prepare()'s builds; joined before ctx goes
   struct Join {
     std::thread& t;
@@ -142,18 +160,22 @@ void RenderWorker::run() {
   } join{builder};
   while (true) {
     std::shared_ptr<const Volume> nextVolume;
+    std::optional<SegmentationUpdate> segUpdate;
     std::optional<Request> req;
     std::vector<RenderParams> prepare;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
+               pendingSegmentation_ ||
                (!pendingPrepare_.empty() && raycaster);
       });
       if (task_.cancelled()) return;
       if (raycaster) prepare = std::exchange(pendingPrepare_, {});
       nextVolume = std::move(pendingVolume_);
       pendingVolume_.reset();
+      segUpdate = std::move(pendingSegmentation_);
+      pendingSegmentation_.reset();
       if (pendingExport_) {
         req = std::move(pendingExport_);
         pendingExport_.reset();
@@ -182,8 +204,28 @@ void RenderWorker::run() {
       try {
         raycaster = std::make_unique<Raycaster>(*ctx, *nextVolume);
         volume = nextVolume;
+        segShown = false;  // a new raycaster has none
       } catch (const std::exception& e) {
         reportError(e.what(), true);
+      }
+    }
+    if (segUpdate) segmentation = segUpdate->seg;
+    if (raycaster && (segUpdate || nextVolume)) {
+      // Only a segmentation on this volume's grid is shown; another waits for its volume.
+      const bool fits = segmentation && sameGrid(segmentation->grid, gridOf(*volume));
+      try {
+        if (!fits) {
+          if (raycaster->hasSegmentation()) raycaster->clearSegmentation();
+          segShown = false;
+        } else if (!segShown || !segUpdate || segUpdate->whole) {
+          raycaster->setSegmentation(*segmentation);
+          segShown = true;
+        } else {
+          raycaster->updateSegmentation(*segmentation, segUpdate->lo, segUpdate->hi);
+        }
+      } catch (const std::exception& e) {
+        segShown = false;
+        reportError(e.what(), false);
       }
     }
     if (!req || !raycaster) continue;

@@ -21,6 +21,7 @@
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
+#include "voxray/io/segmentation.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -58,6 +59,12 @@ class RenderWorker {
   RenderWorker& operator=(const RenderWorker&) = delete;
 
   void setVolume(std::shared_ptr<const Volume> volume);
+  // The segmentation dvr frames classify by (Raycaster::setSegmentation): SEG is a copy the
+  // render thread reads; BOXLO ... BOXHI (inclusive voxels) the part of its label map that
+  // changed since the last call, or WHOLE. Null: none. A segmentation off the volume's grid
+  // is not shown (the next volume's, while it loads, or the last one's).
+  void setSegmentation(std::shared_ptr<const Segmentation> seg, bool whole, glm::ivec3 boxLo = {},
+                       glm::ivec3 boxHi = {});
   // WITHHITS: also each pixel's iso first hit or dvr first opaque point (Frame::hits), for
   // picking in 3D.
   void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
@@ -80,6 +87,12 @@ class RenderWorker {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::shared_ptr<const Volume> pendingVolume_;
+  struct SegmentationUpdate {
+    std::shared_ptr<const Segmentation> seg;
+    bool whole = true;
+    glm::ivec3 lo{0}, hi{0};
+  };
+  std::optional<SegmentationUpdate> pendingSegmentation_;
   struct Request {
     RenderParams params;
     bool interactive;

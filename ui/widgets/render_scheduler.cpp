@@ -71,6 +71,20 @@ void RenderScheduler::endInteraction() {
   requestFrame();
 }
 
+void RenderScheduler::updateSegmentation(SegmentationModel& model) {
+  const SegmentationModel::Edits edits = model.takeEdits();
+  if (!model.active() || model.segmentation().segments.empty()) {
+    worker_->setSegmentation(nullptr, true);
+  } else {
+    // The render thread's own copy: the model goes on changing while it renders.
+    auto copy = std::make_shared<const Segmentation>(model.segmentation());
+    // A change of the list only (colour, visibility) still sends the table: one voxel's box.
+    worker_->setSegmentation(std::move(copy), edits.whole, edits.any ? edits.lo : glm::ivec3(0),
+                             edits.any ? edits.hi - 1 : glm::ivec3(0));
+  }
+  requestFrame();
+}
+
 RenderParams RenderScheduler::fullParams() const {
   return planFrame(state_.params(), state_.quality(), {viewSize_.width(), viewSize_.height()},
                    false, doc_.minSpacingMm());
