@@ -188,21 +188,25 @@ TEST(SegmentTools, OperationsAreOneUndoStepEach) {
   SegmentationModel m;
   m.reset(v);
   SegmentToolSettings s;
-  s.label = m.addSegment("Skull", {1, 1, 1});
-  s.range = {700, 3000};
-  applyThreshold(m, v, s);
-  const size_t skull = countLabel(m.segmentation(), s.label);
+  s.label = m.addSegment("Shell", {1, 1, 1});
+  // A hollow ball: 20 mm painted, the inner 10 mm erased; fill holes makes it whole.
+  m.paintSphere({32, 32, 32}, 20.0, s.label);
+  const size_t ball = countLabel(m.segmentation(), s.label);
+  m.eraseSphere({32, 32, 32}, 10.0, s.label);
+  const size_t shell = countLabel(m.segmentation(), s.label);
+  ASSERT_LT(shell, ball);
   applyOperation(m, s.label, MaskOperation::FillHoles, 0, Connectivity::Faces6);
-  const size_t filled = countLabel(m.segmentation(), s.label);
-  EXPECT_GT(filled, 4 * skull);  // the brain inside the closed skull
+  EXPECT_EQ(countLabel(m.segmentation(), s.label), ball);
   EXPECT_EQ(m.undoText(), "Undo Fill holes");
   m.undo();
-  EXPECT_EQ(countLabel(m.segmentation(), s.label), skull);
+  EXPECT_EQ(countLabel(m.segmentation(), s.label), shell);
+  // A 4 mm margin (one voxel) grows the shell outwards and inwards.
   applyOperation(m, s.label, MaskOperation::Margin, 4.0, Connectivity::Faces6);
-  EXPECT_GT(countLabel(m.segmentation(), s.label), skull);
+  EXPECT_GT(countLabel(m.segmentation(), s.label), shell);
+  EXPECT_EQ(m.undoText(), "Undo Margin");
   // Add moves the other segment's voxels into the target.
   const uint8_t other = m.addSegment("Blob", {0, 1, 0});
-  m.paintSphere({32, 32, 32}, 8.0, other);
+  m.paintSphere({12, 32, 32}, 8.0, other);
   const size_t blob = countLabel(m.segmentation(), other);
   const size_t grown = countLabel(m.segmentation(), s.label);
   applyLogical(m, s.label, other, LogicalOp::Add);

@@ -151,7 +151,7 @@ void RenderWorker::run() {
   Image view;                            // the last view frame: banded frames paint over it
   std::shared_ptr<const Segmentation> segmentation;  // the latest given (setSegmentation)
   bool segShown = false;                             // the raycaster holds it
-  std::thread builder;                   // prepare()'s builds; joined before ctx goes
+  std::thread builder;                               // prepare()'s builds; joined before ctx goes
   struct Join {
     std::thread& t;
     ~Join() {
@@ -167,8 +167,7 @@ void RenderWorker::run() {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
-               pendingSegmentation_ ||
-               (!pendingPrepare_.empty() && raycaster);
+               pendingSegmentation_ || (!pendingPrepare_.empty() && raycaster);
       });
       if (task_.cancelled()) return;
       if (raycaster) prepare = std::exchange(pendingPrepare_, {});

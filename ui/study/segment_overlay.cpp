@@ -17,7 +17,8 @@ std::vector<int64_t> planeVoxels(const VoxelGrid& grid, const PlaneGrid& g) {
       const glm::dvec3 p = o + double(x) * du + double(y) * dv;
       const glm::ivec3 i(int(std::floor(p.x + 0.5)), int(std::floor(p.y + 0.5)),
                          int(std::floor(p.z + 0.5)));
-      if (glm::any(glm::lessThan(i, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(i, grid.dims)))
+      if (glm::any(glm::lessThan(i, glm::ivec3(0))) ||
+          glm::any(glm::greaterThanEqual(i, grid.dims)))
         continue;
       out[size_t(y) * size_t(g.size.x) + size_t(x)] = int64_t(grid.index(i.x, i.y, i.z));
     }

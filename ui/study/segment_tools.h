@@ -10,8 +10,8 @@
 
 #include "no_qt.h"
 #include "notifier.h"
-#include "voxray/engine/render_params.h"
 #include "segmentation_model.h"
+#include "voxray/engine/render_params.h"
 #include "window_level.h"
 
 namespace voxray {
@@ -20,9 +20,9 @@ enum class SegmentTool { None, Threshold, Paint, Erase, Seed };
 
 struct SegmentToolSettings {
   SegmentTool tool = SegmentTool::None;
-  uint8_t label = 0;        // the segment the tools edit (0: none chosen)
-  double radiusMm = 5.0;    // paint and erase
-  bool sphere = false;      // paint and erase in 3D (a ball) instead of the view's slice (a disc)
+  uint8_t label = 0;      // the segment the tools edit (0: none chosen)
+  double radiusMm = 5.0;  // paint and erase
+  bool sphere = false;    // paint and erase in 3D (a ball) instead of the view's slice (a disc)
   HuRange range{200.0, 3000.0};  // threshold and seeded region, physical values (HU)
   Connectivity connectivity = Connectivity::Faces6;
   bool overwriteOthers = false;  // painting and thresholds take other segments' voxels too

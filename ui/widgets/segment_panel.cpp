@@ -39,10 +39,9 @@ enum Column { kVisible, kColour, kName, kOpacity, kCategory, kType, kColumns };
 
 // New segments' colours in turn: bone first, then colours far apart from it and each other.
 glm::vec3 nextColour(size_t n) {
-  static const glm::vec3 colours[] = {{0.95f, 0.90f, 0.75f}, {0.85f, 0.25f, 0.20f},
-                                      {0.30f, 0.70f, 0.30f}, {0.25f, 0.45f, 0.90f},
-                                      {0.95f, 0.80f, 0.15f}, {0.80f, 0.35f, 0.80f},
-                                      {0.20f, 0.80f, 0.80f}, {0.95f, 0.55f, 0.15f}};
+  static const glm::vec3 colours[] = {
+      {0.95f, 0.90f, 0.75f}, {0.85f, 0.25f, 0.20f}, {0.30f, 0.70f, 0.30f}, {0.25f, 0.45f, 0.90f},
+      {0.95f, 0.80f, 0.15f}, {0.80f, 0.35f, 0.80f}, {0.20f, 0.80f, 0.80f}, {0.95f, 0.55f, 0.15f}};
   return colours[n % (sizeof(colours) / sizeof(colours[0]))];
 }
 
@@ -169,10 +168,9 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   auto* opsForm = new QFormLayout(ops);
   operation_ = new QComboBox;
   operation_->setObjectName("segmentOperation");
-  for (MaskOperation op :
-       {MaskOperation::KeepLargest, MaskOperation::RemoveSmall, MaskOperation::FillHoles,
-        MaskOperation::Margin, MaskOperation::Median, MaskOperation::Closing,
-        MaskOperation::Opening})
+  for (MaskOperation op : {MaskOperation::KeepLargest, MaskOperation::RemoveSmall,
+                           MaskOperation::FillHoles, MaskOperation::Margin, MaskOperation::Median,
+                           MaskOperation::Closing, MaskOperation::Opening})
     operation_->addItem(toString(op), int(op));
   operation_->setToolTip("Each operation is one undo step");
   value_ = spin(-100, 100000, 2.0, 0.5, 1, "",
@@ -262,9 +260,8 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   });
   connect(importButton, &QPushButton::clicked, this, [this] { importDialog(); });
   connect(exportButton, &QPushButton::clicked, this, [this] { exportDialog(); });
-  connect(tool_, &QComboBox::currentIndexChanged, this, [this](int i) {
-    setTools([i](SegmentToolSettings& s) { s.tool = SegmentTool(i); });
-  });
+  connect(tool_, &QComboBox::currentIndexChanged, this,
+          [this](int i) { setTools([i](SegmentToolSettings& s) { s.tool = SegmentTool(i); }); });
   connect(radius_, &QDoubleSpinBox::valueChanged, this,
           [this](double v) { setTools([v](SegmentToolSettings& s) { s.radiusMm = v; }); });
   connect(sphere_, &QCheckBox::toggled, this,
@@ -282,9 +279,8 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
       s.connectivity = i == 1 ? Connectivity::Full26 : Connectivity::Faces6;
     });
   });
-  connect(overwrite_, &QCheckBox::toggled, this, [this](bool on) {
-    setTools([on](SegmentToolSettings& s) { s.overwriteOthers = on; });
-  });
+  connect(overwrite_, &QCheckBox::toggled, this,
+          [this](bool on) { setTools([on](SegmentToolSettings& s) { s.overwriteOthers = on; }); });
   connect(apply, &QPushButton::clicked, this, [this] {
     if (m_.document.empty()) return;
     try {
@@ -379,8 +375,10 @@ void SegmentPanel::refreshList() {
     auto* name = new QTableWidgetItem(QString::fromStdString(s.name));
     name->setData(Qt::UserRole, int(s.label));
     list_->setItem(row, kName, name);
-    list_->setItem(row, kOpacity, new QTableWidgetItem(QString::number(std::lround(s.opacity * 100))));
-    list_->setItem(row, kCategory, new QTableWidgetItem(QString::fromStdString(s.category.meaning)));
+    list_->setItem(row, kOpacity,
+                   new QTableWidgetItem(QString::number(std::lround(s.opacity * 100))));
+    list_->setItem(row, kCategory,
+                   new QTableWidgetItem(QString::fromStdString(s.category.meaning)));
     list_->setItem(row, kType, new QTableWidgetItem(QString::fromStdString(s.type.meaning)));
     other_->addItem(QString::fromStdString(s.name), int(s.label));
   }
@@ -490,8 +488,9 @@ void SegmentPanel::editCell(int row, int column) {
 
 void SegmentPanel::runOperation() {
   try {
-    applyOperation(m_.segmentation, currentLabel(), MaskOperation(operation_->currentData().toInt()),
-                   value_->value(), m_.segmentTools.settings().connectivity);
+    applyOperation(m_.segmentation, currentLabel(),
+                   MaskOperation(operation_->currentData().toInt()), value_->value(),
+                   m_.segmentTools.settings().connectivity);
   } catch (const std::exception& e) {
     fail("Cannot apply the operation", e.what());
   }
@@ -515,12 +514,11 @@ bool SegmentPanel::exportTo(const QString& path) {
   std::error_code ec;
   const bool exists = std::filesystem::exists(path.toStdString(), ec);
   if (exists) {
-    const bool yes = confirm_ ? confirm_(path)
-                              : QMessageBox::question(this, "Replace file?",
-                                                      QString("%1 already exists. Replace it?")
-                                                          .arg(path),
-                                                      QMessageBox::Yes | QMessageBox::No,
-                                                      QMessageBox::No) == QMessageBox::Yes;
+    const bool yes =
+        confirm_ ? confirm_(path)
+                 : QMessageBox::question(
+                       this, "Replace file?", QString("%1 already exists. Replace it?").arg(path),
+                       QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
     if (!yes) return false;
   }
   try {
@@ -588,9 +586,14 @@ void SegmentPanel::updateStatistics() {
   stats_->setRowCount(int(lastStats_.size()));
   for (int row = 0; row < int(lastStats_.size()); ++row) {
     const SegmentStats& s = lastStats_[size_t(row)];
-    const QStringList cells = {QString::fromStdString(s.name), QString::number(s.voxels),
-                               QString::number(s.volumeMl, 'f', 3), number(s.mean),
-                               number(s.sd), number(s.min), number(s.max), number(s.median)};
+    const QStringList cells = {QString::fromStdString(s.name),
+                               QString::number(s.voxels),
+                               QString::number(s.volumeMl, 'f', 3),
+                               number(s.mean),
+                               number(s.sd),
+                               number(s.min),
+                               number(s.max),
+                               number(s.median)};
     for (int c = 0; c < cells.size(); ++c) stats_->setItem(row, c, new QTableWidgetItem(cells[c]));
   }
 }
@@ -598,8 +601,7 @@ void SegmentPanel::updateStatistics() {
 QString SegmentPanel::statisticsText() const {
   QStringList lines;
   QStringList header;
-  for (int c = 0; c < stats_->columnCount(); ++c)
-    header << stats_->horizontalHeaderItem(c)->text();
+  for (int c = 0; c < stats_->columnCount(); ++c) header << stats_->horizontalHeaderItem(c)->text();
   lines << header.join('\t');
   for (int row = 0; row < stats_->rowCount(); ++row) {
     QStringList cells;
@@ -620,7 +622,8 @@ void SegmentPanel::saveCsv() {
   const std::string csv = statsCsv(lastStats_);
   if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
       f.write(csv.data(), qint64(csv.size())) != qint64(csv.size()))
-    fail("Cannot save the statistics", "Cannot write " + path + ": check the folder and free space.");
+    fail("Cannot save the statistics",
+         "Cannot write " + path + ": check the folder and free space.");
 }
 
 QDockWidget* makeSegmentDock(AppModels& models, SegmentPanel** panel) {

@@ -90,14 +90,16 @@ void SliceView::setSegmentation(SegmentationModel* model, SegmentToolModel* tool
   if (segmentTools_) segmentTools_->changed.disconnect(toolConnection_);
   segmentation_ = model;
   segmentTools_ = tools;
-  if (model) segConnection_ = model->changed.connect([this] {
-    refreshSegmentOverlay();
-    update();
-  });
-  if (tools) toolConnection_ = tools->changed.connect([this] {
-    refreshSegmentOverlay();
-    update();
-  });
+  if (model)
+    segConnection_ = model->changed.connect([this] {
+      refreshSegmentOverlay();
+      update();
+    });
+  if (tools)
+    toolConnection_ = tools->changed.connect([this] {
+      refreshSegmentOverlay();
+      update();
+    });
   refreshSegmentOverlay();
   update();
 }
@@ -119,7 +121,8 @@ void SliceView::refreshSegmentOverlay() {
     if (seg)
       if (const Segment* s = seg->find(segmentTools_->settings().label)) colour = s->colour;
     try {
-      previewOverlay_ = toQImage(thresholdOverlay(v, plane, segmentTools_->settings().range, colour));
+      previewOverlay_ =
+          toQImage(thresholdOverlay(v, plane, segmentTools_->settings().range, colour));
     } catch (const std::exception&) {  // a range with lo > hi previews nothing
     }
   }

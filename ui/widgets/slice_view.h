@@ -100,7 +100,7 @@ class SliceView : public QWidget {
   bool pressSegmentTool(QPointF widget);  // true: a paint, erase or seed tool took the press
   void brushAt(QPointF widget);
   glm::dvec3 toolVoxel(QPointF widget) const;  // the voxel position under the cursor
-  void refreshSegmentOverlay();  // true: the press grabbed or started a measurement
+  void refreshSegmentOverlay();                // true: the press grabbed or started a measurement
   // Measurements are drawn and taken in the acquisition planes only: not on a turned view or
   // a slab (their points and ROI pixels are index-plane ones).
   bool measurable() const;
