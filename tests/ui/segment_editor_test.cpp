@@ -357,6 +357,8 @@ class SegmentEditorTest : public QObject {
     panel().findChild<QPushButton*>("segmentApplyOperation")->click();
     setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::None; });
     models().segmentation.setColour(label, {0.95f, 0.75f, 0.35f});
+    // 3D: the segment alone, in its colour (Show only).
+    panel().findChild<QComboBox*>("segmentMask3d")->setCurrentIndex(int(MaskChoice::ShowOnly));
     panel().updateStatistics();
     fixture_.window->segmentDock()->show();
     fixture_.window->segmentDock()->raise();

@@ -370,7 +370,8 @@ void SegmentPanel::refreshList() {
     list_->setItem(row, kVisible, visible);
     auto* colour = new QTableWidgetItem;
     colour->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
-    colour->setBackground(toQColor(s.colour));
+    // A swatch (decoration): it stays visible in a selected row, where a background would not.
+    colour->setData(Qt::DecorationRole, toQColor(s.colour));
     list_->setItem(row, kColour, colour);
     auto* name = new QTableWidgetItem(QString::fromStdString(s.name));
     name->setData(Qt::UserRole, int(s.label));
@@ -416,7 +417,7 @@ void SegmentPanel::refreshTools() {
     const SliceAxes axial = sliceAxes(v.direction, Orientation::Axial);
     try {
       const size_t n = previewCount(v, axial.nAxis, m_.crosshair.sliceOf(axial), s.range);
-      text = QString("%1 voxels in the axial slice").arg(n);
+      text = QString("%1 voxels (axial slice)").arg(n);
     } catch (const std::exception&) {
       text = "Give a range with low ≤ high";
     }
