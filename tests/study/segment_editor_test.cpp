@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "segment_overlay.h"
+#include "segment_scissors.h"
 #include "segment_tools.h"
 #include "segmentation_model.h"
+#include "slice_geometry.h"
 #include "slice_image.h"
 #include "voxray/io/error.h"
 #include "voxray/io/phantom.h"
@@ -213,6 +215,45 @@ TEST(SegmentTools, OperationsAreOneUndoStepEach) {
   EXPECT_EQ(countLabel(m.segmentation(), other), 0u);
   EXPECT_EQ(countLabel(m.segmentation(), s.label), grown + blob);
   EXPECT_THROW(applyOperation(m, 77, MaskOperation::FillHoles, 0, Connectivity::Faces6), Error);
+}
+
+TEST(SegmentScissors, APolygonRemovesWhatLiesBehindItAndOnlyThat) {
+  const Volume& v = phantom64();
+  SegmentationModel m;
+  m.reset(v);
+  const uint8_t l = m.addSegment("Ball", {1, 1, 1});
+  m.paintSphere({32, 32, 32}, 40.0, l);
+  const Segmentation before = m.segmentation();
+  RenderParams p;
+  p.width = 200;
+  p.height = 150;
+  p.camera.azimuthDeg = 30.0;
+  const ViewProjection proj = makeViewProjection(v, p, {200.0, 150.0});
+  // The screen's left half.
+  const std::vector<glm::dvec2> polygon = {{0, 0}, {100, 0}, {100, 150}, {0, 150}};
+  applyScissors(m, v, proj, polygon, l);
+  EXPECT_EQ(m.undoText(), "Undo Scissors");
+  size_t removed = 0, kept = 0;
+  for (int z = 0; z < v.dims.z; ++z)
+    for (int y = 0; y < v.dims.y; ++y)
+      for (int x = 0; x < v.dims.x; ++x) {
+        const size_t i = v.index(x, y, z);
+        if (before.labels[i] != l) {
+          ASSERT_EQ(m.segmentation().labels[i], before.labels[i]);
+          continue;
+        }
+        const auto at = proj.project(voxelToWorldMm(v, glm::dvec3(x, y, z)));
+        ASSERT_TRUE(at);
+        const bool cut = m.segmentation().labels[i] != l;
+        ASSERT_EQ(cut, at->x < 100.0) << "voxel " << x << "," << y << "," << z;
+        (cut ? removed : kept) += 1;
+      }
+  // The ball's centre projects to the screen's centre: about half on each side.
+  EXPECT_GT(removed, countLabel(before, l) / 3);
+  EXPECT_GT(kept, countLabel(before, l) / 3);
+  m.undo();
+  EXPECT_EQ(m.segmentation().labels, before.labels);
+  EXPECT_FALSE(insidePolygon({{0, 0}, {1, 1}}, {0.5, 0.5}));  // no area
 }
 
 TEST(SegmentTools, MaskChoicesShowOrHideAndExcludeEachOther) {

@@ -318,6 +318,27 @@ class SegmentEditorTest : public QObject {
 #endif
   }
 
+  // Scissors: a lasso around the whole 3D image removes the segment (what lies behind it),
+  // one undo step; with no segment chosen the status bar says so.
+  void scissorsLassoInThe3DViewCutsOneUndoStep() {
+    const uint8_t label = addSegment();
+    models().segmentation.paintSphere({32, 32, 32}, 20.0, label);
+    const size_t ball = countLabel(models().segmentation.segmentation(), label);
+    QVERIFY(ball > 100);
+    setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::Scissors; });
+    VolumeView& view = fixture_.window->volumeView();
+    const QRect r = view.imageRect();
+    const QPoint corners[] = {r.topLeft() + QPoint(2, 2), r.topRight() + QPoint(-2, 2),
+                              r.bottomRight() + QPoint(-2, -2), r.bottomLeft() + QPoint(2, -2)};
+    QTest::mousePress(&view, Qt::LeftButton, {}, corners[0]);
+    for (const QPoint& c : corners) QTest::mouseMove(&view, c);
+    QTest::mouseRelease(&view, Qt::LeftButton, {}, corners[3]);
+    QCOMPARE(countLabel(models().segmentation.segmentation(), label), size_t(0));
+    QCOMPARE(QString::fromStdString(models().segmentation.undoText()), QString("Undo Scissors"));
+    models().segmentation.undo();
+    QCOMPARE(countLabel(models().segmentation.segmentation(), label), ball);
+  }
+
   // README's docs/images/segment-skull.png (run with VOXRAY_SEGMENT_SHOT=PATH under
   // xvfb-run -s "-screen 0 1920x1080x24"): CThead with a bone segment (threshold, largest
   // island) shown in 3D and overlaid in the slice views. Skipped otherwise.

@@ -16,7 +16,8 @@
 
 namespace voxray {
 
-enum class SegmentTool { None, Threshold, Paint, Erase, Seed };
+// Scissors works in the 3D view: a lasso removes what lies behind it (segment_scissors.h).
+enum class SegmentTool { None, Threshold, Paint, Erase, Seed, Scissors };
 
 struct SegmentToolSettings {
   SegmentTool tool = SegmentTool::None;

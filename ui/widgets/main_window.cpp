@@ -194,6 +194,10 @@ void MainWindow::wireSegments() {
       statusBar()->showMessage(QString::fromStdString(guiMessage(m.toStdString())), 8000);
     });
   }
+  volumeView_->setSegmentation(&models_.segmentation, &models_.segmentTools);
+  connect(volumeView_, &VolumeView::segmentToolFailed, this, [this](const QString& m) {
+    statusBar()->showMessage(QString::fromStdString(guiMessage(m.toStdString())), 8000);
+  });
   segmentDock_ = makeSegmentDock(models_, &segmentPanel_);
   addDockWidget(Qt::RightDockWidgetArea, segmentDock_);
   tabifyDockWidget(measureDock_, segmentDock_);

@@ -114,11 +114,13 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   auto* form = new QFormLayout(tools);
   tool_ = new QComboBox;
   tool_->setObjectName("segmentTool");
-  tool_->addItems({"None (crosshair)", "Threshold", "Paint", "Erase", "Seeded region"});
+  tool_->addItems(
+      {"None (crosshair)", "Threshold", "Paint", "Erase", "Seeded region", "Scissors (3D view)"});
   tool_->setToolTip(
       "Threshold: preview the range in the views, Apply fills the segment; Paint/Erase: left "
-      "drag; Seeded region: left click takes the range's region connected to it. Ctrl or "
-      "Shift with a click moves the crosshair instead");
+      "drag; Seeded region: left click takes the range's region connected to it; Scissors: a "
+      "left drag around part of the 3D view removes what lies behind it. Ctrl or Shift with a "
+      "click moves the crosshair (or turns the 3D view) instead");
   form->addRow("Tool", tool_);
   radius_ = spin(0.5, 100.0, m_.segmentTools.settings().radiusMm, 0.5, 1, " mm",
                  "The brush's radius in millimetres");
