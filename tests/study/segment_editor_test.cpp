@@ -253,6 +253,10 @@ TEST(SegmentScissors, APolygonRemovesWhatLiesBehindItAndOnlyThat) {
   EXPECT_GT(kept, countLabel(before, l) / 3);
   m.undo();
   EXPECT_EQ(m.segmentation().labels, before.labels);
+  // A pick at the ball's edge, half a voxel outside it, still names it; far off, nothing.
+  EXPECT_EQ(segmentAt(m.segmentation(), {32, 32, 32}), l);
+  EXPECT_EQ(segmentAt(m.segmentation(), {32 + 10.5, 32, 32}), l);  // 40 mm = 10 voxels
+  EXPECT_EQ(segmentAt(m.segmentation(), {32 + 13, 32, 32}), 0);
   EXPECT_FALSE(insidePolygon({{0, 0}, {1, 1}}, {0.5, 0.5}));  // no area
 }
 

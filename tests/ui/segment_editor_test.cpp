@@ -339,6 +339,29 @@ class SegmentEditorTest : public QObject {
     QCOMPARE(countLabel(models().segmentation.segmentation(), label), ball);
   }
 
+  // With a segment tool chosen, Ctrl+click in the 3D view picks the segment it hits (the
+  // skull, seen from the front) and the list selects it.
+  void ctrlClickIn3DPicksTheSegment() {
+    const uint8_t other = addSegment();
+    models().segmentation.paintSphere({32, 32, 32}, 8.0, other);  // inside the head: unseen
+    const uint8_t skull = addSegment();
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Threshold;
+      s.range = {700, 3000};
+    });
+    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
+    panel().selectLabel(other);
+    QCOMPARE(models().segmentTools.settings().label, other);
+    VolumeView& view = fixture_.window->volumeView();
+    QSignalSpy picked(&fixture_.window->scheduler(), &RenderScheduler::pickReady);
+    QTest::mouseClick(&view, Qt::LeftButton, Qt::ControlModifier, view.imageRect().center());
+    QVERIFY(picked.wait(60000));
+    QCoreApplication::processEvents();
+    QCOMPARE(models().segmentTools.settings().label, skull);
+    QCOMPARE(panel().currentLabel(), skull);
+    QVERIFY(models().measurements.items().empty());  // no measurement point was added
+  }
+
   // README's docs/images/segment-skull.png (run with VOXRAY_SEGMENT_SHOT=PATH under
   // xvfb-run -s "-screen 0 1920x1080x24"): CThead with a bone segment (threshold, largest
   // island) shown in 3D and overlaid in the slice views. Skipped otherwise.

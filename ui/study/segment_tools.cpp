@@ -1,6 +1,7 @@
 #include "segment_tools.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "voxray/io/error.h"
@@ -93,6 +94,27 @@ SegmentMask withMaskChoice(SegmentMask m, int label, MaskChoice c) {
   }
   if (m.labels.empty()) m.kind = SegmentMask::Kind::Off;
   return m;
+}
+
+uint8_t segmentAt(const Segmentation& s, glm::dvec3 voxel) {
+  const glm::ivec3 c = nearestVoxel(voxel);
+  const glm::ivec3& d = s.grid.dims;
+  const auto inside = [&](glm::ivec3 p) {
+    return p.x >= 0 && p.y >= 0 && p.z >= 0 && p.x < d.x && p.y < d.y && p.z < d.z;
+  };
+  if (s.labels.size() != s.grid.voxelCount()) return 0;
+  if (inside(c))
+    if (const uint8_t l = s.labels[s.grid.index(c.x, c.y, c.z)]) return l;
+  std::array<int, 256> votes{};
+  for (int z = -1; z <= 1; ++z)
+    for (int y = -1; y <= 1; ++y)
+      for (int x = -1; x <= 1; ++x) {
+        const glm::ivec3 p = c + glm::ivec3(x, y, z);
+        if (inside(p)) ++votes[s.labels[s.grid.index(p.x, p.y, p.z)]];
+      }
+  votes[0] = 0;
+  const auto best = std::max_element(votes.begin(), votes.end());
+  return *best > 0 ? uint8_t(best - votes.begin()) : uint8_t(0);
 }
 
 const char* toString(MaskOperation op) {

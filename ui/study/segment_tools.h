@@ -82,6 +82,11 @@ enum class MaskChoice { Off, ShowOnly, Hide };
 MaskChoice maskChoiceOf(const SegmentMask& m, int label);
 SegmentMask withMaskChoice(SegmentMask m, int label, MaskChoice c);
 
+// The segment a 3D pick hit (voxel position, surface_pick.h): the nearest voxel's label, or,
+// where that is background (a surface point lies between a segment's voxel and the outside),
+// the label most of its 26 neighbours hold; 0 for none.
+uint8_t segmentAt(const Segmentation& s, glm::dvec3 voxel);
+
 // The operations of the editor's buttons on one segment, each one undo step.
 enum class MaskOperation { KeepLargest, RemoveSmall, FillHoles, Margin, Median, Closing, Opening };
 const char* toString(MaskOperation op);

@@ -413,6 +413,7 @@ void SegmentPanel::refreshTools() {
     connectivity_->setCurrentIndex(s.connectivity == Connectivity::Full26 ? 1 : 0);
     overwrite_->setChecked(s.overwriteOthers);
   }
+  if (s.label && s.label != currentLabel()) selectLabel(s.label);  // a pick in the 3D view
   QString text;
   if (!m_.document.empty()) {
     const Volume& v = *m_.document.volume();

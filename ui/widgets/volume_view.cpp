@@ -65,10 +65,25 @@ void VolumeView::setMeasurements(MeasurementModel* m) {
 }
 
 void VolumeView::onPickFrame(const Frame& f) {
-  if (!pickAt_ || !measurements_ || doc_.empty()) return;
+  if (!pickAt_ || doc_.empty()) return;
   const glm::ivec2 size(f.params.width, f.params.height);
   const glm::ivec2 pixel(glm::floor(*pickAt_ * glm::dvec2(size)));
   pickAt_.reset();
+  if (std::exchange(pickSegment_, false)) {
+    const auto hit = surfaceHitAt(f.hits, size, pixel);
+    const uint8_t label =
+        hit && segmentation_->active() ? segmentAt(segmentation_->segmentation(), *hit) : 0;
+    if (!label) {
+      emit pickMissed(hit ? "No segment there: the click hit the volume outside every segment."
+                          : QString::fromStdString(pickMissMessage(f.params)));
+      return;
+    }
+    SegmentToolSettings s = segmentTools_->settings();
+    s.label = label;
+    segmentTools_->set(s);
+    return;
+  }
+  if (!measurements_) return;
   if (auto hit = surfaceHitAt(f.hits, size, pixel))
     measurements_->addPick(*hit);
   else
@@ -148,8 +163,11 @@ void VolumeView::mousePressEvent(QMouseEvent* e) {
   dragStart_ = lastPos_ = e->position();
   auto proj = projection();
   drag_ = Drag::None;
+  const bool segmentPick =
+      segmentTools_ && segmentation_ && segmentTools_->settings().tool != SegmentTool::None;
   if (e->button() == Qt::LeftButton && (e->modifiers() & Qt::ControlModifier) && proj &&
-      measurements_) {
+      (measurements_ || segmentPick)) {
+    pickSegment_ = segmentPick;
     // A pick, not a drag: the hit arrives with a frame rendered for it (onPickFrame).
     const QRect r = imageRect();
     pickAt_ = toImage(e->position()) / glm::dvec2(std::max(r.width(), 1), std::max(r.height(), 1));

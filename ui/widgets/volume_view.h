@@ -42,6 +42,8 @@ class VolumeView : public QWidget {
   std::optional<ViewProjection> projection() const;
   // The measurements that 3D picks add to and that the view draws (none: no picking).
   void setMeasurements(MeasurementModel* m);
+  // With a segment tool chosen, Ctrl+click picks the segment under the cursor (it becomes
+  // the tools' segment) instead of a measurement point.
   // With the segment tools' Scissors chosen a left drag draws a lasso; on release it removes
   // from the chosen segment what lies behind it (segment_scissors.h). Modifiers keep their
   // meaning (Shift pans, Ctrl picks, Alt shapes the transfer function).
@@ -91,7 +93,9 @@ class VolumeView : public QWidget {
   MeasurementModel* measurements_ = nullptr;
   SegmentationModel* segmentation_ = nullptr;
   SegmentToolModel* segmentTools_ = nullptr;
-  std::vector<QPointF> lasso_;        // the scissors' polygon so far (widget pixels)
+  std::vector<QPointF> lasso_;
+  bool pickSegment_ = false;  // the pending Ctrl+click picks a segment, not a measurement        //
+                              // the scissors' polygon so far (widget pixels)
   std::optional<glm::dvec2> pickAt_;  // the Ctrl+click waiting for its hit frame, 0..1 of the image
   void onPickFrame(const Frame& f);
 };
