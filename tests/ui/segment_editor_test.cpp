@@ -11,6 +11,7 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
+#include <QTableWidget>
 #include <QTemporaryDir>
 
 #include "qt_image.h"
@@ -178,6 +179,24 @@ class SegmentEditorTest : public QObject {
       for (int x = 0; x < v.dims.x; ++x)
         inSlice += models().segmentation.segmentation().labels[v.index(x, y, slice)] == label;
     QCOMPARE(inSlice, preview);
+    // The statistics table: the segment's voxels as counted here, copied tab-separated.
+    const size_t voxels = countLabel(models().segmentation.segmentation(), label);
+    panel().updateStatistics();
+    const QStringList lines = panel().statisticsText().split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 2);
+    QVERIFY(lines[0].startsWith("Segment\tVoxels\tVolume mL"));
+    const QStringList cells = lines[1].split('\t');
+    QCOMPARE(cells[0], QString("Segment 1"));
+    QCOMPARE(cells[1], QString::number(voxels));
+    // 4 mm voxels: 0.064 mL each.
+    QCOMPARE(cells[2], QString::number(voxels * 0.064, 'f', 3));
+    // A name typed into the list is one undo step of the model.
+    auto* list = panel().findChild<QTableWidget*>("segmentList");
+    list->item(0, 2)->setText("Bone");
+    QCOMPARE(models().segmentation.segmentation().segments[0].name, std::string("Bone"));
+    panel().findChild<QPushButton*>("segmentUndo")->click();
+    QCOMPARE(models().segmentation.segmentation().segments[0].name, std::string("Segment 1"));
+    QCOMPARE(list->item(0, 2)->text(), QString("Segment 1"));
     // From W/L: level ± width / 2.
     models().windowLevel.set({400, 40});
     panel().findChild<QPushButton*>("segmentFromWindow")->click();
