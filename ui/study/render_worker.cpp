@@ -34,18 +34,24 @@ void RenderWorker::setVolume(std::shared_ptr<const Volume> volume) {
   wake_.notify_all();
 }
 
-void RenderWorker::setSegmentation(std::shared_ptr<const Segmentation> seg, bool whole,
-                                   glm::ivec3 boxLo, glm::ivec3 boxHi) {
+void RenderWorker::setSegmentation(std::shared_ptr<const Segmentation> whole) {
   {
     std::lock_guard lock(mutex_);
-    SegmentationUpdate u{std::move(seg), whole, boxLo, boxHi};
-    if (pendingSegmentation_ && !u.whole) {  // not applied yet: both boxes go
-      const SegmentationUpdate& before = *pendingSegmentation_;
-      u.whole = before.whole || !before.seg;
-      u.lo = glm::min(u.lo, before.lo);
-      u.hi = glm::max(u.hi, before.hi);
-    }
+    SegmentationUpdate u;
+    u.replace = true;
+    u.whole = std::move(whole);
     pendingSegmentation_ = std::move(u);
+  }
+  wake_.notify_all();
+}
+
+void RenderWorker::updateSegmentation(std::vector<Segment> segments, LabelPatch box) {
+  {
+    std::lock_guard lock(mutex_);
+    if (!pendingSegmentation_) pendingSegmentation_.emplace();
+    pendingSegmentation_->hasSegments = true;
+    pendingSegmentation_->segments = std::move(segments);
+    if (!box.empty()) pendingSegmentation_->patches.push_back(std::move(box));
   }
   wake_.notify_all();
 }
@@ -147,11 +153,11 @@ void RenderWorker::run() {
     reportError(e.what(), false);
   }
   std::unique_ptr<Raycaster> raycaster;
-  std::shared_ptr<const Volume> volume;  // kept alive while the raycaster uses it
-  Image view;                            // the last view frame: banded frames paint over it
-  std::shared_ptr<const Segmentation> segmentation;  // the latest given (setSegmentation)
-  bool segShown = false;                             // the raycaster holds it
-  std::thread builder;                               // prepare()'s builds; joined before ctx goes
+  std::shared_ptr<const Volume> volume;      // kept alive while the raycaster uses it
+  Image view;                                // the last view frame: banded frames paint over it
+  std::optional<Segmentation> segmentation;  // the render thread's copy (setSegmentation)
+  bool segShown = false;                     // the raycaster holds it
+  std::thread builder;                       // prepare()'s builds; joined before ctx goes
   struct Join {
     std::thread& t;
     ~Join() {
@@ -208,7 +214,27 @@ void RenderWorker::run() {
         reportError(e.what(), true);
       }
     }
-    if (segUpdate) segmentation = segUpdate->seg;
+    // The copy takes the update: a whole new map, or the edited boxes' labels.
+    bool anyPatch = false;
+    glm::ivec3 lo(0), hi(0);
+    if (segUpdate) {
+      if (segUpdate->replace) {
+        segmentation.reset();
+        if (segUpdate->whole) segmentation = *segUpdate->whole;
+      }
+      if (segmentation && segUpdate->hasSegments) segmentation->segments = segUpdate->segments;
+      for (LabelPatch& p : segUpdate->patches) {
+        if (!segmentation) break;
+        try {
+          swapPatch(*segmentation, p);
+        } catch (const std::exception&) {  // a box of another grid's map: stale
+          continue;
+        }
+        lo = anyPatch ? glm::min(lo, p.lo) : p.lo;
+        hi = anyPatch ? glm::max(hi, p.hi) : p.hi;
+        anyPatch = true;
+      }
+    }
     if (raycaster && (segUpdate || nextVolume)) {
       // Only a segmentation on this volume's grid is shown; another waits for its volume.
       const bool fits = segmentation && sameGrid(segmentation->grid, gridOf(*volume));
@@ -216,11 +242,13 @@ void RenderWorker::run() {
         if (!fits) {
           if (raycaster->hasSegmentation()) raycaster->clearSegmentation();
           segShown = false;
-        } else if (!segShown || !segUpdate || segUpdate->whole) {
+        } else if (!segShown || !segUpdate || segUpdate->replace) {
           raycaster->setSegmentation(*segmentation);
           segShown = true;
         } else {
-          raycaster->updateSegmentation(*segmentation, segUpdate->lo, segUpdate->hi);
+          // The list always (colours, visibility); the labels of the boxes (inclusive ends).
+          raycaster->updateSegmentation(*segmentation, anyPatch ? lo : glm::ivec3(0),
+                                        anyPatch ? hi - 1 : glm::ivec3(0));
         }
       } catch (const std::exception& e) {
         segShown = false;

@@ -21,6 +21,7 @@
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
+#include "voxray/io/segment_edit.h"
 #include "voxray/io/segmentation.h"
 #include "voxray/io/volume.h"
 
@@ -59,12 +60,14 @@ class RenderWorker {
   RenderWorker& operator=(const RenderWorker&) = delete;
 
   void setVolume(std::shared_ptr<const Volume> volume);
-  // The segmentation dvr frames classify by (Raycaster::setSegmentation): SEG is a copy the
-  // render thread reads; BOXLO ... BOXHI (inclusive voxels) the part of its label map that
-  // changed since the last call, or WHOLE. Null: none. A segmentation off the volume's grid
-  // is not shown (the next volume's, while it loads, or the last one's).
-  void setSegmentation(std::shared_ptr<const Segmentation> seg, bool whole, glm::ivec3 boxLo = {},
-                       glm::ivec3 boxHi = {});
+  // The segmentation dvr frames classify by (Raycaster::setSegmentation), a copy the render
+  // thread keeps; null: none. A segmentation off the volume's grid is not shown (the next
+  // volume's, while it loads, or the last one's).
+  void setSegmentation(std::shared_ptr<const Segmentation> whole);
+  // An edit of the segmentation set before: its segment list and, unless empty, the new labels
+  // of the edited box (only the box travels: a whole copy of a large label map per paint dab
+  // took 73 ms, see the README's segment editor figures).
+  void updateSegmentation(std::vector<Segment> segments, LabelPatch box);
   // WITHHITS: also each pixel's iso first hit or dvr first opaque point (Frame::hits), for
   // picking in 3D.
   void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
@@ -88,9 +91,11 @@ class RenderWorker {
   std::condition_variable wake_;
   std::shared_ptr<const Volume> pendingVolume_;
   struct SegmentationUpdate {
-    std::shared_ptr<const Segmentation> seg;
-    bool whole = true;
-    glm::ivec3 lo{0}, hi{0};
+    bool replace = false;  // `whole` replaces the copy (null: none)
+    std::shared_ptr<const Segmentation> whole;
+    bool hasSegments = false;  // `segments` replaces the copy's list
+    std::vector<Segment> segments;
+    std::vector<LabelPatch> patches;  // in order
   };
   std::optional<SegmentationUpdate> pendingSegmentation_;
   struct Request {

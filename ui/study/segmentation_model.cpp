@@ -12,8 +12,9 @@ namespace {
 // The undo history's labels are kept up to this many steps (a step holds a box of labels).
 constexpr size_t kMaxSteps = 100;
 
-// The labels of the box [lo, hi) as they are now.
-LabelPatch copyBox(const Segmentation& s, glm::ivec3 lo, glm::ivec3 hi) {
+}  // namespace
+
+LabelPatch copyLabels(const Segmentation& s, glm::ivec3 lo, glm::ivec3 hi) {
   LabelPatch p{lo, hi, {}};
   p.labels.reserve(size_t(hi.x - lo.x) * size_t(hi.y - lo.y) * size_t(hi.z - lo.z));
   for (int z = lo.z; z < hi.z; ++z)
@@ -21,8 +22,6 @@ LabelPatch copyBox(const Segmentation& s, glm::ivec3 lo, glm::ivec3 hi) {
       for (int x = lo.x; x < hi.x; ++x) p.labels.push_back(s.labels[s.grid.index(x, y, z)]);
   return p;
 }
-
-}  // namespace
 
 void SegmentationModel::touched(const LabelPatch& p) {
   if (p.empty() || edits_.whole) return;
@@ -95,7 +94,7 @@ void SegmentationModel::push(std::string what, LabelPatch patch, std::vector<Seg
     const glm::ivec3 lo = glm::min(a.patch.lo, patch.lo), hi = glm::max(a.patch.hi, patch.hi);
     swapPatch(s_, patch);
     swapPatch(s_, a.patch);
-    LabelPatch merged = copyBox(s_, lo, hi);
+    LabelPatch merged = copyLabels(s_, lo, hi);
     swapPatch(s_, a.patch);
     swapPatch(s_, patch);
     a.patch = std::move(merged);

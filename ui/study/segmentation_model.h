@@ -15,6 +15,9 @@
 
 namespace voxray {
 
+// The labels of the box [lo, hi) as they are now (what the 3D view's copy takes after an edit).
+LabelPatch copyLabels(const Segmentation& s, glm::ivec3 lo, glm::ivec3 hi);
+
 class SegmentationModel {
  public:
   // An empty segmentation on the volume's grid, with no undo history.

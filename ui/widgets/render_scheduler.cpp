@@ -74,13 +74,17 @@ void RenderScheduler::endInteraction() {
 void RenderScheduler::updateSegmentation(SegmentationModel& model) {
   const SegmentationModel::Edits edits = model.takeEdits();
   if (!model.active() || model.segmentation().segments.empty()) {
-    worker_->setSegmentation(nullptr, true);
-  } else {
+    worker_->setSegmentation(nullptr);
+    sentSegmentation_ = false;
+  } else if (edits.whole || !sentSegmentation_) {
     // The render thread's own copy: the model goes on changing while it renders.
-    auto copy = std::make_shared<const Segmentation>(model.segmentation());
-    // A change of the list only (colour, visibility) still sends the table: one voxel's box.
-    worker_->setSegmentation(std::move(copy), edits.whole, edits.any ? edits.lo : glm::ivec3(0),
-                             edits.any ? edits.hi - 1 : glm::ivec3(0));
+    worker_->setSegmentation(std::make_shared<const Segmentation>(model.segmentation()));
+    sentSegmentation_ = true;
+  } else {
+    // After an edit only its box travels (and the list: colours, visibility).
+    worker_->updateSegmentation(
+        model.segmentation().segments,
+        edits.any ? copyLabels(model.segmentation(), edits.lo, edits.hi) : LabelPatch{});
   }
   requestFrame();
 }

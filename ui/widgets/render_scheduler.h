@@ -84,6 +84,7 @@ class RenderScheduler : public QObject {
   AdaptiveQuality adaptive_;
   ProgressiveRender progressive_;  // cinematic: the next pass while the view is still
   int stateConnection_ = 0, docConnection_ = 0;
+  bool sentSegmentation_ = false;  // the worker holds a segmentation: edits send their box
 };
 
 }  // namespace voxray::ui
