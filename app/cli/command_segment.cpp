@@ -22,6 +22,10 @@ struct SegmentOptions {
   std::string threshold, seed, seedMm, name = "Segment", colour, output, statsJson;
   int connectivity = 6;
   bool keepLargest = false, fillHoles = false, force = false;
+  // Meshes: RAS (Slicer's and most CAD's frame) instead of LPS, one file per segment, the
+  // simplifier's target and the topology-preserving decimator.
+  bool ras = false, perSegment = false, manifold = false, noSurfaceArea = false;
+  size_t triangles = 500000;
   double marginMm = 0.0, smoothMm = 0.0;
 };
 
@@ -90,8 +94,17 @@ int runSegment(const InputOptions& in, const SegmentOptions& o) {
   const Volume v = in.load();
   const SegmentRecipe r = recipeOf(o, v);
   const Segmentation s = segmentationFromRecipe(v, r);
-  if (!o.output.empty()) writeSegmentationOutput(o.output, s, v, o.force);
-  const auto stats = allSegmentStats(s, v);
+  if (!o.output.empty()) {
+    SegmentOutputOptions out;
+    out.force = o.force;
+    out.mesh.coordinates = o.ras ? MeshCoordinates::Ras : MeshCoordinates::Lps;
+    out.mesh.perSegment = o.perSegment;
+    out.mesh.surface.targetTriangles = o.triangles;
+    out.mesh.surface.preserveTopology = o.manifold;
+    writeSegmentationOutput(o.output, s, v, out);
+  }
+  auto stats = allSegmentStats(s, v);
+  if (!o.statsJson.empty() && !o.noSurfaceArea) addSurfaceAreas(stats, s);
   if (o.statsJson == "-") {
     std::cout << statsJson(stats);
   } else if (!o.statsJson.empty()) {
@@ -134,6 +147,15 @@ Run addSegmentCommand(CLI::App& app) {
                   "OUT: .stl .obj .ply .nii .nii.gz .seg.nrrd .nrrd .dcm or .labels.raw");
   cmd->add_option("--stats-json", o->statsJson, "FILE or - (stdout): the segment's statistics");
   cmd->add_flag("--force", o->force, "replace existing output files");
+  cmd->add_flag("--ras", o->ras, "meshes in RAS mm (Slicer, most CAD) instead of DICOM's LPS");
+  cmd->add_flag("--per-segment", o->perSegment, "one mesh file per segment (OUT_LABEL_NAME.stl)");
+  cmd->add_option("--triangles", o->triangles,
+                  "simplify each mesh to at most N triangles (default 500000, 0 = keep all)");
+  cmd->add_flag("--manifold", o->manifold,
+                "topology-preserving decimation (VTK DecimatePro): a closed manifold mesh for "
+                "printing, tens of seconds on a bone");
+  cmd->add_flag("--no-surface-area", o->noSurfaceArea,
+                "leave surface_mm2 out of --stats-json (it meshes each segment)");
   return [in, o] { return runSegment(*in, *o); };
 }
 

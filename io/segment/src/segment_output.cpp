@@ -7,6 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include "voxray/io/error.h"
+#include "voxray/io/segment_mesh.h"
+#include "voxray/io/segment_stats.h"
+#ifdef VOXRAY_HAS_SEGMENT_FILES
+#include "voxray/io/segment_files.h"
+#endif
 #include "voxray/io/segmentation_check.h"
 
 namespace voxray {
@@ -65,17 +70,47 @@ void writeLabelsRaw(const std::string& path, const Segmentation& s, bool force) 
 
 void writeSegmentationOutput(const std::string& path, const Segmentation& s, const Volume& v,
                              bool force) {
+  SegmentOutputOptions options;
+  options.force = force;
+  writeSegmentationOutput(path, s, v, options);
+}
+
+void writeSegmentationOutput(const std::string& path, const Segmentation& s, const Volume& v,
+                             const SegmentOutputOptions& options) {
   checkSegmentation(s);
   checkSameGrid(s, v);
-  if (endsWith(path, ".labels.raw")) return writeLabelsRaw(path, s, force);
-  // The other writers (meshes, label-map files, DICOM SEG) plug in here.
-  for (const char* ext : {".stl", ".obj", ".ply", ".nii", ".nii.gz", ".seg.nrrd", ".nrrd", ".dcm"})
+  if (endsWith(path, ".labels.raw")) return writeLabelsRaw(path, s, options.force);
+  if (endsWith(path, ".stl") || endsWith(path, ".obj") || endsWith(path, ".ply")) {
+    MeshFileOptions mesh = options.mesh;
+    mesh.overwrite = options.force;
+    return writeMeshFile(path, s, {}, mesh);
+  }
+#ifdef VOXRAY_HAS_SEGMENT_FILES
+  if (endsWith(path, ".nii") || endsWith(path, ".nii.gz"))
+    return writeSegmentationNifti(path, s, options.force);
+  if (endsWith(path, ".nrrd")) return writeSegNrrd(path, s, options.force);
+  if (endsWith(path, ".dcm")) {
+    DicomSegOptions seg;
+    seg.force = options.force;
+    seg.seriesDescription = options.segSeriesDescription;
+    writeDicomSeg(path, s, v.study, seg);
+    return;
+  }
+#endif
+  for (const char* ext : {".nii", ".nii.gz", ".nrrd", ".dcm"})
     if (endsWith(path, ext))
-      throw outputError(std::string("Writing ") + ext + " files is not available in this build " +
-                        "yet: write .labels.raw (a raw label map with a .json sidecar).");
+      throw outputError(std::string("Writing ") + ext + " files needs Voxray built with its " +
+                        "NIfTI, Teem and DICOM parts: write .stl or .labels.raw instead.");
   throw inputError(path +
                    ": give an output ending in .stl, .obj, .ply (surface), .nii, .nii.gz, "
                    ".seg.nrrd, .nrrd (label map), .dcm (DICOM SEG) or .labels.raw (raw labels).");
+}
+
+void addSurfaceAreas(std::vector<SegmentStats>& stats, const Segmentation& s) {
+  SurfaceOptions unsimplified;
+  unsimplified.targetTriangles = 0;
+  for (auto& st : stats)
+    if (st.voxels > 0) st.surfaceMm2 = makeSurface(s, st.label, unsimplified).areaMm2;
 }
 
 }  // namespace voxray
