@@ -9,6 +9,7 @@
 
 #include "no_qt.h"
 #include "render_state_model.h"
+#include "segment_tools.h"
 #include "segmentation_model.h"
 #include "session.h"
 #include "volume_document.h"
@@ -23,6 +24,7 @@ struct AppModels {
   CrosshairModel crosshair;
   MeasurementModel measurements;   // a session keeps them (session_state.cpp)
   SegmentationModel segmentation;  // the segment editor's; a session keeps it too
+  SegmentToolModel segmentTools;   // the editor's tool and its settings (not saved)
   LightingFigures lighting;        // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;

@@ -34,6 +34,28 @@ void RenderWorker::setVolume(std::shared_ptr<const Volume> volume) {
   wake_.notify_all();
 }
 
+void RenderWorker::setSegmentation(std::shared_ptr<const Segmentation> whole) {
+  {
+    std::lock_guard lock(mutex_);
+    SegmentationUpdate u;
+    u.replace = true;
+    u.whole = std::move(whole);
+    pendingSegmentation_ = std::move(u);
+  }
+  wake_.notify_all();
+}
+
+void RenderWorker::updateSegmentation(std::vector<Segment> segments, LabelPatch box) {
+  {
+    std::lock_guard lock(mutex_);
+    if (!pendingSegmentation_) pendingSegmentation_.emplace();
+    pendingSegmentation_->hasSegments = true;
+    pendingSegmentation_->segments = std::move(segments);
+    if (!box.empty()) pendingSegmentation_->patches.push_back(std::move(box));
+  }
+  wake_.notify_all();
+}
+
 void RenderWorker::request(const RenderParams& params, bool interactive, int tag, bool withHits) {
   {
     std::lock_guard lock(mutex_);
@@ -131,9 +153,11 @@ void RenderWorker::run() {
     reportError(e.what(), false);
   }
   std::unique_ptr<Raycaster> raycaster;
-  std::shared_ptr<const Volume> volume;  // kept alive while the raycaster uses it
-  Image view;                            // the last view frame: banded frames paint over it
-  std::thread builder;                   // prepare()'s builds; joined before ctx goes
+  std::shared_ptr<const Volume> volume;      // kept alive while the raycaster uses it
+  Image view;                                // the last view frame: banded frames paint over it
+  std::optional<Segmentation> segmentation;  // the render thread's copy (setSegmentation)
+  bool segShown = false;                     // the raycaster holds it
+  std::thread builder;                       // prepare()'s builds; joined before ctx goes
   struct Join {
     std::thread& t;
     ~Join() {
@@ -142,18 +166,21 @@ void RenderWorker::run() {
   } join{builder};
   while (true) {
     std::shared_ptr<const Volume> nextVolume;
+    std::optional<SegmentationUpdate> segUpdate;
     std::optional<Request> req;
     std::vector<RenderParams> prepare;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
-               (!pendingPrepare_.empty() && raycaster);
+               pendingSegmentation_ || (!pendingPrepare_.empty() && raycaster);
       });
       if (task_.cancelled()) return;
       if (raycaster) prepare = std::exchange(pendingPrepare_, {});
       nextVolume = std::move(pendingVolume_);
       pendingVolume_.reset();
+      segUpdate = std::move(pendingSegmentation_);
+      pendingSegmentation_.reset();
       if (pendingExport_) {
         req = std::move(pendingExport_);
         pendingExport_.reset();
@@ -182,8 +209,50 @@ void RenderWorker::run() {
       try {
         raycaster = std::make_unique<Raycaster>(*ctx, *nextVolume);
         volume = nextVolume;
+        segShown = false;  // a new raycaster has none
       } catch (const std::exception& e) {
         reportError(e.what(), true);
+      }
+    }
+    // The copy takes the update: a whole new map, or the edited boxes' labels.
+    bool anyPatch = false;
+    glm::ivec3 lo(0), hi(0);
+    if (segUpdate) {
+      if (segUpdate->replace) {
+        segmentation.reset();
+        if (segUpdate->whole) segmentation = *segUpdate->whole;
+      }
+      if (segmentation && segUpdate->hasSegments) segmentation->segments = segUpdate->segments;
+      for (LabelPatch& p : segUpdate->patches) {
+        if (!segmentation) break;
+        try {
+          swapPatch(*segmentation, p);
+        } catch (const std::exception&) {  // a box of another grid's map: stale
+          continue;
+        }
+        lo = anyPatch ? glm::min(lo, p.lo) : p.lo;
+        hi = anyPatch ? glm::max(hi, p.hi) : p.hi;
+        anyPatch = true;
+      }
+    }
+    if (raycaster && (segUpdate || nextVolume)) {
+      // Only a segmentation on this volume's grid is shown; another waits for its volume.
+      const bool fits = segmentation && sameGrid(segmentation->grid, gridOf(*volume));
+      try {
+        if (!fits) {
+          if (raycaster->hasSegmentation()) raycaster->clearSegmentation();
+          segShown = false;
+        } else if (!segShown || !segUpdate || segUpdate->replace) {
+          raycaster->setSegmentation(*segmentation);
+          segShown = true;
+        } else {
+          // The list always (colours, visibility); the labels of the boxes (inclusive ends).
+          raycaster->updateSegmentation(*segmentation, anyPatch ? lo : glm::ivec3(0),
+                                        anyPatch ? hi - 1 : glm::ivec3(0));
+        }
+      } catch (const std::exception& e) {
+        segShown = false;
+        reportError(e.what(), false);
       }
     }
     if (!req || !raycaster) continue;

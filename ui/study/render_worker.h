@@ -21,6 +21,8 @@
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
+#include "voxray/io/segment_edit.h"
+#include "voxray/io/segmentation.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -58,6 +60,14 @@ class RenderWorker {
   RenderWorker& operator=(const RenderWorker&) = delete;
 
   void setVolume(std::shared_ptr<const Volume> volume);
+  // The segmentation dvr frames classify by (Raycaster::setSegmentation), a copy the render
+  // thread keeps; null: none. A segmentation off the volume's grid is not shown (the next
+  // volume's, while it loads, or the last one's).
+  void setSegmentation(std::shared_ptr<const Segmentation> whole);
+  // An edit of the segmentation set before: its segment list and, unless empty, the new labels
+  // of the edited box (only the box travels: a whole copy of a large label map per paint dab
+  // took 73 ms, see the README's segment editor figures).
+  void updateSegmentation(std::vector<Segment> segments, LabelPatch box);
   // WITHHITS: also each pixel's iso first hit or dvr first opaque point (Frame::hits), for
   // picking in 3D.
   void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
@@ -80,6 +90,14 @@ class RenderWorker {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::shared_ptr<const Volume> pendingVolume_;
+  struct SegmentationUpdate {
+    bool replace = false;  // `whole` replaces the copy (null: none)
+    std::shared_ptr<const Segmentation> whole;
+    bool hasSegments = false;  // `segments` replaces the copy's list
+    std::vector<Segment> segments;
+    std::vector<LabelPatch> patches;  // in order
+  };
+  std::optional<SegmentationUpdate> pendingSegmentation_;
   struct Request {
     RenderParams params;
     bool interactive;

@@ -14,11 +14,48 @@ constexpr size_t kMaxSteps = 100;
 
 }  // namespace
 
+LabelPatch copyLabels(const Segmentation& s, glm::ivec3 lo, glm::ivec3 hi) {
+  LabelPatch p{lo, hi, {}};
+  p.labels.reserve(size_t(hi.x - lo.x) * size_t(hi.y - lo.y) * size_t(hi.z - lo.z));
+  for (int z = lo.z; z < hi.z; ++z)
+    for (int y = lo.y; y < hi.y; ++y)
+      for (int x = lo.x; x < hi.x; ++x) p.labels.push_back(s.labels[s.grid.index(x, y, z)]);
+  return p;
+}
+
+void SegmentationModel::touched(const LabelPatch& p) {
+  if (p.empty() || edits_.whole) return;
+  if (!edits_.any) {
+    edits_.any = true;
+    edits_.lo = p.lo;
+    edits_.hi = p.hi;
+    return;
+  }
+  edits_.lo = glm::min(edits_.lo, p.lo);
+  edits_.hi = glm::max(edits_.hi, p.hi);
+}
+
+void SegmentationModel::touchedAll() {
+  edits_ = {};
+  edits_.whole = true;
+}
+
+void SegmentationModel::beginStroke() {
+  inStroke_ = true;
+  strokeStep_ = false;
+}
+
+void SegmentationModel::endStroke() {
+  inStroke_ = false;
+  strokeStep_ = false;
+}
+
 void SegmentationModel::reset(const Volume& v) {
   s_ = emptySegmentation(v);
   active_ = true;
   steps_.clear();
   done_ = 0;
+  touchedAll();
   changed.notify();
 }
 
@@ -29,6 +66,7 @@ void SegmentationModel::load(Segmentation s, const Volume& v) {
   active_ = true;
   steps_.clear();
   done_ = 0;
+  touchedAll();
   changed.notify();
 }
 
@@ -37,6 +75,7 @@ void SegmentationModel::clear() {
   active_ = false;
   steps_.clear();
   done_ = 0;
+  touchedAll();
   changed.notify();
 }
 
@@ -47,6 +86,22 @@ Segment& SegmentationModel::segment(uint8_t label) {
 }
 
 void SegmentationModel::push(std::string what, LabelPatch patch, std::vector<Segment> before) {
+  touched(patch);
+  if (inStroke_ && strokeStep_ && done_ == steps_.size() && !patch.empty()) {
+    // The stroke's step takes this dab: its patch becomes the labels before the stroke over
+    // both boxes. Swapping both patches out gives the map before the stroke, to copy.
+    Step& a = steps_.back();
+    const glm::ivec3 lo = glm::min(a.patch.lo, patch.lo), hi = glm::max(a.patch.hi, patch.hi);
+    swapPatch(s_, patch);
+    swapPatch(s_, a.patch);
+    LabelPatch merged = copyLabels(s_, lo, hi);
+    swapPatch(s_, a.patch);
+    swapPatch(s_, patch);
+    a.patch = std::move(merged);
+    changed.notify();
+    return;
+  }
+  strokeStep_ = inStroke_ && !patch.empty();
   steps_.resize(done_);  // a new edit drops what could be redone
   steps_.push_back({std::move(what), std::move(patch), std::move(before)});
   if (steps_.size() > kMaxSteps) steps_.erase(steps_.begin());
@@ -55,6 +110,8 @@ void SegmentationModel::push(std::string what, LabelPatch patch, std::vector<Seg
 }
 
 void SegmentationModel::swap(Step& step) {
+  strokeStep_ = false;
+  touched(step.patch);
   swapPatch(s_, step.patch);
   std::swap(s_.segments, step.segments);
 }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "no_qt.h"
@@ -13,6 +14,9 @@
 #include "voxray/io/segment_recipe.h"
 
 namespace voxray {
+
+// The labels of the box [lo, hi) as they are now (what the 3D view's copy takes after an edit).
+LabelPatch copyLabels(const Segmentation& s, glm::ivec3 lo, glm::ivec3 hi);
 
 class SegmentationModel {
  public:
@@ -44,6 +48,20 @@ class SegmentationModel {
   // The recipe voxray-cli segment runs, into `label`.
   void applyRecipe(const Volume& v, const SegmentRecipe& r, uint8_t label, EditPolicy p = {});
 
+  // A paint or erase drag: the edits between begin and end make one undo step.
+  void beginStroke();
+  void endStroke();
+
+  // What changed in the label map since the last takeEdits(), for the 3D view's copy of it:
+  // a voxel box [lo, hi), or the whole map (a new or loaded segmentation); nothing when only
+  // the segment list changed.
+  struct Edits {
+    bool whole = false;
+    bool any = false;  // a box
+    glm::ivec3 lo{0}, hi{0};
+  };
+  Edits takeEdits() { return std::exchange(edits_, {}); }
+
   bool canUndo() const { return done_ > 0; }
   bool canRedo() const { return done_ < steps_.size(); }
   std::string undoText() const;  // "Undo Paint" or empty
@@ -62,11 +80,16 @@ class SegmentationModel {
   Segment& segment(uint8_t label);
   void push(std::string what, LabelPatch patch, std::vector<Segment> before);
   void swap(Step& step);
+  void touched(const LabelPatch& p);  // adds the patch's box to edits_
+  void touchedAll();
 
   Segmentation s_;
   bool active_ = false;
   std::vector<Step> steps_;
   size_t done_ = 0;  // steps_[0, done_) are done; the rest undone (redo)
+  bool inStroke_ = false;
+  bool strokeStep_ = false;  // steps_.back() is the stroke's step: the next edit joins it
+  Edits edits_;
 };
 
 }  // namespace voxray

@@ -28,6 +28,7 @@
 #include "pacs_dialog.h"
 #include "raw_import_dialog.h"
 #include "recent_files.h"
+#include "segment_panel.h"
 #include "series_picker.h"
 #include "session_state.h"
 #include "settings_store.h"
@@ -147,6 +148,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   connect(loader_, &LoadController::cancelled, this,
           [this] { statusBar()->showMessage("Loading cancelled", 5000); });
   wireMeasurements();
+  wireSegments();
   sessions_ = new SessionActions(*this, models_);
   buildMenus();
   qApp->installEventFilter(this);
@@ -177,6 +179,34 @@ void MainWindow::wireMeasurements() {
           [this](const QString& m) { statusBar()->showMessage(m, 5000); });
   // Measurements are voxel positions of one volume: another volume starts without them.
   onModelChange<>(this, models_.document.changed, [this] { models_.measurements.clear(); });
+}
+
+void MainWindow::setErrorSink(ErrorSink sink) {
+  errorSink_ = std::move(sink);
+  if (errorSink_)
+    segmentPanel_->setErrorSink([this](const QString& t, const QString& m) { errorSink_(t, m); });
+  else
+    segmentPanel_->setErrorSink({});
+}
+
+void MainWindow::wireSegments() {
+  for (SliceView* s : slices_) {
+    s->setSegmentation(&models_.segmentation, &models_.segmentTools);
+    connect(s, &SliceView::segmentToolFailed, this, [this](const QString& m) {
+      statusBar()->showMessage(QString::fromStdString(guiMessage(m.toStdString())), 8000);
+    });
+  }
+  volumeView_->setSegmentation(&models_.segmentation, &models_.segmentTools);
+  connect(volumeView_, &VolumeView::segmentToolFailed, this, [this](const QString& m) {
+    statusBar()->showMessage(QString::fromStdString(guiMessage(m.toStdString())), 8000);
+  });
+  segmentDock_ = makeSegmentDock(models_, &segmentPanel_);
+  addDockWidget(Qt::RightDockWidgetArea, segmentDock_);
+  tabifyDockWidget(measureDock_, segmentDock_);
+  measureDock_->raise();
+  // The 3D view's copy of the label map follows every edit (the edited box only).
+  onModelChange<>(this, models_.segmentation.changed,
+                  [this] { scheduler_->updateSegmentation(models_.segmentation); });
 }
 
 void MainWindow::buildMenus() {
@@ -211,6 +241,12 @@ void MainWindow::buildMenus() {
   measurements->setObjectName("viewMeasurements");
   measurements->setToolTip("Show or hide the Measurements panel");
   view->addAction(measurements);
+  QAction* segments = segmentDock_->toggleViewAction();
+  segments->setText("&Segments");
+  segments->setObjectName("viewSegments");
+  segments->setShortcut(QKeySequence("Ctrl+Shift+S"));
+  segments->setToolTip("Show or hide the Segments panel (the segment editor)");
+  view->addAction(segments);
   QAction* studyText = view->addAction("&Patient and study text", this,
                                        [this](bool on) { models_.render.setStudyText(on); });
   studyText->setCheckable(true);

@@ -24,6 +24,7 @@ class QDockWidget;
 
 namespace voxray::ui {
 
+class SegmentPanel;
 class SliceView;
 class StudyBrowserDialog;
 class TfEditorDialog;
@@ -50,6 +51,8 @@ class MainWindow : public QMainWindow {
   ViewGrid& grid() { return *grid_; }
   SessionActions& sessions() { return *sessions_; }
   MovieController& movies() { return *movies_; }
+  SegmentPanel& segments() { return *segmentPanel_; }
+  QDockWidget* segmentDock() { return segmentDock_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
@@ -68,7 +71,7 @@ class MainWindow : public QMainWindow {
   // Where load, render and export errors go: a modal message box unless a test (or an
   // embedding) sets its own sink.
   using ErrorSink = std::function<void(const QString& title, const QString& message)>;
-  void setErrorSink(ErrorSink sink) { errorSink_ = std::move(sink); }
+  void setErrorSink(ErrorSink sink);
 
  signals:
   void volumeShown();  // a loaded volume became the document
@@ -84,6 +87,7 @@ class MainWindow : public QMainWindow {
  private:
   void buildMenus();
   void wireMeasurements();  // views, side panel and 3D picks share models_.measurements
+  void wireSegments();      // the Segments dock, the slice views' overlays and tools, the 3D view
   void rebuildRecentMenu();
   void openDicomFolder();
   void openRaw();
@@ -117,6 +121,8 @@ class MainWindow : public QMainWindow {
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
   SessionActions* sessions_ = nullptr;
   QDockWidget* measureDock_ = nullptr;  // View → Measurements reopens it
+  QDockWidget* segmentDock_ = nullptr;  // View → Segments
+  SegmentPanel* segmentPanel_ = nullptr;
   SessionInput loading_;                // the input being loaded, for AppModels::source
   MovieController* movies_ = nullptr;   // File → Export movie, in the background
   TfEditorDialog* tfEditor_ = nullptr;  // View → Transfer function editor, made when first asked

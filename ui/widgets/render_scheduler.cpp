@@ -71,6 +71,24 @@ void RenderScheduler::endInteraction() {
   requestFrame();
 }
 
+void RenderScheduler::updateSegmentation(SegmentationModel& model) {
+  const SegmentationModel::Edits edits = model.takeEdits();
+  if (!model.active() || model.segmentation().segments.empty()) {
+    worker_->setSegmentation(nullptr);
+    sentSegmentation_ = false;
+  } else if (edits.whole || !sentSegmentation_) {
+    // The render thread's own copy: the model goes on changing while it renders.
+    worker_->setSegmentation(std::make_shared<const Segmentation>(model.segmentation()));
+    sentSegmentation_ = true;
+  } else {
+    // After an edit only its box travels (and the list: colours, visibility).
+    worker_->updateSegmentation(
+        model.segmentation().segments,
+        edits.any ? copyLabels(model.segmentation(), edits.lo, edits.hi) : LabelPatch{});
+  }
+  requestFrame();
+}
+
 RenderParams RenderScheduler::fullParams() const {
   return planFrame(state_.params(), state_.quality(), {viewSize_.width(), viewSize_.height()},
                    false, doc_.minSpacingMm());

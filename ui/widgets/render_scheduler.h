@@ -16,6 +16,7 @@
 #include "progressive_render.h"
 #include "render_state_model.h"
 #include "render_worker.h"
+#include "segmentation_model.h"
 #include "status_text.h"
 #include "volume_document.h"
 
@@ -44,6 +45,9 @@ class RenderScheduler : public QObject {
   // Renders the view's full-quality frame once more with each pixel's iso hit; the result
   // arrives as pickReady (Frame::hits, the frame's own size).
   void requestPick();
+  // The segmentation model changed: the 3D view's copy takes its edits (setSegmentation after
+  // a load, updateSegmentation of the edited box after an edit) and a frame follows.
+  void updateSegmentation(SegmentationModel& model);
 
  signals:
   void frameReady(std::shared_ptr<const voxray::Frame> frame);
@@ -80,6 +84,7 @@ class RenderScheduler : public QObject {
   AdaptiveQuality adaptive_;
   ProgressiveRender progressive_;  // cinematic: the next pass while the view is still
   int stateConnection_ = 0, docConnection_ = 0;
+  bool sentSegmentation_ = false;  // the worker holds a segmentation: edits send their box
 };
 
 }  // namespace voxray::ui

@@ -11,6 +11,7 @@
 #include "gui_post.h"
 #include "measure_overlay.h"
 #include "qt_image.h"
+#include "segment_overlay.h"
 #include "slice_clip.h"
 #include "slice_image.h"
 #include "slice_overlay.h"
@@ -54,6 +55,8 @@ SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crossha
 
 SliceView::~SliceView() {
   if (measurements_) measurements_->changed.disconnect(measureConnection_);
+  if (segmentation_) segmentation_->changed.disconnect(segConnection_);
+  if (segmentTools_) segmentTools_->changed.disconnect(toolConnection_);
   doc_.changed.disconnect(docConnection_);
   crosshair_.changed.disconnect(crossConnection_);
   wl_.changed.disconnect(wlConnection_);
@@ -80,6 +83,99 @@ void SliceView::setMeasurements(MeasurementModel* m) {
 void SliceView::setExporting(bool on) {
   exporting_ = on;
   update();
+}
+
+void SliceView::setSegmentation(SegmentationModel* model, SegmentToolModel* tools) {
+  if (segmentation_) segmentation_->changed.disconnect(segConnection_);
+  if (segmentTools_) segmentTools_->changed.disconnect(toolConnection_);
+  segmentation_ = model;
+  segmentTools_ = tools;
+  if (model)
+    segConnection_ = model->changed.connect([this] {
+      refreshSegmentOverlay();
+      update();
+    });
+  if (tools)
+    toolConnection_ = tools->changed.connect([this] {
+      refreshSegmentOverlay();
+      update();
+    });
+  refreshSegmentOverlay();
+  update();
+}
+
+void SliceView::refreshSegmentOverlay() {
+  segmentOverlay_ = {};
+  previewOverlay_ = {};
+  if (!shown_ || doc_.empty()) return;
+  const Volume& v = *doc_.volume();
+  const PlaneGrid& plane = shown_->plane;
+  const Segmentation* seg = nullptr;
+  if (segmentation_ && segmentation_->active() &&
+      sameGrid(segmentation_->segmentation().grid, gridOf(v)))
+    seg = &segmentation_->segmentation();
+  if (seg && !seg->segments.empty()) segmentOverlay_ = toQImage(segmentOverlay(*seg, plane));
+  if (segmentTools_ && segmentTools_->settings().tool == SegmentTool::Threshold) {
+    // The preview in the chosen segment's colour (a yellow without one).
+    glm::vec3 colour(1.0f, 0.85f, 0.1f);
+    if (seg)
+      if (const Segment* s = seg->find(segmentTools_->settings().label)) colour = s->colour;
+    try {
+      previewOverlay_ =
+          toQImage(thresholdOverlay(v, plane, segmentTools_->settings().range, colour));
+    } catch (const std::exception&) {  // a range with lo > hi previews nothing
+    }
+  }
+}
+
+size_t SliceView::thresholdPreviewVoxels() const {
+  if (doc_.empty() || !segmentTools_) return 0;
+  try {
+    return previewCount(*doc_.volume(), axes_.nAxis, crosshair_.sliceOf(axes_),
+                        segmentTools_->settings().range);
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+glm::dvec3 SliceView::toolVoxel(QPointF widget) const {
+  const glm::dvec2 s = toSlice(widget);
+  return crosshair_.viewToVoxel(axes_, s.x, s.y);
+}
+
+bool SliceView::pressSegmentTool(QPointF at) {
+  if (!segmentation_ || !segmentTools_ || doc_.empty()) return false;
+  const SegmentTool tool = segmentTools_->settings().tool;
+  if (tool != SegmentTool::Paint && tool != SegmentTool::Erase && tool != SegmentTool::Seed)
+    return false;
+  if (!sliceRect().contains(at)) return false;
+  try {
+    if (tool == SegmentTool::Seed) {
+      seedClick(*segmentation_, *doc_.volume(), segmentTools_->settings(),
+                nearestVoxel(toolVoxel(at)));
+      drag_ = Drag::None;
+    } else {
+      segmentation_->beginStroke();
+      drag_ = Drag::Brush;
+      brushAt(at);
+    }
+  } catch (const std::exception& e) {
+    emit segmentToolFailed(QString::fromStdString(e.what()));
+  }
+  return true;
+}
+
+void SliceView::brushAt(QPointF at) {
+  if (!sliceRect().contains(at)) return;
+  SegmentToolSettings s = segmentTools_->settings();
+  // A turned plane is no index slice: its brush is the ball (a disc needs an index slice).
+  if (!isIdentity(crosshair_.rotation(orientation_))) s.sphere = true;
+  const glm::dvec3 voxel = toolVoxel(at);
+  const glm::ivec3& dims = doc_.volume()->dims;
+  if (glm::any(glm::lessThan(voxel, glm::dvec3(-0.5))) ||
+      glm::any(glm::greaterThanEqual(voxel, glm::dvec3(dims) - 0.5)))
+    return;
+  brushDab(*segmentation_, s, axes_.nAxis, voxel);
 }
 
 QPointF SliceView::voxelToWidget(const glm::dvec3& voxel) const {
@@ -180,6 +276,7 @@ void SliceView::rebuild() {
       shown_ = now;
     }
   }
+  refreshSegmentOverlay();
   update();
 }
 
@@ -267,7 +364,22 @@ void SliceView::paintEvent(QPaintEvent*) {
   p.fillRect(rect(), Qt::black);
   if (image_.isNull()) return;
   p.drawImage(sliceRect(), image_);
+  // Nearest-neighbour scaling (no smooth transform): each voxel a crisp block of colour.
+  if (!segmentOverlay_.isNull()) p.drawImage(sliceRect(), segmentOverlay_);
+  if (!previewOverlay_.isNull()) p.drawImage(sliceRect(), previewOverlay_);
   paintOverlay(p);
+  if (segmentTools_ && rect().contains(hover_.toPoint()) &&
+      (segmentTools_->settings().tool == SegmentTool::Paint ||
+       segmentTools_->settings().tool == SegmentTool::Erase)) {
+    // The brush's reach: its radius in millimetres at the view's scale.
+    const Volume& v = *doc_.volume();
+    const double mmPerPixel = v.dims[axes_.uAxis] * v.spacingMm[axes_.uAxis] / sliceRect().width();
+    const double r = segmentTools_->settings().radiusMm / mmPerPixel;
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(QColor(255, 255, 255, 200), 1.0));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(hover_, r, r);
+  }
 }
 
 void SliceView::paintOverlay(QPainter& p) {
@@ -313,7 +425,10 @@ void SliceView::mousePressEvent(QMouseEvent* e) {
   drag_ = Drag::None;
   const std::optional<ClickChain> chain = std::exchange(clickChain_, std::nullopt);
   if (doc_.empty()) return;
-  if (e->button() == Qt::LeftButton && pressMeasure(e->position())) {
+  const bool plain = !(e->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
+  if (e->button() == Qt::LeftButton && plain && pressSegmentTool(e->position())) {
+    return;
+  } else if (e->button() == Qt::LeftButton && pressMeasure(e->position())) {
     drag_ = Drag::Handle;
   } else if (e->button() == Qt::LeftButton) {
     dragFace_ = pickClipEdge(e->position());
@@ -379,6 +494,13 @@ void SliceView::mouseMoveEvent(QMouseEvent* e) {
           axes_, std::atan2(a.x() * b.y() - a.y() * b.x(), a.x() * b.x() + a.y() * b.y()));
       break;
     }
+    case Drag::Brush:
+      try {
+        brushAt(e->position());
+      } catch (const std::exception& ex) {
+        emit segmentToolFailed(QString::fromStdString(ex.what()));
+      }
+      break;
     case Drag::None:
       break;
   }
@@ -387,6 +509,7 @@ void SliceView::mouseMoveEvent(QMouseEvent* e) {
 
 void SliceView::mouseReleaseEvent(QMouseEvent*) {
   if (drag_ == Drag::ClipEdge) emit clipDragEnded();
+  if (drag_ == Drag::Brush) segmentation_->endStroke();
   drag_ = Drag::None;
   dragFace_ = -1;
   update();

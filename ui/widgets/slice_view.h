@@ -16,6 +16,8 @@
 #include "crosshair_model.h"
 #include "measurement_model.h"
 #include "render_state_model.h"
+#include "segment_tools.h"
+#include "segmentation_model.h"
 #include "slab_render.h"
 #include "slice_geometry.h"
 #include "slice_overlay.h"
@@ -52,6 +54,17 @@ class SliceView : public QWidget {
   void setMeasurements(MeasurementModel* m);
   // While exporting, measurements show only when the user asked for them in exports.
   void setExporting(bool on);
+  // The segmentation to draw (each visible segment filled and outlined, on every plane: the
+  // overlay takes each pixel's voxel) and the tools that edit it: with Paint or Erase a left
+  // press and drag paints (one undo step), with Seed a left click fills the connected region,
+  // with Threshold the range's voxels on this plane are previewed. Ctrl or Shift with the
+  // press leaves the tools out (the crosshair or measurement as without them).
+  void setSegmentation(SegmentationModel* model, SegmentToolModel* tools);
+  // The segments' overlay and the threshold preview as drawn (the image's size; transparent
+  // where nothing is), and the preview's voxels in this view's slice.
+  const QImage& segmentOverlayImage() const { return segmentOverlay_; }
+  const QImage& thresholdPreviewImage() const { return previewOverlay_; }
+  size_t thresholdPreviewVoxels() const;
 
  signals:
   void doubleClicked();
@@ -60,6 +73,8 @@ class SliceView : public QWidget {
   void clipDragEnded();
   // A slab image rendered in the background is now shown (slabPending() is false).
   void slabShown();
+  // A segment tool could not do what was asked (no segment chosen, a seed outside the range).
+  void segmentToolFailed(const QString& message);
 
  protected:
   void paintEvent(QPaintEvent*) override;
@@ -72,7 +87,7 @@ class SliceView : public QWidget {
   void leaveEvent(QEvent*) override;
 
  private:
-  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan, Handle, Rotate };
+  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan, Handle, Rotate, Brush };
   void rebuild();  // new volume, slice or window: redraw the slice image
   void slabArrived(Image image);
   QRectF sliceRect() const;
@@ -81,7 +96,11 @@ class SliceView : public QWidget {
   void paintOverlay(QPainter& p);
   QPointF voxelToWidget(const glm::dvec3& voxel) const;
   glm::dvec3 widgetToVoxel(QPointF widget) const;  // on this view's slice, clamped into the box
-  bool pressMeasure(QPointF widget);  // true: the press grabbed or started a measurement
+  bool pressMeasure(QPointF widget);
+  bool pressSegmentTool(QPointF widget);  // true: a paint, erase or seed tool took the press
+  void brushAt(QPointF widget);
+  glm::dvec3 toolVoxel(QPointF widget) const;  // the voxel position under the cursor
+  void refreshSegmentOverlay();                // true: the press grabbed or started a measurement
   // Measurements are drawn and taken in the acquisition planes only: not on a turned view or
   // a slab (their points and ROI pixels are index-plane ones).
   bool measurable() const;
@@ -130,6 +149,10 @@ class SliceView : public QWidget {
   int dragId_ = 0, dragIndex_ = 0;
   int angleToFinish_ = 0;  // an angle with its first arm drawn, waiting for its end point
   int measureConnection_ = 0;
+  SegmentationModel* segmentation_ = nullptr;
+  SegmentToolModel* segmentTools_ = nullptr;
+  int segConnection_ = 0, toolConnection_ = 0;
+  QImage segmentOverlay_, previewOverlay_;
   int docConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0, stateConnection_ = 0;
   SlabRenderer slabs_;  // last member: its thread stops before the rest goes
 };

@@ -1,5 +1,7 @@
 #include "volume_view.h"
 
+#include <utility>
+
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -10,6 +12,7 @@
 #include "light_gizmo.h"
 #include "measure_overlay.h"
 #include "qt_image.h"
+#include "segment_scissors.h"
 #include "study_text.h"
 #include "surface_pick.h"
 #include "tf_drag.h"
@@ -62,10 +65,25 @@ void VolumeView::setMeasurements(MeasurementModel* m) {
 }
 
 void VolumeView::onPickFrame(const Frame& f) {
-  if (!pickAt_ || !measurements_ || doc_.empty()) return;
+  if (!pickAt_ || doc_.empty()) return;
   const glm::ivec2 size(f.params.width, f.params.height);
   const glm::ivec2 pixel(glm::floor(*pickAt_ * glm::dvec2(size)));
   pickAt_.reset();
+  if (std::exchange(pickSegment_, false)) {
+    const auto hit = surfaceHitAt(f.hits, size, pixel);
+    const uint8_t label =
+        hit && segmentation_->active() ? segmentAt(segmentation_->segmentation(), *hit) : 0;
+    if (!label) {
+      emit pickMissed(hit ? "No segment there: the click hit the volume outside every segment."
+                          : QString::fromStdString(pickMissMessage(f.params)));
+      return;
+    }
+    SegmentToolSettings s = segmentTools_->settings();
+    s.label = label;
+    segmentTools_->set(s);
+    return;
+  }
+  if (!measurements_) return;
   if (auto hit = surfaceHitAt(f.hits, size, pixel))
     measurements_->addPick(*hit);
   else
@@ -116,6 +134,13 @@ void VolumeView::paintEvent(QPaintEvent*) {
                              if (!at) return std::nullopt;
                              return QPointF(at->x, at->y);
                            });
+  if (lasso_.size() > 1) {
+    painter.resetTransform();
+    painter.setPen(QPen(QColor(255, 80, 80), 1.5, Qt::DashLine));
+    painter.setBrush(QColor(255, 80, 80, 40));
+    painter.drawPolygon(lasso_.data(), int(lasso_.size()));
+    painter.translate(r.topLeft());
+  }
   drawOrientationMarker(painter, proj->g, r.size());
   if (state_.studyText() && !studyTextHidden_)
     drawCornerLines(painter, studyTextLines(v.study), QRect(QPoint(6, 4), r.size()));
@@ -138,13 +163,24 @@ void VolumeView::mousePressEvent(QMouseEvent* e) {
   dragStart_ = lastPos_ = e->position();
   auto proj = projection();
   drag_ = Drag::None;
+  const bool segmentPick =
+      segmentTools_ && segmentation_ && segmentTools_->settings().tool != SegmentTool::None;
   if (e->button() == Qt::LeftButton && (e->modifiers() & Qt::ControlModifier) && proj &&
-      measurements_) {
+      (measurements_ || segmentPick)) {
+    pickSegment_ = segmentPick;
     // A pick, not a drag: the hit arrives with a frame rendered for it (onPickFrame).
     const QRect r = imageRect();
     pickAt_ = toImage(e->position()) / glm::dvec2(std::max(r.width(), 1), std::max(r.height(), 1));
     scheduler_.requestPick();
     return;
+  }
+  if (e->button() == Qt::LeftButton && proj && segmentTools_ && segmentation_ &&
+      segmentTools_->settings().tool == SegmentTool::Scissors &&
+      !(e->modifiers() & (Qt::ShiftModifier | Qt::AltModifier))) {
+    drag_ = Drag::Scissors;
+    lasso_ = {e->position()};
+    update();
+    return;  // no camera interaction: the frame stays as the lasso is drawn on it
   }
   if (e->button() == Qt::LeftButton && !doc_.empty() &&
       (tfDragMode_ || (e->modifiers() & Qt::AltModifier))) {
@@ -179,6 +215,11 @@ void VolumeView::mousePressEvent(QMouseEvent* e) {
 
 void VolumeView::mouseMoveEvent(QMouseEvent* e) {
   if (drag_ == Drag::None || doc_.empty()) return;
+  if (drag_ == Drag::Scissors) {
+    lasso_.push_back(e->position());
+    update();
+    return;
+  }
   QPointF d = e->position() - lastPos_;
   lastPos_ = e->position();
   scheduler_.beginInteraction();
@@ -233,6 +274,22 @@ void VolumeView::mouseMoveEvent(QMouseEvent* e) {
 
 void VolumeView::mouseReleaseEvent(QMouseEvent*) {
   if (drag_ == Drag::None) return;
+  if (drag_ == Drag::Scissors) {
+    drag_ = Drag::None;
+    std::vector<glm::dvec2> polygon;
+    for (const QPointF& p : std::exchange(lasso_, {})) polygon.push_back(toImage(p));
+    auto proj = projection();
+    if (proj && polygon.size() >= 3 && !doc_.empty()) {
+      try {
+        applyScissors(*segmentation_, *doc_.volume(), *proj, polygon,
+                      segmentTools_->settings().label);
+      } catch (const std::exception& e) {
+        emit segmentToolFailed(QString::fromStdString(e.what()));
+      }
+    }
+    update();
+    return;
+  }
   drag_ = Drag::None;
   dragFace_ = -1;
   scheduler_.endInteraction();

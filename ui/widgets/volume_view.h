@@ -9,6 +9,7 @@
 // it, with Ctrl up/down scales the opacity (tf_drag.h; iso: the threshold, mip: the window).
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <QImage>
 #include <QWidget>
@@ -16,6 +17,7 @@
 #include "crosshair_model.h"
 #include "measurement_model.h"
 #include "render_scheduler.h"
+#include "segment_tools.h"
 #include "view_projection.h"
 
 namespace voxray::ui {
@@ -40,6 +42,15 @@ class VolumeView : public QWidget {
   std::optional<ViewProjection> projection() const;
   // The measurements that 3D picks add to and that the view draws (none: no picking).
   void setMeasurements(MeasurementModel* m);
+  // With a segment tool chosen, Ctrl+click picks the segment under the cursor (it becomes
+  // the tools' segment) instead of a measurement point.
+  // With the segment tools' Scissors chosen a left drag draws a lasso; on release it removes
+  // from the chosen segment what lies behind it (segment_scissors.h). Modifiers keep their
+  // meaning (Shift pans, Ctrl picks, Alt shapes the transfer function).
+  void setSegmentation(SegmentationModel* model, SegmentToolModel* tools) {
+    segmentation_ = model;
+    segmentTools_ = tools;
+  }
   // Left drags shape the transfer function instead of turning the volume (View menu).
   void setTransferFunctionDrag(bool on) { tfDragMode_ = on; }
 
@@ -47,6 +58,8 @@ class VolumeView : public QWidget {
   void doubleClicked();
   // A Ctrl+click found no surface: MESSAGE says why (for the status bar).
   void pickMissed(const QString& message);
+  // The scissors could not cut (no segment chosen).
+  void segmentToolFailed(const QString& message);
 
  protected:
   void paintEvent(QPaintEvent*) override;
@@ -59,7 +72,7 @@ class VolumeView : public QWidget {
   void keyPressEvent(QKeyEvent*) override;
 
  private:
-  enum class Drag { None, Rotate, Pan, Zoom, ClipFace, Light, TransferFunction };
+  enum class Drag { None, Rotate, Pan, Zoom, ClipFace, Light, TransferFunction, Scissors };
   glm::dvec2 toImage(QPointF p) const;
 
   RenderStateModel& state_;
@@ -78,6 +91,11 @@ class VolumeView : public QWidget {
   bool tfDragMode_ = false;
   int stateConnection_ = 0, crosshairConnection_ = 0, measureConnection_ = 0;
   MeasurementModel* measurements_ = nullptr;
+  SegmentationModel* segmentation_ = nullptr;
+  SegmentToolModel* segmentTools_ = nullptr;
+  std::vector<QPointF> lasso_;
+  bool pickSegment_ = false;  // the pending Ctrl+click picks a segment, not a measurement        //
+                              // the scissors' polygon so far (widget pixels)
   std::optional<glm::dvec2> pickAt_;  // the Ctrl+click waiting for its hit frame, 0..1 of the image
   void onPickFrame(const Frame& f);
 };

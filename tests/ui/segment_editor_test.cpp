@@ -1,0 +1,438 @@
+// The workstation's segment editor (issue 34) driven through the real widgets: the Segments
+// dock, the slice views' tools and overlays, undo, the 3D view's mask, export and import, and
+// the CLI twin (voxray-cli segment writes the label map the seeded-region click makes).
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include <QAction>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QMenuBar>
+#include <QProcess>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+
+#include "qt_image.h"
+#include "segment_overlay.h"
+#include "segment_panel.h"
+#include "slice_view.h"
+#include "study_state.h"
+#include "voxray/io/orientation.h"
+#include "voxray/io/phantom.h"
+#include "voxray/io/raw_import.h"
+#include "window_fixture.h"
+#ifdef VOXRAY_HAS_SEGMENT_FILES
+#include "voxray/io/segment_files.h"
+#endif
+
+namespace voxray::ui {
+
+namespace {
+
+size_t countLabel(const Segmentation& s, uint8_t label) {
+  size_t n = 0;
+  for (uint8_t l : s.labels) n += l == label;
+  return n;
+}
+
+std::string readAll(const QString& path) {
+  std::ifstream in(path.toStdString(), std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// Pixels of a frame that are not its background (black).
+int litPixels(const QImage& image) {
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) n += (image.pixel(x, y) & 0xffffff) != 0;
+  return n;
+}
+
+}  // namespace
+
+class SegmentEditorTest : public QObject {
+  Q_OBJECT
+  test::PhantomWindow fixture_;
+  QStringList errors_;
+
+  AppModels& models() { return *fixture_.models; }
+  SegmentPanel& panel() { return fixture_.window->segments(); }
+  SliceView& axial() { return fixture_.window->sliceView(0); }
+
+  void setTool(const std::function<void(SegmentToolSettings&)>& edit) {
+    SegmentToolSettings s = models().segmentTools.settings();
+    edit(s);
+    models().segmentTools.set(s);
+  }
+  // Where in the axial view a voxel's centre is drawn (the nearest whole widget pixel).
+  QPoint widgetOf(glm::dvec3 voxel) {
+    const glm::dvec2 s = voxelToSlice(axial().axes(), models().document.volume()->dims, voxel);
+    return axial().toWidget(s.x, s.y).toPoint();
+  }
+  // The voxel position the view takes for a click at P (its own mapping, public parts).
+  glm::dvec3 voxelAt(QPoint p) {
+    const glm::dvec2 s = axial().toSlice(QPointF(p));
+    return models().crosshair.viewToVoxel(axial().axes(), s.x, s.y);
+  }
+  uint8_t addSegment() {
+    fixture_.window->segmentDock()->show();
+    auto* add = panel().findChild<QPushButton*>("segmentAdd");
+    add->click();
+    return panel().currentLabel();
+  }
+
+ private slots:
+  void init() {
+    QVERIFY(fixture_.start());
+    errors_.clear();
+    fixture_.window->setErrorSink(
+        [this](const QString& t, const QString& m) { errors_ << t + ": " + m; });
+  }
+  void cleanup() { fixture_.stop(); }
+
+  // View → Segments (Ctrl+Shift+S) shows and hides the dock.
+  void viewMenuTogglesTheSegmentsDock() {
+    QDockWidget* dock = fixture_.window->segmentDock();
+    QAction* show = fixture_.window->findChild<QAction*>("viewSegments");
+    QVERIFY(fixture_.window->menuBar()->actions().size() > 0);
+    QVERIFY(show);
+    QCOMPARE(show->shortcut(), QKeySequence("Ctrl+Shift+S"));
+    dock->close();
+    QVERIFY(!dock->isVisible());
+    show->trigger();
+    QVERIFY(dock->isVisible());
+  }
+
+  // A 10 mm disc painted at a click: exactly the voxels of the axial slice whose centres lie
+  // within 10 mm of the clicked point (counted here independently), the overlay shows the
+  // segment's colour there, and Undo gives back the empty label map.
+  void paintedDiscChangesItsVoxelsAndUndoRestores() {
+    const Volume& v = *models().document.volume();
+    const uint8_t label = addSegment();
+    QCOMPARE(label, uint8_t(1));
+    models().segmentation.setColour(label, {1.0f, 0.0f, 0.0f});
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Paint;
+      s.radiusMm = 10.0;
+      s.sphere = false;
+    });
+    const int slice = models().crosshair.sliceOf(axial().axes());
+    glm::dvec3 target(30, 34, 0);
+    target[axial().axes().nAxis] = slice;
+    const QPoint click = widgetOf(target);
+    const glm::dvec3 c = voxelAt(click);
+    QVERIFY(glm::length(c - target) < 0.5);  // within half a voxel of the voxel's centre
+    QTest::mouseClick(&axial(), Qt::LeftButton, {}, click);
+    // The disc's voxels: centres within 10 mm of c in slice `slice` (4 mm voxels: ~20).
+    size_t expected = 0;
+    for (int j = 0; j < v.dims.y; ++j)
+      for (int i = 0; i < v.dims.x; ++i) {
+        const double dx = (i - c.x) * v.spacingMm.x, dy = (j - c.y) * v.spacingMm.y;
+        expected += dx * dx + dy * dy <= 100.0;
+      }
+    const Segmentation& seg = models().segmentation.segmentation();
+    QCOMPARE(countLabel(seg, label), expected);
+    QVERIFY(expected >= 16 && expected <= 26);  // pi * 2.5^2 = 19.6 voxels, ± the ring
+    QCOMPARE(seg.labels[v.index(30, 34, slice)], label);
+    // The overlay over the clicked voxel: the segment's red, at half its opacity.
+    const QImage& o = axial().segmentOverlayImage();
+    QVERIFY(!o.isNull());
+    const glm::dvec2 s = voxelToSlice(axial().axes(), v.dims, target);
+    const QColor at = o.pixelColor(int(s.x * o.width() / v.dims[axial().axes().uAxis]),
+                                   int(s.y * o.height() / v.dims[axial().axes().vAxis]));
+    QCOMPARE(at.red(), 255);
+    QCOMPARE(at.green(), 0);
+    QCOMPARE(at.blue(), 0);
+    QCOMPARE(at.alpha(), int(std::lround(255 * kSegmentFillShare)));
+    // A drag is one undo step too; the panel's Undo takes back the drag, then the click.
+    const auto afterClick = seg.labels;
+    QTest::mousePress(&axial(), Qt::LeftButton, {}, widgetOf(target + glm::dvec3(0, 8, 0)));
+    for (int k = 1; k <= 6; ++k)
+      QTest::mouseMove(&axial(), widgetOf(target + glm::dvec3(k * 2, 8, 0)));
+    QTest::mouseRelease(&axial(), Qt::LeftButton, {}, widgetOf(target + glm::dvec3(12, 8, 0)));
+    QVERIFY(countLabel(seg, label) > expected + 40);
+    panel().findChild<QPushButton*>("segmentUndo")->click();
+    QVERIFY(seg.labels == afterClick);
+    panel().findChild<QPushButton*>("segmentUndo")->click();
+    QCOMPARE(countLabel(seg, label), size_t(0));
+    QVERIFY(errors_.isEmpty());
+  }
+
+  // The preview's voxels in the axial slice are the threshold's: after Apply the segment
+  // holds exactly that many there.
+  void thresholdPreviewCountEqualsTheMask() {
+    const Volume& v = *models().document.volume();
+    const uint8_t label = addSegment();
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Threshold;
+      s.range = {700, 3000};
+    });
+    const size_t preview = axial().thresholdPreviewVoxels();
+    QVERIFY(preview > 20);  // the skull's ring
+    QVERIFY(!axial().thresholdPreviewImage().isNull());
+    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
+    const int slice = models().crosshair.sliceOf(axial().axes());
+    size_t inSlice = 0;
+    for (int y = 0; y < v.dims.y; ++y)
+      for (int x = 0; x < v.dims.x; ++x)
+        inSlice += models().segmentation.segmentation().labels[v.index(x, y, slice)] == label;
+    QCOMPARE(inSlice, preview);
+    // The statistics table: the segment's voxels as counted here, copied tab-separated.
+    const size_t voxels = countLabel(models().segmentation.segmentation(), label);
+    panel().updateStatistics();
+    const QStringList lines = panel().statisticsText().split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 2);
+    QVERIFY(lines[0].startsWith("Segment\tVoxels\tVolume mL"));
+    const QStringList cells = lines[1].split('\t');
+    QCOMPARE(cells[0], QString("Segment 1"));
+    QCOMPARE(cells[1], QString::number(voxels));
+    // 4 mm voxels: 0.064 mL each.
+    QCOMPARE(cells[2], QString::number(voxels * 0.064, 'f', 3));
+    // A name typed into the list is one undo step of the model.
+    auto* list = panel().findChild<QTableWidget*>("segmentList");
+    list->item(0, 2)->setText("Bone");
+    QCOMPARE(models().segmentation.segmentation().segments[0].name, std::string("Bone"));
+    panel().findChild<QPushButton*>("segmentUndo")->click();
+    QCOMPARE(models().segmentation.segmentation().segments[0].name, std::string("Segment 1"));
+    QCOMPARE(list->item(0, 2)->text(), QString("Segment 1"));
+    // From W/L: level ± width / 2.
+    models().windowLevel.set({400, 40});
+    panel().findChild<QPushButton*>("segmentFromWindow")->click();
+    QCOMPARE(models().segmentTools.settings().range.lo, -160.0);
+    QCOMPARE(models().segmentTools.settings().range.hi, 240.0);
+  }
+
+  // dvr with a ball painted over the top of the skull: Show only leaves what the ball covers
+  // (fewer lit pixels, but some), Hide the rest, Off all of it again.
+  void shownMaskChangesThe3DFrame() {
+    // The first sharp dvr frame rendered after CHANGE with the render state's mask then (a
+    // frame asked for before the change may still arrive after it).
+    auto frameAfter = [this](const std::function<void()>& change) {
+      QSignalSpy spy(&fixture_.window->scheduler(), &RenderScheduler::frameReady);
+      change();
+      const RenderParams wanted = models().render.params();
+      for (int tries = 0; tries < 600; ++tries) {
+        while (!spy.isEmpty()) {
+          auto f = spy.takeFirst().at(0).value<std::shared_ptr<const Frame>>();
+          if (!f->interactive && f->params.mode == Mode::Dvr &&
+              f->params.segmentMask == wanted.segmentMask)
+            return toQImage(f->image);
+        }
+        spy.wait(100);
+      }
+      qFatal("no sharp dvr frame within 60 s");
+    };
+    const QImage all = frameAfter([this] {
+      models().render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Dvr; });
+    });
+    const int allLit = litPixels(all);
+    const uint8_t label = addSegment();
+    // The skull's top: z semi-axis 0.79 of the 128 mm half box above a 5 mm offset.
+    models().segmentation.paintSphere({32, 32, 56}, 28.0, label);
+    QComboBox* mask = panel().findChild<QComboBox*>("segmentMask3d");
+    const QImage shownFrame =
+        frameAfter([mask] { mask->setCurrentIndex(int(MaskChoice::ShowOnly)); });
+    QCOMPARE(toString(models().render.params().segmentMask), std::string("show:1"));
+    const int shown = litPixels(shownFrame);
+    const int off = litPixels(frameAfter([mask] { mask->setCurrentIndex(int(MaskChoice::Off)); }));
+    // A ball over the whole head, hidden: nothing is left (the edit reaches the 3D view too).
+    models().segmentation.paintSphere({32, 32, 32}, 400.0, label);
+    const int hidden =
+        litPixels(frameAfter([mask] { mask->setCurrentIndex(int(MaskChoice::Hide)); }));
+    qInfo("lit pixels: all %d, show only %d, off again %d, hide all %d", allLit, shown, off,
+          hidden);
+    QVERIFY(shown > 50);
+    QVERIFY(shown < allLit * 3 / 4);
+    QVERIFY(std::abs(off - allLit) <= allLit / 50);  // back to the whole head (the blend tints it)
+    QCOMPARE(hidden, 0);
+  }
+
+  // The seeded-region click and voxray-cli segment --threshold --seed --connectivity give the
+  // same label map byte for byte (.labels.raw).
+  void cliTwinWritesTheSameLabelMap() {
+    const Volume& v = *models().document.volume();
+    addSegment();
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Seed;
+      s.range = {700, 3000};
+      s.connectivity = Connectivity::Full26;
+    });
+    // A skull voxel of the axial slice: outward along the screen's x from the centre.
+    const int slice = models().crosshair.sliceOf(axial().axes());
+    glm::ivec3 seed(-1);
+    for (int x = v.dims.x - 1; x > v.dims.x / 2 && seed.x < 0; --x) {
+      glm::ivec3 p(v.dims.x / 2);
+      p[axial().axes().uAxis] = x;
+      p[axial().axes().nAxis] = slice;
+      if (v.toPhysical(v.at(p.x, p.y, p.z)) >= 700) seed = p;
+    }
+    QVERIFY(seed.x >= 0);
+    const QPoint click = widgetOf(glm::dvec3(seed));
+    QCOMPARE(nearestVoxel(voxelAt(click)), seed);
+    QTest::mouseClick(&axial(), Qt::LeftButton, {}, click);
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+    QVERIFY(countLabel(models().segmentation.segmentation(), 1) > 1000);
+    QTemporaryDir dir;
+    const QString mine = dir.filePath("workstation.labels.raw");
+    const QString cli = dir.filePath("cli.labels.raw");
+    QVERIFY(panel().exportTo(mine));
+    QProcess p;
+    p.start(VOXRAY_CLI, {"segment", "--phantom-size", "64", "--threshold", "700,3000", "--seed",
+                         QString("%1:%2:%3").arg(seed.x).arg(seed.y).arg(seed.z), "--connectivity",
+                         "26", "-o", cli});
+    QVERIFY(p.waitForFinished(60000));
+    QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+    const std::string a = readAll(mine), b = readAll(cli);
+    QCOMPARE(a.size(), v.voxelCount());
+    QVERIFY(a == b);
+  }
+
+  // Export never replaces a file unless the user says yes; Import of a label map made on
+  // another grid is refused with the difference shown and keeps the segments.
+  void exportAsksBeforeReplacingAndImportShowsAMismatch() {
+    addSegment();
+    models().segmentation.paintSphere({32, 32, 32}, 12.0, 1);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("seg.labels.raw");
+    QVERIFY(panel().exportTo(path));
+    const std::string first = readAll(path);
+    models().segmentation.paintSphere({20, 32, 32}, 12.0, 1);
+    QStringList asked;
+    panel().setConfirmOverwrite([&](const QString& p) {
+      asked << p;
+      return false;
+    });
+    QVERIFY(!panel().exportTo(path));
+    QCOMPARE(asked, QStringList{path});
+    QVERIFY(readAll(path) == first);  // untouched
+    panel().setConfirmOverwrite([](const QString&) { return true; });
+    QVERIFY(panel().exportTo(path));
+    QVERIFY(readAll(path) != first);
+#ifdef VOXRAY_HAS_SEGMENT_FILES
+    // A label map on the 32-voxel phantom's grid: not this volume's.
+    const Volume small = makeHeadPhantom(32);
+    Segmentation other = emptySegmentation(small);
+    Segment s;
+    s.label = 1;
+    s.name = "Other";
+    other.segments.push_back(s);
+    other.labels[other.grid.index(16, 16, 16)] = 1;
+    const QString nifti = dir.filePath("other.nii");
+    writeSegmentationNifti(nifti.toStdString(), other);
+    const auto before = models().segmentation.segmentation().labels;
+    QVERIFY(!panel().importFrom(nifti));
+    QCOMPARE(errors_.size(), 1);
+    qInfo("%s", qPrintable(errors_.first()));
+    QVERIFY(errors_.first().contains("Cannot import"));
+    QVERIFY(errors_.first().contains("32"));  // the other grid's size is named
+    QVERIFY(models().segmentation.segmentation().labels == before);
+    // This volume's own label map comes back whole.
+    const QString own = dir.filePath("own.nii");
+    writeSegmentationNifti(own.toStdString(), models().segmentation.segmentation());
+    models().segmentation.paintSphere({40, 32, 32}, 8.0, 1);
+    QVERIFY(panel().importFrom(own));
+    QVERIFY(models().segmentation.segmentation().labels == before);
+#endif
+  }
+
+  // Scissors: a lasso around the whole 3D image removes the segment (what lies behind it),
+  // one undo step; with no segment chosen the status bar says so.
+  void scissorsLassoInThe3DViewCutsOneUndoStep() {
+    const uint8_t label = addSegment();
+    models().segmentation.paintSphere({32, 32, 32}, 20.0, label);
+    const size_t ball = countLabel(models().segmentation.segmentation(), label);
+    QVERIFY(ball > 100);
+    setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::Scissors; });
+    VolumeView& view = fixture_.window->volumeView();
+    const QRect r = view.imageRect();
+    const QPoint corners[] = {r.topLeft() + QPoint(2, 2), r.topRight() + QPoint(-2, 2),
+                              r.bottomRight() + QPoint(-2, -2), r.bottomLeft() + QPoint(2, -2)};
+    QTest::mousePress(&view, Qt::LeftButton, {}, corners[0]);
+    for (const QPoint& c : corners) QTest::mouseMove(&view, c);
+    QTest::mouseRelease(&view, Qt::LeftButton, {}, corners[3]);
+    QCOMPARE(countLabel(models().segmentation.segmentation(), label), size_t(0));
+    QCOMPARE(QString::fromStdString(models().segmentation.undoText()), QString("Undo Scissors"));
+    models().segmentation.undo();
+    QCOMPARE(countLabel(models().segmentation.segmentation(), label), ball);
+  }
+
+  // With a segment tool chosen, Ctrl+click in the 3D view picks the segment it hits (the
+  // skull, seen from the front) and the list selects it.
+  void ctrlClickIn3DPicksTheSegment() {
+    const uint8_t other = addSegment();
+    models().segmentation.paintSphere({32, 32, 32}, 8.0, other);  // inside the head: unseen
+    const uint8_t skull = addSegment();
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Threshold;
+      s.range = {700, 3000};
+    });
+    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
+    panel().selectLabel(other);
+    QCOMPARE(models().segmentTools.settings().label, other);
+    VolumeView& view = fixture_.window->volumeView();
+    QSignalSpy picked(&fixture_.window->scheduler(), &RenderScheduler::pickReady);
+    QTest::mouseClick(&view, Qt::LeftButton, Qt::ControlModifier, view.imageRect().center());
+    QVERIFY(picked.wait(60000));
+    QCoreApplication::processEvents();
+    QCOMPARE(models().segmentTools.settings().label, skull);
+    QCOMPARE(panel().currentLabel(), skull);
+    QVERIFY(models().measurements.items().empty());  // no measurement point was added
+  }
+
+  // README's docs/images/segment-skull.png (run with VOXRAY_SEGMENT_SHOT=PATH under
+  // xvfb-run -s "-screen 0 1920x1080x24"): CThead with a bone segment (threshold, largest
+  // island) shown in 3D and overlaid in the slice views. Skipped otherwise.
+  void readmeScreenshot() {
+    const QString shot = qEnvironmentVariable("VOXRAY_SEGMENT_SHOT");
+    if (shot.isEmpty()) QSKIP("set VOXRAY_SEGMENT_SHOT=PATH to write the README's screenshot");
+    RawLayout l;  // voxray-cli's --raw-dims 256,256 --raw-type i16 --raw-endian big ...
+    l.dims = {256, 256, 0};
+    l.type = SampleType::I16;
+    l.order = ByteOrder::Big;
+    l.spacingMm = {1.0, 1.0, 2.0};
+    l.slope = 1.0;
+    l.intercept = -1024.0;
+    l.direction = directionFromAxesCode("LPI");
+    auto v = std::make_shared<const Volume>(
+        importRaw(std::string(VOXRAY_DATA_DIR) + "/stanford/CThead", l));
+    Quality q = models().render.quality();
+    q.resolution = {0, 0};  // the view's size
+    models().render.setQuality(q);
+    fixture_.window->resize(1900, 1040);
+    openStudy(models(), v, "CThead");
+    models().render.update(kAppearance | kCamera, [](RenderParams& p) {
+      p.mode = Mode::Dvr;
+      p.preset = "CT-Bone";
+      p.camera.azimuthDeg = 30.0;
+    });
+    const uint8_t label = addSegment();
+    models().segmentation.rename(label, "Skull");
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Threshold;
+      s.range = {300, 3000};
+    });
+    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
+    panel()
+        .findChild<QComboBox*>("segmentOperation")
+        ->setCurrentIndex(int(MaskOperation::KeepLargest));
+    panel().findChild<QPushButton*>("segmentApplyOperation")->click();
+    setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::None; });
+    models().segmentation.setColour(label, {0.95f, 0.75f, 0.35f});
+    // 3D: the segment alone, in its colour (Show only).
+    panel().findChild<QComboBox*>("segmentMask3d")->setCurrentIndex(int(MaskChoice::ShowOnly));
+    panel().updateStatistics();
+    fixture_.window->segmentDock()->show();
+    fixture_.window->segmentDock()->raise();
+    QVERIFY(errors_.isEmpty());
+    test::waitFullFrame(*fixture_.window);
+    QTest::qWait(500);
+    QVERIFY(fixture_.window->grab().save(shot));
+  }
+};
+
+}  // namespace voxray::ui
+
+QTEST_MAIN(voxray::ui::SegmentEditorTest)
+#include "segment_editor_test.moc"

@@ -1,0 +1,82 @@
+#pragma once
+// The Segments side panel (issue 34's segment editor): the segment list (add, remove,
+// rename, colour, opacity, visibility, category and type as free text) with undo and redo of
+// the SegmentationModel, Import and Export of segmentation files, the slice views' tools
+// (threshold, paint, erase, seeded region) and the operations on a segment (islands, holes,
+// margin, smoothing, logical), the 3D view's mask and blend, and the statistics table.
+// Thin: the models and voxray/io do the work (segment_tools.h).
+#include <functional>
+
+#include <QWidget>
+
+#include "app_models.h"
+#include "voxray/io/segment_stats.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QSlider;
+class QTableWidget;
+class QCheckBox;
+class QDockWidget;
+
+namespace voxray::ui {
+
+class SegmentPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit SegmentPanel(AppModels& models, QWidget* parent = nullptr);
+
+  // Where errors go (a message box unless set) and who says yes to replacing a file (a
+  // question box unless set): tests answer for the user.
+  void setErrorSink(std::function<void(const QString& title, const QString& message)> sink) {
+    error_ = std::move(sink);
+  }
+  void setConfirmOverwrite(std::function<bool(const QString& path)> confirm) {
+    confirm_ = std::move(confirm);
+  }
+  // Writes the segmentation to PATH by its extension (writeSegmentationOutput), after asking
+  // when PATH exists; false when nothing was written (refused, or an error shown).
+  bool exportTo(const QString& path);
+  // Reads PATH onto the open volume (readSegmentationFile); false with the error shown.
+  bool importFrom(const QString& path);
+  // The statistics as shown: a header line and one tab-separated line per segment.
+  QString statisticsText() const;
+  void updateStatistics();
+  uint8_t currentLabel() const;
+  void selectLabel(uint8_t label);
+
+ private:
+  void refreshList();
+  void refreshTools();
+  void ensureActive();  // a segmentation on the open volume before the first segment
+  void addSegment();
+  void chooseColour(int row);
+  void editCell(int row, int column);
+  void setTools(const std::function<void(SegmentToolSettings&)>& edit);
+  void runOperation();
+  void runLogical();
+  void exportDialog();
+  void importDialog();
+  void saveCsv();
+  void fail(const QString& title, const QString& message);
+
+  AppModels& m_;
+  std::function<void(const QString&, const QString&)> error_;
+  std::function<bool(const QString&)> confirm_;
+  QTableWidget* list_;
+  QPushButton *undo_, *redo_;
+  QComboBox *tool_, *connectivity_, *operation_, *logicalOp_, *other_, *mask3d_;
+  QDoubleSpinBox *radius_, *lo_, *hi_, *value_;
+  QCheckBox *sphere_, *overwrite_;
+  QLabel* preview_;
+  QSlider* blend_;
+  QTableWidget* stats_;
+  std::vector<SegmentStats> lastStats_;
+  bool refreshing_ = false;
+};
+
+QDockWidget* makeSegmentDock(AppModels& models, SegmentPanel** panel = nullptr);
+
+}  // namespace voxray::ui
