@@ -10,6 +10,7 @@
 #include "no_qt.h"
 #include "render_state_model.h"
 #include "session.h"
+#include "time_series.h"
 #include "volume_document.h"
 #include "window_level.h"
 
@@ -21,6 +22,7 @@ struct AppModels {
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
   MeasurementModel measurements;  // a session keeps them (session_state.cpp)
+  TimePlayer player;              // a 4D series' play rate and state (the document: its point)
   LightingFigures lighting;       // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;

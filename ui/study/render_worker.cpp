@@ -26,9 +26,11 @@ RenderWorker::~RenderWorker() {
   task_.wait();
 }
 
-void RenderWorker::setVolume(std::shared_ptr<const Volume> volume) {
+void RenderWorker::setVolume(std::shared_ptr<const Volume> volume, bool sameSeries) {
   {
     std::lock_guard lock(mutex_);
+    // A time point after a new study not yet taken still belongs to that study.
+    pendingSameSeries_ = sameSeries && (!pendingVolume_ || pendingSameSeries_);
     pendingVolume_ = std::move(volume);
   }
   wake_.notify_all();
@@ -121,6 +123,38 @@ void RenderWorker::reportError(const std::string& message, bool volumeRejected) 
     task_.post([f = callbacks_.error, message, volumeRejected] { f(message, volumeRejected); });
 }
 
+void RenderWorker::selectTimePoint(ClContext& ctx, const std::shared_ptr<const Volume>& next,
+                                   std::vector<Uploaded>& uploaded, VolumeResidency& residency,
+                                   Raycaster*& shown) const {
+  auto find = [&](const void* key) {
+    return std::find_if(uploaded.begin(), uploaded.end(),
+                        [&](const Uploaded& u) { return u.volume.get() == key; });
+  };
+  const VolumeResidency::Use use = residency.use(next.get(), next->byteSize());
+  for (const void* key : use.evict) {
+    auto it = find(key);
+    if (it != uploaded.end() && it->raycaster.get() != shown) uploaded.erase(it);
+  }
+  auto it = find(next.get());
+  if (it == uploaded.end()) {
+    try {
+      uploaded.push_back({next, std::make_unique<Raycaster>(ctx, *next)});
+      it = std::prev(uploaded.end());
+    } catch (const std::exception& e) {
+      // The time point shown stays on screen (no study to undo); the next switch counts
+      // the uploaded volumes again.
+      residency.clear();
+      for (const Uploaded& u : uploaded) residency.use(u.volume.get(), u.volume->byteSize());
+      reportError(e.what(), false);
+    }
+  }
+  if (it != uploaded.end()) shown = it->raycaster.get();
+  // The raycaster shown before may have been over the budget: released once replaced.
+  std::erase_if(uploaded, [&](const Uploaded& u) {
+    return u.raycaster.get() != shown && !residency.resident(u.volume.get());
+  });
+}
+
 void RenderWorker::run() {
   std::unique_ptr<ClContext> ctx;
   try {
@@ -130,8 +164,11 @@ void RenderWorker::run() {
   } catch (const std::exception& e) {
     reportError(e.what(), false);
   }
-  std::unique_ptr<Raycaster> raycaster;
-  std::shared_ptr<const Volume> volume;  // kept alive while the raycaster uses it
+  // The uploaded volumes (one, or time points of a 4D series), each kept alive while its
+  // raycaster uses it; RAYCASTER renders the one shown.
+  std::vector<Uploaded> uploaded;
+  Raycaster* raycaster = nullptr;
+  std::unique_ptr<VolumeResidency> residency;
   Image view;                            // the last view frame: banded frames paint over it
   std::thread builder;                   // prepare()'s builds; joined before ctx goes
   struct Join {
@@ -142,6 +179,7 @@ void RenderWorker::run() {
   } join{builder};
   while (true) {
     std::shared_ptr<const Volume> nextVolume;
+    bool sameSeries = false;
     std::optional<Request> req;
     std::vector<RenderParams> prepare;
     {
@@ -153,6 +191,7 @@ void RenderWorker::run() {
       if (task_.cancelled()) return;
       if (raycaster) prepare = std::exchange(pendingPrepare_, {});
       nextVolume = std::move(pendingVolume_);
+      sameSeries = pendingSameSeries_;
       pendingVolume_.reset();
       if (pendingExport_) {
         req = std::move(pendingExport_);
@@ -179,11 +218,25 @@ void RenderWorker::run() {
       wake_.notify_all();
     }
     if (nextVolume) {
-      try {
-        raycaster = std::make_unique<Raycaster>(*ctx, *nextVolume);
-        volume = nextVolume;
-      } catch (const std::exception& e) {
-        reportError(e.what(), true);
+      if (!residency)
+        residency = std::make_unique<VolumeResidency>(
+            residencyBudget(ctx->device().isGpu, ctx->device().globalMemBytes));
+      if (!sameSeries) {
+        // Another study: it replaces every volume uploaded, once it is on the device (a
+        // failed upload leaves the last study rendering).
+        try {
+          auto next = std::make_unique<Raycaster>(*ctx, *nextVolume);
+          raycaster = nullptr;
+          uploaded.clear();
+          residency->clear();
+          residency->use(nextVolume.get(), nextVolume->byteSize());
+          uploaded.push_back({nextVolume, std::move(next)});
+          raycaster = uploaded.back().raycaster.get();
+        } catch (const std::exception& e) {
+          reportError(e.what(), true);
+        }
+      } else {
+        selectTimePoint(*ctx, nextVolume, uploaded, *residency, raycaster);
       }
     }
     if (!req || !raycaster) continue;

@@ -17,6 +17,7 @@
 #include "background_task.h"
 #include "no_qt.h"
 #include "refine_bands.h"
+#include "time_series.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
@@ -57,7 +58,11 @@ class RenderWorker {
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
 
-  void setVolume(std::shared_ptr<const Volume> volume);
+  // The volume to render. SAMESERIES: another time point of the series shown (a 4D
+  // series): volumes of the series uploaded before stay on the device within
+  // residencyBudget (time_series.h), so that switching back needs no upload; otherwise
+  // (another study) every uploaded volume is released first.
+  void setVolume(std::shared_ptr<const Volume> volume, bool sameSeries = false);
   // WITHHITS: also each pixel's iso first hit or dvr first opaque point (Frame::hits), for
   // picking in 3D.
   void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
@@ -74,12 +79,24 @@ class RenderWorker {
   void buildLoop(ClContext& ctx);
   void run();
   void reportError(const std::string& message, bool volumeRejected) const;
+  // The volumes on the device (one, or time points of a 4D series), each kept alive while
+  // its raycaster uses it.
+  struct Uploaded {
+    std::shared_ptr<const Volume> volume;
+    std::unique_ptr<Raycaster> raycaster;
+  };
+  // Makes NEXT, a time point of the series shown, the one SHOWN renders: from UPLOADED when
+  // it is there, else uploaded, releasing what RESIDENCY evicts. A failed upload keeps SHOWN.
+  void selectTimePoint(ClContext& ctx, const std::shared_ptr<const Volume>& next,
+                       std::vector<Uploaded>& uploaded, VolumeResidency& residency,
+                       Raycaster*& shown) const;
 
   std::string device_;
   RenderCallbacks callbacks_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::shared_ptr<const Volume> pendingVolume_;
+  bool pendingSameSeries_ = false;
   struct Request {
     RenderParams params;
     bool interactive;

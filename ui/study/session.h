@@ -59,6 +59,13 @@ struct Session {
   // colour and opacity lists and curve (the table alone loses them). Optional in the file.
   std::optional<VolumeProperty> transferFunction;
   std::string measurements = "[]";  // a JSON array owned by the measuring tools, kept as read
+  // A 4D series: the time point on screen (0-based) and the play rate (frames per second).
+  // Optional in the file ("time"); written only for a series of more than one time point.
+  struct Time {
+    int point = 0;
+    double fps = 10.0;
+  };
+  std::optional<Time> time;
 };
 
 struct SessionRead {

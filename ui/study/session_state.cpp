@@ -24,6 +24,11 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   s.overlays = m.render.overlays();
   s.transferFunction = m.render.shapedTransferFunction();
   s.measurements = measurementsToJson(m.measurements).at("items").dump();
+  if (m.document.timePoints() > 1) {
+    s.time = Session::Time{m.document.timePoint(), m.player.fps()};
+    // voxray-cli render --session opens the input with its flags: this time point.
+    s.input.flags["time"] = std::to_string(m.document.timePoint());
+  }
   return s;
 }
 
@@ -61,6 +66,11 @@ void applySession(AppModels& m, const Session& s) {
     m.crosshair.setSlab(Orientation(o), s.views[o].slab);
   }
   m.crosshair.setPlanes(s.centre.value_or(glm::dvec3(s.crosshair)), rotations);
+  if (s.time) {
+    m.player.pause();
+    m.player.setFps(s.time->fps);
+    m.document.setTimePoint(s.time->point);  // out of range (another series): stays
+  }
 }
 
 bool isSessionPath(const std::string& path) {

@@ -25,6 +25,7 @@ class QDockWidget;
 namespace voxray::ui {
 
 class SliceView;
+class TimePanel;
 class TfEditorDialog;
 class VolumeView;
 
@@ -49,6 +50,8 @@ class MainWindow : public QMainWindow {
   ViewGrid& grid() { return *grid_; }
   SessionActions& sessions() { return *sessions_; }
   MovieController& movies() { return *movies_; }
+  TimePanel& timePanel() { return *timePanel_; }
+  QDockWidget& timeDock() { return *timeDock_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
@@ -75,7 +78,9 @@ class MainWindow : public QMainWindow {
 
  private:
   void buildMenus();
-  void wireMeasurements();  // views, side panel and 3D picks share models_.measurements
+  void wireMeasurements();
+  void wireTime();
+  void showLoadWarnings();  // views, side panel and 3D picks share models_.measurements
   void rebuildRecentMenu();
   void openDicomFolder();
   void openRaw();
@@ -105,6 +110,9 @@ class MainWindow : public QMainWindow {
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
   SessionActions* sessions_ = nullptr;
   QDockWidget* measureDock_ = nullptr;  // View → Measurements reopens it
+  QDockWidget* timeDock_ = nullptr;     // a 4D series' time slider, play and curve
+  TimePanel* timePanel_ = nullptr;
+  int loadingTimePoint_ = 0;  // the time point to show first of the input being loaded
   SessionInput loading_;                // the input being loaded, for AppModels::source
   MovieController* movies_ = nullptr;   // File → Export movie, in the background
   TfEditorDialog* tfEditor_ = nullptr;  // View → Transfer function editor, made when first asked

@@ -45,12 +45,18 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
     worker_->setVolume(doc_.volume());
     requestFrame();
   });
+  // Another time point: the same camera and look on its volume (kept on the device).
+  timeConnection_ = doc_.timeChanged.connect([this] {
+    worker_->setVolume(doc_.volume(), true);
+    requestFrame();
+  });
   if (!doc_.empty()) worker_->setVolume(doc_.volume());
 }
 
 RenderScheduler::~RenderScheduler() {
   state_.changed.disconnect(stateConnection_);
   doc_.changed.disconnect(docConnection_);
+  doc_.timeChanged.disconnect(timeConnection_);
   worker_.reset();  // joins the render thread before the callbacks' target goes away
 }
 

@@ -130,7 +130,7 @@ class SliceView : public QWidget {
   int dragId_ = 0, dragIndex_ = 0;
   int angleToFinish_ = 0;  // an angle with its first arm drawn, waiting for its end point
   int measureConnection_ = 0;
-  int docConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0, stateConnection_ = 0;
+  int docConnection_ = 0, timeConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0, stateConnection_ = 0;
   SlabRenderer slabs_;  // last member: its thread stops before the rest goes
 };
 
