@@ -169,8 +169,8 @@ void RenderWorker::run() {
   std::vector<Uploaded> uploaded;
   Raycaster* raycaster = nullptr;
   std::unique_ptr<VolumeResidency> residency;
-  Image view;                            // the last view frame: banded frames paint over it
-  std::thread builder;                   // prepare()'s builds; joined before ctx goes
+  Image view;           // the last view frame: banded frames paint over it
+  std::thread builder;  // prepare()'s builds; joined before ctx goes
   struct Join {
     std::thread& t;
     ~Join() {

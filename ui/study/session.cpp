@@ -429,12 +429,12 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
     r.warnUnknown(time, "time.", {"point", "fps"});
     Session::Time t;
     const Json& point = r.require(time, "time.point", "point");
-    if (!point.is_number_integer() || point.get<long long>() < 0 ||
-        point.get<long long>() > 100000)
+    if (!point.is_number_integer() || point.get<long long>() < 0 || point.get<long long>() > 100000)
       r.fail("time.point", "must be a whole number 0 ... 100000 (a time point, 0-based)");
     t.point = point.get<int>();
     t.fps = r.number(r.require(time, "time.fps", "fps"), "time.fps");
-    if (!(t.fps >= 0.5 && t.fps <= 60.0)) r.fail("time.fps", "must be 0.5 ... 60 frames per second");
+    if (!(t.fps >= 0.5 && t.fps <= 60.0))
+      r.fail("time.fps", "must be 0.5 ... 60 frames per second");
     s.time = t;
   }
   if (root.contains("measurements")) {

@@ -61,7 +61,8 @@ int TimePlayer::tick(double nowS, int count) {
 
 VolumeResidency::Use VolumeResidency::use(const void* key, size_t bytes) {
   Use out;
-  auto it = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key == key; });
+  auto it =
+      std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key == key; });
   out.upload = it == entries_.end();
   if (!out.upload) entries_.erase(it);
   entries_.insert(entries_.begin(), Entry{key, bytes});
@@ -75,7 +76,8 @@ VolumeResidency::Use VolumeResidency::use(const void* key, size_t bytes) {
 }
 
 bool VolumeResidency::resident(const void* key) const {
-  return std::any_of(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key == key; });
+  return std::any_of(entries_.begin(), entries_.end(),
+                     [&](const Entry& e) { return e.key == key; });
 }
 
 size_t VolumeResidency::residentBytes() const {

@@ -112,7 +112,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* measureDock_ = nullptr;  // View → Measurements reopens it
   QDockWidget* timeDock_ = nullptr;     // a 4D series' time slider, play and curve
   TimePanel* timePanel_ = nullptr;
-  int loadingTimePoint_ = 0;  // the time point to show first of the input being loaded
+  int loadingTimePoint_ = 0;            // the time point to show first of the input being loaded
   SessionInput loading_;                // the input being loaded, for AppModels::source
   MovieController* movies_ = nullptr;   // File → Export movie, in the background
   TfEditorDialog* tfEditor_ = nullptr;  // View → Transfer function editor, made when first asked

@@ -45,9 +45,12 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
     worker_->setVolume(doc_.volume());
     requestFrame();
   });
-  // Another time point: the same camera and look on its volume (kept on the device).
+  // Another time point: the same camera and look on its volume (kept on the device). Played
+  // or dragged through, time points come as fast as a drag's cameras: drag frames, the sharp
+  // frame once the time point rests.
   timeConnection_ = doc_.timeChanged.connect([this] {
     worker_->setVolume(doc_.volume(), true);
+    beginInteraction();
     requestFrame();
   });
   if (!doc_.empty()) worker_->setVolume(doc_.volume());

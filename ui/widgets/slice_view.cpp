@@ -312,6 +312,7 @@ void SliceView::paintOverlay(QPainter& p) {
     // Read as the view samples: the probe follows the slice interpolation setting.
     o.cursorText = formatCursorProbe(probeAt(v, voxel, state_.sliceInterp()));
   }
+  cursorReadout_ = QString::fromStdString(o.cursorText);
   drawSliceOverlay(p, o, rect(), [this](double u, double vv) { return toWidget(u, vv); });
   if (measurements_ && measurable() && (!exporting_ || measurements_->showInExports()))
     drawSliceMeasurements(p, rect(), v, *measurements_, axes_, o.slice,

@@ -150,10 +150,10 @@ void TimePanel::refreshTime() {
     QSignalBlocker block(slider_);
     slider_->setValue(m_.document.timePoint());
   }
-  label_->setText(m_.document.timePoints() > 1 ? QString("time %1 / %2")
-                                                     .arg(m_.document.timePoint() + 1)
-                                                     .arg(m_.document.timePoints())
-                                               : QString("one time point"));
+  label_->setText(
+      m_.document.timePoints() > 1
+          ? QString("time %1 / %2").arg(m_.document.timePoint() + 1).arg(m_.document.timePoints())
+          : QString("one time point"));
   refreshCurve();
 }
 
