@@ -63,6 +63,11 @@ class RenderWorker {
   // residencyBudget (time_series.h), so that switching back needs no upload; otherwise
   // (another study) every uploaded volume is released first.
   void setVolume(std::shared_ptr<const Volume> volume, bool sameSeries = false);
+  // The time points of SERIES not uploaded yet, uploaded one at a time while no frame or
+  // volume waits, as far as residencyBudget allows, so that switching to them needs no
+  // upload (a frame asked for meanwhile waits for one upload at most). A later setVolume of
+  // another study drops what is left.
+  void preload(VolumeSeries series);
   // WITHHITS: also each pixel's iso first hit or dvr first opaque point (Frame::hits), for
   // picking in 3D.
   void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
@@ -97,6 +102,7 @@ class RenderWorker {
   std::condition_variable wake_;
   std::shared_ptr<const Volume> pendingVolume_;
   bool pendingSameSeries_ = false;
+  VolumeSeries pendingPreload_;  // time points still to upload ahead, in order
   struct Request {
     RenderParams params;
     bool interactive;

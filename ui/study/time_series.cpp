@@ -75,6 +75,16 @@ VolumeResidency::Use VolumeResidency::use(const void* key, size_t bytes) {
   return out;
 }
 
+bool VolumeResidency::preload(const void* key, size_t bytes) {
+  if (resident(key) || residentBytes() + bytes > budget_) return false;
+  entries_.push_back(Entry{key, bytes});
+  return true;
+}
+
+void VolumeResidency::forget(const void* key) {
+  std::erase_if(entries_, [&](const Entry& e) { return e.key == key; });
+}
+
 bool VolumeResidency::resident(const void* key) const {
   return std::any_of(entries_.begin(), entries_.end(),
                      [&](const Entry& e) { return e.key == key; });

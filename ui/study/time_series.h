@@ -61,6 +61,11 @@ class VolumeResidency {
   };
   // KEY (a volume) is shown now and takes BYTES on the device.
   Use use(const void* key, size_t bytes);
+  // KEY, not shown, to upload ahead (a time point not shown yet) when it fits beside what is
+  // resident: true to upload it, kept as the least recently shown; false when it is resident
+  // already or does not fit.
+  bool preload(const void* key, size_t bytes);
+  void forget(const void* key);  // KEY could not be uploaded after all
   void clear() { entries_.clear(); }
   bool resident(const void* key) const;
   size_t residentBytes() const;

@@ -43,6 +43,8 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
   docConnection_ = doc_.changed.connect([this] {
     sawFullFrame_ = false;
     worker_->setVolume(doc_.volume());
+    // A 4D series: its other time points go to the device while the view is idle.
+    if (doc_.timePoints() > 1) worker_->preload(doc_.series());
     requestFrame();
   });
   // Another time point: the same camera and look on its volume (kept on the device). Played
