@@ -113,6 +113,24 @@ TEST(VolumeResidency, KeepsTheMostRecentlyShownWithinTheBudget) {
   EXPECT_EQ(r.residentBytes(), 1000u);
 }
 
+TEST(VolumeResidency, UploadsAheadOnlyWhatFitsBesideTheShown) {
+  int shown, next, later, last;
+  VolumeResidency r(300);
+  EXPECT_TRUE(r.use(&shown, 100).upload);
+  EXPECT_FALSE(r.preload(&shown, 100));  // resident already
+  EXPECT_TRUE(r.preload(&next, 100));
+  EXPECT_TRUE(r.preload(&later, 100));
+  EXPECT_FALSE(r.preload(&last, 100));  // 400 > 300: left for its switch
+  EXPECT_FALSE(r.resident(&last));
+  // Switching to one uploaded ahead uploads nothing and releases nothing.
+  auto use = r.use(&next, 100);
+  EXPECT_FALSE(use.upload);
+  EXPECT_TRUE(use.evict.empty());
+  // One that failed to upload ahead is forgotten: its switch uploads it.
+  r.forget(&later);
+  EXPECT_TRUE(r.use(&later, 100).upload);
+}
+
 TEST(VolumeResidency, CpuKeepsEveryTimePointAGpuHalfItsMemory) {
   EXPECT_EQ(residencyBudget(false, size_t(4) << 30), std::numeric_limits<size_t>::max());
   EXPECT_EQ(residencyBudget(true, size_t(80) << 30), size_t(40) << 30);

@@ -24,6 +24,7 @@ namespace voxray::ui {
 TimeCurveView::TimeCurveView(QWidget* parent) : QWidget(parent) {
   setObjectName("timeCurve");
   setMinimumHeight(110);
+  setMaximumHeight(160);  // a glance beside the views, not a panel that takes their room
   setToolTip("The value over the time points; the point shown is marked");
 }
 
