@@ -96,6 +96,12 @@ TEST(DISABLED_TimeSwitchFigures, SliceViewsAnd3dNextFrame) {
   };
   RenderWorker worker("cpu", cb);
   const glm::ivec2 size{720, 480};  // one view of the 2x2 grid at 1920x1080
+  // The sphere's surface (300 HU inside, -50 outside): the CT dvr preset leaves both clear,
+  // and a frame of empty space would time nothing.
+  m.render.update(kAppearance, [](RenderParams& r) {
+    r.mode = Mode::Iso;
+    r.isoLo = 100.0;
+  });
   const DragSetting drag = dragPresetSetting();
   const RenderParams p =
       planFrame(m.render.params(), m.render.quality(), size, true, v0.minSpacingMm(), &drag);
