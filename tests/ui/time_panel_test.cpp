@@ -47,24 +47,24 @@ int objectPixels(const QImage& img) {
   return n;
 }
 
-// The 3D view's image once CHANGE (a time point switch) has rendered: a switch renders a drag
-// frame first (RenderScheduler), then the sharp frame, whole once all its bands are in.
-QImage frameAfter(MainWindow& window, const std::function<void()>& change) {
+// The 3D view's image once CHANGE (a time point switch) has rendered: the sharp frame of the
+// volume the document shows then, whole once all its bands are in (Frame::volume tells a
+// frame of the time point before, still on its way, from the new one's).
+QImage frameAfter(MainWindow& window, const VolumeDocument& doc,
+                  const std::function<void()>& change) {
   QSignalSpy spy(&window.scheduler(), &RenderScheduler::frameReady);
   change();
-  bool dragSeen = false;
   for (int tries = 0; tries < 600; ++tries) {
     while (!spy.isEmpty()) {
       auto f = spy.takeFirst().at(0).value<std::shared_ptr<const Frame>>();
-      dragSeen |= f->interactive;
-      if (dragSeen && !f->interactive && f->bandsDone == f->bands) {
+      if (f->volume == doc.volume().get() && !f->interactive && f->bandsDone == f->bands) {
         QCoreApplication::processEvents();
         return window.volumeView().lastFrame();
       }
     }
     spy.wait(100);
   }
-  qFatal("no whole sharp frame within 60 s");
+  qFatal("no whole sharp frame of the time point within 60 s");
 }
 
 }  // namespace
@@ -112,7 +112,8 @@ class TimePanelTest : public QObject {
     const int k = m.crosshair.voxel().z;
     std::map<int, int> frameObject;
     for (int t : {2, 7, 0, 5}) {
-      const QImage frame = frameAfter(*fixture_.window, [&] { panel.slider()->setValue(t); });
+      const QImage frame =
+          frameAfter(*fixture_.window, m.document, [&] { panel.slider()->setValue(t); });
       frameObject[t] = objectPixels(frame);
       QCOMPARE(m.document.timePoint(), t);
       QCOMPARE(m.document.volume()->timePoint, t);

@@ -96,7 +96,8 @@ void RenderWorker::buildLoop(ClContext& ctx) {
   }
 }
 
-void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view) {
+void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view,
+                               const Volume* volume) {
   const RenderParams& p = req.params;
   view = upscaleNearest(view, p.width, p.height);
   Renderer& renderer = raycaster.rendererFor(p);
@@ -114,6 +115,7 @@ void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view) {
     frame->stats = sum;  // the bands' times so far
     frame->params = p;
     frame->band = b;
+    frame->volume = volume;
     frame->bands = req.bandsTotal;
     frame->bandsDone = req.bandsTotal - int(req.bands.size() - i - 1);
     if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
@@ -270,9 +272,12 @@ void RenderWorker::run() {
       }
     }
     if (!req || !raycaster) continue;
+    const Volume* shown = nullptr;
+    for (const Uploaded& u : uploaded)
+      if (u.raycaster.get() == raycaster) shown = u.volume.get();
     if (req->bands.size() > 1 || (req->bandsTotal > 1 && !req->bands.empty())) {
       try {
-        renderBands(*raycaster, std::move(*req), view);
+        renderBands(*raycaster, std::move(*req), view, shown);
       } catch (const std::exception& e) {
         reportError(e.what(), false);
       }
@@ -282,6 +287,7 @@ void RenderWorker::run() {
     frame->params = req->params;
     frame->interactive = req->interactive;
     frame->tag = req->tag;
+    frame->volume = shown;
     try {
       if (req->withHits)
         frame->image = raycaster->renderWithHits(req->params, frame->hits, &frame->stats);

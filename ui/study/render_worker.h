@@ -37,6 +37,8 @@ struct Frame {
   // frame. Rows of bands not yet rendered show the last view frame, scaled to this size.
   int bandsDone = 0, bands = 0;
   RowBand band;  // the band this frame added
+  // The volume it shows (identity only, never read): a 4D series' frames say their time point.
+  const Volume* volume = nullptr;
 };
 
 struct RenderCallbacks {
@@ -113,7 +115,7 @@ class RenderWorker {
   };
   // Renders REQ's bands into VIEW (the last view frame) until done or a newer view request
   // or volume arrives; what is left goes back as the pending view request unless replaced.
-  void renderBands(Raycaster& raycaster, Request req, Image& view);
+  void renderBands(Raycaster& raycaster, Request req, Image& view, const Volume* volume);
   std::optional<Request> pendingView_;        // latest view frame wins
   std::optional<Request> pendingExport_;      // exports are never replaced by view frames
   std::vector<RenderParams> pendingPrepare_;  // for the render thread: to options
