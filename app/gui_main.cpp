@@ -14,6 +14,7 @@
 #include "session_state.h"
 #include "slice_view.h"
 #include "start_options.h"
+#include "study_browser_model.h"
 #include "volume_view.h"
 #include "voxray/io/error.h"
 
@@ -143,6 +144,11 @@ int main(int argc, char** argv) {
     window->sessions().openFile(options.input);  // a session file: its own state
   else
     window->open(options.input, options.load, options.renderValues);
+#ifdef VOXRAY_HAS_STUDYDB
+  // Without a file and with studies in the database: the list of studies first.
+  if (opensStudyBrowserAtStart(options, StudyBrowserModel::hasStudies()))
+    window->showStudyBrowser();
+#endif
   int rc = app.exec();
   clock.reset();
   window.reset();  // widgets go before the models they are bound to

@@ -35,14 +35,14 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
                       ,
                       __global float4* hits
 #endif
-                          LABEL_PARAMS) {
+                          LABEL_PARAMS OVERLAY_PARAMS) {
 #if PACKET
   if (MODE == 0)
     iso_packet(vol, P, lut, out, leap, range, count, get_global_id(0),
-               get_global_id(1) PACKET_HITS_ARG LABEL_PASS);
+               get_global_id(1) PACKET_HITS_ARG LABEL_PASS OVERLAY_PASS);
   else if (MODE == 1)
     dvr_packet(vol, P, lut, out, leap, range, count, get_global_id(0),
-               get_global_id(1) PACKET_HITS_ARG LABEL_PASS);
+               get_global_id(1) PACKET_HITS_ARG LABEL_PASS OVERLAY_PASS);
   else
     mip_packet(vol, P, out, leap, range, count, get_global_id(0), get_global_id(1));
 #if HIT_OUTPUT
@@ -70,7 +70,7 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
                         ,
                         &hit
 #endif
-                            LABEL_PASS);
+                            LABEL_PASS OVERLAY_PASS);
     else
       color = march_mip(VOLUME, P, leap, range, &r, &samples);
   }

@@ -86,6 +86,13 @@ VOXRAY_SWITCH(GRADIENT_OPACITY, 0, BUILD, "|gopacity")
 // variant compiles and renders as before (#if). Not with ADAPTIVE (its levels read the colour
 // table alone); the light grid (shadows, ao) and the path tracer ignore the labels.
 VOXRAY_SWITCH(LABELS, 0, BUILD, "|labels")
+// dvr: a second volume fused into the same pass (issue 36, classification/overlay.cl): each
+// sample also classifies the overlay at its patient point with the overlay's own table, and
+// the two mix by summed extinction (march.cl, dvr_segment). Three more kernel arguments. Set
+// only where the raycaster holds an overlay (Raycaster::setOverlay), so every other variant
+// compiles and renders as before (#if). Not with ADAPTIVE (its levels read the base's table
+// alone); the light grid (shadows, ao), the path tracer, iso and mip ignore the overlay.
+VOXRAY_SWITCH(OVERLAY, 0, BUILD, "|overlay")
 
 // The packets' tuning (VOXRAY_TUNING above), measured on CPUs (docs/bench/history). An
 // experiment in a kernel directory (VOXRAY_KERNEL_DIR) tries another value with #undef and

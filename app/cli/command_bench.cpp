@@ -19,6 +19,7 @@
 #include "commands.h"
 #include "input_options.h"
 #include "labels_option.h"
+#include "overlay_option.h"
 #include "quality_choice.h"
 #include "render_flags.h"
 #include "render_state_model.h"
@@ -48,6 +49,7 @@ struct BenchOptions {
   int lanes = 0;
   CinematicFlags cinematic;
   LabelsOption labels;
+  OverlayOption overlay;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -150,6 +152,7 @@ Run addBenchCommand(CLI::App& app) {
   o->flags.add(*cmd, {"size", "gradient", "azimuth"});
   o->cinematic.add(*cmd);
   o->labels.add(*cmd);
+  o->overlay.add(*cmd);
   return [o, sizesOption, gradientsOption] {
     if (o->stallRepeats > 0 && o->quality.empty())
       throw inputError("--stall needs --quality (the sharp frame's preset, e.g. balanced)");
@@ -170,6 +173,10 @@ Run addBenchCommand(CLI::App& app) {
                      const double* seedCentral, const double* seedZucker) {
       Raycaster rc(ctx, v, parseStorage(o->storage));
       if (auto seg = o->labels.load(v)) rc.setSegmentation(*seg);
+      const auto overlay = o->overlay.load();  // fused dvr (issue 36): copied to the device
+      if (overlay)
+        for (const std::string& w : rc.setOverlay(overlay->first, overlay->second))
+          std::cerr << "voxray-cli: warning: --overlay: " << w << "\n";
       for (size_t si = 0; si < sizes.size(); ++si)
         for (const auto& grad : grads)
           for (const auto& kern : kernels) {

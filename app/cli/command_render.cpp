@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "input_options.h"
 #include "labels_option.h"
+#include "overlay_option.h"
 #include "render_flags.h"
 #include "render_state_model.h"
 #include "session.h"
@@ -26,6 +27,7 @@ struct RenderOptions {
   bool force = false;
   CinematicFlags cinematic;
   LabelsOption labels;
+  OverlayOption overlay;
 };
 
 // What this command line renders: the session's state (when --session is given) with what
@@ -124,6 +126,7 @@ Run addRenderCommand(CLI::App& app) {
   o->flags.add(*cmd);
   o->cinematic.add(*cmd);
   o->labels.add(*cmd);
+  o->overlay.add(*cmd);
   return [o] {
     const Session s = sessionToRender(*o);
     InputOptions input = o->input;
@@ -144,6 +147,15 @@ Run addRenderCommand(CLI::App& app) {
     rc.setOptions(ro);
     rc.setPathTracerOptions(o->cinematic.tracer);
     if (auto seg = o->labels.load(v)) rc.setSegmentation(*seg);
+    const auto overlay = o->overlay.load();  // fused dvr (issue 36): copied to the device
+    if (overlay) {
+      for (const std::string& w : rc.setOverlay(overlay->first, overlay->second))
+        std::cerr << "voxray-cli: warning: --overlay: " << w << "\n";
+      if (p.mode != Mode::Dvr)
+        std::cerr << "voxray-cli: warning: --overlay is fused into dvr frames only; this "
+                     "frame is "
+                  << toString(p.mode) << "\n";
+    }
     FrameStats stats;
     Image img;
     rc.rendererFor(p).renderStill(p, o->cinematic.budget(), img, &stats);

@@ -22,5 +22,6 @@ Run addMovieCommand(CLI::App& app);
 Run addTfCommand(CLI::App& app);
 Run addMakePhantomCommand(CLI::App& app);
 Run addDbCommand(CLI::App& app);
+Run addSegmentCommand(CLI::App& app);
 
 }  // namespace voxray::cli

@@ -5,6 +5,9 @@
 #include <fstream>
 
 #include "voxray/io/error.h"
+#ifdef VOXRAY_HAS_SEGMENT_FILES
+#include "voxray/io/segment_files.h"
+#endif
 #include "voxray/io/volume.h"
 
 namespace voxray::cli {
@@ -30,9 +33,21 @@ void LabelsOption::add(CLI::App& cmd) {
   cmd.add_option("--labels-raw", raw,
                  "label map for dvr (uint8 per voxel, x fastest, on the volume's dims): each "
                  "label a segment in its own colour; see --segment-mask, --segment-blend");
+  cmd.add_option("--labels", file,
+                 "segmentation for dvr: NIfTI or .seg.nrrd label map on the volume's grid, or "
+                 "a DICOM SEG of the volume's series (names and colours as stored)");
 }
 
 std::optional<Segmentation> LabelsOption::load(const Volume& v) const {
+  if (!raw.empty() && !file.empty())
+    throw inputError("give --labels FILE or --labels-raw FILE, not both");
+  if (!file.empty()) {
+#ifdef VOXRAY_HAS_SEGMENT_FILES
+    return readSegmentationFile(file, v);
+#else
+    throw inputError("--labels needs Voxray built with its NIfTI, Teem and DICOM parts");
+#endif
+  }
   if (raw.empty()) return std::nullopt;
   Segmentation s = emptySegmentation(v);
   std::error_code ec;

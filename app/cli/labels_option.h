@@ -11,12 +11,13 @@
 namespace voxray::cli {
 
 struct LabelsOption {
-  std::string raw;  // uint8 per voxel, x fastest, then y, then z, on the volume's dims
+  std::string raw;   // uint8 per voxel, x fastest, then y, then z, on the volume's dims
+  std::string file;  // NIfTI, .seg.nrrd or DICOM SEG on the volume (names and colours kept)
 
   void add(CLI::App& cmd);
   // The segmentation on V's grid, one segment per label the map holds (named "Segment L",
-  // coloured from a fixed palette); none without --labels-raw. Throws Error (Input) naming
-  // the file and the size it should have when it does not fit V.
+  // coloured from a fixed palette), or the segments of --labels FILE; none without either. Throws
+  // Error (Input) naming the file and the size it should have when it does not fit V.
   std::optional<Segmentation> load(const Volume& v) const;
 };
 

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
       voxray::cli::addMeasureCommand(app), voxray::cli::addSliceCommand(app),
       voxray::cli::addPacsCommand(app),    voxray::cli::addMovieCommand(app),
       voxray::cli::addTfCommand(app),      voxray::cli::addMakePhantomCommand(app),
-      voxray::cli::addDbCommand(app)};
+      voxray::cli::addDbCommand(app),      voxray::cli::addSegmentCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

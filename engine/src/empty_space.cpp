@@ -45,6 +45,18 @@ void EmptySpace::setShownCells(ContextImpl& cl, std::vector<uint8_t> shown) {
   });
 }
 
+void EmptySpace::setOverlayCells(ContextImpl& cl, const std::vector<uint8_t>& cells) {
+  if (cells == overlay_) return;
+  overlay_ = cells;
+  key_.clear();
+  if (overlay_.empty()) return;
+  clCall([&] {
+    overlayBuffer_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                overlay_.size(), overlay_.data());
+    return 0;
+  });
+}
+
 void EmptySpace::aheadDistances(ContextImpl& cl, const cl_int4& dims) {
   size_t n = cells_.minMax.size() / 2;
   // The distances and, behind them, one region per octant of ray directions; the passes'
@@ -162,6 +174,13 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     kernel.setArg(5, occ_);
     size_t global = (cells + 63) / 64 * 64;
     q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    if (m == 1 && overlay_.size() == cells) {  // a cell is empty only when both volumes are
+      cl::Kernel occupy = cl.kernel("empty_space/classify.cl", "occupy", "");
+      occupy.setArg(0, overlayBuffer_);
+      occupy.setArg(1, cl_int(cells));
+      occupy.setArg(2, occ_);
+      q.enqueueNDRangeKernel(occupy, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    }
     cl_int4 dims = {{cells_.dims.x, cells_.dims.y, cells_.dims.z, 0}};
     // Only iso packets read the one-sided distances (one ray per work-item leaps by the
     // two-sided ones). First: it may enlarge leap_. Their minimum is then the two-sided

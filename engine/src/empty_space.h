@@ -32,6 +32,10 @@ class EmptySpace {
   // cellsShown), which dvr then classifies empty whatever its values; empty: no such cells.
   // The next dvr classification follows a change.
   void setShownCells(ContextImpl& cl, std::vector<uint8_t> shown);
+  // Fused dvr (issue 36): per cell 1 where the overlay may show (overlay_cells.h), which dvr
+  // then classifies occupied whatever the volume's values; empty: none. The next dvr
+  // classification follows a change.
+  void setOverlayCells(ContextImpl& cl, const std::vector<uint8_t>& cells);
   const glm::ivec3& dims() const { return cells_.dims; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
@@ -58,8 +62,10 @@ class EmptySpace {
   cl::Buffer range_, occ_, leap_, scratch_, opaqueBefore_;
   size_t opaqueCapacity_ = 0, leapBytes_ = 0;
   cl::Buffer aheadScratch_;
-  std::vector<uint8_t> shown_;  // setShownCells
-  cl::Buffer shownRange_;       // range_ with the cells not shown empty (min above max)
+  std::vector<uint8_t> shown_;    // setShownCells
+  cl::Buffer shownRange_;         // range_ with the cells not shown empty (min above max)
+  std::vector<uint8_t> overlay_;  // setOverlayCells
+  cl::Buffer overlayBuffer_;
   // What the occupancy was classified for; equal keys skip the work.
   std::vector<float> key_;
   std::vector<int> opaque_;

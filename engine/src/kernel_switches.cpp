@@ -85,7 +85,8 @@ KernelSwitches kernelSwitches(const RenderParams& p, const KernelFacts& f) {
   s.ESS = f.emptySpaceSkipping;
   s.LABELS = f.labels && p.mode == Mode::Dvr;
   // The levels live with the macro cells, and read the colour table alone (not the labels).
-  s.ADAPTIVE = s.ADAPTIVE && s.ESS && !s.LABELS;
+  s.OVERLAY = f.overlay && p.mode == Mode::Dvr;
+  s.ADAPTIVE = s.ADAPTIVE && s.ESS && !s.LABELS && !s.OVERLAY;  // (nor the overlay)
   s.STORAGE_IMAGE = f.storageImage;
   s.SLABS = f.slabs;
   s.COUNT_SAMPLES = f.countSamples;

@@ -26,6 +26,8 @@ struct KernelFacts {
   int packetLanes = 0;     // packets of 8 or 16 lanes; 0: one ray per work-item
   // A dvr frame with a segmentation whose table changes something (Raycaster::setSegmentation).
   bool labels = false;
+  // A dvr frame of a raycaster that holds an overlay (Raycaster::setOverlay).
+  bool overlay = false;
 };
 
 // The switches a frame's parameters decide (the rest keep their defaults). A switch that

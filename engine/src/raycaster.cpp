@@ -11,7 +11,9 @@
 #include "label_cells.h"
 #include "label_table.h"
 #include "light_volume.h"
+#include "overlay_cells.h"
 #include "segment_table.h"  // kernels/: the table's size
+#include "voxray/engine/overlay.h"
 #include "voxray/engine/path_tracer.h"
 #include "voxray/io/segmentation.h"
 #include "voxray/io/volume.h"
@@ -46,6 +48,11 @@ struct Raycaster::Impl {
   std::vector<Segment> segments;
   LabelCells labelCells;
   std::vector<glm::vec4> segmentsUploaded;
+  // Fused dvr (setOverlay): the overlay's voxels, table and geometry (overlay.cl's ovol,
+  // olut, ogeo) and the base cells where it may show.
+  bool overlay = false;
+  cl::Buffer overlayVolume, overlayLut, overlayCellBuffer, overlayGeometry;
+  std::vector<uint8_t> overlayCellsShown;
 
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s)
       : frame(std::make_shared<DeviceFrame>(ctx.impl(), v, s)),
@@ -83,6 +90,7 @@ KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
   f.hitOutput = hitsOut != nullptr;
   f.packetLanes = packets() ? lanes(p) : 0;
   f.labels = labels && p.mode == Mode::Dvr && !changesNothing(segmentTable(segments, p));
+  f.overlay = overlay;
   return kernelSwitches(p, f);
 }
 
@@ -212,6 +220,46 @@ void Raycaster::clearSegmentation() {
 
 bool Raycaster::hasSegmentation() const { return impl_->labels; }
 
+std::vector<std::string> Raycaster::setOverlay(const Volume& o, const TransferFunction& tf) {
+  Impl& m = *impl_;
+  if (o.voxelCount() == 0 || o.voxels.size() != o.voxelCount())
+    throw inputError("the overlay has no voxels: load a volume to fuse");
+  checkOverlayFits(o.byteSize(), m.cl.info.maxAllocBytes);
+  const Lut lut = bakeLut(tf, o);
+  const glm::dmat4 map = overlayVoxelMap(m.volume, o);
+  // overlay.cl's ogeo: the map's rows, the dims and last entry, the table's placement.
+  std::vector<cl_float4> geo(5);
+  for (int r = 0; r < 3; ++r)
+    geo[size_t(r)] = {{float(map[0][r]), float(map[1][r]), float(map[2][r]), float(map[3][r])}};
+  geo[3] = {{float(o.dims.x), float(o.dims.y), float(o.dims.z), float(lut.rgba.size() - 1)}};
+  geo[4] = {{float(lut.storedMin), float(lut.scale), 0.0f, 0.0f}};
+  m.overlayCellsShown = overlayCells(m.volume, o, lut, map);
+  clCall([&] {
+    m.overlayCellBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                     m.overlayCellsShown.size(), m.overlayCellsShown.data());
+    m.overlayVolume = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, o.byteSize());
+    m.cl.queue.enqueueWriteBuffer(m.overlayVolume, CL_TRUE, 0, o.byteSize(), o.voxels.data());
+    m.overlayLut =
+        cl::Buffer(m.cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                   lut.rgba.size() * sizeof(cl_float4), const_cast<glm::vec4*>(lut.rgba.data()));
+    m.overlayGeometry = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                   geo.size() * sizeof(cl_float4), geo.data());
+    return 0;
+  });
+  m.overlay = true;
+  return overlayWarnings(m.volume, o);
+}
+
+void Raycaster::clearOverlay() {
+  Impl& m = *impl_;
+  m.overlay = false;
+  m.overlayVolume = m.overlayLut = m.overlayCellBuffer = m.overlayGeometry = cl::Buffer();
+  m.overlayCellsShown.clear();
+  m.space.setOverlayCells(m.cl, {});
+}
+
+bool Raycaster::hasOverlay() const { return impl_->overlay; }
+
 PathTracer& Raycaster::Impl::tracer(Raycaster& r) {
   if (!pathTracer) pathTracer = std::make_unique<PathTracer>(r);
   return *pathTracer;
@@ -283,6 +331,9 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     if (p.mode == Mode::Dvr && m.opts.emptySpaceSkipping)
       m.space.setShownCells(
           m.cl, sw.LABELS ? cellsShown(m.labelCells, segmentTableNow) : std::vector<uint8_t>{});
+    // ... and leaps no cell where the overlay may show.
+    if (p.mode == Mode::Dvr && m.opts.emptySpaceSkipping)
+      m.space.setOverlayCells(m.cl, sw.OVERLAY ? m.overlayCellsShown : std::vector<uint8_t>{});
     if (m.opts.emptySpaceSkipping && leaps)
       m.space.classify(m.cl, f.paramsBuffer, f.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
                        sw.PACKET != 0, sw.ISO_BLOCK_TRIES > 0);
@@ -290,13 +341,14 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
       storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;
       storage.SLABS = sw.SLABS;
-      if (m.light.update(m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false),
-                         sw.LIGHTING, p.mode == Mode::Iso, f.paramsBuffer, f.lutBuffer,
-                         // the labels' leaps are not the light's (it ignores the labels)
-                         m.opts.emptySpaceSkipping && p.mode == Mode::Dvr && !sw.LABELS
-                             ? &m.space.leap()
-                             : nullptr,
-                         k, s.lut.rgba)) {
+      if (m.light.update(
+              m.cl, m.device, "-cl-fast-relaxed-math " + switchOptions(storage, false), sw.LIGHTING,
+              p.mode == Mode::Iso, f.paramsBuffer, f.lutBuffer,
+              // the labels' leaps are not the light's (it ignores the labels)
+              m.opts.emptySpaceSkipping && p.mode == Mode::Dvr && !sw.LABELS && !sw.OVERLAY
+                  ? &m.space.leap()
+                  : nullptr,
+              k, s.lut.rgba)) {
         lightingMs = m.light.lastMs();
         m.lightCopiedInto = -1;
       }
@@ -325,6 +377,12 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     if (sw.LABELS) {  // LABEL_PARAMS (kernels/classification/labels.cl)
       kernel.setArg(arg++, m.labelBuffer);
       kernel.setArg(arg++, m.segmentBuffer);
+    }
+    if (sw.OVERLAY) {  // OVERLAY_PARAMS (kernels/classification/overlay.cl)
+      kernel.setArg(arg++, m.overlayVolume);
+      kernel.setArg(arg++, m.overlayLut);
+      kernel.setArg(arg++, m.overlayCellBuffer);
+      kernel.setArg(arg++, m.overlayGeometry);
     }
     cl::NDRange local = m.local();
     // A band starts at the work-item row holding Y0: the kernels take their pixel from

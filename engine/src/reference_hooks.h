@@ -20,8 +20,11 @@ struct ReferenceHooks {
   uint64_t stream = 0;
 };
 
-// SEG: label-aware dvr (renderReferenceFloat(v, p, seg)); null: none.
+struct OverlayClassifier;
+
+// SEG: label-aware dvr (renderReferenceFloat(v, p, seg)); OVERLAY: fused dvr; null: none.
 FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, ReferenceHits* hits,
-                                const ReferenceHooks* hooks, const Segmentation* seg = nullptr);
+                                const ReferenceHooks* hooks, const Segmentation* seg = nullptr,
+                                const OverlayClassifier* overlay = nullptr);
 
 }  // namespace voxray

@@ -10,6 +10,7 @@
 #include "label_table.h"
 #include "reference_hooks.h"
 #include "reference_sampling.h"
+#include "voxray/engine/overlay.h"
 #include "voxray/io/error.h"
 #include "voxray/io/parallel.h"
 #include "voxray/io/segmentation.h"
@@ -52,6 +53,8 @@ struct Marcher {
   // none (no segmentation, not dvr, or a table that changes nothing, as the raycaster).
   const Segmentation* labelMap = nullptr;
   std::vector<glm::vec4> segTable{};
+  // Fused dvr (kernels/classification/overlay.cl), or none.
+  const OverlayClassifier* overlay = nullptr;
 
   // C classified by the label of the voxel nearest to pv (label_classify).
   glm::dvec4 labelled(const glm::dvec4& c, const glm::dvec3& pv) const {
@@ -105,22 +108,31 @@ struct Marcher {
         double seg = b - a, t = a + 0.5 * seg;
         glm::dvec3 pv = ov + t * dv;
         glm::dvec4 c = s.lut.lookup(sample(pv, o));
-        if (c.a <= 0.0) continue;
+        // The overlay's sample at the same point (march.cl's dvr_segment, OVERLAY).
+        const glm::dvec4 ov = overlay ? overlay->at(pv) : glm::dvec4(0.0);
+        auto nothing = [&] { return c.a <= 0.0 && ov.a <= 0.0; };
+        if (nothing()) continue;
         if (labelMap) {
           c = labelled(c, pv);
-          if (c.a <= 0.0) continue;
+          if (nothing()) continue;
         }
         glm::dvec3 g(0.0);
         if (gradientOpacity) {  // the factor at |gradient| (stored units per mm), then shading
-          g = worldGradient(pv, o);
-          c.a *= s.gradient.lookup(glm::length(g));
-          if (c.a <= 0.0) continue;
+          if (c.a > 0.0) {
+            g = worldGradient(pv, o);
+            c.a *= s.gradient.lookup(glm::length(g));
+          }
+          if (nothing()) continue;
         }
-        double al = p.opacityCorrection ? 1.0 - std::pow(1.0 - c.a, seg / s.referenceStepMm) : c.a;
         glm::dvec3 rgb(c);
-        if (shading)
+        if (shading && c.a > 0.0)
           rgb = shade(rgb, gradientOpacity ? g : worldGradient(pv, o), ow + t * dw, view,
                       s.view.lightWorld, lightAt(ow + t * dw, rng));
+        if (overlay) {  // summed extinction, colours weighted by opacity (march.cl says why)
+          rgb = (c.a * rgb + ov.a * glm::dvec3(ov)) / (c.a + ov.a);
+          c.a = 1.0 - (1.0 - c.a) * (1.0 - ov.a);
+        }
+        double al = p.opacityCorrection ? 1.0 - std::pow(1.0 - c.a, seg / s.referenceStepMm) : c.a;
         acc += (1.0 - alpha) * al * rgb;
         alpha += (1.0 - alpha) * al;
         if (alpha >= p.earlyTermination) break;
@@ -197,11 +209,24 @@ Image renderReference(const Volume& v, const RenderParams& p, const Segmentation
   return quantise(renderReferenceFloat(v, p, seg));
 }
 
+FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, const Volume& overlay,
+                                const TransferFunction& tf) {
+  const OverlayClassifier c(v, overlay, tf);
+  return renderReferenceFloat(v, p, nullptr, nullptr, nullptr, &c);
+}
+
+Image renderReference(const Volume& v, const RenderParams& p, const Volume& overlay,
+                      const TransferFunction& tf) {
+  return quantise(renderReferenceFloat(v, p, overlay, tf));
+}
+
 FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, ReferenceHits* hits,
-                                const ReferenceHooks* hooks, const Segmentation* seg) {
+                                const ReferenceHooks* hooks, const Segmentation* seg,
+                                const OverlayClassifier* overlay) {
   FrameSetup s = makeFrameSetup(v, p);
   Marcher m{v, p, s};
   m.hooks = hooks;
+  if (p.mode == Mode::Dvr) m.overlay = overlay;
   if (seg && p.mode == Mode::Dvr) {
     if (seg->grid.dims != v.dims || seg->labels.size() != v.voxelCount())
       throw inputError("the segmentation's label map does not lie on the volume's voxels");

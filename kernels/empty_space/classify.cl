@@ -31,6 +31,13 @@ __kernel void classify(__global const short2* range, __constant RaycastParams* P
   occ[k] = opaque_before[b + 1] - opaque_before[a] > 0;
 }
 
+// Fused dvr (issue 36): the cells where the overlay may show (engine/src/overlay_cells.h)
+// are occupied whatever the volume's values, so a cell is leapt only when both are empty.
+__kernel void occupy(__global const uchar* overlay, int cells, __global uchar* occ) {
+  int k = get_global_id(0);
+  if (k < cells && overlay[k]) occ[k] = 1;
+}
+
 // One pass of the chessboard (L-infinity) distance of each cell to the nearest occupied
 // cell, in cells: along `axis`, out = min over |s| <= MAX_LEAP of max(|s|, in[c + s]).
 // Three passes (x, y, z) give the exact distance, because a cube is the product of three

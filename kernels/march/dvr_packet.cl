@@ -43,31 +43,78 @@ inline void dvr_gradient_opacityN(__global const short* restrict vol, __constant
 #define DVR_LABEL_ARG(l)
 #endif
 
+#if OVERLAY
+// overlay_classify (overlay.cl) lane by lane for the lanes in `live` (transparent for the
+// others): the overlay's grid is not the rays', so its reads are gathers anyway.
+inline void overlay_classifyN(__global const short* restrict ovol,
+                              __global const float4* restrict olut,
+                              __global const uchar* restrict ocells, __constant float4* ogeo,
+                              __constant RaycastParams* P, floatN x, floatN y, floatN z, intN live,
+                              floatN o[4]) {
+  float xs[LANES], ys[LANES], zs[LANES], os[4][LANES];
+  int ls[LANES];
+  vstoreN(x, 0, xs);
+  vstoreN(y, 0, ys);
+  vstoreN(z, 0, zs);
+  vstoreN(live, 0, ls);
+  for (int l = 0; l < LANES; ++l) {
+    float4 v = (float4)(0.0f);
+    const float3 p = (float3)(xs[l], ys[l], zs[l]);
+    if (ls[l] && overlay_cell(ocells, P, p)) v = overlay_classify(ovol, olut, ogeo, p);
+    os[0][l] = v.x, os[1][l] = v.y, os[2][l] = v.z, os[3][l] = v.w;
+  }
+  for (int ch = 0; ch < 4; ++ch) o[ch] = vloadN(0, os[ch]);
+}
+#define DVR_OVERLAY_PARAM , const floatN oc[4]
+#define DVR_OVERLAY_ARG(o) , o
+#else
+#define DVR_OVERLAY_PARAM
+#define DVR_OVERLAY_ARG(o)
+#endif
+
 // One dvr sample into the composite: opacity (and colour) c of the segment of length seg
 // at t, for the lanes in `live`. Updates alpha, active, samples and the colour (acc, or
 // the shading queue). GRADIENT_OPACITY: c[3] already scaled, normal its gradient.
-inline void dvr_compositeN(__global const short* restrict vol, __constant RaycastParams* P,
-                           __global const float4* lut, ShadeQueue* queue, floatN acc[3],
-                           floatN* alpha, intN* active, intN* samples, intN live, floatN seg,
-                           floatN t, floatN value,
-                           const floatN c[4] DVR_NORMAL_PARAM DVR_LABEL_PARAM QUEUE_SEGS_PARAM) {
+inline void dvr_compositeN(
+    __global const short* restrict vol, __constant RaycastParams* P, __global const float4* lut,
+    ShadeQueue* queue, floatN acc[3], floatN* alpha, intN* active, intN* samples, intN live,
+    floatN seg, floatN t, floatN value,
+    const floatN c[4] DVR_NORMAL_PARAM DVR_LABEL_PARAM QUEUE_SEGS_PARAM DVR_OVERLAY_PARAM) {
   *samples -= live;
+#if OVERLAY
+  // march.cl's dvr_segment: summed extinction, each volume's colour weighted by its opacity.
+  // The base's share of the weight goes to the shading queue, the overlay's (unshaded)
+  // straight into acc, which the queue's colours join at the end.
+  intN seen = live & ((c[3] > 0.0f) | (oc[3] > 0.0f));
+  if (!any(seen)) return;
+  floatN a = 1.0f - (1.0f - c[3]) * (1.0f - oc[3]);
+  floatN base_share = c[3] / fmax(c[3] + oc[3], 1e-30f);  // 0, not NaN, where neither shows
+#else
   intN seen = live & (c[3] > 0.0f);
   if (!any(seen)) return;
   floatN a = c[3];
+#endif
   if (OPACITY_CORRECTION) {
     floatN ratio = seg / P->view.w;
     a = CORRECTED_OPACITY_BY(a, ratio, fast_log2N, fast_exp2N);
   }
   floatN w = select((floatN)(0.0f), (1.0f - *alpha) * a, seen);
+#if OVERLAY
+  floatN w_base = w * base_share;
+  for (int ch = 0; ch < 3; ++ch) acc[ch] += (w - w_base) * oc[ch];
+  intN shaded = seen & (c[3] > 0.0f);
+#else
+  floatN w_base = w;
+  intN shaded = seen;
+#endif
   if (SHADING) {
-    shade_queue_push(vol, P, lut, queue, t, value, w,
-                     seen DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(label) QUEUE_SEGS_ARG);
+    shade_queue_push(vol, P, lut, queue, t, value, w_base,
+                     shaded DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(label) QUEUE_SEGS_ARG);
 #if !GRADIENT_OPACITY
-    *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+    *samples += select((intN)(0), (intN)(GRADIENT_TAPS), shaded);
 #endif
   } else {
-    for (int ch = 0; ch < 3; ++ch) acc[ch] += w * c[ch];
+    for (int ch = 0; ch < 3; ++ch) acc[ch] += w_base * c[ch];
   }
   *alpha += w;
   *active &= ~(seen & (*alpha >= P->dvr.z));
@@ -132,6 +179,9 @@ inline void dvr_packet(PACKET_ARGS) {
 #if LABELS
     intN lab[DVR_BATCH];
 #endif
+#if OVERLAY
+    floatN oc[DVR_BATCH][4];
+#endif
     intN at = i;
     for (int k = 0; k < DVR_BATCH; ++k) {
 #if ADAPTIVE
@@ -160,6 +210,10 @@ inline void dvr_packet(PACKET_ARGS) {
         if (!SHADING) label_colourN(segs, lab[k], c[k]);
       }
 #endif
+#if OVERLAY
+      overlay_classifyN(ovol, olut, ocells, ogeo, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy,
+                        r.oz + t[k] * r.dz, live[k], oc[k]);
+#endif
     }
     for (int k = 0; k < DVR_BATCH; ++k) {
 #if HIT_OUTPUT
@@ -171,7 +225,8 @@ inline void dvr_packet(PACKET_ARGS) {
 #endif
       dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
                      sb[k] - sa[k], t[k], value[k],
-                     c[k] DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(lab[k]) QUEUE_SEGS_ARG);
+                     c[k] DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(lab[k])
+                         QUEUE_SEGS_ARG DVR_OVERLAY_ARG(oc[k]));
 #if HIT_OUTPUT
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
@@ -181,7 +236,11 @@ inline void dvr_packet(PACKET_ARGS) {
   }
   if (SHADING) {
     if (queue.n > 0) shade_queue_flush(vol, P, lut, &queue, queue.n QUEUE_SEGS_ARG);
+#if OVERLAY
+    for (int ch = 0; ch < 3; ++ch) acc[ch] += vloadN(0, queue.acc[ch]);  // the overlay's part
+#else
     for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, queue.acc[ch]);
+#endif
   }
   VecN color = {acc[0] + (1.0f - alpha) * P->background.x,
                 acc[1] + (1.0f - alpha) * P->background.y,
@@ -197,5 +256,7 @@ inline void dvr_packet(PACKET_ARGS) {
 #undef DVR_NORMAL_ARG
 #undef DVR_LABEL_PARAM
 #undef DVR_LABEL_ARG
+#undef DVR_OVERLAY_PARAM
+#undef DVR_OVERLAY_ARG
 
 #endif

@@ -7,6 +7,7 @@
 #include "classification/gradient_opacity.cl"
 #include "classification/labels.cl"
 #include "classification/lut.cl"
+#include "classification/overlay.cl"
 #include "empty_space/skip.cl"
 #include "math.cl"
 #include "reconstruction/gradients.cl"
@@ -112,29 +113,43 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
                         ,
                         float4* hit_out
 #endif
-                            LABEL_PARAMS) {
+                            LABEL_PARAMS OVERLAY_PARAMS) {
   float seg = s.y - s.x;
   if (seg <= 0.0f) return false;  // segment 0 without jitter
   float t = 0.5f * (s.x + s.y);
   float3 p_v = r->o + t * r->d;
   ++*count;
   float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
-  if (c.w <= 0.0f) return false;
+#if OVERLAY
+  // The base's classification below (labels, gradient opacity, shading) is its own; the
+  // overlay's sample joins it after, unshaded (PET on CT shows as a glow, and the base's
+  // gradient says nothing of the overlay's surfaces).
+  float4 o =
+      overlay_cell(ocells, P, p_v) ? overlay_classify(ovol, olut, ogeo, p_v) : (float4)(0.0f);
+#define DVR_NOTHING (c.w <= 0.0f && o.w <= 0.0f)
+#else
+#define DVR_NOTHING (c.w <= 0.0f)
+#endif
+  if (DVR_NOTHING) return false;
 #if LABELS
   c = label_classify(segs, label_at(labels, P, p_v), c);
-  if (c.w <= 0.0f) return false;
+  if (DVR_NOTHING) return false;
 #endif
 #if GRADIENT_OPACITY
   // The opacity per reference step times the factor at |gradient|, before the correction
   // to the segment's length; the gradient is the one shading uses.
-  float3 n_w = world_gradient(VOLUME, P, p_v);
-  *count += GRADIENT_TAPS;
-  c.w *= gradient_opacity(lut, P, n_w);
-  if (c.w <= 0.0f) return false;
+  // (OVERLAY: only where the base shows, as the packets' dvr_gradient_opacityN.)
+  float3 n_w = (float3)(0.0f);
+  if (c.w > 0.0f) {
+    n_w = world_gradient(VOLUME, P, p_v);
+    *count += GRADIENT_TAPS;
+    c.w *= gradient_opacity(lut, P, n_w);
+  }
+  if (DVR_NOTHING) return false;
 #endif
-  float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
+#undef DVR_NOTHING
   float3 rgb = c.xyz;
-  if (SHADING) {
+  if (SHADING && c.w > 0.0f) {
 #if GRADIENT_OPACITY
     rgb = shade(rgb, n_w, origin_w + t * dir_w, -dir_w, P->light_w, frame_light(lut, P, p_v));
 #else
@@ -143,6 +158,17 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
     *count += GRADIENT_TAPS;
 #endif
   }
+#if OVERLAY
+  // Summed extinction: two media in one segment attenuate as the product of their
+  // transmittances, 1 - (1 - a_base)(1 - a_overlay) per reference step, and each emits in
+  // proportion to its own opacity (colours weighted by opacity). This keeps the rule
+  // independent of the step length (the opacity correction of the sum is the product of the
+  // corrections), is symmetric in the two volumes, and makes an overlay with nothing to show
+  // leave the base's sample as it was (to rounding).
+  rgb = (c.w * rgb + o.w * o.xyz) / (c.w + o.w);
+  c.w = 1.0f - (1.0f - c.w) * (1.0f - o.w);
+#endif
+  float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
   *acc += (1.0f - *alpha) * a * rgb;
 #if HIT_OUTPUT
   float before = *alpha;
@@ -164,7 +190,7 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
                         ,
                         float4* hit_out
 #endif
-                            LABEL_PARAMS) {
+                            LABEL_PARAMS OVERLAY_PARAMS) {
   float3 acc = (float3)(0.0f);
   float alpha = 0.0f;
 #if HIT_OUTPUT
@@ -186,7 +212,7 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
     float2 s = ray_segment(r, i);
 #endif
     if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc,
-                    &alpha DVR_HIT_ARG LABEL_PASS))
+                    &alpha DVR_HIT_ARG LABEL_PASS OVERLAY_PASS))
       break;
   }
 #undef DVR_HIT_ARG

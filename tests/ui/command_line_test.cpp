@@ -144,3 +144,14 @@ TEST_F(CommandLine, NoInputOpensTheSampleCtAndPhantomOnRequest) {
     EXPECT_NE(std::string(e.what()).find("without an INPUT"), std::string::npos);
   }
 }
+
+// Issue 37: the study browser opens at start only without a file, with studies, and never
+// for the smoke tests' screenshots.
+TEST_F(CommandLine, StudyBrowserOpensAtStartOnlyWithoutAFileAndWithStudies) {
+  EXPECT_TRUE(ui::opensStudyBrowserAtStart(readGui({}), true));
+  EXPECT_FALSE(ui::opensStudyBrowserAtStart(readGui({}), false));
+  EXPECT_FALSE(ui::opensStudyBrowserAtStart(readGui({"head.dcm"}), true));
+  EXPECT_FALSE(ui::opensStudyBrowserAtStart(readGui({"--phantom"}), true));
+  EXPECT_FALSE(ui::opensStudyBrowserAtStart(readGui({"--screenshot", "x.png"}), true));
+  EXPECT_FALSE(ui::opensStudyBrowserAtStart(readGui({"--quit-after-first-frame"}), true));
+}

@@ -9,6 +9,7 @@
 
 #include "no_qt.h"
 #include "render_state_model.h"
+#include "segmentation_model.h"
 #include "session.h"
 #include "time_series.h"
 #include "volume_document.h"
@@ -21,9 +22,10 @@ struct AppModels {
   RenderStateModel render;
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
-  MeasurementModel measurements;  // a session keeps them (session_state.cpp)
-  TimePlayer player;              // a 4D series' play rate and state (the document: its point)
-  LightingFigures lighting;       // each lighting model's cost and error on this scene
+  MeasurementModel measurements;   // a session keeps them (session_state.cpp)
+  SegmentationModel segmentation;  // the segment editor's; a session keeps it too
+  TimePlayer player;               // a 4D series' play rate and state (the document: its point)
+  LightingFigures lighting;        // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;
   // While a volume whose values are not HU is open (value_look.h): the user's HU look

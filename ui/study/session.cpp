@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "segmentation_json.h"
 #include "voxray/engine/input_flags.h"
 #include "voxray/engine/quality.h"
 #include "voxray/io/error.h"
@@ -320,6 +321,7 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
   if (s.transferFunction)
     j["transfer-function"] = Json::parse(toVolumePropertyJson(*s.transferFunction));
   if (s.time) j["time"] = {{"point", s.time->point}, {"fps", s.time->fps}};
+  if (s.segmentation) j["segmentation"] = segmentationToJson(*s.segmentation);
   try {
     j["measurements"] = Json::parse(s.measurements);
   } catch (const Json::exception& e) {
@@ -367,7 +369,7 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
                      "); open it with a newer Voxray");
   r.warnUnknown(root, "",
                 {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays",
-                 "transfer-function", "measurements", "time"});
+                 "transfer-function", "measurements", "segmentation", "time"});
   SessionRead out;
   Session& s = out.session;
   readInput(r, root, sessionPath, out);
@@ -440,6 +442,13 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   if (root.contains("measurements")) {
     if (!root.at("measurements").is_array()) r.fail("measurements", "must be an array [ ... ]");
     s.measurements = root.at("measurements").dump();
+  }
+  if (root.contains("segmentation")) {
+    try {
+      s.segmentation = segmentationFromJson(root.at("segmentation"));
+    } catch (const Error& e) {
+      r.fail("segmentation", std::string("is wrong: ") + e.what());
+    }
   }
   out.warnings = r.allWarnings();
   return out;

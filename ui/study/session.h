@@ -18,6 +18,7 @@
 #include "voxray/engine/plane_sampler.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/engine/volume_property.h"
+#include "voxray/io/segmentation.h"
 #include "window_level.h"
 
 namespace voxray {
@@ -59,6 +60,9 @@ struct Session {
   // colour and opacity lists and curve (the table alone loses them). Optional in the file.
   std::optional<VolumeProperty> transferFunction;
   std::string measurements = "[]";  // a JSON array owned by the measuring tools, kept as read
+  // The segment editor's segmentation (issue 34); optional in the file. Its grid is checked
+  // against the volume when the session is applied (session_state.h).
+  std::optional<Segmentation> segmentation;
   // A 4D series: the time point on screen (0-based) and the play rate (frames per second).
   // Optional in the file ("time"); written only for a series of more than one time point.
   struct Time {

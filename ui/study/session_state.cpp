@@ -2,6 +2,7 @@
 
 #include "measurement_json.h"
 #include "study_state.h"
+#include "voxray/io/error.h"
 
 namespace voxray {
 
@@ -24,6 +25,8 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   s.overlays = m.render.overlays();
   s.transferFunction = m.render.shapedTransferFunction();
   s.measurements = measurementsToJson(m.measurements).at("items").dump();
+  if (m.segmentation.active() && !m.segmentation.segmentation().segments.empty())
+    s.segmentation = m.segmentation.segmentation();
   if (m.document.timePoints() > 1) {
     s.time = Session::Time{m.document.timePoint(), m.player.fps()};
     // voxray-cli render --session opens the input with its flags: this time point.
@@ -32,13 +35,14 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   return s;
 }
 
-void openSession(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
-                 const Session& s) {
+std::vector<std::string> openSession(AppModels& m, std::shared_ptr<const Volume> v,
+                                     std::string name, const Session& s) {
   openStudy(m, std::move(v), std::move(name));
-  applySession(m, s);
+  return applySession(m, s);
 }
 
-void applySession(AppModels& m, const Session& s) {
+std::vector<std::string> applySession(AppModels& m, const Session& s) {
+  std::vector<std::string> problems;
   m.source = s.input;
   // The session keeps the list only: whether exports show measurements stays the user's
   // choice each time (off), as burned-in measurements must be.
@@ -71,6 +75,16 @@ void applySession(AppModels& m, const Session& s) {
     m.player.setFps(s.time->fps);
     m.document.setTimePoint(s.time->point);  // out of range (another series): stays
   }
+  if (s.segmentation) {
+    const auto& volume = m.document.volume();
+    try {
+      if (!volume) throw inputError("no volume is open to put it on.");
+      m.segmentation.load(*s.segmentation, *volume);
+    } catch (const Error& e) {
+      problems.push_back(std::string("The session's segmentation was left out: ") + e.what());
+    }
+  }
+  return problems;
 }
 
 bool isSessionPath(const std::string& path) {

@@ -4,6 +4,7 @@
 // the models' state and compare voxray-cli's render of it with the 3D view's frame.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -22,11 +23,13 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
 
 // Sets everything S holds on the study just opened (openStudy) from S.input: render
 // parameters (the view keeps deciding the size), quality, window/level, crosshair, slice
-// interpolation, the 3D view's overlays, measurements, the input. The layout is the
-// window's to apply.
-void applySession(AppModels& m, const Session& s);
+// interpolation, the 3D view's overlays, measurements, the segmentation, the input. The
+// layout is the window's to apply. Returns the problems to tell the user: parts it could not
+// apply (a segmentation made on another grid than the volume's is left out, not resampled).
+std::vector<std::string> applySession(AppModels& m, const Session& s);
 // openStudy of V, then applySession.
-void openSession(AppModels& m, std::shared_ptr<const Volume> v, std::string name, const Session& s);
+std::vector<std::string> openSession(AppModels& m, std::shared_ptr<const Volume> v,
+                                     std::string name, const Session& s);
 
 // Whether PATH names a session file (".json") rather than a volume: the recent-files list
 // holds both.

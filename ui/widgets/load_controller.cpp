@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <QTimer>
+
 #include "gui_post.h"
 #include "voxray/io/error.h"
 
@@ -54,10 +56,19 @@ void LoadController::load(const std::string& input, LoadOptions options, const Q
 
 void LoadController::showProgress(double fraction) {
   // Slices finish out of order on the importer's threads: the bar only moves forward.
-  if (dialog_) dialog_->setValue(std::max(dialog_->value(), int(fraction * 999)));
+  if (!dialog_ || settingValue_) return;
+  settingValue_ = true;
+  dialog_->setValue(std::max(dialog_->value(), int(fraction * 999)));
+  settingValue_ = false;
 }
 
 void LoadController::finish(VolumeSeries series, const QString& error, bool wasCancelled) {
+  if (settingValue_) {  // called from inside the box's setValue: once it has returned
+    QTimer::singleShot(0, this, [this, series = std::move(series), error, wasCancelled]() mutable {
+      finish(std::move(series), error, wasCancelled);
+    });
+    return;
+  }
   task_.wait();  // the job has posted its last event: it returns at once
   busy_ = false;
   // Gone now, not when a deleteLater comes: the error box that may follow runs its own

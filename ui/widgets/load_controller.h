@@ -42,6 +42,9 @@ class LoadController : public QObject {
   QWidget* dialogParent_;
   QPointer<QProgressDialog> dialog_;
   bool busy_ = false;
+  // A window-modal progress box's setValue runs the event loop: the load's end may arrive
+  // inside it, and must not delete the box under it.
+  bool settingValue_ = false;
   QString name_, input_;
   BackgroundTask task_;  // last member: stops before the rest goes
 };

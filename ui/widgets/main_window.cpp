@@ -16,6 +16,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTimer>
 
 #include "control_panel.h"
 #include "coupling.h"
@@ -31,6 +32,7 @@
 #include "session_state.h"
 #include "settings_store.h"
 #include "slice_view.h"
+#include "study_browser_dialog.h"
 #include "study_state.h"
 #include "tf_editor_dialog.h"
 #include "theme.h"
@@ -210,6 +212,7 @@ void MainWindow::wireTime() {
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
+  file->addAction("Study &browser…", QKeySequence("Ctrl+B"), this, [this] { showStudyBrowser(); });
   file->addAction("Open &DICOM folder…", QKeySequence::Open, this, &MainWindow::openDicomFolder);
   file->addAction("Open &raw volume…", QKeySequence("Ctrl+R"), this, &MainWindow::openRaw);
   file->addAction("Open &sample CT", this, [this] { open(kSampleCtInput, {}); });
@@ -360,15 +363,86 @@ void MainWindow::openFromPacs() {
 #ifdef VOXRAY_HAS_DICOM
   PacsDialog dialog(this);
   if (dialog.exec() != QDialog::Accepted) return;
+  openRetrieved(dialog.chosen().folder, dialog.chosen().seriesUid);
+#endif
+}
+
+void MainWindow::openRetrieved(const std::string& folder, const std::string& series) {
+#ifdef VOXRAY_HAS_STUDYDB
+  // Into the study database too (as voxray-cli pacs get --db): found locally the next time.
+  if (StudyBrowserDialog* b = studyBrowser()) b->storeRetrieved(QString::fromStdString(folder));
+#endif
   LoadOptions options;
-  options.series = dialog.chosen().seriesUid;
+  options.series = series;
   if (options.series.empty()) {  // a whole study: its series go to the picker
-    auto choice = pickSeries(this, dialog.chosen().folder);
+    auto choice = pickSeries(this, folder);
     if (!choice) return;
     options = *choice;
   }
-  open(dialog.chosen().folder, options);
+  open(folder, options);
+}
+
+StudyBrowserDialog* MainWindow::studyBrowser() {
+#ifdef VOXRAY_HAS_STUDYDB
+  if (!studyBrowser_) {
+    studyBrowser_ = new StudyBrowserDialog(this);
+    studyBrowser_->setErrorSink(
+        [this](const QString& title, const QString& message) { showError(title, message); });
+    connect(studyBrowser_, &StudyBrowserDialog::openRequested, this,
+            [this](const QString& folder, const QString& series, bool newWindow) {
+              LoadOptions options;
+              options.series = series.toStdString();
+              if (newWindow)
+                openInNewWindow(folder.toStdString(), options);
+              else
+                open(folder.toStdString(), options);
+            });
+    // The browser's PACS page: stored by the browser itself, then opened here.
+    connect(studyBrowser_, &StudyBrowserDialog::pacsRetrieved, this,
+            [this](const QString& folder, const QString& series) {
+              LoadOptions options;
+              options.series = series.toStdString();
+              if (options.series.empty()) {
+                auto choice = pickSeries(this, folder.toStdString());
+                if (!choice) return;
+                options = *choice;
+              }
+              open(folder.toStdString(), options);
+            });
+  }
+  return studyBrowser_;
+#else
+  return nullptr;
 #endif
+}
+
+StudyBrowserDialog* MainWindow::showStudyBrowser() {
+  StudyBrowserDialog* b = studyBrowser();
+  if (!b) {
+    statusBar()->showMessage("This build has no study database (built without DICOM)", 5000);
+    return nullptr;
+  }
+  b->show();
+  b->raise();
+  b->activateWindow();
+  return b;
+}
+
+MainWindow* MainWindow::openInNewWindow(const std::string& input, const LoadOptions& options) {
+  // Its own models: the second window is a workstation of its own (the comparison views of
+  // the multi-volume work will replace this).
+  auto* models = new AppModels;
+  auto* w = new MainWindow(*models, QString::fromStdString(models_.device));
+  w->setAttribute(Qt::WA_DeleteOnClose);
+  // QWidget sends destroyed before deleting its children (the views bound to the models):
+  // the models go once the whole window is gone.
+  connect(w, &QObject::destroyed, qApp,
+          [models] { QTimer::singleShot(0, qApp, [models] { delete models; }); });
+  if (errorSink_) w->setErrorSink(errorSink_);
+  w->show();
+  w->open(input, options);
+  emit secondWindowOpened(w);
+  return w;
 }
 
 void MainWindow::openRaw() {

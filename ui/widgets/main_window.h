@@ -25,6 +25,7 @@ class QDockWidget;
 namespace voxray::ui {
 
 class SliceView;
+class StudyBrowserDialog;
 class TimePanel;
 class TfEditorDialog;
 class VolumeView;
@@ -58,6 +59,12 @@ class MainWindow : public QMainWindow {
   void open(const std::string& input, const LoadOptions& options,
             const std::map<std::string, std::string>& studyValues = {});
   void restoreSettings();
+  // File → Study browser… (Ctrl+B): shows the local study database's browser, made when
+  // first asked (null in a build without the database).
+  StudyBrowserDialog* showStudyBrowser();
+  // Opens INPUT in a second window of its own (a prior beside the current study); the window
+  // deletes itself and its models when closed.
+  MainWindow* openInNewWindow(const std::string& input, const LoadOptions& options);
   // PATH (a volume or a session) at the top of File → Open recent.
   void addRecent(const std::string& path);
 
@@ -68,6 +75,7 @@ class MainWindow : public QMainWindow {
 
  signals:
   void volumeShown();  // a loaded volume became the document
+  void secondWindowOpened(MainWindow* window);
 
  protected:
   // Every mouse press to release in this window is one undo step (a drag, a slider pulled).
@@ -85,6 +93,10 @@ class MainWindow : public QMainWindow {
   void openDicomFolder();
   void openRaw();
   void openFromPacs();
+  StudyBrowserDialog* studyBrowser();  // made when first needed
+  // A PACS retrieval (FOLDER, its series; empty: a whole study, for the series picker):
+  // stored in the study database, then opened.
+  void openRetrieved(const std::string& folder, const std::string& series);
   void openVolumeFile();
   void exportScreenshot();
   void exportMovie();
@@ -116,6 +128,7 @@ class MainWindow : public QMainWindow {
   SessionInput loading_;                // the input being loaded, for AppModels::source
   MovieController* movies_ = nullptr;   // File → Export movie, in the background
   TfEditorDialog* tfEditor_ = nullptr;  // View → Transfer function editor, made when first asked
+  StudyBrowserDialog* studyBrowser_ = nullptr;  // File → Study browser, made when first asked
 };
 
 }  // namespace voxray::ui

@@ -26,11 +26,18 @@ SessionActions::SessionActions(MainWindow& window, AppModels& models)
     if (!pending_) return;
     const Session s = std::move(*pending_);
     pending_.reset();
-    applySession(models_, s);
+    const auto problems = applySession(models_, s);
     const auto& layouts = sessionLayouts();
     window_.grid().setMaximised(
         int(std::find(layouts.begin(), layouts.end(), s.layout) - layouts.begin()) - 1);
     emit sessionShown();
+    // What the session held but could not be put on this volume (a segmentation of another
+    // grid): said, not silently dropped.
+    if (!problems.empty()) {
+      QString text;
+      for (const auto& p : problems) text += QString::fromStdString(p) + "\n";
+      say("Session opened in part", text.trimmed());
+    }
   });
   connect(&window.loader(), &LoadController::failed, this, [this] { pending_.reset(); });
   connect(&window.loader(), &LoadController::cancelled, this, [this] { pending_.reset(); });

@@ -56,7 +56,10 @@ StartOptions parseStartOptions(const QStringList& arguments) {
     if (parser.isSet("phantom"))
       throw inputError("--phantom opens the synthetic phantom: give it without an INPUT");
     o.input = parser.positionalArguments().first().toStdString();
-  } else if (!parser.isSet("phantom")) {
+    o.inputGiven = true;
+  } else if (parser.isSet("phantom")) {
+    o.inputGiven = true;
+  } else {
     o.input = kSampleCtInput;
   }
   o.load = loadOptionsFromFlags(givenValues(parser, inputFlagSpecs()));
@@ -74,6 +77,11 @@ bool asksForHelpOrVersion(const QStringList& arguments) {
   for (qsizetype i = 1; i < arguments.size() && arguments[i] != "--"; ++i)
     if (asks.contains(arguments[i])) return true;
   return false;
+}
+
+bool opensStudyBrowserAtStart(const StartOptions& options, bool databaseHasStudies) {
+  return databaseHasStudies && !options.inputGiven && options.screenshot.empty() &&
+         !options.quitAfterFirstFrame;
 }
 
 }  // namespace voxray::ui

@@ -21,7 +21,14 @@ struct StartOptions {
   bool quitAfterFirstFrame = false;
   bool resetSettings = false;  // start from defaults, ignoring saved state
   bool startupTimes = false;   // print when slices and 3D images first showed (issue 41 item 9)
+  bool inputGiven = false;     // an INPUT or --phantom: the user named what to open
 };
+
+// Issue 37: started without a file (no INPUT, no --phantom) and with studies in the study
+// database, the workstation opens its study browser over the window (the sample CT loads
+// behind it): a reader's day starts from the list of studies. Never for --screenshot or
+// --quit-after-first-frame (the smoke tests' start).
+bool opensStudyBrowserAtStart(const StartOptions& options, bool databaseHasStudies);
 
 // Throws Error (Input) for a malformed value; --help and --version exit like Qt's parser.
 StartOptions parseStartOptions(const QStringList& arguments);

@@ -91,6 +91,17 @@ class Raycaster : public Renderer {
   void clearSegmentation();
   bool hasSegmentation() const;
 
+  // Fused dvr (issue 36, voxray/engine/overlay.h): OVERLAY (e.g. PET on this CT) goes to the
+  // device with its own table TF (over its physical values), and every dvr frame then
+  // classifies both volumes at each sample's patient point and mixes them by summed
+  // extinction (kernels/march/march.cl). Its grid is its own (origin, spacing, direction);
+  // it shows only inside this volume's box (where the rays march). Returns what the user
+  // should know (overlayWarnings: no shared Frame of Reference). Throws Error (Device) when
+  // its voxels exceed one allocation. iso, mip, the light grid and the path tracer ignore it.
+  std::vector<std::string> setOverlay(const Volume& overlay, const TransferFunction& tf);
+  void clearOverlay();
+  bool hasOverlay() const;
+
   // The volume on the device and the frame set up on it, which a PathTracer shares.
   std::shared_ptr<DeviceFrame> deviceFrame() const;
 

@@ -42,6 +42,11 @@ Image renderReference(const Volume& v, const RenderParams& p);
 // Label-aware dvr (issue 34), as Raycaster::setSegmentation: SEG lies on V's grid.
 FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, const Segmentation& seg);
 Image renderReference(const Volume& v, const RenderParams& p, const Segmentation& seg);
+// Fused dvr (issue 36), as Raycaster::setOverlay: OVERLAY with its table TF on its own grid.
+FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, const Volume& overlay,
+                                const TransferFunction& tf);
+Image renderReference(const Volume& v, const RenderParams& p, const Volume& overlay,
+                      const TransferFunction& tf);
 Image quantise(const FloatImage& f);
 
 }  // namespace voxray
