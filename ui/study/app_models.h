@@ -12,6 +12,7 @@
 #include "segment_tools.h"
 #include "segmentation_model.h"
 #include "session.h"
+#include "time_series.h"
 #include "volume_document.h"
 #include "window_level.h"
 
@@ -25,6 +26,7 @@ struct AppModels {
   MeasurementModel measurements;   // a session keeps them (session_state.cpp)
   SegmentationModel segmentation;  // the segment editor's; a session keeps it too
   SegmentToolModel segmentTools;   // the editor's tool and its settings (not saved)
+  TimePlayer player;               // a 4D series' play rate and state (the document: its point)
   LightingFigures lighting;        // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;

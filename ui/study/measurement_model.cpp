@@ -141,7 +141,14 @@ std::string measurementText(const Volume& v, const Measurement& m) {
     case MeasureKind::Rect:
       break;
   }
-  const RoiStats s = measurementStats(v, m);
+  RoiStats s = measurementStats(v, m);
+  if (v.suv) {  // PET with its SUV scale: SUVmean, SD, min, max (the scale is linear)
+    for (auto* x : {&s.mean, &s.sd, &s.min, &s.max})
+      if (*x) *x = v.suv->toSuv(**x);
+    return "SUVmean " + number(s.mean, 3) + "  SD " + number(s.sd, 3) + "  min " +
+           number(s.min, 3) + "  SUVmax " + number(s.max, 3) + " " + v.suv->unit + ", " +
+           number(s.areaMm2, 1) + " mm², " + std::to_string(s.pixels) + " px";
+  }
   return "mean " + number(s.mean, 1) + "  SD " + number(s.sd, 1) + "  min " + number(s.min, 0) +
          "  max " + number(s.max, 0) + " " + valueUnit(v) + ", " + number(s.areaMm2, 1) + " mm², " +
          std::to_string(s.pixels) + " px";

@@ -26,9 +26,12 @@ RenderWorker::~RenderWorker() {
   task_.wait();
 }
 
-void RenderWorker::setVolume(std::shared_ptr<const Volume> volume) {
+void RenderWorker::setVolume(std::shared_ptr<const Volume> volume, bool sameSeries) {
   {
     std::lock_guard lock(mutex_);
+    // A time point after a new study not yet taken still belongs to that study.
+    pendingSameSeries_ = sameSeries && (!pendingVolume_ || pendingSameSeries_);
+    if (!sameSeries) pendingPreload_.clear();  // another study's time points
     pendingVolume_ = std::move(volume);
   }
   wake_.notify_all();
@@ -52,6 +55,14 @@ void RenderWorker::updateSegmentation(std::vector<Segment> segments, LabelPatch 
     pendingSegmentation_->hasSegments = true;
     pendingSegmentation_->segments = std::move(segments);
     if (!box.empty()) pendingSegmentation_->patches.push_back(std::move(box));
+  }
+  wake_.notify_all();
+}
+
+void RenderWorker::preload(VolumeSeries series) {
+  {
+    std::lock_guard lock(mutex_);
+    pendingPreload_ = std::move(series);
   }
   wake_.notify_all();
 }
@@ -107,7 +118,8 @@ void RenderWorker::buildLoop(ClContext& ctx) {
   }
 }
 
-void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view) {
+void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view,
+                               const Volume* volume) {
   const RenderParams& p = req.params;
   view = upscaleNearest(view, p.width, p.height);
   Renderer& renderer = raycaster.rendererFor(p);
@@ -125,6 +137,7 @@ void RenderWorker::renderBands(Raycaster& raycaster, Request req, Image& view) {
     frame->stats = sum;  // the bands' times so far
     frame->params = p;
     frame->band = b;
+    frame->volume = volume;
     frame->bands = req.bandsTotal;
     frame->bandsDone = req.bandsTotal - int(req.bands.size() - i - 1);
     if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
@@ -143,6 +156,36 @@ void RenderWorker::reportError(const std::string& message, bool volumeRejected) 
     task_.post([f = callbacks_.error, message, volumeRejected] { f(message, volumeRejected); });
 }
 
+void RenderWorker::selectTimePoint(ClContext& ctx, const std::shared_ptr<const Volume>& next,
+                                   std::vector<Uploaded>& uploaded, VolumeResidency& residency,
+                                   Raycaster*& shown) const {
+  auto find = [&](const void* key) {
+    return std::find_if(uploaded.begin(), uploaded.end(),
+                        [&](const Uploaded& u) { return u.volume.get() == key; });
+  };
+  const VolumeResidency::Use use = residency.use(next.get(), next->byteSize());
+  for (const void* key : use.evict) {
+    auto it = find(key);
+    if (it != uploaded.end() && it->raycaster.get() != shown) uploaded.erase(it);
+  }
+  auto it = find(next.get());
+  if (it == uploaded.end()) {
+    try {
+      uploaded.push_back({next, std::make_unique<Raycaster>(ctx, *next)});
+      it = std::prev(uploaded.end());
+    } catch (const std::exception& e) {
+      // The time point shown stays on screen (no study to undo).
+      residency.forget(next.get());
+      reportError(e.what(), false);
+    }
+  }
+  if (it != uploaded.end()) shown = it->raycaster.get();
+  // The raycaster shown before may have been over the budget: released once replaced.
+  std::erase_if(uploaded, [&](const Uploaded& u) {
+    return u.raycaster.get() != shown && !residency.resident(u.volume.get());
+  });
+}
+
 void RenderWorker::run() {
   std::unique_ptr<ClContext> ctx;
   try {
@@ -152,11 +195,15 @@ void RenderWorker::run() {
   } catch (const std::exception& e) {
     reportError(e.what(), false);
   }
-  std::unique_ptr<Raycaster> raycaster;
-  std::shared_ptr<const Volume> volume;      // kept alive while the raycaster uses it
+  // The uploaded volumes (one, or time points of a 4D series), each kept alive while its
+  // raycaster uses it; RAYCASTER renders the one shown.
+  std::vector<Uploaded> uploaded;
+  Raycaster* raycaster = nullptr;
+  std::unique_ptr<VolumeResidency> residency;
+  std::optional<RenderParams> lastView;      // the last view frame's: time points warm up with it
   Image view;                                // the last view frame: banded frames paint over it
   std::optional<Segmentation> segmentation;  // the render thread's copy (setSegmentation)
-  bool segShown = false;                     // the raycaster holds it
+  const Raycaster* segOn = nullptr;          // the raycaster holding it (time points: one each)
   std::thread builder;                       // prepare()'s builds; joined before ctx goes
   struct Join {
     std::thread& t;
@@ -165,7 +212,8 @@ void RenderWorker::run() {
     }
   } join{builder};
   while (true) {
-    std::shared_ptr<const Volume> nextVolume;
+    std::shared_ptr<const Volume> nextVolume, ahead;
+    bool sameSeries = false;
     std::optional<SegmentationUpdate> segUpdate;
     std::optional<Request> req;
     std::vector<RenderParams> prepare;
@@ -173,11 +221,13 @@ void RenderWorker::run() {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
-               pendingSegmentation_ || (!pendingPrepare_.empty() && raycaster);
+               pendingSegmentation_ || (!pendingPrepare_.empty() && raycaster) ||
+               (!pendingPreload_.empty() && raycaster);
       });
       if (task_.cancelled()) return;
       if (raycaster) prepare = std::exchange(pendingPrepare_, {});
       nextVolume = std::move(pendingVolume_);
+      sameSeries = pendingSameSeries_;
       pendingVolume_.reset();
       segUpdate = std::move(pendingSegmentation_);
       pendingSegmentation_.reset();
@@ -187,6 +237,11 @@ void RenderWorker::run() {
       } else if (!nextVolume) {
         req = std::move(pendingView_);
         pendingView_.reset();
+      }
+      // Only when nothing else waits: one time point to upload ahead.
+      if (!nextVolume && !req && raycaster && !pendingPreload_.empty()) {
+        ahead = std::move(pendingPreload_.front());
+        pendingPreload_.erase(pendingPreload_.begin());
       }
     }
     if (!ctx) continue;  // reported once above; nothing can render
@@ -206,12 +261,42 @@ void RenderWorker::run() {
       wake_.notify_all();
     }
     if (nextVolume) {
+      if (!residency)
+        residency = std::make_unique<VolumeResidency>(
+            residencyBudget(ctx->device().isGpu, ctx->device().globalMemBytes));
+      if (!sameSeries) {
+        // Another study: it replaces every volume uploaded, once it is on the device (a
+        // failed upload leaves the last study rendering).
+        try {
+          auto next = std::make_unique<Raycaster>(*ctx, *nextVolume);
+          raycaster = nullptr;
+          uploaded.clear();
+          residency->clear();
+          residency->use(nextVolume.get(), nextVolume->byteSize());
+          uploaded.push_back({nextVolume, std::move(next)});
+          raycaster = uploaded.back().raycaster.get();
+        } catch (const std::exception& e) {
+          reportError(e.what(), true);
+        }
+      } else {
+        selectTimePoint(*ctx, nextVolume, uploaded, *residency, raycaster);
+      }
+    }
+    if (ahead && residency && residency->preload(ahead.get(), ahead->byteSize())) {
       try {
-        raycaster = std::make_unique<Raycaster>(*ctx, *nextVolume);
-        volume = nextVolume;
-        segShown = false;  // a new raycaster has none
-      } catch (const std::exception& e) {
-        reportError(e.what(), true);
+        uploaded.push_back({ahead, std::make_unique<Raycaster>(*ctx, *ahead)});
+        // The first frame on a new raycaster costs as much as the upload again (PoCL CPU,
+        // 512x512x256: upload 554 ms, first frame 426 ms, the next 2.4 ms): a tiny frame
+        // with the view's parameters pays it here, not the first frame the user sees.
+        if (lastView) {
+          RenderParams tiny = *lastView;
+          tiny.width = tiny.height = 8;
+          Image scratch;
+          uploaded.back().raycaster->rendererFor(tiny).render(tiny, scratch);
+        }
+      } catch (const std::exception&) {
+        // Not uploaded ahead: switching to it uploads it then (and says why if it fails).
+        residency->forget(ahead.get());
       }
     }
     // The copy takes the update: a whole new map, or the edited boxes' labels.
@@ -236,29 +321,36 @@ void RenderWorker::run() {
       }
     }
     if (raycaster && (segUpdate || nextVolume)) {
+      const Volume* volume = nullptr;
+      for (const Uploaded& u : uploaded)
+        if (u.raycaster.get() == raycaster) volume = u.volume.get();
       // Only a segmentation on this volume's grid is shown; another waits for its volume.
-      const bool fits = segmentation && sameGrid(segmentation->grid, gridOf(*volume));
+      const bool fits = volume && segmentation && sameGrid(segmentation->grid, gridOf(*volume));
       try {
         if (!fits) {
           if (raycaster->hasSegmentation()) raycaster->clearSegmentation();
-          segShown = false;
-        } else if (!segShown || !segUpdate || segUpdate->replace) {
+          segOn = nullptr;
+        } else if (nextVolume || raycaster != segOn || !segUpdate || segUpdate->replace) {
+          // A new volume or time point (each has its own raycaster), or a whole new map.
           raycaster->setSegmentation(*segmentation);
-          segShown = true;
+          segOn = raycaster;
         } else {
           // The list always (colours, visibility); the labels of the boxes (inclusive ends).
           raycaster->updateSegmentation(*segmentation, anyPatch ? lo : glm::ivec3(0),
                                         anyPatch ? hi - 1 : glm::ivec3(0));
         }
       } catch (const std::exception& e) {
-        segShown = false;
+        segOn = nullptr;
         reportError(e.what(), false);
       }
     }
     if (!req || !raycaster) continue;
+    const Volume* shown = nullptr;
+    for (const Uploaded& u : uploaded)
+      if (u.raycaster.get() == raycaster) shown = u.volume.get();
     if (req->bands.size() > 1 || (req->bandsTotal > 1 && !req->bands.empty())) {
       try {
-        renderBands(*raycaster, std::move(*req), view);
+        renderBands(*raycaster, std::move(*req), view, shown);
       } catch (const std::exception& e) {
         reportError(e.what(), false);
       }
@@ -268,12 +360,16 @@ void RenderWorker::run() {
     frame->params = req->params;
     frame->interactive = req->interactive;
     frame->tag = req->tag;
+    frame->volume = shown;
     try {
       if (req->withHits)
         frame->image = raycaster->renderWithHits(req->params, frame->hits, &frame->stats);
       else
         raycaster->rendererFor(req->params).render(req->params, frame->image, &frame->stats);
-      if (req->tag == 0) view = frame->image;
+      if (req->tag == 0) {
+        view = frame->image;
+        lastView = req->params;
+      }
       if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
     } catch (const std::exception& e) {
       reportError(e.what(), false);

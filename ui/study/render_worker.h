@@ -17,6 +17,7 @@
 #include "background_task.h"
 #include "no_qt.h"
 #include "refine_bands.h"
+#include "time_series.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
@@ -38,6 +39,8 @@ struct Frame {
   // frame. Rows of bands not yet rendered show the last view frame, scaled to this size.
   int bandsDone = 0, bands = 0;
   RowBand band;  // the band this frame added
+  // The volume it shows (identity only, never read): a 4D series' frames say their time point.
+  const Volume* volume = nullptr;
 };
 
 struct RenderCallbacks {
@@ -59,7 +62,16 @@ class RenderWorker {
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
 
-  void setVolume(std::shared_ptr<const Volume> volume);
+  // The volume to render. SAMESERIES: another time point of the series shown (a 4D
+  // series): volumes of the series uploaded before stay on the device within
+  // residencyBudget (time_series.h), so that switching back needs no upload; otherwise
+  // (another study) every uploaded volume is released first.
+  void setVolume(std::shared_ptr<const Volume> volume, bool sameSeries = false);
+  // The time points of SERIES not uploaded yet, uploaded one at a time while no frame or
+  // volume waits, as far as residencyBudget allows, so that switching to them needs no
+  // upload (a frame asked for meanwhile waits for one upload at most). A later setVolume of
+  // another study drops what is left.
+  void preload(VolumeSeries series);
   // The segmentation dvr frames classify by (Raycaster::setSegmentation), a copy the render
   // thread keeps; null: none. A segmentation off the volume's grid is not shown (the next
   // volume's, while it loads, or the last one's).
@@ -84,6 +96,17 @@ class RenderWorker {
   void buildLoop(ClContext& ctx);
   void run();
   void reportError(const std::string& message, bool volumeRejected) const;
+  // The volumes on the device (one, or time points of a 4D series), each kept alive while
+  // its raycaster uses it.
+  struct Uploaded {
+    std::shared_ptr<const Volume> volume;
+    std::unique_ptr<Raycaster> raycaster;
+  };
+  // Makes NEXT, a time point of the series shown, the one SHOWN renders: from UPLOADED when
+  // it is there, else uploaded, releasing what RESIDENCY evicts. A failed upload keeps SHOWN.
+  void selectTimePoint(ClContext& ctx, const std::shared_ptr<const Volume>& next,
+                       std::vector<Uploaded>& uploaded, VolumeResidency& residency,
+                       Raycaster*& shown) const;
 
   std::string device_;
   RenderCallbacks callbacks_;
@@ -98,6 +121,8 @@ class RenderWorker {
     std::vector<LabelPatch> patches;  // in order
   };
   std::optional<SegmentationUpdate> pendingSegmentation_;
+  bool pendingSameSeries_ = false;
+  VolumeSeries pendingPreload_;  // time points still to upload ahead, in order
   struct Request {
     RenderParams params;
     bool interactive;
@@ -108,7 +133,7 @@ class RenderWorker {
   };
   // Renders REQ's bands into VIEW (the last view frame) until done or a newer view request
   // or volume arrives; what is left goes back as the pending view request unless replaced.
-  void renderBands(Raycaster& raycaster, Request req, Image& view);
+  void renderBands(Raycaster& raycaster, Request req, Image& view, const Volume* volume);
   std::optional<Request> pendingView_;        // latest view frame wins
   std::optional<Request> pendingExport_;      // exports are never replaced by view frames
   std::vector<RenderParams> pendingPrepare_;  // for the render thread: to options

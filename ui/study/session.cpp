@@ -320,6 +320,7 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
                    {"planes", s.overlays.planes}};
   if (s.transferFunction)
     j["transfer-function"] = Json::parse(toVolumePropertyJson(*s.transferFunction));
+  if (s.time) j["time"] = {{"point", s.time->point}, {"fps", s.time->fps}};
   if (s.segmentation) j["segmentation"] = segmentationToJson(*s.segmentation);
   try {
     j["measurements"] = Json::parse(s.measurements);
@@ -368,7 +369,7 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
                      "); open it with a newer Voxray");
   r.warnUnknown(root, "",
                 {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays",
-                 "transfer-function", "measurements", "segmentation"});
+                 "transfer-function", "measurements", "segmentation", "time"});
   SessionRead out;
   Session& s = out.session;
   readInput(r, root, sessionPath, out);
@@ -424,6 +425,19 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
       if (what.rfind(origin, 0) == 0) what.erase(0, origin.size());
       r.fail("transfer-function", "is wrong: " + what);
     }
+  }
+  if (root.contains("time")) {
+    const Json& time = r.object(root, "time", "time");
+    r.warnUnknown(time, "time.", {"point", "fps"});
+    Session::Time t;
+    const Json& point = r.require(time, "time.point", "point");
+    if (!point.is_number_integer() || point.get<long long>() < 0 || point.get<long long>() > 100000)
+      r.fail("time.point", "must be a whole number 0 ... 100000 (a time point, 0-based)");
+    t.point = point.get<int>();
+    t.fps = r.number(r.require(time, "time.fps", "fps"), "time.fps");
+    if (!(t.fps >= 0.5 && t.fps <= 60.0))
+      r.fail("time.fps", "must be 0.5 ... 60 frames per second");
+    s.time = t;
   }
   if (root.contains("measurements")) {
     if (!root.at("measurements").is_array()) r.fail("measurements", "must be an array [ ... ]");

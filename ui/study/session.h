@@ -63,6 +63,13 @@ struct Session {
   // The segment editor's segmentation (issue 34); optional in the file. Its grid is checked
   // against the volume when the session is applied (session_state.h).
   std::optional<Segmentation> segmentation;
+  // A 4D series: the time point on screen (0-based) and the play rate (frames per second).
+  // Optional in the file ("time"); written only for a series of more than one time point.
+  struct Time {
+    int point = 0;
+    double fps = 10.0;
+  };
+  std::optional<Time> time;
 };
 
 struct SessionRead {

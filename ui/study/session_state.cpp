@@ -27,6 +27,11 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   s.measurements = measurementsToJson(m.measurements).at("items").dump();
   if (m.segmentation.active() && !m.segmentation.segmentation().segments.empty())
     s.segmentation = m.segmentation.segmentation();
+  if (m.document.timePoints() > 1) {
+    s.time = Session::Time{m.document.timePoint(), m.player.fps()};
+    // voxray-cli render --session opens the input with its flags: this time point.
+    s.input.flags["time"] = std::to_string(m.document.timePoint());
+  }
   return s;
 }
 
@@ -65,6 +70,11 @@ std::vector<std::string> applySession(AppModels& m, const Session& s) {
     m.crosshair.setSlab(Orientation(o), s.views[o].slab);
   }
   m.crosshair.setPlanes(s.centre.value_or(glm::dvec3(s.crosshair)), rotations);
+  if (s.time) {
+    m.player.pause();
+    m.player.setFps(s.time->fps);
+    m.document.setTimePoint(s.time->point);  // out of range (another series): stays
+  }
   if (s.segmentation) {
     const auto& volume = m.document.volume();
     try {

@@ -1,5 +1,7 @@
 #include "slice_image.h"
 
+#include "time_series.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -81,7 +83,7 @@ namespace voxray {
 
 CursorProbe probeAt(const Volume& v, const glm::dvec3& voxel, Interp interp) {
   CursorProbe p;
-  p.unit = valueUnit(v);  // HU only for values that are HU
+  p.unit = readoutUnit(v);  // HU only for values that are HU; SUVbw for a PET with its scale
   p.voxel = glm::ivec3(glm::round(voxel));
   const glm::dvec3 at = interp == Interp::Nearest ? glm::dvec3(p.voxel) : voxel;
   p.patientMm = voxelToPatient(v, at);
@@ -91,7 +93,8 @@ CursorProbe probeAt(const Volume& v, const glm::dvec3& voxel, Interp interp) {
   PlaneGrid g;
   g.originMm = p.patientMm;
   g.size = {1, 1};
-  p.value = samplePlane(v, g, interp, 0.0F).front();
+  p.value = readoutValue(v, samplePlane(v, g, interp, 0.0F).front());
+  p.decimals = v.suv ? 3 : 0;  // SUVs are small numbers: 6.607, not 7
   return p;
 }
 

@@ -43,10 +43,11 @@ double sampleValue(const Volume& v, const glm::dvec3& voxel);
 // the nearest voxel; Linear reads the trilinear value at the cursor itself.
 struct CursorProbe {
   bool inside = false;        // false: outside the volume, no value
-  double value = 0.0;         // physical units (Volume::unit)
+  double value = 0.0;         // physical units (Volume::unit), or SUVbw (readoutValue)
   glm::ivec3 voxel{0};        // nearest voxel index
   glm::dvec3 patientMm{0.0};  // LPS position of the reading
   std::string unit;
+  int decimals = 0;  // how the readout prints VALUE
 };
 CursorProbe probeAt(const Volume& v, const glm::dvec3& voxel, Interp interp);
 

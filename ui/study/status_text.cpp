@@ -40,8 +40,8 @@ std::string formatPatientMm(const glm::dvec3& mm) {
 std::string formatCursorProbe(const CursorProbe& p) {
   char buf[96];
   if (p.inside)
-    std::snprintf(buf, sizeof buf, "%.0f %s  [%d, %d, %d]", p.value, p.unit.c_str(), p.voxel.x,
-                  p.voxel.y, p.voxel.z);
+    std::snprintf(buf, sizeof buf, "%.*f %s  [%d, %d, %d]", p.decimals, p.value, p.unit.c_str(),
+                  p.voxel.x, p.voxel.y, p.voxel.z);
   else
     std::snprintf(buf, sizeof buf, "— (outside the volume)");
   return std::string(buf) + "\n" + formatPatientMm(p.patientMm);

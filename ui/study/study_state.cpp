@@ -131,6 +131,13 @@ InitialWindow initialWindow(const Volume& v) {
 
 void openStudy(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
                const std::map<std::string, std::string>& values) {
+  openStudy(m, VolumeSeries{std::move(v)}, std::move(name), values, 0);
+}
+
+void openStudy(AppModels& m, VolumeSeries series, std::string name,
+               const std::map<std::string, std::string>& values, int timePoint) {
+  timePoint = std::clamp(timePoint, 0, int(series.size()) - 1);
+  const std::shared_ptr<const Volume> v = series.at(size_t(timePoint));
   std::map<std::string, std::string> forStudy;
   for (const auto& [key, value] : values)
     if (!isPreference(key)) forStudy.emplace(key, value);
@@ -156,7 +163,7 @@ void openStudy(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
   m.measurements.clear();  // a study's own; a session brings them back
   m.segmentation.clear();  // as are its segments
   // Last: whoever hears the document change sees the new study's state with it.
-  m.document.set(std::move(v), std::move(name));
+  m.document.setSeries(std::move(series), std::move(name), timePoint);
 }
 
 void restorePreviousStudy(AppModels& m) {

@@ -54,6 +54,10 @@ InitialWindow initialWindow(const Volume& v);
 // document changes.
 void openStudy(AppModels& m, std::shared_ptr<const Volume> v, std::string name,
                const std::map<std::string, std::string>& values = {});
+// A 4D series (its time points, non-empty) opened as one study with time point TIMEPOINT
+// (clamped) on screen; the per-study state starts from that time point's volume.
+void openStudy(AppModels& m, VolumeSeries series, std::string name,
+               const std::map<std::string, std::string>& values, int timePoint);
 // Puts back the volume shown before the last openStudy (the new one could not be shown)
 // with the camera, clip box, light, window and crosshair it had (when openStudy opened
 // the one that failed). Nothing without one.

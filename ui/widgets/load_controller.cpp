@@ -12,6 +12,7 @@ namespace voxray::ui {
 LoadController::LoadController(QWidget* dialogParent)
     : QObject(dialogParent), dialogParent_(dialogParent), task_(postTo(this)) {
   qRegisterMetaType<std::shared_ptr<const Volume>>("std::shared_ptr<const voxray::Volume>");
+  qRegisterMetaType<VolumeSeries>("voxray::VolumeSeries");
 }
 
 LoadController::~LoadController() = default;  // task_ cancels and waits
@@ -30,16 +31,26 @@ void LoadController::load(const std::string& input, LoadOptions options, const Q
     options.progress = [this](double p, const std::string&) {
       task_.post([this, p] { showProgress(p); });
     };
-    std::shared_ptr<const Volume> volume;
+    VolumeSeries series;
     QString error;
     bool wasCancelled = false;
     try {
-      volume = std::make_shared<const Volume>(loadVolume(input, options));
+      // Every time point at once (all resident in memory, issue 36): playing then never
+      // waits for the disk; a 10-phase 512x512x256 series takes 1.25 GiB.
+      for (Volume& v : loadVolumeSeries(input, options))
+        series.push_back(std::make_shared<const Volume>(std::move(v)));
+      if (options.timePoint && *options.timePoint >= int(series.size()))
+        throw inputError(input + ": --time " + std::to_string(*options.timePoint) +
+                         " is out of range: it has " + std::to_string(series.size()) +
+                         " time point(s), 0 ... " + std::to_string(series.size() - 1));
     } catch (const std::exception& e) {
       wasCancelled = isCancellation(e);
       error = QString::fromStdString(e.what());
+      series.clear();
     }
-    task_.post([this, volume, error, wasCancelled] { finish(volume, error, wasCancelled); });
+    task_.post([this, series = std::move(series), error, wasCancelled]() mutable {
+      finish(std::move(series), error, wasCancelled);
+    });
   });
 }
 
@@ -51,11 +62,11 @@ void LoadController::showProgress(double fraction) {
   settingValue_ = false;
 }
 
-void LoadController::finish(std::shared_ptr<const Volume> volume, const QString& error,
-                            bool wasCancelled) {
+void LoadController::finish(VolumeSeries series, const QString& error, bool wasCancelled) {
   if (settingValue_) {  // called from inside the box's setValue: once it has returned
-    QTimer::singleShot(
-        0, this, [this, volume, error, wasCancelled] { finish(volume, error, wasCancelled); });
+    QTimer::singleShot(0, this, [this, series = std::move(series), error, wasCancelled]() mutable {
+      finish(std::move(series), error, wasCancelled);
+    });
     return;
   }
   task_.wait();  // the job has posted its last event: it returns at once
@@ -70,8 +81,8 @@ void LoadController::finish(std::shared_ptr<const Volume> volume, const QString&
   // nothing to change.
   if (wasCancelled || task_.cancelled())
     emit cancelled();
-  else if (volume)
-    emit loaded(std::move(volume), name_, input_);
+  else if (!series.empty())
+    emit loaded(std::move(series), name_, input_);
   else
     emit failed(error);
 }

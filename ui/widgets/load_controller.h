@@ -1,5 +1,6 @@
 #pragma once
-// Loads volumes through voxray::loadVolume as a BackgroundTask, with a progress dialog that
+// Loads volumes through voxray::loadVolumeSeries as a BackgroundTask (every time point of a
+// 4D input, one volume otherwise), with a progress dialog that
 // can cancel. The window stays responsive; progress and the outcome arrive on the UI thread:
 // the volume, the importer's message, or a cancellation (which is no error).
 #include <memory>
@@ -9,6 +10,7 @@
 #include <QProgressDialog>
 
 #include "background_task.h"
+#include "time_series.h"
 #include "voxray/io/load.h"
 
 namespace voxray::ui {
@@ -27,14 +29,15 @@ class LoadController : public QObject {
   void cancel() { task_.cancel(); }
 
  signals:
-  void loaded(std::shared_ptr<const voxray::Volume> volume, const QString& name,
-              const QString& input);
+  // SERIES: the time points in order (one for a 3D input); OPTIONS.timePoint, when given,
+  // is the one to show first.
+  void loaded(voxray::VolumeSeries series, const QString& name, const QString& input);
   void failed(const QString& message);
   void cancelled();
 
  private:
   void showProgress(double fraction);
-  void finish(std::shared_ptr<const Volume> volume, const QString& error, bool wasCancelled);
+  void finish(VolumeSeries series, const QString& error, bool wasCancelled);
 
   QWidget* dialogParent_;
   QPointer<QProgressDialog> dialog_;

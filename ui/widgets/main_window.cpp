@@ -37,6 +37,7 @@
 #include "study_state.h"
 #include "tf_editor_dialog.h"
 #include "theme.h"
+#include "time_panel.h"
 #include "volume_view.h"
 #include "voxray/engine/input_flags.h"
 #include "voxray/io/sample_volume.h"
@@ -130,17 +131,17 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
           [this](const QString& message) { showError("Movie export failed", message); });
   loader_ = new LoadController(this);
   connect(loader_, &LoadController::loaded, this,
-          [this](std::shared_ptr<const Volume> v, const QString& name, const QString& input) {
+          [this](VolumeSeries series, const QString& name, const QString& input) {
             try {
-              openStudy(models_, std::move(v), name.toStdString(), std::exchange(studyValues_, {}));
+              openStudy(models_, std::move(series), name.toStdString(),
+                        std::exchange(studyValues_, {}), loadingTimePoint_);
             } catch (const std::exception& e) {  // values were checked when given: a bug
               showError("Cannot open", QString::fromStdString(e.what()));
               return;
             }
             models_.source = std::exchange(loading_, {});
             if (!input.isEmpty()) addRecent(input.toStdString());
-            for (const auto& w : models_.document.volume()->warnings)
-              statusBar()->showMessage(QString::fromStdString(w), 10000);
+            showLoadWarnings();
             emit volumeShown();
           });
   connect(loader_, &LoadController::failed, this,
@@ -149,6 +150,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
           [this] { statusBar()->showMessage("Loading cancelled", 5000); });
   wireMeasurements();
   wireSegments();
+  wireTime();
   sessions_ = new SessionActions(*this, models_);
   buildMenus();
   qApp->installEventFilter(this);
@@ -209,6 +211,35 @@ void MainWindow::wireSegments() {
                   [this] { scheduler_->updateSegmentation(models_.segmentation); });
 }
 
+void MainWindow::showLoadWarnings() {
+  // Every warning at once (a PET's missing SUV attribute among them): one message each would
+  // replace the one before it unread.
+  QStringList lines;
+  for (const auto& w : models_.document.volume()->warnings) {
+    const QString line = QString::fromStdString(guiMessage(w));
+    if (!lines.contains(line)) lines << line;
+  }
+  if (lines.isEmpty()) return;
+  statusBar()->showMessage(lines.join("  ·  "), 30000);
+  statusBar()->setToolTip(lines.join("\n"));
+}
+
+void MainWindow::wireTime() {
+  timePanel_ = new TimePanel(models_);
+  timeDock_ = new QDockWidget("Time");
+  timeDock_->setObjectName("timeDock");
+  timeDock_->setWidget(timePanel_);
+  addDockWidget(Qt::BottomDockWidgetArea, timeDock_);
+  timeDock_->hide();
+  connect(timePanel_, &TimePanel::csvWritten, this,
+          [this](const QString& path) { statusBar()->showMessage("Curve saved: " + path, 10000); });
+  connect(timePanel_, &TimePanel::csvFailed, this,
+          [this](const QString& message) { showError("Cannot export the curve", message); });
+  // A 4D series brings the panel up; a 3D volume puts it away.
+  onModelChange<>(this, models_.document.changed,
+                  [this] { timeDock_->setVisible(models_.document.timePoints() > 1); });
+}
+
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
   file->addAction("Study &browser…", QKeySequence("Ctrl+B"), this, [this] { showStudyBrowser(); });
@@ -247,6 +278,11 @@ void MainWindow::buildMenus() {
   segments->setShortcut(QKeySequence("Ctrl+Shift+S"));
   segments->setToolTip("Show or hide the Segments panel (the segment editor)");
   view->addAction(segments);
+  QAction* time = timeDock_->toggleViewAction();
+  time->setText("T&ime series");
+  time->setObjectName("viewTime");
+  time->setToolTip("Show or hide the time panel of a 4D series");
+  view->addAction(time);
   QAction* studyText = view->addAction("&Patient and study text", this,
                                        [this](bool on) { models_.render.setStudyText(on); });
   studyText->setCheckable(true);
@@ -339,6 +375,7 @@ void MainWindow::open(const std::string& input, const LoadOptions& options,
   if (loader_->busy()) return;  // the loader ignores it too: keep the running load's values
   studyValues_ = studyValues;
   loading_ = {input, flagsFromLoadOptions(options)};
+  loadingTimePoint_ = options.timePoint.value_or(0);
   QString name =
       input.empty() ? QString("head phantom") : QFileInfo(QString::fromStdString(input)).fileName();
   if (options.raw) {

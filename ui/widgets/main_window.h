@@ -27,6 +27,7 @@ namespace voxray::ui {
 class SegmentPanel;
 class SliceView;
 class StudyBrowserDialog;
+class TimePanel;
 class TfEditorDialog;
 class VolumeView;
 
@@ -53,6 +54,8 @@ class MainWindow : public QMainWindow {
   MovieController& movies() { return *movies_; }
   SegmentPanel& segments() { return *segmentPanel_; }
   QDockWidget* segmentDock() { return segmentDock_; }
+  TimePanel& timePanel() { return *timePanel_; }
+  QDockWidget& timeDock() { return *timeDock_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
@@ -88,6 +91,8 @@ class MainWindow : public QMainWindow {
   void buildMenus();
   void wireMeasurements();  // views, side panel and 3D picks share models_.measurements
   void wireSegments();      // the Segments dock, the slice views' overlays and tools, the 3D view
+  void wireTime();
+  void showLoadWarnings();  // every loader warning at once in the status bar
   void rebuildRecentMenu();
   void openDicomFolder();
   void openRaw();
@@ -123,6 +128,9 @@ class MainWindow : public QMainWindow {
   QDockWidget* measureDock_ = nullptr;  // View → Measurements reopens it
   QDockWidget* segmentDock_ = nullptr;  // View → Segments
   SegmentPanel* segmentPanel_ = nullptr;
+  QDockWidget* timeDock_ = nullptr;  // a 4D series' time slider, play and curve
+  TimePanel* timePanel_ = nullptr;
+  int loadingTimePoint_ = 0;            // the time point to show first of the input being loaded
   SessionInput loading_;                // the input being loaded, for AppModels::source
   MovieController* movies_ = nullptr;   // File → Export movie, in the background
   TfEditorDialog* tfEditor_ = nullptr;  // View → Transfer function editor, made when first asked

@@ -93,6 +93,7 @@ QDockWidget* makeMeasurementDock(MeasurementModel& m, VolumeDocument& doc) {
   };
   refresh();
   onModelChange<>(dock, m.changed, refresh);
+  onModelChange<>(dock, doc.timeChanged, refresh);  // an ROI's statistics at the time point
   QObject::connect(list, &QListWidget::currentItemChanged, dock, [&m](QListWidgetItem* item) {
     if (item) m.select(item->data(Qt::UserRole).toInt());
   });

@@ -43,6 +43,16 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
   docConnection_ = doc_.changed.connect([this] {
     sawFullFrame_ = false;
     worker_->setVolume(doc_.volume());
+    // A 4D series: its other time points go to the device while the view is idle.
+    if (doc_.timePoints() > 1) worker_->preload(doc_.series());
+    requestFrame();
+  });
+  // Another time point: the same camera and look on its volume (kept on the device). Played
+  // or dragged through, time points come as fast as a drag's cameras: drag frames, the sharp
+  // frame once the time point rests.
+  timeConnection_ = doc_.timeChanged.connect([this] {
+    worker_->setVolume(doc_.volume(), true);
+    beginInteraction();
     requestFrame();
   });
   if (!doc_.empty()) worker_->setVolume(doc_.volume());
@@ -51,6 +61,7 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
 RenderScheduler::~RenderScheduler() {
   state_.changed.disconnect(stateConnection_);
   doc_.changed.disconnect(docConnection_);
+  doc_.timeChanged.disconnect(timeConnection_);
   worker_.reset();  // joins the render thread before the callbacks' target goes away
 }
 

@@ -83,7 +83,7 @@ class RenderScheduler : public QObject {
   FrameRateMeter rate_;
   AdaptiveQuality adaptive_;
   ProgressiveRender progressive_;  // cinematic: the next pass while the view is still
-  int stateConnection_ = 0, docConnection_ = 0;
+  int stateConnection_ = 0, docConnection_ = 0, timeConnection_ = 0;
   bool sentSegmentation_ = false;  // the worker holds a segmentation: edits send their box
 };
 

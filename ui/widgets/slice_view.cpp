@@ -42,6 +42,12 @@ SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crossha
     shown_.reset();
     rebuild();
   });
+  // Another time point: the same plane, zoom and pan on its volume.
+  timeConnection_ = doc_.timeChanged.connect([this] {
+    shown_.reset();
+    wanted_.reset();  // a slab of the last time point still rendering is stale
+    rebuild();
+  });
   crossConnection_ = crosshair_.changed.connect([this] { rebuild(); });
   wlConnection_ = wl_.changed.connect([this] { rebuild(); });
   stateConnection_ = state_.changed.connect([this](unsigned what) {
@@ -58,6 +64,7 @@ SliceView::~SliceView() {
   if (segmentation_) segmentation_->changed.disconnect(segConnection_);
   if (segmentTools_) segmentTools_->changed.disconnect(toolConnection_);
   doc_.changed.disconnect(docConnection_);
+  doc_.timeChanged.disconnect(timeConnection_);
   crosshair_.changed.disconnect(crossConnection_);
   wl_.changed.disconnect(wlConnection_);
   state_.changed.disconnect(stateConnection_);
@@ -398,6 +405,9 @@ void SliceView::paintOverlay(QPainter& p) {
     o.planeNote += (o.planeNote.empty() ? "" : ", ") + mode + " " +
                    QString::number(slab.thicknessMm).toStdString() + " mm";
   }
+  if (doc_.timePoints() > 1)  // a 4D series: which time point this is, 1-based as read
+    o.planeNote += (o.planeNote.empty() ? "" : ", ") + std::string("time ") +
+                   std::to_string(doc_.timePoint() + 1) + "/" + std::to_string(doc_.timePoints());
   o.clipEdges = sliceClipEdges(axes_, v.dims, state_.params().clip);
   o.showClip = !state_.params().clip.isFull() || dragFace_ >= 0;
   o.clipActive = sliceInsideClip(axes_, v.dims, state_.params().clip, crosshair_.sliceOf(axes_));
@@ -414,6 +424,7 @@ void SliceView::paintOverlay(QPainter& p) {
     // Read as the view samples: the probe follows the slice interpolation setting.
     o.cursorText = formatCursorProbe(probeAt(v, voxel, state_.sliceInterp()));
   }
+  cursorReadout_ = QString::fromStdString(o.cursorText);
   drawSliceOverlay(p, o, rect(), [this](double u, double vv) { return toWidget(u, vv); });
   if (measurements_ && measurable() && (!exporting_ || measurements_->showInExports()))
     drawSliceMeasurements(p, rect(), v, *measurements_, axes_, o.slice,

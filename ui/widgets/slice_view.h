@@ -40,6 +40,9 @@ class SliceView : public QWidget {
   // it arrives the view shows the last slab image, or the thin slice when it has none.
   const QImage& sliceImage() const { return image_; }
   bool slabPending() const { return wanted_.has_value(); }
+  // The cursor readout as last painted ("6.607 SUVbw  [24, 24, 16]" and the position);
+  // empty while the cursor is outside the view.
+  const QString& cursorReadout() const { return cursorReadout_; }
   // The crosshair's two lines on screen and the handles that turn them (widget pixels).
   std::array<glm::dvec2, 2> crosshairTraces() const;
   std::array<QPointF, 4> rotationHandles() const;
@@ -153,7 +156,9 @@ class SliceView : public QWidget {
   SegmentToolModel* segmentTools_ = nullptr;
   int segConnection_ = 0, toolConnection_ = 0;
   QImage segmentOverlay_, previewOverlay_;
-  int docConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0, stateConnection_ = 0;
+  QString cursorReadout_;
+  int docConnection_ = 0, timeConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0,
+      stateConnection_ = 0;
   SlabRenderer slabs_;  // last member: its thread stops before the rest goes
 };
 
