@@ -51,7 +51,9 @@ void RenderWorker::setSegmentation(std::shared_ptr<const Segmentation> whole) {
 void RenderWorker::updateSegmentation(std::vector<Segment> segments, LabelPatch box) {
   {
     std::lock_guard lock(mutex_);
-    if (!pendingSegmentation_) pendingSegmentation_.emplace();
+    // Assigned, not emplace()d: clang decides the nested type is not default-constructible
+    // where std::optional is instantiated, inside the still incomplete class.
+    if (!pendingSegmentation_) pendingSegmentation_ = SegmentationUpdate{};
     pendingSegmentation_->hasSegments = true;
     pendingSegmentation_->segments = std::move(segments);
     if (!box.empty()) pendingSegmentation_->patches.push_back(std::move(box));
