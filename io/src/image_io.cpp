@@ -6,9 +6,9 @@
 #include <fstream>
 #include <system_error>
 
-#include "temporary_file.h"
 #include "voxray/io/error.h"
 #include "voxray/io/image.h"
+#include "voxray/io/temporary_file.h"
 
 namespace fs = std::filesystem;
 

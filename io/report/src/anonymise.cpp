@@ -3,8 +3,6 @@
 // transfer syntax, so the copy decodes to the same voxels.
 #include "voxray/io/anonymise.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -21,6 +19,7 @@
 #include <dcmtk/dcmdata/dcuid.h>
 
 #include "basic_profile.h"
+#include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 
 namespace voxray {
@@ -245,16 +244,9 @@ AnonymiseResult anonymise(const std::string& input, const std::string& output,
     std::snprintf(name, sizeof name, "S%03d/IM%05d.dcm", s.first, ++s.second);
     const fs::path target = out / name;
     fs::create_directories(target.parent_path(), ec);
-    const std::string tmp = target.string() + ".part" + std::to_string(getpid());
     // A new meta header: the old one names the source's SOP Instance UID and sender.
-    OFCondition cond = file.saveFile(tmp.c_str(), EXS_Unknown, EET_ExplicitLength, EGL_recalcGL,
-                                     EPD_noChange, 0, 0, EWM_createNewMeta);
-    if (cond.bad() || std::rename(tmp.c_str(), target.c_str()) != 0) {
-      std::remove(tmp.c_str());
-      throw outputError("anonymise: cannot write " + target.string() + " (" +
-                        (cond.bad() ? cond.text() : "rename failed") +
-                        "): check the folder is writable and has free space");
-    }
+    dicomwrite::saveAtomically(file, target.string(), "anonymised copy",
+                               dicomwrite::Encoding::asReadNewMeta);
     result.files.push_back(name);
     ++result.written;
   }

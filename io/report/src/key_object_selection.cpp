@@ -7,7 +7,7 @@
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmsr/dsrdoc.h>
 
-#include "dicom_text.h"
+#include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 #include "voxray/io/key_object_selection.h"
 
@@ -98,7 +98,7 @@ std::string writeKeyObjectSelection(const std::string& path, const Volume& v,
   check(doc.write(*file.getDataset()), "DICOM dataset");
   OFString uid;
   doc.getSOPInstanceUID(uid);
-  report::saveAtomically(file, path, "key object selection");
+  dicomwrite::saveAtomically(file, path, "key object selection");
   return uid.c_str();
 }
 

@@ -13,7 +13,7 @@
 #include <dcmtk/dcmsr/codes/sct.h>
 #include <dcmtk/dcmsr/dsrdoc.h>
 
-#include "dicom_text.h"
+#include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 #include "voxray/io/measurement_report.h"
 
@@ -129,7 +129,7 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
   TID1500_MeasurementReport report(CMR_CID7021::ImagingMeasurementReport);
   check(report.setLanguage(CID5000_Languages::English, CID5001_Countries::UnitedStates),
         "language");
-  check(report.getObservationContext().addDeviceObserver(report::newUid(SITE_INSTANCE_UID_ROOT),
+  check(report.getObservationContext().addDeviceObserver(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT),
                                                          "Voxray", "Voxray"),
         "observer");
   check(report.addProcedureReported(CMR_CID100(DSRCodedEntryValue(CODE_SCT_ImagingProcedure))),
@@ -163,7 +163,7 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
     check(report.addIndividualMeasurements(), "measurement group");
     Group& group = report.getIndividualMeasurements();
     check(group.setTrackingIdentifier(label), "tracking identifier");
-    check(group.setTrackingUniqueIdentifier(report::newUid(SITE_INSTANCE_UID_ROOT)),
+    check(group.setTrackingUniqueIdentifier(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT)),
           "tracking UID");
     // One TID 300 per value, each with the image region it was measured in.
     auto add = [&](const DSRCodedEntryValue& name, double x, const DSRCodedEntryValue& unit,
@@ -243,7 +243,7 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
   OFString uid;
   doc.getSOPInstanceUID(uid);
   out.sopInstanceUid = uid.c_str();
-  report::saveAtomically(file, path, "measurement report");
+  dicomwrite::saveAtomically(file, path, "measurement report");
   return out;
 }
 

@@ -8,6 +8,7 @@ target_sources(voxray_io PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/bounded_load.cpp
   ${CMAKE_CURRENT_LIST_DIR}/codec_registry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/dicom_import.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/dicom_write.cpp
   ${CMAKE_CURRENT_LIST_DIR}/file_scan.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frame_header.cpp
   ${CMAKE_CURRENT_LIST_DIR}/j2k_decode.cpp

@@ -1,7 +1,5 @@
 #include "voxray/io/phantom_series.h"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +14,7 @@
 #include <dcmtk/dcmdata/dcvrda.h>
 #include <dcmtk/dcmdata/dcvrtm.h>
 
+#include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 
 namespace fs = std::filesystem;
@@ -23,11 +22,7 @@ namespace fs = std::filesystem;
 namespace voxray {
 namespace {
 
-std::string newUid(const char* root) {
-  char uid[100];
-  dcmGenerateUniqueIdentifier(uid, root);
-  return uid;
-}
+using dicomwrite::newUid;
 
 std::string number(double v) {
   char text[32];
@@ -101,16 +96,6 @@ void putSlice(DcmDataset* d, const Put& put, glm::ivec3 dims, glm::dvec3 spacing
   d->putAndInsertUint16(DCM_Rows, Uint16(dims.y));
   d->putAndInsertUint16(DCM_Columns, Uint16(dims.x));
   d->putAndInsertUint16Array(DCM_PixelData, pixels.data(), pixels.size());
-}
-
-void save(DcmFileFormat& file, const std::string& path) {
-  std::string tmp = path + ".part" + std::to_string(getpid());
-  OFCondition cond = file.saveFile(tmp.c_str(), EXS_LittleEndianExplicit);
-  if (cond.bad() || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw outputError("Cannot write " + path + " (" + (cond.bad() ? cond.text() : "rename failed") +
-                      "): check the folder and its free space");
-  }
 }
 
 // Distance of voxel (i, j, k)'s centre from the volume's centre, in mm.
@@ -233,7 +218,7 @@ void writePetSpherePhantom(const std::string& dir, const PetSpherePhantom& p) {
     putSlice(d, put, p.dims, p.spacingMm, k, pixels);
     char name[32];
     std::snprintf(name, sizeof name, "PT%04d.dcm", k + 1);
-    save(file, (fs::path(dir) / name).string());
+    dicomwrite::saveAtomically(file, (fs::path(dir) / name).string(), "phantom slice");
   }
 }
 
@@ -294,7 +279,7 @@ void writeBeatingSpherePhantom(const std::string& dir, const BeatingSpherePhanto
       putSlice(d, put, p.dims, p.spacingMm, k, pixels);
       char name[32];
       std::snprintf(name, sizeof name, "CT%05d.dcm", instance);
-      save(file, (fs::path(dir) / name).string());
+      dicomwrite::saveAtomically(file, (fs::path(dir) / name).string(), "phantom slice");
     }
   }
 }

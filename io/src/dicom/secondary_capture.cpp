@@ -1,36 +1,16 @@
 #include "voxray/io/secondary_capture.h"
 
-#include <unistd.h>
-
-#include <cstdio>
-#include <ctime>
-
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcuid.h>
 
+#include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 
 namespace voxray {
-namespace {
 
-std::string newUid(const char* root) {
-  char uid[100];
-  dcmGenerateUniqueIdentifier(uid, root);
-  return uid;
-}
-
-std::string now(const char* format) {
-  char text[32];
-  std::time_t t = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&t, &local);
-  std::strftime(text, sizeof text, format, &local);
-  return text;
-}
-
-}  // namespace
+using dicomwrite::newUid;
 
 std::string writeSecondaryCapture(const std::string& path, const std::vector<Image>& frames,
                                   const SecondaryCaptureInfo& info) {
@@ -85,8 +65,8 @@ std::string writeSecondaryCapture(const std::string& path, const std::vector<Ima
   put(DCM_ConversionType, "WSD");  // workstation
   put(DCM_InstanceNumber, "1");
   put(DCM_PatientOrientation, "");
-  put(DCM_ContentDate, now("%Y%m%d"));
-  put(DCM_ContentTime, now("%H%M%S"));
+  put(DCM_ContentDate, dicomwrite::localNow("%Y%m%d"));
+  put(DCM_ContentTime, dicomwrite::localNow("%H%M%S"));
   put(DCM_BurnedInAnnotation, info.burnedInAnnotation ? "YES" : "NO");
   put(DCM_ImageType, "DERIVED\\SECONDARY");
   if (!s.frameOfReferenceUid.empty()) put(DCM_FrameOfReferenceUID, s.frameOfReferenceUid);
@@ -107,15 +87,7 @@ std::string writeSecondaryCapture(const std::string& path, const std::vector<Ima
   d->putAndInsertUint16(DCM_HighBit, 7);
   d->putAndInsertUint16(DCM_PixelRepresentation, 0);
   d->putAndInsertUint8Array(DCM_PixelData, rgb.data(), rgb.size());
-  // Written aside, then renamed: an interrupted write never leaves half a file at PATH.
-  std::string tmp = path + ".part" + std::to_string(getpid());
-  OFCondition cond = file.saveFile(tmp.c_str(), EXS_LittleEndianExplicit);
-  if (cond.bad() || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw outputError("Cannot write the Secondary Capture " + path + " (" +
-                      (cond.bad() ? cond.text() : "rename failed") +
-                      "): check the folder exists and has free space");
-  }
+  dicomwrite::saveAtomically(file, path, "Secondary Capture");
   return sopUid;
 }
 

@@ -7,9 +7,9 @@
 #include <optional>
 #include <system_error>
 
-#include "../temporary_file.h"
 #include "mp4_writer.h"
 #include "voxray/io/error.h"
+#include "voxray/io/temporary_file.h"
 
 namespace fs = std::filesystem;
 

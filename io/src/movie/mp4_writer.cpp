@@ -11,9 +11,9 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
-#include "../temporary_file.h"
 #include "mp4_writer.h"
 #include "voxray/io/error.h"
+#include "voxray/io/temporary_file.h"
 
 namespace fs = std::filesystem;
 

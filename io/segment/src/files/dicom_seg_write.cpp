@@ -20,16 +20,13 @@
 #include <vector>
 
 #include "formats.h"
+#include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 
 namespace voxray::segfiles {
 namespace {
 
-std::string newUid(const char* root) {
-  char uid[100];
-  dcmGenerateUniqueIdentifier(uid, root);
-  return uid;
-}
+using dicomwrite::newUid;
 
 std::string ds(double v) {  // a DS value: at most 16 characters
   char buf[32];

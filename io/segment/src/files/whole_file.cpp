@@ -1,15 +1,13 @@
 #include "whole_file.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
 #include "voxray/io/error.h"
+#include "voxray/io/temporary_file.h"
 
 namespace voxray::segfiles {
 namespace {
@@ -45,12 +43,7 @@ void writeWhole(const std::string& path, bool force,
   const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(folder, ec))
     throw outputError(path + ": the folder " + folder.string() + " does not exist");
-  static std::atomic<unsigned> counter{0};
-  const std::string extension = wholeExtension(path);
-  std::string stem = target.filename().string();
-  stem.resize(stem.size() - std::min(stem.size(), extension.size()));
-  const fs::path temporary = folder / ("." + stem + ".tmp" + std::to_string(::getpid()) + "-" +
-                                       std::to_string(counter++) + extension);
+  const fs::path temporary = temporaryBeside(target, wholeExtension(path));
   try {
     write(temporary.string());
     if (!fs::exists(temporary, ec) || fs::file_size(temporary, ec) == 0)
