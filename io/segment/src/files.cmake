@@ -1,8 +1,8 @@
 # The label-map files of a segmentation (issue 34): NIfTI through the NIfTI C library, 3D
 # Slicer's .seg.nrrd through Teem, binary DICOM SEG through DCMTK's dcmseg. All PRIVATE:
-# segment_files.h exposes std and GLM only. The NIfTI and Teem targets/paths are io's
+# segment_files.h exposes std and GLM only. The NIfTI and Teem targets are io's
 # (formats.cmake); without them (VOXRAY_WITH_FORMATS/DICOM off) the files are left out.
-if(TARGET voxray_nifti2 AND TEEM_LIBRARY AND VOXRAY_WITH_DICOM)
+if(TARGET voxray_nifti2 AND TARGET voxray_teem AND VOXRAY_WITH_DICOM)
   target_sources(voxray_segment PRIVATE
     ${CMAKE_CURRENT_LIST_DIR}/segment_files.cpp
     ${CMAKE_CURRENT_LIST_DIR}/files/whole_file.cpp
@@ -11,8 +11,7 @@ if(TARGET voxray_nifti2 AND TEEM_LIBRARY AND VOXRAY_WITH_DICOM)
     ${CMAKE_CURRENT_LIST_DIR}/files/seg_nrrd.cpp
     ${CMAKE_CURRENT_LIST_DIR}/files/dicom_seg_write.cpp
     ${CMAKE_CURRENT_LIST_DIR}/files/dicom_seg_read.cpp)
-  target_include_directories(voxray_segment SYSTEM PRIVATE ${TEEM_INCLUDE_DIR})
-  target_link_libraries(voxray_segment PRIVATE voxray_nifti2 ${TEEM_LIBRARY} DCMTK::dcmseg
+  target_link_libraries(voxray_segment PRIVATE voxray_nifti2 voxray_teem DCMTK::dcmseg
     DCMTK::dcmfg DCMTK::dcmiod DCMTK::dcmdata)
   target_compile_definitions(voxray_segment PUBLIC VOXRAY_HAS_SEGMENT_FILES)
 endif()

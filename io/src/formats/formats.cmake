@@ -21,6 +21,14 @@ find_library(METAIO_LIBRARY NAMES ITKMetaIO-5.2 REQUIRED)
 # Teem's CMake config (TeemUse.cmake) sets global flags; the library and headers suffice.
 find_path(TEEM_INCLUDE_DIR teem/nrrd.h REQUIRED)
 find_library(TEEM_LIBRARY teem REQUIRED)
+# Teem with the handles and error text io's NRRD reader and segment's .seg.nrrd files share
+# (io/src/teem/teem_handles.h, header-only).
+if(NOT TARGET voxray_teem)
+  add_library(voxray_teem INTERFACE)
+  target_include_directories(voxray_teem INTERFACE ${CMAKE_CURRENT_LIST_DIR}/../teem)
+  target_include_directories(voxray_teem SYSTEM INTERFACE ${TEEM_INCLUDE_DIR})
+  target_link_libraries(voxray_teem INTERFACE ${TEEM_LIBRARY})
+endif()
 
 add_library(voxray_io_formats OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/metaimage_read.cpp
@@ -32,10 +40,9 @@ add_library(voxray_io_formats OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/volume_file.cpp)
 target_include_directories(voxray_io_formats PRIVATE include)
 # SYSTEM: the libraries' headers are not ours to keep warning-free.
-target_include_directories(voxray_io_formats SYSTEM PRIVATE ${METAIO_INCLUDE_DIR}
-  ${TEEM_INCLUDE_DIR})
+target_include_directories(voxray_io_formats SYSTEM PRIVATE ${METAIO_INCLUDE_DIR})
 target_link_libraries(voxray_io_formats PRIVATE voxray_core glm::glm voxray_nifti2 ${METAIO_LIBRARY}
-  ${TEEM_LIBRARY})
+  voxray_teem)
 target_link_libraries(voxray_io PRIVATE voxray_io_formats voxray_nifti2 ${METAIO_LIBRARY}
-  ${TEEM_LIBRARY})
+  voxray_teem)
 target_compile_definitions(voxray_io PUBLIC VOXRAY_HAS_FORMATS)

@@ -11,29 +11,15 @@
 #include <memory>
 
 #include "nrrd_header_check.h"
+#include "teem_handles.h"
 #include "voxray/io/error.h"
 
 namespace voxray::formats {
 namespace {
 
-struct NrrdNuke {
-  void operator()(Nrrd* n) const { nrrdNuke(n); }
-};
-struct IoNix {
-  void operator()(NrrdIoState* s) const { nrrdIoStateNix(s); }
-};
-
-// Teem's own explanation of the last failure, its deepest cause (the last line) only.
-std::string teemReason() {
-  char* text = biffGetDone(NRRD);
-  std::string all = text ? text : "";
-  std::free(text);
-  while (!all.empty() && (all.back() == '\n' || all.back() == ' ')) all.pop_back();
-  const size_t line = all.rfind('\n');
-  std::string last = line == std::string::npos ? all : all.substr(line + 1);
-  const size_t colon = last.find(": ");  // "[nrrd] _nrrdFunction: what went wrong"
-  return colon == std::string::npos ? last : last.substr(colon + 2);
-}
+using teem::IoNix;
+using teem::NrrdNuke;
+using teem::reason;
 
 constexpr KindCodes kNrrdTypes = {nrrdTypeUChar, nrrdTypeChar, nrrdTypeUShort, nrrdTypeShort,
                                   nrrdTypeUInt,  nrrdTypeInt,  nrrdTypeFloat,  nrrdTypeDouble};
@@ -163,7 +149,7 @@ SampleGrid readNrrd(const std::string& path) {
   std::unique_ptr<NrrdIoState, IoNix> io(nrrdIoStateNew());
   io->skipData = 1;
   if (nrrdLoad(header.get(), absolute.c_str(), io.get()))
-    throw inputError(path + ": not a readable NRRD file (" + teemReason() + ")");
+    throw inputError(path + ": not a readable NRRD file (" + reason() + ")");
   if (!sameDataFiles(files, *io))
     throw inputError(path + ": its data file field reads differently than Voxray checked it; " +
                      "the header is damaged");
@@ -191,7 +177,7 @@ SampleGrid readNrrd(const std::string& path) {
 
   std::unique_ptr<Nrrd, NrrdNuke> full(nrrdNew());
   if (nrrdLoad(full.get(), absolute.c_str(), nullptr))
-    throw inputError(path + ": the data cannot be read (" + teemReason() +
+    throw inputError(path + ": the data cannot be read (" + reason() +
                      "); the file or its data file is damaged, truncated or missing");
   auto* data = static_cast<uint8_t*>(full->data);
   full->data = nullptr;  // adopted below: no copy of the volume

@@ -10,31 +10,16 @@
 #include <sstream>
 
 #include "formats.h"
+#include "teem_handles.h"
 #include "voxray/io/error.h"
 
 namespace voxray::segfiles {
 namespace {
 
-struct NrrdNix {  // the data is ours (or Teem's, with nrrdNuke)
-  void operator()(Nrrd* n) const { nrrdNix(n); }
-};
-struct NrrdNuke {
-  void operator()(Nrrd* n) const { nrrdNuke(n); }
-};
-struct IoNix {
-  void operator()(NrrdIoState* s) const { nrrdIoStateNix(s); }
-};
-
-std::string teemReason() {
-  char* text = biffGetDone(NRRD);
-  std::string all = text ? text : "";
-  std::free(text);
-  while (!all.empty() && (all.back() == '\n' || all.back() == ' ')) all.pop_back();
-  const size_t line = all.rfind('\n');
-  std::string last = line == std::string::npos ? all : all.substr(line + 1);
-  const size_t colon = last.find(": ");
-  return colon == std::string::npos ? last : last.substr(colon + 2);
-}
+using teem::IoNix;
+using teem::NrrdNix;
+using teem::NrrdNuke;
+using teem::reason;
 
 // Header values are one line, and Slicer splits tags at | ~ ^.
 std::string headerText(std::string s) {
@@ -110,7 +95,7 @@ std::array<std::string, 256> extents(const Segmentation& seg) {
 
 void addKey(Nrrd* n, const std::string& key, const std::string& value) {
   if (nrrdKeyValueAdd(n, key.c_str(), value.c_str()) != 0)
-    throw outputError("NRRD header key " + key + ": " + teemReason());
+    throw outputError("NRRD header key " + key + ": " + reason());
 }
 
 std::string key(const Nrrd& n, const std::string& k) {
@@ -157,7 +142,7 @@ void writeNrrd(const std::string& temporary, const Segmentation& seg) {
   std::unique_ptr<Nrrd, NrrdNix> n(nrrdNew());
   size_t sizes[3] = {size_t(g.dims.x), size_t(g.dims.y), size_t(g.dims.z)};
   if (nrrdWrap_nva(n.get(), const_cast<uint8_t*>(seg.labels.data()), nrrdTypeUChar, 3, sizes))
-    throw outputError(temporary + ": " + teemReason());
+    throw outputError(temporary + ": " + reason());
   nrrdSpaceSet(n.get(), nrrdSpaceLeftPosteriorSuperior);
   const double origin[3] = {g.originMm.x, g.originMm.y, g.originMm.z};
   nrrdSpaceOriginSet(n.get(), origin);
@@ -193,13 +178,13 @@ void writeNrrd(const std::string& temporary, const Segmentation& seg) {
     io->zlibLevel = 6;  // zlib's default: most of the gain, a fraction of level 9's time
   }
   if (nrrdSave(temporary.c_str(), n.get(), io.get()) != 0)
-    throw outputError(temporary + ": " + teemReason());
+    throw outputError(temporary + ": " + reason());
 }
 
 LabelFile readNrrd(const std::string& path) {
   std::unique_ptr<Nrrd, NrrdNuke> n(nrrdNew());
   if (nrrdLoad(n.get(), path.c_str(), nullptr) != 0)
-    throw inputError(path + ": cannot be read as NRRD (" + teemReason() + ")");
+    throw inputError(path + ": cannot be read as NRRD (" + reason() + ")");
   if (n->dim != 3)
     throw inputError(path + ": has " + std::to_string(n->dim) +
                      " axes; Voxray reads 3D label maps (a .seg.nrrd with overlapping segments "
