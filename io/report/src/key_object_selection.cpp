@@ -7,6 +7,7 @@
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmsr/dsrdoc.h>
 
+#include "sr_header.h"
 #include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 #include "voxray/io/key_object_selection.h"
@@ -74,26 +75,8 @@ std::string writeKeyObjectSelection(const std::string& path, const Volume& v,
               DSRImageReferenceValue(s.sopClassUid, s.sliceSopInstanceUids[size_t(k)])),
           "image");
   }
-  check(doc.setSpecificCharacterSetType(DSRTypes::CS_UTF8), "character set");
-  // In the images' patient and study (see secondary_capture.cpp for why the patient is
-  // copied); never in names or logs.
-  check(doc.createNewSeriesInStudy(s.studyInstanceUid), "study");
-  doc.setPatientName(s.patientName, OFFalse);
-  doc.setPatientID(s.patientId, OFFalse);
-  doc.setStudyDate(s.studyDate, OFFalse);
-  doc.setStudyTime(s.studyTime, OFFalse);
-  doc.setStudyDescription(s.studyDescription, OFFalse);
-  doc.setAccessionNumber(s.accessionNumber, OFFalse);
-  doc.setStudyID(s.studyId, OFFalse);
-  doc.setSeriesNumber("9002", OFFalse);
-  doc.setInstanceNumber("1", OFFalse);
-  doc.setManufacturer("Voxray", OFFalse);
-  // The images selected, as the KOS's evidence (Type 1, PS3.3 C.17.6.2).
-  for (int k : slices)
-    check(doc.getCurrentRequestedProcedureEvidence().addItem(s.studyInstanceUid,
-                                                             s.seriesInstanceUid, s.sopClassUid,
-                                                             s.sliceSopInstanceUids[size_t(k)]),
-          "evidence");
+  report::fileWithImages(doc, s, "9002", "", check);
+  report::addEvidence(doc, s, slices, check);
   DcmFileFormat file;
   check(doc.write(*file.getDataset()), "DICOM dataset");
   OFString uid;

@@ -13,6 +13,7 @@
 #include <dcmtk/dcmsr/codes/sct.h>
 #include <dcmtk/dcmsr/dsrdoc.h>
 
+#include "sr_header.h"
 #include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 #include "voxray/io/measurement_report.h"
@@ -215,29 +216,11 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
 
   DSRDocument doc(DSRTypes::DT_ComprehensiveSR);
   check(doc.setTreeFromRootTemplate(report, OFTrue), "document tree");
-  check(doc.setSpecificCharacterSetType(DSRTypes::CS_UTF8), "character set");
-  // The patient and study of the images, so a PACS files the report with them (the same
-  // reasoning as the Secondary Capture's, secondary_capture.cpp); never in names or logs.
-  check(doc.createNewSeriesInStudy(s.studyInstanceUid), "study");
-  doc.setPatientName(s.patientName, OFFalse);
-  doc.setPatientID(s.patientId, OFFalse);
-  doc.setStudyDate(s.studyDate, OFFalse);
-  doc.setStudyTime(s.studyTime, OFFalse);
-  doc.setStudyDescription(s.studyDescription, OFFalse);
-  doc.setAccessionNumber(s.accessionNumber, OFFalse);
-  doc.setStudyID(s.studyId, OFFalse);
-  doc.setSeriesDescription(info.seriesDescription, OFFalse);
-  doc.setSeriesNumber("9001", OFFalse);
-  doc.setInstanceNumber("1", OFFalse);
-  doc.setManufacturer("Voxray", OFFalse);
+  report::fileWithImages(doc, s, "9001", info.seriesDescription, check);
   // Complete: every measurement made is in it; unverified: a person has not signed it.
   doc.completeDocument();
-  // Every image the tree references is evidence of this study (Type 1C, PS3.3 C.17.2.2).
-  for (int k : slices)
-    check(doc.getCurrentRequestedProcedureEvidence().addItem(s.studyInstanceUid,
-                                                             s.seriesInstanceUid, s.sopClassUid,
-                                                             s.sliceSopInstanceUids[size_t(k)]),
-          "evidence");
+  // Every image the tree references is evidence of this study.
+  report::addEvidence(doc, s, slices, check);
   DcmFileFormat file;
   check(doc.write(*file.getDataset()), "DICOM dataset");
   OFString uid;
