@@ -1,9 +1,9 @@
 // voxray-cli export-sr: measurements (measure's flags, each repeatable) as a DICOM SR
 // (TID 1500) and/or CSV. The values are the engine's, as measure prints them.
-#include <filesystem>
 #include <iostream>
 
 #include "commands.h"
+#include "existing_output.h"
 #include "input_options.h"
 #include "measure_points.h"
 #include "voxray/engine/measure.h"
@@ -20,12 +20,6 @@ struct ExportSrOptions {
   std::string output, csv;
   bool mm = false, force = false;
 };
-
-void refuseExisting(const std::string& path, bool force) {
-  std::error_code ec;
-  if (!path.empty() && !force && std::filesystem::exists(path, ec))
-    throw outputError(path + " exists; give --force to overwrite it");
-}
 
 std::vector<ReportMeasurement> measurements(const Volume& v, const ExportSrOptions& o) {
   std::vector<ReportMeasurement> out;

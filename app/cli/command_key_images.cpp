@@ -1,9 +1,9 @@
 // voxray-cli key-images: chosen slices of a DICOM series as a Key Object Selection document.
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "commands.h"
+#include "existing_output.h"
 #include "input_options.h"
 #include "voxray/io/error.h"
 #include "voxray/io/key_object_selection.h"
@@ -40,9 +40,7 @@ std::vector<int> parseSlices(const std::string& text) {
 int runKeyImages(const InputOptions& in, const KeyImagesOptions& o) {
   if (o.output.empty()) throw inputError("key-images: give -o KOS.dcm");
   const std::vector<int> slices = parseSlices(o.slices);
-  std::error_code ec;
-  if (!o.force && std::filesystem::exists(o.output, ec))
-    throw outputError(o.output + " exists; give --force to overwrite it");
+  refuseExisting(o.output, o.force);
   const Volume v = in.load();
   KeyImagesInfo info;
   info.description = o.description;

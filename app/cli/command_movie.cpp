@@ -3,10 +3,10 @@
 // Ctrl-C stops after the frame in progress and leaves nothing under the output's name.
 #include <atomic>
 #include <csignal>
-#include <filesystem>
 #include <iostream>
 
 #include "commands.h"
+#include "existing_output.h"
 #include "input_options.h"
 #include "movie.h"
 #include "progress.h"
@@ -123,10 +123,8 @@ Run addMovieCommand(CLI::App& app) {
     std::unique_ptr<ClContext> ctx;
     if (!p.cine) ctx = std::make_unique<ClContext>(o->device);
     MovieFrames frames(shown, ctx.get(), p);
-    std::error_code ec;
     for (const auto& file : movieFiles(o->output, frames.count()))
-      if (!o->overwrite && std::filesystem::exists(file, ec))
-        throw outputError(file + ": exists; pass --overwrite to replace it");
+      refuseExisting(file, o->overwrite, "--overwrite");
     auto bar = terminalProgress("movie");
     catchInterrupts();
     MovieProgress last;

@@ -2,12 +2,12 @@
 // through segment_recipe.h, the one implementation the editor runs too, so the label map the
 // CLI writes is the workstation's voxel for voxel.
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "commands.h"
+#include "existing_output.h"
 #include "input_options.h"
 #include "voxray/io/error.h"
 #include "voxray/io/segment_output.h"
@@ -88,9 +88,8 @@ int runSegment(const InputOptions& in, const SegmentOptions& o) {
   if (o.output.empty() && o.statsJson.empty())
     throw inputError("segment: give -o OUT (a label map or mesh) and/or --stats-json FILE|-");
   // Refuse an existing output before the work, not after it.
-  std::error_code ec;
-  if (!o.force && !o.output.empty() && std::filesystem::exists(o.output, ec))
-    throw outputError(o.output + " exists: give --force to replace it, or another name.");
+  refuseExisting(o.output, o.force);
+  if (o.statsJson != "-") refuseExisting(o.statsJson, o.force);
   const Volume v = in.load();
   const SegmentRecipe r = recipeOf(o, v);
   const Segmentation s = segmentationFromRecipe(v, r);
@@ -108,8 +107,6 @@ int runSegment(const InputOptions& in, const SegmentOptions& o) {
   if (o.statsJson == "-") {
     std::cout << statsJson(stats);
   } else if (!o.statsJson.empty()) {
-    if (!o.force && std::filesystem::exists(o.statsJson, ec))
-      throw outputError(o.statsJson + " exists: give --force to replace it, or another name.");
     std::ofstream out(o.statsJson, std::ios::trunc);
     out << statsJson(stats);
     if (!out)

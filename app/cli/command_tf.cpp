@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "existing_output.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/engine/transfer_function.h"
 #include "voxray/engine/volume_property.h"
@@ -75,9 +76,7 @@ Run addTfCommand(CLI::App& app) {
       return 0;
     }
     VolumeProperty vp = readSource(o->input, o->name);
-    std::error_code ec;
-    if (!o->force && std::filesystem::exists(o->output, ec))
-      throw outputError(o->output + " exists; give --force to overwrite it");
+    refuseExisting(o->output, o->force);
     bool toSlicer = std::filesystem::path(o->output).extension() == ".vp";
     if (toSlicer && vp.unitDistanceMm > 0.0)
       std::cerr << "voxray-cli: note: Slicer's .vp has no unit distance; its opacities are "

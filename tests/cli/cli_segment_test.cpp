@@ -124,6 +124,12 @@ TEST_F(CliSegment, TheLabelMapAndStatisticsAreTheRecipesInProcessVoxelForVoxel) 
   const Result again = cli("--threshold 300,3000 -o " + path("skull.labels.raw"));
   EXPECT_EQ(again.exitCode, 1);
   EXPECT_THAT(again.output, HasSubstr("exists: give --force to replace it, or another name."));
+  // An existing statistics file is refused before the work too: no label map is written.
+  const Result statsKept = cli("--threshold 300,3000 -o " + path("other.labels.raw") +
+                               " --stats-json " + path("stats.json"));
+  EXPECT_EQ(statsKept.exitCode, 1);
+  EXPECT_THAT(statsKept.output, HasSubstr("stats.json exists: give --force to replace it"));
+  EXPECT_FALSE(fs::exists(path("other.labels.raw")));
 }
 
 TEST_F(CliSegment, StatsToStdoutAndASeedInMmGiveTheSameAsTheVoxelSeed) {

@@ -196,7 +196,7 @@ TEST(Movie, AnExistingMovieIsNotReplacedWithoutOverwrite) {
   writeBytes(mp4, {1, 2, 3});
   std::string log;
   EXPECT_EQ(cli("movie --phantom-size 32 --frames 2 --size 32x32 -o " + mp4, dir, &log), 1);
-  EXPECT_THAT(log, HasSubstr("kept.mp4: exists; pass --overwrite to replace it"));
+  EXPECT_THAT(log, HasSubstr("kept.mp4 exists: give --overwrite to replace it, or another name."));
   EXPECT_EQ(readBytes(mp4), (std::vector<uint8_t>{1, 2, 3}));
   EXPECT_EQ(cli("movie --phantom-size 32 --frames 2 --size 32x32 --overwrite -o " + mp4, dir, &log),
             0)
