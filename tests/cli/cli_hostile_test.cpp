@@ -3,15 +3,14 @@
 // (134) or the time-out (124).
 #include <gmock/gmock.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
-#include <random>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "command_run.h"
 #include "dicom_writer.h"
 
 namespace {
@@ -19,36 +18,16 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-struct Result {
-  int exitCode = -1;   // -1: killed by a signal
-  std::string output;  // stdout and stderr
-};
+using voxray::test::CommandResult;
 
-Result cli(const std::string& args) {
-  const std::string command =
-      "VOXRAY_DEVICE=cpu timeout 60 " + std::string(VOXRAY_CLI) + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  for (size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
-  return r;
+CommandResult cli(const std::string& args) {
+  return voxray::test::runCommand("VOXRAY_DEVICE=cpu timeout 60 " + std::string(VOXRAY_CLI) + " " +
+                                  args + " 2>&1");
 }
 
-class CliHostile : public testing::Test {
+class CliHostile : public voxray::test::ScratchFolderTest {
  protected:
-  CliHostile() {
-    std::random_device seed;
-    dir_ = fs::temp_directory_path() / ("voxray-cli-hostile-" + std::to_string(seed()));
-    fs::create_directories(dir_);
-  }
-  ~CliHostile() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  CliHostile() : ScratchFolderTest("voxray-cli-hostile-") {}
 
   // Three slices 1 mm apart: a volume.
   std::string series(voxray::test::TestSlice s) {
@@ -60,9 +39,6 @@ class CliHostile : public testing::Test {
     }
     return path("series");
   }
-
- private:
-  fs::path dir_;
 };
 
 TEST_F(CliHostile, InfoJsonOfALatin1SeriesIsUtf8) {
@@ -75,7 +51,7 @@ TEST_F(CliHostile, InfoJsonOfALatin1SeriesIsUtf8) {
       "M\xFC"
       "ller^J\xFC"
       "rgen";
-  Result r = cli("info --json " + series(s));
+  CommandResult r = cli("info --json " + series(s));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const auto j = nlohmann::json::parse(r.output);  // throws on bytes that are not UTF-8
   EXPECT_EQ(j["series"][0]["description"], "Knöchel");
@@ -86,7 +62,7 @@ TEST_F(CliHostile, InfoJsonOfBytesThatAreNotUtf8ShowsReplacementCharacters) {
   voxray::test::TestSlice s;
   s.charset = "ISO_IR 192";
   s.description = "Kopf \xFF";
-  Result r = cli("info --json " + series(s));
+  CommandResult r = cli("info --json " + series(s));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(nlohmann::json::parse(r.output)["series"][0]["description"], "Kopf \xEF\xBF\xBD");
 }
@@ -97,7 +73,7 @@ TEST_F(CliHostile, InfoTextEscapesControlCharactersFromTheFile) {
   voxray::test::TestSlice s;
   s.charset = "ISO_IR 192";
   s.description = std::string("\x1b]0;pwned\x07\x1b[2J\r\nFAKE\0end", 24);
-  Result r = cli("info " + series(s));
+  CommandResult r = cli("info " + series(s));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (char c : {'\x1b', '\a', '\r', '\0'})
     EXPECT_EQ(r.output.find(c), std::string::npos) << r.output;
@@ -109,7 +85,7 @@ TEST_F(CliHostile, SequencesNested100000DeepAreAnError) {
   voxray::test::writeTestSlice(file, {});
   voxray::test::nestSequences(file, 100000);
   for (const std::string& command : {std::string("info"), "render -o " + path("never.png")}) {
-    Result r = cli(command + " " + file);
+    CommandResult r = cli(command + " " + file);
     EXPECT_EQ(r.exitCode, 1) << command << ": " << r.output;
     EXPECT_THAT(r.output, HasSubstr("nested deeper than Voxray reads")) << command;
   }
@@ -120,7 +96,7 @@ TEST_F(CliHostile, FuzzerRegressionsEndInAMessage) {
   for (const auto& entry : fs::directory_iterator(VOXRAY_FUZZ_REGRESSIONS)) {
     if (entry.path().extension() == ".md") continue;
     for (const char* command : {"info --json", "info"}) {
-      Result r = cli(std::string(command) + " " + entry.path().string());
+      CommandResult r = cli(std::string(command) + " " + entry.path().string());
       EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 1) << entry.path() << ": " << r.output;
       EXPECT_THAT(r.output, testing::Not(HasSubstr("terminate called")));
     }
@@ -133,7 +109,7 @@ TEST_F(CliHostile, HugeRawRangeEndsAtTheFirstGap) {
     std::fwrite("\0\0\0\0\0\0\0\0", 1, 8, f);
     std::fclose(f);
   }
-  Result r = cli("info " + path("s.%d") + " --raw-dims 2,2 --raw-range 1-2000000000");
+  CommandResult r = cli("info " + path("s.%d") + " --raw-dims 2,2 --raw-range 1-2000000000");
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("slices 4-1004 missing after s.3"));
 }
@@ -141,7 +117,7 @@ TEST_F(CliHostile, HugeRawRangeEndsAtTheFirstGap) {
 TEST_F(CliHostile, FifoIsRefusedNotWaitedOn) {
   ASSERT_EQ(mkfifo(path("pipe").c_str(), 0600), 0);
   for (const std::string& flags : {std::string(), std::string(" --raw-dims 2,2")}) {
-    Result r = cli("info " + path("pipe") + flags);
+    CommandResult r = cli("info " + path("pipe") + flags);
     EXPECT_EQ(r.exitCode, 1) << flags << ": " << r.output;
     EXPECT_THAT(r.output, HasSubstr("is a FIFO (named pipe), not a regular file or folder"));
   }

@@ -1,17 +1,15 @@
 // voxray-cli segment against the recipe run in this process: the same label map voxel for
 // voxel and the same statistics, on the embedded head phantom (no data files needed).
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <random>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "command_run.h"
 #include "voxray/io/phantom.h"
 #include "voxray/io/segment_files.h"
 #include "voxray/io/segment_mesh.h"
@@ -24,37 +22,16 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-struct Result {
-  int exitCode = -1;
-  std::string output;
-};
+using test::CommandResult;
 
-Result cli(const std::string& args) {
-  const std::string command =
-      "timeout 120 " + std::string(VOXRAY_CLI) + " segment --phantom-size 96 " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  for (size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
-  return r;
+CommandResult cli(const std::string& args) {
+  return test::runCommand("timeout 120 " + std::string(VOXRAY_CLI) + " segment --phantom-size 96 " +
+                          args + " 2>&1");
 }
 
-class CliSegment : public ::testing::Test {
+class CliSegment : public test::ScratchFolderTest {
  protected:
-  CliSegment() {
-    std::random_device seed;
-    dir_ = fs::temp_directory_path() / ("voxray-cli-segment-" + std::to_string(seed()));
-    fs::create_directories(dir_);
-  }
-  ~CliSegment() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
+  CliSegment() : ScratchFolderTest("voxray-cli-segment-") {}
 };
 
 std::vector<uint8_t> readBytes(const std::string& path) {
@@ -90,10 +67,11 @@ TEST_F(CliSegment, TheLabelMapAndStatisticsAreTheRecipesInProcessVoxelForVoxel) 
 
   const std::string seed =
       std::to_string(r.seed->x) + ":" + std::to_string(r.seed->y) + ":" + std::to_string(r.seed->z);
-  const Result run = cli("--threshold 300,3000 --seed " + seed +
-                         " --connectivity 26 --keep-largest --fill-holes --margin 1.5 --smooth 3 "
-                         "--name Skull --colour 255,128,0 -o " +
-                         path("skull.labels.raw") + " --stats-json " + path("stats.json"));
+  const CommandResult run =
+      cli("--threshold 300,3000 --seed " + seed +
+          " --connectivity 26 --keep-largest --fill-holes --margin 1.5 --smooth 3 "
+          "--name Skull --colour 255,128,0 -o " +
+          path("skull.labels.raw") + " --stats-json " + path("stats.json"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_EQ(readBytes(path("skull.labels.raw")), expected.labels);
 
@@ -121,12 +99,12 @@ TEST_F(CliSegment, TheLabelMapAndStatisticsAreTheRecipesInProcessVoxelForVoxel) 
   EXPECT_NEAR(stats["surface_mm2"].get<double>(), area, area * 1e-9);
 
   // Again onto the same file: refused without --force.
-  const Result again = cli("--threshold 300,3000 -o " + path("skull.labels.raw"));
+  const CommandResult again = cli("--threshold 300,3000 -o " + path("skull.labels.raw"));
   EXPECT_EQ(again.exitCode, 1);
   EXPECT_THAT(again.output, HasSubstr("exists: give --force to replace it, or another name."));
   // An existing statistics file is refused before the work too: no label map is written.
-  const Result statsKept = cli("--threshold 300,3000 -o " + path("other.labels.raw") +
-                               " --stats-json " + path("stats.json"));
+  const CommandResult statsKept = cli("--threshold 300,3000 -o " + path("other.labels.raw") +
+                                      " --stats-json " + path("stats.json"));
   EXPECT_EQ(statsKept.exitCode, 1);
   EXPECT_THAT(statsKept.output, HasSubstr("stats.json exists: give --force to replace it"));
   EXPECT_FALSE(fs::exists(path("other.labels.raw")));
@@ -139,8 +117,9 @@ TEST_F(CliSegment, StatsToStdoutAndASeedInMmGiveTheSameAsTheVoxelSeed) {
   r.seed = firstInRange(v, r.threshold);
   const auto expected = segmentStats(segmentationFromRecipe(v, r), v, 1);
   const glm::dvec3 mm = gridOf(v).toPatient(glm::dvec3(*r.seed));
-  const Result run = cli("--threshold 300,3000 --seed-mm " + std::to_string(mm.x) + "," +
-                         std::to_string(mm.y) + "," + std::to_string(mm.z) + " --stats-json -");
+  const CommandResult run =
+      cli("--threshold 300,3000 --seed-mm " + std::to_string(mm.x) + "," + std::to_string(mm.y) +
+          "," + std::to_string(mm.z) + " --stats-json -");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const auto stats = nlohmann::json::parse(run.output)["segments"][0];
   EXPECT_EQ(stats["voxels"].get<size_t>(), expected.voxels);
@@ -188,7 +167,7 @@ TEST_F(CliSegment, EveryOutputFormatHoldsTheSameSegment) {
       std::to_string(r.seed->x) + ":" + std::to_string(r.seed->y) + ":" + std::to_string(r.seed->z);
   const std::string args = "--threshold 300,3000 --seed " + seed + " --name Skull -o ";
   for (const char* name : {"skull.labels.raw", "skull.nii.gz", "skull.seg.nrrd", "skull.stl"}) {
-    const Result run = cli(args + path(name));
+    const CommandResult run = cli(args + path(name));
     ASSERT_EQ(run.exitCode, 0) << name << "\n" << run.output;
   }
   ASSERT_EQ(cli(args + path("skull-ras.stl") + " --ras").exitCode, 0);
@@ -259,7 +238,7 @@ TEST_F(CliSegment, BadInputsEndWithAMessageAndExitCode1) {
             "A DICOM SEG needs the source series' Study Instance UID"},
            {"--threshold 300,3000 -o " + path("x.png"), "give an output ending in .stl"},
            {"--threshold 300,3000", "give -o OUT (a label map or mesh) and/or --stats-json"}}) {
-    const Result r = cli(c.args);
+    const CommandResult r = cli(c.args);
     EXPECT_EQ(r.exitCode, 1) << c.args << "\n" << r.output;
     EXPECT_THAT(r.output, HasSubstr(c.message)) << c.args;
   }

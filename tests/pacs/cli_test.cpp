@@ -1,8 +1,6 @@
 // voxray-cli pacs echo|find|get|send against a real Orthanc, through its JSON output.
 #include <sys/stat.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -10,27 +8,19 @@
 #include <nlohmann/json.hpp>
 
 #include "canned_http_server.h"
+#include "command_run.h"
 #include "pacs_test_support.h"
 
 namespace voxray::test {
 namespace {
 
-struct CliRun {
-  int status = 0;
-  std::string out;
-};
+using CliRun = CommandResult;
 
 // Runs voxray-cli with ARGS (stderr joined to stdout only when asked), within 60 s and 4 GB
 // of address space: a command that blocks or reads without end fails rather than hangs.
 CliRun cli(const std::string& args, bool withStderr = false) {
-  std::string command = "ulimit -v 4000000; timeout 60 " + std::string(VOXRAY_CLI) + " " + args +
-                        (withStderr ? " 2>&1" : "");
-  CliRun r;
-  FILE* p = popen(command.c_str(), "r");
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  r.status = WEXITSTATUS(pclose(p));
-  return r;
+  return runCommand("ulimit -v 4000000; timeout 60 " + std::string(VOXRAY_CLI) + " " + args +
+                    (withStderr ? " 2>&1" : ""));
 }
 
 using PacsCliTest = PacsTest;
@@ -40,22 +30,22 @@ std::string address(const PacsNode& node) { return "dicom://" + node.label(); }
 TEST_F(PacsCliTest, EchoFindAndGetThroughTheCommandLine) {
   std::string node = address(server().dimseNode());
   CliRun echo = cli("pacs echo " + node + " --json");
-  ASSERT_EQ(echo.status, 0) << echo.out;
-  EXPECT_TRUE(nlohmann::json::parse(echo.out).at("ok").get<bool>());
+  ASSERT_EQ(echo.exitCode, 0) << echo.output;
+  EXPECT_TRUE(nlohmann::json::parse(echo.output).at("ok").get<bool>());
 
   CliRun find = cli("pacs find " + node + " --name HEAD --json");
-  ASSERT_EQ(find.status, 0) << find.out;
-  auto studies = nlohmann::json::parse(find.out);
+  ASSERT_EQ(find.exitCode, 0) << find.output;
+  auto studies = nlohmann::json::parse(find.output);
   ASSERT_EQ(studies.size(), 1u);
   EXPECT_EQ(studies[0].at("study_uid"), kPhantomStudy);
-  EXPECT_FALSE(studies[0].contains("patient_name"));                    // only with --show-patient
-  EXPECT_THAT(find.out, testing::Not(testing::HasSubstr("\"HEAD\"")));  // the patient name
+  EXPECT_FALSE(studies[0].contains("patient_name"));  // only with --show-patient
+  EXPECT_THAT(find.output, testing::Not(testing::HasSubstr("\"HEAD\"")));  // the patient name
 
   std::string cache = tempFolder("cli-cache");
   CliRun get = cli("pacs get " + node + " --study " + kPhantomStudy + " --series " +
                    kPhantomSeries + " --cache " + cache + " --json");
-  ASSERT_EQ(get.status, 0) << get.out;
-  auto info = nlohmann::json::parse(get.out);
+  ASSERT_EQ(get.exitCode, 0) << get.output;
+  auto info = nlohmann::json::parse(get.output);
   EXPECT_EQ(info.at("images"), 28);
   Volume disk = loadVolume(dicomPath("ct-philips-phantom/S2010"));
   EXPECT_EQ(info.at("dims"), nlohmann::json({disk.dims.x, disk.dims.y, disk.dims.z}));
@@ -69,28 +59,28 @@ TEST_F(PacsCliTest, GetWithDbStoresTheSeriesInTheStudyDatabase) {
   std::string cache = tempFolder("db-cache"), db = tempFolder("db");
   CliRun get = cli("pacs get " + node + " --study " + kPhantomStudy + " --series " +
                    kPhantomSeries + " --cache " + cache + " --db " + db + " --json");
-  ASSERT_EQ(get.status, 0) << get.out;
-  auto info = nlohmann::json::parse(get.out);
+  ASSERT_EQ(get.exitCode, 0) << get.output;
+  auto info = nlohmann::json::parse(get.output);
   EXPECT_EQ(info.at("study_db_instances"), 28);
   CliRun series = cli("db series " + std::string(kPhantomStudy) + " --db " + db + " --json");
-  ASSERT_EQ(series.status, 0) << series.out;
-  auto list = nlohmann::json::parse(series.out);
+  ASSERT_EQ(series.exitCode, 0) << series.output;
+  auto list = nlohmann::json::parse(series.output);
   ASSERT_EQ(list.size(), 1u);
   EXPECT_EQ(list[0].at("series_uid"), kPhantomSeries);
   EXPECT_EQ(list[0].at("images"), 28);
   // Copies the database owns: the cache may evict its own.
   std::filesystem::remove_all(cache);
   CliRun opened = cli("info db:" + std::string(kPhantomSeries) + " --db " + db + " --json");
-  ASSERT_EQ(opened.status, 0) << opened.out;
-  EXPECT_EQ(nlohmann::json::parse(opened.out).at("dims"), info.at("dims"));
+  ASSERT_EQ(opened.exitCode, 0) << opened.output;
+  EXPECT_EQ(nlohmann::json::parse(opened.output).at("dims"), info.at("dims"));
 }
 
 TEST_F(PacsCliTest, WrongAeExitsWithOneAndAMessage) {
   PacsNode node = server().dimseNode();
   node.calledAe = "WRONG";
   CliRun echo = cli("pacs echo " + address(node), true);
-  EXPECT_EQ(echo.status, 1);
-  EXPECT_THAT(echo.out, testing::HasSubstr("refused Voxray"));
+  EXPECT_EQ(echo.exitCode, 1);
+  EXPECT_THAT(echo.output, testing::HasSubstr("refused Voxray"));
 }
 
 // At the series level each match is a series: its number, not a count of series (which was
@@ -99,8 +89,8 @@ TEST_F(PacsCliTest, SeriesLevelFindPrintsSeriesNotASeriesCount) {
   std::string node = address(server().dimseNode());
   std::string args = "pacs find " + node + " --level series --study " + kPhantomStudy;
   CliRun find = cli(args + " --json");
-  ASSERT_EQ(find.status, 0) << find.out;
-  auto series = nlohmann::json::parse(find.out);
+  ASSERT_EQ(find.exitCode, 0) << find.output;
+  auto series = nlohmann::json::parse(find.output);
   ASSERT_EQ(series.size(), 3u);
   for (const auto& s : series) {
     EXPECT_FALSE(s.contains("series")) << s.dump();
@@ -110,9 +100,9 @@ TEST_F(PacsCliTest, SeriesLevelFindPrintsSeriesNotASeriesCount) {
     }
   }
   CliRun text = cli(args);
-  ASSERT_EQ(text.status, 0) << text.out;
-  EXPECT_THAT(text.out, testing::Not(testing::HasSubstr(" series ")));
-  EXPECT_THAT(text.out, testing::HasSubstr("  28 images  " + std::string(kPhantomSeries)));
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_THAT(text.output, testing::Not(testing::HasSubstr(" series ")));
+  EXPECT_THAT(text.output, testing::HasSubstr("  28 images  " + std::string(kPhantomSeries)));
 }
 
 // pacs send takes only regular files that are DICOM: /dev/zero (read without end), a FIFO
@@ -133,8 +123,8 @@ TEST_F(PacsCliTest, SendRefusesWhatIsNotARegularDicomFile) {
                                                           {dir, "not a regular file"},
                                                           {text, "not a DICOM file"}}) {
       CliRun send = cli("pacs send " + node + " " + file, true);
-      EXPECT_EQ(send.status, 1) << file << ": " << send.out;
-      EXPECT_THAT(send.out, testing::AllOf(testing::HasSubstr(file), testing::HasSubstr(says)))
+      EXPECT_EQ(send.exitCode, 1) << file << ": " << send.output;
+      EXPECT_THAT(send.output, testing::AllOf(testing::HasSubstr(file), testing::HasSubstr(says)))
           << node;
     }
   }
@@ -149,9 +139,10 @@ TEST(PacsCliTextTest, FindEscapesControlCharactersFromTheServer) {
       R"("00081030":{"vr":"LO","Value":["\u001b]0;pwned\u0007\u001b[2J\r\nFAKE"]}}])";
   CannedHttpServer server(CannedHttpServer::answer("200 OK", "application/dicom+json", body));
   CliRun find = cli("pacs find " + server.address());
-  ASSERT_EQ(find.status, 0) << find.out;
-  for (char c : {'\x1b', '\a', '\r'}) EXPECT_EQ(find.out.find(c), std::string::npos) << find.out;
-  EXPECT_THAT(find.out, testing::HasSubstr("\\x1b]0;pwned\\x07\\x1b[2J\\r\\nFAKE\n"));
+  ASSERT_EQ(find.exitCode, 0) << find.output;
+  for (char c : {'\x1b', '\a', '\r'})
+    EXPECT_EQ(find.output.find(c), std::string::npos) << find.output;
+  EXPECT_THAT(find.output, testing::HasSubstr("\\x1b]0;pwned\\x07\\x1b[2J\\r\\nFAKE\n"));
 }
 
 // An error message that quotes the server (here its content type) is escaped too.
@@ -161,9 +152,9 @@ TEST(PacsCliTextTest, ErrorMessagesEscapeControlCharactersFromTheServer) {
   std::string cache = tempFolder("cache");
   CliRun get =
       cli("pacs get " + server.address() + " --study 1.2 --series 1.2.3 --cache " + cache, true);
-  EXPECT_EQ(get.status, 1) << get.out;
-  for (char c : {'\x1b', '\a'}) EXPECT_EQ(get.out.find(c), std::string::npos) << get.out;
-  EXPECT_THAT(get.out, testing::HasSubstr("text/html\\x1b]0;pwned\\x07"));
+  EXPECT_EQ(get.exitCode, 1) << get.output;
+  for (char c : {'\x1b', '\a'}) EXPECT_EQ(get.output.find(c), std::string::npos) << get.output;
+  EXPECT_THAT(get.output, testing::HasSubstr("text/html\\x1b]0;pwned\\x07"));
 }
 
 // Without --show-patient, a failed search names neither the patient nor the node's token
@@ -173,11 +164,11 @@ TEST(PacsCliTextTest, FailedSearchPrintsNoPatientDataAndNoToken) {
   CliRun find = cli("pacs find '" + server.address() +
                         "?access_token=SECRET-TOKEN' --name 'DOE^JOHN' --id PID-4711",
                     true);
-  EXPECT_EQ(find.status, 1) << find.out;
-  EXPECT_THAT(find.out, testing::AllOf(testing::HasSubstr("HTTP 500"),
-                                       testing::Not(testing::HasSubstr("DOE")),
-                                       testing::Not(testing::HasSubstr("PID-4711")),
-                                       testing::Not(testing::HasSubstr("SECRET-TOKEN"))));
+  EXPECT_EQ(find.exitCode, 1) << find.output;
+  EXPECT_THAT(find.output, testing::AllOf(testing::HasSubstr("HTTP 500"),
+                                          testing::Not(testing::HasSubstr("DOE")),
+                                          testing::Not(testing::HasSubstr("PID-4711")),
+                                          testing::Not(testing::HasSubstr("SECRET-TOKEN"))));
 }
 
 // Counts that are no whole number (1.5e300, 2.5) are unknown ("?", null), not 0.
@@ -188,15 +179,15 @@ TEST(PacsCliTextTest, CountsThatAreNoWholeNumberPrintAsUnknown) {
   {
     CannedHttpServer server(CannedHttpServer::answer("200 OK", "application/dicom+json", body));
     CliRun find = cli("pacs find " + server.address());
-    ASSERT_EQ(find.status, 0) << find.out;
-    EXPECT_THAT(find.out, testing::HasSubstr("? series  ? images  1.2.3"));
+    ASSERT_EQ(find.exitCode, 0) << find.output;
+    EXPECT_THAT(find.output, testing::HasSubstr("? series  ? images  1.2.3"));
   }
   CannedHttpServer server(CannedHttpServer::answer("200 OK", "application/dicom+json", body));
   CliRun find = cli("pacs find " + server.address() + " --json");
-  ASSERT_EQ(find.status, 0) << find.out;
-  auto match = nlohmann::json::parse(find.out).at(0);
-  EXPECT_TRUE(match.at("series").is_null()) << find.out;
-  EXPECT_TRUE(match.at("images").is_null()) << find.out;
+  ASSERT_EQ(find.exitCode, 0) << find.output;
+  auto match = nlohmann::json::parse(find.output).at(0);
+  EXPECT_TRUE(match.at("series").is_null()) << find.output;
+  EXPECT_TRUE(match.at("images").is_null()) << find.output;
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 // Screenshots sent back: a Multi-frame True Color SC in the source's study, readable by
 // dcmdump, found by a new C-FIND (or QIDO) after C-STORE (or STOW-RS), pixels unchanged.
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <gmock/gmock.h>
 
+#include "command_run.h"
 #include "pacs_test_support.h"
 #include "voxray/io/secondary_capture.h"
 
@@ -48,11 +48,9 @@ std::string writeShot(const std::string& folder) {
 
 TEST(SecondaryCaptureTest, DcmdumpReadsItAsAMultiframeTrueColorScInTheSourceStudy) {
   std::string path = writeShot(tempFolder("sc"));
-  FILE* p = popen(("dcmdump " + path + " 2>&1").c_str(), "r");
-  std::string dump;
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) dump.append(buf, n);
-  ASSERT_EQ(WEXITSTATUS(pclose(p)), 0) << dump;
+  const CommandResult dumped = runCommand("dcmdump " + path + " 2>&1");
+  const std::string& dump = dumped.output;
+  ASSERT_EQ(dumped.exitCode, 0) << dump;
   EXPECT_THAT(dump, HasSubstr("=MultiframeTrueColorSecondaryCaptureImageStorage"));
   EXPECT_THAT(dump, HasSubstr(std::string("[") + kPhantomStudy + "]"));
   EXPECT_THAT(dump, HasSubstr("[Voxray 3D]"));
@@ -81,12 +79,7 @@ TEST(SecondaryCaptureTest, VoxrayOpensItAsItsLuminanceOneSlicePerFrame) {
 
 // What it says of FILE: dciodvfy's (Debian dicom3tools) checks of the IOD's modules.
 std::string dciodvfy(const std::string& file) {
-  FILE* p = popen(("dciodvfy " + file + " 2>&1").c_str(), "r");
-  std::string out;
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-  pclose(p);
-  return out;
+  return runCommand("dciodvfy " + file + " 2>&1").output;
 }
 
 int errorLines(const std::string& report) {
@@ -174,11 +167,8 @@ TEST_F(ScSendTest, SentOverEitherTransportItIsFoundWithTheExportedPixels) {
 
 // Runs a command; returns its exit status and stdout with stderr.
 std::pair<int, std::string> run(const std::string& command) {
-  FILE* p = popen((command + " 2>&1").c_str(), "r");
-  std::string out;
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-  return {WEXITSTATUS(pclose(p)), out};
+  CommandResult r = runCommand(command + " 2>&1");
+  return {r.exitCode, std::move(r.output)};
 }
 
 using ScPatientTest = PacsTest;  // its own Orthanc: the phantom study gains a series here

@@ -3,7 +3,7 @@
 if(TARGET voxray_segment AND VOXRAY_WITH_DICOM AND VOXRAY_WITH_FORMATS)
   add_executable(voxray_segment_files_tests segment_files_test.cpp)
   target_link_libraries(voxray_segment_files_tests PRIVATE voxray_segment voxray_io
-    nlohmann_json::nlohmann_json GTest::gtest_main)
+    nlohmann_json::nlohmann_json GTest::gtest_main voxray_test_support)
   target_compile_definitions(voxray_segment_files_tests PRIVATE
     VOXRAY_PYTHON="${VOXRAY_PYTHON}"
     VOXRAY_SEGMENT_CHECKER="${CMAKE_CURRENT_SOURCE_DIR}/check_segment_files.py"

@@ -11,6 +11,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "command_run.h"
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/error.h"
 #include "voxray/io/segment_files.h"
@@ -95,31 +96,16 @@ json countsJson(const Segmentation& seg) {
   return j;
 }
 
-std::string run(const std::string& command, int& status) {
-  std::string out;
-  FILE* p = ::popen((command + " 2>&1").c_str(), "r");
-  if (!p) {
-    status = -1;
-    return out;
-  }
-  char buf[4096];
-  while (size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  status = ::pclose(p);
-  status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
-}
-
 // Runs the independent checker; fails the test with its output unless every check holds.
 void checkWithPython(const std::string& mode, const std::string& file, const std::string& arg) {
   ASSERT_TRUE(fs::exists(VOXRAY_PYTHON))
       << VOXRAY_PYTHON << " is missing: run scripts/bootstrap (it makes the venv of test readers)";
-  int status = 0;
-  const std::string out = run(std::string(VOXRAY_PYTHON) + " " + VOXRAY_SEGMENT_CHECKER + " " +
-                                  mode + " '" + file + "' '" + arg + "'",
-                              status);
-  ASSERT_NE(status, 3) << out << "run scripts/bootstrap";
-  EXPECT_EQ(status, 0) << out;
-  if (!out.empty()) std::cout << mode << " check: " << out;
+  const test::CommandResult r =
+      test::runCommand(std::string(VOXRAY_PYTHON) + " " + VOXRAY_SEGMENT_CHECKER + " " + mode +
+                       " '" + file + "' '" + arg + "' 2>&1");
+  ASSERT_NE(r.exitCode, 3) << r.output << "run scripts/bootstrap";
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  if (!r.output.empty()) std::cout << mode << " check: " << r.output;
 }
 
 std::string writeJson(const TempFolder& dir, const json& j) {
@@ -340,8 +326,7 @@ TEST(SegmentFiles, DicomSegFramesWhoseBitsDoNotFillWholeBytesReadBack) {
 
 // dciodvfy checks the object against the IOD; its output names each problem "Error - ...".
 void expectNoIodError(const std::string& path) {
-  int status = 0;
-  const std::string out = run("dciodvfy '" + path + "'", status);
+  const std::string out = test::runCommand("dciodvfy '" + path + "' 2>&1").output;
   ASSERT_NE(out.find("Segmentation"), std::string::npos) << "dciodvfy did not run:\n" << out;
   EXPECT_EQ(out.find("Error"), std::string::npos) << out;
   std::cout << "dciodvfy: " << out;  // warnings, if any, for the reader of the log

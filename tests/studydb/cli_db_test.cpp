@@ -1,8 +1,6 @@
 // voxray-cli db import|find|series|priors|verify|delete and the db:SERIES_UID input, through
 // the executable's JSON output; the counts cross-checked with pydicom.
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -10,6 +8,7 @@
 #include <gmock/gmock.h>
 #include <nlohmann/json.hpp>
 
+#include "command_run.h"
 #include "studydb_test_support.h"
 
 namespace fs = std::filesystem;
@@ -19,19 +18,11 @@ using testing::HasSubstr;
 namespace voxray::test {
 namespace {
 
-struct CliRun {
-  int status = 0;
-  std::string out;
-};
+using CliRun = CommandResult;
 
 // COMMAND through the shell within 120 s; stderr joined to stdout only when asked.
 CliRun shell(const std::string& command, bool withStderr = false) {
-  CliRun r;
-  FILE* p = popen(("timeout 120 " + command + (withStderr ? " 2>&1" : "")).c_str(), "r");
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  r.status = WEXITSTATUS(pclose(p));
-  return r;
+  return runCommand("timeout 120 " + command + (withStderr ? " 2>&1" : ""));
 }
 
 CliRun cli(const std::string& args, bool withStderr = false) {
@@ -39,8 +30,8 @@ CliRun cli(const std::string& args, bool withStderr = false) {
 }
 
 json parsed(const CliRun& r) {
-  EXPECT_EQ(r.status, 0) << r.out;
-  return json::parse(r.out);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  return json::parse(r.output);
 }
 
 const std::string kPhilipsStudy = "1.3.46.670589.33.1.27492712521914879309.27169771283235650014";
@@ -57,9 +48,9 @@ TEST(StudyDbCli, ImportFindSeriesVerifyAndOpenASeriesByUid) {
   EXPECT_EQ(imported.at("series").size(), 5u);
   // Text output and stderr never carry a patient's name (they are 'HEAD', 'REMOVED', 'Eve').
   CliRun text = cli("db import " + dicomPath("ct-visible-human-pelvis") + " --db " + db, true);
-  ASSERT_EQ(text.status, 0) << text.out;
-  EXPECT_THAT(text.out, HasSubstr("150 unchanged"));
-  EXPECT_THAT(text.out, testing::Not(HasSubstr("Eve")));
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_THAT(text.output, HasSubstr("150 unchanged"));
+  EXPECT_THAT(text.output, testing::Not(HasSubstr("Eve")));
 
   json all = parsed(cli("db find --db " + db + " --modality CT --json"));
   EXPECT_EQ(all.size(), 3u);
@@ -99,8 +90,8 @@ TEST(StudyDbCli, ImportFindSeriesVerifyAndOpenASeriesByUid) {
     EXPECT_EQ(fromFlags.at(key), fromFolder.at(key)) << key;
   }
   CliRun unknown = cli("info db:1.2.3.4 --db " + db, true);
-  EXPECT_EQ(unknown.status, 1);
-  EXPECT_THAT(unknown.out, HasSubstr("Series 1.2.3.4 is not in the study database"));
+  EXPECT_EQ(unknown.exitCode, 1);
+  EXPECT_THAT(unknown.output, HasSubstr("Series 1.2.3.4 is not in the study database"));
 
   json verified = parsed(cli("db verify --db " + db + " --rebuild --json"));
   EXPECT_EQ(verified.at("checked"), 213);
@@ -114,9 +105,9 @@ TEST(StudyDbCli, ImportFindSeriesVerifyAndOpenASeriesByUid) {
     f.write("garbage, not SQLite", 19);
   }
   CliRun damaged = cli("db find --db " + db + " --modality CT", true);
-  EXPECT_EQ(damaged.status, 0) << damaged.out;
-  EXPECT_THAT(damaged.out, HasSubstr("was damaged: rebuilt from its journal"));
-  EXPECT_THAT(damaged.out, HasSubstr(kPhilipsStudy));
+  EXPECT_EQ(damaged.exitCode, 0) << damaged.output;
+  EXPECT_THAT(damaged.output, HasSubstr("was damaged: rebuilt from its journal"));
+  EXPECT_THAT(damaged.output, HasSubstr(kPhilipsStudy));
   EXPECT_EQ(parsed(cli("db find --db " + db + " --json")).size(), 3u);
 
   json deleted = parsed(cli("db delete " + kPhilipsStudy + " --db " + db + " --json"));
@@ -124,8 +115,8 @@ TEST(StudyDbCli, ImportFindSeriesVerifyAndOpenASeriesByUid) {
   EXPECT_EQ(parsed(cli("db find --db " + db + " --json")).size(), 2u);
   EXPECT_TRUE(fs::exists(dicomPath("ct-philips-phantom/S2010/I10")));
   CliRun again = cli("db delete " + kPhilipsStudy + " --db " + db, true);
-  EXPECT_EQ(again.status, 1);
-  EXPECT_THAT(again.out, HasSubstr("is not in the study database"));
+  EXPECT_EQ(again.exitCode, 1);
+  EXPECT_THAT(again.output, HasSubstr("is not in the study database"));
 }
 
 // db import --pacs-cache: every cached series, copied into the database's store (the cache
