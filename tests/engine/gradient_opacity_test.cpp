@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ball_scene.h"
 #include "frame_setup.h"  // engine-internal: the frame's view, for the pixels of chosen points
 #include "gradient_table.h"
 #include "reference_sampling.h"
@@ -33,48 +34,11 @@ ClContext& context() {
   return ctx;
 }
 
-struct Diff {
-  double meanAbs = 0.0;  // in 8-bit levels
-  double fractionOver3 = 0.0;
-  int maxAbs = 0;
-};
-
-Diff compare(const Image& a, const Image& b) {
-  Diff d;
-  size_t n = size_t(a.width) * size_t(a.height), over = 0;
-  double sum = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c) {
-      int e = std::abs(int(a.rgba[i * 4 + c]) - int(b.rgba[i * 4 + c]));
-      sum += e;
-      worst = std::max(worst, e);
-    }
-    d.maxAbs = std::max(d.maxAbs, worst);
-    if (worst > 3) ++over;
-  }
-  d.meanAbs = sum / double(n * 3);
-  d.fractionOver3 = double(over) / double(n);
-  return d;
-}
-
-// The anisotropic ball of kernel_vs_reference_test.cpp: gradients must be physical (per mm).
-const Volume& ballVolume() {
-  static Volume v = test::ball({40, 36, 24}, 13.0, 1000.0, -1000.0, {1.0, 1.1, 1.6});
-  return v;
-}
-
 // A table that shows the ball's inside (1000 HU) as well as its boundary, and a gradient
 // opacity that fades what is flat: 0 below 100 HU/mm, 1 from 600 HU/mm (the boundary's
 // |gradient| reaches about 1000 HU/mm).
 RenderParams ballParams() {
-  RenderParams p;
-  p.width = 64;
-  p.height = 48;
-  p.mode = Mode::Dvr;
-  p.camera.azimuthDeg = 30.0;
-  p.camera.elevationDeg = 20.0;
-  p.camera.zoom = 1.8;
+  RenderParams p = test::ballView(Mode::Dvr);
   p.stepMm = 0.5;
   p.transferFunction = {{-1000.0, {0.0, 0.0, 0.0, 0.0}},
                         {0.0, {0.9, 0.5, 0.3, 0.05}},
@@ -134,7 +98,7 @@ TEST(GradientOpacity, TheTableIsInHuPerMm) {
 // its shading queue), with empty-space skipping (the default): kernel and reference agree,
 // and the factor changes the image (else both could ignore it and still agree).
 TEST(GradientOpacity, KernelsAgreeWithTheReference) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   for (bool shading : {false, true})
     for (Gradient op : {Gradient::Central, Gradient::Sobel}) {
       RenderParams p = ballParams();
@@ -143,7 +107,7 @@ TEST(GradientOpacity, KernelsAgreeWithTheReference) {
       Image ref = renderReference(v, p);
       RenderParams off = p;
       off.gradientOpacity.clear();
-      Diff changed = compare(ref, renderReference(v, off));
+      test::ImageDiff changed = test::compareImages(ref, renderReference(v, off));
       EXPECT_GT(changed.meanAbs, 5.0) << "the factor must show";
       for (bool packets : {true, false}) {
         Raycaster rc(context(), v, VolumeStorage::Buffer);
@@ -151,7 +115,7 @@ TEST(GradientOpacity, KernelsAgreeWithTheReference) {
         o.packets = packets;
         rc.setOptions(o);
         Image gpu = rc.render(p);
-        Diff d = compare(gpu, ref);
+        test::ImageDiff d = test::compareImages(gpu, ref);
         std::string what = describe(p, packets) + " (max " + std::to_string(d.maxAbs) + ")";
         EXPECT_NE(rc.variantOptions(p).find("-D GRADIENT_OPACITY=1"), std::string::npos) << what;
         EXPECT_LE(d.meanAbs, 0.5) << what;
@@ -163,7 +127,7 @@ TEST(GradientOpacity, KernelsAgreeWithTheReference) {
 // The other ways a frame is computed (none changes the image): 8-lane packets, no empty-space
 // skipping, the uber kernel, z slabs, image3d_t storage where the device has it.
 TEST(GradientOpacity, EveryWayOfComputingAgreesWithTheReference) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   RenderParams p = ballParams();
   Image ref = renderReference(v, p);
   struct Way {
@@ -186,7 +150,7 @@ TEST(GradientOpacity, EveryWayOfComputingAgreesWithTheReference) {
     if (w.storage == VolumeStorage::Image3d && !context().device().imageSupport) continue;
     Raycaster rc(context(), v, w.storage);
     rc.setOptions(w.options);
-    Diff d = compare(rc.render(p), ref);
+    test::ImageDiff d = test::compareImages(rc.render(p), ref);
     std::string what = std::string(w.name) + " (max " + std::to_string(d.maxAbs) + ")";
     if (w.options.maxSlabBytes) EXPECT_GT(rc.slabCount(), 1) << what;
     EXPECT_LE(d.meanAbs, 0.5) << what;
@@ -198,7 +162,7 @@ TEST(GradientOpacity, EveryWayOfComputingAgreesWithTheReference) {
 // read their light grid behind the gradient table (where it moves with it), the packets'
 // shading queue shades with the gradient it stored.
 TEST(GradientOpacity, FactorOneChangesNothingInAnyLighting) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   for (Lighting lighting : {Lighting::Phong, Lighting::Shadows, Lighting::Ao})
     for (bool packets : {true, false}) {
       RenderParams off = ballParams();
@@ -213,7 +177,7 @@ TEST(GradientOpacity, FactorOneChangesNothingInAnyLighting) {
       Image a = rc.render(off), b = rc.render(on), c = rc.render(off);
       std::string what = describe(on, packets) + " " + toString(lighting);
       EXPECT_NE(rc.variantOptions(on), rc.variantOptions(off)) << what;
-      Diff d = compare(a, b);
+      test::ImageDiff d = test::compareImages(a, b);
       EXPECT_LE(d.maxAbs, 1) << what;  // the same sums; fast maths may round one level apart
       EXPECT_EQ(a.rgba, c.rgba) << what << ": back without it, byte for byte";
     }

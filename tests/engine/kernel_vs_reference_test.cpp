@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "ball_scene.h"
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
@@ -28,63 +29,19 @@ namespace voxray {
 
 namespace {
 
-struct Diff {
-  double meanAbs = 0.0;  // in 8-bit levels
-  double fractionOver3 = 0.0;
-  int maxAbs = 0;
-};
-
-Diff compare(const Image& a, const Image& b) {
-  Diff d;
-  size_t n = size_t(a.width) * size_t(a.height), over = 0;
-  double sum = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c) {
-      int e = std::abs(int(a.rgba[i * 4 + c]) - int(b.rgba[i * 4 + c]));
-      sum += e;
-      worst = std::max(worst, e);
-    }
-    d.maxAbs = std::max(d.maxAbs, worst);
-    if (worst > 3) ++over;
-  }
-  d.meanAbs = sum / double(n * 3);
-  d.fractionOver3 = double(over) / double(n);
-  return d;
-}
-
 ClContext& context() {
   static ClContext ctx(test::testDeviceSelector());  // PoCL, or the GPU certificate's
   return ctx;
 }
 
-const Volume& testVolume() {
-  // Anisotropic on purpose: gradients and steps must be physical.
-  static Volume v = test::ball({40, 36, 24}, 13.0, 1000.0, -1000.0, {1.0, 1.1, 1.6});
-  return v;
-}
-
 RenderParams baseParams(Mode mode) {
-  RenderParams p;
-  p.width = 64;
-  p.height = 48;
-  p.mode = mode;
+  RenderParams p = test::ballView(mode);
   p.isoLo = 0.0;
-  p.camera.azimuthDeg = 30.0;
-  p.camera.elevationDeg = 20.0;
-  p.camera.zoom = 1.8;  // the ball fills most of the frame
   if (mode == Mode::Dvr) {
     p.preset = "CT-Bone";
     p.stepMm = 0.5;
   }
   return p;
-}
-
-void expectClose(const Image& gpu, const Image& ref, const std::string& what) {
-  ASSERT_EQ(gpu.width, ref.width);
-  Diff d = compare(gpu, ref);
-  EXPECT_LE(d.meanAbs, 0.5) << what;
-  EXPECT_LE(d.fractionOver3, 0.005) << what << " (max " << d.maxAbs << ")";
 }
 
 }  // namespace
@@ -109,10 +66,10 @@ class KernelVsReference : public ::testing::TestWithParam<RenderParams> {};
 
 TEST_P(KernelVsReference, AgreesPixelByPixel) {
   const RenderParams& p = GetParam();
-  Raycaster rc(context(), testVolume(), VolumeStorage::Buffer);
+  Raycaster rc(context(), test::anisotropicBall(), VolumeStorage::Buffer);
   Image gpu = rc.render(p);
-  Image ref = renderReference(testVolume(), p);
-  expectClose(gpu, ref, rc.variantOptions(p));
+  Image ref = renderReference(test::anisotropicBall(), p);
+  test::expectCloseToReference(gpu, ref, rc.variantOptions(p));
   // The image is not trivially empty: the ball covers a good part of the frame.
   size_t lit = 0;
   for (size_t i = 0; i < ref.rgba.size(); i += 4) lit += ref.rgba[i] > 10;
@@ -134,16 +91,18 @@ TEST(KernelVsReferenceExtras, OrthographicClipBoxAndFixedLight) {
   p.clip.hi = {0.6, 1.0, 1.0};
   p.light.followCamera = false;
   p.light.position = {-200.0, -100.0, 50.0};
-  Raycaster rc(context(), testVolume(), VolumeStorage::Buffer);
-  expectClose(rc.render(p), renderReference(testVolume(), p), rc.variantOptions(p));
+  Raycaster rc(context(), test::anisotropicBall(), VolumeStorage::Buffer);
+  test::expectCloseToReference(rc.render(p), renderReference(test::anisotropicBall(), p),
+                               rc.variantOptions(p));
 }
 
 TEST(KernelVsReferenceExtras, ImageStorageMatchesTheReferenceToo) {
   if (!context().device().imageSupport) GTEST_SKIP() << "device has no image support";
   for (Mode mode : {Mode::Iso, Mode::Dvr}) {
     RenderParams p = baseParams(mode);
-    Raycaster rc(context(), testVolume(), VolumeStorage::Image3d);
-    expectClose(rc.render(p), renderReference(testVolume(), p), rc.variantOptions(p));
+    Raycaster rc(context(), test::anisotropicBall(), VolumeStorage::Image3d);
+    test::expectCloseToReference(rc.render(p), renderReference(test::anisotropicBall(), p),
+                                 rc.variantOptions(p));
   }
 }
 

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <vector>
 
+#include "ball_scene.h"
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/camera.h"
@@ -25,13 +26,12 @@ namespace voxray {
 
 namespace {
 
+// The float kernels against the double reference (ball_scene.h); a sample within rounding of
+// a voxel's middle may also take the neighbour's label there, as those bounds allow.
+using test::expectCloseToReference;
+
 constexpr double kRadiusMm = 6.0;
 constexpr double kHalfDiagonalMm = 1.09;  // 0.5 * |(1, 1.1, 1.6)|
-
-const Volume& ballVolume() {
-  static Volume v = test::ball({40, 36, 24}, 13.0, 1000.0, -1000.0, {1.0, 1.1, 1.6});
-  return v;
-}
 
 // Label 1 on the voxels within kRadiusMm (in mm) of the volume's centre; one red segment.
 Segmentation sphereSegment(const Volume& v) {
@@ -48,23 +48,6 @@ Segmentation sphereSegment(const Volume& v) {
   red.colour = {1.0f, 0.0f, 0.0f};
   s.segments.push_back(red);
   return s;
-}
-
-RenderParams params(bool shading = true) {
-  RenderParams p;
-  p.width = 64;
-  p.height = 48;
-  p.mode = Mode::Dvr;
-  p.shading = shading;
-  // White, faint: about half the light through the ball's middle, so the inside shows.
-  p.transferFunction = {{-1000.0, {1.0, 1.0, 1.0, 0.0}},
-                        {0.0, {1.0, 1.0, 1.0, 0.0}},
-                        {1000.0, {1.0, 1.0, 1.0, 0.03}}};
-  p.stepMm = 0.5;
-  p.camera.azimuthDeg = 30.0;
-  p.camera.elevationDeg = 20.0;
-  p.camera.zoom = 1.8;
-  return p;
 }
 
 // Each pixel's ray's distance (mm) from the volume's centre (the world origin).
@@ -98,31 +81,11 @@ Image renderWith(const Volume& v, const RenderParams& p, const Segmentation* seg
 bool inside(double d) { return d < kRadiusMm - kHalfDiagonalMm; }
 bool outside(double d) { return d > kRadiusMm + kHalfDiagonalMm + 0.05; }
 
-// kernel_vs_reference_test.cpp's agreement: float vs double (mean <= 0.5 levels, at most
-// 0.5 % of pixels more than 3 apart); a sample within rounding of a voxel's middle may also
-// take the neighbour's label there.
-void expectClose(const Image& kernel, const Image& ref, const std::string& what) {
-  ASSERT_EQ(kernel.rgba.size(), ref.rgba.size());
-  size_t n = kernel.rgba.size() / 4, over = 0;
-  double sum = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c) {
-      int e = std::abs(int(kernel.rgba[i * 4 + c]) - int(ref.rgba[i * 4 + c]));
-      sum += e;
-      worst = std::max(worst, e);
-    }
-    over += worst > 3;
-  }
-  EXPECT_LE(sum / double(3 * n), 0.5) << what;
-  EXPECT_LE(double(over) / double(n), 0.005) << what;
-}
-
 }  // namespace
 
 TEST(Labels, ASegmentationThatChangesNothingRendersThePixelsWithout) {
-  const Volume& v = ballVolume();
-  const RenderParams p = params();
+  const Volume& v = test::anisotropicBall();
+  const RenderParams p = test::faintTableParams();
   Segmentation none = sphereSegment(v);
   none.segments.clear();  // labels, but no segment names them
   Segmentation hidden = sphereSegment(v);
@@ -160,29 +123,29 @@ TEST(Labels, ASegmentationThatChangesNothingRendersThePixelsWithout) {
 }
 
 TEST(Labels, KernelsMatchTheReference) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   const Segmentation seg = sphereSegment(v);
   for (const char* mask : {"off", "show:1", "hide:1"})
     for (bool shading : {true, false}) {
-      RenderParams p = params(shading);
+      RenderParams p = test::faintTableParams(shading);
       p.segmentMask = parseSegmentMask(mask);
       p.segmentBlend = 0.8;
       const Image ref = renderReference(v, p, seg);
       for (bool packets : {true, false}) {
         const std::string what = std::string(mask) + (shading ? " shaded" : " unshaded") +
                                  (packets ? " packets" : " per ray");
-        expectClose(renderWith(v, p, &seg, packets), ref, what);
+        expectCloseToReference(renderWith(v, p, &seg, packets), ref, what);
       }
       // The volume as an image (GPUs), the labels still a buffer beside it.
       if (test::pocl().device().imageSupport)
-        expectClose(renderWith(v, p, &seg, false, true, nullptr, VolumeStorage::Image3d), ref,
-                    std::string(mask) + " image3d");
+        expectCloseToReference(renderWith(v, p, &seg, false, true, nullptr, VolumeStorage::Image3d),
+                               ref, std::string(mask) + " image3d");
     }
 }
 
 TEST(Labels, ARedSphereSegmentShowsRedWhereItLies) {
-  const Volume& v = ballVolume();
-  const RenderParams p = params();
+  const Volume& v = test::anisotropicBall();
+  const RenderParams p = test::faintTableParams();
   const Segmentation seg = sphereSegment(v);
   const std::vector<double> dist = rayDistances(v, p);
   for (bool packets : {true, false}) {
@@ -212,8 +175,8 @@ TEST(Labels, ARedSphereSegmentShowsRedWhereItLies) {
 }
 
 TEST(Labels, AShowMaskRendersNothingOutsideTheSegmentsDisc) {
-  const Volume& v = ballVolume();
-  RenderParams p = params();
+  const Volume& v = test::anisotropicBall();
+  RenderParams p = test::faintTableParams();
   p.segmentMask = parseSegmentMask("show:1");
   const Segmentation seg = sphereSegment(v);
   const std::vector<double> dist = rayDistances(v, p);
@@ -235,8 +198,8 @@ TEST(Labels, AShowMaskRendersNothingOutsideTheSegmentsDisc) {
 }
 
 TEST(Labels, AHideMaskRemovesTheSegment) {
-  const Volume& v = ballVolume();
-  RenderParams p = params();
+  const Volume& v = test::anisotropicBall();
+  RenderParams p = test::faintTableParams();
   p.segmentMask = parseSegmentMask("hide:1");
   const Segmentation seg = sphereSegment(v);
   const std::vector<double> dist = rayDistances(v, p);
@@ -258,19 +221,19 @@ TEST(Labels, AHideMaskRemovesTheSegment) {
 }
 
 TEST(Labels, SkippingStaysExactWithAMaskAndLeapsWhatItHides) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   const Segmentation seg = sphereSegment(v);
   for (const char* mask : {"off", "show:1", "hide:1"})
     for (bool packets : {true, false}) {
       SCOPED_TRACE(std::string(mask) + (packets ? " packets" : " per ray"));
-      RenderParams p = params();
+      RenderParams p = test::faintTableParams();
       p.segmentMask = parseSegmentMask(mask);
       EXPECT_EQ(test::maxDiff(renderWith(v, p, &seg, packets, true),
                               renderWith(v, p, &seg, packets, false)),
                 0);
     }
   // A show mask leaps the macro cells without label 1: far fewer samples than without it.
-  RenderParams p = params();
+  RenderParams p = test::faintTableParams();
   FrameStats all, shown;
   renderWith(v, p, &seg, true, true, &all);
   p.segmentMask = parseSegmentMask("show:1");
@@ -279,13 +242,13 @@ TEST(Labels, SkippingStaysExactWithAMaskAndLeapsWhatItHides) {
 }
 
 TEST(Labels, AnEditedBoxRendersAsTheWholeMapSetAgain) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   const Segmentation full = sphereSegment(v);
   Segmentation edited = full;
   std::fill(edited.labels.begin(), edited.labels.end(), uint8_t(0));
   for (const char* mask : {"off", "show:1"}) {
     SCOPED_TRACE(mask);
-    RenderParams p = params();
+    RenderParams p = test::faintTableParams();
     p.segmentMask = parseSegmentMask(mask);
     Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
     rc.setSegmentation(edited);
@@ -297,7 +260,7 @@ TEST(Labels, AnEditedBoxRendersAsTheWholeMapSetAgain) {
 }
 
 TEST(Labels, ASegmentationOffTheVolumesGridIsRefused) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   Segmentation s = sphereSegment(v);
   s.grid.spacingMm.z = 2.0;
   Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);

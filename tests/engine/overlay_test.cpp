@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "ball_scene.h"
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/camera.h"
@@ -22,15 +23,12 @@ namespace voxray {
 
 namespace {
 
+using test::expectCloseToReference;
+
 constexpr double kRadiusMm = 7.0;
 // Where a ray's overlay opacity changes: the table's step (500 ... 600 of 0 ... 1000) lies
 // within one overlay voxel of the sphere's surface, whose diagonal is |(1.5, 0.8, 2)| = 2.6 mm.
 constexpr double kMarginMm = 2.6;
-
-const Volume& ballVolume() {
-  static Volume v = test::ball({40, 36, 24}, 13.0, 1000.0, -1000.0, {1.0, 1.1, 1.6});
-  return v;
-}
 
 glm::dvec3 patientOf(const Volume& v, const glm::dvec3& voxel) {
   return v.originMm + v.direction * (voxel * v.spacingMm);
@@ -38,7 +36,7 @@ glm::dvec3 patientOf(const Volume& v, const glm::dvec3& voxel) {
 
 // The lesion's centre: 5, -4, 3 mm from the ball's centre (LPS).
 glm::dvec3 lesionCentre() {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   return patientOf(v, (glm::dvec3(v.dims) - 1.0) * 0.5) + glm::dvec3(5.0, -4.0, 3.0);
 }
 
@@ -74,22 +72,6 @@ TransferFunction redTable(double opacity) {
            {600.0, {1.0, 0.0, 0.0, opacity}}}};
 }
 
-RenderParams params(bool shading = true) {
-  RenderParams p;
-  p.width = 64;
-  p.height = 48;
-  p.mode = Mode::Dvr;
-  p.shading = shading;
-  p.transferFunction = {{-1000.0, {1.0, 1.0, 1.0, 0.0}},
-                        {0.0, {1.0, 1.0, 1.0, 0.0}},
-                        {1000.0, {1.0, 1.0, 1.0, 0.03}}};
-  p.stepMm = 0.5;
-  p.camera.azimuthDeg = 30.0;
-  p.camera.elevationDeg = 20.0;
-  p.camera.zoom = 1.8;
-  return p;
-}
-
 Image renderWith(const Volume& v, const RenderParams& p, const Volume* overlay,
                  const TransferFunction& tf, bool packets, bool ess = true,
                  VolumeStorage storage = VolumeStorage::Buffer) {
@@ -119,31 +101,12 @@ std::vector<double> lesionDistances(const Volume& v, const RenderParams& p) {
   return out;
 }
 
-// labels_test's (and kernel_vs_reference_test's) agreement of float kernels and the double
-// reference: mean difference <= 0.5 levels, at most 0.5 % of pixels more than 3 apart.
-void expectClose(const Image& kernel, const Image& ref, const std::string& what) {
-  ASSERT_EQ(kernel.rgba.size(), ref.rgba.size());
-  size_t n = kernel.rgba.size() / 4, over = 0;
-  double sum = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c) {
-      int e = std::abs(int(kernel.rgba[i * 4 + c]) - int(ref.rgba[i * 4 + c]));
-      sum += e;
-      worst = std::max(worst, e);
-    }
-    over += worst > 3;
-  }
-  EXPECT_LE(sum / double(3 * n), 0.5) << what;
-  EXPECT_LE(double(over) / double(n), 0.005) << what;
-}
-
 }  // namespace
 
 TEST(Overlay, FramesWithoutAnOverlayRenderAsBefore) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   const Volume o = lesion();
-  const RenderParams p = params();
+  const RenderParams p = test::faintTableParams();
   for (bool packets : {true, false}) {
     SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
     const Image plain = renderWith(v, p, nullptr, {}, packets);
@@ -173,27 +136,27 @@ TEST(Overlay, FramesWithoutAnOverlayRenderAsBefore) {
 }
 
 TEST(Overlay, KernelsMatchTheReference) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   const Volume o = lesion();
   const TransferFunction tf = redTable(0.1);
   for (bool shading : {true, false}) {
-    const RenderParams p = params(shading);
+    const RenderParams p = test::faintTableParams(shading);
     const Image ref = renderReference(v, p, o, tf);
     for (bool packets : {true, false})
-      expectClose(
+      expectCloseToReference(
           renderWith(v, p, &o, tf, packets), ref,
           std::string(shading ? "shaded" : "unshaded") + (packets ? " packets" : " per ray"));
     // The volume as an image (GPUs), the overlay still a buffer beside it.
     if (test::pocl().device().imageSupport)
-      expectClose(renderWith(v, p, &o, tf, false, true, VolumeStorage::Image3d), ref,
-                  shading ? "shaded image3d" : "unshaded image3d");
+      expectCloseToReference(renderWith(v, p, &o, tf, false, true, VolumeStorage::Image3d), ref,
+                             shading ? "shaded image3d" : "unshaded image3d");
   }
 }
 
 TEST(Overlay, TheLesionShowsWhereItLiesInPatientSpace) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   const Volume o = lesion();
-  RenderParams p = params(false);
+  RenderParams p = test::faintTableParams(false);
   // The base wholly transparent: every macro cell of it empty, so only the overlay's cells
   // keep the rays sampling (skipping must not leap them).
   p.transferFunction = {{-1000.0, {1.0, 1.0, 1.0, 0.0}}, {3000.0, {1.0, 1.0, 1.0, 0.0}}};
@@ -223,15 +186,15 @@ TEST(Overlay, TheLesionShowsWhereItLiesInPatientSpace) {
   }
   // The reference places it the same way.
   const Image ref = renderReference(v, p, o, tf);
-  expectClose(renderWith(v, p, &o, tf, true), ref, "lesion");
+  expectCloseToReference(renderWith(v, p, &o, tf, true), ref, "lesion");
 }
 
 TEST(Overlay, SkippingStaysExactBesideAVisibleBase) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   const Volume o = lesion();
   for (bool packets : {true, false}) {
     SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
-    const RenderParams p = params();
+    const RenderParams p = test::faintTableParams();
     EXPECT_EQ(test::maxDiff(renderWith(v, p, &o, redTable(0.2), packets, true),
                             renderWith(v, p, &o, redTable(0.2), packets, false)),
               0);
@@ -243,16 +206,16 @@ TEST(Overlay, AnOverlayThatIsTheVolumeDoublesItsOpacity) {
   // colour unchanged (unshaded: both halves of the mix are the table's colour). That is the
   // volume alone with its opacities holding over half the length (opacityUnitMm 0.5 of the
   // smallest spacing, 1 mm): (1 - a)^(2 seg / 1 mm).
-  const Volume& v = ballVolume();
-  const RenderParams p = params(false);
+  const Volume& v = test::anisotropicBall();
+  const RenderParams p = test::faintTableParams(false);
   RenderParams half = p;
   half.opacityUnitMm = 0.5;
   const TransferFunction tf{p.transferFunction};
   // The double reference: equal to rounding (one level, quantisation of equal values).
   EXPECT_LE(test::maxDiff(renderReference(v, p, v, tf), renderReference(v, half)), 1);
   for (bool packets : {true, false})
-    expectClose(renderWith(v, p, &v, tf, packets), renderReference(v, half),
-                packets ? "self packets" : "self per ray");
+    expectCloseToReference(renderWith(v, p, &v, tf, packets), renderReference(v, half),
+                           packets ? "self packets" : "self per ray");
   // And it is denser than the volume alone.
   const Image alone = renderReference(v, p), twice = renderReference(v, p, v, tf);
   long sumAlone = 0, sumTwice = 0;
@@ -262,7 +225,7 @@ TEST(Overlay, AnOverlayThatIsTheVolumeDoublesItsOpacity) {
 }
 
 TEST(Overlay, WithoutASharedFrameOfReferenceItRendersAndWarns) {
-  Volume v = ballVolume();
+  Volume v = test::anisotropicBall();
   Volume o = lesion();
   Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   v.study.frameOfReferenceUid = "1.2.3";
@@ -278,7 +241,8 @@ TEST(Overlay, WithoutASharedFrameOfReferenceItRendersAndWarns) {
   // The raycaster's volume (ballVolume) names none: it warns and renders the lesion.
   const std::vector<std::string> fromRaycaster = rc.setOverlay(o, redTable(0.6));
   ASSERT_EQ(fromRaycaster.size(), 1u);
-  EXPECT_NE(rc.render(params()).rgba, renderWith(ballVolume(), params(), nullptr, {}, true).rgba);
+  EXPECT_NE(rc.render(test::faintTableParams()).rgba,
+            renderWith(test::anisotropicBall(), test::faintTableParams(), nullptr, {}, true).rgba);
 }
 
 TEST(Overlay, AnOverlayTooBigForTheDeviceIsRefusedSayingWhy) {
