@@ -10,6 +10,7 @@
 #include <string>
 
 #include "test_volumes.h"
+#include "voxray/engine/camera.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
 
@@ -44,6 +45,18 @@ inline RenderParams faintTableParams(bool shading = true) {
                         {1000.0, {1.0, 1.0, 1.0, 0.03}}};
   p.stepMm = 0.5;
   return p;
+}
+
+// Calls F(origin, direction) with each pixel's ray in G's frame (the direction a unit vector),
+// row by row as the image's pixels lie.
+template <class F>
+void forEachPixelRay(const ViewGeometry& g, const RenderParams& p, F&& f) {
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) {
+      glm::dvec3 o, d;
+      g.ray(x, y, p.width, p.height, o, d);
+      f(o, d);
+    }
 }
 
 struct ImageDiff {

@@ -52,14 +52,10 @@ Segmentation sphereSegment(const Volume& v) {
 
 // Each pixel's ray's distance (mm) from the volume's centre (the world origin).
 std::vector<double> rayDistances(const Volume& v, const RenderParams& p) {
-  ViewGeometry g = makeViewGeometry(v, p);
   std::vector<double> out;
-  for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x) {
-      glm::dvec3 o, d;
-      g.ray(x, y, p.width, p.height, o, d);
-      out.push_back(glm::length(glm::cross(-o, d)));  // d is a unit vector
-    }
+  test::forEachPixelRay(makeViewGeometry(v, p), p, [&](const glm::dvec3& o, const glm::dvec3& d) {
+    out.push_back(glm::length(glm::cross(-o, d)));  // d is a unit vector
+  });
   return out;
 }
 

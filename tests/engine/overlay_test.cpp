@@ -88,16 +88,13 @@ Image renderWith(const Volume& v, const RenderParams& p, const Volume* overlay,
 
 // Each pixel's ray's distance (mm) from the lesion's centre, in patient space.
 std::vector<double> lesionDistances(const Volume& v, const RenderParams& p) {
-  ViewGeometry g = makeViewGeometry(v, p);
+  const ViewGeometry g = makeViewGeometry(v, p);
   std::vector<double> out;
-  for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x) {
-      glm::dvec3 o, d;
-      g.ray(x, y, p.width, p.height, o, d);
-      const glm::dvec3 a = patientOf(v, g.toVoxel(o)), b = patientOf(v, g.toVoxel(o + d));
-      const glm::dvec3 dir = glm::normalize(b - a);
-      out.push_back(glm::length(glm::cross(lesionCentre() - a, dir)));
-    }
+  test::forEachPixelRay(g, p, [&](const glm::dvec3& o, const glm::dvec3& d) {
+    const glm::dvec3 a = patientOf(v, g.toVoxel(o)), b = patientOf(v, g.toVoxel(o + d));
+    const glm::dvec3 dir = glm::normalize(b - a);
+    out.push_back(glm::length(glm::cross(lesionCentre() - a, dir)));
+  });
   return out;
 }
 
