@@ -1,0 +1,225 @@
+// One frame over several OpenCL devices, sort-last (voxray/engine/multi_device.h, issue 38 part
+// 4), against the one-device frame. On PoCL the parts are 2 sub-devices of the CPU (one core
+// each) or, where it has too few cores (3 and 4 parts on a 2-core machine), that many
+// contexts on the one CPU: both paths of splitDevice().
+//
+// Tolerance: one 8-bit level per channel. Each sample of the one-device ray is taken by
+// exactly one part at the same position, so the parts' sums differ from the one-pass sum only
+// by float rounding of the composite (a different association of the same products), which
+// can move a value across a rounding edge by one level. dvr's early termination adds at most
+// 1 - earlyTermination (multi_device.h): the frames here set it to 0.999 (0.26 of a level),
+// and EarlyTerminationBound checks the default 0.99 against its bound of 2.55 levels + 1.
+// Both sides run the one-ray-per-work-item kernels (the parts do not march packets).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <tuple>
+
+#include "accuracy_cthead.h"
+#include "stability_helpers.h"
+#include "test_volumes.h"
+#include "voxray/engine/cl_context.h"
+#include "voxray/engine/multi_device.h"
+#include "voxray/engine/raycaster.h"
+#include "voxray/io/error.h"
+
+namespace voxray {
+
+namespace {
+
+// 40x36x30, anisotropic: 2, 3 and 4 parts own 15, 10 and 7-8 slices; the ball (z 4.5 to 24.5)
+// and its bump cross every boundary obliquely.
+const Volume& ballVolume() {
+  static Volume v = test::ball({40, 36, 30}, 10.0, 1000.0, -1000.0, {1.0, 1.1, 1.3});
+  return v;
+}
+
+// The contexts of N parts, made once per N (each builds its kernels once).
+std::vector<ClContext*> contexts(int n) {
+  static std::map<int, std::vector<std::unique_ptr<ClContext>>> made;
+  auto& c = made[n];
+  if (c.empty()) c = splitDevice(test::testDeviceSelector(), n);
+  std::vector<ClContext*> out;
+  for (auto& p : c) out.push_back(p.get());
+  return out;
+}
+
+enum class View { AlongPlusZ, AlongMinusZ, Oblique, Inside };
+const char* name(View v) {
+  return v == View::AlongPlusZ    ? "along+z"
+         : v == View::AlongMinusZ ? "along-z"
+         : v == View::Oblique     ? "oblique"
+                                  : "eye-inside";
+}
+
+// The volume's k axis (z) points along elevation 90 or -90 here (the ball's direction is the
+// identity; CThead's LPI puts k to inferior): one of them looks along +z, the other along -z.
+void place(RenderParams& p, View v) {
+  p.camera.azimuthDeg = 35.0;
+  p.camera.elevationDeg = v == View::AlongPlusZ ? 90.0 : v == View::AlongMinusZ ? -90.0 : 25.0;
+  if (v == View::Inside) {
+    // The eye inside the volume: rays run up and down z from one pixel to the next, so the
+    // order of the parts differs per pixel.
+    p.camera.elevationDeg = 60.0;
+    p.camera.distanceMm = 5.0;
+    p.camera.fovDeg = 100.0;
+  }
+}
+
+struct Case {
+  Mode mode;
+  bool ess;
+  bool shaded;
+};
+
+RenderParams frame(const Case& c, View v, int w, int h) {
+  RenderParams p;
+  p.width = w;
+  p.height = h;
+  p.mode = c.mode;
+  p.shading = c.shaded;
+  p.isoLo = c.mode == Mode::Iso ? 0.0 : p.isoLo;
+  if (c.mode == Mode::Dvr) p.preset = "CT-Bone";
+  p.earlyTermination = 0.999;
+  place(p, v);
+  return p;
+}
+
+void expectSame(const Volume& vol, const Case& c, int n, int w, int h, int tolerance = 1) {
+  Raycaster one(test::pocl(), vol, VolumeStorage::Buffer);
+  RaycasterOptions o;
+  o.emptySpaceSkipping = c.ess;
+  o.packets = false;
+  one.setOptions(o);
+  MultiDeviceOptions mo;
+  mo.emptySpaceSkipping = c.ess;
+  MultiDeviceRenderer split(contexts(n), vol, mo);
+  ASSERT_EQ(split.partCount(), n);
+  for (View v : {View::AlongPlusZ, View::AlongMinusZ, View::Oblique, View::Inside}) {
+    RenderParams p = frame(c, v, w, h);
+    Image a = one.render(p);
+    MultiDeviceStats stats;
+    Image b = split.render(p, &stats);
+    ASSERT_EQ(stats.parts.size(), size_t(n));
+    EXPECT_LE(test::maxDiff(a, b), tolerance) << name(v) << ", " << n << " parts";
+    // Not a blank frame that agrees trivially: the volume shows.
+    int lit = 0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4) lit += a.rgba[i] > 20;
+    EXPECT_GT(lit, int(a.rgba.size() / 4 / 50)) << name(v);
+  }
+}
+
+}  // namespace
+
+using Param = std::tuple<int, int>;  // parts, case index
+const Case kCases[] = {{Mode::Dvr, true, true},
+                       {Mode::Dvr, false, true},
+                       {Mode::Mip, true, false},
+                       {Mode::Iso, true, true}};
+std::string caseName(int i) {
+  const Case& c = kCases[i];
+  return std::string(c.mode == Mode::Dvr   ? "dvr_shaded"
+                     : c.mode == Mode::Mip ? "mip"
+                                           : "iso") +
+         (c.ess ? "_ess" : "_noess");
+}
+
+class MultiDevice : public ::testing::TestWithParam<Param> {};
+
+TEST_P(MultiDevice, BallEqualsOneDevice) {
+  auto [n, i] = GetParam();
+  expectSame(ballVolume(), kCases[i], n, 64, 48);
+}
+
+TEST_P(MultiDevice, CtheadEqualsOneDevice) {
+  const Volume* v = test::cthead();
+  if (!v) GTEST_SKIP() << "CThead is not in ../shared/data";
+  auto [n, i] = GetParam();
+  expectSame(*v, kCases[i], n, 96, 96);
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, MultiDevice,
+                         ::testing::Combine(::testing::Values(2, 3, 4),
+                                            ::testing::Values(0, 1, 2, 3)),
+                         [](const ::testing::TestParamInfo<Param>& info) {
+                           return std::to_string(std::get<0>(info.param)) + "parts_" +
+                                  caseName(std::get<1>(info.param));
+                         });
+
+// Jitter and an orthographic camera: the per-pixel offsets are the whole ray's in every part.
+TEST(MultiDeviceFrame, JitterAndOrthographic) {
+  RenderParams p = frame({Mode::Dvr, true, true}, View::Oblique, 64, 48);
+  p.jitter = true;
+  Raycaster one(test::pocl(), ballVolume(), VolumeStorage::Buffer);
+  RaycasterOptions o;
+  o.packets = false;
+  one.setOptions(o);
+  MultiDeviceRenderer split(contexts(3), ballVolume());
+  EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1);
+  p.camera.projection = Projection::Orthographic;
+  p.camera.elevationDeg = 90.0;  // rays exactly along z
+  EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1);
+}
+
+// The default early termination (0.99): a part behind a ray's stopping point adds at most
+// 1 - 0.99 of a colour (2.55 levels), plus a level of rounding.
+TEST(MultiDeviceFrame, EarlyTerminationBound) {
+  const Volume* v = test::cthead();
+  if (!v) GTEST_SKIP() << "CThead is not in ../shared/data";
+  RenderParams p = test::ctheadDvr(96, 96);
+  p.camera.elevationDeg = 90.0;
+  Raycaster one(test::pocl(), *v, VolumeStorage::Buffer);
+  RaycasterOptions o;
+  o.packets = false;
+  one.setOptions(o);
+  MultiDeviceRenderer split(contexts(2), *v);
+  EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 4);
+}
+
+TEST(MultiDeviceFrame, DeviceOverBudgetSaysWhichAndWhat) {
+  MultiDeviceOptions o;
+  o.budgetBytes = 40 * 36 * 2 * 5;  // 5 slices; each part needs 15 + its apron
+  try {
+    MultiDeviceRenderer split(contexts(2), ballVolume(), o);
+    FAIL() << "a part over the budget was accepted";
+  } catch (const Error& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("device 1 of 2"), std::string::npos) << m;
+    EXPECT_NE(m.find("slices 0 to 18"), std::string::npos) << m;  // 15 owned + apron 4
+    EXPECT_NE(m.find("budget"), std::string::npos) << m;
+    EXPECT_NE(m.find("--split"), std::string::npos) << m;
+  }
+}
+
+TEST(MultiDeviceFrame, OtherLightingIsRefused) {
+  MultiDeviceRenderer split(contexts(2), ballVolume());
+  RenderParams p = frame({Mode::Dvr, true, true}, View::Oblique, 16, 16);
+  p.lighting = Lighting::Shadows;
+  EXPECT_THROW(split.render(p), Error);
+}
+
+TEST(PartPlan, ContiguousProportionalWithAprons) {
+  auto r = planParts(30, {1.0, 1.0}, 4);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0].first, 0);
+  EXPECT_EQ(r[0].end, 15);
+  EXPECT_EQ(r[1].first, 15);
+  EXPECT_EQ(r[1].end, 30);
+  EXPECT_EQ(r[0].storedFirst, 0);
+  EXPECT_EQ(r[0].storedEnd, 19);
+  EXPECT_EQ(r[1].storedFirst, 11);
+  EXPECT_EQ(r[1].storedEnd, 30);
+  // By memory: a device with 3x the memory owns 3x the slices.
+  auto m = planParts(100, {3.0, 1.0}, 2);
+  EXPECT_EQ(m[0].end, 75);
+  EXPECT_EQ(m[1].end, 100);
+  // More devices than slices is refused; tiny shares still get a slice.
+  EXPECT_THROW(planParts(2, {1.0, 1.0, 1.0}, 2), Error);
+  auto t = planParts(5, {1000.0, 1.0, 1.0}, 2);
+  EXPECT_EQ(t[1].end - t[1].first, 1);
+  EXPECT_EQ(t[2].end - t[2].first, 1);
+  EXPECT_EQ(t[2].end, 5);
+}
+
+}  // namespace voxray
