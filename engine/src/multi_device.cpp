@@ -240,6 +240,8 @@ void MultiDeviceRenderer::render(const RenderParams& p, Image& out, MultiDeviceS
   std::vector<PartStats> partStats(m.parts.size());
   for (size_t k = 0; k < m.parts.size(); ++k) {
     Impl::Part& part = *m.parts[k];
+    // The volume's value range, found once by the first part (a pass over the whole volume).
+    if (k > 0 && !part.frame.valueRange) part.frame.valueRange = m.parts[0]->frame.valueRange;
     try {
       m.enqueue(part, int(k), p, variant);
     } catch (const Error& e) {

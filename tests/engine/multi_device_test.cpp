@@ -177,6 +177,19 @@ TEST(MultiDeviceFrame, EarlyTerminationBound) {
   EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 4);
 }
 
+// A CPU under PoCL splits into equal sub-devices (clCreateSubDevices); more parts than cores
+// fall back to contexts sharing the one device (3 and 4 parts above on a 2-core machine).
+TEST(MultiDeviceFrame, CpuSplitsIntoSubDevices) {
+  const DeviceInfo& whole = test::pocl().device();
+  if (whole.isGpu || whole.computeUnits < 2) GTEST_SKIP() << "not a CPU of 2 or more cores";
+  std::vector<ClContext*> c = contexts(2);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_NE(c[0]->device().name.find("(sub-device 1 of 2)"), std::string::npos)
+      << c[0]->device().name;
+  EXPECT_EQ(c[0]->device().computeUnits, whole.computeUnits / 2);
+  EXPECT_EQ(c[1]->device().computeUnits, whole.computeUnits / 2);
+}
+
 TEST(MultiDeviceFrame, DeviceOverBudgetSaysWhichAndWhat) {
   MultiDeviceOptions o;
   o.budgetBytes = 40 * 36 * 2 * 5;  // 5 slices; each part needs 15 + its apron
