@@ -101,6 +101,7 @@ int benchSplit(const BenchOptions& o) {
   MultiDeviceOptions mo;
   mo.emptySpaceSkipping = o.ess == "on";
   mo.budgetBytes = o.multi.budgetMib << 20;
+  mo.storage = parseStorage(o.storage);
   MultiDeviceRenderer r(contexts, v, mo);
   for (const auto& size : split(o.sizes))
     for (const auto& grad : split(o.gradients)) {

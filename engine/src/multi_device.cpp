@@ -149,8 +149,11 @@ MultiDeviceRenderer::MultiDeviceRenderer(const std::vector<ClContext*>& contexts
   std::vector<PartRange> ranges = planParts(volume.dims.z, weights, options.apron);
   for (size_t k = 0; k < contexts.size(); ++k) {
     ContextImpl& cl = contexts[k]->impl();
-    VolumeStorage s =
-        cl.info.isGpu && cl.info.imageSupport ? VolumeStorage::Image3d : VolumeStorage::Buffer;
+    VolumeStorage s = options.storage;
+    if (s == VolumeStorage::Auto)
+      s = cl.info.isGpu && cl.info.imageSupport ? VolumeStorage::Image3d : VolumeStorage::Buffer;
+    if (s == VolumeStorage::Image3d && !cl.info.imageSupport)
+      throw deviceError(cl.info.name + " has no image support: render with the buffer storage");
     impl_->parts.push_back(std::make_unique<Impl::Part>(cl, volume, ranges[k], s));
   }
   for (size_t k = 0; k < impl_->parts.size(); ++k) impl_->upload(*impl_->parts[k], int(k));

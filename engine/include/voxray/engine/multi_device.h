@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/volume_storage.h"
 #include "voxray/io/image.h"
 
 namespace voxray {
@@ -43,6 +44,8 @@ struct MultiDeviceOptions {
   // Bytes one device may hold for its slices (0: its largest allocation). Lower it to see
   // what a device too small for its range does (a test, a budget the user sets).
   size_t budgetBytes = 0;
+  // Auto: image3d_t on GPUs with image support, else a buffer (as the Raycaster's Auto).
+  VolumeStorage storage = VolumeStorage::Auto;
 };
 
 // Slices [first, end) a device owns and [storedFirst, storedEnd) it holds (apron included).
