@@ -66,12 +66,41 @@ struct MultiDeviceRenderer::Impl {
     cl::Buffer slabBuffer;
     cl::Image3D slabImage;
     EmptySpace space;
-    cl::Buffer colour, order;
+    cl::Buffer colour, order;  // on the device
+    // Their copies on the host, in pinned memory (CL_MEM_ALLOC_HOST_PTR, mapped once): a GPU
+    // copies into it at the bus's speed, where pageable memory goes through a staging copy.
+    cl::Buffer hostColour, hostOrder;
     size_t capacity = 0;  // pixels
-    PartImage image;
+    PartImage image;      // points into the mapped host buffers
     cl::Event done;
     Part(ContextImpl& c, const Volume& v, PartRange r, VolumeStorage s)
         : cl(c), range(r), frame(c, v, s) {}
+    ~Part() { unmap(); }
+    void unmap() {
+      try {
+        if (image.colour)
+          cl.queue.enqueueUnmapMemObject(hostColour, const_cast<float*>(image.colour));
+        if (image.order) cl.queue.enqueueUnmapMemObject(hostOrder, const_cast<float*>(image.order));
+        cl.queue.finish();
+      } catch (const cl::Error&) {
+        // the buffers go with the context; nothing else to do while tearing down
+      }
+      image = PartImage{};
+    }
+    void reserve(size_t pixels) {
+      if (pixels <= capacity) return;
+      unmap();
+      const size_t colourBytes = pixels * sizeof(cl_float4), orderBytes = pixels * sizeof(cl_float);
+      colour = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, colourBytes);
+      order = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, orderBytes);
+      hostColour = cl::Buffer(cl.context, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, colourBytes);
+      hostOrder = cl::Buffer(cl.context, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, orderBytes);
+      image.colour = static_cast<const float*>(
+          cl.queue.enqueueMapBuffer(hostColour, CL_TRUE, CL_MAP_READ, 0, colourBytes));
+      image.order = static_cast<const float*>(
+          cl.queue.enqueueMapBuffer(hostOrder, CL_TRUE, CL_MAP_READ, 0, orderBytes));
+      capacity = pixels;
+    }
   };
   const Volume& volume;
   MultiDeviceOptions opts;
@@ -184,15 +213,9 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
   const std::string options = "-cl-fast-relaxed-math " + switchOptions(sw, false);
   if (index == 0) variant = options;
   const size_t pixels = size_t(p.width) * size_t(p.height);
-  part.image.colour.resize(pixels * 4);
-  part.image.order.resize(pixels);
   cl::Kernel kernel = part.cl.kernel("multidev/raycast_part.cl", "raycast_part", options);
   clCall([&] {
-    if (pixels > part.capacity) {
-      part.colour = cl::Buffer(part.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
-      part.order = cl::Buffer(part.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float));
-      part.capacity = pixels;
-    }
+    part.reserve(pixels);
     f.uploadFrame(k);
     // mip reads the cells' min/max directly (as the one-ray-per-work-item raycaster).
     if (opts.emptySpaceSkipping && p.mode != Mode::Mip)
@@ -224,9 +247,9 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
     cl::CommandQueue& q = part.cl.queue;
     q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local, nullptr, &part.done);
     q.enqueueReadBuffer(part.colour, CL_FALSE, 0, pixels * sizeof(cl_float4),
-                        part.image.colour.data());
+                        const_cast<float*>(part.image.colour));
     q.enqueueReadBuffer(part.order, CL_FALSE, 0, pixels * sizeof(cl_float),
-                        part.image.order.data());
+                        const_cast<float*>(part.image.order));
     q.flush();  // start now, while the next device is set up
     return 0;
   });

@@ -25,6 +25,11 @@ void compositeParts(Mode mode, const std::vector<const PartImage*>& parts, int w
   out.height = height;
   out.rgba.resize(size_t(width) * size_t(height) * 4);
   const size_t n = std::min(parts.size(), size_t(kMaxParts));
+  std::array<const float*, kMaxParts> colour{}, order{};
+  for (size_t k = 0; k < n; ++k) {
+    colour[k] = parts[k]->colour;
+    order[k] = parts[k]->order;
+  }
   const int bandRows = 32;  // bands of rows, a few per thread
   parallelFor(size_t((height + bandRows - 1) / bandRows), [&](size_t band) {
     std::array<size_t, kMaxParts> idx{};
@@ -32,14 +37,17 @@ void compositeParts(Mode mode, const std::vector<const PartImage*>& parts, int w
     for (size_t px = size_t(y0) * size_t(width); px < size_t(y1) * size_t(width); ++px) {
       glm::vec3 rgb = background;
       if (mode == Mode::Dvr) {
-        // Front to back: the parts by the index their range starts at along this ray.
-        for (size_t k = 0; k < n; ++k) idx[k] = k;
-        std::sort(idx.begin(), idx.begin() + long(n),
-                  [&](size_t a, size_t b) { return parts[a]->order[px] < parts[b]->order[px]; });
+        // Front to back: the parts by the index their range starts at along this ray
+        // (insertion sort: a handful of parts).
+        for (size_t k = 0; k < n; ++k) {
+          size_t j = k;
+          for (; j > 0 && order[idx[j - 1]][px] > order[k][px]; --j) idx[j] = idx[j - 1];
+          idx[j] = k;
+        }
         glm::vec3 acc(0.0f);
         float alpha = 0.0f;
         for (size_t k = 0; k < n && alpha < earlyTermination; ++k) {
-          const float* c = &parts[idx[k]]->colour[px * 4];
+          const float* c = colour[idx[k]] + px * 4;
           acc += (1.0f - alpha) * glm::vec3(c[0], c[1], c[2]);
           alpha += (1.0f - alpha) * c[3];
         }
@@ -48,15 +56,15 @@ void compositeParts(Mode mode, const std::vector<const PartImage*>& parts, int w
         float best = 0.0f;
         const float* hit = nullptr;
         for (size_t k = 0; k < n; ++k)
-          if (parts[k]->colour[px * 4 + 3] > 0.0f && (!hit || parts[k]->order[px] < best)) {
-            hit = &parts[k]->colour[px * 4];
-            best = parts[k]->order[px];
+          if (colour[k][px * 4 + 3] > 0.0f && (!hit || order[k][px] < best)) {
+            hit = colour[k] + px * 4;
+            best = order[k][px];
           }
         if (hit) rgb = glm::vec3(hit[0], hit[1], hit[2]);
       } else {
         float grey = -1.0f;
         for (size_t k = 0; k < n; ++k)
-          if (parts[k]->colour[px * 4 + 3] > 0.0f) grey = std::max(grey, parts[k]->colour[px * 4]);
+          if (colour[k][px * 4 + 3] > 0.0f) grey = std::max(grey, colour[k][px * 4]);
         if (grey >= 0.0f) rgb = glm::vec3(grey);
       }
       uint8_t* o = &out.rgba[px * 4];

@@ -11,10 +11,10 @@ namespace voxray {
 
 // One device's partial image (kernels/multidev/raycast_part.cl): per pixel premultiplied
 // RGBA (4 floats) and the index its range starts at along the ray (dvr) or of its hit (iso),
-// which orders the parts per pixel.
+// which orders the parts per pixel. The memory is the caller's (pinned, mapped buffers).
 struct PartImage {
-  std::vector<float> colour;
-  std::vector<float> order;
+  const float* colour = nullptr;
+  const float* order = nullptr;
 };
 
 // Composites PARTS (all WIDTH x HEIGHT) into OUT: dvr "over" front to back in each pixel's

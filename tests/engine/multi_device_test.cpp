@@ -153,7 +153,8 @@ INSTANTIATE_TEST_SUITE_P(Parts, MultiDevice,
                                   caseName(std::get<1>(info.param));
                          });
 
-// Jitter and an orthographic camera: the per-pixel offsets are the whole ray's in every part.
+// Jitter, an orthographic camera and a clip box: the per-pixel offsets are the whole ray's in
+// every part.
 TEST(MultiDeviceFrame, JitterAndOrthographic) {
   RenderParams p = frame({Mode::Dvr, true, true}, View::Oblique, 64, 48);
   p.jitter = true;
@@ -165,6 +166,15 @@ TEST(MultiDeviceFrame, JitterAndOrthographic) {
   EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1);
   p.camera.projection = Projection::Orthographic;
   p.camera.elevationDeg = 90.0;  // rays exactly along z
+  EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1);
+  // A clip box whose z faces cut the first and last parts: the rays' entry and exit are the
+  // clip box's in every part.
+  p.clip.lo = {0.1, 0.0, 0.3};
+  p.clip.hi = {1.0, 0.8, 0.7};
+  p.camera.elevationDeg = 40.0;
+  EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1);
+  p.mode = Mode::Iso;
+  p.isoLo = 0.0;
   EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1);
 }
 
