@@ -33,7 +33,16 @@ std::vector<std::unique_ptr<ClContext>> MultiDeviceOption::contexts(
                      std::to_string(list.size()) +
                      " devices of --devices: give one part per device, or leave --split out");
   std::vector<std::unique_ptr<ClContext>> out;
-  for (const std::string& d : list) out.push_back(std::make_unique<ClContext>(d));
+  for (const std::string& d : list) {
+    try {
+      out.push_back(std::make_unique<ClContext>(d));
+    } catch (const Error& e) {
+      // ClContext names --device; the user gave this one in --devices.
+      std::string m = e.what();
+      if (m.rfind("--device: ", 0) == 0) m = m.substr(10);
+      throw Error(e.kind(), "--devices " + devices + ": " + m);
+    }
+  }
   return out;
 }
 
