@@ -4,7 +4,10 @@
 // devices: equal ranges, equal work for a view along z); each device holds only its range and
 // an apron, and marches each pixel's ray over the samples of its range only
 // (kernels/multidev/raycast_part.cl): the samples of the one-device frame (the ray's global
-// entry, step and jitter), each taken by exactly one device. The host composites the partial
+// entry, step and jitter), each taken by exactly one device: the range's planes z = first and
+// z = end (voxel coordinates, slice centres at integers) cut each ray into index ranges,
+// half-open along the ray (a sample on a plane belongs to the range the ray enters there),
+// computed alike by both neighbours of a plane. The host composites the partial
 // images per pixel in the order the ray meets the ranges: "over" of premultiplied colour for
 // dvr, max for mip, the nearest hit for iso.
 //
