@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 
 #include "device_frame.h"
@@ -202,6 +203,18 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
                                         std::string& variant) {
   DeviceFrame& f = part.frame;
   f.updateSetup(p);
+  // A sample a range takes may lie up to a step beyond its plane (dvr's first and last
+  // segments, iso's refinement from the sample before); its stencil reaches 2 slices
+  // further. Beyond the apron it would read the clamped edge: refuse rather than show that.
+  const double stepSlices = f.setup.stepMm / volume.spacingMm.z;
+  if (stepSlices > double(opts.apron - 2) + 1e-6) {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+                  "the step (%.3g mm, %.3g slices) is longer than the %d slices a frame over "
+                  "several devices allows with its apron of %d",
+                  f.setup.stepMm, stepSlices, opts.apron - 2, opts.apron);
+    throw inputError(std::string(text) + ": render with a finer --step");
+  }
   KernelFacts facts;
   facts.emptySpaceSkipping = opts.emptySpaceSkipping;
   facts.storageImage = f.storage == VolumeStorage::Image3d;
@@ -271,6 +284,7 @@ void MultiDeviceRenderer::render(const RenderParams& p, Image& out, MultiDeviceS
     try {
       m.enqueue(part, int(k), p, variant);
     } catch (const Error& e) {
+      if (e.kind() == Error::Kind::Input) throw;  // the frame's, not this device's
       throw deviceError("device " + std::to_string(k + 1) + " of " +
                         std::to_string(m.parts.size()) + " (" + part.cl.info.name +
                         "): " + e.what());

@@ -215,6 +215,23 @@ TEST(MultiDeviceFrame, CoarseStepWithinApron) {
     }
 }
 
+// A step longer than the apron holds (3.1 slices; the apron of 4 holds 2) is refused, not
+// rendered with reads clamped at the stored edge (136 levels off with an apron of 2 in the
+// case above).
+TEST(MultiDeviceFrame, StepBeyondApronIsRefused) {
+  MultiDeviceRenderer split(contexts(2), ballVolume());
+  RenderParams p = frame({Mode::Iso, true, true}, View::Oblique, 16, 16);
+  p.stepMm = 4.0;
+  try {
+    split.render(p);
+    FAIL() << "a step beyond the apron was rendered";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("finer --step"), std::string::npos) << e.what();
+  }
+  p.stepMm = 2.6;  // 2 slices: renders
+  EXPECT_NO_THROW(split.render(p));
+}
+
 // The default early termination (0.99): a part behind a ray's stopping point adds at most
 // 1 - 0.99 of a colour (2.55 levels), plus a level of rounding.
 TEST(MultiDeviceFrame, EarlyTerminationBound) {

@@ -41,8 +41,8 @@ struct MultiDeviceOptions {
   // Slices each device stores beyond its range on either side. The stencils read floor(z) - 1
   // to floor(z) + 2 (slab_plan.h's apron of 2), and a sample the index rule gives a range
   // may lie up to one step (iso's refinement: from the sample before) beyond its plane: 4
-  // keeps every read exact for steps up to 2 voxels along z; larger steps (drag frames) read
-  // clamped at the stored edge.
+  // keeps every read exact for steps up to 2 slices; render throws Error (Input) for a
+  // longer step (it would read the clamped edge of the stored slices).
   int apron = 4;
   // Bytes one device may hold for its slices (0: its largest allocation). Lower it to see
   // what a device too small for its range does (a test, a budget the user sets).
