@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "bench_drag.h"
+#include "bench_multidev.h"
 #include "bench_plot.h"
 #include "bench_run.h"
 #include "bench_seed.h"
@@ -19,6 +20,7 @@
 #include "commands.h"
 #include "input_options.h"
 #include "labels_option.h"
+#include "multi_device_option.h"
 #include "overlay_option.h"
 #include "quality_choice.h"
 #include "render_flags.h"
@@ -50,6 +52,7 @@ struct BenchOptions {
   CinematicFlags cinematic;
   LabelsOption labels;
   OverlayOption overlay;
+  MultiDeviceOption multi;  // --split, --devices (issue 38)
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -80,6 +83,41 @@ RaycasterOptions raycasterOptions(const BenchOptions& o) {
     r.localY = y;
   }
   return r;
+}
+
+// --split / --devices: each size (and gradient) over the orbit on several devices at once.
+int benchSplit(const BenchOptions& o) {
+  if (o.seedTable || o.stallRepeats > 0 || o.dragFrames > 0 || !o.labels.raw.empty() ||
+      !o.labels.file.empty() || !o.overlay.path.empty())
+    throw inputError(
+        "--split/--devices bench plain frames: leave out --seed-table, --stall, --drag, "
+        "--labels-raw and --overlay");
+  Volume v = o.input.load();
+  std::string name =
+      o.input.input.empty() ? "phantom" : std::filesystem::path(o.input.input).filename().string();
+  auto owned = o.multi.contexts(o.device);
+  std::vector<ClContext*> contexts;
+  for (auto& c : owned) contexts.push_back(c.get());
+  MultiDeviceOptions mo;
+  mo.emptySpaceSkipping = o.ess == "on";
+  mo.budgetBytes = o.multi.budgetMib << 20;
+  mo.storage = parseStorage(o.storage);
+  MultiDeviceRenderer r(contexts, v, mo);
+  for (const auto& size : split(o.sizes))
+    for (const auto& grad : split(o.gradients)) {
+      RenderParams p = o.flags.params();
+      findRenderParamSpec("size").parse(p, size);
+      p.gradient = parseGradient(grad);
+      const glm::ivec2 view(p.width, p.height);
+      if (!o.quality.empty()) p = settledFrame(p, o.quality, {0, 0}, view, v.minSpacingMm());
+      MultiDeviceRow row = benchMultiDevice(r, p, o.run);
+      row.input = name;
+      printMultiDeviceRow(row, o.json, std::cout);
+    }
+  if (!o.json)
+    std::printf("%d frames per case over a 360-degree orbit after a warm-up; medians\n",
+                o.run.frames);
+  return 0;
 }
 
 }  // namespace
@@ -153,6 +191,7 @@ Run addBenchCommand(CLI::App& app) {
   o->cinematic.add(*cmd);
   o->labels.add(*cmd);
   o->overlay.add(*cmd);
+  o->multi.add(*cmd);
   return [o, sizesOption, gradientsOption] {
     if (o->stallRepeats > 0 && o->quality.empty())
       throw inputError("--stall needs --quality (the sharp frame's preset, e.g. balanced)");
@@ -161,6 +200,7 @@ Run addBenchCommand(CLI::App& app) {
     BenchFormat f = o->json ? BenchFormat::Json : o->csv ? BenchFormat::Csv : BenchFormat::Text;
     o->run.countSamples = !o->noCount;
     o->run.orbit = o->orbit == "elevation" ? Orbit::Elevation : Orbit::Azimuth;
+    if (o->multi.active()) return benchSplit(*o);
     ClContext ctx(o->device);
     std::vector<std::string> kernels = {o->kernel};
     if (o->kernel == "both") kernels = {"specialised", "uber"};

@@ -107,7 +107,43 @@ ClContext::ClContext(const std::string& selector) : impl_(std::make_unique<Conte
   });
 }
 
+ClContext::ClContext(Made) : impl_(std::make_unique<ContextImpl>()) {}
+
 ClContext::~ClContext() = default;
+
+std::vector<std::unique_ptr<ClContext>> ClContext::subDevices(const std::string& selector,
+                                                              int parts) {
+  ClContext parent(selector);
+  const DeviceInfo& info = parent.device();
+  std::vector<std::unique_ptr<ClContext>> out;
+  if (parts < 1 || info.computeUnits < unsigned(parts)) return out;
+  std::vector<cl::Device> subs;
+  const cl_device_partition_property props[] = {
+      CL_DEVICE_PARTITION_EQUALLY,
+      cl_device_partition_property(info.computeUnits / unsigned(parts)), 0};
+  try {
+    parent.impl_->device.createSubDevices(props, &subs);
+  } catch (const cl::Error&) {
+    return out;  // the device does not partition (most GPUs): the caller uses whole devices
+  }
+  if (subs.size() < size_t(parts)) return out;
+  clCall([&] {
+    for (int k = 0; k < parts; ++k) {
+      auto c = std::unique_ptr<ClContext>(new ClContext(Made{}));
+      c->impl_->info = info;
+      c->impl_->info.name = info.name + " (sub-device " + std::to_string(k + 1) + " of " +
+                            std::to_string(parts) + ")";
+      c->impl_->info.computeUnits = subs[size_t(k)].getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+      c->impl_->device = subs[size_t(k)];
+      c->impl_->context = cl::Context(subs[size_t(k)]);
+      c->impl_->queue =
+          cl::CommandQueue(c->impl_->context, subs[size_t(k)], CL_QUEUE_PROFILING_ENABLE);
+      out.push_back(std::move(c));
+    }
+    return 0;
+  });
+  return out;
+}
 
 const DeviceInfo& ClContext::device() const { return impl_->info; }
 

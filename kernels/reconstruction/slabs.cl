@@ -16,7 +16,15 @@
 
 #include "variant.cl"
 
-#if SLABS == 1
+#if SLABS == 1 && defined(VOXRAY_PART)
+// One part of a multi-device frame (multidev/raycast_part.cl): `vol` holds slices [part.x,
+// part.x + part.y) of the volume; z shifts by an integer as for slabs below.
+#define VOLUME_ARG SLAB_TYPE vol, int2 part
+#define VOLUME vol, part
+#define RETURN_FROM_SLAB(FN, P, p)                                         \
+  return FN(vol, (int4)((P)->dims.x, (P)->dims.y, part.y, (P)->dims.w), P, \
+            (float3)((p).x, (p).y, (p).z - (float)part.x))
+#elif SLABS == 1
 #define VOLUME_ARG SLAB_TYPE vol
 #define VOLUME vol
 // Returns FN(volume, its dims, P, p): FN reads one slab, here the whole volume.

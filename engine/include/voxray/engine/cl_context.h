@@ -46,7 +46,14 @@ class ClContext {
   void prebuild(const std::string& sourceName, const std::string& options);
   int programsBuilt() const;  // programs compiled so far (each source and options once)
 
+  // Contexts on PARTS equal sub-devices of the device SELECTOR names (clCreateSubDevices,
+  // CL_DEVICE_PARTITION_EQUALLY: PoCL's CPU split by cores), for one frame over several
+  // devices (voxray/engine/multi_device.h). Empty when the device cannot be split into PARTS.
+  static std::vector<std::unique_ptr<ClContext>> subDevices(const std::string& selector, int parts);
+
  private:
+  struct Made {};  // subDevices() fills impl_ itself
+  explicit ClContext(Made);
   std::unique_ptr<ContextImpl> impl_;
 };
 

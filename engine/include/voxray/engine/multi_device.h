@@ -1,0 +1,110 @@
+#pragma once
+// One frame on several OpenCL devices, sort-last (issue 38, part 4). The volume is split along
+// z into one range of slices per device, in proportion to the memory each may use (equal
+// devices: equal ranges, equal work for a view along z); each device holds only its range and
+// an apron, and marches each pixel's ray over the samples of its range only
+// (kernels/multidev/raycast_part.cl): the samples of the one-device frame (the ray's global
+// entry, step and jitter), each taken by exactly one device: the range's planes z = first and
+// z = end (voxel coordinates, slice centres at integers) cut each ray into index ranges,
+// half-open along the ray (a sample on a plane belongs to the range the ray enters there),
+// computed alike by both neighbours of a plane. The host composites the partial
+// images per pixel in the order the ray meets the ranges: "over" of premultiplied colour for
+// dvr, max for mip, the nearest hit for iso.
+//
+// Equal to one device's frame (Raycaster with packets off, the same scalar march) within one
+// 8-bit level per channel, except where dvr's early termination cuts a ray: a device whose
+// range starts partway along a ray does not know the opacity in front of it, so it marches on
+// past the point where the one-device ray stopped. What it adds there is weighted by the
+// transmittance left at that point, at most 1 - earlyTermination (the composite stops adding
+// ranges once the sum reaches earlyTermination), so dvr differs by at most
+// 1 - earlyTermination per channel (2.55 levels at the default 0.99) plus one level.
+//
+// Phong lighting; dvr, iso and mip; empty-space skipping, jitter, every gradient and
+// interpolation. Adaptive steps are off in the parts (segments grouped from a range's start
+// would differ from the whole ray's); labels, an overlay, shadows, ao and cinematic are the
+// one-device Raycaster's (render throws Error (Input) for the lighting).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "voxray/engine/render_params.h"
+#include "voxray/engine/volume_storage.h"
+#include "voxray/io/image.h"
+
+namespace voxray {
+
+struct Volume;
+class ClContext;
+
+struct MultiDeviceOptions {
+  bool emptySpaceSkipping = true;
+  // Slices each device stores beyond its range on either side. The stencils read floor(z) - 1
+  // to floor(z) + 2 (slab_plan.h's apron of 2), and a sample the index rule gives a range
+  // may lie up to one step (iso's refinement: from the sample before) beyond its plane: 4
+  // keeps every read exact for steps up to 2 slices; render throws Error (Input) for a
+  // longer step (it would read the clamped edge of the stored slices).
+  int apron = 4;
+  // Bytes one device may hold for its slices (0: its largest allocation). Lower it to see
+  // what a device too small for its range does (a test, a budget the user sets).
+  size_t budgetBytes = 0;
+  // Auto: image3d_t on GPUs with image support, else a buffer (as the Raycaster's Auto).
+  VolumeStorage storage = VolumeStorage::Auto;
+};
+
+// Slices [first, end) a device owns and [storedFirst, storedEnd) it holds (apron included).
+struct PartRange {
+  int first = 0, end = 0;
+  int storedFirst = 0, storedEnd = 0;
+};
+
+// DIMZ slices into weights.size() contiguous ranges in proportion to WEIGHTS (each > 0), each
+// at least one slice, with APRON slices more stored on each side (clamped to the volume).
+// Throws Error (Input) when there are more ranges than slices or no weights.
+std::vector<PartRange> planParts(int dimZ, const std::vector<double>& weights, int apron);
+
+struct PartStats {
+  std::string device;  // its name
+  PartRange range;
+  double kernelMs = 0.0;  // the device's profiled kernel time
+  double readyMs = 0.0;   // from the frame's start until its image was on the host
+};
+
+struct MultiDeviceStats {
+  std::vector<PartStats> parts;
+  double compositeMs = 0.0;  // the host's composite alone
+  double totalMs = 0.0;
+  std::string variant;  // the parts' -D options
+};
+
+class MultiDeviceRenderer {
+ public:
+  // One part per context (two may share a device); the contexts and VOLUME must outlive the
+  // renderer. Uploads each range. Throws Error (Device) naming the device, its range and the
+  // bytes when a range exceeds the device's largest allocation (or 3D image) or the budget.
+  MultiDeviceRenderer(const std::vector<ClContext*>& contexts, const Volume& volume,
+                      const MultiDeviceOptions& options = {});
+  ~MultiDeviceRenderer();
+  MultiDeviceRenderer(const MultiDeviceRenderer&) = delete;
+  MultiDeviceRenderer& operator=(const MultiDeviceRenderer&) = delete;
+
+  // The frame on every device at once, then composited into OUT (RGBA8).
+  void render(const RenderParams& params, Image& out, MultiDeviceStats* stats = nullptr);
+  Image render(const RenderParams& params, MultiDeviceStats* stats = nullptr) {
+    Image out;
+    render(params, out, stats);
+    return out;
+  }
+  int partCount() const;
+  std::vector<PartRange> ranges() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Contexts for PARTS parts on the device SELECTOR names (ClContext's selectors): its equal
+// sub-devices where it can be split so (a CPU under PoCL), else PARTS contexts on the one
+// device (each part then shares it).
+std::vector<std::unique_ptr<ClContext>> splitDevice(const std::string& selector, int parts);
+
+}  // namespace voxray

@@ -1,0 +1,27 @@
+#pragma once
+// The host's half of a sort-last frame (multi_device.h): the devices' partial images into one.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "voxray/engine/render_params.h"
+#include "voxray/io/image.h"
+
+namespace voxray {
+
+// One device's partial image (kernels/multidev/raycast_part.cl): per pixel premultiplied
+// RGBA (4 floats) and the index its range starts at along the ray (dvr) or of its hit (iso),
+// which orders the parts per pixel. The memory is the caller's (pinned, mapped buffers).
+struct PartImage {
+  const float* colour = nullptr;
+  const float* order = nullptr;
+};
+
+// Composites PARTS (all WIDTH x HEIGHT) into OUT: dvr "over" front to back in each pixel's
+// order, stopping once the opacity reaches EARLYTERMINATION as the one-device ray does, then
+// the background behind; iso the hit of the lowest index; mip the maximum, the background
+// where no part's ray met the clip box. Rounds as the kernels' to_rgba8 (to nearest even).
+void compositeParts(Mode mode, const std::vector<const PartImage*>& parts, int width, int height,
+                    glm::vec3 background, float earlyTermination, Image& out);
+
+}  // namespace voxray
