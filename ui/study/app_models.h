@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include "crosshair_model.h"
+#include "fusion.h"
 #include "lighting_figures.h"
 #include "measurement_model.h"
 
@@ -27,6 +28,7 @@ struct AppModels {
   SegmentationModel segmentation;  // the segment editor's; a session keeps it too
   SegmentToolModel segmentTools;   // the editor's tool and its settings (not saved)
   TimePlayer player;               // a 4D series' play rate and state (the document: its point)
+  FusionModel fusion;              // issue 36: a second volume over the slices and in 3D
   LightingFigures lighting;        // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "voxray/engine/overlay.h"
@@ -32,6 +33,17 @@ std::vector<float> fusionValues(const Volume& overlay, const PlaneGrid& plane) {
   if (overlay.suv)
     for (float& v : values) v = float(overlay.suv->toSuv(v));  // NaN stays NaN
   return values;
+}
+
+std::string fusionProbeText(const Volume& overlay, const glm::dvec3& patientMm) {
+  PlaneGrid g;
+  g.originMm = patientMm;
+  g.size = {1, 1};
+  const float v = fusionValues(overlay, g)[0];
+  if (std::isnan(v)) return "overlay: outside";
+  char text[64];
+  std::snprintf(text, sizeof text, "overlay %.4g ", double(v));
+  return text + fusionUnit(overlay);
 }
 
 namespace {

@@ -44,6 +44,9 @@ glm::dvec3 fusionColour(const FusionSettings& s, const Volume& overlay, double v
 // with alpha = opacity where the value is above LO, transparent elsewhere (below the window,
 // outside the overlay, or S off). Throws Error (Input) for an unknown map or LO >= HI.
 Image fusionImage(const Volume& overlay, const PlaneGrid& plane, const FusionSettings& s);
+// The cursor readout's part for the overlay at PATIENTMM: "overlay 3.214 SUVbw", or
+// "overlay: outside" beyond its box.
+std::string fusionProbeText(const Volume& overlay, const glm::dvec3& patientMm);
 // The 3D view's table for the overlay (physical units), as voxray-cli render --overlay-window.
 TransferFunction fusionTable(const Volume& overlay, const FusionSettings& s);
 // A first window: SUV 0 ... 6 for a PET with an SUV scale (a common reading window; the
