@@ -7,6 +7,7 @@
 
 #include "comparison_model.h"
 #include "point_alignment.h"
+#include "session.h"
 #include "slice_geometry.h"
 #include "voxray/io/error.h"
 
@@ -251,6 +252,32 @@ TEST(Comparison, AlignByPairsLinksAndSwapInvertsTheTransform) {
   m.swap();
   EXPECT_EQ(m.fixed().frameOfReferenceUid, "1.2.prior");
   EXPECT_LE(glm::length(m.movingToFixedVoxel(v) - w), 1e-9);  // the same pair, sides traded
+}
+
+TEST(Comparison, SessionKeepsThePriorAndItsTransformAndRefusesANonRigidOne) {
+  Session s;
+  s.comparison = Session::Comparison{"/data/prior", kMovingToFixed};
+  const std::string json = sessionToJson(s, "/tmp/compare-session.json");
+  const SessionRead r = sessionFromJson(json, "/tmp/compare-session.json");
+  ASSERT_TRUE(r.session.comparison);
+  EXPECT_EQ(r.session.comparison->priorPath, "/data/prior");
+  ASSERT_TRUE(r.session.comparison->movingToFixed);
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row)  // written with JSON's shortest round-trip doubles
+      EXPECT_EQ((*r.session.comparison->movingToFixed)[c][row], kMovingToFixed[c][row]);
+  EXPECT_TRUE(r.warnings.empty());
+
+  glm::dmat4 scaled = kMovingToFixed;
+  scaled[0] *= 1.01;  // 1 % longer along one axis: no rigid transform
+  s.comparison->movingToFixed = scaled;
+  try {
+    sessionFromJson(sessionToJson(s, "/tmp/compare-session.json"), "/tmp/compare-session.json");
+    FAIL() << "a scaled transform was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("comparison.moving-to-fixed"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("not rigid"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // overlay opened through the loader without a shared Frame of Reference is shown and the
 // status bar says so; in compare mode, scrolling the left column moves the right one to the
 // same patient z (through a non-trivial alignment), W/L follows only while its box is ticked,
-// and the swap and flicker keys trade and alternate the columns.
+// and the swap and flicker keys trade and alternate the columns. The 3D view raycasts the
+// overlay with the volume (red where the cube is) and drops it when switched off.
 #include <QCheckBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -113,6 +114,47 @@ class CompareTest : public QObject {
     axial.grab();  // paints: the readout is the painted one
     QVERIFY2(axial.cursorReadout().contains("overlay 1000 Bq/mL"),
              qPrintable(axial.cursorReadout()));
+  }
+
+  void fused3DFrameShowsTheOverlay() {
+    AppModels& m = *fixture_.models;
+    MainWindow& w = *fixture_.window;
+    m.render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Dvr; });
+    const QImage before = test::waitFullFrame(w);
+    // A cube below the head (inferior: -z in LPS), beside it in the default camera's picture,
+    // opaque red (rainbow at its end, opacity 1 per step).
+    const glm::dvec3 centre = voxelToPatientMm(*m.document.volume(), m.crosshair.centre());
+    m.fusion.setOverlay(cube(centre + glm::dvec3(0.0, 0.0, -105.0)), "cube",
+                        m.document.volume().get());
+    FusionSettings s = m.fusion.settings();
+    s.colormap = "rainbow";
+    s.lo = 0.0;
+    s.hi = 500.0;
+    s.opacity = 1.0;
+    m.fusion.setSettings(s);
+    // A frame asked for before the overlay (the mode change's) may still arrive first: the
+    // overlay shows within a few full frames.
+    auto redPixels = [](const QImage& img) {
+      int n = 0;
+      for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+          const QColor c(img.pixel(x, y));
+          n += c.red() > 150 && c.green() < 60 && c.blue() < 60;
+        }
+      return n;
+    };
+    QImage fused;
+    int red = 0;
+    for (int frames = 0; frames < 10 && red <= 50; ++frames)
+      red = redPixels(fused = test::waitFullFrame(w));
+    QVERIFY2(red > 50, qPrintable(QString("%1 red pixels").arg(red)));
+    QVERIFY(test::differingPixels(before, fused) >= red);
+    // Off again: the frame without it, pixel for pixel.
+    s.on = false;
+    m.fusion.setSettings(s);
+    QImage off = test::waitFullFrame(w);
+    for (int frames = 0; frames < 10 && redPixels(off) > 0; ++frames) off = test::waitFullFrame(w);
+    QCOMPARE(test::differingPixels(before, off), 0);
   }
 
   void overlayOpenedWithoutSharedFrameOfReferenceSaysSo() {

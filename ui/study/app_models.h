@@ -29,7 +29,10 @@ struct AppModels {
   SegmentToolModel segmentTools;   // the editor's tool and its settings (not saved)
   TimePlayer player;               // a 4D series' play rate and state (the document: its point)
   FusionModel fusion;              // issue 36: a second volume over the slices and in 3D
-  LightingFigures lighting;        // each lighting model's cost and error on this scene
+  // Compare (issue 36): the prior beside the study and its alignment, for a session to keep;
+  // a session read sets it and the window opens the prior (none: no comparison).
+  std::optional<Session::Comparison> comparison;
+  LightingFigures lighting;  // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;
   // While a volume whose values are not HU is open (value_look.h): the user's HU look

@@ -83,7 +83,7 @@ TransferFunction fusionTable(const Volume& overlay, const FusionSettings& s) {
 FusionSettings defaultFusion(const Volume& overlay) {
   FusionSettings s;
   if (overlay.suv) {
-    s.lo = 0.0;
+    s.lo = 1.0;
     s.hi = 6.0;
     return s;
   }

@@ -49,8 +49,9 @@ Image fusionImage(const Volume& overlay, const PlaneGrid& plane, const FusionSet
 std::string fusionProbeText(const Volume& overlay, const glm::dvec3& patientMm);
 // The 3D view's table for the overlay (physical units), as voxray-cli render --overlay-window.
 TransferFunction fusionTable(const Volume& overlay, const FusionSettings& s);
-// A first window: SUV 0 ... 6 for a PET with an SUV scale (a common reading window; the
-// sphere phantom's 5.x SUV sits in it), else the upper nine tenths of the stored range.
+// A first window: SUV 1 ... 6 for a PET with an SUV scale (uptake below SUV 1, most of the
+// body's background, left transparent; the sphere phantom's 6.6 at the map's end), else
+// the upper nine tenths of the stored range.
 FusionSettings defaultFusion(const Volume& overlay);
 
 // The overlay of one window: its volume, where it came from and how it is shown.

@@ -152,6 +152,10 @@ QString CompareView::statusText() const {
 }
 
 void CompareView::refreshStatus() {
+  // The session keeps the alignment with the prior's path (set by the window that opened it).
+  if (study_.comparison)
+    study_.comparison->movingToFixed =
+        comparison_.aligned() ? std::optional(comparison_.movingToFixed()) : std::nullopt;
   status_->setText(statusText());
   emit statusChanged(status_->text());
 }

@@ -64,10 +64,15 @@ void MainWindow::openOverlay(const std::string& input, const LoadOptions& option
 void MainWindow::wireCompare() {
   priorLoader_ = new LoadController(this);
   connect(priorLoader_, &LoadController::loaded, this,
-          [this](VolumeSeries series, const QString& name, const QString&) {
+          [this](VolumeSeries series, const QString& name, const QString& input) {
             if (series.empty()) return;
+            // A session's alignment of this prior comes back after setPrior (which resets it).
+            const auto saved = models_.comparison;
             setCompareMode(true);
+            models_.comparison = Session::Comparison{input.toStdString(), std::nullopt};
             compare_->setPrior(series.front(), name);  // a 4D prior: its first time point
+            if (saved && saved->priorPath == input.toStdString() && saved->movingToFixed)
+              compare_->comparison().setMovingToFixed(*saved->movingToFixed);  // checked rigid
             statusBar()->showMessage(compare_->statusText(), 30000);
           });
   connect(priorLoader_, &LoadController::failed, this,
@@ -94,6 +99,14 @@ void MainWindow::setCompareMode(bool on) {
 
 void MainWindow::addMultiVolumeActions(QMenu* file, QMenu* view) {
   if (file) {
+    // (Here, not in wireCompare: the session actions exist once the menus are built.) A
+    // session with a prior opens it beside the study, with its alignment.
+    connect(sessions_, &SessionActions::sessionShown, this, [this] {
+      if (models_.comparison && !models_.comparison->priorPath.empty())
+        openPrior(models_.comparison->priorPath);
+      else
+        setCompareMode(false);
+    });
     file->addAction("Open o&verlay volume…", this,
                     [this] {
                       const std::string input = askVolumeInput(this, "Open overlay volume");
