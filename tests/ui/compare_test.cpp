@@ -8,6 +8,7 @@
 #include <QCheckBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -15,6 +16,7 @@
 
 #include "compare_view.h"
 #include "fusion_panel.h"
+#include "session_state.h"
 #include "slice_geometry.h"
 #include "slice_view.h"
 #include "voxray/io/phantom_series.h"
@@ -170,8 +172,11 @@ class CompareTest : public QObject {
     // A window in SUV from the panel reaches the model; a reversed one is refused there.
     fixture_.window->fusionPanel().hiBox()->setValue(4.0);
     QCOMPARE(fixture_.models->fusion.settings().hi, 4.0);
+    QCOMPARE(fixture_.models->fusion.settings().lo, 1.0);  // a PET starts at SUV 1 ... 6
     fixture_.window->fusionPanel().loBox()->setValue(5.0);
-    QCOMPARE(fixture_.models->fusion.settings().lo, 0.0);
+    QCOMPARE(fixture_.models->fusion.settings().lo, 1.0);
+    const QString said = fixture_.window->fusionPanel().findChild<QLabel*>("fusionError")->text();
+    QVERIFY2(said.contains("LO must be below HI"), qPrintable(said));
   }
 
   void scrollingLeftColumnMovesRightToSamePatientZ() {
@@ -211,6 +216,31 @@ class CompareTest : public QObject {
     QApplication::sendEvent(&c->fixedView(), &zoom);
     QVERIFY(c->fixedView().zoom() > 1.0);
     QCOMPARE(c->movingView().zoom(), c->fixedView().zoom());
+  }
+
+  void priorAndAlignmentAreKeptBySessions() {
+    AppModels& m = *fixture_.models;
+    MainWindow& w = *fixture_.window;
+    const std::string dir = (tmp_.path() + "/prior-pet").toStdString();
+    writePetSpherePhantom(dir, PetSpherePhantom{});
+    w.openPrior(dir);
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareView() && w.compareView()->hasPrior(), 60000);
+    QVERIFY(w.compareView()->isVisible());
+    glm::dmat4 t(turnAboutZ(-4.0));
+    t[3] = glm::dvec4(1.5, 2.0, -3.0, 1.0);
+    w.compareView()->comparison().setMovingToFixed(t);
+    const Session saved = sessionFromModels(m, {128, 96}, "grid");
+    QVERIFY(saved.comparison);
+    QCOMPARE(saved.comparison->priorPath, dir);
+    QVERIFY(saved.comparison->movingToFixed && *saved.comparison->movingToFixed == t);
+    // Reopened: the session's state is applied, then the window opens the prior again with
+    // the session's alignment (not the one on screen now).
+    w.compareView()->comparison().clearAlignment();
+    applySession(m, saved);
+    emit w.sessions().sessionShown();
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareView()->comparison().aligned(), 60000);
+    QVERIFY(w.compareView()->comparison().movingToFixed() == t);
+    QVERIFY(errors_.isEmpty());
   }
 
   void windowLevelLinkAndSwapAndFlickerKeys() {
