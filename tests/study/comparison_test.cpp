@@ -52,13 +52,20 @@ VolumeGeometry movingGeometry() {
 
 const glm::dmat4 kMovingToFixed = rigid(rotation({1.0, -0.4, 0.7}, 12.5), {-5.5, 3.25, 2.0});
 
-// The follower's crosshair against where the leader's point lies in its voxels: within half a
-// voxel on each axis (each column rounds to its own voxel centres).
+// The follower's crosshair against where the leader's point lies in its voxels, mapped here
+// through kMovingToFixed itself (not the model's mapping): within half a voxel on each axis
+// (each column rounds to its own voxel centres).
 double followerError(const ComparisonModel& m, const CrosshairModel& fixed,
                      const CrosshairModel& moving, ComparisonModel::Side follower) {
-  const glm::dvec3 d = follower == ComparisonModel::Side::Moving
-                           ? m.fixedToMovingVoxel(fixed.centre()) - moving.centre()
-                           : m.movingToFixedVoxel(moving.centre()) - fixed.centre();
+  const glm::dvec3 fixedMm = m.fixed().patientOf(fixed.centre());
+  const glm::dvec3 movingMm = m.moving().patientOf(moving.centre());
+  const glm::dvec3 d =
+      follower == ComparisonModel::Side::Moving
+          ? m.moving().voxelOf(
+                glm::dvec3(glm::inverse(kMovingToFixed) * glm::dvec4(fixedMm, 1.0))) -
+                moving.centre()
+          : m.fixed().voxelOf(glm::dvec3(kMovingToFixed * glm::dvec4(movingMm, 1.0))) -
+                fixed.centre();
   return std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
 }
 
