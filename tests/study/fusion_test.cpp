@@ -181,6 +181,14 @@ TEST(Fusion, ModelSaysWhenThereIsNoSharedFrameOfReferenceAndRefusesABadWindow) {
   same.study.frameOfReferenceUid = b.study.frameOfReferenceUid;
   m.setOverlay(std::make_shared<const Volume>(same), "ramp", &b);
   EXPECT_TRUE(m.warnings().empty());
+  Volume other = base();  // another study under it: said again, the window kept
+  other.study.frameOfReferenceUid = "9.9";
+  const FusionSettings before = m.settings();
+  m.setBase(&other);
+  EXPECT_EQ(m.warnings().size(), 1u);
+  EXPECT_EQ(m.settings(), before);
+  m.setBase(&b);
+  EXPECT_TRUE(m.warnings().empty());
   FusionSettings bad = m.settings();
   bad.lo = bad.hi;
   EXPECT_THROW(m.setSettings(bad), Error);

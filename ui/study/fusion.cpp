@@ -112,6 +112,12 @@ void FusionModel::clear() {
   changed.notify();
 }
 
+void FusionModel::setBase(const Volume* base) {
+  if (!overlay_) return;
+  warnings_ = base ? overlayWarnings(*base, *overlay_) : std::vector<std::string>{};
+  changed.notify();
+}
+
 void FusionModel::setSettings(const FusionSettings& s) {
   overlayWindowTable(s.lo, s.hi, s.colormap, 1.0);  // throws Error (Input) when bad
   if (s == settings_) return;

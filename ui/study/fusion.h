@@ -67,6 +67,8 @@ class FusionModel {
   // OVERLAY over BASE (its Frame of Reference checked), with defaultFusion's window.
   void setOverlay(std::shared_ptr<const Volume> overlay, std::string name, const Volume* base);
   void clear();
+  // Another study under the overlay: its Frame of Reference checked again; settings stay.
+  void setBase(const Volume* base);
   // Checked (fusionTable throws Error (Input) for a bad map or window) before it is taken.
   void setSettings(const FusionSettings& s);
 

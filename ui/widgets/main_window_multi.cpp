@@ -42,6 +42,9 @@ void MainWindow::wireFusion() {
           });
   connect(overlayLoader_, &OverlayLoader::failed, this,
           [this](const QString& m) { showError("Cannot open the overlay", m); });
+  // Another study under the overlay: its Frame of Reference is checked again.
+  onModelChange<>(this, models_.document.changed,
+                  [this] { models_.fusion.setBase(models_.document.volume().get()); });
   // The 3D view raycasts the overlay in the same pass (the engine's fused dvr).
   onModelChange<>(this, models_.fusion.changed, [this] {
     const FusionModel& f = models_.fusion;
