@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 
+#include "compare_view.h"
 #include "main_window.h"
 #include "qt_image.h"
 #include "session_state.h"
@@ -106,20 +107,42 @@ int main(int argc, char** argv) {
   std::unique_ptr<StartupClock> clock;
   if (options.startupTimes) clock = std::make_unique<StartupClock>(*window, sinceStart);
   int exitCode = 0;
+  // --overlay and --compare: loaded once the study is shown (their loaders need it).
+  if (!options.overlay.empty() || !options.prior.empty()) {
+    auto* once = new QObject(window.get());
+    QObject::connect(window.get(), &MainWindow::volumeShown, once, [&, once] {
+      if (!options.overlay.empty()) window->openOverlay(options.overlay);
+      if (!options.prior.empty()) window->openPrior(options.prior);
+      once->deleteLater();
+    });
+  }
+  // The screenshot waits for them too (polled: the overlay's and prior's loads end on their
+  // own threads), then for the fused 3D frame.
+  auto extrasShown = [&] {
+    return (options.overlay.empty() || models->fusion.overlay()) &&
+           (options.prior.empty() || (window->compareView() && window->compareView()->hasPrior()));
+  };
   if (!options.screenshot.empty() || options.quitAfterFirstFrame) {
     QObject::connect(&window->scheduler(), &RenderScheduler::firstFullFrame, window.get(), [&] {
-      // Let the view paint the frame before grabbing the whole window.
-      QTimer::singleShot(200, window.get(), [&] {
-        if (!options.screenshot.empty()) {
-          try {
-            writeImage(options.screenshot, fromQImage(window->grab().toImage()));
-          } catch (const std::exception& e) {
-            std::cerr << "voxray: " << e.what() << "\n";
-            exitCode = 1;
+      // Let the view paint the frame (and the extras load and render) before grabbing.
+      auto* wait = new QTimer(window.get());
+      QObject::connect(wait, &QTimer::timeout, window.get(), [&, wait] {
+        if (!extrasShown()) return;
+        wait->deleteLater();
+        const bool extras = !options.overlay.empty() || !options.prior.empty();
+        QTimer::singleShot(extras ? 3000 : 200, window.get(), [&] {
+          if (!options.screenshot.empty()) {
+            try {
+              writeImage(options.screenshot, fromQImage(window->grab().toImage()));
+            } catch (const std::exception& e) {
+              std::cerr << "voxray: " << e.what() << "\n";
+              exitCode = 1;
+            }
           }
-        }
-        if (options.quitAfterFirstFrame) QApplication::exit(exitCode);
+          if (options.quitAfterFirstFrame) QApplication::exit(exitCode);
+        });
       });
+      wait->start(100);
     });
     QObject::connect(&window->loader(), &LoadController::failed, window.get(),
                      [&](const QString& message) {

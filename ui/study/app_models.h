@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include "crosshair_model.h"
+#include "fusion.h"
 #include "lighting_figures.h"
 #include "measurement_model.h"
 
@@ -27,7 +28,11 @@ struct AppModels {
   SegmentationModel segmentation;  // the segment editor's; a session keeps it too
   SegmentToolModel segmentTools;   // the editor's tool and its settings (not saved)
   TimePlayer player;               // a 4D series' play rate and state (the document: its point)
-  LightingFigures lighting;        // each lighting model's cost and error on this scene
+  FusionModel fusion;              // issue 36: a second volume over the slices and in 3D
+  // Compare (issue 36): the prior beside the study and its alignment, for a session to keep;
+  // a session read sets it and the window opens the prior (none: no comparison).
+  std::optional<Session::Comparison> comparison;
+  LightingFigures lighting;  // each lighting model's cost and error on this scene
   // Where the document's volume came from (path and input flags), for a session to save.
   SessionInput source;
   // While a volume whose values are not HU is open (value_look.h): the user's HU look

@@ -61,6 +61,14 @@ void RenderWorker::updateSegmentation(std::vector<Segment> segments, LabelPatch 
   wake_.notify_all();
 }
 
+void RenderWorker::setOverlay(std::shared_ptr<const Volume> overlay, TransferFunction tf) {
+  {
+    std::lock_guard lock(mutex_);
+    pendingOverlay_ = OverlayUpdate{std::move(overlay), std::move(tf)};
+  }
+  wake_.notify_all();
+}
+
 void RenderWorker::preload(VolumeSeries series) {
   {
     std::lock_guard lock(mutex_);
@@ -206,6 +214,8 @@ void RenderWorker::run() {
   Image view;                                // the last view frame: banded frames paint over it
   std::optional<Segmentation> segmentation;  // the render thread's copy (setSegmentation)
   const Raycaster* segOn = nullptr;          // the raycaster holding it (time points: one each)
+  std::optional<OverlayUpdate> overlay;      // the render thread's (setOverlay)
+  const Raycaster* overlayOn = nullptr;      // the raycaster holding it
   std::thread builder;                       // prepare()'s builds; joined before ctx goes
   struct Join {
     std::thread& t;
@@ -217,13 +227,14 @@ void RenderWorker::run() {
     std::shared_ptr<const Volume> nextVolume, ahead;
     bool sameSeries = false;
     std::optional<SegmentationUpdate> segUpdate;
+    std::optional<OverlayUpdate> overlayUpdate;
     std::optional<Request> req;
     std::vector<RenderParams> prepare;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
-               pendingSegmentation_ || (!pendingPrepare_.empty() && raycaster) ||
+               pendingSegmentation_ || pendingOverlay_ || (!pendingPrepare_.empty() && raycaster) ||
                (!pendingPreload_.empty() && raycaster);
       });
       if (task_.cancelled()) return;
@@ -233,6 +244,8 @@ void RenderWorker::run() {
       pendingVolume_.reset();
       segUpdate = std::move(pendingSegmentation_);
       pendingSegmentation_.reset();
+      overlayUpdate = std::move(pendingOverlay_);
+      pendingOverlay_.reset();
       if (pendingExport_) {
         req = std::move(pendingExport_);
         pendingExport_.reset();
@@ -343,6 +356,21 @@ void RenderWorker::run() {
         }
       } catch (const std::exception& e) {
         segOn = nullptr;
+        reportError(e.what(), false);
+      }
+    }
+    if (overlayUpdate) overlay = std::move(overlayUpdate);
+    // A new raycaster may reuse a freed one's address: a new volume sets it again.
+    if (overlayUpdate || nextVolume) overlayOn = nullptr;
+    if (raycaster && raycaster != overlayOn) {
+      // Each raycaster (a time point) holds its own copy of the overlay on the device.
+      overlayOn = raycaster;
+      try {
+        if (overlay && overlay->volume)
+          raycaster->setOverlay(*overlay->volume, overlay->tf);  // warnings: FusionModel's
+        else if (raycaster->hasOverlay())
+          raycaster->clearOverlay();
+      } catch (const std::exception& e) {
         reportError(e.what(), false);
       }
     }

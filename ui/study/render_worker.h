@@ -80,6 +80,10 @@ class RenderWorker {
   // of the edited box (only the box travels: a whole copy of a large label map per paint dab
   // took 73 ms, see the README's segment editor figures).
   void updateSegmentation(std::vector<Segment> segments, LabelPatch box);
+  // Fused dvr (issue 36, Raycaster::setOverlay): OVERLAY with its table TF classified in the
+  // same pass as the volume, on its own grid; null: none. Each time point's raycaster takes
+  // it before its next frame.
+  void setOverlay(std::shared_ptr<const Volume> overlay, TransferFunction tf);
   // WITHHITS: also each pixel's iso first hit or dvr first opaque point (Frame::hits), for
   // picking in 3D.
   void request(const RenderParams& params, bool interactive, int tag = 0, bool withHits = false);
@@ -121,6 +125,11 @@ class RenderWorker {
     std::vector<LabelPatch> patches;  // in order
   };
   std::optional<SegmentationUpdate> pendingSegmentation_;
+  struct OverlayUpdate {
+    std::shared_ptr<const Volume> volume;  // null: none
+    TransferFunction tf;
+  };
+  std::optional<OverlayUpdate> pendingOverlay_;
   bool pendingSameSeries_ = false;
   VolumeSeries pendingPreload_;  // time points still to upload ahead, in order
   struct Request {

@@ -1,5 +1,7 @@
 #include "session.h"
 
+#include "comparison_model.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -321,6 +323,19 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
   if (s.transferFunction)
     j["transfer-function"] = Json::parse(toVolumePropertyJson(*s.transferFunction));
   if (s.time) j["time"] = {{"point", s.time->point}, {"fps", s.time->fps}};
+  if (s.comparison) {
+    Json c = {{"prior", s.comparison->priorPath}};
+    if (s.comparison->movingToFixed) {
+      Json rows = Json::array();  // row by row, as the matrix is written on paper
+      for (int row = 0; row < 4; ++row) {
+        Json r = Json::array();
+        for (int col = 0; col < 4; ++col) r.push_back((*s.comparison->movingToFixed)[col][row]);
+        rows.push_back(r);
+      }
+      c["moving-to-fixed"] = rows;
+    }
+    j["comparison"] = c;
+  }
   if (s.segmentation) j["segmentation"] = segmentationToJson(*s.segmentation);
   try {
     j["measurements"] = Json::parse(s.measurements);
@@ -369,7 +384,7 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
                      "); open it with a newer Voxray");
   r.warnUnknown(root, "",
                 {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays",
-                 "transfer-function", "measurements", "segmentation", "time"});
+                 "transfer-function", "measurements", "segmentation", "time", "comparison"});
   SessionRead out;
   Session& s = out.session;
   readInput(r, root, sessionPath, out);
@@ -438,6 +453,30 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
     if (!(t.fps >= 0.5 && t.fps <= 60.0))
       r.fail("time.fps", "must be 0.5 ... 60 frames per second");
     s.time = t;
+  }
+  if (root.contains("comparison")) {
+    const Json& c = r.object(root, "comparison", "comparison");
+    r.warnUnknown(c, "comparison.", {"prior", "moving-to-fixed"});
+    Session::Comparison out;
+    out.priorPath = r.text(r.require(c, "comparison.prior", "prior"), "comparison.prior");
+    if (c.contains("moving-to-fixed")) {
+      const std::string want =
+          "must be 4 rows of 4 numbers: a rotation and a translation in mm, last row 0 0 0 1";
+      const Json& rows = c.at("moving-to-fixed");
+      if (!rows.is_array() || rows.size() != 4) r.fail("comparison.moving-to-fixed", want);
+      glm::dmat4 m(1.0);
+      for (int row = 0; row < 4; ++row) {
+        const Json& values = rows.at(size_t(row));
+        if (!values.is_array() || values.size() != 4) r.fail("comparison.moving-to-fixed", want);
+        for (int col = 0; col < 4; ++col) {
+          if (!values.at(size_t(col)).is_number()) r.fail("comparison.moving-to-fixed", want);
+          m[col][row] = values.at(size_t(col)).get<double>();
+        }
+      }
+      if (!isRigid(m)) r.fail("comparison.moving-to-fixed", want + " (this one is not rigid)");
+      out.movingToFixed = m;
+    }
+    s.comparison = out;
   }
   if (root.contains("measurements")) {
     if (!root.at("measurements").is_array()) r.fail("measurements", "must be an array [ ... ]");

@@ -70,6 +70,13 @@ struct Session {
     double fps = 10.0;
   };
   std::optional<Time> time;
+  // Compare (issue 36): the prior beside the study and, once aligned, the rigid transform
+  // of its patient coordinates onto the study's (LPS mm). Optional in the file ("comparison").
+  struct Comparison {
+    std::string priorPath;                    // absolute
+    std::optional<glm::dmat4> movingToFixed;  // none: linked by a shared Frame of Reference only
+  };
+  std::optional<Comparison> comparison;
 };
 
 struct SessionRead {

@@ -32,6 +32,7 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
     // voxray-cli render --session opens the input with its flags: this time point.
     s.input.flags["time"] = std::to_string(m.document.timePoint());
   }
+  s.comparison = m.comparison;
   return s;
 }
 
@@ -44,6 +45,7 @@ std::vector<std::string> openSession(AppModels& m, std::shared_ptr<const Volume>
 std::vector<std::string> applySession(AppModels& m, const Session& s) {
   std::vector<std::string> problems;
   m.source = s.input;
+  m.comparison = s.comparison;
   // The session keeps the list only: whether exports show measurements stays the user's
   // choice each time (off), as burned-in measurements must be.
   measurementsFromJson(

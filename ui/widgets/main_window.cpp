@@ -151,6 +151,8 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   wireMeasurements();
   wireSegments();
   wireTime();
+  wireFusion();
+  wireCompare();
   sessions_ = new SessionActions(*this, models_);
   buildMenus();
   qApp->installEventFilter(this);
@@ -252,6 +254,7 @@ void MainWindow::buildMenus() {
   file->addAction("Open &session…", QKeySequence("Ctrl+Alt+O"), sessions_, &SessionActions::open);
   file->addAction("Open from &PACS…", QKeySequence("Ctrl+Shift+P"), this,
                   &MainWindow::openFromPacs);
+  addMultiVolumeActions(file, nullptr);
   recentMenu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();
   file->addSeparator();
@@ -283,6 +286,7 @@ void MainWindow::buildMenus() {
   time->setObjectName("viewTime");
   time->setToolTip("Show or hide the time panel of a 4D series");
   view->addAction(time);
+  addMultiVolumeActions(nullptr, view);
   QAction* studyText = view->addAction("&Patient and study text", this,
                                        [this](bool on) { models_.render.setStudyText(on); });
   studyText->setCheckable(true);

@@ -24,6 +24,10 @@ class QDockWidget;
 
 namespace voxray::ui {
 
+class CompareView;
+class FusionPanel;
+class LoadController;
+class OverlayLoader;
 class SegmentPanel;
 class SliceView;
 class StudyBrowserDialog;
@@ -56,6 +60,15 @@ class MainWindow : public QMainWindow {
   QDockWidget* segmentDock() { return segmentDock_; }
   TimePanel& timePanel() { return *timePanel_; }
   QDockWidget& timeDock() { return *timeDock_; }
+  // Issue 36 (main_window_multi.cpp): fusion and compare.
+  FusionPanel& fusionPanel() { return *fusionPanel_; }
+  QDockWidget& fusionDock() { return *fusionDock_; }
+  CompareView* compareView() { return compare_; }  // null until a prior is opened
+  // INPUT (anything the loader reads) as the fusion overlay over the study, on its own thread.
+  void openOverlay(const std::string& input, const LoadOptions& options = {});
+  // INPUT as the prior beside the study: the comparison mode, once loaded.
+  void openPrior(const std::string& input, const LoadOptions& options = {});
+  void setCompareMode(bool on);  // the two columns instead of the four views, or back
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).
@@ -92,6 +105,9 @@ class MainWindow : public QMainWindow {
   void wireMeasurements();  // views, side panel and 3D picks share models_.measurements
   void wireSegments();      // the Segments dock, the slice views' overlays and tools, the 3D view
   void wireTime();
+  void wireFusion();   // main_window_multi.cpp
+  void wireCompare();  // main_window_multi.cpp
+  void addMultiVolumeActions(QMenu* file, QMenu* view);
   void showLoadWarnings();  // every loader warning at once in the status bar
   void rebuildRecentMenu();
   void openDicomFolder();
@@ -130,6 +146,11 @@ class MainWindow : public QMainWindow {
   SegmentPanel* segmentPanel_ = nullptr;
   QDockWidget* timeDock_ = nullptr;  // a 4D series' time slider, play and curve
   TimePanel* timePanel_ = nullptr;
+  QDockWidget* fusionDock_ = nullptr;  // the Fusion group
+  FusionPanel* fusionPanel_ = nullptr;
+  OverlayLoader* overlayLoader_ = nullptr;
+  LoadController* priorLoader_ = nullptr;  // the prior for compare, beside the study's loader
+  CompareView* compare_ = nullptr;
   int loadingTimePoint_ = 0;            // the time point to show first of the input being loaded
   SessionInput loading_;                // the input being loaded, for AppModels::source
   MovieController* movies_ = nullptr;   // File → Export movie, in the background

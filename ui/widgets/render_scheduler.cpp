@@ -82,6 +82,11 @@ void RenderScheduler::endInteraction() {
   requestFrame();
 }
 
+void RenderScheduler::setOverlay(std::shared_ptr<const Volume> overlay, TransferFunction tf) {
+  worker_->setOverlay(std::move(overlay), std::move(tf));
+  requestFrame();
+}
+
 void RenderScheduler::updateSegmentation(SegmentationModel& model) {
   const SegmentationModel::Edits edits = model.takeEdits();
   if (!model.active() || model.segmentation().segments.empty()) {

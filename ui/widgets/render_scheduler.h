@@ -48,6 +48,8 @@ class RenderScheduler : public QObject {
   // The segmentation model changed: the 3D view's copy takes its edits (setSegmentation after
   // a load, updateSegmentation of the edited box after an edit) and a frame follows.
   void updateSegmentation(SegmentationModel& model);
+  // Fused dvr: OVERLAY (null: none) with its table, raycast with the volume; a frame follows.
+  void setOverlay(std::shared_ptr<const Volume> overlay, TransferFunction tf);
 
  signals:
   void frameReady(std::shared_ptr<const voxray::Frame> frame);

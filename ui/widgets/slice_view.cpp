@@ -60,6 +60,7 @@ SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crossha
 }
 
 SliceView::~SliceView() {
+  if (fusion_) fusion_->changed.disconnect(fusionConnection_);
   if (measurements_) measurements_->changed.disconnect(measureConnection_);
   if (segmentation_) segmentation_->changed.disconnect(segConnection_);
   if (segmentTools_) segmentTools_->changed.disconnect(toolConnection_);
@@ -109,6 +110,47 @@ void SliceView::setSegmentation(SegmentationModel* model, SegmentToolModel* tool
     });
   refreshSegmentOverlay();
   update();
+}
+
+void SliceView::setFusion(FusionModel* fusion) {
+  if (fusion_) fusion_->changed.disconnect(fusionConnection_);
+  fusion_ = fusion;
+  fusedPlane_.reset();
+  if (fusion)
+    fusionConnection_ = fusion->changed.connect([this] {
+      refreshFusion(true);
+      update();
+    });
+  refreshFusion();
+  update();
+}
+
+void SliceView::refreshFusion(bool force) {
+  if (!fusion_ || !fusion_->active() || !shown_ || doc_.empty()) {
+    fusionOverlay_ = {};
+    fusedPlane_.reset();
+    return;
+  }
+  // A crosshair move elsewhere leaves this view's plane as it was: keep its overlay.
+  const PlaneGrid& g = shown_->plane;
+  if (!force && fusedPlane_ && fusedPlane_->originMm == g.originMm && fusedPlane_->uDir == g.uDir &&
+      fusedPlane_->vDir == g.vDir && fusedPlane_->spacingMm == g.spacingMm &&
+      fusedPlane_->size == g.size)
+    return;
+  fusedPlane_ = g;
+  fusionOverlay_ = {};
+  try {
+    fusionOverlay_ = toQImage(fusionImage(*fusion_->overlay(), shown_->plane, fusion_->settings()));
+  } catch (const std::exception&) {  // settings are checked when set: nothing to draw
+  }
+}
+
+void SliceView::setZoom(double zoom) {
+  zoom = std::clamp(zoom, 0.25, 32.0);
+  if (zoom == zoom_) return;
+  zoom_ = zoom;
+  update();
+  emit zoomChanged(zoom_);
 }
 
 void SliceView::refreshSegmentOverlay() {
@@ -284,6 +326,7 @@ void SliceView::rebuild() {
     }
   }
   refreshSegmentOverlay();
+  refreshFusion();
   update();
 }
 
@@ -291,6 +334,7 @@ void SliceView::slabArrived(Image image) {
   if (!wanted_) return;
   image_ = toQImage(image);
   shown_ = std::exchange(wanted_, std::nullopt);
+  refreshFusion();
   update();
   emit slabShown();
 }
@@ -371,6 +415,7 @@ void SliceView::paintEvent(QPaintEvent*) {
   p.fillRect(rect(), Qt::black);
   if (image_.isNull()) return;
   p.drawImage(sliceRect(), image_);
+  if (!fusionOverlay_.isNull()) p.drawImage(sliceRect(), fusionOverlay_);
   // Nearest-neighbour scaling (no smooth transform): each voxel a crisp block of colour.
   if (!segmentOverlay_.isNull()) p.drawImage(sliceRect(), segmentOverlay_);
   if (!previewOverlay_.isNull()) p.drawImage(sliceRect(), previewOverlay_);
@@ -423,6 +468,8 @@ void SliceView::paintOverlay(QPainter& p) {
     o.hasCursor = true;
     // Read as the view samples: the probe follows the slice interpolation setting.
     o.cursorText = formatCursorProbe(probeAt(v, voxel, state_.sliceInterp()));
+    if (fusion_ && fusion_->active())
+      o.cursorText += "  " + fusionProbeText(*fusion_->overlay(), voxelToPatientMm(v, voxel));
   }
   cursorReadout_ = QString::fromStdString(o.cursorText);
   drawSliceOverlay(p, o, rect(), [this](double u, double vv) { return toWidget(u, vv); });
@@ -542,8 +589,7 @@ void SliceView::mouseDoubleClickEvent(QMouseEvent*) {
 void SliceView::wheelEvent(QWheelEvent* e) {
   int notches = e->angleDelta().y() / 120;
   if (e->modifiers() & Qt::ControlModifier) {
-    zoom_ = std::clamp(zoom_ * std::pow(1.15, notches), 0.25, 32.0);
-    update();
+    setZoom(zoom_ * std::pow(1.15, notches));
   } else {
     crosshair_.scrollView(axes_, notches);
   }

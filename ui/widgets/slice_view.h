@@ -14,6 +14,7 @@
 #include <QWidget>
 
 #include "crosshair_model.h"
+#include "fusion.h"
 #include "measurement_model.h"
 #include "render_state_model.h"
 #include "segment_tools.h"
@@ -68,6 +69,13 @@ class SliceView : public QWidget {
   const QImage& segmentOverlayImage() const { return segmentOverlay_; }
   const QImage& thresholdPreviewImage() const { return previewOverlay_; }
   size_t thresholdPreviewVoxels() const;
+  // Fusion (issue 36): the overlay volume drawn over the slice through its own geometry, in
+  // its colour map (none: no overlay). The overlay as drawn: the image's size, straight alpha.
+  void setFusion(FusionModel* fusion);
+  const QImage& fusionOverlayImage() const { return fusionOverlay_; }
+  // Zoom (1: the slice fits the view); Ctrl+wheel changes it and says so (compare links it).
+  double zoom() const { return zoom_; }
+  void setZoom(double zoom);
 
  signals:
   void doubleClicked();
@@ -78,6 +86,7 @@ class SliceView : public QWidget {
   void slabShown();
   // A segment tool could not do what was asked (no segment chosen, a seed outside the range).
   void segmentToolFailed(const QString& message);
+  void zoomChanged(double zoom);
 
  protected:
   void paintEvent(QPaintEvent*) override;
@@ -103,6 +112,7 @@ class SliceView : public QWidget {
   bool pressSegmentTool(QPointF widget);  // true: a paint, erase or seed tool took the press
   void brushAt(QPointF widget);
   glm::dvec3 toolVoxel(QPointF widget) const;  // the voxel position under the cursor
+  void refreshFusion(bool force = false);      // fusionOverlay_ for shown_'s plane
   void refreshSegmentOverlay();                // true: the press grabbed or started a measurement
   // Measurements are drawn and taken in the acquisition planes only: not on a turned view or
   // a slab (their points and ROI pixels are index-plane ones).
@@ -156,6 +166,10 @@ class SliceView : public QWidget {
   SegmentToolModel* segmentTools_ = nullptr;
   int segConnection_ = 0, toolConnection_ = 0;
   QImage segmentOverlay_, previewOverlay_;
+  FusionModel* fusion_ = nullptr;
+  int fusionConnection_ = 0;
+  QImage fusionOverlay_;
+  std::optional<PlaneGrid> fusedPlane_;  // what fusionOverlay_ shows
   QString cursorReadout_;
   int docConnection_ = 0, timeConnection_ = 0, crossConnection_ = 0, wlConnection_ = 0,
       stateConnection_ = 0;

@@ -46,6 +46,8 @@ StartOptions parseStartOptions(const QStringList& arguments) {
       {"startup-times",
        "print to stderr when the slice views and the first 3D images were shown (ms since start)"},
       {"phantom", "open the synthetic head phantom instead of the sample CT (no INPUT)"},
+      {"overlay", "fuse INPUT (a volume file or DICOM folder) over the study", "input"},
+      {"compare", "open INPUT beside the study as a prior (compare mode)", "input"},
   });
   addSpecOptions(parser, inputFlagSpecs());
   addSpecOptions(parser, renderParamSpecs());
@@ -66,6 +68,8 @@ StartOptions parseStartOptions(const QStringList& arguments) {
   o.renderValues = givenValues(parser, renderParamSpecs());
   o.device = parser.value("device").toStdString();
   o.screenshot = parser.value("screenshot").toStdString();
+  o.overlay = parser.value("overlay").toStdString();
+  o.prior = parser.value("compare").toStdString();
   o.quitAfterFirstFrame = parser.isSet("quit-after-first-frame");
   o.resetSettings = parser.isSet("reset-settings");
   o.startupTimes = parser.isSet("startup-times");

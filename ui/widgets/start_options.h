@@ -18,6 +18,8 @@ struct StartOptions {
   std::map<std::string, std::string> renderValues;  // --KEY VALUE of renderParamSpecs()
   std::string device;
   std::string screenshot;
+  std::string overlay;  // --overlay INPUT: fused over the study once it is shown (issue 36)
+  std::string prior;    // --compare INPUT: opened beside the study as a prior (compare mode)
   bool quitAfterFirstFrame = false;
   bool resetSettings = false;  // start from defaults, ignoring saved state
   bool startupTimes = false;   // print when slices and 3D images first showed (issue 41 item 9)

@@ -1,0 +1,282 @@
+// Fusion and compare through the real widgets (offscreen, issue 36): a fused slice pixel has
+// the colour map's colour and the volume's grey shows where the overlay does not reach; an
+// overlay opened through the loader without a shared Frame of Reference is shown and the
+// status bar says so; in compare mode, scrolling the left column moves the right one to the
+// same patient z (through a non-trivial alignment), W/L follows only while its box is ticked,
+// and the swap and flicker keys trade and alternate the columns. The 3D view raycasts the
+// overlay with the volume (red where the cube is) and drops it when switched off.
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QWheelEvent>
+
+#include "compare_view.h"
+#include "fusion_panel.h"
+#include "session_state.h"
+#include "slice_geometry.h"
+#include "slice_view.h"
+#include "voxray/io/phantom_series.h"
+#include "window_fixture.h"
+
+using namespace voxray;
+using namespace voxray::ui;
+
+namespace {
+
+glm::dmat3 turnAboutZ(double degrees) {
+  const double a = glm::radians(degrees);
+  return glm::dmat3(glm::dvec3(std::cos(a), std::sin(a), 0),
+                    glm::dvec3(-std::sin(a), std::cos(a), 0), glm::dvec3(0, 0, 1));
+}
+
+// A cube of 1000 (any unit) on a grid of its own: 12 voxels of 4 mm, turned 20 degrees about
+// z, centred at CENTREMM.
+std::shared_ptr<const Volume> cube(const glm::dvec3& centreMm) {
+  Volume o;
+  o.dims = glm::ivec3(12);
+  o.spacingMm = glm::dvec3(4.0);
+  o.direction = turnAboutZ(20.0);
+  o.originMm = centreMm - o.direction * (o.spacingMm * 5.5);
+  o.unit = "Bq/mL";
+  o.voxels.assign(o.voxelCount(), 1000);
+  return std::make_shared<const Volume>(std::move(o));
+}
+
+// Where patient point P shows in VIEW (an axial view of V through the crosshair's slice).
+QPointF widgetAt(const SliceView& view, const Volume& v, const glm::dvec3& p) {
+  const glm::dvec3 voxel = glm::inverse(v.direction) * (p - v.originMm) / v.spacingMm;
+  const glm::dvec2 s = voxelToSlice(view.axes(), v.dims, voxel);
+  return view.toWidget(s.x + 0.5, s.y + 0.5);  // the pixel's centre (slice coords: its corner)
+}
+
+void wheel(QWidget* w, int notches) {
+  const QPointF at(w->width() / 2.0, w->height() / 2.0);
+  QWheelEvent e(at, w->mapToGlobal(at), QPoint(), QPoint(0, 120 * notches), Qt::NoButton,
+                Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(w, &e);
+}
+
+}  // namespace
+
+class CompareTest : public QObject {
+  Q_OBJECT
+  voxray::ui::test::PhantomWindow fixture_;
+  QTemporaryDir tmp_;
+  QStringList errors_;
+
+ private slots:
+  void init() {
+    QVERIFY(fixture_.start());
+    errors_.clear();
+    fixture_.window->setErrorSink(
+        [this](const QString& t, const QString& m) { errors_ << t + ": " + m; });
+  }
+  void cleanup() { fixture_.stop(); }
+
+  void fusedSlicePixelHasTheColourMapsColour() {
+    AppModels& m = *fixture_.models;
+    const Volume& base = *m.document.volume();
+    const glm::dvec3 centre = voxelToPatientMm(base, m.crosshair.centre());
+    const glm::dvec3 cubeCentre = centre + glm::dvec3(20.0, 16.0, 0.0);  // off the crosshair lines
+    m.fusion.setOverlay(cube(cubeCentre), "cube", &base);
+    FusionSettings s = m.fusion.settings();
+    s.colormap = "rainbow";  // red at and above HI
+    s.lo = 0.0;
+    s.hi = 500.0;
+    s.opacity = 1.0;
+    m.fusion.setSettings(s);
+    SliceView& axial = fixture_.window->sliceView(0);
+    QVERIFY(!axial.fusionOverlayImage().isNull());
+    const QImage shot = axial.grab().toImage();
+    const QPoint in = widgetAt(axial, base, cubeCentre).toPoint();
+    QCOMPARE(QColor(shot.pixel(in)), QColor(255, 0, 0));  // opaque: the map's colour itself
+    // 40 mm off the other way the overlay does not reach: the volume's own grey.
+    const QPoint out = widgetAt(axial, base, centre - glm::dvec3(40.0, 30.0, 0.0)).toPoint();
+    const QColor grey(shot.pixel(out));
+    QCOMPARE(grey.red(), grey.green());
+    QCOMPARE(grey.green(), grey.blue());
+    // Half opacity: halfway between the grey under it and red.
+    const QImage plain = [&] {
+      s.on = false;
+      m.fusion.setSettings(s);
+      return axial.grab().toImage();
+    }();
+    s.on = true;
+    s.opacity = 0.5;
+    m.fusion.setSettings(s);
+    const QColor under(plain.pixel(in)), mixed(axial.grab().toImage().pixel(in));
+    QVERIFY2(std::abs(mixed.red() - (under.red() + 255) / 2.0) <= 1.5, qPrintable(mixed.name()));
+    QVERIFY2(std::abs(mixed.green() - under.green() / 2.0) <= 1.5, qPrintable(mixed.name()));
+    // The cursor readout reads the overlay too.
+    QTest::mouseMove(&axial, in);
+    axial.grab();  // paints: the readout is the painted one
+    QVERIFY2(axial.cursorReadout().contains("overlay 1000 Bq/mL"),
+             qPrintable(axial.cursorReadout()));
+  }
+
+  void fused3DFrameShowsTheOverlay() {
+    AppModels& m = *fixture_.models;
+    MainWindow& w = *fixture_.window;
+    m.render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Dvr; });
+    const QImage before = test::waitFullFrame(w);
+    // A cube below the head (inferior: -z in LPS), beside it in the default camera's picture,
+    // opaque red (rainbow at its end, opacity 1 per step).
+    const glm::dvec3 centre = voxelToPatientMm(*m.document.volume(), m.crosshair.centre());
+    m.fusion.setOverlay(cube(centre + glm::dvec3(0.0, 0.0, -105.0)), "cube",
+                        m.document.volume().get());
+    FusionSettings s = m.fusion.settings();
+    s.colormap = "rainbow";
+    s.lo = 0.0;
+    s.hi = 500.0;
+    s.opacity = 1.0;
+    m.fusion.setSettings(s);
+    // A frame asked for before the overlay (the mode change's) may still arrive first: the
+    // overlay shows within a few full frames.
+    auto redPixels = [](const QImage& img) {
+      int n = 0;
+      for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+          const QColor c(img.pixel(x, y));
+          n += c.red() > 150 && c.green() < 60 && c.blue() < 60;
+        }
+      return n;
+    };
+    QImage fused;
+    int red = 0;
+    for (int frames = 0; frames < 10 && red <= 50; ++frames)
+      red = redPixels(fused = test::waitFullFrame(w));
+    QVERIFY2(red > 50, qPrintable(QString("%1 red pixels").arg(red)));
+    QVERIFY(test::differingPixels(before, fused) >= red);
+    // Off again: the frame without it, pixel for pixel.
+    s.on = false;
+    m.fusion.setSettings(s);
+    QImage off = test::waitFullFrame(w);
+    for (int frames = 0; frames < 10 && redPixels(off) > 0; ++frames) off = test::waitFullFrame(w);
+    QCOMPARE(test::differingPixels(before, off), 0);
+  }
+
+  void overlayOpenedWithoutSharedFrameOfReferenceSaysSo() {
+    const std::string dir = (tmp_.path() + "/pet").toStdString();
+    writePetSpherePhantom(dir, PetSpherePhantom{});
+    fixture_.window->openOverlay(dir);
+    QTRY_VERIFY_WITH_TIMEOUT(fixture_.models->fusion.overlay() != nullptr, 60000);
+    QVERIFY(errors_.isEmpty());
+    const QString status = fixture_.window->statusBar()->currentMessage();
+    QVERIFY2(status.contains("Frame of Reference"), qPrintable(status));
+    QVERIFY(fixture_.window->fusionDock().isVisible());
+    QCOMPARE(fixture_.window->fusionPanel().hiBox()->suffix(), QString(" SUVbw"));
+    // A window in SUV from the panel reaches the model; a reversed one is refused there.
+    fixture_.window->fusionPanel().hiBox()->setValue(4.0);
+    QCOMPARE(fixture_.models->fusion.settings().hi, 4.0);
+    QCOMPARE(fixture_.models->fusion.settings().lo, 1.0);  // a PET starts at SUV 1 ... 6
+    fixture_.window->fusionPanel().loBox()->setValue(5.0);
+    QCOMPARE(fixture_.models->fusion.settings().lo, 1.0);
+    const QString said = fixture_.window->fusionPanel().findChild<QLabel*>("fusionError")->text();
+    QVERIFY2(said.contains("LO must be below HI"), qPrintable(said));
+  }
+
+  void scrollingLeftColumnMovesRightToSamePatientZ() {
+    AppModels& m = *fixture_.models;
+    fixture_.window->setCompareMode(true);
+    CompareView* c = fixture_.window->compareView();
+    QVERIFY(c && c->isVisible());
+    QVERIFY(!fixture_.window->grid().isVisible());
+    // The prior: the phantom on a coarser grid (48 voxels for the same 256 mm box).
+    c->setPrior(std::make_shared<const Volume>(makeHeadPhantom(48)), "prior");
+    QVERIFY(!c->comparison().linked());  // neither names a Frame of Reference
+    QVERIFY(c->statusText().contains("not linked until aligned"));
+    // The user's alignment: the prior turned 7 degrees about z and shifted.
+    glm::dmat4 t(turnAboutZ(7.0));
+    t[3] = glm::dvec4(4.0, -3.0, 6.0, 1.0);
+    c->comparison().setMovingToFixed(t);
+    QVERIFY(c->comparison().linked());
+    QTest::qWait(50);
+    const Volume& prior = *c->prior().document.volume();
+    const Volume& study = *m.document.volume();
+    double lastZ = voxelToPatientMm(study, m.crosshair.centre()).z;
+    for (int notches : {3, -1, 5, -7}) {
+      wheel(&c->fixedView(), notches);
+      const glm::dvec3 fixedMm = voxelToPatientMm(study, m.crosshair.centre());
+      // The wheel moved the study by NOTCHES slices (4 mm each on the 64-voxel phantom).
+      QCOMPARE(fixedMm.z - lastZ, notches * study.spacingMm.z);
+      lastZ = fixedMm.z;
+      const glm::dvec3 priorMm(
+          t * glm::dvec4(voxelToPatientMm(prior, c->prior().crosshair.centre()), 1.0));
+      // Within half the prior's slice spacing (it rounds to its own slices; z turns into z).
+      QVERIFY2(std::abs(priorMm.z - fixedMm.z) <= 0.5 * prior.spacingMm.z + 1e-9,
+               qPrintable(QString("z %1 vs %2").arg(priorMm.z).arg(fixedMm.z)));
+    }
+    // Zoom follows the other column.
+    QWheelEvent zoom(QPointF(50, 50), c->fixedView().mapToGlobal(QPointF(50, 50)), QPoint(),
+                     QPoint(0, 240), Qt::NoButton, Qt::ControlModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(&c->fixedView(), &zoom);
+    QVERIFY(c->fixedView().zoom() > 1.0);
+    QCOMPARE(c->movingView().zoom(), c->fixedView().zoom());
+  }
+
+  void priorAndAlignmentAreKeptBySessions() {
+    AppModels& m = *fixture_.models;
+    MainWindow& w = *fixture_.window;
+    const std::string dir = (tmp_.path() + "/prior-pet").toStdString();
+    writePetSpherePhantom(dir, PetSpherePhantom{});
+    w.openPrior(dir);
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareView() && w.compareView()->hasPrior(), 60000);
+    QVERIFY(w.compareView()->isVisible());
+    glm::dmat4 t(turnAboutZ(-4.0));
+    t[3] = glm::dvec4(1.5, 2.0, -3.0, 1.0);
+    w.compareView()->comparison().setMovingToFixed(t);
+    const Session saved = sessionFromModels(m, {128, 96}, "grid");
+    QVERIFY(saved.comparison);
+    QCOMPARE(saved.comparison->priorPath, dir);
+    QVERIFY(saved.comparison->movingToFixed && *saved.comparison->movingToFixed == t);
+    // Reopened: the session's state is applied, then the window opens the prior again with
+    // the session's alignment (not the one on screen now).
+    w.compareView()->comparison().clearAlignment();
+    applySession(m, saved);
+    emit w.sessions().sessionShown();
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareView()->comparison().aligned(), 60000);
+    QVERIFY(w.compareView()->comparison().movingToFixed() == t);
+    QVERIFY(errors_.isEmpty());
+  }
+
+  void windowLevelLinkAndSwapAndFlickerKeys() {
+    AppModels& m = *fixture_.models;
+    fixture_.window->setCompareMode(true);
+    CompareView* c = fixture_.window->compareView();
+    c->setPrior(std::make_shared<const Volume>(makeHeadPhantom(48)), "prior");
+    m.windowLevel.set({1200.0, 250.0});
+    QCOMPARE(c->prior().windowLevel.value().width, 1200.0);
+    c->findChild<QCheckBox*>("compareLinkWl")->setChecked(false);
+    m.windowLevel.set({300.0, 30.0});
+    QCOMPARE(c->prior().windowLevel.value().width, 1200.0);
+    c->fixedView().setFocus();
+    QTest::keyClick(&c->fixedView(), Qt::Key_X);
+    QVERIFY(c->swapped());
+    QVERIFY(c->movingView().mapTo(c, QPoint()).x() < c->fixedView().mapTo(c, QPoint()).x());
+    QTest::keyClick(&c->fixedView(), Qt::Key_F);
+    QCOMPARE(c->shownColumns(), 1);
+    QVERIFY(!c->movingView().isVisible());
+    c->movingView().setFocus();
+    QTest::keyClick(&c->fixedView(), Qt::Key_F);
+    QCOMPARE(c->shownColumns(), 2);
+    QVERIFY(!c->fixedView().isVisible());
+    QVERIFY(c->movingView().isVisible());
+    QTest::keyClick(&c->movingView(), Qt::Key_B);
+    QCOMPARE(c->shownColumns(), 0);
+    // Point pairs: two are refused with the message in the status line.
+    c->addPairAtCrosshairs();
+    c->addPairAtCrosshairs();
+    QVERIFY(!c->align());
+    QVERIFY2(c->statusText().contains("at least three"), qPrintable(c->statusText()));
+    c->findChild<QPushButton*>("compareClose")->click();
+    QVERIFY(!c->isVisible());
+    QVERIFY(fixture_.window->grid().isVisible());
+  }
+};
+
+QTEST_MAIN(CompareTest)
+#include "compare_test.moc"

@@ -1,0 +1,217 @@
+#include "compare_view.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "gui_message.h"
+#include "slice_view.h"
+#include "study_state.h"
+
+namespace voxray::ui {
+
+namespace {
+QWidget* column(QLabel* name, SliceView* view) {
+  auto* w = new QWidget;
+  auto* l = new QVBoxLayout(w);
+  l->setContentsMargins(0, 0, 0, 0);
+  l->addWidget(name);
+  l->addWidget(view, 1);
+  return w;
+}
+}  // namespace
+
+CompareView::CompareView(AppModels& study, QWidget* parent)
+    : QWidget(parent), study_(study), prior_(std::make_unique<PriorColumn>()) {
+  setObjectName("compareView");
+  fixedView_ = new SliceView(Orientation::Axial, study.document, study.crosshair, study.windowLevel,
+                             study.render);
+  movingView_ = new SliceView(Orientation::Axial, prior_->document, prior_->crosshair,
+                              prior_->windowLevel, prior_->render);
+  fixedView_->setObjectName("compareFixed");
+  movingView_->setObjectName("compareMoving");
+  fixedName_ = new QLabel;
+  movingName_ = new QLabel;
+  fixedColumn_ = column(fixedName_, fixedView_);
+  movingColumn_ = column(movingName_, movingView_);
+  // Zoom follows the other column (both show millimetres square at one scale then).
+  connect(fixedView_, &SliceView::zoomChanged, movingView_, &SliceView::setZoom);
+  connect(movingView_, &SliceView::zoomChanged, fixedView_, &SliceView::setZoom);
+
+  linkBox_ = new QCheckBox("Link navigation");
+  linkBox_->setObjectName("compareLink");
+  linkBox_->setChecked(true);
+  linkBox_->setToolTip(
+      "Crosshair, slice and zoom follow the other column in patient coordinates (needs one "
+      "Frame of Reference or an alignment). Untick to place point pairs column by column.");
+  connect(linkBox_, &QCheckBox::toggled, this, [this](bool on) { comparison_.setLinkWanted(on); });
+  wlBox_ = new QCheckBox("Link W/L");
+  wlBox_->setObjectName("compareLinkWl");
+  wlBox_->setChecked(true);
+  connect(wlBox_, &QCheckBox::toggled, this,
+          [this](bool on) { comparison_.setWindowLevelLinked(on); });
+  auto button = [this](const QString& text, const QString& name, const QString& tip, auto slot) {
+    auto* b = new QPushButton(text);
+    b->setObjectName(name);
+    b->setToolTip(tip);
+    b->setFocusPolicy(Qt::NoFocus);
+    connect(b, &QPushButton::clicked, this, slot);
+    return b;
+  };
+  auto* bar = new QHBoxLayout;
+  bar->addWidget(linkBox_);
+  bar->addWidget(wlBox_);
+  bar->addWidget(
+      button("Swap (X)", "compareSwap", "Trade the columns' sides", [this] { swapSides(); }));
+  bar->addWidget(button("Flicker (F)", "compareFlicker",
+                        "One column at a time in the whole width; each press shows the other "
+                        "(Esc: both)",
+                        [this] { flicker(); }));
+  bar->addWidget(button("Add point pair", "compareAddPair",
+                        "The two crosshairs mark one landmark: untick Link navigation, put each "
+                        "column's crosshair on it, then add the pair",
+                        [this] { addPairAtCrosshairs(); }));
+  bar->addWidget(button("Align", "compareAlign",
+                        "Rigid alignment (rotation and translation) by the point pairs, least "
+                        "squares; the residual is shown in mm",
+                        [this] { align(); }));
+  bar->addWidget(button("Clear pairs", "compareClearPairs", "Forget the point pairs",
+                        [this] { comparison_.clearPairs(); }));
+  bar->addStretch(1);
+  bar->addWidget(button("Close compare", "compareClose", "Back to the four views",
+                        [this] { emit closeRequested(); }));
+  status_ = new QLabel;
+  status_->setObjectName("compareStatus");
+  status_->setWordWrap(true);
+  auto* columns = new QHBoxLayout;
+  columns->setSpacing(2);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addLayout(bar);
+  layout->addWidget(status_);
+  layout->addLayout(columns, 1);
+  placeColumns();
+
+  docConnection_ = study_.document.changed.connect([this] { refreshGeometry(); });
+  modelConnection_ = comparison_.changed.connect([this] { refreshStatus(); });
+  link_ = std::make_unique<ComparisonLink>(comparison_, study_.crosshair, prior_->crosshair,
+                                           &study_.windowLevel, &prior_->windowLevel);
+  refreshGeometry();
+}
+
+CompareView::~CompareView() {
+  study_.document.changed.disconnect(docConnection_);
+  comparison_.changed.disconnect(modelConnection_);
+  link_.reset();
+  // The views are bound to the prior's models: they go first (children would go after).
+  delete fixedColumn_;
+  delete movingColumn_;
+}
+
+void CompareView::placeColumns() {
+  auto* columns = static_cast<QHBoxLayout*>(layout()->itemAt(2)->layout());
+  columns->removeWidget(fixedColumn_);
+  columns->removeWidget(movingColumn_);
+  columns->addWidget(swapped_ ? movingColumn_ : fixedColumn_, 1);
+  columns->addWidget(swapped_ ? fixedColumn_ : movingColumn_, 1);
+  fixedColumn_->setVisible(shown_ != 2);
+  movingColumn_->setVisible(shown_ != 1);
+  layout()->activate();  // the new order now, not at the next event
+}
+
+void CompareView::setPrior(std::shared_ptr<const Volume> prior, const QString& name) {
+  if (!prior) return;
+  prior_->crosshair.setGeometry(prior->dims, prior->spacingMm, prior->direction);
+  const InitialWindow w = initialWindow(*prior);
+  prior_->windowLevel.reset(w.wl, w.source);
+  prior_->document.set(std::move(prior), name.toStdString());
+  comparison_.clearPairs();
+  comparison_.clearAlignment();
+  refreshGeometry();
+}
+
+void CompareView::refreshGeometry() {
+  if (study_.document.empty() || prior_->document.empty()) {
+    refreshStatus();
+    return;
+  }
+  comparison_.setGeometries(VolumeGeometry::of(*study_.document.volume()),
+                            VolumeGeometry::of(*prior_->document.volume()));
+  fixedName_->setText("Study: " + QString::fromStdString(study_.document.name()));
+  movingName_->setText("Prior: " + QString::fromStdString(prior_->document.name()));
+}
+
+QString CompareView::statusText() const {
+  QString text = QString::fromStdString(comparison_.linkText());
+  text += QString(" · %1 point pairs").arg(comparison_.fixedPoints().size());
+  if (!message_.isEmpty()) text += " · " + message_;
+  return text;
+}
+
+void CompareView::refreshStatus() {
+  // The session keeps the alignment with the prior's path (set by the window that opened it).
+  if (study_.comparison)
+    study_.comparison->movingToFixed =
+        comparison_.aligned() ? std::optional(comparison_.movingToFixed()) : std::nullopt;
+  status_->setText(statusText());
+  emit statusChanged(status_->text());
+}
+
+void CompareView::swapSides() {
+  swapped_ = !swapped_;
+  placeColumns();
+}
+
+void CompareView::flicker() {
+  shown_ = shown_ == 1 ? 2 : 1;
+  placeColumns();
+}
+
+void CompareView::sideBySide() {
+  shown_ = 0;
+  placeColumns();
+}
+
+int CompareView::shownColumns() const { return shown_; }
+
+void CompareView::addPairAtCrosshairs() {
+  if (!hasPrior() || study_.document.empty()) return;
+  comparison_.addPair(comparison_.fixed().patientOf(study_.crosshair.centre()),
+                      comparison_.moving().patientOf(prior_->crosshair.centre()));
+}
+
+bool CompareView::align() {
+  try {
+    const RigidAlignment& a = comparison_.align();
+    message_ = "aligned: " + QString::fromStdString(formatAlignment(a));
+    linkBox_->setChecked(true);
+    refreshStatus();
+    return true;
+  } catch (const std::exception& e) {
+    message_ = QString::fromStdString(guiMessage(e.what()));
+    refreshStatus();
+    return false;
+  }
+}
+
+void CompareView::keyPressEvent(QKeyEvent* e) {
+  switch (e->key()) {
+    case Qt::Key_X:
+      swapSides();
+      break;
+    case Qt::Key_F:
+      flicker();
+      break;
+    case Qt::Key_B:  // a slice view keeps Esc (it ends a measuring tool)
+    case Qt::Key_Escape:
+      sideBySide();
+      break;
+    default:
+      QWidget::keyPressEvent(e);
+  }
+}
+
+}  // namespace voxray::ui
