@@ -170,6 +170,13 @@ TEST(Keymap, DuplicateKeyIsRefusedNamingBothActions) {
   EXPECT_EQ(k.key("tool-distance"), "D");
 }
 
+TEST(Keymap, PagesMoveBySlabOrByTen) {
+  EXPECT_EQ(pageSlices(0.0, 1.0), 10);  // thin
+  EXPECT_EQ(pageSlices(10.0, 2.5), 4);  // a 10 mm slab over 2.5 mm slices
+  EXPECT_EQ(pageSlices(5.0, 1.0), 5);
+  EXPECT_EQ(pageSlices(0.4, 1.0), 1);  // never 0: a page always moves
+}
+
 TEST(Keymap, JsonRoundTripAndBadFields) {
   ReadingKeymap k;
   k.applyJson(

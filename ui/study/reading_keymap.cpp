@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -75,6 +76,11 @@ void checkKeymap(const std::vector<ReadingAction>& actions, const KeyNormaliser&
                        "' (" + it->second->id + ") and '" + a.title + "' (" + a.id +
                        "); give each action its own key");
   }
+}
+
+int pageSlices(double slabMm, double sliceSpacingMm) {
+  if (slabMm <= 0.0 || sliceSpacingMm <= 0.0) return 10;
+  return std::max(1, int(std::lround(slabMm / sliceSpacingMm)));
 }
 
 ReadingKeymap::ReadingKeymap() : actions_(defaultReadingActions()) {}

@@ -52,6 +52,10 @@ class ReadingKeymap {
   std::vector<ReadingAction> actions_;
 };
 
+// Slices a page moves: a slab view its thickness in slices (the next slab touches this one,
+// at least 1), a thin view 10 (what the views did before the keys were configurable).
+int pageSlices(double slabMm, double sliceSpacingMm);
+
 // Throws Error (Input) when two of ACTIONS share a key, naming both (and the key), or one
 // has a key the normaliser does not read.
 void checkKeymap(const std::vector<ReadingAction>& actions, const KeyNormaliser& normalise);
