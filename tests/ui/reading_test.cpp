@@ -334,6 +334,27 @@ class ReadingTest : public QObject {
     QVERIFY(!fs::exists(kBrain + "/anon"));
   }
 
+  // README's docs/images/reading-1plus3.png (run with VOXRAY_READING_SHOT=PATH under
+  // xvfb-run -s "-screen 0 1920x1080x24"): the Philips head CT in the 1+3 layout, a distance
+  // on slice 14 marked as a key image. Skipped otherwise.
+  void readmeScreenshot() {
+    const QString shot = qEnvironmentVariable("VOXRAY_READING_SHOT");
+    if (shot.isEmpty()) QSKIP("set VOXRAY_READING_SHOT=PATH to write the README's screenshot");
+    Quality q = fixture_.models->render.quality();
+    q.resolution = {0, 0};  // the view's size
+    fixture_.models->render.setQuality(q);
+    window_->resize(1900, 1040);
+    openBrain();
+    reading_->setLayout(ViewLayout::OnePlusThree);
+    fixture_.models->crosshair.setVoxel({256, 256, 14});
+    fixture_.models->measurements.add(MeasureKind::Distance, {{180, 200, 14}, {330, 310, 14}}, 2);
+    // Without a window manager the window gets no focus for K: the action's own call.
+    QVERIFY(results_->markKeyImage());
+    waitFullFrame(*window_);
+    QTest::qWait(500);
+    QVERIFY(window_->grab().save(shot));
+  }
+
  private:
   void openBrain() {
     QSignalSpy shown(window_, &MainWindow::volumeShown);
