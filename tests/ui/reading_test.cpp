@@ -350,6 +350,8 @@ class ReadingTest : public QObject {
     fixture_.models->measurements.add(MeasureKind::Distance, {{180, 200, 14}, {330, 310, 14}}, 2);
     // Without a window manager the window gets no focus for K: the action's own call.
     QVERIFY(results_->markKeyImage());
+    // A camera change after the load: the frame waited for is the new volume's.
+    fixture_.models->render.update(kCamera, [](RenderParams& p) { p.camera.azimuthDeg = 20.0; });
     waitFullFrame(*window_);
     QTest::qWait(500);
     QVERIFY(window_->grab().save(shot));
