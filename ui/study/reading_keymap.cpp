@@ -124,7 +124,9 @@ void ReadingKeymap::applyJson(const std::string& text, const KeyNormaliser& norm
   if (!doc.contains("keys") || !doc["keys"].is_object())
     throw inputError("keys: give an object of action id to key");
   auto next = actions_;
-  for (const auto& [id, key] : doc["keys"].items()) {
+  for (const auto& item : doc["keys"].items()) {
+    const std::string& id = item.key();
+    const auto& key = item.value();
     auto it = std::find_if(next.begin(), next.end(), [&](const auto& a) { return a.id == id; });
     if (it == next.end()) {
       std::string ids;
