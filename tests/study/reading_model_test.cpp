@@ -10,6 +10,7 @@
 #include "layout_model.h"
 #include "reading_keymap.h"
 #include "results_export.h"
+#include "study_attributes.h"
 #include "voxray/io/error.h"
 #include "voxray/io/phantom.h"
 
@@ -203,6 +204,21 @@ TEST(Keymap, JsonRoundTripAndBadFields) {
             }).find("keys.tool-angle: 'bad' is not a key"),
             std::string::npos);
 }
+
+#ifdef VOXRAY_HAS_DICOM
+// Body Part Examined as the headers say it (dcmdump): BRAIN for the Philips volume, HEAD for
+// the GE tilt series; another series' UID finds none.
+TEST(HangingProtocols, BodyPartComesFromTheSeriesHeaders) {
+  const std::string dicom = VOXRAY_DATA_DIR "/dicom/";
+  EXPECT_EQ(seriesBodyPart(dicom + "ct-philips-phantom/S2010", ""), "BRAIN");
+  EXPECT_EQ(seriesBodyPart(dicom + "ct-ge-tilt", ""), "HEAD");
+  EXPECT_EQ(seriesBodyPart(dicom + "ct-ge-tilt", "1.2.3.4"), "");
+  EXPECT_EQ(seriesBodyPart(dicom + "no-such-folder", ""), "");
+  HangingProtocols p;
+  p.rules.push_back({"head", "CT", "/^(head|brain)$/", "", ViewLayout::One, "", ""});
+  EXPECT_NE(matchRule(p, {"CT", seriesBodyPart(dicom + "ct-ge-tilt", ""), ""}), nullptr);
+}
+#endif
 
 TEST(Results, MeasurementsGetTheCliLabelsAndTheEngineValues) {
   Volume v = makeHeadPhantom(32);

@@ -195,7 +195,8 @@ class ReadingTest : public QObject {
     const fs::path dir = freshDir("rules");
     std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
       {"name": "chest", "match": {"series-description": "chest"}, "window": "Lung"},
-      {"name": "head bone", "match": {"modality": "CT", "series-description": "/brain\\s+5mm/"},
+      {"name": "head bone", "match": {"modality": "CT", "body-part": "brain",
+                                      "series-description": "/brain\\s+5mm/"},
        "layout": "1x2", "window": "Bone", "preset": "CT-Skin"}]})";
     reading_->setConfigFolder(QString::fromStdString(dir.string()));
     QVERIFY(errors_.isEmpty());

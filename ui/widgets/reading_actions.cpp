@@ -20,6 +20,7 @@
 #include "json_text_dialog.h"
 #include "main_window.h"
 #include "slice_view.h"
+#include "study_attributes.h"
 #include "study_browser_dialog.h"
 #include "voxray/io/error.h"
 #include "window_level.h"
@@ -167,9 +168,7 @@ SliceView& ReadingActions::focusedSlice() const { return window_.sliceView(focus
 QString ReadingActions::applyHangingProtocol() {
   const auto v = models_.document.volume();
   if (!v) return {};
-  // Body part is not among what the volume reader keeps: rules on it match only an empty
-  // pattern until io reads BodyPartExamined.
-  const HangingRule* r = matchRule(protocols_, {v->modality, "", v->study.seriesDescription});
+  const HangingRule* r = matchRule(protocols_, studyAttributes(*v, models_.source.path));
   if (!r) return {};
   if (r->layout) setLayout(*r->layout);
   if (!r->window.empty())
