@@ -12,6 +12,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenuBar>
+#include <QPlainTextEdit>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTest>
@@ -19,6 +20,7 @@
 #include <dcmtk/dcmdata/dctk.h>
 
 #include "help_dialogs.h"
+#include "json_text_dialog.h"
 #include "reading_actions.h"
 #include "results_actions.h"
 #include "slice_view.h"
@@ -212,6 +214,27 @@ class ReadingTest : public QObject {
     QCOMPARE(reading_->layout(), ViewLayout::OneByTwo);
     QVERIFY(!window_->sliceView(1).isVisible());
     QCOMPARE(fixture_.models->render.params().preset, std::string("CT-Skin"));
+  }
+
+  // Reading → Hanging protocols…: a bad text is kept in the editor with the field named; a
+  // good one is saved in the config folder and used.
+  void ruleEditorNamesTheFieldAndSavesWhatValidates() {
+    JsonTextDialog d(window_, "Hanging protocols", "", "", "",
+                     [this](const std::string& json) { reading_->setProtocolsJson(json); });
+    d.editor()->setPlainText(
+        R"({"voxray-hanging-protocols": 1, "rules": [{"name": "x", "layout": "2x3"}]})");
+    QVERIFY(!d.save());
+    QVERIFY2(d.message()->text().contains("rules[0].layout: '2x3' is not a layout"),
+             qPrintable(d.message()->text()));
+    QVERIFY(!fs::exists(reading_->hangingProtocolsPath().toStdString()));
+    d.editor()->setPlainText(
+        R"({"voxray-hanging-protocols": 1, "rules": [{"name": "x", "window": "Liver"}]})");
+    QVERIFY(d.save());
+    QVERIFY(d.message()->text().isEmpty());
+    QCOMPARE(reading_->protocols().rules.size(), size_t(1));
+    QCOMPARE(reading_->protocols().rules[0].window, std::string("Liver"));
+    QCOMPARE(loadHangingProtocols(reading_->hangingProtocolsPath().toStdString()).rules[0].name,
+             std::string("x"));
   }
 
   void nextAndPreviousSeriesKeys() {
