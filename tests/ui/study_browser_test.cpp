@@ -10,6 +10,7 @@
 #include <QListWidget>
 #include <QTreeWidget>
 
+#include "slice_view.h"
 #include "study_browser_dialog.h"
 #include "voxray/io/load.h"
 #include "voxray/studydb/study_db.h"
@@ -117,6 +118,37 @@ class StudyBrowserTest : public QObject {
     QCOMPARE(tree->topLevelItemCount(), 0);
     QCOMPARE(b->status()->text(), QString("0 studies of 0 patients (3 in the database)"));
     QVERIFY(errors_.isEmpty());
+  }
+
+  // Issue 37, reading: ] and [ in the views open the next and previous study of the
+  // browser's list, in the order it shows them.
+  void nextStudyKeysFollowTheBrowsersList() {
+    const std::string db = tempFolder("db");
+    importScans(db);
+    StudyBrowserDialog* b = start(db);
+    std::vector<QString> order;  // the studies as listed, patient by patient
+    for (int i = 0; i < b->tree()->topLevelItemCount(); ++i)
+      for (int j = 0; j < b->tree()->topLevelItem(i)->childCount(); ++j)
+        order.push_back(b->tree()->topLevelItem(i)->child(j)->data(0, Qt::UserRole).toString());
+    QCOMPARE(order.size(), size_t(3));
+    MainWindow& w = *w_.window;
+    auto press = [&](Qt::Key key) {
+      w.activateWindow();
+      QVERIFY(QTest::qWaitForWindowActive(&w));
+      w.sliceView(0).setFocus();
+      QTRY_VERIFY(w.sliceView(0).hasFocus());
+      QTest::keyClick(&w.sliceView(0), key);
+    };
+    auto shownStudy = [&] {
+      return QString::fromStdString(waitForVolume(w).study.studyInstanceUid);
+    };
+    press(Qt::Key_BracketRight);  // the phantom is in no list: the list's first study
+    QCOMPARE(shownStudy(), order[0]);
+    press(Qt::Key_BracketRight);
+    QCOMPARE(shownStudy(), order[1]);
+    press(Qt::Key_BracketLeft);
+    QCOMPARE(shownStudy(), order[0]);
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
   }
 
   void doubleClickOpensTheSeries() {

@@ -34,7 +34,7 @@ constexpr const char* kViewControls[][2] = {
      "turn the other two planes about this view's normal (oblique MPR)"},
     {"Slice view: right drag", "window (left-right) and level (up-down)"},
     {"Slice view: middle drag", "pan"},
-    {"Slice view: wheel, arrow keys, Page Up/Down", "next slice (Page: 10 slices)"},
+    {"Slice view: wheel, arrow keys", "next slice (pages: Reading → Page forward / back)"},
     {"Slice view: Ctrl+wheel", "zoom"},
     {"Any view: double click", "maximise or restore it"},
     {"3D view: Ctrl+click (iso, dvr)",

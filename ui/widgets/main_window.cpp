@@ -27,7 +27,9 @@
 #include "movie_dialog.h"
 #include "pacs_dialog.h"
 #include "raw_import_dialog.h"
+#include "reading_actions.h"
 #include "recent_files.h"
+#include "results_actions.h"
 #include "segment_panel.h"
 #include "series_picker.h"
 #include "session_state.h"
@@ -132,6 +134,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   loader_ = new LoadController(this);
   connect(loader_, &LoadController::loaded, this,
           [this](VolumeSeries series, const QString& name, const QString& input) {
+            openedWithValues_ = !studyValues_.empty();
             try {
               openStudy(models_, std::move(series), name.toStdString(),
                         std::exchange(studyValues_, {}), loadingTimePoint_);
@@ -155,6 +158,12 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   wireCompare();
   sessions_ = new SessionActions(*this, models_);
   buildMenus();
+  // Issue 37: the Reading and Results menus (keys, layouts, hanging protocols; SR, KOS,
+  // anonymised export), in files of their own.
+  auto* reading = new ReadingActions(*this, models_);
+  auto* results = new ResultsActions(*this, models_, *reading);
+  connect(reading, &ReadingActions::failed, this, &MainWindow::showError);
+  connect(results, &ResultsActions::failed, this, &MainWindow::showError);
   qApp->installEventFilter(this);
   updateTitle();
   onModelChange<>(this, models_.document.changed, [this] { updateTitle(); });

@@ -84,6 +84,10 @@ class MainWindow : public QMainWindow {
   // PATH (a volume or a session) at the top of File → Open recent.
   void addRecent(const std::string& path);
 
+  // Whether the volume last shown came with values of its own (a session): the hanging
+  // protocols leave such a view as it was saved.
+  bool openedWithValues() const { return openedWithValues_; }
+
   // Where load, render and export errors go: a modal message box unless a test (or an
   // embedding) sets its own sink.
   using ErrorSink = std::function<void(const QString& title, const QString& message)>;
@@ -140,6 +144,7 @@ class MainWindow : public QMainWindow {
   FrameRateStats stats_;
   ErrorSink errorSink_;
   std::map<std::string, std::string> studyValues_;  // for the volume being loaded
+  bool openedWithValues_ = false;
   SessionActions* sessions_ = nullptr;
   QDockWidget* measureDock_ = nullptr;  // View → Measurements reopens it
   QDockWidget* segmentDock_ = nullptr;  // View → Segments

@@ -3,7 +3,7 @@
 namespace voxray::ui {
 
 ViewGrid::ViewGrid(QWidget* tl, QWidget* tr, QWidget* bl, QWidget* br, QWidget* parent)
-    : QWidget(parent), views_{tl, tr, bl, br} {
+    : QWidget(parent), views_{tl, tr, bl, br}, shown_(views_) {
   auto* grid = new QGridLayout(this);
   grid->setContentsMargins(0, 0, 0, 0);
   grid->setSpacing(2);
@@ -11,8 +11,8 @@ ViewGrid::ViewGrid(QWidget* tl, QWidget* tr, QWidget* bl, QWidget* br, QWidget* 
 }
 
 void ViewGrid::toggleMaximised(QWidget* view) {
-  maximised_ = maximised_ == view || !views_.contains(view) ? nullptr : view;
-  for (QWidget* v : views_) v->setVisible(!maximised_ || v == maximised_);
+  maximised_ = maximised_ == view || !shown_.contains(view) ? nullptr : view;
+  for (QWidget* v : views_) v->setVisible(maximised_ ? v == maximised_ : shown_.contains(v));
 }
 
 void ViewGrid::setMaximised(int index) {
@@ -21,5 +21,25 @@ void ViewGrid::setMaximised(int index) {
 }
 
 int ViewGrid::maximisedIndex() const { return maximised_ ? int(views_.indexOf(maximised_)) : -1; }
+
+void ViewGrid::arrange(const std::vector<LayoutCell>& cells) {
+  auto* grid = static_cast<QGridLayout*>(layout());
+  for (QWidget* v : views_) grid->removeWidget(v);
+  // Stretch only the rows and columns this layout uses (a 1+3 has three rows).
+  for (int i = 0; i < 4; ++i) {
+    grid->setRowStretch(i, 0);
+    grid->setColumnStretch(i, 0);
+  }
+  shown_.clear();
+  for (const LayoutCell& c : cells) {
+    QWidget* v = views_[int(c.view)];
+    grid->addWidget(v, c.row, c.column, c.rowSpan, c.columnSpan);
+    shown_ << v;
+    for (int r = c.row; r < c.row + c.rowSpan; ++r) grid->setRowStretch(r, 1);
+    for (int k = c.column; k < c.column + c.columnSpan; ++k) grid->setColumnStretch(k, 1);
+  }
+  maximised_ = nullptr;
+  for (QWidget* v : views_) v->setVisible(shown_.contains(v));
+}
 
 }  // namespace voxray::ui

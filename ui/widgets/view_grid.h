@@ -1,8 +1,13 @@
 #pragma once
-// The 2x2 layout of the 3D view and the three slice views. Any view can be maximised and
-// restored (double-click on it, or toggleMaximised for the focused one).
+// The layout of the 3D view and the three slice views: the classic 2x2 grid, or any layout of
+// layout_model.h (arrange). Any shown view can be maximised and restored (double-click on it,
+// or toggleMaximised for the focused one).
+#include <vector>
+
 #include <QGridLayout>
 #include <QWidget>
+
+#include "layout_model.h"
 
 namespace voxray::ui {
 
@@ -16,9 +21,13 @@ class ViewGrid : public QWidget {
   QWidget* maximised() const { return maximised_; }
   void setMaximised(int index);  // -1: all four (saved layout)
   int maximisedIndex() const;
+  // Places the views (by GridView number: the constructor's order) in CELLS; the others hide.
+  void arrange(const std::vector<LayoutCell>& cells);
+  bool shows(QWidget* view) const { return shown_.contains(view); }
 
  private:
   QList<QWidget*> views_;
+  QList<QWidget*> shown_;  // the current layout's views
   QWidget* maximised_ = nullptr;
 };
 

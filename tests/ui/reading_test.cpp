@@ -1,0 +1,409 @@
+// Issue 37, reading in the workstation: the reading keys (layouts, W/L presets on 1–6, pages,
+// tools, next/previous series), the keymap's validation, hanging protocols applied when a
+// study opens, and the Results menu's files read back with DCMTK (the SR's values in mm and
+// its image references, the KOS's referenced images = the slices marked with K, the CSV,
+// the anonymised copy), never written into the data's folder and replaced only after yes.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenuBar>
+#include <QPlainTextEdit>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTest>
+
+#include <dcmtk/dcmdata/dctk.h>
+
+#include "help_dialogs.h"
+#include "json_text_dialog.h"
+#include "reading_actions.h"
+#include "results_actions.h"
+#include "slice_view.h"
+#include "window_fixture.h"
+
+namespace voxray::ui::test {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kData = VOXRAY_DATA_DIR "/dicom/";
+// Philips head CT, 28 slices of 512² at 0.451171875 mm ("STD BRAIN 5MM", CT).
+const std::string kBrain = kData + "ct-philips-phantom/S2010";
+
+fs::path freshDir(const std::string& name) {
+  const fs::path p = fs::path(VOXRAY_TEST_TMP) / ("reading-" + std::to_string(getpid())) / name;
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+// Every value of TAG anywhere in ITEM (sequences included), as DCMTK reads it.
+void collect(DcmItem& item, const DcmTagKey& tag, std::vector<std::string>& out) {
+  for (unsigned long i = 0; i < item.card(); ++i) {
+    DcmElement* e = item.getElement(i);
+    if (e->getTag() == tag) {
+      OFString v;
+      if (e->getOFStringArray(v).good()) out.emplace_back(v.c_str());
+    }
+    if (auto* seq = dynamic_cast<DcmSequenceOfItems*>(e))
+      for (unsigned long k = 0; k < seq->card(); ++k) collect(*seq->getItem(k), tag, out);
+  }
+}
+
+std::vector<std::string> valuesIn(const fs::path& file, const DcmTagKey& tag) {
+  DcmFileFormat f;
+  if (f.loadFile(file.c_str()).bad()) return {};
+  std::vector<std::string> out;
+  collect(*f.getDataset(), tag, out);
+  return out;
+}
+
+}  // namespace
+
+class ReadingTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void init() {
+    QVERIFY(fixture_.start());
+    window_ = fixture_.window.get();
+    window_->setErrorSink(
+        [this](const QString& title, const QString& m) { errors_ << title + ": " + m; });
+    errors_.clear();
+    reading_ = window_->findChild<ReadingActions*>();
+    results_ = window_->findChild<ResultsActions*>();
+    QVERIFY(reading_ && results_);
+    // Each test's own config folder: no user file, the embedded defaults.
+    reading_->setConfigFolder(QString::fromStdString(freshDir("config").string()));
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_));
+    window_->sliceView(0).setFocus();
+    QTRY_VERIFY(window_->sliceView(0).hasFocus());
+  }
+  void cleanup() { fixture_.stop(); }
+
+  void layoutKeysChangeTheGrid() {
+    window_->resize(1800, 1000);  // room for the views' minimum widths in every layout
+    SliceView& axial = window_->sliceView(0);
+    QWidget& volume = window_->volumeView();
+    QTest::keyClick(&axial, Qt::Key_1, Qt::ControlModifier);  // 1x1: the axial view alone
+    QCOMPARE(reading_->layout(), ViewLayout::One);
+    QVERIFY(axial.isVisible());
+    QVERIFY(!volume.isVisible());
+    QVERIFY(!window_->sliceView(1).isVisible());
+    // It takes the whole grid (less the layout's zero margins).
+    QTRY_COMPARE(axial.width(), window_->grid().width());
+    QTest::keyClick(&axial, Qt::Key_2, Qt::ControlModifier);  // 1x2: axial beside 3D
+    QVERIFY(volume.isVisible() && axial.isVisible() && !window_->sliceView(2).isVisible());
+    QTRY_VERIFY2(std::abs(axial.width() - volume.width()) <= 2,
+                 qPrintable(QString("%1 %2").arg(axial.width()).arg(volume.width())));
+    QTRY_VERIFY(axial.x() < volume.x());
+    QTest::keyClick(&axial, Qt::Key_4, Qt::ControlModifier);  // 1+3: axial twice as wide
+    for (int i = 0; i < 3; ++i) QVERIFY(window_->sliceView(i).isVisible());
+    QTRY_VERIFY(axial.height() > 2 * window_->sliceView(1).height());
+    QTest::keyClick(&axial, Qt::Key_6, Qt::ControlModifier);  // 3D only
+    QVERIFY(volume.isVisible() && !axial.isVisible());
+    volume.setFocus();
+    QTest::keyClick(&volume, Qt::Key_5, Qt::ControlModifier);  // back to MPR+3D
+    QCOMPARE(reading_->layout(), ViewLayout::MprPlus3d);
+    for (int i = 0; i < 3; ++i) QVERIFY(window_->sliceView(i).isVisible());
+    QVERIFY(volume.isVisible());
+    QTRY_VERIFY(volume.x() < axial.x());  // 3D top left again
+  }
+
+  void numberKeysSetTheWindowPresets() {
+    SliceView& axial = window_->sliceView(0);
+    const std::pair<Qt::Key, WindowLevel> expected[] = {{Qt::Key_1, {80, 40}},      // Brain
+                                                        {Qt::Key_3, {1500, -600}},  // Lung
+                                                        {Qt::Key_5, {400, 50}},     // Abdomen
+                                                        {Qt::Key_6, {1800, 400}}};  // Bone
+    for (const auto& [key, wl] : expected) {
+      QTest::keyClick(&axial, key);
+      QCOMPARE(fixture_.models->windowLevel.value().width, wl.width);
+      QCOMPARE(fixture_.models->windowLevel.value().level, wl.level);
+    }
+  }
+
+  void pageKeysMoveByTenOrTheSlab() {
+    SliceView& axial = window_->sliceView(0);
+    CrosshairModel& c = fixture_.models->crosshair;
+    c.setVoxel({32, 32, 20});
+    QTest::keyClick(&axial, Qt::Key_PageUp);
+    QCOMPARE(c.sliceOf(axial.axes()), 30);
+    QTest::keyClick(&axial, Qt::Key_PageDown);
+    QTest::keyClick(&axial, Qt::Key_PageDown);
+    QCOMPARE(c.sliceOf(axial.axes()), 10);
+    // A slab pages by its thickness: the phantom's slices are spacing[2] apart.
+    const double spacing = fixture_.models->document.volume()->spacingMm[axial.axes().nAxis];
+    Slab slab;
+    slab.thicknessMm = 4 * spacing;
+    c.setSlab(axial.orientation(), slab);
+    QTest::keyClick(&axial, Qt::Key_PageUp);
+    QCOMPARE(c.sliceOf(axial.axes()), 14);
+  }
+
+  void toolKeysPickTheTool() {
+    SliceView& axial = window_->sliceView(0);
+    MeasurementModel& m = fixture_.models->measurements;
+    QTest::keyClick(&axial, Qt::Key_D);
+    QCOMPARE(m.tool(), MeasureTool::Distance);
+    QTest::keyClick(&axial, Qt::Key_A);
+    QCOMPARE(m.tool(), MeasureTool::Angle);
+    QTest::keyClick(&axial, Qt::Key_E);
+    QCOMPARE(m.tool(), MeasureTool::Ellipse);
+    QTest::keyClick(&axial, Qt::Key_P);
+    QCOMPARE(m.tool(), MeasureTool::None);
+  }
+
+  void shortcutsDialogListsTheReadingKeys() {
+    const QString html = shortcutsHtml(*window_->menuBar());
+    for (const char* expected :
+         {"<b>Ctrl+1</b></td><td>Reading → Layout → 1×1 (axial)",
+          "<b>Ctrl+5</b></td><td>Reading → Layout → MPR+3D",
+          "<b>1</b></td><td>Reading → Window preset → Brain",
+          "<b>N</b></td><td>Reading → Next series",
+          "<b>Shift+N</b></td><td>Reading → Previous series",
+          "<b>PgUp</b></td><td>Reading → Page forward", "<b>D</b></td><td>Reading → Distance",
+          "<b>K</b></td><td>Results → Mark key image"})
+      QVERIFY2(html.contains(QString::fromUtf8(expected)), expected);
+  }
+
+  void keymapFileChangesKeysAndADuplicateIsRefused() {
+    const fs::path dir = freshDir("keymap");
+    std::ofstream(dir / "keymap.json") << R"({"voxray-keymap": 1, "keys": {"tool-distance": "M"}})";
+    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+    SliceView& axial = window_->sliceView(0);
+    QTest::keyClick(&axial, Qt::Key_M);
+    QCOMPARE(fixture_.models->measurements.tool(), MeasureTool::Distance);
+    // M given twice: refused naming both actions, the defaults stay.
+    std::ofstream(dir / "keymap.json", std::ios::trunc)
+        << R"({"voxray-keymap": 1, "keys": {"tool-distance": "M", "tool-angle": "m"}})";
+    fixture_.models->measurements.setTool(MeasureTool::None);
+    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+    QTRY_COMPARE(errors_.size(), 1);
+    QVERIFY2(errors_[0].contains("(tool-distance)") && errors_[0].contains("(tool-angle)"),
+             qPrintable(errors_[0]));
+    QCOMPARE(reading_->action("tool-distance")->shortcut(), QKeySequence("D"));
+    QTest::keyClick(&axial, Qt::Key_D);
+    QCOMPARE(fixture_.models->measurements.tool(), MeasureTool::Distance);
+  }
+
+  void matchingRuleAppliesItsWindowAndLayout() {
+    const fs::path dir = freshDir("rules");
+    std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
+      {"name": "chest", "match": {"series-description": "chest"}, "window": "Lung"},
+      {"name": "head bone", "match": {"modality": "CT", "body-part": "brain",
+                                      "series-description": "/brain\\s+5mm/"},
+       "layout": "1x2", "window": "Bone", "preset": "CT-Skin"}]})";
+    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+    QVERIFY(errors_.isEmpty());
+    QSignalSpy applied(reading_, &ReadingActions::protocolApplied);
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open(kBrain, {});
+    QVERIFY(shown.wait(120000));
+    QCOMPARE(applied.size(), 1);
+    QCOMPARE(applied[0][0].toString(), QString("head bone"));
+    QCOMPARE(fixture_.models->windowLevel.value().width, 1800.0);  // Bone, not the DICOM window
+    QCOMPARE(fixture_.models->windowLevel.value().level, 400.0);
+    QCOMPARE(fixture_.models->windowLevel.source(), std::string("hanging protocol: head bone"));
+    QCOMPARE(reading_->layout(), ViewLayout::OneByTwo);
+    QVERIFY(!window_->sliceView(1).isVisible());
+    QCOMPARE(fixture_.models->render.params().preset, std::string("CT-Skin"));
+  }
+
+  // Reading → Hanging protocols…: a bad text is kept in the editor with the field named; a
+  // good one is saved in the config folder and used.
+  void ruleEditorNamesTheFieldAndSavesWhatValidates() {
+    JsonTextDialog d(window_, "Hanging protocols", "", "", "",
+                     [this](const std::string& json) { reading_->setProtocolsJson(json); });
+    d.editor()->setPlainText(
+        R"({"voxray-hanging-protocols": 1, "rules": [{"name": "x", "layout": "2x3"}]})");
+    QVERIFY(!d.save());
+    QVERIFY2(d.message()->text().contains("rules[0].layout: '2x3' is not a layout"),
+             qPrintable(d.message()->text()));
+    QVERIFY(!fs::exists(reading_->hangingProtocolsPath().toStdString()));
+    d.editor()->setPlainText(
+        R"({"voxray-hanging-protocols": 1, "rules": [{"name": "x", "window": "Liver"}]})");
+    QVERIFY(d.save());
+    QVERIFY(d.message()->text().isEmpty());
+    QCOMPARE(reading_->protocols().rules.size(), size_t(1));
+    QCOMPARE(reading_->protocols().rules[0].window, std::string("Liver"));
+    QCOMPARE(loadHangingProtocols(reading_->hangingProtocolsPath().toStdString()).rules[0].name,
+             std::string("x"));
+  }
+
+  void nextAndPreviousSeriesKeys() {
+    // A study folder of two volume series (links to the shared files: nothing copied).
+    const fs::path study = freshDir("two-series");
+    for (const auto& src : {kData + "ct-ge-tilt", kBrain})
+      for (const auto& f : fs::directory_iterator(src))
+        if (f.is_regular_file() && f.path().filename() != "DIRFILE")
+          fs::create_symlink(f.path(), study / (fs::path(src).filename().string() + "-" +
+                                                f.path().filename().string()));
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    LoadOptions first;
+    first.series = "";
+    window_->open(study.string(), first);
+    QVERIFY(shown.wait(120000));
+    const std::string a = fixture_.models->document.volume()->study.seriesInstanceUid;
+    focusView(window_->sliceView(0));
+    QTest::keyClick(&window_->sliceView(0), Qt::Key_N);
+    // Not a series further: the status bar says so at once, no load starts.
+    const bool wentOn = shown.wait(30000);
+    if (!wentOn) {  // the first was the last by series number: previous goes to the other
+      focusView(window_->sliceView(0));
+      QTest::keyClick(&window_->sliceView(0), Qt::Key_N, Qt::ShiftModifier);
+      QVERIFY(shown.wait(120000));
+    }
+    const std::string b = fixture_.models->document.volume()->study.seriesInstanceUid;
+    QVERIFY(!b.empty());
+    QVERIFY(a != b);
+    focusView(window_->sliceView(0));
+    QTest::keyClick(&window_->sliceView(0), Qt::Key_N, wentOn ? Qt::ShiftModifier : Qt::NoModifier);
+    QVERIFY(shown.wait(120000));
+    QCOMPARE(fixture_.models->document.volume()->study.seriesInstanceUid, a);
+  }
+
+  void reportHoldsTheValuesInMmAndItsImages() {
+    openBrain();
+    const auto v = fixture_.models->document.volume();
+    QCOMPARE(v->spacingMm.x, 0.451171875);  // PixelSpacing
+    // A 60 x 80 pixel 3-4-5 triangle on slice 5: 100 pixels = 45.1171875 mm.
+    fixture_.models->measurements.add(MeasureKind::Distance, {{100, 100, 5}, {160, 180, 5}}, 2);
+    const fs::path out = freshDir("sr");
+    QVERIFY(results_->saveReport(QString::fromStdString((out / "sr.dcm").string())));
+    const auto numbers = valuesIn(out / "sr.dcm", DCM_NumericValue);
+    QCOMPARE(numbers.size(), size_t(1));
+    // The SR writes 9 significant digits (%.9g): 45.1171875 has 9, so 1e-6 mm holds.
+    QVERIFY(std::abs(std::stod(numbers[0]) - 45.1171875) < 1e-6);
+    const auto units = valuesIn(out / "sr.dcm", DCM_CodeValue);
+    QVERIFY(std::find(units.begin(), units.end(), "mm") != units.end());
+    const auto refs = valuesIn(out / "sr.dcm", DCM_ReferencedSOPInstanceUID);
+    QVERIFY(std::find(refs.begin(), refs.end(), v->study.sliceSopInstanceUids[5]) != refs.end());
+    QCOMPARE(valuesIn(out / "sr.dcm", DCM_StudyInstanceUID)[0], v->study.studyInstanceUid);
+    QVERIFY(results_->written().contains(QString::fromStdString((out / "sr.dcm").string())));
+
+    // The CSV: the same value (6 significant digits as voxray-cli writes it) on slice 5.
+    QVERIFY(results_->saveCsv(QString::fromStdString((out / "m.csv").string())));
+    std::ifstream csv(out / "m.csv");
+    const std::string text((std::istreambuf_iterator<char>(csv)), {});
+    QVERIFY2(text.find("line 1,length,length,45.1172,mm,5,") != std::string::npos, text.c_str());
+
+    // Asked before replacing: no leaves the file as it was; yes replaces it.
+    fixture_.models->measurements.add(MeasureKind::Distance, {{0, 0, 5}, {0, 10, 5}}, 2);
+    int asked = 0;
+    results_->setConfirm([&](const QString&) { return ++asked == 2; });
+    QVERIFY(!results_->saveReport(QString::fromStdString((out / "sr.dcm").string())));
+    QCOMPARE(valuesIn(out / "sr.dcm", DCM_NumericValue).size(), size_t(1));
+    QVERIFY(results_->saveReport(QString::fromStdString((out / "sr.dcm").string())));
+    QCOMPARE(asked, 2);
+    QCOMPARE(valuesIn(out / "sr.dcm", DCM_NumericValue).size(), size_t(2));
+
+    // Never into the data's folder.
+    const fs::path inData = fs::path(kBrain) / "voxray-sr.dcm";
+    QVERIFY(!results_->saveReport(QString::fromStdString(inData.string())));
+    QVERIFY(!fs::exists(inData));
+    QVERIFY(errors_.last().contains("results never go into the data's folder"));
+  }
+
+  void keyImagesAreTheSlicesMarkedWithK() {
+    openBrain();
+    const auto v = fixture_.models->document.volume();
+    SliceView& axial = window_->sliceView(0);
+    QCOMPARE(axial.axes().nAxis, 2);  // the acquisition plane: its slices are the files
+    CrosshairModel& c = fixture_.models->crosshair;
+    focusView(axial);
+    for (int k : {3, 17, 9, 17, 20}) {  // 17 twice: unmarked again
+      c.setVoxel({256, 256, k});
+      QTest::keyClick(&axial, Qt::Key_K);
+    }
+    QVERIFY2(results_->keyImages().slices() == (std::vector<int>{3, 9, 20}),
+             qPrintable(errors_.join('\n') + window_->statusBar()->currentMessage()));
+    // The coronal view shows no image of the series: refused, nothing marked.
+    focusView(window_->sliceView(1));
+    QTest::keyClick(&window_->sliceView(1), Qt::Key_K);
+    QCOMPARE(results_->keyImages().slices().size(), size_t(3));
+    QVERIFY(errors_.last().contains("Cannot mark a key image"));
+
+    const fs::path out = freshDir("kos");
+    QVERIFY(results_->saveKeyImages(QString::fromStdString((out / "kos.dcm").string())));
+    const auto refs = valuesIn(out / "kos.dcm", DCM_ReferencedSOPInstanceUID);
+    const std::set<std::string> referenced(refs.begin(), refs.end());
+    const std::set<std::string> marked = {v->study.sliceSopInstanceUids[3],
+                                          v->study.sliceSopInstanceUids[9],
+                                          v->study.sliceSopInstanceUids[20]};
+    QCOMPARE(referenced, marked);
+    QCOMPARE(valuesIn(out / "kos.dcm", DCM_SOPClassUID)[0],
+             std::string(UID_KeyObjectSelectionDocumentStorage));
+  }
+
+  void anonymisedExportOfTheSeries() {
+    openBrain();
+    const fs::path out = freshDir("anon");
+    fs::remove_all(out);
+    QVERIFY(results_->anonymisedExport(QString::fromStdString(out.string()), false,
+                                       DateHandling::Remove));
+    QCOMPARE(results_->written().size(), 28);  // the series' 28 images
+    const fs::path first = results_->written()[0].toStdString();
+    QCOMPARE(valuesIn(first, DCM_PatientName)[0], std::string("ANONYMOUS"));
+    QVERIFY(valuesIn(first, DCM_StudyDate).empty() || valuesIn(first, DCM_StudyDate)[0].empty());
+    // Into the data's folder: refused by io/report, nothing written there.
+    QVERIFY(!results_->anonymisedExport(QString::fromStdString(kBrain + "/anon"), false,
+                                        DateHandling::Remove));
+    QVERIFY(!fs::exists(kBrain + "/anon"));
+  }
+
+  // README's docs/images/reading-1plus3.png (run with VOXRAY_READING_SHOT=PATH under
+  // xvfb-run -s "-screen 0 1920x1080x24"): the Philips head CT in the 1+3 layout, a distance
+  // on slice 14 marked as a key image. Skipped otherwise.
+  void readmeScreenshot() {
+    const QString shot = qEnvironmentVariable("VOXRAY_READING_SHOT");
+    if (shot.isEmpty()) QSKIP("set VOXRAY_READING_SHOT=PATH to write the README's screenshot");
+    Quality q = fixture_.models->render.quality();
+    q.resolution = {0, 0};  // the view's size
+    fixture_.models->render.setQuality(q);
+    window_->resize(1900, 1040);
+    openBrain();
+    reading_->setLayout(ViewLayout::OnePlusThree);
+    fixture_.models->crosshair.setVoxel({256, 256, 14});
+    fixture_.models->measurements.add(MeasureKind::Distance, {{180, 200, 14}, {330, 310, 14}}, 2);
+    // Without a window manager the window gets no focus for K: the action's own call.
+    QVERIFY(results_->markKeyImage());
+    // A camera change after the load: the frame waited for is the new volume's.
+    fixture_.models->render.update(kCamera, [](RenderParams& p) { p.camera.azimuthDeg = 20.0; });
+    waitFullFrame(*window_);
+    QTest::qWait(500);
+    QVERIFY(window_->grab().save(shot));
+  }
+
+ private:
+  void openBrain() {
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open(kBrain, {});
+    QVERIFY(shown.wait(120000));
+  }
+  // Keys reach the views' actions only with the window active and a view focused (the load's
+  // progress box took the activation while it was up).
+  void focusView(QWidget& view) {
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_));
+    view.setFocus();
+    QTRY_VERIFY(view.hasFocus());
+  }
+
+  PhantomWindow fixture_;
+  MainWindow* window_ = nullptr;
+  ReadingActions* reading_ = nullptr;
+  ResultsActions* results_ = nullptr;
+  QStringList errors_;
+};
+
+}  // namespace voxray::ui::test
+
+QTEST_MAIN(voxray::ui::test::ReadingTest)
+#include "reading_test.moc"

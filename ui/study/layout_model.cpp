@@ -1,0 +1,80 @@
+#include "layout_model.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace voxray {
+
+const std::vector<ViewLayout>& viewLayouts() {
+  static const std::vector<ViewLayout> all = {ViewLayout::One,       ViewLayout::OneByTwo,
+                                              ViewLayout::TwoByTwo,  ViewLayout::OnePlusThree,
+                                              ViewLayout::MprPlus3d, ViewLayout::ThreeDOnly};
+  return all;
+}
+
+std::string layoutName(ViewLayout l) {
+  switch (l) {
+    case ViewLayout::One:
+      return "1x1";
+    case ViewLayout::OneByTwo:
+      return "1x2";
+    case ViewLayout::TwoByTwo:
+      return "2x2";
+    case ViewLayout::OnePlusThree:
+      return "1+3";
+    case ViewLayout::MprPlus3d:
+      return "mpr+3d";
+    case ViewLayout::ThreeDOnly:
+      return "3d";
+  }
+  return "mpr+3d";
+}
+
+std::string layoutTitle(ViewLayout l) {
+  switch (l) {
+    case ViewLayout::One:
+      return "1×1 (axial)";
+    case ViewLayout::OneByTwo:
+      return "1×2 (axial and 3D)";
+    case ViewLayout::TwoByTwo:
+      return "2×2 (slices first)";
+    case ViewLayout::OnePlusThree:
+      return "1+3 (large axial)";
+    case ViewLayout::MprPlus3d:
+      return "MPR+3D";
+    case ViewLayout::ThreeDOnly:
+      return "3D only";
+  }
+  return "";
+}
+
+std::optional<ViewLayout> parseLayout(const std::string& name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  for (ViewLayout l : viewLayouts())
+    if (layoutName(l) == lower) return l;
+  return std::nullopt;
+}
+
+std::vector<LayoutCell> layoutCells(ViewLayout l) {
+  using V = GridView;
+  switch (l) {
+    case ViewLayout::One:
+      return {{V::Axial, 0, 0}};
+    case ViewLayout::OneByTwo:
+      return {{V::Axial, 0, 0}, {V::Volume3d, 0, 1}};
+    case ViewLayout::TwoByTwo:
+      return {{V::Axial, 0, 0}, {V::Coronal, 0, 1}, {V::Sagittal, 1, 0}, {V::Volume3d, 1, 1}};
+    case ViewLayout::OnePlusThree:
+      // The large view spans three rows of two columns; the small ones stack on the right.
+      return {{V::Axial, 0, 0, 3, 2}, {V::Coronal, 0, 2}, {V::Sagittal, 1, 2}, {V::Volume3d, 2, 2}};
+    case ViewLayout::MprPlus3d:
+      return {{V::Volume3d, 0, 0}, {V::Axial, 0, 1}, {V::Coronal, 1, 0}, {V::Sagittal, 1, 1}};
+    case ViewLayout::ThreeDOnly:
+      return {{V::Volume3d, 0, 0}};
+  }
+  return {};
+}
+
+}  // namespace voxray

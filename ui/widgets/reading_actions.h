@@ -1,0 +1,83 @@
+#pragma once
+// Reading → the keyboard's reading work (issue 37): layouts (Ctrl+1…6), W/L presets on 1–6,
+// next/previous series of the study and study of the browser's list, paging by the slab or
+// by 10, the measuring tools, and the hanging protocols that pick the layout, window and 3D
+// preset when a study opens. Every key is a menu action (so Help → Keyboard shortcuts lists
+// it) acting while the views have the focus, and comes from the keymap (keymap.json in the
+// config folder). The rules and keys are reading_keymap.h's and hanging_protocol.h's.
+#include <map>
+#include <string>
+
+#include <QObject>
+#include <QString>
+
+#include "app_models.h"
+#include "hanging_protocol.h"
+#include "layout_model.h"
+#include "reading_keymap.h"
+
+class QAction;
+class QMenu;
+
+namespace voxray::ui {
+
+class MainWindow;
+class SliceView;
+
+class ReadingActions : public QObject {
+  Q_OBJECT
+ public:
+  ReadingActions(MainWindow& window, AppModels& models);
+
+  // Where keymap.json and hanging-protocols.json live (the user's config folder, or one a
+  // test sets); setConfigFolder reloads both.
+  QString configFolder() const { return configFolder_; }
+  void setConfigFolder(const QString& folder);
+  QString hangingProtocolsPath() const;
+  QString keymapPath() const;
+
+  const ReadingKeymap& keymap() const { return keymap_; }
+  const HangingProtocols& protocols() const { return protocols_; }
+  // Binds A to the keymap's action ID (its key, and its key's context: the views).
+  void bind(const std::string& id, QAction* a);
+  QAction* action(const std::string& id) const;
+
+  ViewLayout layout() const { return layout_; }
+  void setLayout(ViewLayout l);
+  // The slice view last focused (axial before any).
+  SliceView& focusedSlice() const;
+  // The rule matching the open study applied (layout, window, 3D preset); its name, or "".
+  QString applyHangingProtocol();
+  void setProtocolsJson(const std::string& json);  // parse, save, use; throws Error
+  void showHangingProtocolEditor();
+  void showKeymapEditor();
+
+  void stepSeries(int step);  // +1 next, -1 previous
+  void stepStudy(int step);
+  void page(int direction);  // +1 forward
+
+ signals:
+  void failed(const QString& title, const QString& message);
+  void layoutChanged();
+  void protocolApplied(const QString& ruleName);
+
+ private:
+  void buildMenu();
+  void applyKeys();
+  void loadUserFiles();
+  void status(const QString& text);
+
+  MainWindow& window_;
+  AppModels& models_;
+  QString configFolder_;
+  ReadingKeymap keymap_;
+  HangingProtocols protocols_;
+  std::map<std::string, QAction*> actions_;
+  ViewLayout layout_ = ViewLayout::MprPlus3d;
+  int focusedSlice_ = 0;
+};
+
+// Qt's reading of a key text ("ctrl+n" → "Ctrl+N"); "" when it is no key.
+std::string qtKeyNormaliser(const std::string& key);
+
+}  // namespace voxray::ui
