@@ -6,6 +6,7 @@
 #include "classification/gradient_opacity_lanes.cl"
 #include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
+#include "classification/tf2d_lanes.cl"
 #include "empty_space/skip_lanes.cl"
 #include "intersection/ray_lanes.cl"
 #include "march/march_lanes.cl"
@@ -27,6 +28,32 @@ inline void dvr_gradient_opacityN(__global const short* restrict vol, __constant
   c[3] *= gradient_opacityN(lut, P, *normal);
   *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
 }
+#endif
+
+#if TF2D
+// The lanes in `live` whose colour-table opacity (the 2D table's largest over gradient) is
+// above 0 take their gradient at t now and their opacity (and, unshaded, colour) from the 2D
+// table at (value, |gradient|) (dvr_segment of march.cl); *normal keeps the gradient for
+// shading (the queue stores it, and its flush looks the colour up with it).
+inline void dvr_tf2dN(__global const short* restrict vol, __constant RaycastParams* P,
+                      __global const float4* lut, const RayPacket* r, intN live, floatN t,
+                      floatN value, floatN c[4], VecN* normal, intN* samples) {
+  intN seen = live & (c[3] > 0.0f);
+  if (!any(seen)) return;
+  VecN at = {r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz};
+  *normal = gradient_to_worldN(P, volume_gradientN(vol, P, at));
+  if (SHADING) {
+    c[3] = select(c[3], tf2d_alphaN(lut, P, value, *normal), seen);
+  } else {
+    floatN e[4];
+    tf2dN(lut, P, value, *normal, e);
+    for (int ch = 0; ch < 4; ++ch) c[ch] = select(c[ch], e[ch], seen);
+  }
+  *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+}
+#endif
+
+#if GRADIENT_OPACITY || TF2D
 #define DVR_NORMAL_PARAM , VecN normal
 #define DVR_NORMAL_ARG(n) , n
 #else
@@ -110,7 +137,7 @@ inline void dvr_compositeN(
   if (SHADING) {
     shade_queue_push(vol, P, lut, queue, t, value, w_base,
                      shaded DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(label) QUEUE_SEGS_ARG);
-#if !GRADIENT_OPACITY
+#if !GRADIENT_OPACITY && !TF2D
     *samples += select((intN)(0), (intN)(GRADIENT_TAPS), shaded);
 #endif
   } else {
@@ -182,6 +209,9 @@ inline void dvr_packet(PACKET_ARGS) {
 #if OVERLAY
     floatN oc[DVR_BATCH][4];
 #endif
+#if TF2D
+    VecN tf2d_normal[DVR_BATCH];
+#endif
     intN at = i;
     for (int k = 0; k < DVR_BATCH; ++k) {
 #if ADAPTIVE
@@ -199,6 +229,11 @@ inline void dvr_packet(PACKET_ARGS) {
         c[k][3] = lut_alphaN(lut, P, value[k]);
       else
         lutN(lut, P, value[k], c[k]);
+#if TF2D
+      VecN none = {0.0f, 0.0f, 0.0f};
+      tf2d_normal[k] = none;
+      dvr_tf2dN(vol, P, lut, &r, live[k], t[k], value[k], c[k], &tf2d_normal[k], &samples);
+#endif
 #if LABELS
       // label_classify (labels.cl): the opacity now, the colour now or at the queue's flush.
       // Lanes the table leaves transparent stay so (factors are at most 1): when all are,
@@ -222,6 +257,8 @@ inline void dvr_packet(PACKET_ARGS) {
 #if GRADIENT_OPACITY
       VecN normal = {0.0f, 0.0f, 0.0f};
       dvr_gradient_opacityN(vol, P, lut, &r, live[k] & active, t[k], c[k], &normal, &samples);
+#elif TF2D
+      VecN normal = tf2d_normal[k];
 #endif
       dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
                      sb[k] - sa[k], t[k], value[k],
