@@ -185,7 +185,7 @@ Tf2d parseTf2d(const std::string& text) {
                        "tri:HU0,HU1,G0,G1,R,G,B,A[,SOFT] or gmax:G, separated by ';'");
     if (tf.primitives.size() >= kMaxTf2dPrimitives)
       throw inputError("--tf2d: more than " + std::to_string(kMaxTf2dPrimitives) +
-                       " primitives; at most that many are read");
+                       " primitives; at most " + std::to_string(kMaxTf2dPrimitives) + " are read");
     // Each number by the field it is, so a typo names it (text::toDouble would not).
     static const char* const kFields[] = {"hu0",   "hu1",  "g0",      "g1",  "red",
                                           "green", "blue", "opacity", "soft"};
