@@ -75,9 +75,8 @@ RaycastParams DeviceFrame::frameParams(const RenderParams& p, const KernelSwitch
 }
 
 size_t DeviceFrame::tableBytes() const {
-  // The 2D table: its RGBA entries, then their opacities as floats (tf2d_table.h).
   return setup.lut.rgba.size() * sizeof(cl_float4) + setup.gradient.factor.size() * sizeof(float) +
-         setup.tf2d.rgba.size() * (sizeof(cl_float4) + sizeof(float));
+         setup.tf2d.rgba.size() * sizeof(cl_float4);
 }
 
 void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
@@ -107,15 +106,9 @@ void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
   // table, where tf2d.cl reads it.
   if (setup.tf2d.rgba != tf2dUploaded) {
     tf2dUploaded = setup.tf2d.rgba;
-    tf2dAlphaUploaded.clear();
-    for (const glm::vec4& e : tf2dUploaded) tf2dAlphaUploaded.push_back(e.a);
-    size_t at = lutBytes + gradientUploaded.size() * sizeof(float);
-    size_t rgbaBytes = tf2dUploaded.size() * sizeof(cl_float4);
-    if (!tf2dUploaded.empty()) {
-      q.enqueueWriteBuffer(lutBuffer, CL_FALSE, at, rgbaBytes, tf2dUploaded.data());
-      q.enqueueWriteBuffer(lutBuffer, CL_FALSE, at + rgbaBytes,
-                           tf2dAlphaUploaded.size() * sizeof(float), tf2dAlphaUploaded.data());
-    }
+    if (!tf2dUploaded.empty())
+      q.enqueueWriteBuffer(lutBuffer, CL_FALSE, lutBytes + gradientUploaded.size() * sizeof(float),
+                           tf2dUploaded.size() * sizeof(cl_float4), tf2dUploaded.data());
   }
 }
 

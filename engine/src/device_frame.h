@@ -51,10 +51,9 @@ struct DeviceFrame {
   size_t tableBytes() const;
 
  private:
-  std::vector<glm::vec4> lutUploaded;    // the table on the device: uploaded on change only
-  std::vector<float> gradientUploaded;   // likewise the gradient-opacity table
-  std::vector<glm::vec4> tf2dUploaded;   // and the 2D transfer function's,
-  std::vector<float> tf2dAlphaUploaded;  // with its opacities again behind it
+  std::vector<glm::vec4> lutUploaded;   // the table on the device: uploaded on change only
+  std::vector<float> gradientUploaded;  // likewise the gradient-opacity table
+  std::vector<glm::vec4> tf2dUploaded;  // and the 2D transfer function's
   RaycastParams paramsUploaded{};
 };
 

@@ -27,16 +27,15 @@ inline void tf2d_spotN(__constant RaycastParams* P, floatN v, VecN g_w, intN* k0
   *k11 = j1 * VOXRAY_TF2D_VALUES + i1;
 }
 
-// Only the opacity: four gathers from the opacity plane behind the RGBA entries (with shading
-// the colour is looked up when it shades).
+// Only the opacity: four gathers (with shading the colour is looked up when it shades).
 inline floatN tf2d_alphaN(__global const float4* lut, __constant RaycastParams* P, floatN v,
                           VecN g_w) {
   intN k00, k01, k10, k11;
   floatN fx, fy;
   tf2d_spotN(P, v, g_w, &k00, &k01, &k10, &k11, &fx, &fy);
-  __global const float* alpha = (__global const float*)(lut + P->dims.w + VOXRAY_TF2D_ENTRIES);
-  floatN a = mix(gather_floatN(alpha, k00), gather_floatN(alpha, k01), fx);
-  floatN b = mix(gather_floatN(alpha, k10), gather_floatN(alpha, k11), fx);
+  __global const float* alpha = (__global const float*)(lut + P->dims.w) + 3;
+  floatN a = mix(gather_floatN(alpha, 4 * k00), gather_floatN(alpha, 4 * k01), fx);
+  floatN b = mix(gather_floatN(alpha, 4 * k10), gather_floatN(alpha, 4 * k11), fx);
   return mix(a, b, fy);
 }
 

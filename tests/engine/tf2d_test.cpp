@@ -281,6 +281,12 @@ TEST(Tf2dFiles, RoundTripsExactly) {
   EXPECT_EQ(back, vp);
   EXPECT_EQ(back.tf2d, vp.tf2d);
   EXPECT_EQ(parseTf2d(formatTf2d(vp.tf2d)), vp.tf2d);
+  // The flag's text reads back as written (sessions keep it so: tests/study/session_test.cpp).
+  const std::string text =
+      "rect:-100.5,300.25,0,33.333333333333336,0.1,0.2,0.3,0.5,0.25;"
+      "tri:200,1400,50,800,1,0.9,0.8,0.4,0;gmax:1000.5";
+  EXPECT_EQ(formatTf2d(parseTf2d(text)), text);
+  EXPECT_EQ(formatTf2d(parseTf2d("rect:0,1,0,1,1,1,1,1")), "rect:0,1,0,1,1,1,1,1,0");
   // A file without the section has none.
   VolumeProperty plain = vp;
   plain.tf2d = {};
