@@ -11,8 +11,13 @@
 #include "intersection/ray_lanes.cl"
 #include "march/march_lanes.cl"
 #include "reconstruction/sampling_lanes.cl"
+#include "shading/classify_queue.cl"
 #include "shading/shade_queue.cl"
 #include "simd/math_lanes.cl"
+
+// TF2D frames without labels, an overlay or hit output classify their samples from a queue
+// (classify_queue.cl says why); the others in place (dvr_tf2dN below).
+#define DVR_CLASSIFY_QUEUE (TF2D && !LABELS && !OVERLAY && !HIT_OUTPUT)
 
 #if GRADIENT_OPACITY
 // The lanes in `live` whose table opacity is above 0 take their gradient at t now (their
@@ -185,8 +190,13 @@ inline void dvr_packet(PACKET_ARGS) {
   floatN acc[3] = {0.0f, 0.0f, 0.0f}, alpha = 0.0f;
   intN i = 0, check = 0, samples = 0;
   intN active = r.n >= 0;
+#if DVR_CLASSIFY_QUEUE
+  ClassifyQueue cq;
+  classify_queue_init(&cq, &r, world);
+#else
   ShadeQueue queue;
   if (SHADING) shade_queue_init(&queue, &r, world);
+#endif
 #if ADAPTIVE
   intN reach = adaptive_reachN(&r, step);  // long segments allowed (ADAPTIVE)
 #endif
@@ -229,7 +239,7 @@ inline void dvr_packet(PACKET_ARGS) {
         c[k][3] = lut_alphaN(lut, P, value[k]);
       else
         lutN(lut, P, value[k], c[k]);
-#if TF2D
+#if TF2D && !DVR_CLASSIFY_QUEUE
       VecN none = {0.0f, 0.0f, 0.0f};
       tf2d_normal[k] = none;
       dvr_tf2dN(vol, P, lut, &r, live[k], t[k], value[k], c[k], &tf2d_normal[k], &samples);
@@ -251,6 +261,16 @@ inline void dvr_packet(PACKET_ARGS) {
 #endif
     }
     for (int k = 0; k < DVR_BATCH; ++k) {
+#if DVR_CLASSIFY_QUEUE
+      // dvr_compositeN's count (one sample per live lane, the gradient's taps per seen one);
+      // the composite waits in the queue.
+      intN live_k = live[k] & active;
+      intN seen = live_k & (c[k][3] > 0.0f);
+      samples -= live_k;
+      samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+      alpha = classify_queue_push(vol, P, lut, &cq, t[k], value[k], sb[k] - sa[k], seen);
+      active &= ~(alpha >= P->dvr.z);
+#else
 #if HIT_OUTPUT
       floatN before = alpha;
 #endif
@@ -267,10 +287,16 @@ inline void dvr_packet(PACKET_ARGS) {
 #if HIT_OUTPUT
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
+#endif  // DVR_CLASSIFY_QUEUE
     }
     i = at;
     active &= i <= r.n;
   }
+#if DVR_CLASSIFY_QUEUE
+  if (cq.n > 0) classify_queue_flush(vol, P, lut, &cq, cq.n);  // n < LANES after a push
+  for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, cq.acc[ch]);
+  alpha = vloadN(0, cq.alpha);
+#else
   if (SHADING) {
     if (queue.n > 0) shade_queue_flush(vol, P, lut, &queue, queue.n QUEUE_SEGS_ARG);
 #if OVERLAY
@@ -279,6 +305,7 @@ inline void dvr_packet(PACKET_ARGS) {
     for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, queue.acc[ch]);
 #endif
   }
+#endif
   VecN color = {acc[0] + (1.0f - alpha) * P->background.x,
                 acc[1] + (1.0f - alpha) * P->background.y,
                 acc[2] + (1.0f - alpha) * P->background.z};
@@ -295,5 +322,6 @@ inline void dvr_packet(PACKET_ARGS) {
 #undef DVR_LABEL_ARG
 #undef DVR_OVERLAY_PARAM
 #undef DVR_OVERLAY_ARG
+#undef DVR_CLASSIFY_QUEUE
 
 #endif

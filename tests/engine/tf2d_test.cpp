@@ -378,6 +378,23 @@ TEST(Tf2dKernels, EveryWayOfComputingAgreesWithTheReference) {
   }
 }
 
+// Packets classify 2D samples from a queue (classify_queue.cl), except with hit output (the dvr
+// pick), labels or an overlay, which classify in place (dvr_tf2dN): the two agree.
+TEST(Tf2dKernels, ThePacketsQueueAndInPlaceAgree) {
+  const Volume& v = ballVolume();
+  for (bool shading : {false, true}) {
+    RenderParams p = ballParams();
+    p.shading = shading;
+    Raycaster rc(context(), v, VolumeStorage::Buffer);
+    Image queued = rc.render(p);
+    std::vector<glm::vec4> hits;
+    Image inPlace = rc.renderWithHits(p, hits);
+    EXPECT_EQ(hits.size(), size_t(p.width * p.height));
+    Diff d = compare(queued, inPlace);
+    EXPECT_LE(d.maxAbs, 1) << describe(p, true) << ": queued against in place (hit output)";
+  }
+}
+
 // A 2D table that is the 1D table (one rectangle over every value and gradient, the 1D
 // table's constant colour and opacity) switches TF2D on and changes no pixel in phong, shadows
 // or ao: their light grid moves behind the 2D table, built from the 1D table it becomes (the
