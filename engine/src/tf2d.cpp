@@ -152,13 +152,14 @@ void reduceTf2dToLut(const Tf2dTable& table, Lut& lut) {
   const size_t n = lut.rgba.size();
   for (size_t k = 0; k < n; ++k) {
     // Entry k weighs into lookups between entries k - 1 and k + 1; the 2D lookups there read
-    // columns floor(x) ... floor(x) + 1 (one more either side absorbs float rounding).
+    // columns floor(x) ... floor(x) + 1; a hundredth of a column either side absorbs the
+    // kernels' float rounding of x (about 1e-3 columns at CT values).
     double s0 = lut.storedMin + (double(k) - 1.0) / lut.scale;
     double s1 = lut.storedMin + (double(k) + 1.0) / lut.scale;
     double c0 = column(s0), c1 = column(s1);
     if (c0 > c1) std::swap(c0, c1);
-    int a = int(std::clamp(std::floor(c0) - 1.0, 0.0, double(kColumns - 1)));
-    int b = int(std::clamp(std::floor(c1) + 2.0, 0.0, double(kColumns - 1)));
+    int a = int(std::clamp(std::floor(c0 - 0.01), 0.0, double(kColumns - 1)));
+    int b = int(std::clamp(std::floor(c1 + 0.01) + 1.0, 0.0, double(kColumns - 1)));
     glm::vec4 e(0.0f);
     for (int i = a; i <= b; ++i)
       if (best[size_t(i)].a > e.a) e = best[size_t(i)];
