@@ -42,3 +42,6 @@ VOXRAY_PARAM(float4, light_march)
 // GRADIENT_OPACITY (gradient_table.h): table entries per stored unit / mm of |gradient|, the
 // last entry, unused x 2.
 VOXRAY_PARAM(float4, gradient_opacity)
+// TF2D (tf2d_table.h): the stored value of column 0, columns per stored unit, rows per stored
+// unit / mm of |gradient|, unused.
+VOXRAY_PARAM(float4, tf2d)

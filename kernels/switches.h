@@ -13,7 +13,7 @@
 //   BUILD    always a -D literal: it changes the kernel's arguments, stores or vector width.
 // LABELS names the values for variant names, "|"-separated from 0; an empty label leaves the
 // switch out of the name; no labels at all: NAME and the number, unless it is the default.
-// GRADIENT is named only where SHADING or GRADIENT_OPACITY is on (no other frame takes a
+// GRADIENT is named only where SHADING, GRADIENT_OPACITY or TF2D is on (no other frame takes a
 // gradient).
 // Adding a switch: a line here, its rule in kernelSwitches(), the kernel code that uses it.
 //
@@ -78,6 +78,13 @@ VOXRAY_SWITCH(ISO_BLOCK_TRIES, 0, BUILD, "")
 // every other variant compiles as before (#if). Not with ADAPTIVE (its levels read the colour
 // table alone); the light grid (shadows, ao) and the path tracer ignore the factor.
 VOXRAY_SWITCH(GRADIENT_OPACITY, 0, BUILD, "|gopacity")
+// dvr: colour and opacity from the 2D transfer function over (value, |gradient|) (issue 35,
+// RenderParams::tf2d), a table behind the colour table (tf2d_table.h, classification/tf2d.cl),
+// read with the gradient shading takes. The colour table then holds its largest opacity over
+// gradient, which empty-space skipping and the first test of a sample read. Set only with that
+// field (every other variant compiles as before); never with GRADIENT_OPACITY or ADAPTIVE; the
+// light grid and the path tracer read the colour table (the largest over gradient).
+VOXRAY_SWITCH(TF2D, 0, BUILD, "|tf2d")
 // dvr: label-aware classification (issue 34, classification/labels.cl): each sample's colour
 // mixed toward its nearest voxel's segment colour and its opacity times the label's factor
 // (segment opacity, RenderParams::segmentMask), from the label map and the segment table

@@ -82,6 +82,10 @@ Run addTfCommand(CLI::App& app) {
       std::cerr << "voxray-cli: note: Slicer's .vp has no unit distance; its opacities are "
                    "read back per smallest voxel spacing, not per "
                 << vp.unitDistanceMm << " mm\n";
+    if (toSlicer && !vp.tf2d.empty())
+      std::cerr << "voxray-cli: note: Slicer's .vp has no 2D transfer function; its "
+                << vp.tf2d.primitives.size()
+                << " primitives are dropped and the 1D colour and opacity are written\n";
     writeVolumePropertyFile(vp, o->output);
     std::cout << o->output << ": " << vp.color.size() << " colour and " << vp.opacity.size()
               << " opacity points written\n";

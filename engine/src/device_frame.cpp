@@ -68,13 +68,15 @@ RaycastParams DeviceFrame::frameParams(const RenderParams& p, const KernelSwitch
   k.image = {{p.width, p.height, 0, 0}};
   if (sw.GRADIENT_OPACITY)
     k.gradient_opacity = f4(s.gradient.scale, double(s.gradient.factor.size()) - 1.0, 0, 0);
+  if (sw.TF2D) k.tf2d = f4(s.tf2d.storedLo, s.tf2d.perStored, s.tf2d.perStoredPerMm, 0);
   packSwitches(sw, k);
   k.slabs = {{device.plan().depth, 0, 0, 0}};
   return k;
 }
 
 size_t DeviceFrame::tableBytes() const {
-  return setup.lut.rgba.size() * sizeof(cl_float4) + setup.gradient.factor.size() * sizeof(float);
+  return setup.lut.rgba.size() * sizeof(cl_float4) + setup.gradient.factor.size() * sizeof(float) +
+         setup.tf2d.rgba.size() * sizeof(cl_float4);
 }
 
 void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
@@ -84,6 +86,7 @@ void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
     lutCapacity = bytes;
     lutUploaded.clear();
     gradientUploaded.clear();
+    tf2dUploaded.clear();
     ++lutAllocations;
   }
   cl::CommandQueue& q = cl.queue;
@@ -98,6 +101,14 @@ void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
     if (!gradientUploaded.empty())
       q.enqueueWriteBuffer(lutBuffer, CL_FALSE, lutBytes, gradientUploaded.size() * sizeof(float),
                            gradientUploaded.data());
+  }
+  // The 2D table (never with the gradient's: setupKeyOf keeps one of them) behind the colour
+  // table, where tf2d.cl reads it.
+  if (setup.tf2d.rgba != tf2dUploaded) {
+    tf2dUploaded = setup.tf2d.rgba;
+    if (!tf2dUploaded.empty())
+      q.enqueueWriteBuffer(lutBuffer, CL_FALSE, lutBytes + gradientUploaded.size() * sizeof(float),
+                           tf2dUploaded.size() * sizeof(cl_float4), tf2dUploaded.data());
   }
 }
 

@@ -46,12 +46,14 @@ struct DeviceFrame {
   // The parameters and table to the device (the table only when it changed). EXTRA: bytes
   // after the tables in their buffer (the shadows / ao light grid, at tableBytes()).
   void uploadFrame(const RaycastParams& k, size_t extraBytes = 0);
-  // The colour table's bytes and the gradient-opacity table's behind it (gradient_table.h).
+  // The colour table's bytes and the gradient-opacity table's (gradient_table.h) or the 2D
+  // transfer function's (tf2d_table.h) behind it.
   size_t tableBytes() const;
 
  private:
   std::vector<glm::vec4> lutUploaded;   // the table on the device: uploaded on change only
   std::vector<float> gradientUploaded;  // likewise the gradient-opacity table
+  std::vector<glm::vec4> tf2dUploaded;  // and the 2D transfer function's
   RaycastParams paramsUploaded{};
 };
 

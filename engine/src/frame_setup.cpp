@@ -11,11 +11,25 @@ namespace voxray {
 SetupKey setupKeyOf(const RenderParams& p) {
   // Only dvr renders the gradient opacity (kernelSwitches' GRADIENT_OPACITY): elsewhere no
   // table is made for it, so none rides in the table buffer.
+  // The 2D transfer function replaces the gradient opacity (tf2d.h), so that one is not kept.
   std::vector<glm::dvec2> gradientOpacity;
-  if (p.mode == Mode::Dvr) gradientOpacity = p.gradientOpacity;
-  return {p.mode,          p.preset,        p.presetShiftHu, p.transferFunction,
-          p.opacityUnitMm, gradientOpacity, p.surfaceColor,  p.isoLo,
-          p.isoHi,         p.windowWidth,   p.windowLevel};
+  Tf2d tf2d;
+  if (p.mode == Mode::Dvr) {
+    tf2d = p.tf2d;
+    if (tf2d.empty()) gradientOpacity = p.gradientOpacity;
+  }
+  return {p.mode,
+          p.preset,
+          p.presetShiftHu,
+          p.transferFunction,
+          p.opacityUnitMm,
+          gradientOpacity,
+          tf2d,
+          p.surfaceColor,
+          p.isoLo,
+          p.isoHi,
+          p.windowWidth,
+          p.windowLevel};
 }
 
 TransferFunction frameTransferFunction(const SetupKey& k) {
@@ -46,14 +60,17 @@ FrameSetup makeValueSetup(const Volume& v, const SetupKey& k, const ValueRange& 
   FrameSetup s;
   s.lut = bakeLut(frameTransferFunction(k), v, r);
   s.gradient = bakeGradientTable(k.gradientOpacity, v.slope);
+  s.tf2d = bakeTf2dTable(k.tf2d, v);
   s.referenceStepMm = v.minSpacingMm();
   // Opacities stated per another length become per reference step: the same absorption
   // over the same millimetres, 1 - (1 - a)^(reference / unit).
   if (k.opacityUnitMm > 0.0 && k.opacityUnitMm != s.referenceStepMm) {
     double e = s.referenceStepMm / k.opacityUnitMm;
-    for (glm::vec4& c : s.lut.rgba)
-      if (c.a < 1.0f) c.a = float(1.0 - std::pow(1.0 - double(c.a), e));
+    for (std::vector<glm::vec4>* table : {&s.lut.rgba, &s.tf2d.rgba})
+      for (glm::vec4& c : *table)
+        if (c.a < 1.0f) c.a = float(1.0 - std::pow(1.0 - double(c.a), e));
   }
+  reduceTf2dToLut(s.tf2d, s.lut);  // no-op without a 2D transfer function
   double a = v.toStored(k.isoLo), b = v.toStored(k.isoHi);
   s.isoLoStored = std::min(a, b);
   s.isoHiStored = std::max(a, b);

@@ -7,6 +7,7 @@
 
 #include "voxray/engine/camera.h"
 #include "voxray/engine/render_params.h"
+#include "voxray/engine/tf2d.h"
 #include "voxray/engine/transfer_function.h"
 
 namespace voxray {
@@ -24,6 +25,7 @@ struct SetupKey {
   std::vector<ControlPoint> transferFunction;
   double opacityUnitMm = 0.0;
   std::vector<glm::dvec2> gradientOpacity;  // dvr only: other modes leave it empty
+  Tf2d tf2d;                                // likewise
   glm::dvec3 surfaceColor{0.0};
   double isoLo = 0.0, isoHi = 0.0;
   double windowWidth = 0.0, windowLevel = 0.0;
@@ -35,6 +37,9 @@ struct FrameSetup {
   ViewGeometry view;
   Lut lut;
   GradientTable gradient;  // dvr's gradient opacity; empty: off
+  // dvr's 2D transfer function; empty: off. With it, lut holds the table's largest opacity over
+  // gradient (reduceTf2dToLut) for what reads the 1D table: empty-space skipping, the light grid.
+  Tf2dTable tf2d;
   double stepMm = 1.0;
   double referenceStepMm = 1.0;  // the step the preset's opacities are defined for
   double isoLoStored = 0.0, isoHiStored = 0.0;

@@ -64,14 +64,15 @@ KernelSwitches kernelSwitches(const RenderParams& p) {
   KernelSwitches s;
   s.MODE = int(p.mode);
   s.SHADING = p.shading && p.mode != Mode::Mip;
-  s.GRADIENT_OPACITY = p.mode == Mode::Dvr && !p.gradientOpacity.empty();
-  if (s.SHADING || s.GRADIENT_OPACITY) s.GRADIENT = int(p.gradient);
+  s.TF2D = p.mode == Mode::Dvr && !p.tf2d.empty();  // it replaces the gradient opacity
+  s.GRADIENT_OPACITY = p.mode == Mode::Dvr && !p.gradientOpacity.empty() && !s.TF2D;
+  if (s.SHADING || s.GRADIENT_OPACITY || s.TF2D) s.GRADIENT = int(p.gradient);
   s.INTERP = int(p.interp);
   s.ORTHO = p.camera.projection == Projection::Orthographic;
   if (p.mode == Mode::Dvr) s.OPACITY_CORRECTION = p.opacityCorrection;
   // Long steps rest on opacity correction and on the macro cells' levels (ESS), which read
   // the colour table alone: the gradient opacity would need them per gradient too.
-  s.ADAPTIVE = s.OPACITY_CORRECTION && p.adaptiveError > 0.0 && !s.GRADIENT_OPACITY;
+  s.ADAPTIVE = s.OPACITY_CORRECTION && p.adaptiveError > 0.0 && !s.GRADIENT_OPACITY && !s.TF2D;
   s.JITTER = p.jitter;
   if (p.mode == Mode::Iso) s.REFINE_STEPS = p.refine;
   // shadows and ao change the shading only; cinematic is the path tracer's (not a switch).
@@ -130,7 +131,8 @@ std::string variantName(const KernelSwitches& s) {
     int value = s.*e.field;
     // Only shaded or gradient-opacity frames take a gradient: elsewhere "central" would name
     // nothing measured.
-    if (e.field == &KernelSwitches::GRADIENT && !s.SHADING && !s.GRADIENT_OPACITY) continue;
+    if (e.field == &KernelSwitches::GRADIENT && !s.SHADING && !s.GRADIENT_OPACITY && !s.TF2D)
+      continue;
     std::string part;
     if (*e.labels)
       part = label(e.labels, value);

@@ -70,6 +70,7 @@ KernelSwitches PathTracer::Impl::prepare(const RenderParams& p) {
   KernelSwitches sw = kernelSwitches(p);  // one ray per work-item: no packets, no leaps
   // The paths ignore the gradient opacity (README): one program with or without it.
   sw.GRADIENT_OPACITY = 0;
+  sw.TF2D = 0;  // likewise the 2D transfer function: the paths read its largest over gradient
   sw.STORAGE_IMAGE = f.storage == VolumeStorage::Image3d;
   sw.SLABS = f.device.plan().count();
   RaycastParams k = f.frameParams(p, sw);

@@ -47,6 +47,7 @@ struct Marcher {
   const FrameSetup& s;
   bool shading = kernelSwitches(p).SHADING != 0;  // the kernels' rules
   bool gradientOpacity = kernelSwitches(p).GRADIENT_OPACITY != 0;
+  bool tf2d = kernelSwitches(p).TF2D != 0;
   double gradSamples = double(gradientSamples(p.gradient));
   const ReferenceHooks* hooks = nullptr;
   // Label-aware dvr (kernels/classification/labels.cl): the label map and segment table, or
@@ -107,16 +108,24 @@ struct Marcher {
         if (!(b > a)) continue;
         double seg = b - a, t = a + 0.5 * seg;
         glm::dvec3 pv = ov + t * dv;
-        glm::dvec4 c = s.lut.lookup(sample(pv, o));
+        const double value = sample(pv, o);
+        glm::dvec4 c = s.lut.lookup(value);
         // The overlay's sample at the same point (march.cl's dvr_segment, OVERLAY).
         const glm::dvec4 ov = overlay ? overlay->at(pv) : glm::dvec4(0.0);
         auto nothing = [&] { return c.a <= 0.0 && ov.a <= 0.0; };
         if (nothing()) continue;
+        glm::dvec3 g(0.0);
+        if (tf2d) {  // the 2D table at (value, |gradient|) where the 1D (its largest) shows
+          if (c.a > 0.0) {
+            g = worldGradient(pv, o);
+            c = s.tf2d.lookup(value, glm::length(g));
+          }
+          if (nothing()) continue;
+        }
         if (labelMap) {
           c = labelled(c, pv);
           if (nothing()) continue;
         }
-        glm::dvec3 g(0.0);
         if (gradientOpacity) {  // the factor at |gradient| (stored units per mm), then shading
           if (c.a > 0.0) {
             g = worldGradient(pv, o);
@@ -126,7 +135,7 @@ struct Marcher {
         }
         glm::dvec3 rgb(c);
         if (shading && c.a > 0.0)
-          rgb = shade(rgb, gradientOpacity ? g : worldGradient(pv, o), ow + t * dw, view,
+          rgb = shade(rgb, gradientOpacity || tf2d ? g : worldGradient(pv, o), ow + t * dw, view,
                       s.view.lightWorld, lightAt(ow + t * dw, rng));
         if (overlay) {  // summed extinction, colours weighted by opacity (march.cl says why)
           rgb = (c.a * rgb + ov.a * glm::dvec3(ov)) / (c.a + ov.a);

@@ -299,6 +299,13 @@ std::vector<ParamSpec> makeSpecs() {
        "between points, so homogeneous regions can fade and boundaries show (empty = off)",
        none, [](P& p, S s) { p.gradientOpacity = parseGradientOpacity(s); },
        [](const P& p) { return formatGradientOpacity(p.gradientOpacity); }},
+      {"tf2d", "rect:HU0,HU1,G0,G1,R,G,B,A[,SOFT];tri:...",
+       "dvr: a 2D transfer function over HU and gradient magnitude G (HU/mm) that replaces the "
+       "table's colour and opacity and the gradient opacity: rectangles, and triangles widening "
+       "from |gradient| 0 to [HU0, HU1] at G1, cut to [G0, G1], colour R,G,B, peak opacity A, "
+       "soft edge SOFT (0 ... 1); 'gmax:G' tops the table's gradient axis (empty = off)",
+       none, [](P& p, S s) { p.tf2d = parseTf2d(s); },
+       [](const P& p) { return formatTf2d(p.tf2d); }},
       number("preset-shift", "HU", "move the preset's transfer function along HU",
              ParamDomain().in("HU"), FIELD(presetShiftHu)),
       // Any HU is accepted; a control offers the range of CT values.

@@ -131,6 +131,7 @@ void validate(const VolumeProperty& vp, const std::string& origin) {
   if (!std::isfinite(vp.specularPower) || vp.specularPower <= 0.0)
     throw inputError(origin + ": the specular power must be a positive number, got " +
                      numberText(vp.specularPower));
+  validate(vp.tf2d, origin);
 }
 
 glm::dvec3 colorAt(const VolumeProperty& vp, double hu) {
@@ -195,6 +196,7 @@ std::vector<glm::dvec2> gradientOpacityPoints(const VolumeProperty& vp) {
 
 void applyVolumeProperty(RenderParams& p, const VolumeProperty& vp) {
   p.gradientOpacity = gradientOpacityPoints(vp);
+  p.tf2d = vp.tf2d;
   p.preset.clear();
   p.presetShiftHu = 0.0;
   p.transferFunction = renderTable(vp);
@@ -216,6 +218,7 @@ VolumeProperty volumePropertyOf(const RenderParams& p) {
     vp.opacity.push_back({c.hu, c.rgba.a});
   }
   for (const glm::dvec2& g : p.gradientOpacity) vp.gradientOpacity.push_back({g.x, g.y});
+  vp.tf2d = p.tf2d;
   vp.unitDistanceMm = p.opacityUnitMm;
   vp.shade = p.shading;
   vp.nearest = p.interp == Interp::Nearest;

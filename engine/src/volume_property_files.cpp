@@ -133,6 +133,68 @@ std::string vpFunction(const std::vector<std::vector<double>>& rows, size_t widt
   return out + "\n";
 }
 
+// The "tf2d" section (its own version, so it can grow without the file's): the gradient axis'
+// top and the primitives, each {"shape": "rect"|"tri", "hu": [HU0, HU1], "gradient": [G0, G1],
+// "color": [R, G, B], "opacity": A, "soft": S}.
+constexpr int kTf2dVersion = 1;
+
+Tf2d tf2dOf(const Json& j, const std::string& origin) {
+  if (!j.is_object()) throw inputError(origin + ": tf2d must be an object");
+  if (!j.contains("version") || !j["version"].is_number_integer() ||
+      j["version"].get<int>() != kTf2dVersion)
+    throw inputError(origin + ": tf2d.version must be " + std::to_string(kTf2dVersion) +
+                     " (a newer Voxray may have written another)");
+  Tf2d tf;
+  if (j.contains("gradientMax"))
+    tf.gradientMax = number(j["gradientMax"], origin, "tf2d.gradientMax");
+  const Json& list = j.contains("primitives") ? j["primitives"] : Json();
+  if (!list.is_array()) throw inputError(origin + ": tf2d.primitives must be a list");
+  if (list.size() > kMaxTf2dPrimitives)
+    throw inputError(origin + ": tf2d.primitives has " + std::to_string(list.size()) +
+                     " entries; at most " + std::to_string(kMaxTf2dPrimitives) + " are read");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Json& e = list[i];
+    std::string at = "tf2d.primitives[" + std::to_string(i) + "]";
+    if (!e.is_object()) throw inputError(origin + ": " + at + " must be an object");
+    Tf2dPrimitive p;
+    std::string shape = textField(e, "shape", "", origin);
+    if (shape != "rect" && shape != "tri")
+      throw inputError(origin + ": " + at + ".shape is '" + shape + "'; it must be rect or tri");
+    p.shape = shape == "tri" ? Tf2dShape::Triangle : Tf2dShape::Rectangle;
+    auto numbers = [&](const char* key, size_t n) {
+      std::string field = at + "." + key;
+      if (!e.contains(key) || !e[key].is_array() || e[key].size() != n)
+        throw inputError(origin + ": " + field + " must be a list of " + std::to_string(n) +
+                         " numbers");
+      std::vector<double> v;
+      for (const Json& x : e[key]) v.push_back(number(x, origin, field));
+      return v;
+    };
+    std::vector<double> hu = numbers("hu", 2), g = numbers("gradient", 2),
+                        rgb = numbers("color", 3);
+    p.hu0 = hu[0], p.hu1 = hu[1], p.g0 = g[0], p.g1 = g[1];
+    p.rgb = {rgb[0], rgb[1], rgb[2]};
+    if (!e.contains("opacity")) throw inputError(origin + ": " + at + ".opacity is missing");
+    p.opacity = number(e["opacity"], origin, at + ".opacity");
+    if (e.contains("soft")) p.soft = number(e["soft"], origin, at + ".soft");
+    tf.primitives.push_back(p);
+  }
+  validate(tf, origin);
+  return tf;
+}
+
+Json tf2dJson(const Tf2d& tf) {
+  Json list = Json::array();
+  for (const Tf2dPrimitive& p : tf.primitives)
+    list.push_back({{"shape", p.shape == Tf2dShape::Triangle ? "tri" : "rect"},
+                    {"hu", {p.hu0, p.hu1}},
+                    {"gradient", {p.g0, p.g1}},
+                    {"color", {p.rgb.r, p.rgb.g, p.rgb.b}},
+                    {"opacity", p.opacity},
+                    {"soft", p.soft}});
+  return {{"version", kTf2dVersion}, {"gradientMax", tf.gradientMax}, {"primitives", list}};
+}
+
 }  // namespace
 
 VolumeProperty parseVolumePropertyJson(const std::string& text, const std::string& origin) {
@@ -166,6 +228,7 @@ VolumeProperty parseVolumePropertyJson(const std::string& text, const std::strin
   if (j.contains("gradientOpacity"))
     vp.gradientOpacity =
         opacityNodes(pointList(j["gradientOpacity"], origin, "gradient opacity", 2));
+  if (j.contains("tf2d")) vp.tf2d = tf2dOf(j["tf2d"], origin);
   if (j.contains("unitDistanceMm"))
     vp.unitDistanceMm = number(j["unitDistanceMm"], origin, "unitDistanceMm");
   std::string interpolation = textField(j, "interpolation", "linear", origin);
@@ -205,6 +268,7 @@ std::string toVolumePropertyJson(const VolumeProperty& vp) {
   j["color"] = color;
   j["opacity"] = opacityJson(vp.opacity);
   if (!vp.gradientOpacity.empty()) j["gradientOpacity"] = opacityJson(vp.gradientOpacity);
+  if (!vp.tf2d.empty()) j["tf2d"] = tf2dJson(vp.tf2d);
   j["shading"] = {{"enabled", vp.shade},
                   {"ambient", vp.ambient},
                   {"diffuse", vp.diffuse},

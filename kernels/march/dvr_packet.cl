@@ -6,12 +6,18 @@
 #include "classification/gradient_opacity_lanes.cl"
 #include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
+#include "classification/tf2d_lanes.cl"
 #include "empty_space/skip_lanes.cl"
 #include "intersection/ray_lanes.cl"
 #include "march/march_lanes.cl"
 #include "reconstruction/sampling_lanes.cl"
+#include "shading/classify_queue.cl"
 #include "shading/shade_queue.cl"
 #include "simd/math_lanes.cl"
+
+// TF2D frames without labels, an overlay or hit output classify their samples from a queue
+// (classify_queue.cl says why); the others in place (dvr_tf2dN below).
+#define DVR_CLASSIFY_QUEUE (TF2D && !LABELS && !OVERLAY && !HIT_OUTPUT)
 
 #if GRADIENT_OPACITY
 // The lanes in `live` whose table opacity is above 0 take their gradient at t now (their
@@ -27,6 +33,32 @@ inline void dvr_gradient_opacityN(__global const short* restrict vol, __constant
   c[3] *= gradient_opacityN(lut, P, *normal);
   *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
 }
+#endif
+
+#if TF2D
+// The lanes in `live` whose colour-table opacity (the 2D table's largest over gradient) is
+// above 0 take their gradient at t now and their opacity (and, unshaded, colour) from the 2D
+// table at (value, |gradient|) (dvr_segment of march.cl); *normal keeps the gradient for
+// shading (the queue stores it, and its flush looks the colour up with it).
+inline void dvr_tf2dN(__global const short* restrict vol, __constant RaycastParams* P,
+                      __global const float4* lut, const RayPacket* r, intN live, floatN t,
+                      floatN value, floatN c[4], VecN* normal, intN* samples) {
+  intN seen = live & (c[3] > 0.0f);
+  if (!any(seen)) return;
+  VecN at = {r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz};
+  *normal = gradient_to_worldN(P, volume_gradientN(vol, P, at));
+  if (SHADING) {
+    c[3] = select(c[3], tf2d_alphaN(lut, P, value, *normal), seen);
+  } else {
+    floatN e[4];
+    tf2dN(lut, P, value, *normal, e);
+    for (int ch = 0; ch < 4; ++ch) c[ch] = select(c[ch], e[ch], seen);
+  }
+  *samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+}
+#endif
+
+#if GRADIENT_OPACITY || TF2D
 #define DVR_NORMAL_PARAM , VecN normal
 #define DVR_NORMAL_ARG(n) , n
 #else
@@ -110,7 +142,7 @@ inline void dvr_compositeN(
   if (SHADING) {
     shade_queue_push(vol, P, lut, queue, t, value, w_base,
                      shaded DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(label) QUEUE_SEGS_ARG);
-#if !GRADIENT_OPACITY
+#if !GRADIENT_OPACITY && !TF2D
     *samples += select((intN)(0), (intN)(GRADIENT_TAPS), shaded);
 #endif
   } else {
@@ -158,8 +190,13 @@ inline void dvr_packet(PACKET_ARGS) {
   floatN acc[3] = {0.0f, 0.0f, 0.0f}, alpha = 0.0f;
   intN i = 0, check = 0, samples = 0;
   intN active = r.n >= 0;
+#if DVR_CLASSIFY_QUEUE
+  ClassifyQueue cq;
+  classify_queue_init(&cq, &r, world);
+#else
   ShadeQueue queue;
   if (SHADING) shade_queue_init(&queue, &r, world);
+#endif
 #if ADAPTIVE
   intN reach = adaptive_reachN(&r, step);  // long segments allowed (ADAPTIVE)
 #endif
@@ -182,6 +219,9 @@ inline void dvr_packet(PACKET_ARGS) {
 #if OVERLAY
     floatN oc[DVR_BATCH][4];
 #endif
+#if TF2D
+    VecN tf2d_normal[DVR_BATCH];
+#endif
     intN at = i;
     for (int k = 0; k < DVR_BATCH; ++k) {
 #if ADAPTIVE
@@ -199,6 +239,11 @@ inline void dvr_packet(PACKET_ARGS) {
         c[k][3] = lut_alphaN(lut, P, value[k]);
       else
         lutN(lut, P, value[k], c[k]);
+#if TF2D && !DVR_CLASSIFY_QUEUE
+      VecN none = {0.0f, 0.0f, 0.0f};
+      tf2d_normal[k] = none;
+      dvr_tf2dN(vol, P, lut, &r, live[k], t[k], value[k], c[k], &tf2d_normal[k], &samples);
+#endif
 #if LABELS
       // label_classify (labels.cl): the opacity now, the colour now or at the queue's flush.
       // Lanes the table leaves transparent stay so (factors are at most 1): when all are,
@@ -216,12 +261,24 @@ inline void dvr_packet(PACKET_ARGS) {
 #endif
     }
     for (int k = 0; k < DVR_BATCH; ++k) {
+#if DVR_CLASSIFY_QUEUE
+      // dvr_compositeN's count (one sample per live lane, the gradient's taps per seen one);
+      // the composite waits in the queue.
+      intN live_k = live[k] & active;
+      intN seen = live_k & (c[k][3] > 0.0f);
+      samples -= live_k;
+      samples += select((intN)(0), (intN)(GRADIENT_TAPS), seen);
+      alpha = classify_queue_push(vol, P, lut, &cq, t[k], value[k], sb[k] - sa[k], seen);
+      active &= ~(alpha >= P->dvr.z);
+#else
 #if HIT_OUTPUT
       floatN before = alpha;
 #endif
 #if GRADIENT_OPACITY
       VecN normal = {0.0f, 0.0f, 0.0f};
       dvr_gradient_opacityN(vol, P, lut, &r, live[k] & active, t[k], c[k], &normal, &samples);
+#elif TF2D
+      VecN normal = tf2d_normal[k];
 #endif
       dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
                      sb[k] - sa[k], t[k], value[k],
@@ -230,10 +287,16 @@ inline void dvr_packet(PACKET_ARGS) {
 #if HIT_OUTPUT
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
+#endif  // DVR_CLASSIFY_QUEUE
     }
     i = at;
     active &= i <= r.n;
   }
+#if DVR_CLASSIFY_QUEUE
+  if (cq.n > 0) classify_queue_flush(vol, P, lut, &cq, cq.n);  // n < LANES after a push
+  for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, cq.acc[ch]);
+  alpha = vloadN(0, cq.alpha);
+#else
   if (SHADING) {
     if (queue.n > 0) shade_queue_flush(vol, P, lut, &queue, queue.n QUEUE_SEGS_ARG);
 #if OVERLAY
@@ -242,6 +305,7 @@ inline void dvr_packet(PACKET_ARGS) {
     for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, queue.acc[ch]);
 #endif
   }
+#endif
   VecN color = {acc[0] + (1.0f - alpha) * P->background.x,
                 acc[1] + (1.0f - alpha) * P->background.y,
                 acc[2] + (1.0f - alpha) * P->background.z};
@@ -258,5 +322,6 @@ inline void dvr_packet(PACKET_ARGS) {
 #undef DVR_LABEL_ARG
 #undef DVR_OVERLAY_PARAM
 #undef DVR_OVERLAY_ARG
+#undef DVR_CLASSIFY_QUEUE
 
 #endif

@@ -8,6 +8,7 @@
 #include "classification/labels.cl"
 #include "classification/lut.cl"
 #include "classification/overlay.cl"
+#include "classification/tf2d.cl"
 #include "empty_space/skip.cl"
 #include "math.cl"
 #include "reconstruction/gradients.cl"
@@ -119,7 +120,8 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
   float t = 0.5f * (s.x + s.y);
   float3 p_v = r->o + t * r->d;
   ++*count;
-  float4 c = lut_lookup(lut, P, sample_volume(VOLUME, P, p_v));
+  float value = sample_volume(VOLUME, P, p_v);
+  float4 c = lut_lookup(lut, P, value);
 #if OVERLAY
   // The base's classification below (labels, gradient opacity, shading) is its own; the
   // overlay's sample joins it after, unshaded (PET on CT shows as a glow, and the base's
@@ -131,6 +133,17 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #define DVR_NOTHING (c.w <= 0.0f)
 #endif
   if (DVR_NOTHING) return false;
+#if TF2D
+  // Colour and opacity from the 2D table at (value, |gradient|) where the colour table (the 2D
+  // table's largest over gradient) lets the sample show; the gradient is the one shading uses.
+  float3 n_w = (float3)(0.0f);
+  if (c.w > 0.0f) {
+    n_w = world_gradient(VOLUME, P, p_v);
+    *count += GRADIENT_TAPS;
+    c = tf2d_lookup(lut, P, value, n_w);
+  }
+  if (DVR_NOTHING) return false;
+#endif
 #if LABELS
   c = label_classify(segs, label_at(labels, P, p_v), c);
   if (DVR_NOTHING) return false;
@@ -150,7 +163,7 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #undef DVR_NOTHING
   float3 rgb = c.xyz;
   if (SHADING && c.w > 0.0f) {
-#if GRADIENT_OPACITY
+#if GRADIENT_OPACITY || TF2D
     rgb = shade(rgb, n_w, origin_w + t * dir_w, -dir_w, P->light_w, frame_light(lut, P, p_v));
 #else
     rgb = shade(rgb, world_gradient(VOLUME, P, p_v), origin_w + t * dir_w, -dir_w, P->light_w,

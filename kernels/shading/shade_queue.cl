@@ -7,13 +7,15 @@
 // samples, as without the queue. An entry keeps only t, the value and the weight; its
 // position, colour and view come back from its lane's ray at the flush. With
 // GRADIENT_OPACITY the weight needs the gradient first (dvr_gradient_opacityN), taken when
-// the sample is: the entry keeps it too, so the flush shades without taking it again. With
+// the sample is: the entry keeps it too, so the flush shades without taking it again; so does
+// TF2D, whose colour the flush looks up at (value, |gradient|). With
 // LABELS the entry keeps its label, whose segment colour the flush mixes in.
 #ifndef VOXRAY_SHADE_QUEUE_CL
 #define VOXRAY_SHADE_QUEUE_CL
 
 #include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
+#include "classification/tf2d_lanes.cl"
 #include "intersection/ray_lanes.cl"
 #include "reconstruction/gradients_lanes.cl"
 
@@ -28,7 +30,7 @@
 typedef struct {
   float t[2 * LANES], value[2 * LANES], weight[2 * LANES];
   int lane[2 * LANES];  // whose ray entry e belongs to
-#if GRADIENT_OPACITY
+#if GRADIENT_OPACITY || TF2D
   float normal[3][2 * LANES];  // each entry's world gradient
 #endif
 #if LABELS
@@ -50,7 +52,7 @@ inline void shade_queue_init(ShadeQueue* q, const RayPacket* r, const floatN wor
   // Entries past n still go through the gradient (whole vectors): t = 0 and lane 0 put
   // them at a lane's entry point, in the volume.
   for (int e = 0; e < 2 * LANES; ++e) q->t[e] = q->value[e] = q->weight[e] = 0.0f, q->lane[e] = 0;
-#if GRADIENT_OPACITY
+#if GRADIENT_OPACITY || TF2D
   for (int e = 0; e < 2 * LANES; ++e) q->normal[0][e] = q->normal[1][e] = q->normal[2][e] = 0.0f;
 #endif
 #if LABELS
@@ -87,12 +89,17 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
   VecN pos = {ray[6] + t * ray[9], ray[7] + t * ray[10], ray[8] + t * ray[11]};
   VecN view = {-ray[9], -ray[10], -ray[11]};
   floatN c[4];
+#if TF2D
+  VecN kept = {vloadN(0, q->normal[0]), vloadN(0, q->normal[1]), vloadN(0, q->normal[2])};
+  tf2dN(lut, P, vloadN(0, q->value), kept, c);
+#else
   lutN(lut, P, vloadN(0, q->value), c);
+#endif
 #if LABELS
   label_colourN(segs, vloadN(0, q->label), c);
 #endif
   VecN color = {c[0], c[1], c[2]};
-#if GRADIENT_OPACITY
+#if GRADIENT_OPACITY || TF2D
   VecN normal = {vloadN(0, q->normal[0]), vloadN(0, q->normal[1]), vloadN(0, q->normal[2])};
 #else
   VecN normal = gradient_to_worldN(P, volume_gradientN(vol, P, at));
@@ -111,7 +118,7 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
     q->value[e - count] = q->value[e];
     q->weight[e - count] = q->weight[e];
     q->lane[e - count] = q->lane[e];
-#if GRADIENT_OPACITY
+#if GRADIENT_OPACITY || TF2D
     for (int k = 0; k < 3; ++k) q->normal[k][e - count] = q->normal[k][e];
 #endif
 #if LABELS
@@ -126,7 +133,7 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
 inline void shade_queue_push(__global const short* restrict vol, __constant RaycastParams* P,
                              __global const float4* lut, ShadeQueue* q, floatN t, floatN value,
                              floatN weight, intN seen
-#if GRADIENT_OPACITY
+#if GRADIENT_OPACITY || TF2D
                              ,
                              VecN normal
 #endif
@@ -145,7 +152,7 @@ inline void shade_queue_push(__global const short* restrict vol, __constant Rayc
   int ls[LANES];
   vstoreN(label, 0, ls);
 #endif
-#if GRADIENT_OPACITY
+#if GRADIENT_OPACITY || TF2D
   float ns[3][LANES];
   vstoreN(normal.x, 0, ns[0]);
   vstoreN(normal.y, 0, ns[1]);
@@ -156,7 +163,7 @@ inline void shade_queue_push(__global const short* restrict vol, __constant Rayc
   int n = q->n;
   for (int l = 0; l < LANES; ++l) {
     q->t[n] = ts[l], q->value[n] = vs[l], q->weight[n] = ws[l], q->lane[n] = l;
-#if GRADIENT_OPACITY
+#if GRADIENT_OPACITY || TF2D
     q->normal[0][n] = ns[0][l], q->normal[1][n] = ns[1][l], q->normal[2][n] = ns[2][l];
 #endif
 #if LABELS

@@ -5,6 +5,7 @@
 #include "gradient_table.h"
 #include "math.cl"
 #include "params.cl"
+#include "tf2d_table.h"
 
 // s^w for s >= 0 by EXP2(w LOG2(s)), keeping pow's value at s = 0 (0, or 1 for w = 0).
 // A macro so that float (native_) and the floatN lanes of shadeN (math_lanes.cl) share it;
@@ -75,6 +76,9 @@ inline float light_grid_at(__global const float4* lut, __constant RaycastParams*
   __global const float4* grid = lut + P->dims.w;
 #if GRADIENT_OPACITY
   grid += VOXRAY_GRADIENT_TABLE_FLOAT4S;
+#endif
+#if TF2D
+  grid += VOXRAY_TF2D_FLOAT4S;
 #endif
   return grid_trilinear((__global const float*)grid, P->light_grid, p_v * P->light_march.z);
 }

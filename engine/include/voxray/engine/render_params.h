@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "voxray/engine/param_spec.h"
+#include "voxray/engine/tf2d.h"
 #include "voxray/engine/transfer_function.h"
 
 namespace voxray {
@@ -76,6 +77,9 @@ struct RenderParams {
   // and Slicer's gradient opacity): points (|gradient| in HU/mm, factor 0 ... 1) sorted by
   // |gradient|, linear between, constant beyond the ends. Empty: off (factor 1).
   std::vector<glm::dvec2> gradientOpacity;
+  // dvr: the 2D transfer function over (HU, |gradient|) (issue 35, voxray/engine/tf2d.h). When
+  // set it replaces the table's colour and opacity and the gradient opacity. Empty: off.
+  Tf2d tf2d;
   double isoLo = 400.0;  // HU range of the first-hit surface (the seed's two sliders)
   double isoHi = 32767.0;
   Gradient gradient = Gradient::Central;

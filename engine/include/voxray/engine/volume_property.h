@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "voxray/engine/tf2d.h"
 #include "voxray/engine/transfer_function.h"
 
 namespace voxray {
@@ -36,6 +37,9 @@ struct VolumeProperty {
   std::vector<ColorNode> color;              // sorted by HU; a repeated HU makes a step
   std::vector<OpacityNode> opacity;          // sorted by HU; a repeated HU makes a step
   std::vector<OpacityNode> gradientOpacity;  // over |gradient| in HU/mm; empty = 1 everywhere
+  // The 2D transfer function (tf2d.h), optional: when set, dvr takes colour and opacity from it
+  // instead of the lists above. Voxray's JSON keeps it ("tf2d"); a .vp file has no place for it.
+  Tf2d tf2d;
   TfCurve curve = TfCurve::Linear;
   // The ray length (mm) over which a stated opacity holds (VTK's scalar opacity unit
   // distance); 0 = the volume's smallest voxel spacing, the meaning Voxray's presets have.
