@@ -1,6 +1,7 @@
 // voxray-cli convert: any input Voxray reads out as an OME-Zarr pyramid (issue 38), for the
 // workstation and for other OME-Zarr readers (napari, zarr-python, ITK, Neuroglancer).
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 #include "commands.h"
@@ -29,6 +30,10 @@ int runConvert(const InputOptions& in, const ConvertOptions& o) {
   while (out.size() > 1 && out.back() == '/') out.pop_back();
   if (!endsWith(out, ".zarr"))
     throw inputError("-o " + o.output + ": convert writes OME-Zarr; name the output X.ome.zarr");
+  // Before a long load: the writer checks again.
+  std::error_code ec;
+  if (!o.force && std::filesystem::exists(std::filesystem::symlink_status(out, ec)))
+    throw outputError(out + ": exists already; choose another name, or give --force to replace it");
   ZarrWriteOptions w;
   w.zarrVersion = o.zarrVersion;
   w.chunk = o.chunk;

@@ -36,7 +36,7 @@ std::vector<uint64_t> dimsOf(const ArrayMeta& m, const Json& j, const char* what
   std::vector<uint64_t> out;
   for (const Json& d : j) {
     if (!d.is_number_integer() || d.get<int64_t>() < 1)
-      bad(m, std::string(what) + " " + d.dump() + " is not a list of positive whole numbers");
+      bad(m, std::string(what) + " " + j.dump() + " is not a list of positive whole numbers");
     out.push_back(d.get<uint64_t>());
   }
   return out;
