@@ -93,15 +93,14 @@ bool readChunkFile(const ArrayMeta& m, const std::string& key, std::vector<uint8
   return true;
 }
 
-struct Samples {
-  std::vector<uint8_t> bytes;  // i fastest, native byte order
+struct ChunkCount {
   size_t missing = 0, total = 0;
 };
 
-// The array's 3D volume at index 0 of any leading (t, c) axes, as samples of its own type.
-// The spatial axes are the last three (z, y, x). Chunks are decoded in parallel; each writes
-// its own box of the output.
-Samples readSpatial(const ArrayMeta& m, const LoadOptions& options) {
+// The array's 3D volume at index 0 of any leading (t, c) axes into DEST, as samples of its own
+// type in native byte order, i fastest. The spatial axes are the last three (z, y, x). Chunks
+// are decoded in parallel; each writes its own box of DEST.
+ChunkCount readSpatial(const ArrayMeta& m, const LoadOptions& options, uint8_t* dest) {
   const size_t n = m.shape.size(), lead = n - 3, ts = m.typeSize();
   const uint64_t X = m.shape[n - 1], Y = m.shape[n - 2], Z = m.shape[n - 3];
   const uint64_t cx = m.chunks[n - 1], cy = m.chunks[n - 2], cz = m.chunks[n - 3];
@@ -109,8 +108,7 @@ Samples readSpatial(const ArrayMeta& m, const LoadOptions& options) {
   const uint64_t chunkBytes = m.chunkSamples() * ts;
   // Any encoding of a chunk (Blosc, zstd, deflate) is below twice its size plus headers.
   const uint64_t maxFile = chunkBytes * 2 + 4096 + (m.crc32cSuffix ? 4 : 0);
-  Samples out;
-  out.bytes.resize(size_t(X * Y * Z * ts));
+  ChunkCount out;
   out.total = size_t(gx * gy * gz);
   const std::vector<uint8_t> fill = sampleOf(m.fill, m.kind);
   std::atomic<size_t> missing{0}, done{0};
@@ -129,7 +127,7 @@ Samples readSpatial(const ArrayMeta& m, const LoadOptions& options) {
           ++missing;
           for (uint64_t z = 0; z < nz; ++z)
             for (uint64_t y = 0; y < ny; ++y) {
-              uint8_t* row = out.bytes.data() + (((z0 + z) * Y + y0 + y) * X + x0) * ts;
+              uint8_t* row = dest + (((z0 + z) * Y + y0 + y) * X + x0) * ts;
               for (uint64_t x = 0; x < nx; ++x) std::memcpy(row + x * ts, fill.data(), ts);
             }
         } else {
@@ -144,7 +142,7 @@ Samples readSpatial(const ArrayMeta& m, const LoadOptions& options) {
           // Leading indices are 0: the 3D box starts the chunk, rows of cx samples.
           for (uint64_t z = 0; z < nz; ++z)
             for (uint64_t y = 0; y < ny; ++y)
-              std::memcpy(out.bytes.data() + (((z0 + z) * Y + y0 + y) * X + x0) * ts,
+              std::memcpy(dest + (((z0 + z) * Y + y0 + y) * X + x0) * ts,
                           raw.data() + ((z * cy + y) * cx) * ts, size_t(nx * ts));
         }
         const size_t k = ++done;
@@ -197,50 +195,56 @@ Volume importOmeZarr(const std::string& path, const LoadOptions& options) {
     count *= d;
   }
 
-  Samples s = readSpatial(m, options);
-  if (s.missing)
-    warnings.push_back(std::to_string(s.missing) + " of " + std::to_string(s.total) +
-                       " chunks are missing in " + m.folder + "; they show the fill value " +
-                       number(m.fill));
-
-  detail::SampleDecoding decoding;
-  decoding.kind = m.kind;
-  const size_t sliceVoxels = size_t(dims[0] * dims[1]), slices = size_t(dims[2]);
-  const size_t sliceBytes = sliceVoxels * m.typeSize();
-  std::vector<detail::ValueStats> stats(slices);
-  parallelFor(
-      slices,
-      [&](size_t k) {
-        stats[k] = detail::scanSamples(s.bytes.data() + k * sliceBytes, sliceVoxels, decoding);
-      },
-      options.cancel);
-  throwIfCancelled(options);
-  detail::ValueStats all;
-  for (const auto& st : stats) all.merge(st);
-  const detail::Storage storage = detail::chooseStorage(all, decoding);
-
   Volume v;
   v.dims = glm::ivec3(int(dims[0]), int(dims[1]), int(dims[2]));
   v.spacingMm = level.spacingMm;
   v.direction = pyramid.direction;
   v.originMm = pyramid.direction * level.translationMm;
-  v.slope = storage.slope;
-  v.intercept = storage.intercept;
   v.unit = pyramid.unit;
   v.modality = pyramid.modality;
   v.sourceType = zarr::kindName(m.kind);
-  v.warnings = warnings;
-  if (!storage.warning.empty()) v.warnings.push_back(storage.warning);
   v.voxels.resize(v.voxelCount());
-  report(options, 0.95, "Converting to 16-bit voxels");
-  parallelFor(
-      slices,
-      [&](size_t k) {
-        detail::storeSamples(s.bytes.data() + k * sliceBytes, sliceVoxels, decoding, storage,
-                             v.voxels.data() + k * sliceVoxels);
-      },
-      options.cancel);
-  throwIfCancelled(options);
+  // int16 chunks go straight into the voxels (stored = value); other types through a buffer
+  // of their own and raw input's storage rule.
+  std::vector<uint8_t> samples;
+  if (m.kind != detail::SampleKind::I16) samples.resize(v.voxelCount() * m.typeSize());
+  const ChunkCount s = readSpatial(
+      m, options, samples.empty() ? reinterpret_cast<uint8_t*>(v.voxels.data()) : samples.data());
+  if (s.missing)
+    warnings.push_back(std::to_string(s.missing) + " of " + std::to_string(s.total) +
+                       " chunks are missing in " + m.folder + "; they show the fill value " +
+                       number(m.fill));
+
+  v.warnings = warnings;
+  if (!samples.empty()) {
+    detail::SampleDecoding decoding;
+    decoding.kind = m.kind;
+    const size_t sliceVoxels = size_t(dims[0] * dims[1]), slices = size_t(dims[2]);
+    const size_t sliceBytes = sliceVoxels * m.typeSize();
+    std::vector<detail::ValueStats> stats(slices);
+    parallelFor(
+        slices,
+        [&](size_t k) {
+          stats[k] = detail::scanSamples(samples.data() + k * sliceBytes, sliceVoxels, decoding);
+        },
+        options.cancel);
+    throwIfCancelled(options);
+    detail::ValueStats all;
+    for (const auto& st : stats) all.merge(st);
+    const detail::Storage storage = detail::chooseStorage(all, decoding);
+    v.slope = storage.slope;
+    v.intercept = storage.intercept;
+    if (!storage.warning.empty()) v.warnings.push_back(storage.warning);
+    report(options, 0.95, "Converting to 16-bit voxels");
+    parallelFor(
+        slices,
+        [&](size_t k) {
+          detail::storeSamples(samples.data() + k * sliceBytes, sliceVoxels, decoding, storage,
+                               v.voxels.data() + k * sliceVoxels);
+        },
+        options.cancel);
+    throwIfCancelled(options);
+  }
   report(options, 1.0, "Loaded");
   return v;
 }
