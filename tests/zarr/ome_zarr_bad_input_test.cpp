@@ -176,6 +176,21 @@ TEST_F(OmeZarrBadInput, ALevelBeyondThePyramidIsRefused) {
               HasSubstr("--level 1 is out of range: the pyramid has 1 level (0 to 0)"));
 }
 
+TEST_F(OmeZarrBadInput, AZarrV2GroupWithoutAttributesIsNotAnImage) {
+  write(2);
+  fs::remove(path_ + "/.zattrs");
+  EXPECT_THAT(loadError(), HasSubstr("has no OME-NGFF multiscales metadata"));
+}
+
+TEST_F(OmeZarrBadInput, ALevelForAnInputOfOneResolutionIsRefused) {
+  writeBytes(dir_.file("plain.raw"), std::vector<uint8_t>(16, 0));
+  LoadOptions o;
+  o.level = 2;
+  EXPECT_THAT(errorMessage([&] { loadVolume(dir_.file("plain.raw"), o); }),
+              HasSubstr("--level 2 picks a level of an OME-Zarr pyramid; this input has one "
+                        "resolution"));
+}
+
 TEST_F(OmeZarrBadInput, ADatasetPathLeavingTheFolderIsRefused) {
   write(2);
   edit(".zattrs", [](Json& j) { j["multiscales"][0]["datasets"][0]["path"] = "../../etc"; });

@@ -163,6 +163,10 @@ TEST(OmeZarrRead, AFolderWithATrailingSlashOpensAsWell) {
   writeOmeZarr(v, path);
   EXPECT_TRUE(isOmeZarr(path + "/"));
   EXPECT_EQ(loadVolume(path + "/").dims, v.dims);
+  // The workstation's loader reads every time point: an OME-Zarr has one.
+  const std::vector<Volume> series = loadVolumeSeries(path);
+  ASSERT_EQ(series.size(), 1u);
+  EXPECT_EQ(series[0].dims, v.dims);
 }
 
 }  // namespace

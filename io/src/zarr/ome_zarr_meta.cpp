@@ -99,7 +99,8 @@ Pyramid readPyramid(const std::string& folder) {
   } else if (fs::exists(root / ".zattrs", ec) || fs::exists(root / ".zgroup", ec)) {
     p.format = 2;
     file = (root / ".zattrs").string();
-    attributes = readJsonFile(file);
+    // A group without attributes has no multiscales: said below.
+    attributes = fs::exists(file, ec) ? readJsonFile(file) : Json::object();
   } else if (fs::exists(root / ".zarray", ec)) {
     bad(folder,
         "is a single Zarr array, not an OME-Zarr group; open the folder that holds it "
