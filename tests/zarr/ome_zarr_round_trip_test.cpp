@@ -4,6 +4,9 @@
 #include <tuple>
 
 #include "voxray/io/load.h"
+#ifdef VOXRAY_HAS_DICOM
+#include "voxray/io/dicom_import.h"
+#endif
 #include "zarr_test_support.h"
 
 namespace fs = std::filesystem;
@@ -163,6 +166,11 @@ TEST(OmeZarrRead, AFolderWithATrailingSlashOpensAsWell) {
   writeOmeZarr(v, path);
   EXPECT_TRUE(isOmeZarr(path + "/"));
   EXPECT_EQ(loadVolume(path + "/").dims, v.dims);
+#ifdef VOXRAY_HAS_DICOM
+  // File > Open DICOM folder lists series first: it says what the folder is instead.
+  EXPECT_THAT(errorMessage([&] { listDicomSeries(path); }),
+              ::testing::HasSubstr("is an OME-Zarr folder, not DICOM; open it as it is"));
+#endif
   // The workstation's loader reads every time point: an OME-Zarr has one.
   const std::vector<Volume> series = loadVolumeSeries(path);
   ASSERT_EQ(series.size(), 1u);
