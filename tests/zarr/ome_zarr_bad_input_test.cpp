@@ -118,6 +118,27 @@ TEST_F(OmeZarrBadInput, ATruncatedChunkIsNamedForEveryCodec) {
     }
 }
 
+TEST_F(OmeZarrBadInput, GarbageChunksAreRefusedForEveryCodecAndNeverCrash) {
+  // Headers that claim more than they hold: Blosc (version 2, nbytes 8192, cbytes 1 GiB), a
+  // zstd frame of another content size, gzip's magic then noise; empty and random files.
+  const std::vector<std::vector<uint8_t>> blobs = {
+      {},
+      {2, 1, 0x21, 2, 0x00, 0x20, 0, 0, 0x00, 0x20, 0, 0, 0, 0, 0, 0x40},
+      {0x28, 0xb5, 0x2f, 0xfd, 0x20, 0x10, 0x01, 0x00, 0x00, 0x41},
+      {0x1f, 0x8b, 8, 0, 0, 0, 0, 0, 0, 3, 0xde, 0xad, 0xbe, 0xef},
+      std::vector<uint8_t>(100, 0xa5)};
+  for (ZarrCodec codec :
+       {ZarrCodec::BloscZstd, ZarrCodec::Zstd, ZarrCodec::Gzip, ZarrCodec::None}) {
+    fs::remove_all(path_);
+    write(2, codec);
+    for (const auto& blob : blobs) {
+      writeBytes(chunk(2), blob);
+      EXPECT_THAT(loadError(), HasSubstr(chunk(2) + ": the chunk is damaged or truncated ("))
+          << int(codec) << ", " << blob.size() << " bytes";
+    }
+  }
+}
+
 TEST_F(OmeZarrBadInput, AnUncompressedChunkOfTheWrongSizeSaysBoth) {
   write(2, ZarrCodec::None);
   truncate(chunk(2));
