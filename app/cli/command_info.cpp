@@ -10,6 +10,7 @@
 #include "terminal_text.h"
 #include "voxray/io/dicom_import.h"
 #include "voxray/io/error.h"
+#include "voxray/io/ome_zarr.h"
 #include "voxray/io/volume_file.h"
 
 namespace voxray::cli {
@@ -68,7 +69,8 @@ Run addInfoCommand(CLI::App& app) {
     if (*allTimes) return describeTimePoints(*in, *json);
     std::optional<DicomListing> listing;
 #ifdef VOXRAY_HAS_DICOM  // lean builds (VOXRAY_WITH_DICOM=OFF) read raw data only
-    if (!in->input.empty() && !in->flags.count("raw-dims") && !isVolumeFile(in->input)) {
+    if (!in->input.empty() && !in->flags.count("raw-dims") && !isVolumeFile(in->input) &&
+        !isOmeZarr(in->input)) {
       try {
         listing = listDicomSeries(in->input);
       } catch (const Error&) {

@@ -26,5 +26,6 @@ Run addSegmentCommand(CLI::App& app);
 Run addExportSrCommand(CLI::App& app);
 Run addKeyImagesCommand(CLI::App& app);
 Run addAnonymiseCommand(CLI::App& app);
+Run addConvertCommand(CLI::App& app);
 
 }  // namespace voxray::cli

@@ -23,9 +23,18 @@ void InputOptions::add(CLI::App& cmd) {
   cmd.add_option("--phantom-size", phantomSize,
                  "no INPUT: voxels per axis of the head phantom (1024: a 2 GiB volume)")
       ->check(CLI::Range(2, 1024));
+  // Not an input flag spec (the workstation's session has no field for it yet): CLI only.
+  cmd.add_option("--level", level,
+                 "OME-Zarr: the pyramid level to open, 0 (full resolution, the default) to the "
+                 "coarsest")
+      ->check(CLI::Range(0, 32));
 }
 
-LoadOptions InputOptions::loadOptions() const { return loadOptionsFromFlags(flags); }
+LoadOptions InputOptions::loadOptions() const {
+  LoadOptions o = loadOptionsFromFlags(flags);
+  o.level = level;
+  return o;
+}
 
 Volume InputOptions::load() const {
   LoadOptions o = loadOptions();

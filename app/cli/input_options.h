@@ -15,6 +15,7 @@ struct InputOptions {
   std::string input;                         // empty: the embedded head phantom
   std::map<std::string, std::string> flags;  // --KEY VALUE of inputFlagSpecs() the user gave
   int phantomSize = 256;                     // voxels per axis of the head phantom (no INPUT)
+  int level = 0;                             // --level: an OME-Zarr pyramid's level
   std::string db;  // --db: the study database a db:SERIES_UID input (or --series) is found in
 
   void add(CLI::App& cmd);

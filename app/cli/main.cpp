@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   runs.push_back(voxray::cli::addExportSrCommand(app));
   runs.push_back(voxray::cli::addKeyImagesCommand(app));
   runs.push_back(voxray::cli::addAnonymiseCommand(app));
+  // Issue 38: OME-Zarr out.
+  runs.push_back(voxray::cli::addConvertCommand(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -16,6 +16,7 @@
 #include "voxray/io/dicom_import.h"
 #define VOXRAY_LOAD_DICOM 1
 #endif
+#include "voxray/io/ome_zarr.h"
 #include "voxray/io/volume_file.h"
 
 namespace fs = std::filesystem;
@@ -57,6 +58,18 @@ Volume loadVolume(const std::string& input, const LoadOptions& options) {
   std::error_code ec;
   if (!fs::exists(input, ec)) throw inputError(input + ": no such file or folder");
   detail::refuseSpecialFile(input);
+  if (options.level != 0 && !isOmeZarr(input))
+    throw inputError(input + ": --level " + std::to_string(options.level) +
+                     " picks a level of an OME-Zarr pyramid; this input has one resolution");
+  if (isOmeZarr(input)) {
+#if defined(VOXRAY_HAS_ZARR)
+    refuseTimePoint(input, options);
+    return importOmeZarr(input, options);
+#else
+    throw inputError(input + ": this build of Voxray cannot read OME-Zarr (it was built with " +
+                     "VOXRAY_WITH_ZARR=OFF)");
+#endif
+  }
   if (isVolumeFile(input)) {
 #if defined(VOXRAY_HAS_FORMATS)
     return importVolumeFile(input, options);
@@ -82,7 +95,8 @@ std::vector<Volume> loadVolumeSeries(const std::string& input, const LoadOptions
 #ifdef VOXRAY_LOAD_DICOM
   std::error_code ec;
   if (!input.empty() && input != kSampleCtInput && !options.raw && !isVolumeFile(input) &&
-      fs::exists(input, ec) && (!fs::is_regular_file(input, ec) || mayBeDicom(input)))
+      !isOmeZarr(input) && fs::exists(input, ec) &&
+      (!fs::is_regular_file(input, ec) || mayBeDicom(input)))
     return importDicomTimePoints(input, first);
 #endif
   std::vector<Volume> out;

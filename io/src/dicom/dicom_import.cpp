@@ -22,6 +22,7 @@
 #include "stack_geometry.h"
 #include "value_mapping.h"
 #include "voxray/io/error.h"
+#include "voxray/io/ome_zarr.h"
 #include "voxray/io/parallel.h"
 #include "voxray/io/raw_import.h"
 #include "voxray/io/suv.h"
@@ -392,6 +393,10 @@ std::string sampleTypeName(const FrameHeader& f) {
 }  // namespace
 
 DicomListing listDicomSeries(const std::string& input, const LoadOptions& options) {
+  // Not a scan of thousands of chunk files for a DICOM header: say what it is.
+  if (isOmeZarr(input))
+    throw inputError(input + ": is an OME-Zarr folder, not DICOM; open it as it is (voxray-cli " +
+                     "info or render FOLDER, or drop it on the workstation's window)");
   Scan s = scan(input, options, nullptr);
   DicomListing listing;
   listing.filesScanned = int(s.input.files.size());

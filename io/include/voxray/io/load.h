@@ -19,6 +19,7 @@ struct LoadOptions {
   // 4D (DICOM, NIfTI): the time point to load, 0-based; none: the first, or the one --series
   // names.
   std::optional<int> timePoint;
+  int level = 0;  // OME-Zarr: the pyramid level, 0 (full resolution) up to the coarsest
   // Progress 0..1 and a message; called from worker threads. May be empty.
   std::function<void(double, const std::string&)> progress;
   const std::atomic<bool>* cancel = nullptr;  // set to true to abandon the load

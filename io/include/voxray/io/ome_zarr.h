@@ -1,0 +1,57 @@
+#pragma once
+// OME-Zarr (NGFF 0.4 on Zarr v2, NGFF 0.5 on Zarr v3): a multiscale pyramid of chunked,
+// compressed 3D arrays in a folder (*.ome.zarr). Geometry: the multiscales' axes (z, y, x
+// with their units) and each level's scale and translation give spacing and origin in mm;
+// NGFF has no orientation, so a volume is read with i, j, k along L, P, S (ITK's convention)
+// unless Voxray wrote it: then the "voxray" attributes block beside "multiscales" holds the
+// LPS direction of each index axis and the translation is the origin in the volume's own
+// axes (LPS origin = direction * translation). Only std and GLM types here.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "voxray/io/load.h"
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+// True when PATH is a folder that is a Zarr group: it holds zarr.json (v3) or .zattrs/.zgroup
+// (v2), or its name ends in .zarr.
+bool isOmeZarr(const std::string& path);
+
+// Reads one level of the pyramid (options.level; 0 is full resolution) as a Volume of
+// physical values. Chunks that are missing read as the array's fill value, with a warning
+// saying how many. Throws Error (Input) naming the file or chunk and what is wrong.
+Volume importOmeZarr(const std::string& path, const LoadOptions& options = {});
+
+enum class ZarrCodec { BloscZstd, Zstd, Gzip, None };
+// "blosc-zstd", "zstd", "gzip", "none"; throws Error (Input) for another name.
+ZarrCodec parseZarrCodec(const std::string& name);
+
+struct ZarrWriteOptions {
+  int zarrVersion = 2;  // 2: NGFF 0.4 on Zarr v2; 3: NGFF 0.5 on Zarr v3
+  int chunk = 64;       // chunk edge in voxels (z, y, x)
+  ZarrCodec codec = ZarrCodec::BloscZstd;
+  int levels = 0;      // pyramid levels, full resolution included; 0: until one chunk holds a slice
+  bool force = false;  // replace an existing output
+  std::function<void(double, const std::string&)> progress;  // may be empty
+};
+
+struct ZarrWriteResult {
+  std::vector<glm::ivec3> dims;  // per level, i, j, k
+  std::string dataType;          // "int16" (HU as they are) or "float32"
+  uint64_t chunks = 0, bytes = 0;
+};
+
+// Writes V as an OME-Zarr pyramid at PATH: level 0 holds V's physical values, each further level
+// the 2x2x2 mean of the one before (an odd last row, column or slice is averaged alone). Works in
+// z-slabs of one chunk's depth, so beyond V itself it holds a few slabs. Writes into a
+// temporary folder beside PATH and renames it. Throws Error (Output) when PATH exists and
+// options.force is false, or when writing fails; Error (Input) for bad options.
+ZarrWriteResult writeOmeZarr(const Volume& v, const std::string& path,
+                             const ZarrWriteOptions& options = {});
+
+}  // namespace voxray

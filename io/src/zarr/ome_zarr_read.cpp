@@ -1,0 +1,252 @@
+// OME-Zarr into a Volume: the multiscales metadata gives the level's array and its geometry;
+// the chunks are decoded in parallel straight into the samples of the 3D volume; the samples
+// become 16-bit voxels by raw input's rule (raw_samples.h: exact when they fit int16).
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "../file_kind.h"
+#include "ome_zarr_meta.h"
+#include "voxray/io/error.h"
+#include "voxray/io/ome_zarr.h"
+#include "voxray/io/parallel.h"
+#include "voxray/io/raw_import.h"
+#include "zarr_array.h"
+
+namespace fs = std::filesystem;
+
+namespace voxray {
+namespace {
+
+using zarr::ArrayMeta;
+
+void report(const LoadOptions& o, double fraction, const std::string& what) {
+  if (o.progress) o.progress(fraction, what);
+}
+
+void throwIfCancelled(const LoadOptions& o) {
+  if (o.cancel && o.cancel->load()) throw cancelledError("loading cancelled");
+}
+
+void swapBytes(uint8_t* p, size_t count, size_t size) {
+  for (size_t i = 0; i < count; ++i, p += size) std::reverse(p, p + size);
+}
+
+// One sample of VALUE in KIND, native byte order (a missing chunk's fill).
+std::vector<uint8_t> sampleOf(double value, detail::SampleKind kind) {
+  std::vector<uint8_t> out(detail::sampleBytes(kind));
+  auto put = [&](auto x) { std::memcpy(out.data(), &x, sizeof x); };
+  using K = detail::SampleKind;
+  const bool finite = std::isfinite(value);
+  switch (kind) {
+    case K::U8:
+      put(uint8_t(finite ? value : 0));
+      break;
+    case K::I8:
+      put(int8_t(finite ? value : 0));
+      break;
+    case K::U16:
+      put(uint16_t(finite ? value : 0));
+      break;
+    case K::I16:
+      put(int16_t(finite ? value : 0));
+      break;
+    case K::U32:
+      put(uint32_t(finite ? value : 0));
+      break;
+    case K::I32:
+      put(int32_t(finite ? value : 0));
+      break;
+    case K::F32:
+      put(float(value));
+      break;
+    case K::F64:
+      put(value);
+      break;
+  }
+  return out;
+}
+
+// Reads the whole file KEY below the array's folder; false when it does not exist.
+bool readChunkFile(const ArrayMeta& m, const std::string& key, std::vector<uint8_t>& data,
+                   uint64_t maxBytes) {
+  const fs::path file = fs::path(m.folder) / key;
+  std::error_code ec;
+  const auto status = fs::status(file, ec);
+  if (status.type() == fs::file_type::not_found) return false;
+  if (status.type() != fs::file_type::regular)
+    throw inputError(file.string() +
+                     ": the chunk is not a regular file (a folder, FIFO or "
+                     "device); the Zarr array is damaged");
+  const uintmax_t size = fs::file_size(file, ec);
+  if (ec || size > maxBytes)
+    throw inputError(file.string() + ": the chunk has " + std::to_string(size) +
+                     " bytes, more than any encoding of it takes; the Zarr array is damaged");
+  data.resize(size_t(size));
+  std::ifstream in(file, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(data.data()), std::streamsize(size)))
+    throw inputError(file.string() + ": cannot read the chunk (check its permissions)");
+  return true;
+}
+
+struct ChunkCount {
+  size_t missing = 0, total = 0;
+};
+
+// The array's 3D volume at index 0 of any leading (t, c) axes into DEST, as samples of its own
+// type in native byte order, i fastest. The spatial axes are the last three (z, y, x). Chunks
+// are decoded in parallel; each writes its own box of DEST.
+ChunkCount readSpatial(const ArrayMeta& m, const LoadOptions& options, uint8_t* dest) {
+  const size_t n = m.shape.size(), lead = n - 3, ts = m.typeSize();
+  const uint64_t X = m.shape[n - 1], Y = m.shape[n - 2], Z = m.shape[n - 3];
+  const uint64_t cx = m.chunks[n - 1], cy = m.chunks[n - 2], cz = m.chunks[n - 3];
+  const uint64_t gx = (X + cx - 1) / cx, gy = (Y + cy - 1) / cy, gz = (Z + cz - 1) / cz;
+  const uint64_t chunkBytes = m.chunkSamples() * ts;
+  // Any encoding of a chunk (Blosc, zstd, deflate) is below twice its size plus headers.
+  const uint64_t maxFile = chunkBytes * 2 + 4096 + (m.crc32cSuffix ? 4 : 0);
+  ChunkCount out;
+  out.total = size_t(gx * gy * gz);
+  const std::vector<uint8_t> fill = sampleOf(m.fill, m.kind);
+  std::atomic<size_t> missing{0}, done{0};
+  parallelFor(
+      out.total,
+      [&](size_t c) {
+        const uint64_t ix = c % gx, iy = (c / gx) % gy, iz = c / (gx * gy);
+        std::vector<uint64_t> index(lead, 0);
+        index.insert(index.end(), {iz, iy, ix});
+        const std::string key = m.chunkKey(index);
+        const uint64_t x0 = ix * cx, y0 = iy * cy, z0 = iz * cz;
+        const uint64_t nx = std::min(cx, X - x0), ny = std::min(cy, Y - y0),
+                       nz = std::min(cz, Z - z0);
+        std::vector<uint8_t> data, raw;
+        if (!readChunkFile(m, key, data, maxFile)) {
+          ++missing;
+          for (uint64_t z = 0; z < nz; ++z)
+            for (uint64_t y = 0; y < ny; ++y) {
+              uint8_t* row = dest + (((z0 + z) * Y + y0 + y) * X + x0) * ts;
+              for (uint64_t x = 0; x < nx; ++x) std::memcpy(row + x * ts, fill.data(), ts);
+            }
+        } else {
+          const std::string where = (fs::path(m.folder) / key).string();
+          if (m.crc32cSuffix) {
+            if (data.size() < 4) throw inputError(where + ": the chunk is truncated (no checksum)");
+            data.resize(data.size() - 4);  // the checksum is not verified (zlib has no CRC-32C)
+          }
+          raw.resize(size_t(chunkBytes));
+          zarr::decodeChunk(m.codec, data, raw, ts, where);
+          if (m.swap) swapBytes(raw.data(), raw.size() / ts, ts);
+          // Leading indices are 0: the 3D box starts the chunk, rows of cx samples.
+          for (uint64_t z = 0; z < nz; ++z)
+            for (uint64_t y = 0; y < ny; ++y)
+              std::memcpy(dest + (((z0 + z) * Y + y0 + y) * X + x0) * ts,
+                          raw.data() + ((z * cy + y) * cx) * ts, size_t(nx * ts));
+        }
+        const size_t k = ++done;
+        if (k % 64 == 0) report(options, 0.9 * double(k) / double(out.total), "Reading chunks");
+      },
+      options.cancel);
+  throwIfCancelled(options);
+  out.missing = missing;
+  return out;
+}
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+Volume importOmeZarr(const std::string& path, const LoadOptions& options) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw inputError(path + ": no such folder");
+  detail::refuseSpecialFile(path);
+  report(options, 0.0, "Reading " + fs::path(path).filename().string());
+  const zarr::Pyramid pyramid = zarr::readPyramid(path);
+  if (options.level < 0 || size_t(options.level) >= pyramid.levels.size())
+    throw inputError(path + ": --level " + std::to_string(options.level) +
+                     " is out of range: the pyramid has " + std::to_string(pyramid.levels.size()) +
+                     " level" + (pyramid.levels.size() == 1 ? "" : "s") + " (0 to " +
+                     std::to_string(pyramid.levels.size() - 1) + ")");
+  const zarr::Level& level = pyramid.levels[size_t(options.level)];
+  const ArrayMeta m = zarr::readArrayMeta(level.folder, pyramid.format);
+  if (m.shape.size() != pyramid.axes)
+    throw inputError(m.metadataFile + ": the array has " + std::to_string(m.shape.size()) +
+                     " dimensions but the multiscales metadata names " +
+                     std::to_string(pyramid.axes) + " axes; the metadata is damaged");
+  const size_t n = m.shape.size();
+  std::vector<std::string> warnings = pyramid.warnings;
+  for (size_t a = 0; a + 3 < n; ++a)
+    if (m.shape[a] > 1)
+      warnings.push_back("the array has " + std::to_string(m.shape[a]) + " along its '" +
+                         pyramid.axisNames[a] + "' axis; Voxray shows the first");
+  const std::array<uint64_t, 3> dims = {m.shape[n - 1], m.shape[n - 2], m.shape[n - 3]};
+  uint64_t count = 1;
+  for (uint64_t d : dims) {
+    if (d > kMaxVoxels || count > kMaxVoxels / d)
+      throw inputError(m.metadataFile + ": the shape " + nlohmann::json(m.shape).dump() +
+                       " has more voxels than Voxray can hold (at most " +
+                       std::to_string(kMaxVoxels) + "); open a coarser level with --level");
+    count *= d;
+  }
+
+  Volume v;
+  v.dims = glm::ivec3(int(dims[0]), int(dims[1]), int(dims[2]));
+  v.spacingMm = level.spacingMm;
+  v.direction = pyramid.direction;
+  v.originMm = pyramid.direction * level.translationMm;
+  v.unit = pyramid.unit;
+  v.modality = pyramid.modality;
+  v.sourceType = zarr::kindName(m.kind);
+  v.voxels.resize(v.voxelCount());
+  // int16 chunks go straight into the voxels (stored = value); other types through a buffer
+  // of their own and raw input's storage rule.
+  std::vector<uint8_t> samples;
+  if (m.kind != detail::SampleKind::I16) samples.resize(v.voxelCount() * m.typeSize());
+  const ChunkCount s = readSpatial(
+      m, options, samples.empty() ? reinterpret_cast<uint8_t*>(v.voxels.data()) : samples.data());
+  if (s.missing)
+    warnings.push_back(std::to_string(s.missing) + " of " + std::to_string(s.total) +
+                       " chunks are missing in " + m.folder + "; they show the fill value " +
+                       number(m.fill));
+
+  v.warnings = warnings;
+  if (!samples.empty()) {
+    detail::SampleDecoding decoding;
+    decoding.kind = m.kind;
+    const size_t sliceVoxels = size_t(dims[0] * dims[1]), slices = size_t(dims[2]);
+    const size_t sliceBytes = sliceVoxels * m.typeSize();
+    std::vector<detail::ValueStats> stats(slices);
+    parallelFor(
+        slices,
+        [&](size_t k) {
+          stats[k] = detail::scanSamples(samples.data() + k * sliceBytes, sliceVoxels, decoding);
+        },
+        options.cancel);
+    throwIfCancelled(options);
+    detail::ValueStats all;
+    for (const auto& st : stats) all.merge(st);
+    const detail::Storage storage = detail::chooseStorage(all, decoding);
+    v.slope = storage.slope;
+    v.intercept = storage.intercept;
+    if (!storage.warning.empty()) v.warnings.push_back(storage.warning);
+    report(options, 0.95, "Converting to 16-bit voxels");
+    parallelFor(
+        slices,
+        [&](size_t k) {
+          detail::storeSamples(samples.data() + k * sliceBytes, sliceVoxels, decoding, storage,
+                               v.voxels.data() + k * sliceVoxels);
+        },
+        options.cancel);
+    throwIfCancelled(options);
+  }
+  report(options, 1.0, "Loaded");
+  return v;
+}
+
+}  // namespace voxray
