@@ -114,6 +114,12 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   rangeRow->addWidget(lo_);
   rangeRow->addWidget(hi_);
   rangeRow->addWidget(fromWindow);
+  auto* fromTf = new QPushButton("From TF");
+  fromTf->setObjectName("segmentFromTf");
+  fromTf->setToolTip(
+      "Start the range from what the 3D view shows: the transfer function's opaque range "
+      "(iso: the surface's range)");
+  rangeRow->addWidget(fromTf);
   form->addRow("Range", rangeRow);
   connectivity_ = new QComboBox;
   connectivity_->addItems({"6 (faces)", "26 (faces, edges, corners)"});
@@ -122,6 +128,12 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   overwrite_ = new QCheckBox("Take other segments' voxels");
   overwrite_->setToolTip("Painting and thresholds also take voxels that other segments hold");
   form->addRow("", overwrite_);
+  scissorsKeep_ = new QCheckBox("Scissors keep only inside");
+  scissorsKeep_->setObjectName("segmentScissorsKeep");
+  scissorsKeep_->setToolTip(
+      "Scissors in the 3D view keep only what lies behind the lasso (e.g. the head without the "
+      "table) instead of removing it");
+  form->addRow("", scissorsKeep_);
   auto* apply = new QPushButton("Apply threshold");
   apply->setObjectName("segmentApplyThreshold");
   apply->setToolTip("Every voxel in the range becomes the chosen segment's (one undo step)");
@@ -250,6 +262,21 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
       s.connectivity = i == 1 ? Connectivity::Full26 : Connectivity::Faces6;
     });
   });
+  connect(fromTf, &QPushButton::clicked, this, [this] {
+    if (m_.document.empty()) return;
+    const Volume& v = *m_.document.volume();
+    const ValueRange stored = storedRange(v);
+    const double a = v.toPhysical(stored.min), b = v.toPhysical(stored.max);
+    try {
+      const HuRange r =
+          rangeFromTransferFunction(m_.render.params(), {std::min(a, b), std::max(a, b)});
+      setTools([r](SegmentToolSettings& s) { s.range = r; });
+    } catch (const std::exception& e) {
+      fail("Cannot take the range from the transfer function", e.what());
+    }
+  });
+  connect(scissorsKeep_, &QCheckBox::toggled, this,
+          [this](bool on) { setTools([on](SegmentToolSettings& s) { s.scissorsKeep = on; }); });
   connect(overwrite_, &QCheckBox::toggled, this,
           [this](bool on) { setTools([on](SegmentToolSettings& s) { s.overwriteOthers = on; }); });
   connect(apply, &QPushButton::clicked, this, [this] {

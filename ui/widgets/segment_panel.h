@@ -69,7 +69,7 @@ class SegmentPanel : public QWidget {
   QPushButton *undo_, *redo_;
   QComboBox *tool_, *connectivity_, *operation_, *logicalOp_, *other_, *mask3d_;
   QDoubleSpinBox *radius_, *lo_, *hi_, *value_;
-  QCheckBox *sphere_, *overwrite_;
+  QCheckBox *sphere_, *overwrite_, *scissorsKeep_;
   QLabel* preview_;
   QSlider* blend_;
   QTableWidget* stats_;

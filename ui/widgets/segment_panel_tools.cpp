@@ -40,7 +40,7 @@ void SegmentPanel::refreshTools() {
   const SegmentToolSettings& s = m_.segmentTools.settings();
   {
     const QSignalBlocker b1(tool_), b2(radius_), b3(sphere_), b4(lo_), b5(hi_), b6(connectivity_),
-        b7(overwrite_);
+        b7(overwrite_), b8(scissorsKeep_);
     tool_->setCurrentIndex(int(s.tool));
     radius_->setValue(s.radiusMm);
     sphere_->setChecked(s.sphere);
@@ -48,6 +48,7 @@ void SegmentPanel::refreshTools() {
     hi_->setValue(s.range.hi);
     connectivity_->setCurrentIndex(s.connectivity == Connectivity::Full26 ? 1 : 0);
     overwrite_->setChecked(s.overwriteOthers);
+    scissorsKeep_->setChecked(s.scissorsKeep);
   }
   if (s.label && s.label != currentLabel()) selectLabel(s.label);  // a pick in the 3D view
   QString text;
