@@ -23,6 +23,7 @@
 #include <QSettings>
 #include <QSlider>
 #include <QTableWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include "coupling.h"
@@ -76,6 +77,11 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
       "DICOM SEG (.dcm) or raw labels (.labels.raw)");
   files->addWidget(importButton);
   files->addWidget(exportButton);
+  sendSeg_ = new QPushButton("Send SEG to PACS…");
+  sendSeg_->setObjectName("segmentSendSeg");
+  sendSeg_->setToolTip("Send the DICOM SEG last exported (Export… as .dcm) to a PACS node");
+  sendSeg_->setEnabled(false);
+  files->addWidget(sendSeg_);
   layout->addLayout(files);
 
   // The tools in the slice views.
@@ -209,7 +215,8 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   stats_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   stats_->verticalHeader()->hide();
   stats_->setMinimumHeight(90);
-  stats_->setToolTip("Each segment's voxels, volume and the values inside it (Update counts)");
+  stats_->setToolTip(
+      "Each segment's voxels, volume and the values inside it, counted again after each edit");
   statsLayout->addWidget(stats_);
   auto* statsButtons = new QHBoxLayout;
   auto* update = new QPushButton("Update");
@@ -243,6 +250,7 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   });
   connect(importButton, &QPushButton::clicked, this, [this] { importDialog(); });
   connect(exportButton, &QPushButton::clicked, this, [this] { exportDialog(); });
+  connect(sendSeg_, &QPushButton::clicked, this, [this] { sendSegDialog(); });
   connect(tool_, &QComboBox::currentIndexChanged, this,
           [this](int i) { setTools([i](SegmentToolSettings& s) { s.tool = SegmentTool(i); }); });
   connect(radius_, &QDoubleSpinBox::valueChanged, this,
@@ -305,7 +313,16 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
           [this] { QApplication::clipboard()->setText(statisticsText()); });
   connect(csv, &QPushButton::clicked, this, [this] { saveCsv(); });
 
-  onModelChange<>(this, m_.segmentation.changed, [this] { refreshList(); });
+  // The statistics follow every edit: a burst of them (a paint drag) counts once, 300 ms after
+  // the last, on a worker thread.
+  statsTimer_ = new QTimer(this);
+  statsTimer_->setSingleShot(true);
+  statsTimer_->setInterval(300);
+  connect(statsTimer_, &QTimer::timeout, this, [this] { refreshStatisticsInBackground(); });
+  onModelChange<>(this, m_.segmentation.changed, [this] {
+    refreshList();
+    statsTimer_->start();
+  });
   onModelChange<>(this, m_.segmentTools.changed, [this] { refreshTools(); });
   onModelChange<>(this, m_.crosshair.changed, [this] { refreshTools(); });
   onModelChange<>(this, m_.document.changed, [this] { refreshTools(); });

@@ -54,6 +54,10 @@ bool SegmentPanel::exportTo(const QString& path) {
   try {
     writeSegmentationOutput(path.toStdString(), m_.segmentation.segmentation(),
                             *m_.document.volume(), exists);
+    if (path.endsWith(".dcm", Qt::CaseInsensitive)) {
+      lastSeg_ = path.toStdString();
+      sendSeg_->setEnabled(true);
+    }
   } catch (const std::exception& e) {
     fail("Export failed", e.what());
     return false;

@@ -110,7 +110,9 @@ void SegmentPanel::chooseColour(int row) {
   const uint8_t label = uint8_t(list_->item(row, kName)->data(Qt::UserRole).toInt());
   const Segment* s = m_.segmentation.segmentation().find(label);
   if (!s) return;
-  const QColor c = QColorDialog::getColor(toQColor(s->colour), this, "Segment colour");
+  const QColor c = chooseColour_
+                       ? chooseColour_(toQColor(s->colour))
+                       : QColorDialog::getColor(toQColor(s->colour), this, "Segment colour");
   if (c.isValid())
     m_.segmentation.setColour(label, {float(c.redF()), float(c.greenF()), float(c.blueF())});
 }

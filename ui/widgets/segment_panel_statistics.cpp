@@ -2,6 +2,7 @@
 #include "segment_panel.h"
 
 #include <filesystem>
+#include <memory>
 
 #include <QApplication>
 #include <QCheckBox>
@@ -18,11 +19,13 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSlider>
 #include <QTableWidget>
+#include <QThreadPool>
 #include <QVBoxLayout>
 
 #include "coupling.h"
@@ -36,14 +39,44 @@
 namespace voxray::ui {
 
 void SegmentPanel::updateStatistics() {
-  lastStats_.clear();
+  ++statsGeneration_;  // a refresh still counting in the background is out of date
+  std::vector<SegmentStats> stats;
   if (!m_.document.empty() && m_.segmentation.active()) {
     try {
-      lastStats_ = allSegmentStats(m_.segmentation.segmentation(), *m_.document.volume());
+      stats = allSegmentStats(m_.segmentation.segmentation(), *m_.document.volume());
     } catch (const std::exception& e) {
       fail("Cannot count the segments", e.what());
     }
   }
+  showStatistics(std::move(stats));
+}
+
+void SegmentPanel::refreshStatisticsInBackground() {
+  const unsigned generation = ++statsGeneration_;
+  if (m_.document.empty() || !m_.segmentation.active()) return showStatistics({});
+  // A copy of the labels (a memcpy, milliseconds even for a 512³ map) so the user edits on
+  // while they are counted; the volume is shared and never changed in place.
+  auto seg = std::make_shared<const Segmentation>(m_.segmentation.segmentation());
+  std::shared_ptr<const Volume> volume = m_.document.volume();
+  QPointer<SegmentPanel> self(this);
+  QThreadPool::globalInstance()->start([self, seg, volume, generation] {
+    auto stats = std::make_shared<std::vector<SegmentStats>>();
+    try {
+      *stats = allSegmentStats(*seg, *volume);
+    } catch (const std::exception&) {
+      return;  // Update says why; a background refresh keeps the last table
+    }
+    QMetaObject::invokeMethod(
+        qApp,
+        [self, stats, generation] {
+          if (self && self->statsGeneration_ == generation) self->showStatistics(std::move(*stats));
+        },
+        Qt::QueuedConnection);
+  });
+}
+
+void SegmentPanel::showStatistics(std::vector<SegmentStats> stats) {
+  lastStats_ = std::move(stats);
   stats_->setRowCount(int(lastStats_.size()));
   for (int row = 0; row < int(lastStats_.size()); ++row) {
     const SegmentStats& s = lastStats_[size_t(row)];
@@ -57,6 +90,7 @@ void SegmentPanel::updateStatistics() {
                                number(s.median)};
     for (int c = 0; c < cells.size(); ++c) stats_->setItem(row, c, new QTableWidgetItem(cells[c]));
   }
+  emit statisticsShown();
 }
 
 QString SegmentPanel::statisticsText() const {
@@ -74,17 +108,24 @@ QString SegmentPanel::statisticsText() const {
 }
 
 void SegmentPanel::saveCsv() {
-  if (lastStats_.empty()) updateStatistics();
   QSettings s;
   const QString path = QFileDialog::getSaveFileName(
       this, "Save statistics", s.value("lastSegmentFolder").toString(), "CSV (*.csv)");
   if (path.isEmpty()) return;  // the dialog asked before replacing
+  saveCsvTo(path);
+}
+
+bool SegmentPanel::saveCsvTo(const QString& path) {
+  updateStatistics();  // the segments as they are now, not as last counted
   QFile f(path);
   const std::string csv = statsCsv(lastStats_);
   if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-      f.write(csv.data(), qint64(csv.size())) != qint64(csv.size()))
+      f.write(csv.data(), qint64(csv.size())) != qint64(csv.size())) {
     fail("Cannot save the statistics",
          "Cannot write " + path + ": check the folder and free space.");
+    return false;
+  }
+  return true;
 }
 
 }  // namespace voxray::ui
