@@ -6,8 +6,10 @@
 #include <iterator>
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QMainWindow>
 #include <QMenuBar>
 #include <QProcess>
@@ -357,6 +359,50 @@ class SegmentEditorTest : public QObject {
     QCOMPARE(QString::fromStdString(models().segmentation.undoText()), QString("Undo Scissors"));
     models().segmentation.undo();
     QCOMPARE(countLabel(models().segmentation.segmentation(), label), ball);
+    // Ticked "keep only inside": the same lasso around the whole image keeps the whole ball;
+    // one in the image's top-left corner, clear of the ball, keeps nothing.
+    panel().findChild<QCheckBox*>("segmentScissorsKeep")->setChecked(true);
+    QVERIFY(models().segmentTools.settings().scissorsKeep);
+    QTest::mousePress(&view, Qt::LeftButton, {}, corners[0]);
+    for (const QPoint& c : corners) QTest::mouseMove(&view, c);
+    QTest::mouseRelease(&view, Qt::LeftButton, {}, corners[3]);
+    QCOMPARE(countLabel(models().segmentation.segmentation(), label), ball);
+    const QPoint corner[] = {r.topLeft() + QPoint(2, 2), r.topLeft() + QPoint(12, 2),
+                             r.topLeft() + QPoint(12, 12), r.topLeft() + QPoint(2, 12)};
+    QTest::mousePress(&view, Qt::LeftButton, {}, corner[0]);
+    for (const QPoint& c : corner) QTest::mouseMove(&view, c);
+    QTest::mouseRelease(&view, Qt::LeftButton, {}, corner[3]);
+    QCOMPARE(countLabel(models().segmentation.segmentation(), label), size_t(0));
+    QCOMPARE(QString::fromStdString(models().segmentation.undoText()),
+             QString("Undo Scissors keep"));
+  }
+
+  // From TF: the range becomes the 3D view's opaque HU range (dvr table), or iso's range
+  // (both inside the 64³ phantom's values, -1000 ... 965 HU, so not clamped).
+  void fromTfTakesTheTransferFunctionsOpaqueRange() {
+    models().render.update(kAppearance, [](RenderParams& p) {
+      p.mode = Mode::Dvr;
+      const glm::dvec3 c(1.0);
+      p.transferFunction = {{-500, glm::dvec4(c, 0)},
+                            {250, glm::dvec4(c, 0)},
+                            {600, glm::dvec4(c, 0.5)},
+                            {900, glm::dvec4(c, 0)}};
+    });
+    auto* fromTf = panel().findChild<QPushButton*>("segmentFromTf");
+    fromTf->click();
+    QCOMPARE(models().segmentTools.settings().range.lo, 250.0);
+    QCOMPARE(models().segmentTools.settings().range.hi, 900.0);
+    QCOMPARE(panel().findChild<QDoubleSpinBox*>("segmentLo")->value(), 250.0);
+    QCOMPARE(panel().findChild<QDoubleSpinBox*>("segmentHi")->value(), 900.0);
+    models().render.update(kAppearance, [](RenderParams& p) {
+      p.mode = Mode::Iso;
+      p.isoLo = 700;
+      p.isoHi = 900;
+    });
+    fromTf->click();
+    QCOMPARE(models().segmentTools.settings().range.lo, 700.0);
+    QCOMPARE(models().segmentTools.settings().range.hi, 900.0);
+    QVERIFY(errors_.isEmpty());
   }
 
   // With a segment tool chosen, Ctrl+click in the 3D view picks the segment it hits (the
