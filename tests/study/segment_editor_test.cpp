@@ -260,6 +260,106 @@ TEST(SegmentScissors, APolygonRemovesWhatLiesBehindItAndOnlyThat) {
   EXPECT_FALSE(insidePolygon({{0, 0}, {1, 1}}, {0.5, 0.5}));  // no area
 }
 
+TEST(SegmentScissors, KeepModeKeepsOnlyWhatLiesBehindThePolygon) {
+  const Volume& v = phantom64();
+  SegmentationModel m;
+  m.reset(v);
+  const uint8_t l = m.addSegment("Ball", {1, 1, 1});
+  m.paintSphere({32, 32, 32}, 40.0, l);
+  const Segmentation before = m.segmentation();
+  RenderParams p;
+  p.width = 200;
+  p.height = 150;
+  p.camera.azimuthDeg = 30.0;
+  const ViewProjection proj = makeViewProjection(v, p, {200.0, 150.0});
+  const std::vector<glm::dvec2> polygon = {{0, 0}, {100, 0}, {100, 150}, {0, 150}};
+  // Remove and Keep split the segment's voxels in two: what one keeps the other removes.
+  const Mask removeKeeps = scissorsKeep(before, v, proj, polygon, l, ScissorsMode::Remove);
+  applyScissors(m, v, proj, polygon, l, ScissorsMode::Keep);
+  EXPECT_EQ(m.undoText(), "Undo Scissors keep");
+  size_t kept = 0, total = 0;
+  for (int z = 0; z < v.dims.z; ++z)
+    for (int y = 0; y < v.dims.y; ++y)
+      for (int x = 0; x < v.dims.x; ++x) {
+        const size_t i = v.index(x, y, z);
+        if (before.labels[i] != l) {
+          ASSERT_EQ(m.segmentation().labels[i], before.labels[i]);
+          continue;
+        }
+        ++total;
+        const auto at = proj.project(voxelToWorldMm(v, glm::dvec3(x, y, z)));
+        ASSERT_TRUE(at);
+        const bool stays = m.segmentation().labels[i] == l;
+        ASSERT_EQ(stays, at->x < 100.0) << "voxel " << x << "," << y << "," << z;
+        ASSERT_NE(stays, removeKeeps[i] != 0) << "voxel " << x << "," << y << "," << z;
+        kept += stays;
+      }
+  EXPECT_EQ(countLabel(m.segmentation(), l), kept);
+  EXPECT_GT(kept, total / 3);  // the centre projects to the screen's centre
+  EXPECT_LT(kept, total * 2 / 3);
+  // A lasso of no area keeps nothing; undo brings every voxel back.
+  applyScissors(m, v, proj, {{0, 0}, {1, 1}}, l, ScissorsMode::Keep);
+  EXPECT_EQ(countLabel(m.segmentation(), l), 0u);
+  m.undo();
+  m.undo();
+  EXPECT_EQ(m.segmentation().labels, before.labels);
+}
+
+TEST(SegmentTools, RangeFromTheTransferFunctionIsItsOpaqueHuRange) {
+  const HuRange values{-1024, 3071};
+  RenderParams p;
+  p.mode = Mode::Dvr;
+  const glm::dvec3 c(1.0);
+  p.transferFunction = {{-1000, glm::dvec4(c, 0)},  {150, glm::dvec4(c, 0)},
+                        {300, glm::dvec4(c, 0.4)},  {500, glm::dvec4(c, 0)},
+                        {1200, glm::dvec4(c, 0.8)}, {2000, glm::dvec4(c, 0)},
+                        {3000, glm::dvec4(c, 0)}};
+  // Opacity > 0 from just above 150 HU (the ramp's foot) to just below 2000 HU; the gap at
+  // 500 HU lies between and stays in.
+  HuRange r = rangeFromTransferFunction(p, values);
+  EXPECT_DOUBLE_EQ(r.lo, 150);
+  EXPECT_DOUBLE_EQ(r.hi, 2000);
+  p.presetShiftHu = 100;  // the shift moves the custom table too
+  r = rangeFromTransferFunction(p, values);
+  EXPECT_DOUBLE_EQ(r.lo, 250);
+  EXPECT_DOUBLE_EQ(r.hi, 2100);
+  // Opaque at the table's top end: constant beyond it, up to the volume's highest value.
+  p.presetShiftHu = 0;
+  p.transferFunction = {{-1000, glm::dvec4(c, 0)}, {200, glm::dvec4(c, 0.5)}};
+  r = rangeFromTransferFunction(p, values);
+  EXPECT_DOUBLE_EQ(r.lo, -1000);
+  EXPECT_DOUBLE_EQ(r.hi, 3071);
+  // iso: the surface's range, clamped to the volume's values.
+  p.mode = Mode::Iso;
+  p.isoLo = 400;
+  p.isoHi = 32767;
+  r = rangeFromTransferFunction(p, values);
+  EXPECT_DOUBLE_EQ(r.lo, 400);
+  EXPECT_DOUBLE_EQ(r.hi, 3071);
+  p.mode = Mode::Dvr;
+  p.transferFunction = {{-1000, glm::dvec4(c, 0)}, {3000, glm::dvec4(c, 0)}};
+  EXPECT_THROW(rangeFromTransferFunction(p, values), Error);
+
+  // The threshold from a table opaque around the phantom's skull (1150 HU) takes the skull's
+  // voxels, counted here independently of segment_mask.
+  const Volume& v = phantom64();
+  p.transferFunction = {
+      {900, glm::dvec4(c, 0)}, {1100, glm::dvec4(c, 0.6)}, {1400, glm::dvec4(c, 0)}};
+  SegmentationModel m;
+  m.reset(v);
+  SegmentToolSettings s;
+  s.label = m.addSegment("Skull", {1, 1, 1});
+  s.range = rangeFromTransferFunction(p, values);
+  applyThreshold(m, v, s);
+  size_t expected = 0;
+  for (int16_t stored : v.voxels) {
+    const double hu = v.toPhysical(stored);
+    expected += hu >= 900 && hu <= 1400;
+  }
+  EXPECT_GT(expected, 500u);  // the skull shell of the 64³ phantom: 614 voxels
+  EXPECT_EQ(countLabel(m.segmentation(), s.label), expected);
+}
+
 TEST(SegmentTools, MaskChoicesShowOrHideAndExcludeEachOther) {
   SegmentMask m;
   m = withMaskChoice(m, 3, MaskChoice::ShowOnly);

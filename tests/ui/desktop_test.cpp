@@ -84,8 +84,8 @@ class DesktopTest : public QObject {
   void cleanup() { fixture_.stop(); }
 
   void undoRedoTakeBackADragAsOneStep() {
-    QAction* undo = menuAction(*fixture_.window->menuBar(), "Undo view change");
-    QAction* redo = menuAction(*fixture_.window->menuBar(), "Redo view change");
+    QAction* undo = menuAction(*fixture_.window->menuBar(), "Undo");
+    QAction* redo = menuAction(*fixture_.window->menuBar(), "Redo");
     QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
     QCOMPARE(redo->shortcut(), QKeySequence("Ctrl+Shift+Z"));
     QVERIFY(!undo->isEnabled());
@@ -113,8 +113,8 @@ class DesktopTest : public QObject {
 
   void helpListsShortcutsAndAbout() {
     QString shortcuts = shortcutsHtml(*fixture_.window->menuBar());
-    for (const char* expected : {"Ctrl+Z", "Ctrl+Shift+Z", "Ctrl+E", "Export screenshot",
-                                 "Undo view change", "Ctrl+wheel", "reset the camera"})
+    for (const char* expected : {"Ctrl+Z", "Ctrl+Shift+Z", "Ctrl+E", "Export screenshot", "Undo",
+                                 "Ctrl+wheel", "reset the camera"})
       QVERIFY2(shortcuts.contains(expected), expected);
     QVERIFY(menuAction(*fixture_.window->menuBar(), "About Voxray"));
     QString about = aboutHtml("Test device 7");

@@ -6,8 +6,11 @@
 #include <iterator>
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QMainWindow>
 #include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
@@ -356,6 +359,50 @@ class SegmentEditorTest : public QObject {
     QCOMPARE(QString::fromStdString(models().segmentation.undoText()), QString("Undo Scissors"));
     models().segmentation.undo();
     QCOMPARE(countLabel(models().segmentation.segmentation(), label), ball);
+    // Ticked "keep only inside": the same lasso around the whole image keeps the whole ball;
+    // one in the image's top-left corner, clear of the ball, keeps nothing.
+    panel().findChild<QCheckBox*>("segmentScissorsKeep")->setChecked(true);
+    QVERIFY(models().segmentTools.settings().scissorsKeep);
+    QTest::mousePress(&view, Qt::LeftButton, {}, corners[0]);
+    for (const QPoint& c : corners) QTest::mouseMove(&view, c);
+    QTest::mouseRelease(&view, Qt::LeftButton, {}, corners[3]);
+    QCOMPARE(countLabel(models().segmentation.segmentation(), label), ball);
+    const QPoint corner[] = {r.topLeft() + QPoint(2, 2), r.topLeft() + QPoint(12, 2),
+                             r.topLeft() + QPoint(12, 12), r.topLeft() + QPoint(2, 12)};
+    QTest::mousePress(&view, Qt::LeftButton, {}, corner[0]);
+    for (const QPoint& c : corner) QTest::mouseMove(&view, c);
+    QTest::mouseRelease(&view, Qt::LeftButton, {}, corner[3]);
+    QCOMPARE(countLabel(models().segmentation.segmentation(), label), size_t(0));
+    QCOMPARE(QString::fromStdString(models().segmentation.undoText()),
+             QString("Undo Scissors keep"));
+  }
+
+  // From TF: the range becomes the 3D view's opaque HU range (dvr table), or iso's range
+  // (both inside the 64³ phantom's values, -1000 ... 965 HU, so not clamped).
+  void fromTfTakesTheTransferFunctionsOpaqueRange() {
+    models().render.update(kAppearance, [](RenderParams& p) {
+      p.mode = Mode::Dvr;
+      const glm::dvec3 c(1.0);
+      p.transferFunction = {{-500, glm::dvec4(c, 0)},
+                            {250, glm::dvec4(c, 0)},
+                            {600, glm::dvec4(c, 0.5)},
+                            {900, glm::dvec4(c, 0)}};
+    });
+    auto* fromTf = panel().findChild<QPushButton*>("segmentFromTf");
+    fromTf->click();
+    QCOMPARE(models().segmentTools.settings().range.lo, 250.0);
+    QCOMPARE(models().segmentTools.settings().range.hi, 900.0);
+    QCOMPARE(panel().findChild<QDoubleSpinBox*>("segmentLo")->value(), 250.0);
+    QCOMPARE(panel().findChild<QDoubleSpinBox*>("segmentHi")->value(), 900.0);
+    models().render.update(kAppearance, [](RenderParams& p) {
+      p.mode = Mode::Iso;
+      p.isoLo = 700;
+      p.isoHi = 900;
+    });
+    fromTf->click();
+    QCOMPARE(models().segmentTools.settings().range.lo, 700.0);
+    QCOMPARE(models().segmentTools.settings().range.hi, 900.0);
+    QVERIFY(errors_.isEmpty());
   }
 
   // With a segment tool chosen, Ctrl+click in the 3D view picks the segment it hits (the
@@ -379,6 +426,146 @@ class SegmentEditorTest : public QObject {
     QCOMPARE(models().segmentTools.settings().label, skull);
     QCOMPARE(panel().currentLabel(), skull);
     QVERIFY(models().measurements.items().empty());  // no measurement point was added
+  }
+
+  // Edit → Undo (Ctrl+Z) and Redo (Ctrl+Shift+Z) take back segment edits and view changes in
+  // the order made: a painted disc's voxels go and come back, then the camera turn before it.
+  void editMenuUndoAndRedoTakeBackAPaintInTheOrderMade() {
+    const uint8_t label = addSegment();
+    models().render.update(kCamera, [](RenderParams& p) { p.camera.azimuthDeg = 40.0; });
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Paint;
+      s.radiusMm = 10.0;
+      s.sphere = false;
+    });
+    const int slice = models().crosshair.sliceOf(axial().axes());
+    glm::dvec3 target(30, 34, 0);
+    target[axial().axes().nAxis] = slice;
+    QTest::mouseClick(&axial(), Qt::LeftButton, {}, widgetOf(target));
+    const Segmentation& seg = models().segmentation.segmentation();
+    const auto painted = seg.labels;
+    const size_t n = countLabel(seg, label);
+    QVERIFY2(n >= 16 && n <= 26, qPrintable(QString::number(n)));  // a 10 mm disc, 4 mm voxels
+    QMainWindow* w = fixture_.window.get();
+    QAction* undo = w->findChild<QAction*>("editUndo");
+    QVERIFY(undo && undo->isEnabled());
+    QCOMPARE(undo->toolTip(), QString::fromStdString(models().segmentation.undoText()));
+    w->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(w));
+    axial().setFocus();  // the slice view, not the Segments panel: the last edit goes first
+    QTest::keyClick(w, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(countLabel(seg, label), size_t(0));
+    QCOMPARE(models().render.params().camera.azimuthDeg, 40.0);
+    QTest::keyClick(w, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(countLabel(seg, label), n);
+    QVERIFY(seg.labels == painted);
+    QTest::keyClick(w, Qt::Key_Z, Qt::ControlModifier);
+    QTest::keyClick(w, Qt::Key_Z, Qt::ControlModifier);  // the turn, made before the paint
+    QCOMPARE(countLabel(seg, label), size_t(0));
+    QCOMPARE(models().render.params().camera.azimuthDeg, 0.0);
+    QCOMPARE(seg.segments.size(), size_t(1));  // added before the turn: still there
+    QVERIFY(errors_.isEmpty());
+  }
+
+  // The colour chosen in the dialog (answered through its hook) colours the overlay; opacity
+  // typed in percent sets the segment's, a bad one is refused with the old kept; category and
+  // type typed are free text.
+  void colourDialogAndTypedOpacityAndCategoryTakeEffect() {
+    const Volume& v = *models().document.volume();
+    const uint8_t label = addSegment();
+    QColor offered;
+    panel().setColourChooser([&](const QColor& current) {
+      offered = current;
+      return QColor(0, 255, 0);
+    });
+    auto* list = panel().findChild<QTableWidget*>("segmentList");
+    emit list->cellDoubleClicked(0, 1);  // the colour column
+    QVERIFY(offered.isValid());
+    QCOMPARE(models().segmentation.segmentation().find(label)->colour, glm::vec3(0, 1, 0));
+    list->item(0, 3)->setText("80");  // opacity %
+    QCOMPARE(models().segmentation.segmentation().find(label)->opacity, 0.8f);
+    list->item(0, 3)->setText("lots");
+    QCOMPARE(errors_.size(), 1);
+    QVERIFY(errors_.first().contains("percent"));
+    QCOMPARE(models().segmentation.segmentation().find(label)->opacity, 0.8f);
+    QCOMPARE(list->item(0, 3)->text(), QString("80"));  // the cell shows the kept value
+    list->item(0, 4)->setText("Tissue");
+    list->item(0, 5)->setText("Bone");
+    QCOMPARE(models().segmentation.segmentation().find(label)->category.meaning,
+             std::string("Tissue"));
+    QCOMPARE(models().segmentation.segmentation().find(label)->type.meaning, std::string("Bone"));
+    // The overlay over a painted voxel: the chosen green at the fill's share of 80 %.
+    const int slice = models().crosshair.sliceOf(axial().axes());
+    glm::dvec3 target(30, 34, 0);
+    target[axial().axes().nAxis] = slice;
+    models().segmentation.paintDisc(axial().axes().nAxis, target, 6.0, label);
+    QCoreApplication::processEvents();
+    const QImage& o = axial().segmentOverlayImage();
+    const glm::dvec2 s = voxelToSlice(axial().axes(), v.dims, target);
+    const QColor at = o.pixelColor(int(s.x * o.width() / v.dims[axial().axes().uAxis]),
+                                   int(s.y * o.height() / v.dims[axial().axes().vAxis]));
+    QCOMPARE(at.red(), 0);
+    QCOMPARE(at.green(), 255);
+    QCOMPARE(at.blue(), 0);
+    QCOMPARE(at.alpha(), int(std::lround(255 * 0.8 * kSegmentFillShare)));
+  }
+
+  // The statistics follow an edit without Update (after the debounce, counted in the
+  // background), and Save CSV writes the same numbers: voxels, and mL = voxels × 64 mm³.
+  void statisticsFollowEditsAndSaveCsvWritesTheNumbers() {
+    const uint8_t label = addSegment();
+    auto* stats = panel().findChild<QTableWidget*>("segmentStats");
+    models().segmentation.paintSphere({32, 32, 32}, 12.0, label);
+    const size_t n = countLabel(models().segmentation.segmentation(), label);
+    QVERIFY(n > 100);  // a 12 mm ball of 4 mm voxels: about 4/3·π·3³ = 113
+    QTRY_COMPARE_WITH_TIMEOUT(stats->item(0, 1) ? stats->item(0, 1)->text() : QString(),
+                              QString::number(n), 5000);
+    models().segmentation.eraseSphere({32, 32, 32}, 4.0, label);
+    const size_t m = countLabel(models().segmentation.segmentation(), label);
+    QVERIFY(m < n);
+    QTRY_COMPARE_WITH_TIMEOUT(stats->item(0, 1)->text(), QString::number(m), 5000);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("stats.csv");
+    QVERIFY(panel().saveCsvTo(path));
+    const QStringList lines = QString::fromStdString(readAll(path)).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 2);
+    QVERIFY(lines[0].startsWith("label,name,voxels,volume_mm3,volume_ml"));
+    const QStringList cells = lines[1].split(',');
+    QCOMPARE(cells[0], QString::number(label));
+    QCOMPARE(cells[2].toULongLong(), qulonglong(m));
+    const Volume& v = *models().document.volume();
+    const double voxelMm3 = v.spacingMm.x * v.spacingMm.y * v.spacingMm.z;
+    QCOMPARE(voxelMm3, 64.0);
+    QCOMPARE(cells[3].toDouble(), m * voxelMm3);  // exact: whole numbers of mm³
+    QVERIFY(std::abs(cells[4].toDouble() - m * voxelMm3 / 1000.0) < 1e-6);
+  }
+
+  // A .seg.nrrd exported from the workstation and imported again gives the same voxels,
+  // names and colours (3D Slicer's segmentation file).
+  void segNrrdImportGivesTheSameVoxels() {
+#ifndef VOXRAY_HAS_SEGMENT_FILES
+    QSKIP("This build reads no segmentation files (no teem)");
+#else
+    const uint8_t a = addSegment();
+    const uint8_t b = addSegment();
+    models().segmentation.paintSphere({24, 32, 32}, 12.0, a);
+    models().segmentation.paintSphere({42, 32, 30}, 8.0, b);
+    models().segmentation.setColour(b, {0.0f, 0.5f, 1.0f});
+    const Segmentation before = models().segmentation.segmentation();
+    QVERIFY(countLabel(before, a) > 50 && countLabel(before, b) > 20);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("skull.seg.nrrd");
+    QVERIFY(panel().exportTo(path));
+    models().segmentation.reset(*models().document.volume());
+    QCOMPARE(countLabel(models().segmentation.segmentation(), a), size_t(0));
+    QVERIFY(panel().importFrom(path));
+    const Segmentation& after = models().segmentation.segmentation();
+    QVERIFY(after.labels == before.labels);
+    QCOMPARE(after.segments.size(), size_t(2));
+    QCOMPARE(after.find(b)->name, before.find(b)->name);
+    QVERIFY(glm::length(after.find(b)->colour - glm::vec3(0.0f, 0.5f, 1.0f)) < 1e-3f);
+    QVERIFY(errors_.isEmpty());
+#endif
   }
 
   // README's docs/images/segment-skull.png (run with VOXRAY_SEGMENT_SHOT=PATH under

@@ -18,9 +18,13 @@ bool insidePolygon(const std::vector<glm::dvec2>& poly, glm::dvec2 p) {
 }
 
 Mask scissorsKeep(const Segmentation& s, const Volume& v, const ViewProjection& proj,
-                  const std::vector<glm::dvec2>& polygon, uint8_t label) {
+                  const std::vector<glm::dvec2>& polygon, uint8_t label, ScissorsMode mode) {
   Mask keep = maskOf(s, label);
-  if (polygon.size() < 3) return keep;
+  const bool keepInside = mode == ScissorsMode::Keep;
+  if (polygon.size() < 3) {
+    if (keepInside) std::fill(keep.begin(), keep.end(), uint8_t(0));  // nothing is inside
+    return keep;
+  }
   glm::dvec2 lo = polygon.front(), hi = polygon.front();
   for (const glm::dvec2& q : polygon) {
     lo = glm::min(lo, q);
@@ -33,17 +37,19 @@ Mask scissorsKeep(const Segmentation& s, const Volume& v, const ViewProjection& 
         const size_t i = s.grid.index(x, y, z);
         if (!keep[i]) continue;
         const auto at = proj.project(voxelToWorldMm(v, glm::dvec3(x, y, z)));
-        if (!at || at->x < lo.x || at->y < lo.y || at->x > hi.x || at->y > hi.y) continue;
-        if (insidePolygon(polygon, *at)) keep[i] = 0;
+        const bool inside = at && at->x >= lo.x && at->y >= lo.y && at->x <= hi.x &&
+                            at->y <= hi.y && insidePolygon(polygon, *at);
+        if (inside != keepInside) keep[i] = 0;
       }
   return keep;
 }
 
 void applyScissors(SegmentationModel& m, const Volume& v, const ViewProjection& proj,
-                   const std::vector<glm::dvec2>& polygon, uint8_t label) {
+                   const std::vector<glm::dvec2>& polygon, uint8_t label, ScissorsMode mode) {
   if (!m.active() || !m.segmentation().find(label))
     throw inputError("Choose a segment in the Segments panel first (or add one).");
-  m.setMask(label, scissorsKeep(m.segmentation(), v, proj, polygon, label), "Scissors");
+  m.setMask(label, scissorsKeep(m.segmentation(), v, proj, polygon, label, mode),
+            mode == ScissorsMode::Keep ? "Scissors keep" : "Scissors");
 }
 
 }  // namespace voxray

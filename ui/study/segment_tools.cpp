@@ -4,12 +4,36 @@
 #include <array>
 #include <cmath>
 
+#include "voxray/engine/volume_property.h"
 #include "voxray/io/error.h"
 
 namespace voxray {
 
 HuRange rangeFromWindow(const WindowLevel& wl) {
   return {wl.level - wl.width / 2.0, wl.level + wl.width / 2.0};
+}
+
+HuRange rangeFromTransferFunction(const RenderParams& p, HuRange values) {
+  HuRange r;
+  if (p.mode == Mode::Iso) {
+    r = {std::min(p.isoLo, p.isoHi), std::max(p.isoLo, p.isoHi)};
+  } else {
+    // volumePropertyOf gives the table as the frame renders it (the preset, shifted).
+    const std::vector<OpacityNode> o = volumePropertyOf(p).opacity;
+    size_t first = o.size(), last = 0;
+    for (size_t i = 0; i < o.size(); ++i)
+      if (o[i].opacity > 0.0) {
+        first = std::min(first, i);
+        last = i;
+      }
+    if (first == o.size())
+      throw inputError(
+          "The transfer function is transparent everywhere: give the range by hand or take it "
+          "From W/L.");
+    r.lo = first == 0 ? values.lo : o[first - 1].x;
+    r.hi = last + 1 == o.size() ? values.hi : o[last + 1].x;
+  }
+  return {std::clamp(r.lo, values.lo, values.hi), std::clamp(r.hi, values.lo, values.hi)};
 }
 
 size_t previewCount(const Volume& v, int axis, int slice, HuRange range) {

@@ -27,10 +27,11 @@ struct SegmentToolSettings {
   HuRange range{200.0, 3000.0};  // threshold and seeded region, physical values (HU)
   Connectivity connectivity = Connectivity::Faces6;
   bool overwriteOthers = false;  // painting and thresholds take other segments' voxels too
+  bool scissorsKeep = false;     // the 3D lasso keeps only what lies behind it (else removes it)
   bool operator==(const SegmentToolSettings& o) const {
     return tool == o.tool && label == o.label && radiusMm == o.radiusMm && sphere == o.sphere &&
            range.lo == o.range.lo && range.hi == o.range.hi && connectivity == o.connectivity &&
-           overwriteOthers == o.overwriteOthers;
+           overwriteOthers == o.overwriteOthers && scissorsKeep == o.scissorsKeep;
   }
 };
 
@@ -51,6 +52,14 @@ class SegmentToolModel {
 // The threshold's starting range: the window's (level - width/2 ... level + width/2), what the
 // user sees as not black nor white.
 HuRange rangeFromWindow(const WindowLevel& wl);
+
+// The threshold's range from what the 3D view shows: iso, its surface's range (isoLo ... isoHi);
+// otherwise the render table's opaque range, from the last HU of opacity 0 before the first
+// opaque point to the first HU of opacity 0 after the last one (the table is linear between
+// points, so every HU strictly between is opaque). A table opaque at an end is opaque beyond
+// it (constant): that side is VALUES' (the volume's) end. Clamped to VALUES. Throws an input
+// Error when the table is transparent everywhere.
+HuRange rangeFromTransferFunction(const RenderParams& p, HuRange values);
 
 // Voxels of the threshold in one slice (axis 0 = i, 1 = j, 2 = k): the preview's count.
 size_t previewCount(const Volume& v, int axis, int slice, HuRange range);

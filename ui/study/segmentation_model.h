@@ -64,6 +64,8 @@ class SegmentationModel {
 
   bool canUndo() const { return done_ > 0; }
   bool canRedo() const { return done_ < steps_.size(); }
+  size_t undoCount() const { return done_; }  // the steps undo can take back
+  size_t redoCount() const { return steps_.size() - done_; }
   std::string undoText() const;  // "Undo Paint" or empty
   std::string redoText() const;
   void undo();

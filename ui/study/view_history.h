@@ -46,6 +46,8 @@ class ViewHistory {
 
   bool canUndo() const { return !undo_.empty(); }
   bool canRedo() const { return !redo_.empty(); }
+  size_t undoCount() const { return undo_.size(); }  // the steps undo can take back
+  size_t redoCount() const { return redo_.size(); }
   void undo();
   void redo();
   // How many steps are kept; the oldest go first.

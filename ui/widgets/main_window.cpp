@@ -51,6 +51,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
     : QMainWindow(parent),
       models_(models),
       history_(std::make_unique<ViewHistory>(models)),
+      editOrder_(std::make_unique<EditOrder>(*history_, models.segmentation)),
       historyListeners_(new QObject(this)) {
   setObjectName("mainWindow");
   setAcceptDrops(true);
@@ -327,18 +328,37 @@ void MainWindow::buildMenus() {
     themes->addAction(a);
   }
   QMenu* edit = menuBar()->addMenu("&Edit");
-  QAction* undo =
-      edit->addAction("&Undo view change", QKeySequence::Undo, this, [this] { history_->undo(); });
-  QAction* redo = edit->addAction("&Redo view change", QKeySequence("Ctrl+Shift+Z"), this,
-                                  [this] { history_->redo(); });
-  undo->setToolTip("Undo the last change of camera, clip box, light or window/level");
-  redo->setToolTip("Redo the change last undone");
+  // With the focus in the Segments panel, the segment editor's own steps; else the last edit
+  // of the view or the segments.
+  auto segmentsFocused = [this] {
+    return segmentDock_ && segmentDock_->isAncestorOf(QApplication::focusWidget());
+  };
+  QAction* undo = edit->addAction("&Undo", QKeySequence::Undo, this, [this, segmentsFocused] {
+    if (segmentsFocused() && models_.segmentation.canUndo())
+      editOrder_->undo(EditOrder::Source::Segments);
+    else
+      editOrder_->undo();
+  });
+  QAction* redo =
+      edit->addAction("&Redo", QKeySequence("Ctrl+Shift+Z"), this, [this, segmentsFocused] {
+        if (segmentsFocused() && models_.segmentation.canRedo())
+          editOrder_->redo(EditOrder::Source::Segments);
+        else
+          editOrder_->redo();
+      });
+  undo->setObjectName("editUndo");
+  redo->setObjectName("editRedo");
   auto enable = [this, undo, redo] {
-    undo->setEnabled(history_->canUndo());
-    redo->setEnabled(history_->canRedo());
+    undo->setEnabled(editOrder_->canUndo());
+    redo->setEnabled(editOrder_->canRedo());
+    const std::string u = editOrder_->undoText(), r = editOrder_->redoText();
+    undo->setToolTip(u.empty() ? "Undo the last change of the view (camera, clip box, light, "
+                                 "window/level) or of the segments"
+                               : QString::fromStdString(u));
+    redo->setToolTip(r.empty() ? "Redo the change last undone" : QString::fromStdString(r));
   };
   enable();
-  onModelChange<>(historyListeners_, history_->changed, enable);
+  onModelChange<>(historyListeners_, editOrder_->changed, enable);
   menuBar()->insertMenu(view->menuAction(), edit);
   QMenu* help = menuBar()->addMenu("&Help");
   help->addAction("&Keyboard shortcuts", QKeySequence::HelpContents, this,

@@ -12,6 +12,7 @@
 #include <QMenu>
 
 #include "app_models.h"
+#include "edit_order.h"
 #include "load_controller.h"
 #include "movie_controller.h"
 #include "render_scheduler.h"
@@ -139,6 +140,8 @@ class MainWindow : public QMainWindow {
   QMenu* recentMenu_ = nullptr;
   QString theme_ = "System";  // View → Theme, saved with the window layout
   std::unique_ptr<ViewHistory> history_;
+  // Edit → Undo/Redo: the view's and the segment editor's steps in the order made.
+  std::unique_ptr<EditOrder> editOrder_;
   // Owns the connections to history_; deleted before history_ (children go after members).
   QObject* historyListeners_;
   FrameRateStats stats_;

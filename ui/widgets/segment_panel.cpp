@@ -1,3 +1,4 @@
+// The Segments panel: its widgets and their connections, errors, and the dock around it.
 #include "segment_panel.h"
 
 #include <filesystem>
@@ -22,6 +23,7 @@
 #include <QSettings>
 #include <QSlider>
 #include <QTableWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include "coupling.h"
@@ -30,41 +32,9 @@
 #ifdef VOXRAY_HAS_SEGMENT_FILES
 #include "voxray/io/segment_files.h"
 #endif
+#include "segment_panel_helpers.h"
 
 namespace voxray::ui {
-
-namespace {
-
-enum Column { kVisible, kColour, kName, kOpacity, kCategory, kType, kColumns };
-
-// New segments' colours in turn: bone first, then colours far apart from it and each other.
-glm::vec3 nextColour(size_t n) {
-  static const glm::vec3 colours[] = {
-      {0.95f, 0.90f, 0.75f}, {0.85f, 0.25f, 0.20f}, {0.30f, 0.70f, 0.30f}, {0.25f, 0.45f, 0.90f},
-      {0.95f, 0.80f, 0.15f}, {0.80f, 0.35f, 0.80f}, {0.20f, 0.80f, 0.80f}, {0.95f, 0.55f, 0.15f}};
-  return colours[n % (sizeof(colours) / sizeof(colours[0]))];
-}
-
-QColor toQColor(glm::vec3 c) { return QColor::fromRgbF(c.r, c.g, c.b); }
-
-QString number(std::optional<double> v, int decimals = 1) {
-  return v ? QString::number(*v, 'f', decimals) : QString();
-}
-
-QDoubleSpinBox* spin(double lo, double hi, double value, double step, int decimals,
-                     const QString& suffix, const QString& tip) {
-  auto* s = new QDoubleSpinBox;
-  s->setRange(lo, hi);
-  s->setDecimals(decimals);
-  s->setSingleStep(step);
-  s->setValue(value);
-  s->setSuffix(suffix);
-  s->setToolTip(tip);
-  s->setKeyboardTracking(false);
-  return s;
-}
-
-}  // namespace
 
 SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent), m_(models) {
   setObjectName("segmentPanel");
@@ -107,6 +77,11 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
       "DICOM SEG (.dcm) or raw labels (.labels.raw)");
   files->addWidget(importButton);
   files->addWidget(exportButton);
+  sendSeg_ = new QPushButton("Send SEG to PACS…");
+  sendSeg_->setObjectName("segmentSendSeg");
+  sendSeg_->setToolTip("Send the DICOM SEG last exported (Export… as .dcm) to a PACS node");
+  sendSeg_->setEnabled(false);
+  files->addWidget(sendSeg_);
   layout->addLayout(files);
 
   // The tools in the slice views.
@@ -145,6 +120,12 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   rangeRow->addWidget(lo_);
   rangeRow->addWidget(hi_);
   rangeRow->addWidget(fromWindow);
+  auto* fromTf = new QPushButton("From TF");
+  fromTf->setObjectName("segmentFromTf");
+  fromTf->setToolTip(
+      "Start the range from what the 3D view shows: the transfer function's opaque range "
+      "(iso: the surface's range)");
+  rangeRow->addWidget(fromTf);
   form->addRow("Range", rangeRow);
   connectivity_ = new QComboBox;
   connectivity_->addItems({"6 (faces)", "26 (faces, edges, corners)"});
@@ -153,6 +134,12 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   overwrite_ = new QCheckBox("Take other segments' voxels");
   overwrite_->setToolTip("Painting and thresholds also take voxels that other segments hold");
   form->addRow("", overwrite_);
+  scissorsKeep_ = new QCheckBox("Scissors keep only inside");
+  scissorsKeep_->setObjectName("segmentScissorsKeep");
+  scissorsKeep_->setToolTip(
+      "Scissors in the 3D view keep only what lies behind the lasso (e.g. the head without the "
+      "table) instead of removing it");
+  form->addRow("", scissorsKeep_);
   auto* apply = new QPushButton("Apply threshold");
   apply->setObjectName("segmentApplyThreshold");
   apply->setToolTip("Every voxel in the range becomes the chosen segment's (one undo step)");
@@ -228,7 +215,8 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   stats_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   stats_->verticalHeader()->hide();
   stats_->setMinimumHeight(90);
-  stats_->setToolTip("Each segment's voxels, volume and the values inside it (Update counts)");
+  stats_->setToolTip(
+      "Each segment's voxels, volume and the values inside it, counted again after each edit");
   statsLayout->addWidget(stats_);
   auto* statsButtons = new QHBoxLayout;
   auto* update = new QPushButton("Update");
@@ -262,6 +250,7 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   });
   connect(importButton, &QPushButton::clicked, this, [this] { importDialog(); });
   connect(exportButton, &QPushButton::clicked, this, [this] { exportDialog(); });
+  connect(sendSeg_, &QPushButton::clicked, this, [this] { sendSegDialog(); });
   connect(tool_, &QComboBox::currentIndexChanged, this,
           [this](int i) { setTools([i](SegmentToolSettings& s) { s.tool = SegmentTool(i); }); });
   connect(radius_, &QDoubleSpinBox::valueChanged, this,
@@ -281,6 +270,21 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
       s.connectivity = i == 1 ? Connectivity::Full26 : Connectivity::Faces6;
     });
   });
+  connect(fromTf, &QPushButton::clicked, this, [this] {
+    if (m_.document.empty()) return;
+    const Volume& v = *m_.document.volume();
+    const ValueRange stored = storedRange(v);
+    const double a = v.toPhysical(stored.min), b = v.toPhysical(stored.max);
+    try {
+      const HuRange r =
+          rangeFromTransferFunction(m_.render.params(), {std::min(a, b), std::max(a, b)});
+      setTools([r](SegmentToolSettings& s) { s.range = r; });
+    } catch (const std::exception& e) {
+      fail("Cannot take the range from the transfer function", e.what());
+    }
+  });
+  connect(scissorsKeep_, &QCheckBox::toggled, this,
+          [this](bool on) { setTools([on](SegmentToolSettings& s) { s.scissorsKeep = on; }); });
   connect(overwrite_, &QCheckBox::toggled, this,
           [this](bool on) { setTools([on](SegmentToolSettings& s) { s.overwriteOthers = on; }); });
   connect(apply, &QPushButton::clicked, this, [this] {
@@ -309,7 +313,16 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
           [this] { QApplication::clipboard()->setText(statisticsText()); });
   connect(csv, &QPushButton::clicked, this, [this] { saveCsv(); });
 
-  onModelChange<>(this, m_.segmentation.changed, [this] { refreshList(); });
+  // The statistics follow every edit: a burst of them (a paint drag) counts once, 300 ms after
+  // the last, on a worker thread.
+  statsTimer_ = new QTimer(this);
+  statsTimer_->setSingleShot(true);
+  statsTimer_->setInterval(300);
+  connect(statsTimer_, &QTimer::timeout, this, [this] { refreshStatisticsInBackground(); });
+  onModelChange<>(this, m_.segmentation.changed, [this] {
+    refreshList();
+    statsTimer_->start();
+  });
   onModelChange<>(this, m_.segmentTools.changed, [this] { refreshTools(); });
   onModelChange<>(this, m_.crosshair.changed, [this] { refreshTools(); });
   onModelChange<>(this, m_.document.changed, [this] { refreshTools(); });
@@ -326,308 +339,6 @@ void SegmentPanel::fail(const QString& title, const QString& message) {
     error_(title, text);
   else
     QMessageBox::warning(this, title, text);
-}
-
-uint8_t SegmentPanel::currentLabel() const {
-  const int row = list_->currentRow();
-  if (row < 0 || !list_->item(row, kName)) return 0;
-  return uint8_t(list_->item(row, kName)->data(Qt::UserRole).toInt());
-}
-
-void SegmentPanel::selectLabel(uint8_t label) {
-  for (int row = 0; row < list_->rowCount(); ++row)
-    if (list_->item(row, kName) && list_->item(row, kName)->data(Qt::UserRole).toInt() == label)
-      list_->selectRow(row);
-}
-
-void SegmentPanel::ensureActive() {
-  if (m_.segmentation.active() || m_.document.empty()) return;
-  m_.segmentation.reset(*m_.document.volume());
-}
-
-void SegmentPanel::addSegment() {
-  if (m_.document.empty()) return fail("Cannot add a segment", "Open a volume first.");
-  ensureActive();
-  const size_t n = m_.segmentation.segmentation().segments.size();
-  try {
-    const uint8_t label =
-        m_.segmentation.addSegment("Segment " + std::to_string(n + 1), nextColour(n));
-    selectLabel(label);
-  } catch (const std::exception& e) {
-    fail("Cannot add a segment", e.what());
-  }
-}
-
-void SegmentPanel::refreshList() {
-  refreshing_ = true;
-  const uint8_t current = m_.segmentTools.settings().label;
-  const auto& segments = m_.segmentation.segmentation().segments;
-  list_->setRowCount(int(segments.size()));
-  other_->clear();
-  for (int row = 0; row < int(segments.size()); ++row) {
-    const Segment& s = segments[size_t(row)];
-    auto* visible = new QTableWidgetItem;
-    visible->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable);
-    visible->setCheckState(s.visible ? Qt::Checked : Qt::Unchecked);
-    list_->setItem(row, kVisible, visible);
-    auto* colour = new QTableWidgetItem;
-    colour->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
-    // A swatch (decoration): it stays visible in a selected row, where a background would not.
-    colour->setData(Qt::DecorationRole, toQColor(s.colour));
-    list_->setItem(row, kColour, colour);
-    auto* name = new QTableWidgetItem(QString::fromStdString(s.name));
-    name->setData(Qt::UserRole, int(s.label));
-    list_->setItem(row, kName, name);
-    list_->setItem(row, kOpacity,
-                   new QTableWidgetItem(QString::number(std::lround(s.opacity * 100))));
-    list_->setItem(row, kCategory,
-                   new QTableWidgetItem(QString::fromStdString(s.category.meaning)));
-    list_->setItem(row, kType, new QTableWidgetItem(QString::fromStdString(s.type.meaning)));
-    other_->addItem(QString::fromStdString(s.name), int(s.label));
-  }
-  selectLabel(current);
-  if (list_->currentRow() < 0 && !segments.empty()) list_->selectRow(int(segments.size()) - 1);
-  undo_->setEnabled(m_.segmentation.canUndo());
-  redo_->setEnabled(m_.segmentation.canRedo());
-  const std::string undo = m_.segmentation.undoText(), redo = m_.segmentation.redoText();
-  undo_->setToolTip(undo.empty() ? "Undo the last segment edit (none yet)"
-                                 : QString::fromStdString(undo));
-  redo_->setToolTip(redo.empty() ? "Redo the segment edit last undone (none)"
-                                 : QString::fromStdString(redo));
-  refreshing_ = false;
-  // The tools follow the chosen row (a removed segment's label goes).
-  setTools([this](SegmentToolSettings& s) { s.label = currentLabel(); });
-}
-
-void SegmentPanel::refreshTools() {
-  refreshing_ = true;
-  const SegmentToolSettings& s = m_.segmentTools.settings();
-  {
-    const QSignalBlocker b1(tool_), b2(radius_), b3(sphere_), b4(lo_), b5(hi_), b6(connectivity_),
-        b7(overwrite_);
-    tool_->setCurrentIndex(int(s.tool));
-    radius_->setValue(s.radiusMm);
-    sphere_->setChecked(s.sphere);
-    lo_->setValue(s.range.lo);
-    hi_->setValue(s.range.hi);
-    connectivity_->setCurrentIndex(s.connectivity == Connectivity::Full26 ? 1 : 0);
-    overwrite_->setChecked(s.overwriteOthers);
-  }
-  if (s.label && s.label != currentLabel()) selectLabel(s.label);  // a pick in the 3D view
-  QString text;
-  if (!m_.document.empty()) {
-    const Volume& v = *m_.document.volume();
-    const SliceAxes axial = sliceAxes(v.direction, Orientation::Axial);
-    try {
-      const size_t n = previewCount(v, axial.nAxis, m_.crosshair.sliceOf(axial), s.range);
-      text = QString("%1 voxels (axial slice)").arg(n);
-    } catch (const std::exception&) {
-      text = "Give a range with low ≤ high";
-    }
-  }
-  preview_->setText(text);
-  const RenderParams& p = m_.render.params();
-  mask3d_->setCurrentIndex(int(maskChoiceOf(p.segmentMask, s.label)));
-  blend_->setValue(int(std::lround(p.segmentBlend * 100)));
-  refreshing_ = false;
-}
-
-void SegmentPanel::setTools(const std::function<void(SegmentToolSettings&)>& edit) {
-  SegmentToolSettings s = m_.segmentTools.settings();
-  edit(s);
-  m_.segmentTools.set(s);
-}
-
-void SegmentPanel::chooseColour(int row) {
-  const uint8_t label = uint8_t(list_->item(row, kName)->data(Qt::UserRole).toInt());
-  const Segment* s = m_.segmentation.segmentation().find(label);
-  if (!s) return;
-  const QColor c = QColorDialog::getColor(toQColor(s->colour), this, "Segment colour");
-  if (c.isValid())
-    m_.segmentation.setColour(label, {float(c.redF()), float(c.greenF()), float(c.blueF())});
-}
-
-void SegmentPanel::editCell(int row, int column) {
-  QTableWidgetItem* nameItem = list_->item(row, kName);
-  QTableWidgetItem* item = list_->item(row, column);
-  if (!nameItem || !item) return;
-  const uint8_t label = uint8_t(nameItem->data(Qt::UserRole).toInt());
-  const Segment* s = m_.segmentation.segmentation().find(label);
-  if (!s) return;
-  try {
-    switch (column) {
-      case kVisible:
-        m_.segmentation.setVisible(label, item->checkState() == Qt::Checked);
-        break;
-      case kName:
-        m_.segmentation.rename(label, item->text().toStdString());
-        break;
-      case kOpacity: {
-        bool ok = false;
-        const double percent = item->text().toDouble(&ok);
-        if (!ok) {
-          refreshList();
-          return fail("Segment opacity", "Give the opacity in percent, 0 to 100.");
-        }
-        m_.segmentation.setOpacity(label, float(percent / 100.0));
-        break;
-      }
-      case kCategory:
-      case kType: {
-        // Free text: the meaning alone, no code (a coded entry the user retypes keeps its code).
-        Segment::Code category = s->category, type = s->type;
-        Segment::Code& code = column == kCategory ? category : type;
-        const std::string text = item->text().toStdString();
-        if (text != code.meaning) code = {"", "", text};
-        m_.segmentation.setCodes(label, category, type);
-        break;
-      }
-      default:
-        break;
-    }
-  } catch (const std::exception& e) {
-    fail("Cannot change the segment", e.what());
-  }
-}
-
-void SegmentPanel::runOperation() {
-  try {
-    applyOperation(m_.segmentation, currentLabel(),
-                   MaskOperation(operation_->currentData().toInt()), value_->value(),
-                   m_.segmentTools.settings().connectivity);
-  } catch (const std::exception& e) {
-    fail("Cannot apply the operation", e.what());
-  }
-}
-
-void SegmentPanel::runLogical() {
-  try {
-    applyLogical(m_.segmentation, currentLabel(), uint8_t(other_->currentData().toInt()),
-                 LogicalOp(logicalOp_->currentIndex()));
-  } catch (const std::exception& e) {
-    fail("Cannot apply the operation", e.what());
-  }
-}
-
-bool SegmentPanel::exportTo(const QString& path) {
-  if (m_.document.empty() || !m_.segmentation.active() ||
-      m_.segmentation.segmentation().segments.empty()) {
-    fail("Nothing to export", "Add a segment first.");
-    return false;
-  }
-  std::error_code ec;
-  const bool exists = std::filesystem::exists(path.toStdString(), ec);
-  if (exists) {
-    const bool yes =
-        confirm_ ? confirm_(path)
-                 : QMessageBox::question(
-                       this, "Replace file?", QString("%1 already exists. Replace it?").arg(path),
-                       QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
-    if (!yes) return false;
-  }
-  try {
-    writeSegmentationOutput(path.toStdString(), m_.segmentation.segmentation(),
-                            *m_.document.volume(), exists);
-  } catch (const std::exception& e) {
-    fail("Export failed", e.what());
-    return false;
-  }
-  return true;
-}
-
-bool SegmentPanel::importFrom(const QString& path) {
-  if (m_.document.empty()) {
-    fail("Cannot import", "Open the volume the segmentation belongs to first.");
-    return false;
-  }
-#ifdef VOXRAY_HAS_SEGMENT_FILES
-  try {
-    m_.segmentation.load(readSegmentationFile(path.toStdString(), *m_.document.volume()),
-                         *m_.document.volume());
-    return true;
-  } catch (const std::exception& e) {
-    fail("Cannot import", e.what());
-    return false;
-  }
-#else
-  (void)path;
-  fail("Cannot import", "This build reads no segmentation files (no DCMTK, nifti or teem).");
-  return false;
-#endif
-}
-
-void SegmentPanel::exportDialog() {
-  QSettings s;
-  const QString path = QFileDialog::getSaveFileName(
-      this, "Export segments", s.value("lastSegmentFolder").toString(),
-      "Surface (*.stl *.obj *.ply);;NIfTI label map (*.nii *.nii.gz);;3D Slicer (*.seg.nrrd);;"
-      "DICOM SEG (*.dcm);;Raw labels (*.labels.raw)",
-      nullptr, QFileDialog::DontConfirmOverwrite);  // exportTo asks
-  if (path.isEmpty()) return;
-  s.setValue("lastSegmentFolder", QFileInfo(path).absolutePath());
-  exportTo(path);
-}
-
-void SegmentPanel::importDialog() {
-  QSettings s;
-  const QString path = QFileDialog::getOpenFileName(
-      this, "Import segments", s.value("lastSegmentFolder").toString(),
-      "Segmentations (*.nii *.nii.gz *.seg.nrrd *.nrrd *.dcm);;All files (*)");
-  if (path.isEmpty()) return;
-  s.setValue("lastSegmentFolder", QFileInfo(path).absolutePath());
-  importFrom(path);
-}
-
-void SegmentPanel::updateStatistics() {
-  lastStats_.clear();
-  if (!m_.document.empty() && m_.segmentation.active()) {
-    try {
-      lastStats_ = allSegmentStats(m_.segmentation.segmentation(), *m_.document.volume());
-    } catch (const std::exception& e) {
-      fail("Cannot count the segments", e.what());
-    }
-  }
-  stats_->setRowCount(int(lastStats_.size()));
-  for (int row = 0; row < int(lastStats_.size()); ++row) {
-    const SegmentStats& s = lastStats_[size_t(row)];
-    const QStringList cells = {QString::fromStdString(s.name),
-                               QString::number(s.voxels),
-                               QString::number(s.volumeMl, 'f', 3),
-                               number(s.mean),
-                               number(s.sd),
-                               number(s.min),
-                               number(s.max),
-                               number(s.median)};
-    for (int c = 0; c < cells.size(); ++c) stats_->setItem(row, c, new QTableWidgetItem(cells[c]));
-  }
-}
-
-QString SegmentPanel::statisticsText() const {
-  QStringList lines;
-  QStringList header;
-  for (int c = 0; c < stats_->columnCount(); ++c) header << stats_->horizontalHeaderItem(c)->text();
-  lines << header.join('\t');
-  for (int row = 0; row < stats_->rowCount(); ++row) {
-    QStringList cells;
-    for (int c = 0; c < stats_->columnCount(); ++c)
-      cells << (stats_->item(row, c) ? stats_->item(row, c)->text() : QString());
-    lines << cells.join('\t');
-  }
-  return lines.join('\n') + '\n';
-}
-
-void SegmentPanel::saveCsv() {
-  if (lastStats_.empty()) updateStatistics();
-  QSettings s;
-  const QString path = QFileDialog::getSaveFileName(
-      this, "Save statistics", s.value("lastSegmentFolder").toString(), "CSV (*.csv)");
-  if (path.isEmpty()) return;  // the dialog asked before replacing
-  QFile f(path);
-  const std::string csv = statsCsv(lastStats_);
-  if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-      f.write(csv.data(), qint64(csv.size())) != qint64(csv.size()))
-    fail("Cannot save the statistics",
-         "Cannot write " + path + ": check the folder and free space.");
 }
 
 QDockWidget* makeSegmentDock(AppModels& models, SegmentPanel** panel) {

@@ -6,7 +6,10 @@
 // margin, smoothing, logical), the 3D view's mask and blend, and the statistics table.
 // Thin: the models and voxray/io do the work (segment_tools.h).
 #include <functional>
+#include <memory>
+#include <string>
 
+#include <QColor>
 #include <QWidget>
 
 #include "app_models.h"
@@ -17,9 +20,14 @@ class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 class QSlider;
+class QTimer;
 class QTableWidget;
 class QCheckBox;
 class QDockWidget;
+
+namespace voxray {
+class PacsBrowser;
+}
 
 namespace voxray::ui {
 
@@ -27,6 +35,7 @@ class SegmentPanel : public QWidget {
   Q_OBJECT
  public:
   explicit SegmentPanel(AppModels& models, QWidget* parent = nullptr);
+  ~SegmentPanel() override;
 
   // Where errors go (a message box unless set) and who says yes to replacing a file (a
   // question box unless set): tests answer for the user.
@@ -43,7 +52,27 @@ class SegmentPanel : public QWidget {
   bool importFrom(const QString& path);
   // The statistics as shown: a header line and one tab-separated line per segment.
   QString statisticsText() const;
+  // Counts now (the Update button).
   void updateStatistics();
+  // Writes the statistics of the segments as they are now as CSV to PATH (Save CSV… after its
+  // dialog); false with the error shown.
+  bool saveCsvTo(const QString& path);
+  // "Send SEG to PACS…": sends the DICOM SEG last exported (Export as .dcm) to NODE (a
+  // configured name or an address) through the PACS dialogs' send path (C-STORE; STOW-RS);
+  // false, with the error shown, when no SEG was exported. The answer comes later: segSent(),
+  // or the error shown.
+  bool sendSegTo(const QString& node);
+  // Who picks a segment's colour (QColorDialog unless set): tests answer for the user.
+  void setColourChooser(std::function<QColor(const QColor& current)> choose) {
+    chooseColour_ = std::move(choose);
+  }
+
+ signals:
+  // The statistics table was filled (Update, or the refresh after an edit).
+  void statisticsShown();
+  void segSent();
+
+ public:
   uint8_t currentLabel() const;
   void selectLabel(uint8_t label);
 
@@ -60,6 +89,10 @@ class SegmentPanel : public QWidget {
   void exportDialog();
   void importDialog();
   void saveCsv();
+  void sendSegDialog();
+  // After every edit, debounced: the counting runs on a worker thread.
+  void refreshStatisticsInBackground();
+  void showStatistics(std::vector<SegmentStats> stats);
   void fail(const QString& title, const QString& message);
 
   AppModels& m_;
@@ -69,11 +102,17 @@ class SegmentPanel : public QWidget {
   QPushButton *undo_, *redo_;
   QComboBox *tool_, *connectivity_, *operation_, *logicalOp_, *other_, *mask3d_;
   QDoubleSpinBox *radius_, *lo_, *hi_, *value_;
-  QCheckBox *sphere_, *overwrite_;
+  QCheckBox *sphere_, *overwrite_, *scissorsKeep_;
   QLabel* preview_;
   QSlider* blend_;
   QTableWidget* stats_;
   std::vector<SegmentStats> lastStats_;
+  std::function<QColor(const QColor&)> chooseColour_;
+  unsigned statsGeneration_ = 0;  // a background count shows only if no newer one started
+  QTimer* statsTimer_;
+  QPushButton* sendSeg_;
+  std::string lastSeg_;                // the DICOM SEG last exported, for Send SEG to PACS
+  std::shared_ptr<PacsBrowser> pacs_;  // shared: its deleter is made where the type is whole
   bool refreshing_ = false;
 };
 

@@ -281,8 +281,9 @@ void VolumeView::mouseReleaseEvent(QMouseEvent*) {
     auto proj = projection();
     if (proj && polygon.size() >= 3 && !doc_.empty()) {
       try {
-        applyScissors(*segmentation_, *doc_.volume(), *proj, polygon,
-                      segmentTools_->settings().label);
+        const SegmentToolSettings& s = segmentTools_->settings();
+        applyScissors(*segmentation_, *doc_.volume(), *proj, polygon, s.label,
+                      s.scissorsKeep ? ScissorsMode::Keep : ScissorsMode::Remove);
       } catch (const std::exception& e) {
         emit segmentToolFailed(QString::fromStdString(e.what()));
       }
