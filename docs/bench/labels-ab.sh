@@ -5,6 +5,10 @@
 # the four cases alternating, so that load changes hit all alike. Results:
 # docs/bench/labels-pocl.txt. Run from the checkout's root with build/bin/voxray-cli built.
 set -euo pipefail
+# DEVICE=gpu SIZE=1920x1080 RUNS=3: the same cases on a GPU (docs/bench/gpu-round6.sh).
+DEVICE=${DEVICE:-cpu}
+SIZE=${SIZE:-512x384}
+RUNS=${RUNS:-6}
 CLI=${CLI:-build/bin/voxray-cli}
 DATA=${DATA:-../shared/data}
 WORK=$(mktemp -d)
@@ -23,8 +27,8 @@ for z in range(nz):
                 out[(z * ny + y) * nx + x] = 1
 open(sys.argv[1], "wb").write(out)
 PY
-common="--mode dvr --preset CT-Bone --sizes 512x384 --frames 12 --warmup 2 --no-count --csv"
-for run in 1 2 3 4 5 6; do
+common="--mode dvr --preset CT-Bone --sizes $SIZE --frames 12 --warmup 2 --no-count --csv"
+for run in $(seq "$RUNS"); do
   for c in none colours show hide; do
     case $c in
       none) extra="" ;;
@@ -34,6 +38,6 @@ for run in 1 2 3 4 5 6; do
     esac
     echo "run $run case $c load $(cut -d' ' -f1-3 /proc/loadavg)"
     # shellcheck disable=SC2086
-    VOXRAY_DEVICE=cpu $CLI bench $CT $common $extra 2>/dev/null | grep '^CThead'
+    VOXRAY_DEVICE=$DEVICE $CLI bench $CT $common $extra 2>/dev/null | grep '^CThead'
   done
 done

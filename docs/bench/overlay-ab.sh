@@ -6,6 +6,10 @@
 # Results: docs/bench/overlay-pocl.txt. Run from the checkout's root with build/bin/voxray-cli
 # built and the venv (nibabel) linked at .venv.
 set -euo pipefail
+# DEVICE=gpu SIZE=1920x1080 RUNS=3: the same cases on a GPU (docs/bench/gpu-round6.sh).
+DEVICE=${DEVICE:-cpu}
+SIZE=${SIZE:-512x384}
+RUNS=${RUNS:-6}
 CLI=${CLI:-build/bin/voxray-cli}
 PY=${PY:-.venv/bin/python}
 DATA=${DATA:-../shared/data}
@@ -13,7 +17,11 @@ WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 CT="$DATA/stanford/CThead --raw-dims 256,256 --raw-type i16 --raw-endian big --raw-spacing 1,1,2
     --raw-rescale 1,-1024 --raw-axes LPI"
-"$PY" - "$WORK/pet.nii.gz" <<'PY'
+# PET=FILE: that overlay (made here beforehand) where the venv is missing (the GPU machines).
+if [[ -n ${PET:-} ]]; then
+  cp "$PET" "$WORK/pet.nii.gz"
+else
+  "$PY" - "$WORK/pet.nii.gz" <<'PY'
 import sys
 import nibabel as nib
 import numpy as np
@@ -31,8 +39,9 @@ aff = np.diag([-4.0, -4.0, 4.0, 1.0])
 aff[:3, 3] = [-lps0[0], -lps0[1], lps0[2]]
 nib.save(nib.Nifti1Image((vol * 100).astype(np.int16), aff), sys.argv[1])
 PY
-common="--mode dvr --preset CT-Bone --sizes 512x384 --frames 12 --warmup 2 --no-count --csv"
-for run in 1 2 3 4 5 6; do
+fi
+common="--mode dvr --preset CT-Bone --sizes $SIZE --frames 12 --warmup 2 --no-count --csv"
+for run in $(seq "$RUNS"); do
   for c in alone fused; do
     case $c in
       alone) extra="" ;;
@@ -40,6 +49,6 @@ for run in 1 2 3 4 5 6; do
     esac
     echo "run $run case $c load $(cut -d' ' -f1-3 /proc/loadavg)"
     # shellcheck disable=SC2086
-    VOXRAY_DEVICE=cpu $CLI bench $CT $common $extra 2>/dev/null | grep '^CThead'
+    VOXRAY_DEVICE=$DEVICE $CLI bench $CT $common $extra 2>/dev/null | grep '^CThead'
   done
 done

@@ -11,6 +11,10 @@
 #            150 ... 2000 HU at |gradient| 100 ... 1500 HU/mm) and fades bone's inside.
 # Results: docs/bench/tf2d-pocl.txt. Run from the checkout's root with build/bin/voxray-cli.
 set -euo pipefail
+# DEVICE=gpu SIZE=1920x1080 RUNS=3: the same cases on a GPU (docs/bench/gpu-round6.sh).
+DEVICE=${DEVICE:-cpu}
+SIZE=${SIZE:-512x384}
+RUNS=${RUNS:-6}
 CLI=${CLI:-build/bin/voxray-cli}
 DATA=${DATA:-../shared/data}
 WORK=$(mktemp -d)
@@ -50,12 +54,12 @@ PY
 add_tf2d "$WORK/2d-same.json" same
 add_tf2d "$WORK/2d-edges.json" '[{"shape": "tri", "hu": [150, 2000], "gradient": [100, 1500],
   "color": [0.9, 0.85, 0.75], "opacity": 0.6, "soft": 0.3}]'
-common="--mode dvr --sizes 512x384 --frames 12 --warmup 2 --no-count --csv"
-echo "device: $(VOXRAY_DEVICE=cpu $CLI devices 2>/dev/null | grep -i pthread | head -1)"
-for run in 1 2 3 4 5 6; do
+common="--mode dvr --sizes $SIZE --frames 12 --warmup 2 --no-count --csv"
+echo "device: $(VOXRAY_DEVICE=$DEVICE $CLI devices 2>/dev/null | grep -i pthread | head -1)"
+for run in $(seq "$RUNS"); do
   for c in 1d 2d-same 2d-edges; do
     echo "run $run case $c load $(cut -d' ' -f1-3 /proc/loadavg)"
     # shellcheck disable=SC2086
-    VOXRAY_DEVICE=cpu $CLI bench $CT $common --tf-file "$WORK/$c.json" 2>/dev/null | grep '^CThead'
+    VOXRAY_DEVICE=$DEVICE $CLI bench $CT $common --tf-file "$WORK/$c.json" 2>/dev/null | grep '^CThead'
   done
 done

@@ -42,6 +42,7 @@
 #include "time_panel.h"
 #include "volume_view.h"
 #include "voxray/engine/input_flags.h"
+#include "voxray/io/ome_zarr.h"
 #include "voxray/io/sample_volume.h"
 #include "voxray/io/volume_file.h"
 
@@ -424,6 +425,11 @@ void MainWindow::openDicomFolder() {
       this, "Open DICOM folder", s.value("lastFolder", QDir::homePath()).toString());
   if (dir.isEmpty()) return;
   s.setValue("lastFolder", dir);
+  // An OME-Zarr folder is one volume, not a DICOM folder to list: open it directly.
+  if (isOmeZarr(dir.toStdString())) {
+    open(dir.toStdString(), {});
+    return;
+  }
   auto choice = pickSeries(this, dir.toStdString());
   if (choice) open(dir.toStdString(), *choice);
 }
