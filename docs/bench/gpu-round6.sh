@@ -10,11 +10,13 @@ set -x
 . docs/bench/gpu-env.sh
 export CLI="$B" DATA=$D DEVICE=gpu SIZE=1920x1080 RUNS=3
 heavy="--mode dvr --preset CT-Bone --sizes 3840x2160 --frames 12 --warmup 2 --ess off"
-split_cases() {  # INPUT...: one GPU (the raycaster), the part kernel on one GPU, on both
+# Two GPUs: one part on each; one GPU: two parts on it (two contexts: the split's overhead).
+if (($(nvidia-smi -L | wc -l) > 1)); then two="--devices 0,1"; else two="--devices 0"; fi
+split_cases() {  # INPUT...: one GPU (the raycaster), the part kernel on one GPU, two parts
   for run in 1 2; do
     $B bench "$@" $heavy --device 0 --no-count 2>&1 | grep -E 'frames|ms'
     $B bench "$@" $heavy --split 1 --devices 0 2>&1
-    $B bench "$@" $heavy --split 2 --devices 0,1 2>&1
+    $B bench "$@" $heavy --split 2 $two 2>&1
   done
 }
 case ${1:-small} in
