@@ -11,15 +11,20 @@ set -x
 export CLI="$B" DATA=$D DEVICE=gpu SIZE=1920x1080 RUNS=3
 heavy="--mode dvr --preset CT-Bone --sizes 3840x2160 --frames 12 --warmup 2 --ess off"
 # Two GPUs: one part on each; one GPU: two parts on it (two contexts: the split's overhead).
-if (($(nvidia-smi -L | wc -l) > 1)); then two="--devices 0,1"; else two="--devices 0"; fi
+if (($(nvidia-smi -L | wc -l) > 1)); then two="--split 2 --devices 0,1"; else two="--split 2 --device 0"; fi
 split_cases() {  # INPUT...: one GPU (the raycaster), the part kernel on one GPU, two parts
   for run in 1 2; do
-    $B bench "$@" $heavy --device 0 --no-count 2>&1 | grep -E 'frames|ms'
+    $B bench "$@" $heavy --device 0 --no-count 2>&1
     $B bench "$@" $heavy --split 1 --devices 0 2>&1
-    $B bench "$@" $heavy --split 2 $two 2>&1
+    $B bench "$@" $heavy $two 2>&1
   done
 }
 case ${1:-small} in
+  split)  # the split cases of 'small' alone
+    make_ct512
+    # shellcheck disable=SC2086
+    split_cases $V
+    ;;
   small)
     bash docs/bench/labels-ab.sh
     PET=$D/pet.nii.gz bash docs/bench/overlay-ab.sh
