@@ -3,9 +3,11 @@
 // under the mouse, a drag moves it by the HU and HU/mm its pixels are worth, the 3D view
 // renders what the editor holds (RenderParams::tf2d), and a saved JSON keeps it.
 #include <QAction>
+#include <QPainter>
 #include <QTemporaryDir>
 
 #include "tf_editor_dialog.h"
+#include "voxray/io/raw_import.h"
 #include "window_fixture.h"
 
 using namespace voxray;
@@ -147,6 +149,54 @@ class Tf2dEditorTest : public QObject {
     del->trigger();
     QVERIFY(models.render.params().tf2d.empty());
     QCOMPARE(test::differingPixels(bone, settledFrame(window)), 0);
+  }
+
+  // The README's figure, not a check (not registered with ctest): with VOXRAY_FIGURE_DIR set,
+  // the editor's 2D tab on the cranium CT (shared/data/raw/cranium-ct, in HU) with a triangle
+  // on the bone boundary and one on the skin, beside the 3D frame it gives.
+  void figure2dEditorOnCranium() {
+    const QString out = qEnvironmentVariable("VOXRAY_FIGURE_DIR");
+    if (out.isEmpty()) QSKIP("set VOXRAY_FIGURE_DIR to write the figure");
+    MainWindow& window = *fixture_.window;
+    AppModels& models = *fixture_.models;
+    RawLayout layout;
+    layout.dims = {256, 256, 108};
+    layout.spacingMm = {0.957, 0.957, 1.5};
+    auto v = std::make_shared<const Volume>(importRaw(
+        std::string(VOXRAY_DATA_DIR) + "/raw/cranium-ct/cranium_256x256x108_s16le.raw", layout));
+    Quality q;
+    q.resolution = {480, 480};
+    models.render.setQuality(q);
+    models.crosshair.setDims(v->dims);
+    models.document.set(v, "cranium");
+    models.render.applyPreset("CT-Bone");
+    TfEditorDialog* editor = openEditorOn2d(window);
+    QVERIFY(editor);
+    editor->resize(760, 520);
+    QTRY_VERIFY_WITH_TIMEOUT(editor->tf2dHistogramReady(), 60000);
+    Tf2dView& view = editor->tf2d();
+    const double top = view.gradientTop();
+    std::unique_ptr<QMenu> menu(view.menuAt(view.plotArea().center()));
+    menu->findChild<QAction*>("tf2dAddTriangle")->trigger();
+    editor->model().setTf2dExtent(0, 200.0, 2400.0, 0.35 * top, top);
+    editor->model().setTf2dColor(0, {0.95, 0.9, 0.8});
+    editor->model().setTf2dOpacity(0, 0.7);
+    std::unique_ptr<QMenu> skin(view.menuAt(view.plotArea().center()));
+    skin->findChild<QAction*>("tf2dAddTriangle")->trigger();
+    editor->model().setTf2dExtent(1, -950.0, 50.0, 0.3 * top, top);
+    editor->model().setTf2dColor(1, {0.85, 0.55, 0.45});
+    editor->model().setTf2dOpacity(1, 0.08);
+    const QImage frame = settledFrame(window);
+    QCoreApplication::processEvents();
+    const QImage panel = editor->grab().toImage();
+    const QImage shown = frame.scaledToHeight(panel.height(), Qt::SmoothTransformation);
+    QImage both(panel.width() + shown.width(), panel.height(), QImage::Format_RGB32);
+    both.fill(Qt::black);
+    QPainter p(&both);
+    p.drawImage(0, 0, panel);
+    p.drawImage(panel.width(), 0, shown);
+    p.end();
+    QVERIFY(both.save(out + "/tf2d-editor.png"));
   }
 };
 

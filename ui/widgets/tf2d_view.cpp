@@ -191,13 +191,18 @@ void Tf2dView::paintEvent(QPaintEvent*) {
       painter.setBrush(Qt::NoBrush);
     }
   }
-  painter.setPen(palette().text().color());
-  painter.drawText(a.adjusted(4, 2, -4, -2), Qt::AlignLeft | Qt::AlignTop,
-                   QString("|∇| %1 HU/mm").arg(gTop_, 0, 'f', 0));
-  painter.drawText(a.adjusted(4, 2, -4, -2), Qt::AlignLeft | Qt::AlignBottom,
-                   QString("%1 HU").arg(huLo_, 0, 'f', 0));
-  painter.drawText(a.adjusted(4, 2, -4, -2), Qt::AlignRight | Qt::AlignBottom,
-                   QString("%1 HU").arg(huHi_, 0, 'f', 0));
+  // Axis labels in white with a black shadow: readable on dark and bright bins alike.
+  const QRectF labels = a.adjusted(4, 2, -4, -2);
+  const std::pair<int, QString> texts[] = {
+      {Qt::AlignLeft | Qt::AlignTop, QString("|∇| %1 HU/mm").arg(gTop_, 0, 'f', 0)},
+      {Qt::AlignLeft | Qt::AlignBottom, QString("%1 HU").arg(huLo_, 0, 'f', 0)},
+      {Qt::AlignRight | Qt::AlignBottom, QString("%1 HU").arg(huHi_, 0, 'f', 0)}};
+  for (const auto& [align, text] : texts) {
+    painter.setPen(Qt::black);
+    painter.drawText(labels.translated(1, 1), align, text);
+    painter.setPen(Qt::white);
+    painter.drawText(labels, align, text);
+  }
 }
 
 void Tf2dView::mousePressEvent(QMouseEvent* e) {
