@@ -197,6 +197,7 @@ class Tf2dEditorTest : public QObject {
     p.drawImage(panel.width(), 0, shown);
     p.end();
     QVERIFY(both.save(out + "/tf2d-editor.png"));
+    qInfo("%s", qPrintable(editor->findChild<QLabel*>("tf2dStatus")->text()));
   }
 };
 

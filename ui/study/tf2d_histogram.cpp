@@ -22,8 +22,8 @@ struct GradientAt {
     double gx = v.at(std::min(x + 1, d.x - 1), y, z) - v.at(std::max(x - 1, 0), y, z);
     double gy = v.at(x, std::min(y + 1, d.y - 1), z) - v.at(x, std::max(y - 1, 0), z);
     double gz = v.at(x, y, std::min(z + 1, d.z - 1)) - v.at(x, y, std::max(z - 1, 0));
-    return std::sqrt(gx * gx * scale.x * scale.x + gy * gy * scale.y * scale.y +
-                     gz * gz * scale.z * scale.z);
+    glm::dvec3 s2 = scale * scale;
+    return std::sqrt(gx * gx * s2.x + gy * gy * s2.y + gz * gz * s2.z);
   }
 };
 
@@ -67,7 +67,7 @@ int Tf2dHistogram::columnOf(double hu) const {
 }
 
 int Tf2dHistogram::rowOf(double g) const {
-  double f = g / gradientMax * kGradientBins;
+  double f = g * (kGradientBins / gradientMax);  // as the count's loop computes it
   return std::clamp(int(std::floor(f)), 0, kGradientBins - 1);
 }
 
@@ -93,16 +93,34 @@ Tf2dHistogram tf2dHistogram(const Volume& v, double gradientMax, const std::atom
   const size_t bins = size_t(Tf2dHistogram::kValueBins) * Tf2dHistogram::kGradientBins;
   std::vector<uint64_t> all(bins, 0);
   std::mutex merge;
-  // One slice per index: each counts into its own table (128 KiB), then adds it once.
+  // Each stored value's column, looked up (the division and floor once per value, not voxel).
+  std::vector<uint16_t> column(size_t(int(r.max) - int(r.min) + 1));
+  for (int sv = r.min; sv <= r.max; ++sv)
+    column[size_t(sv - r.min)] = uint16_t(h.columnOf(v.toPhysical(sv)));
+  const glm::dvec3 s2 = grad.scale * grad.scale;
+  const double rowsPerG = Tf2dHistogram::kGradientBins / h.gradientMax;
+  const int nx = v.dims.x, ny = v.dims.y, nz = v.dims.z;
+  // One slice per index: each counts into its own table (64 KiB), then adds it once. Rows of
+  // the six neighbours by pointer, the faces' neighbours clamped as GradientAt's.
   parallelFor(
-      size_t(v.dims.z),
+      size_t(nz),
       [&](size_t zi) {
         std::vector<uint32_t> local(bins, 0);
-        int z = int(zi);
-        for (int y = 0; y < v.dims.y; ++y)
-          for (int x = 0; x < v.dims.x; ++x)
-            ++local[size_t(h.rowOf(grad(x, y, z))) * Tf2dHistogram::kValueBins +
-                    size_t(h.columnOf(v.toPhysical(v.at(x, y, z))))];
+        const int z = int(zi);
+        for (int y = 0; y < ny; ++y) {
+          const int16_t* c = &v.voxels[v.index(0, y, z)];
+          const int16_t* ym = &v.voxels[v.index(0, std::max(y - 1, 0), z)];
+          const int16_t* yp = &v.voxels[v.index(0, std::min(y + 1, ny - 1), z)];
+          const int16_t* zm = &v.voxels[v.index(0, y, std::max(z - 1, 0))];
+          const int16_t* zp = &v.voxels[v.index(0, y, std::min(z + 1, nz - 1))];
+          for (int x = 0; x < nx; ++x) {
+            double gx = c[std::min(x + 1, nx - 1)] - c[std::max(x - 1, 0)];
+            double gy = yp[x] - ym[x], gz = zp[x] - zm[x];
+            double g = std::sqrt(gx * gx * s2.x + gy * gy * s2.y + gz * gz * s2.z);
+            int row = std::min(int(g * rowsPerG), Tf2dHistogram::kGradientBins - 1);
+            ++local[size_t(row) * Tf2dHistogram::kValueBins + column[size_t(c[x] - r.min)]];
+          }
+        }
         std::lock_guard<std::mutex> lock(merge);
         for (size_t k = 0; k < bins; ++k) all[k] += local[k];
       },
