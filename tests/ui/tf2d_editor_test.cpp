@@ -149,6 +149,18 @@ class Tf2dEditorTest : public QObject {
     del->trigger();
     QVERIFY(models.render.params().tf2d.empty());
     QCOMPARE(test::differingPixels(bone, settledFrame(window)), 0);
+
+    // A triangle from the menu: its apex at |gradient| 0 under the mouse's HU; Delete on the
+    // selected one removes it.
+    std::unique_ptr<QMenu> third(view.menuAt(at));
+    third->findChild<QAction*>("tf2dAddTriangle")->trigger();
+    const Tf2dPrimitive tri = editor->model().property().tf2d.primitives.at(0);
+    QCOMPARE(tri.shape, Tf2dShape::Triangle);
+    QCOMPARE(tri.g0, 0.0);
+    QVERIFY(std::abs(0.5 * (tri.hu0 + tri.hu1) - view.huAt(at.x())) < 1e-9);
+    view.setFocus();
+    QTest::keyClick(&view, Qt::Key_Delete);
+    QVERIFY(editor->model().property().tf2d.empty());
   }
 
   // The README's figure, not a check (not registered with ctest): with VOXRAY_FIGURE_DIR set,

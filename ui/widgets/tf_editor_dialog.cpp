@@ -368,8 +368,15 @@ QWidget* TfEditorDialog::make2dTab() {
   tf2dOpacity_ = spin("tf2dOpacity", 0.0, 1.0, 3, 0.05);
   tf2dSoft_ = spin("tf2dSoft", 0.0, 1.0, 2, 0.05);
   tf2dSoft_->setToolTip("The soft edge: the outer part of the shape where the opacity falls to 0");
+  tf2dHu0_->setToolTip("The selected shape's HU range (a triangle: its width at the top)");
+  tf2dHu1_->setToolTip(tf2dHu0_->toolTip());
+  tf2dG0_->setToolTip(
+      "The selected shape's gradient-magnitude range in HU/mm (a triangle's apex stays at 0)");
+  tf2dG1_->setToolTip(tf2dG0_->toolTip());
+  tf2dOpacity_->setToolTip("The shape's peak opacity, per voxel as the 1D curve's");
   tf2dColor_ = new QPushButton("Colour…");
   tf2dColor_->setObjectName("tf2dColorButton");
+  tf2dColor_->setToolTip("The selected shape's colour");
   tf2dStatus_ = new QLabel;
   tf2dStatus_->setObjectName("tf2dStatus");
   tf2dStatus_->setWordWrap(true);
