@@ -7,6 +7,7 @@
 #include "tf2d_edit.h"
 #include "tf2d_histogram.h"
 #include "tf_editor_model.h"
+#include "voxray/engine/transfer_function.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -162,6 +163,12 @@ TEST(TfEditorModel, Tf2dEditsAreWhatTheViewRendersAndUndoSteps) {
   EXPECT_EQ(r.params().tf2d.primitives.size(), 1u);
   // The view still holds the editor's function: nothing took it back from the view.
   EXPECT_TRUE(m.canUndo());
+  // A preset chosen elsewhere (the panel) is what the view shows: the 2D function, which
+  // would replace its table, goes, and the editor starts from the preset.
+  r.applyPreset("CT-Skin");
+  EXPECT_TRUE(r.params().tf2d.empty());
+  EXPECT_TRUE(m.property().tf2d.empty());
+  EXPECT_EQ(renderTable(m.property()), findPreset("CT-Skin").tf.points);
 }
 
 }  // namespace voxray
