@@ -53,6 +53,12 @@ class Tf2dEditorTest : public QObject {
              qPrintable(status->text()));
     QCOMPARE(editor->tf2d().huLo(), -1000.0);
     QVERIFY(editor->tf2d().gradientTop() >= 8.0);  // rounded up to a multiple of 8 HU/mm
+    // Another volume while the tab shows: counted again (a 32^3 phantom: 32768 voxels).
+    auto small = std::make_shared<const Volume>(makeHeadPhantom(32));
+    fixture_.models->crosshair.setDims(small->dims);
+    fixture_.models->document.set(small, "small");
+    QTRY_VERIFY_WITH_TIMEOUT(editor->tf2dHistogramReady(), 20000);
+    QVERIFY2(status->text().startsWith("2D histogram of 32768 voxels"), qPrintable(status->text()));
   }
 
   void menuAddsARectangleAndADragMovesItsHuRange() {

@@ -446,9 +446,9 @@ void TfEditorDialog::show2dSelection() {
 
 void TfEditorDialog::count2dHistogram() {
   std::shared_ptr<const Volume> v = models_.document.volume();
-  if (v.get() == tf2dCounted_ && v) return;  // counted, or being counted
+  if (v && tf2dCounted_.lock() == v) return;  // counted, or being counted
   tf2dReady_ = false;
-  tf2dCounted_ = v.get();
+  tf2dCounted_ = v;
   tf2dTask_.cancel();
   tf2dTask_.wait();
   if (!v) {

@@ -68,7 +68,9 @@ class TfEditorDialog : public QDialog {
   QPushButton* tf2dColor_;
   QLabel* tf2dStatus_;
   bool tf2dReady_ = false;
-  const Volume* tf2dCounted_ = nullptr;  // the volume the 2D histogram is of (or being counted)
+  // The volume the 2D histogram is of (or being counted); weak, so that a new volume at a
+  // freed one's address is never taken for it.
+  std::weak_ptr<const Volume> tf2dCounted_;
   BackgroundTask tf2dTask_;
 };
 
