@@ -90,7 +90,13 @@ void RenderStateModel::setQualityPreset(const std::string& name) {
 
 void RenderStateModel::applyPreset(const std::string& name) {
   const Preset& preset = findPreset(name);
-  update(kAppearance, [&](RenderParams& p) { voxray::applyPreset(p, preset); });
+  update(kAppearance, [&](RenderParams& p) {
+    voxray::applyPreset(p, preset);
+    // A preset chosen in the workstation is what the view shows: a 2D transfer function
+    // would replace its table in dvr (tf2d.h), so it goes. (The CLI applies its preset first
+    // and its --tf2d after, so there they combine.)
+    p.tf2d = {};
+  });
 }
 
 void RenderStateModel::applyValues(const std::map<std::string, std::string>& values) {

@@ -42,7 +42,7 @@ void TfEditorModel::viewChanged(unsigned what) {
   const RenderParams& p = render_.params();
   if (p.mode != Mode::Dvr) return;
   if (!p.preset.empty() || p.presetShiftHu != 0.0 || p.opacityUnitMm != vp_.unitDistanceMm ||
-      p.transferFunction != renderTable(vp_))
+      p.transferFunction != renderTable(vp_) || p.tf2d != vp_.tf2d)
     takeFromView();
 }
 
@@ -114,6 +114,70 @@ void TfEditorModel::setCurve(TfCurve curve) {
 void TfEditorModel::setUnitDistance(double mm) {
   if (!std::isfinite(mm)) return;
   edit([&](VolumeProperty& p) { p.unitDistanceMm = std::max(0.0, mm); });
+}
+
+size_t TfEditorModel::addTf2dPrimitive(const Tf2dPrimitive& prim, double axisTop) {
+  if (vp_.tf2d.primitives.size() >= kMaxTf2dPrimitives) return vp_.tf2d.primitives.size() - 1;
+  Tf2dPrimitive q = prim;
+  q.hu1 = std::max(q.hu1, q.hu0 + kTf2dMinHu);
+  q.g0 = std::max(0.0, q.g0);
+  q.g1 = std::max(q.g1, q.g0 + kTf2dMinG);
+  q.rgb = glm::clamp(q.rgb, 0.0, 1.0);
+  q.opacity = std::clamp(q.opacity, 0.0, 1.0);
+  q.soft = std::clamp(q.soft, 0.0, 1.0);
+  edit([&](VolumeProperty& p) {
+    if (p.tf2d.empty() && axisTop > 0.0 && std::isfinite(axisTop)) p.tf2d.gradientMax = axisTop;
+    p.tf2d.primitives.push_back(q);
+  });
+  return vp_.tf2d.primitives.size() - 1;
+}
+
+void TfEditorModel::moveTf2dPrimitive(size_t i, double dHu, double dG) {
+  if (i >= vp_.tf2d.primitives.size() || !std::isfinite(dHu) || !std::isfinite(dG)) return;
+  edit([&](VolumeProperty& p) { p.tf2d.primitives[i] = tf2dMoved(p.tf2d.primitives[i], dHu, dG); });
+}
+
+void TfEditorModel::resizeTf2dPrimitive(size_t i, Tf2dPart corner, double hu, double g) {
+  if (i >= vp_.tf2d.primitives.size() || !std::isfinite(hu) || !std::isfinite(g)) return;
+  edit([&](VolumeProperty& p) {
+    p.tf2d.primitives[i] = tf2dResized(p.tf2d.primitives[i], corner, hu, g);
+  });
+}
+
+void TfEditorModel::setTf2dExtent(size_t i, double hu0, double hu1, double g0, double g1) {
+  if (i >= vp_.tf2d.primitives.size()) return;
+  for (double x : {hu0, hu1, g0, g1})
+    if (!std::isfinite(x)) return;
+  edit([&](VolumeProperty& p) {
+    Tf2dPrimitive& q = p.tf2d.primitives[i];
+    q.hu0 = hu0;
+    q.hu1 = std::max(hu1, hu0 + kTf2dMinHu);
+    q.g0 = std::max(0.0, g0);
+    q.g1 = std::max(g1, q.g0 + kTf2dMinG);
+  });
+}
+
+void TfEditorModel::setTf2dColor(size_t i, glm::dvec3 rgb) {
+  if (i >= vp_.tf2d.primitives.size()) return;
+  edit([&](VolumeProperty& p) { p.tf2d.primitives[i].rgb = glm::clamp(rgb, 0.0, 1.0); });
+}
+
+void TfEditorModel::setTf2dOpacity(size_t i, double opacity) {
+  if (i >= vp_.tf2d.primitives.size() || !std::isfinite(opacity)) return;
+  edit([&](VolumeProperty& p) { p.tf2d.primitives[i].opacity = std::clamp(opacity, 0.0, 1.0); });
+}
+
+void TfEditorModel::setTf2dSoft(size_t i, double soft) {
+  if (i >= vp_.tf2d.primitives.size() || !std::isfinite(soft)) return;
+  edit([&](VolumeProperty& p) { p.tf2d.primitives[i].soft = std::clamp(soft, 0.0, 1.0); });
+}
+
+void TfEditorModel::removeTf2dPrimitive(size_t i) {
+  if (i >= vp_.tf2d.primitives.size()) return;
+  edit([&](VolumeProperty& p) {
+    p.tf2d.primitives.erase(p.tf2d.primitives.begin() + long(i));
+    if (p.tf2d.empty()) p.tf2d.gradientMax = 0.0;
+  });
 }
 
 void TfEditorModel::beginGesture() {

@@ -8,6 +8,7 @@
 #include "no_qt.h"
 #include "notifier.h"
 #include "render_state_model.h"
+#include "tf2d_edit.h"
 #include "voxray/engine/volume_property.h"
 
 namespace voxray {
@@ -42,6 +43,21 @@ class TfEditorModel {
   void removeColorPoint(size_t i);
   void setCurve(TfCurve curve);
   void setUnitDistance(double mm);  // 0 = one voxel
+
+  // The 2D transfer function's primitives (tf2d.h), in histogram coordinates (HU, HU/mm).
+  // Each is one undo step (or part of a gesture); the view's RenderParams::tf2d follows.
+  // An add returns the new primitive's index (the last: drawn on top). AXIS_TOP, the
+  // editor's gradient axis, becomes the table's gradientMax when the first primitive comes,
+  // so that what is drawn at the axis' top row is what the table's top row does.
+  size_t addTf2dPrimitive(const Tf2dPrimitive& p, double axisTop = 0.0);
+  void moveTf2dPrimitive(size_t i, double dHu, double dG);  // by a delta
+  void resizeTf2dPrimitive(size_t i, Tf2dPart corner, double hu, double g);
+  // Extents as typed (HU0 < HU1 and 0 <= G0 < G1 kept at their minimum extents).
+  void setTf2dExtent(size_t i, double hu0, double hu1, double g0, double g1);
+  void setTf2dColor(size_t i, glm::dvec3 rgb);
+  void setTf2dOpacity(size_t i, double opacity);
+  void setTf2dSoft(size_t i, double soft);
+  void removeTf2dPrimitive(size_t i);
 
   // Every edit between the two is one undo step (a drag). Unbalanced ends do nothing.
   void beginGesture();

@@ -2,6 +2,8 @@
 // The transfer-function editor (issue 35): a window beside the 3D view with the curve over the
 // volume's histogram (TfCurveView), the selected point's numbers, the curve type, the opacity
 // unit distance, the HU axis, and files (Voxray .json, 3D Slicer .vp). Edits render at once.
+// A second tab edits the 2D transfer function (Tf2dView over the value x |gradient|
+// histogram, counted in the background the first time the tab shows a volume).
 #include <memory>
 
 #include <QCheckBox>
@@ -10,9 +12,11 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QTabWidget>
 
 #include "app_models.h"
 #include "background_task.h"
+#include "tf2d_view.h"
 #include "tf_curve_view.h"
 #include "tf_editor_model.h"
 
@@ -34,12 +38,19 @@ class TfEditorDialog : public QDialog {
   QString saveFile(const QString& file);  // same for writing
   // The histogram's count is done (tests wait for it).
   bool histogramReady() const { return histogramReady_; }
+  Tf2dView& tf2d() { return *tf2d_; }
+  QTabWidget& tabs() { return *tabs_; }
+  // The 2D histogram's count is done (tests wait for it).
+  bool tf2dHistogramReady() const { return tf2dReady_; }
 
  private:
   void countHistogram();
   void showSelection();
   void fitVisible();
   void fitVolume();
+  QWidget* make2dTab();
+  void count2dHistogram();
+  void show2dSelection();
 
   AppModels& models_;
   std::unique_ptr<TfEditorModel> model_;
@@ -51,6 +62,16 @@ class TfEditorDialog : public QDialog {
   QLabel* status_;
   bool histogramReady_ = false;
   BackgroundTask histogramTask_;
+  QTabWidget* tabs_;
+  Tf2dView* tf2d_;
+  QDoubleSpinBox *tf2dHu0_, *tf2dHu1_, *tf2dG0_, *tf2dG1_, *tf2dOpacity_, *tf2dSoft_;
+  QPushButton* tf2dColor_;
+  QLabel* tf2dStatus_;
+  bool tf2dReady_ = false;
+  // The volume the 2D histogram is of (or being counted); weak, so that a new volume at a
+  // freed one's address is never taken for it.
+  std::weak_ptr<const Volume> tf2dCounted_;
+  BackgroundTask tf2dTask_;
 };
 
 }  // namespace voxray::ui
