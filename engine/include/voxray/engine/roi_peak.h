@@ -8,7 +8,10 @@
 //   pixel rule, roiStats). A plane ROI is taken as the prism it sweeps along its normal, and
 //   the sphere must fit in it: every voxel of the ROI's plane whose centre lies within the
 //   radius of the sphere's centre is a pixel of the ROI. The whole sphere must also lie inside
-//   the volume (no voxel outside it is guessed). A ROI without such a centre has no peak.
+//   the volume (no voxel outside it is guessed). A ROI without such a centre has no peak. The
+//   footprint is counted in voxels, as the ROI is: with 4 mm voxels a 3 x 3 voxel square (its
+//   cells 12 mm across) has room; with 2 mm voxels the square needs 7 x 7.
+// - Ties (a hot voxel wholly inside several spheres) go to the first centre in slice order.
 // - Weighting: each voxel counts by the fraction of its cell inside the sphere (computed once
 //   for the grid by sub-sampling a cell's boundary-crossing voxels 16 x 16 x 16 times; a cell
 //   wholly inside counts 1). The peak is the weighted mean sum(w v) / sum(w).
