@@ -10,6 +10,7 @@
 #include "json_text.h"
 #include "measure_points.h"
 #include "voxray/engine/measure.h"
+#include "voxray/engine/roi_peak.h"
 #include "voxray/io/error.h"
 
 namespace voxray::cli {
@@ -106,6 +107,18 @@ int runMeasure(const InputOptions& in, const MeasureOptions& o) {
           << "SUVsd    " << optionalText(suv(s.sd)) << " " << v.suv->unit << "\n"
           << "SUVmin   " << optionalText(suv(s.min)) << " " << v.suv->unit << "\n"
           << "SUVmax   " << optionalText(suv(s.max)) << " " << v.suv->unit << "\n";
+      // SUVpeak (PERCIST): the best 1 cm³ sphere centred in the ROI (rules: roi_peak.h).
+      const RoiPeak peak = roiPeak(v, roi);
+      j["suv"]["peak"] = optionalJson(suv(peak.mean));
+      if (peak.mean) {
+        j["suv"]["peak_centre_voxel"] = {peak.centre.x, peak.centre.y, peak.centre.z};
+        out << "SUVpeak  " << optionalText(suv(peak.mean)) << " " << v.suv->unit
+            << " (1 cm3 sphere at voxel " << peak.centre.x << ":" << peak.centre.y << ":"
+            << peak.centre.z << ")\n";
+      } else {
+        j["suv"]["peak_note"] = kNoRoomForPeak;
+        out << "SUVpeak  — (" << kNoRoomForPeak << ")\n";
+      }
     }
   }
   if (o.json) {

@@ -48,18 +48,21 @@ void checkPlaneAxis(int axis) {
                      " is not a volume axis: use 0 (i), 1 (j) or 2 (k)");
 }
 
-RoiStats roiStats(const Volume& v, const PlaneRoi& roi) {
+namespace {
+
+// The shape's area in mm² and its voxels (the pixel rule in measure.h).
+double roiPixelsAndArea(const Volume& v, const PlaneRoi& roi, std::vector<glm::ivec3>* pixels) {
   checkPlaneAxis(roi.normalAxis);
   const int n = roi.normalAxis, ua = (n + 1) % 3, va = (n + 2) % 3;
-  RoiStats s;
   // In-plane extents in mm (the voxel axes are orthogonal: mm = voxels * spacing).
   const glm::dvec2 a(roi.a[ua], roi.a[va]), b(roi.b[ua], roi.b[va]);
   const glm::dvec2 spacing(v.spacingMm[ua], v.spacingMm[va]);
   const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
   const glm::dvec2 sizeMm = (hi - lo) * spacing;
-  s.areaMm2 = roi.shape == RoiShape::Rect ? sizeMm.x * sizeMm.y : kPi * sizeMm.x * sizeMm.y / 4;
+  const double area =
+      roi.shape == RoiShape::Rect ? sizeMm.x * sizeMm.y : kPi * sizeMm.x * sizeMm.y / 4;
   const double slice = std::round(roi.a[n]);
-  if (s.areaMm2 <= 0.0 || v.voxelCount() == 0 || slice < 0 || slice >= v.dims[n]) return s;
+  if (area <= 0.0 || v.voxelCount() == 0 || slice < 0 || slice >= v.dims[n]) return area;
 
   const glm::dvec2 centre = (lo + hi) * 0.5, radius = (hi - lo) * 0.5;
   auto inside = [&](double x, double y) {
@@ -69,8 +72,6 @@ RoiStats roiStats(const Volume& v, const PlaneRoi& roi) {
     const double dx = (x - centre.x) / radius.x, dy = (y - centre.y) / radius.y;
     return dx * dx + dy * dy <= 1.0 + kInsideTolerance;
   };
-  // Welford's running mean and variance: stable for thousands of similar values.
-  double mean = 0.0, m2 = 0.0, mn = 0.0, mx = 0.0;
   // The pixel range, clamped in floating point first: a far corner must not overflow an int.
   const glm::dvec2 first = glm::clamp(glm::ceil(lo - kInsideTolerance), glm::dvec2(0.0),
                                       glm::dvec2(v.dims[ua], v.dims[va]));
@@ -84,14 +85,34 @@ RoiStats roiStats(const Volume& v, const PlaneRoi& roi) {
       if (!inside(x, y)) continue;
       idx[ua] = x;
       idx[va] = y;
-      const double value = v.toPhysical(v.at(idx.x, idx.y, idx.z));
-      ++s.pixels;
-      const double delta = value - mean;
-      mean += delta / double(s.pixels);
-      m2 += delta * (value - mean);
-      mn = s.pixels == 1 ? value : std::min(mn, value);
-      mx = s.pixels == 1 ? value : std::max(mx, value);
+      pixels->push_back(idx);
     }
+  return area;
+}
+
+}  // namespace
+
+std::vector<glm::ivec3> roiPixels(const Volume& v, const PlaneRoi& roi) {
+  std::vector<glm::ivec3> pixels;
+  roiPixelsAndArea(v, roi, &pixels);
+  return pixels;
+}
+
+RoiStats roiStats(const Volume& v, const PlaneRoi& roi) {
+  RoiStats s;
+  std::vector<glm::ivec3> pixels;
+  s.areaMm2 = roiPixelsAndArea(v, roi, &pixels);
+  // Welford's running mean and variance: stable for thousands of similar values.
+  double mean = 0.0, m2 = 0.0, mn = 0.0, mx = 0.0;
+  for (const glm::ivec3& idx : pixels) {
+    const double value = v.toPhysical(v.at(idx.x, idx.y, idx.z));
+    ++s.pixels;
+    const double delta = value - mean;
+    mean += delta / double(s.pixels);
+    m2 += delta * (value - mean);
+    mn = s.pixels == 1 ? value : std::min(mn, value);
+    mx = s.pixels == 1 ? value : std::max(mx, value);
+  }
   if (s.pixels == 0) return s;
   s.mean = mean;
   s.min = mn;

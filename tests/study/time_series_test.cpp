@@ -302,7 +302,8 @@ TEST(SuvReadout, ProbeAndRoiReadSuvbwWithItsUnit) {
   roi.normalAxis = 2;
   roi.points = {centre - glm::dvec3(1.5, 1.5, 0.0), centre + glm::dvec3(1.5, 1.5, 0.0)};
   const std::string stats = measurementText(v, roi);
-  EXPECT_NE(stats.find("SUVmean 6.607  SD 0.000  min 6.607  SUVmax 6.607 SUVbw"), std::string::npos)
+  EXPECT_NE(stats.find("SUVmean 6.607  SD 0.000  min 6.607  SUVmax 6.607  SUVpeak 6.607 SUVbw"),
+            std::string::npos)
       << stats;
 }
 

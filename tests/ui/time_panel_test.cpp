@@ -186,9 +186,15 @@ class TimePanelTest : public QObject {
                        2);
     auto* list = fixture_.window->findChild<QListWidget*>("measurementList");
     QVERIFY(list && list->count() == 1);
-    QVERIFY2(
-        list->item(0)->text().contains("SUVmean 6.607  SD 0.000  min 6.607  SUVmax 6.607 SUVbw"),
-        qPrintable(list->item(0)->text()));
+    // SUVpeak (PERCIST's 1 cm³ sphere) beside SUVmax: uniform inside the 36 mm sphere.
+    QVERIFY2(list->item(0)->text().contains(
+                 "SUVmean 6.607  SD 0.000  min 6.607  SUVmax 6.607  SUVpeak 6.607 SUVbw"),
+             qPrintable(list->item(0)->text()));
+    // A 2 x 2 voxel (8 mm) square has no room for the sphere: the readout says so.
+    m.measurements.add(MeasureKind::Rect, {glm::dvec3(c), glm::dvec3(c) + glm::dvec3(1, 1, 0)}, 2);
+    QVERIFY(list->count() == 2);
+    QVERIFY2(list->item(1)->text().contains("SUVmax 6.607  SUVpeak — (no room for 1 cm³) SUVbw"),
+             qPrintable(list->item(1)->text()));
   }
 
   void petWithoutWeightReadsBqPerMlAndSaysWhy() {

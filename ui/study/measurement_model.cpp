@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "value_look.h"
+#include "voxray/engine/roi_peak.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -118,6 +119,15 @@ RoiStats measurementStats(const Volume& v, const Measurement& m) {
   return roiStats(v, roi);
 }
 
+RoiPeak measurementPeak(const Volume& v, const Measurement& m) {
+  PlaneRoi roi;
+  roi.shape = m.kind == MeasureKind::Rect ? RoiShape::Rect : RoiShape::Ellipse;
+  roi.normalAxis = std::clamp(m.normalAxis, 0, 2);
+  roi.a = m.points.at(0);
+  roi.b = m.points.at(1);
+  return roiPeak(v, roi);
+}
+
 namespace {
 
 std::string number(const std::optional<double>& x, int decimals) {
@@ -142,12 +152,15 @@ std::string measurementText(const Volume& v, const Measurement& m) {
       break;
   }
   RoiStats s = measurementStats(v, m);
-  if (v.suv) {  // PET with its SUV scale: SUVmean, SD, min, max (the scale is linear)
-    for (auto* x : {&s.mean, &s.sd, &s.min, &s.max})
+  if (v.suv) {  // PET with its SUV scale: SUVmean, SD, min, max, peak (the scale is linear)
+    const RoiPeak peak = measurementPeak(v, m);
+    std::optional<double> suvPeak = peak.mean;
+    for (auto* x : {&s.mean, &s.sd, &s.min, &s.max, &suvPeak})
       if (*x) *x = v.suv->toSuv(**x);
     return "SUVmean " + number(s.mean, 3) + "  SD " + number(s.sd, 3) + "  min " +
-           number(s.min, 3) + "  SUVmax " + number(s.max, 3) + " " + v.suv->unit + ", " +
-           number(s.areaMm2, 1) + " mm², " + std::to_string(s.pixels) + " px";
+           number(s.min, 3) + "  SUVmax " + number(s.max, 3) + "  SUVpeak " +
+           (suvPeak ? number(suvPeak, 3) : std::string("— (no room for 1 cm³)")) + " " +
+           v.suv->unit + ", " + number(s.areaMm2, 1) + " mm², " + std::to_string(s.pixels) + " px";
   }
   return "mean " + number(s.mean, 1) + "  SD " + number(s.sd, 1) + "  min " + number(s.min, 0) +
          "  max " + number(s.max, 0) + " " + valueUnit(v) + ", " + number(s.areaMm2, 1) + " mm², " +

@@ -12,6 +12,7 @@
 #include "notifier.h"
 #include "slice_geometry.h"
 #include "voxray/engine/measure.h"
+#include "voxray/engine/roi_peak.h"
 
 namespace voxray {
 struct Volume;
@@ -86,5 +87,7 @@ glm::dvec3 clampToVolume(const glm::dvec3& voxel, const glm::ivec3& dims);
 std::string measurementText(const Volume& v, const Measurement& m);
 // The ROI statistics of an ellipse or rectangle measurement.
 RoiStats measurementStats(const Volume& v, const Measurement& m);
+// The ROI's peak: the best 1 cm³ sphere centred in it (PERCIST; rules in roi_peak.h).
+RoiPeak measurementPeak(const Volume& v, const Measurement& m);
 
 }  // namespace voxray

@@ -9,6 +9,7 @@
 // region with no voxel (zero area, or outside the volume) has no mean.
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -51,6 +52,8 @@ struct RoiStats {
 };
 // SD is the sample standard deviation (n - 1); none for a single pixel.
 RoiStats roiStats(const Volume& v, const PlaneRoi& roi);
+// The voxels of the region by the same pixel rule, in slice order (rows, then columns).
+std::vector<glm::ivec3> roiPixels(const Volume& v, const PlaneRoi& roi);
 
 // Throws Error (Input) when AXIS is not 0, 1 or 2.
 void checkPlaneAxis(int axis);
