@@ -1,12 +1,12 @@
 #include "slice_view.h"
 
 #include <cmath>
+#include <functional>
 
 #include <QGuiApplication>
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QPainter>
-#include <QShortcut>
 #include <QStyleHints>
 #include <QWheelEvent>
 
@@ -28,6 +28,21 @@ namespace {
 constexpr double kEdgePickPixels = 6.0;
 // Shorter drags are clicks: an arrow needs a direction a reader can see.
 constexpr double kMinArrowPixels = 4.0;
+
+// The Text tool's line edit: Esc drops the text (a plain QLineEdit ignores it).
+class AnnotationTextEdit : public QLineEdit {
+ public:
+  using QLineEdit::QLineEdit;
+  std::function<void()> onEscape;
+
+ protected:
+  void keyPressEvent(QKeyEvent* e) override {
+    if (e->key() == Qt::Key_Escape && onEscape)
+      onEscape();
+    else
+      QLineEdit::keyPressEvent(e);
+  }
+};
 }  // namespace
 
 SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crosshair,
@@ -276,7 +291,7 @@ bool SliceView::pressAnnotation(QPointF at) {
   }
   if (tool != MeasureTool::Text) return false;
   if (textEdit_) textEdit_->deleteLater();  // a second click elsewhere: start over there
-  auto* edit = new QLineEdit(this);
+  auto* edit = new AnnotationTextEdit(this);
   edit->setObjectName("annotationTextEdit");
   edit->setPlaceholderText("Text, Return to add");
   edit->setToolTip("Return adds the text here; Esc or an empty text adds nothing");
@@ -292,14 +307,12 @@ bool SliceView::pressAnnotation(QPointF at) {
     edit->deleteLater();
     finishText(at, edit->text());
   });
-  auto* esc =
-      new QShortcut(QKeySequence(Qt::Key_Escape), edit, nullptr, nullptr, Qt::WidgetShortcut);
-  QObject::connect(esc, &QShortcut::activated, this, [this, edit] {
+  edit->onEscape = [this, edit] {
     if (textEdit_ != edit) return;
     textEdit_ = nullptr;
     edit->deleteLater();
     setFocus();
-  });
+  };
   return true;
 }
 
