@@ -6,6 +6,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QSignalSpy>
 
 #include "annotation_overlay.h"
 #include "slice_view.h"
@@ -163,6 +164,30 @@ class AnnotationWidgetTest : public QObject {
     axial.setExporting(false);  // on screen they always show
     fixture_.models->measurements.setShowInExports(false);
     QVERIFY(differingPixels(plain, axial.grab().toImage()) > 50);
+  }
+
+  // docs/images/annotations.png: the Philips head CT with two arrows and a text on slice 14.
+  void readmeScreenshot() {
+    const QString shot = qEnvironmentVariable("VOXRAY_ANNOTATION_SHOT");
+    if (shot.isEmpty()) QSKIP("set VOXRAY_ANNOTATION_SHOT=PATH to write the README's screenshot");
+    MainWindow& window = *fixture_.window;
+    window.resize(1600, 1000);
+    QSignalSpy shown(&window, &MainWindow::volumeShown);
+    window.open(VOXRAY_DATA_DIR "/dicom/ct-philips-phantom/S2010", {});
+    QVERIFY(shown.wait(120000));
+    const Volume& v = *fixture_.models->document.volume();
+    fixture_.models->crosshair.setVoxel({256, 256, 14});
+    const SliceAxes& axes = window.sliceView(0).axes();
+    const glm::dvec3 n = sliceNormal(v, axes);
+    auto mm = [&](double i, double j) { return voxelToPatient(v, {i, j, 14.0}); };
+    auto& a = fixture_.models->annotations;
+    a.addArrow(mm(170, 250), mm(80, 120), n, "check this insert");
+    a.addText("phantom centre", mm(262, 262), n);
+    a.addArrow(mm(340, 330), mm(430, 430), n);
+    a.select(0);
+    test::waitFullFrame(window);
+    QTest::qWait(500);
+    QVERIFY(window.grab().save(shot));
   }
 };
 
