@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "slice_geometry.h"
 #include "voxray/engine/measure.h"
@@ -140,6 +141,27 @@ void AnnotationModel::redo() {
   items_ = history_[done_++].after;
   if (!find(selected_)) selected_ = 0;
   changed.notify();
+}
+
+namespace {
+
+std::string lps(const glm::dvec3& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.1f, %.1f, %.1f) mm", p.x, p.y, p.z);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> annotationReportTexts(const AnnotationModel& m) {
+  std::vector<std::string> out;
+  for (const Annotation& a : m.items()) {
+    std::string line = a.tailMm ? "arrow from " + lps(*a.tailMm) + " to " + lps(a.anchorMm)
+                                : "text at " + lps(a.anchorMm);
+    if (!a.text.empty()) line += ": " + a.text;
+    out.push_back(line);
+  }
+  return out;
 }
 
 namespace {

@@ -81,6 +81,10 @@ class AnnotationModel {
   int nextId_ = 1, selected_ = 0;
 };
 
+// Each annotation as a line of a report: "text at (-93.0, 66.0, 37.5) mm: lesion" or
+// "arrow from (…) mm to (…) mm: text" (LPS, 0.1 mm), in the list's order.
+std::vector<std::string> annotationReportTexts(const AnnotationModel& m);
+
 // The session key "annotations": [{"text": "…", "anchor_mm": [x, y, z], "tail_mm": [x, y, z]
 // (arrows only), "normal": [x, y, z]}, …].
 nlohmann::json annotationsToJson(const AnnotationModel& m);
