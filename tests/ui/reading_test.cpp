@@ -19,6 +19,7 @@
 
 #include <dcmtk/dcmdata/dctk.h>
 
+#include "annotation_model.h"
 #include "help_dialogs.h"
 #include "json_text_dialog.h"
 #include "reading_actions.h"
@@ -275,6 +276,15 @@ class ReadingTest : public QObject {
     QCOMPARE(v->spacingMm.x, 0.451171875);  // PixelSpacing
     // A 60 x 80 pixel 3-4-5 triangle on slice 5: 100 pixels = 45.1171875 mm.
     fixture_.models->measurements.add(MeasureKind::Distance, {{100, 100, 5}, {160, 180, 5}}, 2);
+    // An arrow annotation goes in as a TEXT item with its LPS millimetres (0.1 mm).
+    const glm::dvec3 head = voxelToPatient(*v, {120, 130, 5}),
+                     tail = voxelToPatient(*v, {150, 170, 5});
+    fixture_.models->annotations.addArrow(head, tail, {0, 0, 1}, "cyst?");
+    const std::string arrowText = annotationReportTexts(fixture_.models->annotations)[0];
+    QVERIFY2(
+        arrowText.find(QString::asprintf("to (%.1f, %.1f, %.1f) mm: cyst?", head.x, head.y, head.z)
+                           .toStdString()) != std::string::npos,
+        arrowText.c_str());
     const fs::path out = freshDir("sr");
     QVERIFY(results_->saveReport(QString::fromStdString((out / "sr.dcm").string())));
     const auto numbers = valuesIn(out / "sr.dcm", DCM_NumericValue);
@@ -286,6 +296,8 @@ class ReadingTest : public QObject {
     const auto refs = valuesIn(out / "sr.dcm", DCM_ReferencedSOPInstanceUID);
     QVERIFY(std::find(refs.begin(), refs.end(), v->study.sliceSopInstanceUids[5]) != refs.end());
     QCOMPARE(valuesIn(out / "sr.dcm", DCM_StudyInstanceUID)[0], v->study.studyInstanceUid);
+    const auto texts = valuesIn(out / "sr.dcm", DCM_TextValue);
+    QVERIFY2(std::find(texts.begin(), texts.end(), arrowText) != texts.end(), arrowText.c_str());
     QVERIFY(results_->written().contains(QString::fromStdString((out / "sr.dcm").string())));
 
     // The CSV: the same value (6 significant digits as voxray-cli writes it) on slice 5.

@@ -98,7 +98,7 @@ class SessionMenuTest : public QObject {
     read.session.window = {900.0, 120.0};
     const QString moved = dir_.filePath("moved.json");
     QByteArray json = QByteArray::fromStdString(sessionToJson(read.session, moved.toStdString()));
-    json.replace("{\n", "{\n  \"annotations\": [],\n");
+    json.replace("{\n", "{\n  \"sticky-notes\": [],\n");
     QFile out(moved);
     QVERIFY(out.open(QIODevice::WriteOnly));
     out.write(json);
@@ -123,7 +123,7 @@ class SessionMenuTest : public QObject {
     QVERIFY(sessionShown.wait(60000));
     QVERIFY2(question.contains(dir_.filePath("gone/CThead")), qPrintable(question));
     QCOMPARE(told.size(), 1);
-    QVERIFY2(told.front().contains("unknown field 'annotations' ignored"),
+    QVERIFY2(told.front().contains("unknown field 'sticky-notes' ignored"),
              qPrintable(told.front()));
     QCOMPARE(QString::fromStdString(toText(models.render.params())),
              QString::fromStdString(savedParams));

@@ -3,6 +3,7 @@
 // them (widgets disconnect from the models when they are destroyed).
 #include <optional>
 #include <string>
+#include "annotation_model.h"
 #include "crosshair_model.h"
 #include "fusion.h"
 #include "lighting_figures.h"
@@ -25,6 +26,7 @@ struct AppModels {
   WindowLevelModel windowLevel;
   CrosshairModel crosshair;
   MeasurementModel measurements;   // a session keeps them (session_state.cpp)
+  AnnotationModel annotations;     // text and arrows in the slice views; a session keeps them
   SegmentationModel segmentation;  // the segment editor's; a session keeps it too
   SegmentToolModel segmentTools;   // the editor's tool and its settings (not saved)
   TimePlayer player;               // a 4D series' play rate and state (the document: its point)

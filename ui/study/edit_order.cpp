@@ -20,24 +20,31 @@ void moveLast(std::vector<EditOrder::Source>& from, std::vector<EditOrder::Sourc
 
 }  // namespace
 
-EditOrder::EditOrder(ViewHistory& view, SegmentationModel& segments)
-    : view_(view), segments_(segments) {
+EditOrder::EditOrder(ViewHistory& view, SegmentationModel& segments, AnnotationModel* annotations)
+    : view_(view), segments_(segments), annotations_(annotations) {
   known_[0] = countsOf(Source::View);
   known_[1] = countsOf(Source::Segments);
-  // What either could undo before this listened: older than anything recorded here.
+  known_[2] = countsOf(Source::Annotations);
+  // What any could undo before this listened: older than anything recorded here.
   undo_.assign(known_[0].undo, Source::View);
   undo_.insert(undo_.end(), known_[1].undo, Source::Segments);
+  undo_.insert(undo_.end(), known_[2].undo, Source::Annotations);
   viewConnection_ = view_.changed.connect([this] { follow(Source::View); });
   segmentsConnection_ = segments_.changed.connect([this] { follow(Source::Segments); });
+  if (annotations_)
+    annotationsConnection_ = annotations_->changed.connect([this] { follow(Source::Annotations); });
 }
 
 EditOrder::~EditOrder() {
   view_.changed.disconnect(viewConnection_);
   segments_.changed.disconnect(segmentsConnection_);
+  if (annotations_) annotations_->changed.disconnect(annotationsConnection_);
 }
 
 EditOrder::Counts EditOrder::countsOf(Source s) const {
   if (s == Source::View) return {view_.undoCount(), view_.redoCount()};
+  if (s == Source::Annotations)
+    return annotations_ ? Counts{annotations_->undoCount(), annotations_->redoCount()} : Counts{};
   return {segments_.undoCount(), segments_.redoCount()};
 }
 
@@ -75,6 +82,8 @@ bool EditOrder::step(Source s, bool undo) {
   stepping_ = true;
   if (s == Source::View)
     undo ? view_.undo() : view_.redo();
+  else if (s == Source::Annotations)
+    undo ? annotations_->undo() : annotations_->redo();
   else
     undo ? segments_.undo() : segments_.redo();
   stepping_ = false;
@@ -122,6 +131,7 @@ bool EditOrder::canRedo() const { return !redo_.empty(); }
 
 std::string EditOrder::textOf(Source s, bool undo) const {
   if (s == Source::View) return undo ? "Undo view change" : "Redo view change";
+  if (s == Source::Annotations) return undo ? annotations_->undoText() : annotations_->redoText();
   return undo ? segments_.undoText() : segments_.redoText();
 }
 

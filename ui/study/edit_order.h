@@ -1,5 +1,6 @@
 #pragma once
-// Edit → Undo and Redo over the view's history and the segment editor's, in the order the user
+// Edit → Undo and Redo over the view's history, the segment editor's and the annotations' (when
+// given), in the order the user
 // made the edits: Ctrl+Z takes back the last edit of either, the next Ctrl+Z the one before.
 // Each history keeps its own steps (ViewHistory, SegmentationModel); this keeps only which of
 // the two each step was. It follows their step counts, so a step taken back elsewhere (the
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "annotation_model.h"
 #include "no_qt.h"
 #include "segmentation_model.h"
 #include "view_history.h"
@@ -16,9 +18,9 @@ namespace voxray {
 
 class EditOrder {
  public:
-  enum class Source { View, Segments };
-  // Listens to both until destroyed (destroy it before them).
-  EditOrder(ViewHistory& view, SegmentationModel& segments);
+  enum class Source { View, Segments, Annotations };
+  // Listens to each until destroyed (destroy it before them).
+  EditOrder(ViewHistory& view, SegmentationModel& segments, AnnotationModel* annotations = nullptr);
   ~EditOrder();
   EditOrder(const EditOrder&) = delete;
   EditOrder& operator=(const EditOrder&) = delete;
@@ -48,10 +50,11 @@ class EditOrder {
 
   ViewHistory& view_;
   SegmentationModel& segments_;
+  AnnotationModel* annotations_;
   std::vector<Source> undo_, redo_;  // oldest first; the back is the next step
-  Counts known_[2];
+  Counts known_[3];
   bool stepping_ = false;
-  int viewConnection_ = 0, segmentsConnection_ = 0;
+  int viewConnection_ = 0, segmentsConnection_ = 0, annotationsConnection_ = 0;
 };
 
 }  // namespace voxray

@@ -35,7 +35,8 @@ struct Measurement {
 };
 
 // The tool a left drag in a slice view uses; None moves the crosshair.
-enum class MeasureTool { None, Distance, Angle, Ellipse, Rect };
+// Text and Arrow place annotations (annotation_model.h), not measurements.
+enum class MeasureTool { None, Distance, Angle, Ellipse, Rect, Text, Arrow };
 
 class MeasurementModel {
  public:

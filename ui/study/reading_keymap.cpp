@@ -46,6 +46,8 @@ const std::vector<ReadingAction>& defaultReadingActions() {
         {"tool-distance", "Distance tool", "D"},
         {"tool-angle", "Angle tool", "A"},
         {"tool-roi", "ROI tool (ellipse)", "E"},
+        {"tool-text", "Text annotation tool", "T"},
+        {"tool-arrow", "Arrow annotation tool", "W"},
         {"mark-key-image", "Mark key image", "K"},
     };
     a.insert(a.end(), rest.begin(), rest.end());

@@ -343,6 +343,13 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
     throw Error(Error::Kind::Internal,
                 std::string("session: the measurements are not JSON (") + e.what() + ")");
   }
+  try {
+    const Json annotations = Json::parse(s.annotations);
+    if (!annotations.empty()) j["annotations"] = annotations;  // older readers: nothing new
+  } catch (const Json::exception& e) {
+    throw Error(Error::Kind::Internal,
+                std::string("session: the annotations are not JSON (") + e.what() + ")");
+  }
   return j.dump(2) + "\n";
 }
 
@@ -382,9 +389,10 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
     throw inputError("session " + sessionPath + ": written by a newer Voxray (session version " +
                      version.dump() + "; this one reads up to " + std::to_string(kSessionVersion) +
                      "); open it with a newer Voxray");
-  r.warnUnknown(root, "",
-                {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays",
-                 "transfer-function", "measurements", "segmentation", "time", "comparison"});
+  r.warnUnknown(
+      root, "",
+      {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays",
+       "transfer-function", "measurements", "annotations", "segmentation", "time", "comparison"});
   SessionRead out;
   Session& s = out.session;
   readInput(r, root, sessionPath, out);
@@ -481,6 +489,10 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   if (root.contains("measurements")) {
     if (!root.at("measurements").is_array()) r.fail("measurements", "must be an array [ ... ]");
     s.measurements = root.at("measurements").dump();
+  }
+  if (root.contains("annotations")) {
+    if (!root.at("annotations").is_array()) r.fail("annotations", "must be an array [ ... ]");
+    s.annotations = root.at("annotations").dump();
   }
   if (root.contains("segmentation")) {
     try {

@@ -60,6 +60,9 @@ struct Session {
   // colour and opacity lists and curve (the table alone loses them). Optional in the file.
   std::optional<VolumeProperty> transferFunction;
   std::string measurements = "[]";  // a JSON array owned by the measuring tools, kept as read
+  // Text and arrow annotations (annotation_model.h), a JSON array kept as read; optional in the
+  // file (older sessions have none).
+  std::string annotations = "[]";
   // The segment editor's segmentation (issue 34); optional in the file. Its grid is checked
   // against the volume when the session is applied (session_state.h).
   std::optional<Segmentation> segmentation;

@@ -25,6 +25,7 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
   s.overlays = m.render.overlays();
   s.transferFunction = m.render.shapedTransferFunction();
   s.measurements = measurementsToJson(m.measurements).at("items").dump();
+  s.annotations = annotationsToJson(m.annotations).dump();
   if (m.segmentation.active() && !m.segmentation.segmentation().segments.empty())
     s.segmentation = m.segmentation.segmentation();
   if (m.document.timePoints() > 1) {
@@ -51,6 +52,7 @@ std::vector<std::string> applySession(AppModels& m, const Session& s) {
   measurementsFromJson(
       {{"show_in_exports", false}, {"items", nlohmann::json::parse(s.measurements)}},
       m.measurements);
+  annotationsFromJson(nlohmann::json::parse(s.annotations), m.annotations);
   Quality q = m.render.quality();
   q.preset = s.qualityPreset;
   q.resolution = s.resolution;

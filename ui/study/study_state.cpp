@@ -161,6 +161,7 @@ void openStudy(AppModels& m, VolumeSeries series, std::string name,
   m.windowLevel.reset(w.wl, w.source);
   m.crosshair.setGeometry(v->dims, v->spacingMm, v->direction);
   m.measurements.clear();  // a study's own; a session brings them back
+  m.annotations.clear();
   m.segmentation.clear();  // as are its segments
   // Last: whoever hears the document change sees the new study's state with it.
   m.document.setSeries(std::move(series), std::move(name), timePoint);

@@ -52,7 +52,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
     : QMainWindow(parent),
       models_(models),
       history_(std::make_unique<ViewHistory>(models)),
-      editOrder_(std::make_unique<EditOrder>(*history_, models.segmentation)),
+      editOrder_(std::make_unique<EditOrder>(*history_, models.segmentation, &models.annotations)),
       historyListeners_(new QObject(this)) {
   setObjectName("mainWindow");
   setAcceptDrops(true);
@@ -186,9 +186,12 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::wireMeasurements() {
-  for (SliceView* s : slices_) s->setMeasurements(&models_.measurements);
+  for (SliceView* s : slices_) {
+    s->setMeasurements(&models_.measurements);
+    s->setAnnotationModel(&models_.annotations);
+  }
   volumeView_->setMeasurements(&models_.measurements);
-  measureDock_ = makeMeasurementDock(models_.measurements, models_.document);
+  measureDock_ = makeMeasurementDock(models_.measurements, models_.annotations, models_.document);
   addDockWidget(Qt::RightDockWidgetArea, measureDock_);
   connect(volumeView_, &VolumeView::pickMissed, this,
           [this](const QString& m) { statusBar()->showMessage(m, 5000); });

@@ -26,7 +26,9 @@ constexpr ToolChoice kTools[] = {
     {MeasureTool::Distance, "Distance", "Drag from one point to the other (mm)"},
     {MeasureTool::Angle, "Angle", "Drag the first arm to the vertex, then click its end"},
     {MeasureTool::Ellipse, "Ellipse", "Drag across the ellipse's bounding box: mean, SD, area"},
-    {MeasureTool::Rect, "Rectangle", "Drag from corner to corner: mean, SD, area"}};
+    {MeasureTool::Rect, "Rectangle", "Drag from corner to corner: mean, SD, area"},
+    {MeasureTool::Text, "Text", "Click where the text goes, type it, Return (T)"},
+    {MeasureTool::Arrow, "Arrow", "Drag from the arrow's head to its tail (W)"}};
 
 QWidget* makeToolRow(MeasurementModel& m) {
   auto* row = new QWidget;
@@ -54,7 +56,50 @@ QWidget* makeToolRow(MeasurementModel& m) {
 
 }  // namespace
 
-QDockWidget* makeMeasurementDock(MeasurementModel& m, VolumeDocument& doc) {
+namespace {
+
+// The annotations' list and its Delete button.
+QWidget* makeAnnotationList(AnnotationModel& a) {
+  auto* box = new QWidget;
+  auto* layout = new QVBoxLayout(box);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(new QLabel("Annotations"));
+  auto* list = new QListWidget;
+  list->setObjectName("annotationList");
+  list->setToolTip("Text and arrows of the slice views; select one to highlight it");
+  auto* remove = new QPushButton("Delete annotation");
+  remove->setObjectName("annotationDelete");
+  remove->setToolTip(
+      "Remove the selected annotation (Del in a slice view; Edit > Undo brings it back)");
+  layout->addWidget(list);
+  layout->addWidget(remove);
+  auto refresh = [list, remove, &a] {
+    QSignalBlocker block(list);
+    list->clear();
+    for (const Annotation& item : a.items()) {
+      const QString text = QString::fromStdString(item.text);
+      auto* row = new QListWidgetItem(
+          item.isArrow() ? (text.isEmpty() ? QString("arrow") : "arrow  " + text) : "text  " + text,
+          list);
+      row->setData(Qt::UserRole, item.id);
+      if (item.id == a.selected()) list->setCurrentItem(row);
+    }
+    remove->setEnabled(a.selected() != 0);
+  };
+  refresh();
+  onModelChange<>(box, a.changed, refresh);
+  QObject::connect(list, &QListWidget::currentItemChanged, box, [&a](QListWidgetItem* item) {
+    if (item) a.select(item->data(Qt::UserRole).toInt());
+  });
+  QObject::connect(remove, &QPushButton::clicked, box, [&a] {
+    if (a.selected()) a.remove(a.selected());
+  });
+  return box;
+}
+
+}  // namespace
+
+QDockWidget* makeMeasurementDock(MeasurementModel& m, AnnotationModel& a, VolumeDocument& doc) {
   auto* dock = new QDockWidget("Measurements");
   dock->setObjectName("measurementDock");
   auto* body = new QWidget;
@@ -75,6 +120,7 @@ QDockWidget* makeMeasurementDock(MeasurementModel& m, VolumeDocument& doc) {
   layout->addWidget(remove);
   layout->addWidget(exports);
   layout->addWidget(hint);
+  layout->addWidget(makeAnnotationList(a));
   dock->setWidget(body);
 
   auto refresh = [list, exports, remove, &m, &doc] {

@@ -140,12 +140,13 @@ void ReadingActions::buildMenu() {
   bind("page-forward", menu->addAction("Page &forward", this, [this] { page(1); }));
   bind("page-back", menu->addAction("Page &back", this, [this] { page(-1); }));
   menu->addSeparator();
-  const std::pair<const char*, MeasureTool> tools[] = {{"tool-probe", MeasureTool::None},
-                                                       {"tool-distance", MeasureTool::Distance},
-                                                       {"tool-angle", MeasureTool::Angle},
-                                                       {"tool-roi", MeasureTool::Ellipse}};
-  const char* toolTitles[] = {"P&robe (pointer)", "&Distance", "&Angle", "R&OI (ellipse)"};
-  for (size_t i = 0; i < 4; ++i) {
+  const std::pair<const char*, MeasureTool> tools[] = {
+      {"tool-probe", MeasureTool::None},  {"tool-distance", MeasureTool::Distance},
+      {"tool-angle", MeasureTool::Angle}, {"tool-roi", MeasureTool::Ellipse},
+      {"tool-text", MeasureTool::Text},   {"tool-arrow", MeasureTool::Arrow}};
+  const char* toolTitles[] = {"P&robe (pointer)", "&Distance",        "&Angle",
+                              "R&OI (ellipse)",   "Te&xt annotation", "Arro&w annotation"};
+  for (size_t i = 0; i < std::size(tools); ++i) {
     const MeasureTool t = tools[i].second;
     bind(tools[i].first,
          menu->addAction(toolTitles[i], this, [this, t] { models_.measurements.setTool(t); }));

@@ -135,8 +135,10 @@ bool ResultsActions::saveReport(const QString& path) {
   const auto v = models_.document.volume();
   if (!v || !mayWrite(path, "measurement report")) return false;
   try {
-    const WrittenReport r = writeMeasurementReport(path.toStdString(), *v,
-                                                   reportMeasurements(*v, models_.measurements));
+    MeasurementReportInfo info;
+    info.comments = annotationReportTexts(models_.annotations);  // as TEXT items
+    const WrittenReport r = writeMeasurementReport(
+        path.toStdString(), *v, reportMeasurements(*v, models_.measurements), info);
     remember(path);
     QString text = "Measurement report saved: " + path;
     for (const auto& n : r.notes) text += "  ·  " + QString::fromStdString(n);

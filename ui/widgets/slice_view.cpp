@@ -1,13 +1,16 @@
 #include "slice_view.h"
 
 #include <cmath>
+#include <functional>
 
 #include <QGuiApplication>
+#include <QLineEdit>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QStyleHints>
 #include <QWheelEvent>
 
+#include "annotation_overlay.h"
 #include "gui_post.h"
 #include "measure_overlay.h"
 #include "qt_image.h"
@@ -17,12 +20,30 @@
 #include "slice_overlay.h"
 #include "status_text.h"
 #include "study_text.h"
+#include "voxray/engine/measure.h"
 
 namespace voxray::ui {
 
 namespace {
 constexpr double kEdgePickPixels = 6.0;
-}
+// Shorter drags are clicks: an arrow needs a direction a reader can see.
+constexpr double kMinArrowPixels = 4.0;
+
+// The Text tool's line edit: Esc drops the text (a plain QLineEdit ignores it).
+class AnnotationTextEdit : public QLineEdit {
+ public:
+  using QLineEdit::QLineEdit;
+  std::function<void()> onEscape;
+
+ protected:
+  void keyPressEvent(QKeyEvent* e) override {
+    if (e->key() == Qt::Key_Escape && onEscape)
+      onEscape();
+    else
+      QLineEdit::keyPressEvent(e);
+  }
+};
+}  // namespace
 
 SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crosshair,
                      WindowLevelModel& wl, RenderStateModel& state, QWidget* parent)
@@ -62,6 +83,7 @@ SliceView::SliceView(Orientation o, VolumeDocument& doc, CrosshairModel& crossha
 SliceView::~SliceView() {
   if (fusion_) fusion_->changed.disconnect(fusionConnection_);
   if (measurements_) measurements_->changed.disconnect(measureConnection_);
+  if (annotationModel_) annotationModel_->changed.disconnect(annotationConnection_);
   if (segmentation_) segmentation_->changed.disconnect(segConnection_);
   if (segmentTools_) segmentTools_->changed.disconnect(toolConnection_);
   doc_.changed.disconnect(docConnection_);
@@ -85,6 +107,13 @@ void SliceView::setMeasurements(MeasurementModel* m) {
   if (measurements_) measurements_->changed.disconnect(measureConnection_);
   measurements_ = m;
   if (m) measureConnection_ = m->changed.connect([this] { update(); });
+  update();
+}
+
+void SliceView::setAnnotationModel(AnnotationModel* a) {
+  if (annotationModel_) annotationModel_->changed.disconnect(annotationConnection_);
+  annotationModel_ = a;
+  if (a) annotationConnection_ = a->changed.connect([this] { update(); });
   update();
 }
 
@@ -243,6 +272,57 @@ bool SliceView::measurable() const {
          crosshair_.slab(orientation_).thicknessMm == 0;
 }
 
+QPointF SliceView::mmToWidget(const glm::dvec3& patientMm) const {
+  return voxelToWidget(patientToVoxel(*doc_.volume(), patientMm));
+}
+
+glm::dvec3 SliceView::widgetToMm(QPointF widget) const {
+  return voxelToPatient(*doc_.volume(), widgetToVoxel(widget));
+}
+
+bool SliceView::pressAnnotation(QPointF at) {
+  if (!annotationModel_ || !measurements_ || !measurable()) return false;
+  const MeasureTool tool = measurements_->tool();
+  if (tool == MeasureTool::Arrow) {
+    arrowHeadMm_ = widgetToMm(at);
+    arrowTail_ = at;
+    drag_ = Drag::Arrow;
+    return true;
+  }
+  if (tool != MeasureTool::Text) return false;
+  if (textEdit_) textEdit_->deleteLater();  // a second click elsewhere: start over there
+  auto* edit = new AnnotationTextEdit(this);
+  edit->setObjectName("annotationTextEdit");
+  edit->setPlaceholderText("Text, Return to add");
+  edit->setToolTip("Return adds the text here; Esc or an empty text adds nothing");
+  edit->move(at.toPoint());
+  edit->resize(std::min(240, std::max(80, width() - int(at.x()))), edit->sizeHint().height());
+  edit->show();
+  edit->setFocus();
+  textEdit_ = edit;
+  // Both Return and focus leaving end the edit; the QPointer keeps it to one add.
+  QObject::connect(edit, &QLineEdit::editingFinished, this, [this, edit, at] {
+    if (textEdit_ != edit) return;
+    textEdit_ = nullptr;
+    edit->deleteLater();
+    finishText(at, edit->text());
+  });
+  edit->onEscape = [this, edit] {
+    if (textEdit_ != edit) return;
+    textEdit_ = nullptr;
+    edit->deleteLater();
+    setFocus();
+  };
+  return true;
+}
+
+void SliceView::finishText(QPointF at, const QString& text) {
+  const QString t = text.trimmed();
+  if (t.isEmpty() || !annotationModel_ || doc_.empty() || !measurable()) return;
+  annotationModel_->addText(t.toStdString(), widgetToMm(at), sliceNormal(*doc_.volume(), axes_));
+  setFocus();
+}
+
 bool SliceView::pressMeasure(QPointF at) {
   if (!measurements_ || !measurable()) return false;
   const int slice = crosshair_.sliceOf(axes_);
@@ -274,7 +354,8 @@ bool SliceView::pressMeasure(QPointF at) {
   }
   angleToFinish_ = 0;
   const MeasureTool tool = measurements_->tool();
-  if (tool == MeasureTool::None) return false;
+  if (tool == MeasureTool::None || tool == MeasureTool::Text || tool == MeasureTool::Arrow)
+    return false;
   const MeasureKind kind = tool == MeasureTool::Distance ? MeasureKind::Distance
                            : tool == MeasureTool::Angle  ? MeasureKind::Angle
                            : tool == MeasureTool::Rect   ? MeasureKind::Rect
@@ -476,6 +557,12 @@ void SliceView::paintOverlay(QPainter& p) {
   if (measurements_ && measurable() && (!exporting_ || measurements_->showInExports()))
     drawSliceMeasurements(p, rect(), v, *measurements_, axes_, o.slice,
                           [this](const glm::dvec3& voxel) { return voxelToWidget(voxel); });
+  // Annotations follow the measurements' choice for exports: both are what the reader marked.
+  const bool exportShows = !exporting_ || (measurements_ && measurements_->showInExports());
+  if (annotationModel_ && measurable() && exportShows)
+    drawSliceAnnotations(p, rect(), v, *annotationModel_, axes_, o.slice,
+                         [this](const glm::dvec3& mm) { return mmToWidget(mm); });
+  if (drag_ == Drag::Arrow) drawArrow(p, mmToWidget(arrowHeadMm_), arrowTail_, kAnnotationColor);
 }
 
 void SliceView::mousePressEvent(QMouseEvent* e) {
@@ -485,6 +572,8 @@ void SliceView::mousePressEvent(QMouseEvent* e) {
   if (doc_.empty()) return;
   const bool plain = !(e->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
   if (e->button() == Qt::LeftButton && plain && pressSegmentTool(e->position())) {
+    return;
+  } else if (e->button() == Qt::LeftButton && plain && pressAnnotation(e->position())) {
     return;
   } else if (e->button() == Qt::LeftButton && pressMeasure(e->position())) {
     drag_ = Drag::Handle;
@@ -552,6 +641,9 @@ void SliceView::mouseMoveEvent(QMouseEvent* e) {
           axes_, std::atan2(a.x() * b.y() - a.y() * b.x(), a.x() * b.x() + a.y() * b.y()));
       break;
     }
+    case Drag::Arrow:
+      arrowTail_ = e->position();
+      break;
     case Drag::Brush:
       try {
         brushAt(e->position());
@@ -565,7 +657,13 @@ void SliceView::mouseMoveEvent(QMouseEvent* e) {
   update();
 }
 
-void SliceView::mouseReleaseEvent(QMouseEvent*) {
+void SliceView::mouseReleaseEvent(QMouseEvent* e) {
+  if (drag_ == Drag::Arrow && !doc_.empty()) {
+    // A click without a drag is no arrow: its direction would be nothing.
+    if (QLineF(e->position(), mmToWidget(arrowHeadMm_)).length() >= kMinArrowPixels)
+      annotationModel_->addArrow(arrowHeadMm_, widgetToMm(e->position()),
+                                 sliceNormal(*doc_.volume(), axes_));
+  }
   if (drag_ == Drag::ClipEdge) emit clipDragEnded();
   if (drag_ == Drag::Brush) segmentation_->endStroke();
   drag_ = Drag::None;
@@ -613,7 +711,9 @@ void SliceView::keyPressEvent(QKeyEvent* e) {
       break;
     case Qt::Key_Delete:
     case Qt::Key_Backspace:
-      if (measurements_ && measurements_->selected())
+      if (annotationModel_ && annotationModel_->selected())
+        annotationModel_->remove(annotationModel_->selected());
+      else if (measurements_ && measurements_->selected())
         measurements_->remove(measurements_->selected());
       break;
     case Qt::Key_Escape:

@@ -7,12 +7,17 @@
 // (MeasurementModel::tool) a left drag draws a distance, ellipse or rectangle, an angle takes
 // a drag for its first arm and a click (or drag) for its end; a press on a handle drags that
 // point in any mode; Del removes the selected measurement. Measurements live in the
-// acquisition planes: a turned or slab view neither shows nor takes them.
+// acquisition planes: a turned or slab view neither shows nor takes them. With the Text tool a
+// click opens a line edit there (Return adds the text, Esc drops it); with the Arrow tool a
+// drag draws an arrow, its head at the press and its tail at the release (annotation_model.h);
+// Del removes the selected annotation.
 #include <optional>
 
 #include <QImage>
+#include <QPointer>
 #include <QWidget>
 
+#include "annotation_model.h"
 #include "crosshair_model.h"
 #include "fusion.h"
 #include "measurement_model.h"
@@ -56,6 +61,11 @@ class SliceView : public QWidget {
   void setStudyTextHidden(bool hidden);
   // The measurements to draw and edit (none: the view measures nothing).
   void setMeasurements(MeasurementModel* m);
+  // The text and arrow annotations to draw and take (none: the view annotates nothing). They
+  // follow the measurements' tool and, in exports, their "show in exports" choice.
+  void setAnnotationModel(AnnotationModel* a);
+  // The line edit a Text click opened, while it is open (tests type into it).
+  QWidget* annotationEditor() const { return textEdit_; }
   // While exporting, measurements show only when the user asked for them in exports.
   void setExporting(bool on);
   // The segmentation to draw (each visible segment filled and outlined, on every plane: the
@@ -99,7 +109,7 @@ class SliceView : public QWidget {
   void leaveEvent(QEvent*) override;
 
  private:
-  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan, Handle, Rotate, Brush };
+  enum class Drag { None, Crosshair, ClipEdge, WindowLevel, Pan, Handle, Rotate, Brush, Arrow };
   void rebuild();  // new volume, slice or window: redraw the slice image
   void slabArrived(Image image);
   QRectF sliceRect() const;
@@ -109,7 +119,11 @@ class SliceView : public QWidget {
   QPointF voxelToWidget(const glm::dvec3& voxel) const;
   glm::dvec3 widgetToVoxel(QPointF widget) const;  // on this view's slice, clamped into the box
   bool pressMeasure(QPointF widget);
-  bool pressSegmentTool(QPointF widget);  // true: a paint, erase or seed tool took the press
+  bool pressAnnotation(QPointF widget);  // true: the Text or Arrow tool took the press
+  void finishText(QPointF at, const QString& text);
+  QPointF mmToWidget(const glm::dvec3& patientMm) const;
+  glm::dvec3 widgetToMm(QPointF widget) const;  // on this view's slice, in the volume's box
+  bool pressSegmentTool(QPointF widget);        // true: a paint, erase or seed tool took the press
   void brushAt(QPointF widget);
   glm::dvec3 toolVoxel(QPointF widget) const;  // the voxel position under the cursor
   void refreshFusion(bool force = false);      // fusionOverlay_ for shown_'s plane
@@ -162,6 +176,11 @@ class SliceView : public QWidget {
   int dragId_ = 0, dragIndex_ = 0;
   int angleToFinish_ = 0;  // an angle with its first arm drawn, waiting for its end point
   int measureConnection_ = 0;
+  AnnotationModel* annotationModel_ = nullptr;
+  int annotationConnection_ = 0;
+  glm::dvec3 arrowHeadMm_{0.0};  // while an arrow is dragged: its head, and the cursor
+  QPointF arrowTail_;
+  QPointer<QWidget> textEdit_;
   SegmentationModel* segmentation_ = nullptr;
   SegmentToolModel* segmentTools_ = nullptr;
   int segConnection_ = 0, toolConnection_ = 0;

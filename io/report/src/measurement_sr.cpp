@@ -211,6 +211,10 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
                        " has no value (an angle with a zero-length arm, or an ROI "
                        "without a pixel): leave it out of the report");
   }
+  for (const std::string& comment : info.comments)
+    check(report.addQualitativeEvaluation(DSRCodedEntryValue("121106", "DCM", "Comment"),
+                                          OFString(comment.c_str())),
+          "comment");
   if (!report.isValid())
     throw outputError("The measurement report is incomplete (TID 1500); please report this");
 

@@ -36,6 +36,10 @@ int measurementSlice(const ReportMeasurement& m);
 
 struct MeasurementReportInfo {
   std::string seriesDescription = "Voxray measurements";
+  // Free text for the whole report (the workstation's text and arrow annotations): each one a
+  // TEXT content item, TID 1500's qualitative evaluation in text form (row 14), named
+  // (121106, DCM, "Comment").
+  std::vector<std::string> comments;
 };
 
 struct WrittenReport {
