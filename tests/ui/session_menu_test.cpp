@@ -18,16 +18,6 @@ const std::map<std::string, std::string> kCtHeadFlags = {
     {"raw-dims", "256,256"},  {"raw-type", "i16"},        {"raw-endian", "big"},
     {"raw-spacing", "1,1,2"}, {"raw-rescale", "1,-1024"}, {"raw-axes", "LPI"}};
 
-// The frame on screen once frames stop arriving: requests made while a frame renders are
-// answered after it, so the first frame after a change may show an earlier state.
-QImage settledFrame(MainWindow& window) {
-  QSignalSpy frames(&window.scheduler(), &RenderScheduler::frameReady);
-  while (frames.wait(1500)) {
-  }
-  QCoreApplication::processEvents();
-  return window.volumeView().lastFrame();
-}
-
 QByteArray contents(const QString& path) {
   QFile f(path);
   return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
@@ -63,7 +53,7 @@ class SessionMenuTest : public QObject {
     planes->click();
     QVERIFY(!models.render.overlays().clipHandles && models.render.overlays().planes);
     window.grid().setMaximised(0);  // the 3D view alone
-    const QImage saved = settledFrame(window);
+    const QImage saved = test::settledFrame(window);
     QVERIFY(!saved.isNull());
     const std::string savedParams = toText(models.render.params());
 
@@ -134,7 +124,7 @@ class SessionMenuTest : public QObject {
     QVERIFY(!models.render.overlays().clipHandles && models.render.overlays().planes);
     QCOMPARE(QString::fromStdString(models.source.path), QString::fromStdString(kCtHead));
     // The same state on the same device: the same frame (tolerance 0).
-    QCOMPARE(test::differingPixels(settledFrame(window), saved), 0);
+    QCOMPARE(test::differingPixels(test::settledFrame(window), saved), 0);
   }
 };
 

@@ -3,7 +3,6 @@
 // under the mouse, a drag moves it by the HU and HU/mm its pixels are worth, the 3D view
 // renders what the editor holds (RenderParams::tf2d), and a saved JSON keeps it.
 #include <QAction>
-#include <QDeadlineTimer>
 #include <QPainter>
 #include <QTemporaryDir>
 
@@ -15,27 +14,6 @@ using namespace voxray;
 using namespace voxray::ui;
 
 namespace {
-
-QImage settledFrame(MainWindow& window) {
-  QSignalSpy frames(&window.scheduler(), &RenderScheduler::frameReady);
-  while (frames.wait(1500)) {
-  }
-  QCoreApplication::processEvents();
-  return window.volumeView().lastFrame();
-}
-
-// The settled frame after a change that alters the image: first waits (up to 60 s) for a frame
-// other than BEFORE, since a new kernel variant (the 2D table's) is compiled before its first
-// frame, which on a loaded 2-core machine takes longer than settledFrame's quiet interval.
-QImage changedFrame(MainWindow& window, const QImage& before) {
-  QSignalSpy frames(&window.scheduler(), &RenderScheduler::frameReady);
-  QDeadlineTimer deadline(60000);
-  while (window.volumeView().lastFrame() == before && !deadline.hasExpired()) {
-    frames.wait(1000);
-    QCoreApplication::processEvents();
-  }
-  return settledFrame(window);
-}
 
 TfEditorDialog* openEditorOn2d(MainWindow& window) {
   auto* action = window.findChild<QAction*>("viewTfEditor");
@@ -79,7 +57,7 @@ class Tf2dEditorTest : public QObject {
     MainWindow& window = *fixture_.window;
     AppModels& models = *fixture_.models;
     models.render.applyPreset("CT-Bone");
-    const QImage bone = settledFrame(window);
+    const QImage bone = test::settledFrame(window);
     TfEditorDialog* editor = openEditorOn2d(window);
     QVERIFY(editor);
     QTRY_VERIFY_WITH_TIMEOUT(editor->tf2dHistogramReady(), 20000);
@@ -108,7 +86,7 @@ class Tf2dEditorTest : public QObject {
     // What the 3D view renders carries it, and the frame is the 2D function's, not CT-Bone's.
     QCOMPARE(models.render.params().tf2d, tf);
     QCOMPARE(window.scheduler().fullParams().tf2d, tf);
-    const QImage with2d = changedFrame(window, bone);
+    const QImage with2d = test::changedFrame(window, bone);
     QVERIFY(test::differingPixels(bone, with2d) > 100);
 
     // A drag of the body by (+40, -20) pixels moves the HU range by 40 pixels' worth of HU
@@ -168,7 +146,7 @@ class Tf2dEditorTest : public QObject {
     QVERIFY(del && del->isEnabled());
     del->trigger();
     QVERIFY(models.render.params().tf2d.empty());
-    QCOMPARE(test::differingPixels(bone, settledFrame(window)), 0);
+    QCOMPARE(test::differingPixels(bone, test::settledFrame(window)), 0);
 
     // A triangle from the menu: its apex at |gradient| 0 under the mouse's HU; Delete on the
     // selected one removes it.
@@ -218,7 +196,7 @@ class Tf2dEditorTest : public QObject {
     editor->model().setTf2dExtent(1, -950.0, 50.0, 0.3 * top, top);
     editor->model().setTf2dColor(1, {0.85, 0.55, 0.45});
     editor->model().setTf2dOpacity(1, 0.08);
-    const QImage frame = settledFrame(window);
+    const QImage frame = test::settledFrame(window);
     QCoreApplication::processEvents();
     const QImage panel = editor->grab().toImage();
     const QImage shown = frame.scaledToHeight(panel.height(), Qt::SmoothTransformation);

@@ -14,14 +14,6 @@ using namespace voxray::ui;
 
 namespace {
 
-QImage settledFrame(MainWindow& window) {
-  QSignalSpy frames(&window.scheduler(), &RenderScheduler::frameReady);
-  while (frames.wait(1500)) {
-  }
-  QCoreApplication::processEvents();
-  return window.volumeView().lastFrame();
-}
-
 TfEditorDialog* openEditor(MainWindow& window) {
   auto* action = window.findChild<QAction*>("viewTfEditor");
   if (!action) return nullptr;
@@ -43,7 +35,7 @@ class TfEditorTest : public QObject {
     MainWindow& window = *fixture_.window;
     AppModels& models = *fixture_.models;
     models.render.applyPreset("CT-Bone");
-    const QImage bone = settledFrame(window);
+    const QImage bone = test::settledFrame(window);
     TfEditorDialog* editor = openEditor(window);
     QVERIFY(editor);
     QVERIFY(editor->isVisible());
@@ -70,7 +62,7 @@ class TfEditorTest : public QObject {
     // half opaque, so the frame changes.
     QCOMPARE(models.render.params().transferFunction, renderTable(vp));
     QVERIFY(models.render.params().preset.empty());
-    const QImage withPoint = settledFrame(window);
+    const QImage withPoint = test::settledFrame(window);
     QVERIFY(test::differingPixels(bone, withPoint) > 100);
 
     // A drag moves the point: to -300 HU at opacity 0.25, in one undo step. (Past CT-Bone's
@@ -96,7 +88,7 @@ class TfEditorTest : public QObject {
     QTest::keyClick(&curve, Qt::Key_Delete);
     QCOMPARE(editor->model().property().opacity.size(), before);
     QCOMPARE(models.render.params().transferFunction, findPreset("CT-Bone").tf.points);
-    QCOMPARE(test::differingPixels(bone, settledFrame(window)), 0);
+    QCOMPARE(test::differingPixels(bone, test::settledFrame(window)), 0);
   }
 
   void histogramCountsTheOpenVolume() {

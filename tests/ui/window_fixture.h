@@ -3,6 +3,7 @@
 // through PoCL, and waiting for its frames.
 #include <memory>
 
+#include <QDeadlineTimer>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -26,6 +27,29 @@ inline QImage waitFullFrame(MainWindow& window) {
     spy.wait(100);
   }
   qFatal("no full-quality frame within 60 s");
+}
+
+// The frame on screen once frames stop arriving (none for 1.5 s): requests made while a frame
+// renders are answered after it, so the first frame after a change may show an earlier state.
+inline QImage settledFrame(MainWindow& window) {
+  QSignalSpy frames(&window.scheduler(), &RenderScheduler::frameReady);
+  while (frames.wait(1500)) {
+  }
+  QCoreApplication::processEvents();
+  return window.volumeView().lastFrame();
+}
+
+// The settled frame after a change that alters the image: first waits (up to 60 s) for a frame
+// other than BEFORE, since a new kernel variant (e.g. the 2D table's) is compiled before its
+// first frame, which on a loaded 2-core machine takes longer than settledFrame's quiet interval.
+inline QImage changedFrame(MainWindow& window, const QImage& before) {
+  QSignalSpy frames(&window.scheduler(), &RenderScheduler::frameReady);
+  QDeadlineTimer deadline(60000);
+  while (window.volumeView().lastFrame() == before && !deadline.hasExpired()) {
+    frames.wait(1000);
+    QCoreApplication::processEvents();
+  }
+  return settledFrame(window);
 }
 
 // The models and a shown window with the phantom's first full frame on screen.
