@@ -132,6 +132,7 @@ class DesktopTest : public QObject {
   void aboutListsEveryLibraryAndTheDataLicence() {
     const QString about = aboutHtml("cpu");
     for (const char* expected :
+         // NOLINTNEXTLINE(bugprone-suspicious-missing-comma): one row, split over two lines
          {"<td>FFmpeg (libavcodec, libavformat, libavutil, libswscale)</td><td>MP4 export</td>"
           "<td>LGPL-2.1-or-later; as Debian builds it, with GPL parts: GPL-2.0-or-later</td>",
           "<td>x264</td><td>H.264 encoding of MP4 movies</td><td>GPL-2.0-or-later</td>",
