@@ -16,6 +16,7 @@
 #include "bench_run.h"
 #include "bench_seed.h"
 #include "bench_stall.h"
+#include "bench_tf_drag.h"
 #include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
@@ -45,6 +46,7 @@ struct BenchOptions {
   int stallRepeats = 0;  // --stall: replays of the end of a drag
   int dragFrames = 0;    // --drag: frames of a replayed drag
   double dragFps = Quality{}.dragFps;
+  int tfDragPairs = 0;  // --tf-drag: still/moved-table frame pairs
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
@@ -87,11 +89,11 @@ RaycasterOptions raycasterOptions(const BenchOptions& o) {
 
 // --split / --devices: each size (and gradient) over the orbit on several devices at once.
 int benchSplit(const BenchOptions& o) {
-  if (o.seedTable || o.stallRepeats > 0 || o.dragFrames > 0 || !o.labels.raw.empty() ||
-      !o.labels.file.empty() || !o.overlay.path.empty())
+  if (o.seedTable || o.stallRepeats > 0 || o.dragFrames > 0 || o.tfDragPairs > 0 ||
+      !o.labels.raw.empty() || !o.labels.file.empty() || !o.overlay.path.empty())
     throw inputError(
         "--split/--devices bench plain frames: leave out --seed-table, --stall, --drag, "
-        "--labels-raw and --overlay");
+        "--tf-drag, --labels-raw and --overlay");
   Volume v = o.input.load();
   std::string name =
       o.input.input.empty() ? "phantom" : std::filesystem::path(o.input.input).filename().string();
@@ -147,6 +149,10 @@ Run addBenchCommand(CLI::App& app) {
                   "after each case, replay a drag of this many frames as the 3D view renders "
                   "it (the drag preset, sized and stepped by its frame-rate controller); "
                   "prints the settings it chose and the frame times after its first change")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--tf-drag", o->tfDragPairs,
+                  "pairs of frames at a still camera, the table unchanged then moved 1 HU: the "
+                  "transfer-function edit's update cost (issue 35)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--drag-fps", o->dragFps, "the drag replay's target frame rate (the 3D view's)")
       ->check(CLI::Range(kDragFpsMin, kDragFpsMax));
@@ -252,6 +258,7 @@ Run addBenchCommand(CLI::App& app) {
               drag.gradient = p.gradient;
               printStallReplay(rc, drag, p, o->run.orbit, o->stallRepeats);
             }
+            if (o->tfDragPairs > 0) printTfDrag(replayTfDrag(rc, p, o->tfDragPairs));
             if (o->dragFrames > 0) {
               RenderParams b = base;
               b.gradient = p.gradient;
