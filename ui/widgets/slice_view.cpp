@@ -122,6 +122,18 @@ void SliceView::setExporting(bool on) {
   update();
 }
 
+QImage SliceView::cleanImage(bool layers) const {
+  if (image_.isNull()) return {};
+  QImage out = image_.convertToFormat(QImage::Format_RGB32);
+  if (layers) {
+    // The overlays have the plane's size (the slice image's): pixel onto pixel.
+    QPainter p(&out);
+    for (const QImage* layer : {&fusionOverlay_, &segmentOverlay_})
+      if (!layer->isNull()) p.drawImage(out.rect(), *layer);
+  }
+  return out;
+}
+
 void SliceView::setSegmentation(SegmentationModel* model, SegmentToolModel* tools) {
   if (segmentation_) segmentation_->changed.disconnect(segConnection_);
   if (segmentTools_) segmentTools_->changed.disconnect(toolConnection_);
