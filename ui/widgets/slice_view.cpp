@@ -583,10 +583,9 @@ void SliceView::mousePressEvent(QMouseEvent* e) {
   const std::optional<ClickChain> chain = std::exchange(clickChain_, std::nullopt);
   if (doc_.empty()) return;
   const bool plain = !(e->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
-  if (e->button() == Qt::LeftButton && plain && pressSegmentTool(e->position())) {
-    return;
-  } else if (e->button() == Qt::LeftButton && plain && pressAnnotation(e->position())) {
-    return;
+  if (e->button() == Qt::LeftButton && plain &&
+      (pressSegmentTool(e->position()) || pressAnnotation(e->position()))) {
+    return;  // a segment tool, else the annotation tool, took the press
   } else if (e->button() == Qt::LeftButton && pressMeasure(e->position())) {
     drag_ = Drag::Handle;
   } else if (e->button() == Qt::LeftButton) {
