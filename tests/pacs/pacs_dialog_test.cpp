@@ -235,6 +235,49 @@ class PacsDialogTest : public QObject {
     QVERIFY(!std::filesystem::exists(file));
   }
 
+  // Delete asks first: No keeps the node in the file, Yes removes it and shows the next one;
+  // selecting a node shows its fields as stored.
+  void deleteAsksFirstAndRemovesTheNode() {
+    const std::string file = tempFolder("node-editor-delete") + "/pacs-nodes.json";
+    {
+      PacsNodeFile nodes(file);
+      PacsNodeForm a;
+      a.name = "a";
+      a.calledAe = "AE_A";
+      a.host = "pacs-a.example";
+      a.port = "104";
+      nodes.put(a);
+      a.name = "b";
+      a.calledAe = "AE_B";
+      a.port = "11112";
+      nodes.put(a);
+    }
+    ui::PacsNodeDialog editor(nullptr, file);
+    QCOMPARE(editor.list()->count(), 2);
+    editor.list()->setCurrentRow(1);
+    QCOMPARE(editor.field("name")->text(), QString("b"));
+    QCOMPARE(editor.field("calledAe")->text(), QString("AE_B"));
+    QCOMPARE(editor.field("port")->text(), QString("11112"));
+    QStringList asked;
+    bool yes = false;
+    editor.setConfirm([&](const QString& q) {
+      asked << q;
+      return yes;
+    });
+    auto* remove = editor.findChild<QPushButton*>("pacsNodeDelete");
+    QTest::mouseClick(remove, Qt::LeftButton);
+    QCOMPARE(asked, QStringList{"Delete the PACS node b?"});
+    QCOMPARE(loadPacsNodes(file).size(), size_t(2));
+    yes = true;
+    QTest::mouseClick(remove, Qt::LeftButton);
+    const auto left = loadPacsNodes(file);
+    QCOMPARE(left.size(), size_t(1));
+    QCOMPARE(left[0].name, std::string("a"));
+    QCOMPARE(editor.list()->count(), 1);
+    QCOMPARE(editor.field("name")->text(), QString("a"));
+    QCOMPARE(editor.message()->text(), QString("Deleted b"));
+  }
+
   void cleanupTestCase() { server_.reset(); }
 
  private:
