@@ -326,6 +326,16 @@ class CompareTest : public QObject {
     QVERIFY2(changed > before.width() * before.height() / 20,
              qPrintable(QString("%1 pixels changed").arg(changed)));
     QCOMPARE(c->prior().render.params().preset, m.render.params().preset);  // the same look
+    // Back to the four views: the prior's camera rests while the study turns (no frames for a
+    // hidden view); compare again: it follows from the study's camera at once.
+    const double priorAzimuth = cb.azimuthDeg;
+    fixture_.window->setCompareMode(false);
+    m.render.update(kCamera, [](RenderParams& p) { p.camera.azimuthDeg += 15.0; });
+    QCOMPARE(c->prior().render.params().camera.azimuthDeg, priorAzimuth);
+    fixture_.window->setCompareMode(true);
+    QVERIFY(std::abs(std::remainder(c->prior().render.params().camera.azimuthDeg -
+                                        (m.render.params().camera.azimuthDeg - 7.0),
+                                    360.0)) < 1e-9);
   }
 
   void movePriorDragsMoveByThePixelSpacingAndTurnByTheSweptAngle() {

@@ -76,7 +76,9 @@ CompareView::CompareView(AppModels& study, RenderScheduler& studyScheduler, QWid
   lookBox_->setToolTip(
       "The prior's 3D view takes the study's transfer function, preset, lighting and quality "
       "(the camera follows while navigation is linked)");
-  connect(lookBox_, &QCheckBox::toggled, this, [this](bool on) { renderLink_->setLookLinked(on); });
+  connect(lookBox_, &QCheckBox::toggled, this, [this](bool on) {
+    if (renderLink_) renderLink_->setLookLinked(on);
+  });
   auto button = [this](const QString& text, const QString& name, const QString& tip, auto slot) {
     auto* b = new QPushButton(text);
     b->setObjectName(name);
@@ -137,8 +139,22 @@ CompareView::CompareView(AppModels& study, RenderScheduler& studyScheduler, QWid
   modelConnection_ = comparison_.changed.connect([this] { refreshStatus(); });
   link_ = std::make_unique<ComparisonLink>(comparison_, study_.crosshair, prior_->crosshair,
                                            &study_.windowLevel, &prior_->windowLevel);
-  renderLink_ = std::make_unique<RenderLink>(comparison_, study_.render, prior_->render);
   refreshGeometry();
+}
+
+void CompareView::showEvent(QShowEvent* e) {
+  QWidget::showEvent(e);
+  if (renderLink_) return;
+  renderLink_ = std::make_unique<RenderLink>(comparison_, study_.render, prior_->render);
+  renderLink_->setLookLinked(lookBox_->isChecked());
+  renderLink_->syncMovingToFixed();
+}
+
+void CompareView::hideEvent(QHideEvent* e) {
+  // The four views are back: the prior's camera stops following, so its render thread rests
+  // while the study is turned; showing compare again links it from the study's camera.
+  renderLink_.reset();
+  QWidget::hideEvent(e);
 }
 
 CompareView::~CompareView() {
@@ -169,7 +185,7 @@ void CompareView::setPrior(std::shared_ptr<const Volume> prior, const QString& n
   prior_->crosshair.setGeometry(prior->dims, prior->spacingMm, prior->direction);
   const InitialWindow w = initialWindow(*prior);
   prior_->windowLevel.reset(w.wl, w.source);
-  renderLink_->setLookLinked(lookBox_->isChecked());  // its first frame in the study's look
+  if (renderLink_) renderLink_->setLookLinked(lookBox_->isChecked());  // the study's look
   prior_->document.set(std::move(prior), name.toStdString());
   comparison_.clearPairs();
   comparison_.clearAlignment();

@@ -53,7 +53,8 @@ class CompareView : public QWidget {
   VolumeView& fixed3dView() { return *fixed3d_; }
   VolumeView& moving3dView() { return *moving3d_; }
   RenderScheduler& priorScheduler() { return *priorScheduler_; }
-  RenderLink& renderLink() { return *renderLink_; }
+  // The 3D views' link: while the view is shown (none while hidden).
+  RenderLink* renderLink() { return renderLink_.get(); }
   ComparisonModel& comparison() { return comparison_; }
   PriorColumn& prior() { return *prior_; }
   QString statusText() const;  // the link and the last alignment, as the bar shows them
@@ -81,6 +82,8 @@ class CompareView : public QWidget {
  protected:
   void keyPressEvent(QKeyEvent* e) override;
   bool eventFilter(QObject* watched, QEvent* e) override;
+  void showEvent(QShowEvent* e) override;
+  void hideEvent(QHideEvent* e) override;
 
  private:
   void refreshGeometry();  // either volume changed
