@@ -46,7 +46,7 @@ void MainWindow::wireFusion() {
   // Another study under the overlay: its Frame of Reference is checked again.
   onModelChange<>(this, models_.document.changed,
                   [this] { models_.fusion.setBase(models_.document.volume().get()); });
-  // The 3D view raycasts the overlay in the same pass (the engine's fused dvr).
+  // The 3D view raycasts the overlay in the same pass (the engine's fused dvr and mip).
   onModelChange<>(this, models_.fusion.changed, [this] {
     const FusionModel& f = models_.fusion;
     if (!f.active()) {

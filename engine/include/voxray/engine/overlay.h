@@ -1,8 +1,9 @@
 #pragma once
 // Fused dvr (issue 36): a second volume (PET on CT, ...) raycast in the same pass as the
 // first, each dvr sample classifying both at one patient point (kernels/classification/
-// overlay.cl). The overlay keeps its own grid: its origin, spacing and LPS direction place
-// it, so it need not share the base's dims or voxels.
+// overlay.cl); in mip its largest value along each ray over the volume's grey. The overlay keeps
+// its own grid: its origin, spacing and LPS direction place it, so it need not share the base's
+// dims or voxels.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -45,6 +46,12 @@ struct OverlayClassifier {
   glm::dmat4 map{1.0};  // overlayVoxelMap
   OverlayClassifier(const Volume& base, const Volume& overlay, const TransferFunction& tf);
   glm::dvec4 at(const glm::dvec3& baseVoxel) const;
+  // The stored value there (trilinear); false outside the overlay's box.
+  bool value(const glm::dvec3& baseVoxel, double& stored) const;
+  // Fused mip (overlay.cl's overlay_mip): the overlay's largest VALUE along a ray over the
+  // volume's mip GREY: the table's colour there with the table's top opacity (at and above
+  // the window's high end: the user's), as the slice views fuse; GREY where it shows nothing.
+  glm::dvec3 overMip(const glm::dvec3& grey, double largest) const;
 };
 
 }  // namespace voxray
