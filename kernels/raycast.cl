@@ -57,7 +57,8 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
         if (px >= P->image.x || py >= P->image.y || pixel_ray(P, px, py, &r, &ow, &dw) <= -2)
           continue;
         __global uchar4* o = &out[py * P->image.x + px];
-        *o = to_rgba8(overlay_mip(ovol, olut, ogeo, &r, convert_float3((*o).xyz) / 255.0f));
+        *o = to_rgba8(
+            overlay_mip(ovol, olut, ocells, ogeo, P, &r, convert_float3((*o).xyz) / 255.0f));
       }
 #endif
   }
@@ -90,7 +91,7 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
     else {
       color = march_mip(VOLUME, P, leap, range, &r, &samples);
 #if OVERLAY
-      color = overlay_mip(ovol, olut, ogeo, &r, color);
+      color = overlay_mip(ovol, olut, ocells, ogeo, P, &r, color);
 #endif
     }
   }

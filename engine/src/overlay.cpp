@@ -111,10 +111,16 @@ glm::dvec4 OverlayClassifier::at(const glm::dvec3& pv) const {
   return value(pv, s) ? lut.lookup(s) : glm::dvec4(0.0);
 }
 
+double overlayMipOpacity(const Lut& lut) {
+  float top = 0.0f;
+  for (const glm::vec4& e : lut.rgba) top = std::max(top, e.a);
+  return std::clamp(double(top), 0.0, 1.0);
+}
+
 glm::dvec3 OverlayClassifier::overMip(const glm::dvec3& grey, double largest) const {
   const glm::dvec4 c = lut.lookup(largest);
-  if (!(c.a > 0.0) || lut.rgba.empty()) return grey;
-  return glm::mix(grey, glm::dvec3(c), std::clamp(double(lut.rgba.back().a), 0.0, 1.0));
+  if (!(c.a > 0.0)) return grey;
+  return glm::mix(grey, glm::dvec3(c), overlayMipOpacity(lut));
 }
 
 std::vector<uint8_t> overlayCells(const Volume& base, const Volume& o, const Lut& lut,

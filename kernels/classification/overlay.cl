@@ -9,7 +9,9 @@
 //         elsewhere its sample is transparent, so it is not taken (overlay_cell)
 //   ogeo  [0 .. 2] rows of the map base voxel -> overlay voxel (xyz linear, w translation),
 //         [3] xyz its dims, w its table's last entry, [4] x the table's first stored value,
-//         y its entries per stored unit
+//         y its entries per stored unit, z 1 when the table is transparent only below its
+//         first visible value (overlay_mip may leave out the cells where it shows nothing),
+//         w its largest opacity (0 ... 1: what overlay_mip lays over the grey)
 // engine/src/overlay.cpp fills them; engine/src/reference_renderer.cpp does the same in
 // double precision.
 #ifndef VOXRAY_OVERLAY_CL
@@ -77,17 +79,34 @@ inline float4 overlay_classify(__global const short* restrict ovol,
 
 // Fused mip: the overlay's largest value at the ray's mip sample positions, through its
 // table, over the volume's mip grey as the slice views fuse it: the table's colour at that
-// value with the table's top opacity (its opacity at and above the window's high end, the
-// user's) wherever the table shows the value at all, GREY elsewhere.
+// value with the table's largest opacity (ogeo[4].w; a window's table: its opacity at and
+// above the high end, the user's) wherever the table shows the value at all, GREY elsewhere.
 inline float3 overlay_mip(__global const short* restrict ovol, __global const float4* restrict olut,
-                          __constant float4* ogeo, const Ray* r, float3 grey) {
+                          __global const uchar* restrict ocells, __constant float4* ogeo,
+                          __constant RaycastParams* P, const Ray* r, float3 grey) {
+  // Only the samples in the overlay's box can see it: the ray mapped into its voxels (the same
+  // t, the map being affine) through its box, a sample's margin either way for rounding.
+  float4 o4 = (float4)(r->o, 1.0f), d4 = (float4)(r->d, 0.0f);
+  float3 qo = (float3)(dot(ogeo[0], o4), dot(ogeo[1], o4), dot(ogeo[2], o4));
+  float3 qd = (float3)(dot(ogeo[0], d4), dot(ogeo[1], d4), dot(ogeo[2], d4));
+  float ta, tb;
+  if (intersect_box(qo, qd, (float3)(-0.5f), ogeo[3].xyz - 0.5f, &ta, &tb) <= -2) return grey;
+  int first = (int)clamp(floor((ta - r->t0) / r->step - r->j) - 1.0f, 0.0f, (float)r->n);
+  int last = (int)clamp(ceil((tb - r->t0) / r->step - r->j) + 1.0f, 0.0f, (float)r->n);
+  // A table transparent only below its first visible value (ogeo[4].z, e.g. a window's):
+  // samples in macro cells where it shows nothing are below every visible value, so they can
+  // neither be the shown maximum nor hide one; they are not taken.
+  bool leap = ogeo[4].z != 0.0f;
   float vmax = -FLT_MAX, v;
-  for (int i = 0; i <= r->n; ++i)
-    if (overlay_value(ovol, ogeo, r->o + ray_sample_t(r, i) * r->d, &v)) vmax = fmax(vmax, v);
+  for (int i = first; i <= last; ++i) {
+    float3 p = r->o + ray_sample_t(r, i) * r->d;
+    if (leap && !overlay_cell(ocells, P, p)) continue;
+    if (overlay_value(ovol, ogeo, p, &v)) vmax = fmax(vmax, v);
+  }
   if (vmax == -FLT_MAX) return grey;
   float4 c = overlay_lookup(olut, ogeo, vmax);
   if (!(c.w > 0.0f)) return grey;
-  return mix(grey, c.xyz, clamp(olut[(int)ogeo[3].w].w, 0.0f, 1.0f));
+  return mix(grey, c.xyz, ogeo[4].w);
 }
 #else
 #define OVERLAY_PARAMS

@@ -175,6 +175,31 @@ TEST(Overlay, MipShowsTheOverlaysMaximumOverTheGrey) {
     expectCloseToReference(fused, renderReference(v, p, o, tf),
                            packets ? "fused mip, packets" : "fused mip, per ray");
   }
+  // A band table (green from 450 to 800 only) is not transparent only below its first visible
+  // value, so no cell is left out: through the lesion the largest value (1000) shows nothing
+  // and the plain pixel stays; the rim, where the largest value falls in the band, is green.
+  const TransferFunction band{{{0.0, {0.0, 1.0, 0.0, 0.0}},
+                               {400.0, {0.0, 1.0, 0.0, 0.0}},
+                               {450.0, {0.0, 1.0, 0.0, 1.0}},
+                               {800.0, {0.0, 1.0, 0.0, 1.0}},
+                               {850.0, {0.0, 1.0, 0.0, 0.0}},
+                               {1000.0, {0.0, 1.0, 0.0, 0.0}}}};
+  const Image ref = renderReference(v, p, o, band);
+  for (bool packets : {true, false}) {
+    const Image plain = renderWith(v, p, nullptr, {}, packets);
+    const Image fused = renderWith(v, p, &o, band, packets);
+    int centre = 0, green = 0;
+    for (size_t i = 0; i < dist.size(); ++i) {
+      if (dist[i] < kRadiusMm - kMarginMm) {
+        EXPECT_EQ(fused.rgba[4 * i + 1], plain.rgba[4 * i + 1]) << "pixel " << i;
+        ++centre;
+      }
+      green += fused.rgba[4 * i + 1] > fused.rgba[4 * i] + 20;
+    }
+    EXPECT_GT(centre, 40);
+    EXPECT_GT(green, 10);  // the rim
+    expectCloseToReference(fused, ref, packets ? "band mip, packets" : "band mip, per ray");
+  }
 }
 
 TEST(Overlay, KernelsMatchTheReference) {

@@ -38,6 +38,11 @@ TransferFunction overlayWindowTable(double lo, double hi, const std::string& col
 // TF with every opacity times FACTOR (clamped to 0 ... 1): --overlay-opacity on a preset.
 TransferFunction scaledOpacity(TransferFunction tf, double factor);
 
+// What fused mip lays over the grey where the overlay's largest value along a ray shows: the
+// table's largest opacity (0 ... 1; for a window's table its opacity at and above HI, the
+// user's), as the slice views lay the colour map at the user's opacity.
+double overlayMipOpacity(const Lut& lut);
+
 // The overlay's classification in double precision, as overlay.cl (the reference renderer):
 // trilinear in the overlay's voxels (clamped to its edge voxels), transparent outside its box.
 struct OverlayClassifier {
@@ -49,8 +54,8 @@ struct OverlayClassifier {
   // The stored value there (trilinear); false outside the overlay's box.
   bool value(const glm::dvec3& baseVoxel, double& stored) const;
   // Fused mip (overlay.cl's overlay_mip): the overlay's largest VALUE along a ray over the
-  // volume's mip GREY: the table's colour there with the table's top opacity (at and above
-  // the window's high end: the user's), as the slice views fuse; GREY where it shows nothing.
+  // volume's mip GREY: the table's colour there at overlayMipOpacity, as the slice views
+  // fuse; GREY where the table shows nothing there.
   glm::dvec3 overMip(const glm::dvec3& grey, double largest) const;
 };
 
