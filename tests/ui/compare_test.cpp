@@ -8,6 +8,7 @@
 // column's 3D view: a drag in the study's turns the prior's (a new frame, its camera the
 // study's through the alignment); Move prior drags move the prior by the dragged millimetres
 // and turn it by the swept angle, one undo step each.
+#include <QAction>
 #include <QCheckBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -404,12 +405,28 @@ class CompareTest : public QObject {
     QVERIFY(!c->findChild<QPushButton*>("compareUndoMove")->isEnabled());
     c->findChild<QPushButton*>("compareRedoMove")->click();
     QVERIFY(c->comparison().movingToFixed() == t1);
+    // The keys, with the focus in a column: Ctrl+Shift+Z redoes the turn, Ctrl+Z takes it
+    // back (in Move prior mode they are the prior's, not the Edit menu's, which has a view
+    // change to take back).
+    m.render.update(kCamera, [](RenderParams& p) { p.camera.azimuthDeg += 10.0; });
+    QVERIFY(fixture_.window->findChild<QAction*>("editUndo")->isEnabled());
+    const double azimuth = m.render.params().camera.azimuthDeg;
+    mv.setFocus();
+    QTest::keyClick(&mv, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(c->comparison().movingToFixed() == t2);
+    QTest::keyClick(&mv, Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(c->comparison().movingToFixed() == t1);
+    QCOMPARE(m.render.params().camera.azimuthDeg, azimuth);
     // Move prior off: a left drag moves the crosshair again, not the prior.
     c->setFocus();
     QTest::keyClick(c, Qt::Key_M);
     QVERIFY(!c->movePrior());
     drag(&mv, from, from + QPointF(0.0, 25.0));
     QVERIFY(c->comparison().movingToFixed() == t1);
+    mv.setFocus();
+    QTest::keyClick(&mv, Qt::Key_Z, Qt::ControlModifier);  // the Edit menu's: not the prior's
+    QVERIFY(c->comparison().movingToFixed() == t1);
+    QVERIFY(m.render.params().camera.azimuthDeg != azimuth);  // the view change taken back
   }
 
   void windowLevelLinkAndSwapAndFlickerKeys() {

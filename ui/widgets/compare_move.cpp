@@ -1,6 +1,7 @@
 // Compare's Move prior mode (prior_move.h does the maths) and the 3D views' drag frames: a
 // drag in one column's 3D view turns the other's camera too, so both render drag frames.
 #include <QEvent>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPushButton>
 
@@ -12,7 +13,24 @@
 
 namespace voxray::ui {
 
+namespace {
+// Ctrl+Z and Ctrl+Shift+Z (the Edit menu's Undo and Redo): -1, 1, or 0 for another key.
+int undoKey(const QKeyEvent& k) {
+  const auto mods = k.modifiers() & (Qt::ControlModifier | Qt::ShiftModifier | Qt::AltModifier);
+  if (k.key() != Qt::Key_Z) return 0;
+  if (mods == Qt::ControlModifier) return -1;
+  return mods == (Qt::ControlModifier | Qt::ShiftModifier) ? 1 : 0;
+}
+}  // namespace
+
 bool CompareView::eventFilter(QObject* watched, QEvent* e) {
+  // In Move prior mode Ctrl+Z and Ctrl+Shift+Z take back and redo the prior's drags: the keys
+  // come here as key presses (keyPressEvent) instead of as the Edit menu's shortcuts.
+  if (e->type() == QEvent::ShortcutOverride && moveMode_ &&
+      undoKey(*static_cast<QKeyEvent*>(e)) != 0) {
+    e->accept();
+    return true;
+  }
   if (watched == fixedView_ || watched == movingView_) {
     if (moveMode_ && moveDrag(*static_cast<SliceView*>(watched), e)) return true;
   } else if ((watched == fixed3d_ || watched == moving3d_) && comparison_.linked() && hasPrior()) {
@@ -83,6 +101,13 @@ bool CompareView::moveDrag(SliceView& view, QEvent* e) {
     refreshMoveButtons();
   }
   return true;
+}
+
+bool CompareView::undoKeyPressed(QKeyEvent* e) {
+  const int k = moveMode_ ? undoKey(*e) : 0;
+  if (k < 0) undoMove();
+  if (k > 0) redoMove();
+  return k != 0;
 }
 
 void CompareView::setMovePrior(bool on) {

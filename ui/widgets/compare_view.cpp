@@ -50,6 +50,7 @@ CompareView::CompareView(AppModels& study, RenderScheduler& studyScheduler, QWid
   for (QWidget* w : {static_cast<QWidget*>(fixedView_), static_cast<QWidget*>(movingView_),
                      static_cast<QWidget*>(fixed3d_), static_cast<QWidget*>(moving3d_)})
     w->installEventFilter(this);
+  installEventFilter(this);  // Ctrl+Z with the focus here too (eventFilter)
   fixedName_ = new QLabel;
   movingName_ = new QLabel;
   fixedColumn_ = column(fixedName_, fixedView_, fixed3d_);
@@ -259,6 +260,7 @@ bool CompareView::align() {
 }
 
 void CompareView::keyPressEvent(QKeyEvent* e) {
+  if (undoKeyPressed(e)) return;
   switch (e->key()) {
     case Qt::Key_X:
       swapSides();

@@ -8,7 +8,8 @@
 // The study's 3D view renders through the window's scheduler (its render thread), the
 // prior's through a render thread of its own. "Move prior" (M) turns left drags in either
 // slice view into moving the prior (prior_move.h; Shift: turning it about the crosshair),
-// each drag one step for Undo move / Redo move. Keys: X swaps the columns' sides, F flickers
+// each drag one step for Undo move / Redo move (and, while Move prior is on, Ctrl+Z and
+// Ctrl+Shift+Z in compare). Keys: X swaps the columns' sides, F flickers
 // (one column at a time in the whole width, each press the other), B (or Esc) shows both.
 #include <memory>
 #include <optional>
@@ -93,6 +94,7 @@ class CompareView : public QWidget {
   bool moveDrag(SliceView& view, QEvent* e);
   ScreenPlane screenPlane(SliceView& view, ComparisonModel::Side side) const;
   void refreshMoveButtons();
+  bool undoKeyPressed(QKeyEvent* e);  // Ctrl+Z / Ctrl+Shift+Z in Move prior mode
 
   AppModels& study_;
   std::unique_ptr<PriorColumn> prior_;
