@@ -166,7 +166,10 @@ std::map<int, std::vector<ControlPoint>> parseSegmentTfs(const std::string& text
 std::string formatSegmentTfs(const std::map<int, std::vector<ControlPoint>>& tfs) {
   std::string out;
   for (const auto& [label, points] : tfs) {
-    out += (out.empty() ? "" : ";") + std::to_string(label) + ":" + formatTfPoints(points);
+    if (!out.empty()) out += ';';
+    out += std::to_string(label);
+    out += ':';
+    out += formatTfPoints(points);
   }
   return out;
 }
