@@ -79,8 +79,9 @@ std::vector<double> rayDistances(const Volume& v, const RenderParams& p) {
 }
 
 Image renderWith(const Volume& v, const RenderParams& p, const Segmentation& seg, bool packets,
-                 bool ess = true, FrameStats* stats = nullptr) {
-  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
+                 bool ess = true, FrameStats* stats = nullptr,
+                 VolumeStorage storage = VolumeStorage::Buffer) {
+  Raycaster rc(test::pocl(), v, storage);
   RaycasterOptions o;
   o.packets = packets;
   o.emptySpaceSkipping = ess;
@@ -145,6 +146,11 @@ TEST(SegmentTf, KernelsMatchTheReference) {
                                    (packets ? " packets" : " per ray");
           test::expectCloseToReference(renderWith(v, p, seg, packets), ref, what);
         }
+        // The volume as an image (GPUs' storage), the labels and tables still buffers.
+        if (test::pocl().device().imageSupport)
+          test::expectCloseToReference(
+              renderWith(v, p, seg, false, true, nullptr, VolumeStorage::Image3d), ref,
+              std::string(scene) + " " + mask + " image3d");
       }
     }
   // The red scene unshaded, hidden: nothing at all shows.
