@@ -93,6 +93,12 @@ VOXRAY_SWITCH(TF2D, 0, BUILD, "|tf2d")
 // variant compiles and renders as before (#if). Not with ADAPTIVE (its levels read the colour
 // table alone); the light grid (shadows, ao) and the path tracer ignore the labels.
 VOXRAY_SWITCH(LABELS, 0, BUILD, "|labels")
+// dvr with LABELS: segments with their own 1D transfer function (issue 35, RenderParams::
+// segmentTfs; classification/segment_tf.cl): a sample whose label has one is classified by it
+// instead of the volume's table. One more kernel argument (the tables). Set only where a visible
+// segment has such a table (engine/src/segment_tf.h), so every other variant compiles as before
+// (#if); never with TF2D (its 2D table stays the volume's).
+VOXRAY_SWITCH(SEGMENT_TF, 0, BUILD, "|segtf")
 // dvr: a second volume fused into the same pass (issue 36, classification/overlay.cl): each
 // sample also classifies the overlay at its patient point with the overlay's own table, and
 // the two mix by summed extinction (march.cl, dvr_segment). Three more kernel arguments. Set

@@ -34,9 +34,11 @@ class EmptySpace {
   void setShownCells(ContextImpl& cl, std::vector<uint8_t> shown);
   // Fused dvr (issue 36): per cell 1 where the overlay may show (overlay_cells.h), which dvr
   // then classifies occupied whatever the volume's values; empty: none. The next dvr
-  // classification follows a change.
+  // classification follows a change. (The raycaster also marks here the cells where a
+  // segment's own transfer function may show: segment_tf.h, segmentTfCells.)
   void setOverlayCells(ContextImpl& cl, const std::vector<uint8_t>& cells);
   const glm::ivec3& dims() const { return cells_.dims; }
+  const MacroCells& cells() const { return cells_; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
   // capped at MAX_LEAP (kernels/empty_space/classify.cl); then, after every cell's, each cell's

@@ -85,6 +85,7 @@ KernelSwitches kernelSwitches(const RenderParams& p, const KernelFacts& f) {
   KernelSwitches s = kernelSwitches(p);
   s.ESS = f.emptySpaceSkipping;
   s.LABELS = f.labels && p.mode == Mode::Dvr;
+  s.SEGMENT_TF = s.LABELS && f.segmentTf && !s.TF2D;
   // The levels live with the macro cells, and read the colour table alone (not the labels).
   // The overlay: fused into dvr's samples, or its maximum over mip's grey (overlay_mip).
   s.OVERLAY = f.overlay && (p.mode == Mode::Dvr || p.mode == Mode::Mip);

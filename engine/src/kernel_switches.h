@@ -26,6 +26,8 @@ struct KernelFacts {
   int packetLanes = 0;     // packets of 8 or 16 lanes; 0: one ray per work-item
   // A dvr frame with a segmentation whose table changes something (Raycaster::setSegmentation).
   bool labels = false;
+  // ... where also a segment has its own transfer function (segment_tf.h, segmentTfSlots).
+  bool segmentTf = false;
   // A dvr frame of a raycaster that holds an overlay (Raycaster::setOverlay).
   bool overlay = false;
 };

@@ -1,8 +1,10 @@
 #include "label_table.h"
 
 #include <algorithm>
+#include <array>
 
 #include "segment_table.h"  // kernels/: the layout
+#include "segment_tf.h"
 
 namespace voxray {
 
@@ -25,12 +27,18 @@ std::vector<glm::vec4> segmentTable(const std::vector<Segment>& segments, const 
     t[2 * l] = glm::vec4(glm::clamp(s.colour, 0.0f, 1.0f), float(p.segmentBlend));
     t[2 * l + 1].x *= std::clamp(s.opacity, 0.0f, 1.0f);
   }
+  // Per-segment transfer functions (segment_tf.h): the table's number, and no tint (the
+  // segment's own table is its colour).
+  const std::array<int, 256> slots = segmentTfSlots(segments, p);
+  for (int l = 1; l < kLabels; ++l)
+    if (slots[size_t(l)] > 0) t[2 * l].w = 0.0f, t[2 * l + 1].y = float(slots[size_t(l)]);
   return t;
 }
 
 bool changesNothing(const std::vector<glm::vec4>& table) {
   for (size_t l = 0; l < table.size() / 2; ++l)
-    if (table[2 * l].w != 0.0f || table[2 * l + 1].x != 1.0f) return false;
+    if (table[2 * l].w != 0.0f || table[2 * l + 1].x != 1.0f || table[2 * l + 1].y != 0.0f)
+      return false;
   return true;
 }
 

@@ -11,10 +11,11 @@
 
 namespace voxray {
 
-// 2 x 256 entries: per label its colour and blend weight, then its opacity factor.
+// 2 x 256 entries: per label its colour and blend weight, then its opacity factor and the
+// number of its own transfer function (segment_tf.h; 0: none).
 std::vector<glm::vec4> segmentTable(const std::vector<Segment>& segments, const RenderParams& p);
-// Whether TABLE leaves every sample as it is (no weight, every factor 1): such a frame
-// renders without labels, with exactly the pixels of a raycaster that has none.
+// Whether TABLE leaves every sample as it is (no weight, every factor 1, no own table): such a
+// frame renders without labels, with exactly the pixels of a raycaster that has none.
 bool changesNothing(const std::vector<glm::vec4>& table);
 
 }  // namespace voxray

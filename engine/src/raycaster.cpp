@@ -13,6 +13,7 @@
 #include "light_volume.h"
 #include "overlay_cells.h"
 #include "segment_table.h"  // kernels/: the table's size
+#include "segment_tf.h"
 #include "voxray/engine/overlay.h"
 #include "voxray/engine/path_tracer.h"
 #include "voxray/io/segmentation.h"
@@ -48,6 +49,13 @@ struct Raycaster::Impl {
   std::vector<Segment> segments;
   LabelCells labelCells;
   std::vector<glm::vec4> segmentsUploaded;
+  // Per-segment transfer functions (segment_tf.h): their tables on the device as last
+  // uploaded, and the macro cells they may show in, for that upload and segment table
+  // (cleared when the label map changes).
+  cl::Buffer segTfBuffer;
+  size_t segTfCapacity = 0;
+  std::vector<glm::vec4> segTfUploaded, segTfCellsTable, segTfCellsTfs;
+  std::vector<uint8_t> segTfCells;
   // Fused dvr (setOverlay): the overlay's voxels, table and geometry (overlay.cl's ovol,
   // olut, ogeo) and the base cells where it may show.
   bool overlay = false;
@@ -90,6 +98,7 @@ KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
   f.hitOutput = hitsOut != nullptr;
   f.packetLanes = packets() ? lanes(p) : 0;
   f.labels = labels && p.mode == Mode::Dvr && !changesNothing(segmentTable(segments, p));
+  f.segmentTf = f.labels && anySegmentTf(segmentTfSlots(segments, p));
   f.overlay = overlay;
   return kernelSwitches(p, f);
 }
@@ -185,6 +194,7 @@ void Raycaster::setSegmentation(const Segmentation& seg) {
   m.labelCells = computeLabelCells(seg);
   m.segments = seg.segments;
   m.segmentsUploaded.clear();
+  m.segTfCellsTable.clear();
   m.labels = true;
 }
 
@@ -205,6 +215,7 @@ void Raycaster::updateSegmentation(const Segmentation& seg, glm::ivec3 lo, glm::
     return 0;
   });
   updateLabelCells(m.labelCells, seg, lo, hi);
+  m.segTfCellsTable.clear();
   m.space.setShownCells(m.cl, {});  // recomputed for the next labelled frame
 }
 
@@ -215,6 +226,7 @@ void Raycaster::clearSegmentation() {
   m.segments.clear();
   m.labelCells = LabelCells{};
   m.segmentsUploaded.clear();
+  m.segTfCellsTable.clear();
   m.space.setShownCells(m.cl, {});
 }
 
@@ -306,6 +318,20 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   if (sw.LIGHTING) m.light.prepare(s, k);
   std::vector<glm::vec4> segmentTableNow;
   if (sw.LABELS) segmentTableNow = segmentTable(m.segments, p);
+  std::vector<glm::vec4> segTfNow;  // SEGMENT_TF: the segments' own tables (segment_tf.h)
+  if (sw.SEGMENT_TF) {
+    const std::array<int, 256> slots = segmentTfSlots(m.segments, p);
+    const std::vector<Lut> luts = bakeSegmentTfs(slots, p, m.volume, s.lut);
+    segTfNow = packSegmentTfs(luts);
+    // The cells they may show in: again only when the tables, factors or label map changed.
+    if (m.opts.emptySpaceSkipping &&
+        (segTfNow != m.segTfCellsTfs || segmentTableNow != m.segTfCellsTable)) {
+      m.segTfCells =
+          segmentTfCells(m.labelCells, m.space.cells().minMax, slots, luts, segmentTableNow);
+      m.segTfCellsTable = segmentTableNow;
+      m.segTfCellsTfs = segTfNow;
+    }
+  }
 
   size_t pixels = size_t(p.width) * size_t(p.height);
   out.width = p.width;
@@ -340,9 +366,25 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     if (p.mode == Mode::Dvr && m.opts.emptySpaceSkipping)
       m.space.setShownCells(
           m.cl, sw.LABELS ? cellsShown(m.labelCells, segmentTableNow) : std::vector<uint8_t>{});
-    // ... and leaps no cell where the overlay may show.
-    if (p.mode == Mode::Dvr && m.opts.emptySpaceSkipping)
-      m.space.setOverlayCells(m.cl, sw.OVERLAY ? m.overlayCellsShown : std::vector<uint8_t>{});
+    // ... and leaps no cell where the overlay or a segment's own table may show.
+    if (p.mode == Mode::Dvr && m.opts.emptySpaceSkipping) {
+      std::vector<uint8_t> occupied = sw.OVERLAY ? m.overlayCellsShown : std::vector<uint8_t>{};
+      if (sw.SEGMENT_TF && occupied.empty())
+        occupied = m.segTfCells;
+      else if (sw.SEGMENT_TF)
+        for (size_t c = 0; c < occupied.size() && c < m.segTfCells.size(); ++c)
+          occupied[c] |= m.segTfCells[c];
+      m.space.setOverlayCells(m.cl, occupied);
+    }
+    if (sw.SEGMENT_TF && segTfNow != m.segTfUploaded) {
+      const size_t bytes = segTfNow.size() * sizeof(cl_float4);
+      if (bytes > m.segTfCapacity) {
+        m.segTfBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY, bytes);
+        m.segTfCapacity = bytes;
+      }
+      m.segTfUploaded = segTfNow;  // the asynchronous write reads this copy
+      q.enqueueWriteBuffer(m.segTfBuffer, CL_FALSE, 0, bytes, m.segTfUploaded.data());
+    }
     if (m.opts.emptySpaceSkipping && leaps)
       m.space.classify(m.cl, f.paramsBuffer, f.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
                        sw.PACKET != 0, sw.ISO_BLOCK_TRIES > 0);
@@ -386,6 +428,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     if (sw.LABELS) {  // LABEL_PARAMS (kernels/classification/labels.cl)
       kernel.setArg(arg++, m.labelBuffer);
       kernel.setArg(arg++, m.segmentBuffer);
+      if (sw.SEGMENT_TF) kernel.setArg(arg++, m.segTfBuffer);  // SEGTF_PARAMS (segment_tf.cl)
     }
     if (sw.OVERLAY) {  // OVERLAY_PARAMS (kernels/classification/overlay.cl)
       kernel.setArg(arg++, m.overlayVolume);

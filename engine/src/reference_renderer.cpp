@@ -1,6 +1,7 @@
 #include "voxray/engine/reference_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "label_table.h"
 #include "reference_hooks.h"
 #include "reference_sampling.h"
+#include "segment_tf.h"
 #include "voxray/engine/overlay.h"
 #include "voxray/io/error.h"
 #include "voxray/io/parallel.h"
@@ -54,6 +56,10 @@ struct Marcher {
   // none (no segmentation, not dvr, or a table that changes nothing, as the raycaster).
   const Segmentation* labelMap = nullptr;
   std::vector<glm::vec4> segTable{};
+  // Per-segment transfer functions (kernels/classification/segment_tf.cl): each label's table
+  // number (0: the volume's) and the tables; empty: none.
+  std::array<int, 256> segSlots{};
+  std::vector<Lut> segLuts{};
   // Fused dvr (kernels/classification/overlay.cl), or none.
   const OverlayClassifier* overlay = nullptr;
 
@@ -64,6 +70,13 @@ struct Marcher {
     glm::dvec4 s(segTable[2 * l]);
     return glm::dvec4(glm::mix(glm::dvec3(c), glm::dvec3(s), s.w),
                       c.a * double(segTable[2 * l + 1].x));
+  }
+
+  // C, or the table of pv's label where it has its own (segment_tf).
+  glm::dvec4 ownTable(const glm::dvec4& c, double value, const glm::dvec3& pv) const {
+    glm::ivec3 i = glm::clamp(glm::ivec3(glm::floor(pv + 0.5)), glm::ivec3(0), v.dims - 1);
+    const int slot = segSlots[labelMap->labels[labelMap->grid.index(i.x, i.y, i.z)]];
+    return slot > 0 ? segLuts[size_t(slot - 1)].lookup(value) : c;
   }
 
   // The light coefficients at world position w: the frame's, or the Monte Carlo estimator's.
@@ -110,6 +123,7 @@ struct Marcher {
         glm::dvec3 pv = ov + t * dv;
         const double value = sample(pv, o);
         glm::dvec4 c = s.lut.lookup(value);
+        if (labelMap && !segLuts.empty()) c = ownTable(c, value, pv);
         // The overlay's sample at the same point (march.cl's dvr_segment, OVERLAY).
         const glm::dvec4 ov = overlay ? overlay->at(pv) : glm::dvec4(0.0);
         auto nothing = [&] { return c.a <= 0.0 && ov.a <= 0.0; };
@@ -247,6 +261,8 @@ FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, Referenc
       throw inputError("the segmentation's label map does not lie on the volume's voxels");
     m.segTable = segmentTable(seg->segments, p);
     if (!changesNothing(m.segTable)) m.labelMap = seg;
+    m.segSlots = segmentTfSlots(seg->segments, p);
+    if (m.labelMap && anySegmentTf(m.segSlots)) m.segLuts = bakeSegmentTfs(m.segSlots, p, v, s.lut);
   }
   FloatImage out;
   out.width = p.width;

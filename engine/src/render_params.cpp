@@ -5,6 +5,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "segment_tf.h"
 #include "text_parse.h"
 #include "voxray/io/error.h"
 
@@ -166,6 +167,11 @@ std::string formatGradientOpacity(const std::vector<glm::dvec2>& points) {
 }
 
 }  // namespace
+
+std::vector<ControlPoint> parseTfPoints(const std::string& s) { return parseTransferFunction(s); }
+std::string formatTfPoints(const std::vector<ControlPoint>& points) {
+  return formatTransferFunction(points);
+}
 
 SegmentMask parseSegmentMask(const std::string& text) {
   SegmentMask m;
@@ -341,6 +347,12 @@ std::vector<ParamSpec> makeSpecs() {
              "dvr with a segmentation: how strongly a visible segment's colour replaces the "
              "transfer function's (0 ... 1)",
              unit, FIELD(segmentBlend)),
+      {"segment-tf", "L:SPEC;...",
+       "dvr with a segmentation: segment L's own transfer function, used for the samples it "
+       "covers instead of the volume's (and instead of its colour): SPEC a preset name, a .json "
+       "or .vp file, or points HU:R:G:B:A,... as --tf; several separated by ';' (off = none)",
+       none, [](P& p, S s) { p.segmentTfs = parseSegmentTfs(s); },
+       [](const P& p) { return formatSegmentTfs(p.segmentTfs); }},
       number("early-termination", "A", "dvr stops a ray at this opacity (1 = never)", unit,
              FIELD(earlyTermination)),
       {"window", "W,L", "mip grey window width and level in HU", ParamDomain().in("HU"),

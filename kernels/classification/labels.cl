@@ -7,13 +7,15 @@
 #ifndef VOXRAY_LABELS_CL
 #define VOXRAY_LABELS_CL
 
+#include "classification/segment_tf.cl"
 #include "params.cl"
 #include "segment_table.h"
 
 // The kernel's label arguments, passed on to whoever classifies dvr samples.
 #if LABELS
-#define LABEL_PARAMS , __global const uchar *restrict labels, __constant float4 *segs
-#define LABEL_PASS , labels, segs
+// SEGMENT_TF: the segments' own tables too (segment_tf.cl).
+#define LABEL_PARAMS , __global const uchar *restrict labels, __constant float4 *segs SEGTF_PARAMS
+#define LABEL_PASS , labels, segs SEGTF_PASS
 
 // The label of the voxel nearest to p (voxel coordinates, centres at integers), clamped to
 // the edge as sample_slab's nearest read.

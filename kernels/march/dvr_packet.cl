@@ -6,6 +6,7 @@
 #include "classification/gradient_opacity_lanes.cl"
 #include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
+#include "classification/segment_tf_lanes.cl"
 #include "classification/tf2d_lanes.cl"
 #include "empty_space/skip_lanes.cl"
 #include "intersection/ray_lanes.cl"
@@ -249,8 +250,16 @@ inline void dvr_packet(PACKET_ARGS) {
       // Lanes the table leaves transparent stay so (factors are at most 1): when all are,
       // the labels are not read.
       lab[k] = 0;
+#if SEGMENT_TF
+      // Every lane's label first: its own table (segment_tf.cl) may show what the volume's
+      // leaves transparent. Shaded, only the opacity now (the flush looks the colour up).
+      lab[k] = label_atN(labels, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
+      segment_tfN(segtf, segs, P, lab[k], value[k], c[k], SHADING ? 3 : 0);
+#endif
       if (any(c[k][3] > 0.0f)) {
+#if !SEGMENT_TF
         lab[k] = label_atN(labels, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
+#endif
         c[k][3] *= label_opacityN(segs, lab[k]);
         if (!SHADING) label_colourN(segs, lab[k], c[k]);
       }

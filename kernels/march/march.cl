@@ -122,6 +122,11 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
   ++*count;
   float value = sample_volume(VOLUME, P, p_v);
   float4 c = lut_lookup(lut, P, value);
+#if SEGMENT_TF
+  // The label's own table where it has one (segment_tf.cl), before "transparent" is decided.
+  int lab = label_at(labels, P, p_v);
+  c = segment_tf(segtf, segs, P, lab, value, c);
+#endif
 #if OVERLAY
   // The base's classification below (labels, gradient opacity, shading) is its own; the
   // overlay's sample joins it after, unshaded (PET on CT shows as a glow, and the base's
@@ -145,7 +150,10 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
   if (DVR_NOTHING) return false;
 #endif
 #if LABELS
-  c = label_classify(segs, label_at(labels, P, p_v), c);
+#if !SEGMENT_TF
+  int lab = label_at(labels, P, p_v);
+#endif
+  c = label_classify(segs, lab, c);
   if (DVR_NOTHING) return false;
 #endif
 #if GRADIENT_OPACITY

@@ -15,13 +15,14 @@
 
 #include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
+#include "classification/segment_tf_lanes.cl"
 #include "classification/tf2d_lanes.cl"
 #include "intersection/ray_lanes.cl"
 #include "reconstruction/gradients_lanes.cl"
 
 #if LABELS
-#define QUEUE_SEGS_PARAM , __constant float4* segs
-#define QUEUE_SEGS_ARG , segs
+#define QUEUE_SEGS_PARAM , __constant float4* segs SEGTF_PARAMS
+#define QUEUE_SEGS_ARG , segs SEGTF_PASS
 #else
 #define QUEUE_SEGS_PARAM
 #define QUEUE_SEGS_ARG
@@ -94,6 +95,9 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
   tf2dN(lut, P, vloadN(0, q->value), kept, c);
 #else
   lutN(lut, P, vloadN(0, q->value), c);
+#endif
+#if SEGMENT_TF
+  segment_tfN(segtf, segs, P, vloadN(0, q->label), vloadN(0, q->value), c, 0);
 #endif
 #if LABELS
   label_colourN(segs, vloadN(0, q->label), c);

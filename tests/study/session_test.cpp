@@ -73,6 +73,7 @@ const std::map<std::string, std::string> kUnusual = {
     {"adaptive", "0.05"},
     {"segment-mask", "hide:2,7"},
     {"segment-blend", "0.35"},
+    {"segment-tf", "3:-1000:1:0.5:0.25:0,0.1:1:0.5:0.25:0.333;7:-5:0:0:1:1"},
     {"early-termination", "0.95"},
     {"window", "1500,-600"},
     {"azimuth", "0.3333333333333333"},
@@ -409,6 +410,22 @@ TEST(Session, AnOlderSessionReadsWithoutTheGradientOpacity) {
   ASSERT_EQ(read.warnings.size(), 1u);
   EXPECT_EQ(read.warnings[0], "field 'render.gradient-opacity' missing: left at its default ()");
   EXPECT_TRUE(read.session.render.gradientOpacity.empty());
+  EXPECT_EQ(read.session.render.mode, Mode::Dvr);
+}
+
+// Issue 35: sessions saved before per-segment transfer functions read with none (the volume's
+// table everywhere), as they rendered; a saved one comes back exactly.
+TEST(Session, AnOlderSessionReadsWithoutSegmentTfs) {
+  Session s;
+  s.render.mode = Mode::Dvr;
+  s.render.segmentTfs[2] = findPreset("CT-Bone").tf.points;
+  Json j = jsonOf(s, "s.json");
+  EXPECT_EQ(sessionFromJson(j.dump(), "s.json").session.render.segmentTfs, s.render.segmentTfs);
+  j["render"].erase("segment-tf");
+  const SessionRead read = sessionFromJson(j.dump(), "s.json");
+  ASSERT_EQ(read.warnings.size(), 1u);
+  EXPECT_EQ(read.warnings[0], "field 'render.segment-tf' missing: left at its default ()");
+  EXPECT_TRUE(read.session.render.segmentTfs.empty());
   EXPECT_EQ(read.session.render.mode, Mode::Dvr);
 }
 

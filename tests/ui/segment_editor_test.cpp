@@ -252,6 +252,67 @@ class SegmentEditorTest : public QObject {
     QCOMPARE(hidden, 0);
   }
 
+  // Issue 35: the Segments panel's TF… combo gives the chosen segment CT-Bone as its own
+  // transfer function: the 3D frame changes only where the segment (a ball over the skull's
+  // top) shows, and Edit → Undo (Ctrl+Z, the 3D view focused) brings back exactly the frame
+  // before. Where the segment shows: the lit pixels of Show-only frames under either table
+  // (a ray's pixel can change only where a sample of the segment shows under one of them),
+  // grown by a pixel for rays that graze its edge; a change counts above 2 levels (a sample
+  // too faint to light a Show-only pixel may still move a rounding by one level).
+  void segmentTfPresetChangesItsPixelsAndUndoRestores() {
+    models().render.update(kAppearance | kCamera, [](RenderParams& p) {
+      p.mode = Mode::Dvr;
+      p.preset = "CT-Skin";
+      p.camera.azimuthDeg = 30.0;
+      p.camera.elevationDeg = 70.0;  // from above: the ball's scalp and skull face the camera
+    });
+    const uint8_t label = addSegment();
+    models().segmentation.paintSphere({32, 32, 56}, 28.0, label);
+    const QImage before = test::settledFrame(*fixture_.window);
+    QComboBox* tf = panel().findChild<QComboBox*>("segmentTf");
+    QComboBox* mask = panel().findChild<QComboBox*>("segmentMask3d");
+    QVERIFY(tf && mask);
+    QCOMPARE(tf->currentText(), QString("Volume's"));
+    mask->setCurrentIndex(int(MaskChoice::ShowOnly));
+    const QImage showSkin = test::changedFrame(*fixture_.window, before);
+    tf->setCurrentIndex(tf->findText("CT-Bone"));
+    QCOMPARE(models().render.params().segmentTfs.count(label), size_t(1));
+    QVERIFY(models().render.params().segmentTfs.at(label) == findPreset("CT-Bone").tf.points);
+    const QImage showBone = test::changedFrame(*fixture_.window, showSkin);
+    mask->setCurrentIndex(int(MaskChoice::Off));
+    const QImage bone = test::changedFrame(*fixture_.window, showBone);
+    QCOMPARE(bone.size(), before.size());
+    auto lit = [](const QImage& a, int x, int y) {
+      return x >= 0 && y >= 0 && x < a.width() && y < a.height() && (a.pixel(x, y) & 0xffffff);
+    };
+    int changed = 0, changedOutside = 0, shown = 0;
+    for (int y = 0; y < before.height(); ++y)
+      for (int x = 0; x < before.width(); ++x) {
+        bool near = false;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+            near = near || lit(showSkin, x + dx, y + dy) || lit(showBone, x + dx, y + dy);
+        shown += near;
+        const QRgb a = before.pixel(x, y), b = bone.pixel(x, y);
+        if (std::abs(qRed(a) - qRed(b)) > 2 || std::abs(qGreen(a) - qGreen(b)) > 2 ||
+            std::abs(qBlue(a) - qBlue(b)) > 2) {
+          ++changed;
+          changedOutside += !near;
+        }
+      }
+    qInfo("segment TF: %d pixels changed, %d outside the %d where the segment shows", changed,
+          changedOutside, shown);
+    QVERIFY(changed > 50);
+    QCOMPARE(changedOutside, 0);
+    QVERIFY(shown < before.width() * before.height() / 2);  // the ball, not the whole frame
+    fixture_.window->volumeView().setFocus();               // not the Segments panel (its own undo)
+    QTest::keyClick(fixture_.window.get(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(models().render.params().segmentTfs.empty());
+    QCOMPARE(tf->currentText(), QString("Volume's"));
+    const QImage restored = test::changedFrame(*fixture_.window, bone);
+    QCOMPARE(test::differingPixels(restored, before), 0);
+  }
+
   // The seeded-region click and voxray-cli segment --threshold --seed --connectivity give the
   // same label map byte for byte (.labels.raw).
   void cliTwinWritesTheSameLabelMap() {

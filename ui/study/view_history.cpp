@@ -32,6 +32,7 @@ ViewSnapshot takeViewSnapshot(const AppModels& m) {
     s.planes[o] = m.crosshair.rotation(Orientation(o));
     s.slabs[o] = m.crosshair.slab(Orientation(o));
   }
+  s.segmentTfs = p.segmentTfs;
   return s;
 }
 
@@ -39,7 +40,7 @@ bool sameView(const ViewSnapshot& a, const ViewSnapshot& b) {
   return sameCamera(a.camera, b.camera) && a.clip.lo == b.clip.lo && a.clip.hi == b.clip.hi &&
          sameLight(a.light, b.light) && a.mipWidth == b.mipWidth && a.mipLevel == b.mipLevel &&
          a.wl.width == b.wl.width && a.wl.level == b.wl.level && a.wlSource == b.wlSource &&
-         a.planes == b.planes && sameSlabs(a.slabs, b.slabs);
+         a.planes == b.planes && sameSlabs(a.slabs, b.slabs) && a.segmentTfs == b.segmentTfs;
 }
 
 ViewHistory::ViewHistory(AppModels& m) : m_(m), current_(takeViewSnapshot(m)) {
@@ -93,6 +94,7 @@ void ViewHistory::apply(const ViewSnapshot& s) {
     p.light = s.light;
     p.windowWidth = s.mipWidth;
     p.windowLevel = s.mipLevel;
+    p.segmentTfs = s.segmentTfs;
   });
   // The window with where it came from: set() would leave "DICOM window 1" behind.
   const WindowLevel& wl = m_.windowLevel.value();

@@ -7,6 +7,7 @@
 // quality is a preference. Opening a study starts a new history (that study's defaults are the
 // first state).
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct ViewSnapshot {
   // The slice views' rotations and slabs by Orientation (CrosshairModel).
   std::array<glm::dmat3, 3> planes{glm::dmat3(1.0), glm::dmat3(1.0), glm::dmat3(1.0)};
   std::array<Slab, 3> slabs{};
+  // The segments' own transfer functions (RenderParams::segmentTfs): an appearance, but chosen
+  // per segment in the Segments panel, where a wrong pick is one Ctrl+Z away (issue 35).
+  std::map<int, std::vector<ControlPoint>> segmentTfs{};
 };
 ViewSnapshot takeViewSnapshot(const AppModels& m);
 bool sameView(const ViewSnapshot& a, const ViewSnapshot& b);

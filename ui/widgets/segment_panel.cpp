@@ -203,6 +203,19 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   blend_->setRange(0, 100);
   blend_->setToolTip("How strongly a visible segment's colour replaces the transfer function's");
   form3d->addRow("Colour blend", blend_);
+  // Per-segment transfer functions (issue 35): a dvr preset for the chosen segment; Custom
+  // only shows a table no preset gives (from a session or voxray-cli), it sets nothing.
+  segTf_ = new QComboBox;
+  segTf_->setObjectName("segmentTf");
+  segTf_->addItem("Volume's", QString());
+  for (const Preset& preset : builtinPresets())
+    if (preset.mode == "dvr")
+      segTf_->addItem(QString::fromStdString(preset.name), QString::fromStdString(preset.name));
+  segTf_->addItem("Custom", QString("\n"));
+  segTf_->setToolTip(
+      "The chosen segment's own transfer function in the 3D view, used where it lies instead "
+      "of the volume's (and of its colour); Volume's: none. Edit → Undo takes a choice back");
+  form3d->addRow("TF…", segTf_);
   layout->addWidget(view3d);
 
   // Statistics.
@@ -303,6 +316,23 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
     m_.render.update(kAppearance, [&](RenderParams& p) {
       p.segmentMask = withMaskChoice(p.segmentMask, label, MaskChoice(i));
     });
+  });
+  connect(segTf_, &QComboBox::currentIndexChanged, this, [this](int i) {
+    const uint8_t label = currentLabel();
+    const QString name = segTf_->itemData(i).toString();
+    if (!label || refreshing_ || name == "\n") return;
+    try {
+      std::vector<ControlPoint> points;
+      if (!name.isEmpty()) points = findPreset(name.toStdString()).tf.points;
+      m_.render.update(kAppearance, [&](RenderParams& p) {
+        if (points.empty())
+          p.segmentTfs.erase(label);
+        else
+          p.segmentTfs[label] = points;
+      });
+    } catch (const std::exception& e) {
+      fail("Segment transfer function", e.what());
+    }
   });
   connect(blend_, &QSlider::valueChanged, this, [this](int v) {
     if (refreshing_) return;

@@ -3,7 +3,8 @@
 // rename, colour, opacity, visibility, category and type as free text) with undo and redo of
 // the SegmentationModel, Import and Export of segmentation files, the slice views' tools
 // (threshold, paint, erase, seeded region) and the operations on a segment (islands, holes,
-// margin, smoothing, logical), the 3D view's mask and blend, and the statistics table.
+// margin, smoothing, logical), the 3D view's mask, blend and per-segment transfer function
+// (a preset), and the statistics table.
 // Thin: the models and voxray/io do the work (segment_tools.h).
 #include <functional>
 #include <memory>
@@ -105,6 +106,7 @@ class SegmentPanel : public QWidget {
   QCheckBox *sphere_, *overwrite_, *scissorsKeep_;
   QLabel* preview_;
   QSlider* blend_;
+  QComboBox* segTf_;  // the chosen segment's own transfer function (issue 35)
   QTableWidget* stats_;
   std::vector<SegmentStats> lastStats_;
   std::function<QColor(const QColor&)> chooseColour_;

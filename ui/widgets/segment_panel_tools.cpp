@@ -66,6 +66,13 @@ void SegmentPanel::refreshTools() {
   const RenderParams& p = m_.render.params();
   mask3d_->setCurrentIndex(int(maskChoiceOf(p.segmentMask, s.label)));
   blend_->setValue(int(std::lround(p.segmentBlend * 100)));
+  int tf = 0;  // Volume's
+  if (auto it = p.segmentTfs.find(s.label); it != p.segmentTfs.end()) {
+    tf = segTf_->count() - 1;  // Custom, unless a preset gives this table
+    for (int i = 1; i + 1 < segTf_->count(); ++i)
+      if (findPreset(segTf_->itemData(i).toString().toStdString()).tf.points == it->second) tf = i;
+  }
+  segTf_->setCurrentIndex(tf);
   refreshing_ = false;
 }
 

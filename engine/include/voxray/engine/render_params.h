@@ -98,6 +98,11 @@ struct RenderParams {
   // segment's colour replaces the table's colour (0: not at all, 1: wholly).
   SegmentMask segmentMask;
   double segmentBlend = 1.0;
+  // dvr with a segmentation: segments with their own transfer function (issue 35), by label
+  // 1 ... 255: a table in HU as transferFunction, used instead of the volume's (and of the
+  // segment's colour) for the samples whose nearest voxel holds that label, where a visible
+  // segment names it. Not with tf2d (the 2D table stays the volume's). Empty: none.
+  std::map<int, std::vector<ControlPoint>> segmentTfs;
   double windowWidth = 0.0;  // mip grey mapping in HU; width 0 = the volume's range
   double windowLevel = 0.0;
   glm::dvec3 surfaceColor{0.93, 0.89, 0.80};  // iso colour (bone) when no preset colours it
