@@ -7,16 +7,16 @@
 // (ui/study/tf_gallery.h); this widget draws it and sends its requests.
 #include <functional>
 
+#include <QPointer>
 #include <QStringList>
 #include <QWidget>
 
+#include "render_scheduler.h"
 #include "tf_editor_model.h"
 #include "tf_gallery.h"
 #include "volume_document.h"
 
 namespace voxray::ui {
-
-class RenderScheduler;
 
 class TfGalleryView : public QWidget {
  public:
@@ -56,7 +56,7 @@ class TfGalleryView : public QWidget {
 
   TfEditorModel& editor_;
   VolumeDocument& doc_;
-  RenderScheduler* scheduler_;
+  QPointer<RenderScheduler> scheduler_;  // may go first (the main window's child)
   TfGalleryModel model_;
   QString folder_;
   QStringList problems_;
