@@ -6,12 +6,13 @@
 // point dragged by N pixels moves by N times the HU a pixel is worth at that zoom; the 2D
 // histogram's axes zoom one at a time.
 #include <QAction>
-#include <QScrollArea>
+#include <QElapsedTimer>
 #include <QTemporaryDir>
 
 #include "axis_zoom.h"
 #include "tf_editor_dialog.h"
 #include "voxray/io/histogram.h"
+#include "voxray/io/raw_import.h"
 #include "window_fixture.h"
 
 using namespace voxray;
@@ -70,7 +71,7 @@ class TfGalleryTest : public QObject {
     mine.name = "Mine";
     mine.opacity.back().opacity = 0.05;
     writeVolumePropertyFile(mine, dir.filePath("mine.json").toStdString());
-    gallery.setPresetFolder(dir.path());
+    editor->usePresetFolder(dir.path());
     QCOMPARE(gallery.tileCount(), 5);
     QVERIFY(gallery.problems().isEmpty());
     QTRY_VERIFY_WITH_TIMEOUT(allRendered(gallery), 120000);
@@ -225,6 +226,54 @@ class TfGalleryTest : public QObject {
     editor->findChild<QPushButton*>("tf2dReset")->click();
     QCOMPARE(view.huHi() - view.huLo(), huSpan);
     QCOMPARE(view.gradientLo(), 0.0);
+  }
+
+  // The README's figure and figures (not run by ctest): the gallery on the cranium CT with two
+  // presets of the user's beside the built-in ones, the time until every picture is there and
+  // each picture's render time.
+  void figureGalleryOnCranium() {
+    const QString out = qEnvironmentVariable("VOXRAY_FIGURE_DIR");
+    if (out.isEmpty()) QSKIP("set VOXRAY_FIGURE_DIR to write the figure");
+    MainWindow& window = *fixture_.window;
+    AppModels& models = *fixture_.models;
+    RawLayout layout;
+    layout.dims = {256, 256, 108};
+    layout.spacingMm = {0.957, 0.957, 1.5};
+    auto v = std::make_shared<const Volume>(importRaw(
+        std::string(VOXRAY_DATA_DIR) + "/raw/cranium-ct/cranium_256x256x108_s16le.raw", layout));
+    models.crosshair.setDims(v->dims);
+    models.document.set(v, "cranium");
+    models.render.applyPreset("CT-Bone");
+    test::waitFullFrame(window);
+    QTemporaryDir dir;
+    VolumeProperty soft = volumePropertyOf(models.render.params());
+    soft.name = "Bone, faint";
+    for (OpacityNode& o : soft.opacity) o.opacity *= 0.25;
+    writeVolumePropertyFile(soft, dir.filePath("bone-faint.json").toStdString());
+    VolumeProperty warm = soft;
+    warm.name = "Warm skin";
+    warm.opacity = {{-700.0, 0.0}, {-300.0, 0.08}, {100.0, 0.02}, {300.0, 0.6}};
+    warm.color = {{-700.0, {0.8, 0.4, 0.3}}, {0.0, {0.95, 0.75, 0.6}}, {300.0, {1.0, 1.0, 0.95}}};
+    writeVolumePropertyFile(warm, dir.filePath("warm-skin.json").toStdString());
+    std::vector<double> ms;
+    connect(&window.scheduler(), &RenderScheduler::backgroundReady, this,
+            [&](std::shared_ptr<const Frame> f) { ms.push_back(f->stats.totalMs); });
+    QElapsedTimer clock;
+    clock.start();
+    TfEditorDialog* editor = openEditor(window, 2);
+    QVERIFY(editor);
+    editor->usePresetFolder(dir.path());
+    editor->resize(560, 420);
+    TfGalleryView& gallery = editor->gallery();
+    QCOMPARE(gallery.tileCount(), 6);
+    QTRY_VERIFY_WITH_TIMEOUT(allRendered(gallery), 300000);
+    const double all = clock.elapsed();
+    QCoreApplication::processEvents();
+    QVERIFY(editor->grab().save(out + "/tf-gallery.png"));
+    QString each;
+    for (double t : ms) each += QString(" %1").arg(t, 0, 'f', 0);
+    qInfo("cranium 256x256x108: %d pictures of 96x96 in %.0f ms from the tab shown; each (ms):%s",
+          gallery.tileCount(), all, qPrintable(each));
   }
 };
 

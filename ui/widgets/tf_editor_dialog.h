@@ -46,6 +46,9 @@ class TfEditorDialog : public QDialog {
   // The 2D histogram's count is done (tests wait for it).
   bool tf2dHistogramReady() const { return tf2dReady_; }
   TfGalleryView& gallery() { return *gallery_; }
+  // The gallery shows the built-in presets and DIR's (read again), the tab names DIR and
+  // what could not be read there. Not remembered (the Folder… button remembers its choice).
+  void usePresetFolder(const QString& dir);
 
  private:
   void countHistogram();
@@ -78,7 +81,7 @@ class TfEditorDialog : public QDialog {
   std::weak_ptr<const Volume> tf2dCounted_;
   BackgroundTask tf2dTask_;
   TfGalleryView* gallery_;
-  QLabel* galleryStatus_;
+  QLabel *galleryStatus_, *galleryFolder_;
 };
 
 }  // namespace voxray::ui

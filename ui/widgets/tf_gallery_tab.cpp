@@ -37,9 +37,9 @@ QWidget* TfEditorDialog::makePresetsTab(RenderScheduler* scheduler) {
   scroll->setObjectName("tfGalleryScroll");
   scroll->setWidgetResizable(true);
   scroll->setWidget(gallery_);
-  auto* folder = new QLabel;
-  folder->setObjectName("tfPresetFolder");
-  folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  galleryFolder_ = new QLabel;
+  galleryFolder_->setObjectName("tfPresetFolder");
+  galleryFolder_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   auto* choose = new QPushButton("Folder…");
   choose->setObjectName("tfPresetFolderChoose");
   choose->setToolTip("The folder of your presets: .json, 3D Slicer .vp and preset lists (.xml)");
@@ -55,7 +55,7 @@ QWidget* TfEditorDialog::makePresetsTab(RenderScheduler* scheduler) {
 
   auto* row = new QHBoxLayout;
   row->addWidget(new QLabel("Your presets:"));
-  row->addWidget(folder, 1);
+  row->addWidget(galleryFolder_, 1);
   row->addWidget(choose);
   row->addWidget(reload);
   row->addWidget(add);
@@ -64,12 +64,7 @@ QWidget* TfEditorDialog::makePresetsTab(RenderScheduler* scheduler) {
   layout->addLayout(row);
   layout->addWidget(galleryStatus_);
 
-  auto useFolder = [this, folder](const QString& dir) {
-    gallery_->setPresetFolder(dir);
-    folder->setText(QDir::toNativeSeparators(dir));
-    const QStringList problems = gallery_->problems();
-    galleryStatus_->setText(problems.isEmpty() ? QString() : "Not shown: " + problems.join("; "));
-  };
+  auto useFolder = [this](const QString& dir) { usePresetFolder(dir); };
   gallery_->applied = [this](const QString& name) {
     galleryStatus_->setText(QString("Using %1 (Undo takes it back).").arg(name));
   };
@@ -109,6 +104,13 @@ QWidget* TfEditorDialog::makePresetsTab(RenderScheduler* scheduler) {
   });
   useFolder(QSettings().value(kFolderKey, defaultPresetFolder()).toString());
   return tab;
+}
+
+void TfEditorDialog::usePresetFolder(const QString& dir) {
+  gallery_->setPresetFolder(dir);
+  galleryFolder_->setText(QDir::toNativeSeparators(dir));
+  const QStringList problems = gallery_->problems();
+  galleryStatus_->setText(problems.isEmpty() ? QString() : "Not shown: " + problems.join("; "));
 }
 
 }  // namespace voxray::ui
