@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include <QColorDialog>
 #include <QContextMenuEvent>
@@ -237,16 +238,18 @@ void Tf2dView::paintEvent(QPaintEvent*) {
   painter.restore();
   // Axis labels in white with a black shadow: readable on dark and bright bins alike.
   const QRectF labels = a.adjusted(4, 2, -4, -2);
-  const std::pair<int, QString> texts[] = {
-      {Qt::AlignLeft | Qt::AlignTop, QString("|∇| %1 HU/mm").arg(g_.hi, 0, 'f', 0)},
-      {Qt::AlignLeft | Qt::AlignVCenter, QString("|∇| %1").arg(g_.lo, 0, 'f', 0)},
-      {Qt::AlignLeft | Qt::AlignBottom, QString("%1 HU").arg(hu_.lo, 0, 'f', 0)},
-      {Qt::AlignRight | Qt::AlignBottom, QString("%1 HU").arg(hu_.hi, 0, 'f', 0)}};
-  for (const auto& [align, text] : texts) {
+  // The gradient axis' bottom value (0 until panned or zoomed) sits a line above the HU's.
+  const QRectF above = labels.adjusted(0, 0, 0, -painter.fontMetrics().height());
+  const std::tuple<QRectF, int, QString> texts[] = {
+      {labels, Qt::AlignLeft | Qt::AlignTop, QString("|∇| %1 HU/mm").arg(g_.hi, 0, 'f', 0)},
+      {above, Qt::AlignLeft | Qt::AlignBottom, QString("|∇| %1").arg(g_.lo, 0, 'f', 0)},
+      {labels, Qt::AlignLeft | Qt::AlignBottom, QString("%1 HU").arg(hu_.lo, 0, 'f', 0)},
+      {labels, Qt::AlignRight | Qt::AlignBottom, QString("%1 HU").arg(hu_.hi, 0, 'f', 0)}};
+  for (const auto& [box, align, text] : texts) {
     painter.setPen(Qt::black);
-    painter.drawText(labels.translated(1, 1), align, text);
+    painter.drawText(box.translated(1, 1), align, text);
     painter.setPen(Qt::white);
-    painter.drawText(labels, align, text);
+    painter.drawText(box, align, text);
   }
 }
 
