@@ -94,6 +94,14 @@ void RenderWorker::requestBands(const RenderParams& params, std::vector<RowBand>
   wake_.notify_all();
 }
 
+void RenderWorker::requestBackground(std::vector<std::pair<int, RenderParams>> frames) {
+  {
+    std::lock_guard lock(mutex_);
+    pendingBackground_ = std::move(frames);
+  }
+  wake_.notify_all();
+}
+
 void RenderWorker::prepare(std::vector<RenderParams> params) {
   {
     std::lock_guard lock(mutex_);
@@ -235,7 +243,8 @@ void RenderWorker::run() {
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
                pendingSegmentation_ || pendingOverlay_ || (!pendingPrepare_.empty() && raycaster) ||
-               (!pendingPreload_.empty() && raycaster);
+               (!pendingPreload_.empty() && raycaster) ||
+               (!pendingBackground_.empty() && raycaster);
       });
       if (task_.cancelled()) return;
       if (raycaster) prepare = std::exchange(pendingPrepare_, {});
@@ -252,6 +261,11 @@ void RenderWorker::run() {
       } else if (!nextVolume) {
         req = std::move(pendingView_);
         pendingView_.reset();
+      }
+      if (!req && !nextVolume && raycaster && !pendingBackground_.empty()) {
+        auto& [tag, params] = pendingBackground_.front();
+        req = Request{std::move(params), false, tag, false, {}, 0, true};
+        pendingBackground_.erase(pendingBackground_.begin());
       }
       // Only when nothing else waits: one time point to upload ahead.
       if (!nextVolume && !req && raycaster && !pendingPreload_.empty()) {
@@ -359,9 +373,10 @@ void RenderWorker::run() {
         reportError(e.what(), false);
       }
     }
-    if (overlayUpdate) overlay = std::move(overlayUpdate);
+    const bool newOverlay = overlayUpdate.has_value();
+    if (newOverlay) overlay = std::move(overlayUpdate);
     // A new raycaster may reuse a freed one's address: a new volume sets it again.
-    if (overlayUpdate || nextVolume) overlayOn = nullptr;
+    if (newOverlay || nextVolume) overlayOn = nullptr;
     if (raycaster && raycaster != overlayOn) {
       // Each raycaster (a time point) holds its own copy of the overlay on the device.
       overlayOn = raycaster;
@@ -396,6 +411,10 @@ void RenderWorker::run() {
         frame->image = raycaster->renderWithHits(req->params, frame->hits, &frame->stats);
       else
         raycaster->rendererFor(req->params).render(req->params, frame->image, &frame->stats);
+      if (req->background) {
+        if (callbacks_.background) task_.post([f = callbacks_.background, frame] { f(frame); });
+        continue;
+      }
       if (req->tag == 0) {
         view = frame->image;
         lastView = req->params;

@@ -51,6 +51,8 @@ struct RenderCallbacks {
   std::function<void(const std::string& deviceName)> deviceReady;
   // Kernel variants that prepare() builds in the background: LEFT still to build (0: done).
   std::function<void(int left)> preparing;
+  // A frame of requestBackground, with its tag.
+  std::function<void(std::shared_ptr<const Frame>)> background;
 };
 
 class RenderWorker {
@@ -90,6 +92,11 @@ class RenderWorker {
   // The view's sharp frame in BANDS (in order; empty or one: a whole frame), each band
   // posted as a Frame when it finishes.
   void requestBands(const RenderParams& params, std::vector<RowBand> bands);
+  // Low-priority frames (the preset gallery's pictures, tf_gallery.h), each (tag, params):
+  // rendered one at a time, in order, only while no view frame, export or volume waits, and
+  // posted through RenderCallbacks::background. A new call replaces the frames not yet
+  // started (an empty list cancels them).
+  void requestBackground(std::vector<std::pair<int, RenderParams>> frames);
   // Builds the kernel variants of PARAMS (frames likely soon: a drag, another mode) on a
   // low-priority thread of their own, in order, so that such a frame does not wait for the
   // compiler (issue 41 item 9: a variant took 2-3 s on PoCL). Frames render meanwhile. A new
@@ -139,12 +146,14 @@ class RenderWorker {
     bool withHits;
     std::vector<RowBand> bands;  // still to render; empty: the whole frame
     int bandsTotal = 0;
+    bool background = false;  // of requestBackground
   };
   // Renders REQ's bands into VIEW (the last view frame) until done or a newer view request
   // or volume arrives; what is left goes back as the pending view request unless replaced.
   void renderBands(Raycaster& raycaster, Request req, Image& view, const Volume* volume);
-  std::optional<Request> pendingView_;        // latest view frame wins
-  std::optional<Request> pendingExport_;      // exports are never replaced by view frames
+  std::optional<Request> pendingView_;    // latest view frame wins
+  std::optional<Request> pendingExport_;  // exports are never replaced by view frames
+  std::vector<std::pair<int, RenderParams>> pendingBackground_;  // in order
   std::vector<RenderParams> pendingPrepare_;  // for the render thread: to options
   std::vector<std::string> toBuild_;          // for the build thread: raycast options
   BackgroundTask task_;                       // cancelled: the loop ends

@@ -311,7 +311,7 @@ void MainWindow::buildMenus() {
   // Issue 35: shaping the dvr table on the volume's histogram.
   view->addAction("&Transfer function editor…", QKeySequence("Ctrl+T"), this,
                   [this] {
-                    if (!tfEditor_) tfEditor_ = new TfEditorDialog(models_, this);
+                    if (!tfEditor_) tfEditor_ = new TfEditorDialog(models_, scheduler_, this);
                     tfEditor_->show();
                     tfEditor_->raise();
                   })

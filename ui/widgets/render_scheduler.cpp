@@ -36,6 +36,7 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
     emit deviceReady(QString::fromStdString(name));
   };
   cb.preparing = [this](int left) { emit preparingChanged(left); };
+  cb.background = [this](std::shared_ptr<const Frame> f) { emit backgroundReady(std::move(f)); };
   worker_ = std::make_unique<RenderWorker>(device.toStdString(), cb, postTo(this));
   stateConnection_ = state_.changed.connect([this](unsigned what) {
     if (what != kSlices) requestFrame();  // the slice views' interpolation is not in 3D
@@ -152,6 +153,10 @@ std::vector<RenderParams> RenderScheduler::likelyFrames() const {
     out.push_back(planFrame(p, state_.quality(), size, true, h, &adaptive_.setting()));
   }
   return out;
+}
+
+void RenderScheduler::requestBackground(std::vector<std::pair<int, RenderParams>> frames) {
+  worker_->requestBackground(std::move(frames));
 }
 
 void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {

@@ -48,6 +48,9 @@ class RenderScheduler : public QObject {
   // The segmentation model changed: the 3D view's copy takes its edits (setSegmentation after
   // a load, updateSegmentation of the edited box after an edit) and a frame follows.
   void updateSegmentation(SegmentationModel& model);
+  // Low-priority frames behind the view's (the preset gallery's pictures): each (tag,
+  // params) as given, replacing the list not yet rendered; each arrives as backgroundReady.
+  void requestBackground(std::vector<std::pair<int, RenderParams>> frames);
   // Fused dvr: OVERLAY (null: none) with its table, raycast with the volume; a frame follows.
   void setOverlay(std::shared_ptr<const Volume> overlay, TransferFunction tf);
 
@@ -58,6 +61,7 @@ class RenderScheduler : public QObject {
   void bandReady(std::shared_ptr<const voxray::Frame> frame);
   void exportReady(std::shared_ptr<const voxray::Frame> frame);
   void pickReady(std::shared_ptr<const voxray::Frame> frame);
+  void backgroundReady(std::shared_ptr<const voxray::Frame> frame);
   void firstFullFrame();
   void statsChanged(double fps, double lastMs, bool interactive);
   void deviceReady(const QString& name);

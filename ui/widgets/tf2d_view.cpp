@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include <QColorDialog>
 #include <QContextMenuEvent>
@@ -9,6 +10,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QWheelEvent>
 
 #include "coupling.h"
 
@@ -17,7 +19,9 @@ namespace voxray::ui {
 namespace {
 
 constexpr double kMargin = 8.0;
-constexpr double kGrab = 6.0;  // pixels from a corner that still take its handle
+constexpr double kGrab = 6.0;    // pixels from a corner that still take its handle
+constexpr double kStrip = 16.0;  // the axes' strips beside the plot
+constexpr double kMinSpanHu = 1.0, kMinSpanG = 0.1, kMaxSpan = 1e6;  // how far the axes zoom
 
 QColor toQColor(glm::dvec3 c, double alpha = 1.0) {
   return QColor::fromRgbF(float(c.r), float(c.g), float(c.b), float(alpha));
@@ -33,7 +37,9 @@ Tf2dView::Tf2dView(TfEditorModel& model, QWidget* parent) : QWidget(parent), mod
       "The 2D transfer function over HU (across) and gradient magnitude in HU/mm (up), on the "
       "volume's 2D histogram: a boundary arcs up between the two materials it separates. Right "
       "click: add a rectangle or triangle, delete, colour. Drag a shape to move it, a corner "
-      "to resize it; Delete removes the selected one. Shapes replace the 1D curve in dvr");
+      "to resize it; Delete removes the selected one. Wheel: zoom (over an axis' strip: that "
+      "axis); drag an axis' strip or with the middle button: pan. Shapes replace the 1D curve "
+      "in dvr");
   onModelChange<>(this, model_.changed, [this] {
     if (selection_ && *selection_ >= model_.property().tf2d.primitives.size()) select(std::nullopt);
     update();
@@ -41,15 +47,14 @@ Tf2dView::Tf2dView(TfEditorModel& model, QWidget* parent) : QWidget(parent), mod
 }
 
 void Tf2dView::setHistogram(const Tf2dHistogram& h) {
+  histogram_ = h;
   if (h.empty()) {
     image_ = QImage();
-    huLo_ = -1024.0;
-    huHi_ = 3071.0;
-    gTop_ = 200.0;
+    fullHu_ = {-1024.0, 3071.0};
+    fullG_ = 200.0;
   } else {
-    huLo_ = h.huLo;
-    huHi_ = h.huHi;
-    gTop_ = h.gradientMax;
+    fullHu_ = {h.huLo, h.huHi};
+    fullG_ = h.gradientMax;
     std::vector<float> grey = h.logImage();
     image_ =
         QImage(Tf2dHistogram::kValueBins, Tf2dHistogram::kGradientBins, QImage::Format_Grayscale8);
@@ -60,31 +65,66 @@ void Tf2dView::setHistogram(const Tf2dHistogram& h) {
             uchar(std::lround(255.0 * grey[size_t(row) * Tf2dHistogram::kValueBins + size_t(c)]));
     }
   }
+  resetRanges();
+}
+
+void Tf2dView::setRanges(AxisRange hu, AxisRange g) {
+  if (!(hu.span() > 0.0) || !(g.span() > 0.0)) return;
+  hu_ = hu;
+  g_ = g;
   update();
 }
 
-QRectF Tf2dView::plotArea() const {
-  return QRectF(kMargin, kMargin, width() - 2 * kMargin, height() - 2 * kMargin);
+void Tf2dView::resetRanges() { setRanges(fullHu_, {0.0, fullG_}); }
+
+void Tf2dView::fitVisible() {
+  if (histogram_.empty()) return;
+  constexpr int kCols = Tf2dHistogram::kValueBins, kRows = Tf2dHistogram::kGradientBins;
+  std::vector<uint64_t> columns(kCols, 0), rows(kRows, 0);
+  for (int r = 0; r < kRows; ++r)
+    for (int c = 0; c < kCols; ++c) {
+      columns[size_t(c)] += histogram_.at(c, r);
+      rows[size_t(r)] += histogram_.at(c, r);
+    }
+  AxisRange hu = occupiedRange(columns, fullHu_.lo, fullHu_.hi, kVisibleFraction);
+  AxisRange g = occupiedRange(rows, 0.0, fullG_, kVisibleFraction);
+  setRanges(hu, {0.0, g.hi});
 }
 
+QRectF Tf2dView::plotArea() const {
+  return QRectF(kMargin + kStrip, kMargin, width() - 2 * kMargin - kStrip,
+                height() - 2 * kMargin - kStrip);
+}
+
+QRectF Tf2dView::huStrip() const {
+  QRectF a = plotArea();
+  return QRectF(a.left(), a.bottom(), a.width(), kStrip);
+}
+
+QRectF Tf2dView::gradientStrip() const {
+  QRectF a = plotArea();
+  return QRectF(a.left() - kStrip, a.top(), kStrip, a.height());
+}
+
+// The gradient axis runs up: from the plot's bottom over minus its height.
 double Tf2dView::xOf(double hu) const {
   QRectF a = plotArea();
-  return a.left() + (hu - huLo_) / (huHi_ - huLo_) * a.width();
+  return axisPixel(hu_, hu, a.left(), a.width());
 }
 
 double Tf2dView::yOf(double g) const {
   QRectF a = plotArea();
-  return a.bottom() - g / gTop_ * a.height();
+  return axisPixel(g_, g, a.bottom(), -a.height());
 }
 
 double Tf2dView::huAt(double x) const {
   QRectF a = plotArea();
-  return huLo_ + (x - a.left()) / a.width() * (huHi_ - huLo_);
+  return axisValue(hu_, x, a.left(), a.width());
 }
 
 double Tf2dView::gAt(double y) const {
   QRectF a = plotArea();
-  return (a.bottom() - y) / a.height() * gTop_;
+  return axisValue(g_, y, a.bottom(), -a.height());
 }
 
 void Tf2dView::select(std::optional<size_t> i) {
@@ -96,7 +136,7 @@ void Tf2dView::select(std::optional<size_t> i) {
 
 std::optional<Tf2dHit> Tf2dView::hitAt(QPointF pos) const {
   QRectF a = plotArea();
-  double huTol = kGrab / a.width() * (huHi_ - huLo_), gTol = kGrab / a.height() * gTop_;
+  double huTol = kGrab / a.width() * hu_.span(), gTol = kGrab / a.height() * g_.span();
   return tf2dHitTest(model_.property().tf2d, huAt(pos.x()), gAt(pos.y()), huTol, gTol);
 }
 
@@ -106,7 +146,7 @@ void Tf2dView::addAt(Tf2dShape shape, QPointF pos) {
   Tf2dPrimitive p;
   p.shape = shape;
   double hu = huAt(pos.x()), g = std::max(0.0, gAt(pos.y()));
-  double halfHu = (huHi_ - huLo_) / 16.0, halfG = gTop_ / 8.0;
+  double halfHu = hu_.span() / 16.0, halfG = g_.span() / 8.0;
   p.hu0 = hu - halfHu;
   p.hu1 = hu + halfHu;
   p.g0 = shape == Tf2dShape::Triangle ? 0.0 : std::max(0.0, g - halfG);
@@ -114,7 +154,7 @@ void Tf2dView::addAt(Tf2dShape shape, QPointF pos) {
   p.rgb = {1.0, 0.85, 0.6};
   p.opacity = 0.5;
   p.soft = 0.3;
-  select(model_.addTf2dPrimitive(p, gTop_));
+  select(model_.addTf2dPrimitive(p, fullG_));
 }
 
 QMenu* Tf2dView::menuAt(QPointF pos) {
@@ -159,7 +199,11 @@ void Tf2dView::paintEvent(QPaintEvent*) {
   painter.fillRect(rect(), palette().window());
   QRectF a = plotArea();
   painter.fillRect(a, Qt::black);
-  if (!image_.isNull()) painter.drawImage(a, image_);
+  painter.save();
+  painter.setClipRect(a);
+  if (!image_.isNull())
+    painter.drawImage(
+        QRectF(QPointF(xOf(fullHu_.lo), yOf(fullG_)), QPointF(xOf(fullHu_.hi), yOf(0.0))), image_);
   painter.setRenderHint(QPainter::Antialiasing);
   const auto& ps = model_.property().tf2d.primitives;
   for (size_t k = 0; k < ps.size(); ++k) {
@@ -191,21 +235,32 @@ void Tf2dView::paintEvent(QPaintEvent*) {
       painter.setBrush(Qt::NoBrush);
     }
   }
+  painter.restore();
   // Axis labels in white with a black shadow: readable on dark and bright bins alike.
   const QRectF labels = a.adjusted(4, 2, -4, -2);
-  const std::pair<int, QString> texts[] = {
-      {Qt::AlignLeft | Qt::AlignTop, QString("|∇| %1 HU/mm").arg(gTop_, 0, 'f', 0)},
-      {Qt::AlignLeft | Qt::AlignBottom, QString("%1 HU").arg(huLo_, 0, 'f', 0)},
-      {Qt::AlignRight | Qt::AlignBottom, QString("%1 HU").arg(huHi_, 0, 'f', 0)}};
-  for (const auto& [align, text] : texts) {
+  // The gradient axis' bottom value (0 until panned or zoomed) sits a line above the HU's.
+  const QRectF above = labels.adjusted(0, 0, 0, -painter.fontMetrics().height());
+  const std::tuple<QRectF, int, QString> texts[] = {
+      {labels, Qt::AlignLeft | Qt::AlignTop, QString("|∇| %1 HU/mm").arg(g_.hi, 0, 'f', 0)},
+      {above, Qt::AlignLeft | Qt::AlignBottom, QString("|∇| %1").arg(g_.lo, 0, 'f', 0)},
+      {labels, Qt::AlignLeft | Qt::AlignBottom, QString("%1 HU").arg(hu_.lo, 0, 'f', 0)},
+      {labels, Qt::AlignRight | Qt::AlignBottom, QString("%1 HU").arg(hu_.hi, 0, 'f', 0)}};
+  for (const auto& [box, align, text] : texts) {
     painter.setPen(Qt::black);
-    painter.drawText(labels.translated(1, 1), align, text);
+    painter.drawText(box.translated(1, 1), align, text);
     painter.setPen(Qt::white);
-    painter.drawText(labels, align, text);
+    painter.drawText(box, align, text);
   }
 }
 
 void Tf2dView::mousePressEvent(QMouseEvent* e) {
+  const QPointF pos = e->position();
+  const bool onHu = huStrip().contains(pos), onG = gradientStrip().contains(pos);
+  if (e->button() == Qt::MiddleButton || (e->button() == Qt::LeftButton && (onHu || onG))) {
+    const bool both = e->button() == Qt::MiddleButton;
+    pan_ = Pan{pos, hu_, g_, both || onHu, both || onG};
+    return;
+  }
   if (e->button() != Qt::LeftButton) return;
   drag_ = hitAt(e->position());
   select(drag_ ? std::optional<size_t>(drag_->index) : std::nullopt);
@@ -216,6 +271,13 @@ void Tf2dView::mousePressEvent(QMouseEvent* e) {
 }
 
 void Tf2dView::mouseMoveEvent(QMouseEvent* e) {
+  if (pan_) {
+    const QRectF a = plotArea();
+    const QPointF d = e->position() - pan_->from;
+    setRanges(pan_->panHu ? panByPixels(pan_->hu, d.x(), a.width()) : hu_,
+              pan_->panG ? panByPixels(pan_->g, d.y(), -a.height()) : g_);
+    return;
+  }
   if (!drag_) return;
   QPointF at = e->position();
   if (drag_->part == Tf2dPart::Body) {
@@ -229,7 +291,17 @@ void Tf2dView::mouseMoveEvent(QMouseEvent* e) {
   }
 }
 
+void Tf2dView::wheelEvent(QWheelEvent* e) {
+  const QPointF pos = e->position();
+  const bool onHu = huStrip().contains(pos), onG = gradientStrip().contains(pos);
+  const double f = wheelZoomFactor(e->angleDelta().y() / 120.0);
+  // Over one axis' strip: that axis; elsewhere (Ctrl or not): both, about the cursor.
+  setRanges(onG ? hu_ : zoomAbout(hu_, huAt(pos.x()), f, kMinSpanHu, kMaxSpan),
+            onHu ? g_ : zoomAbout(g_, gAt(pos.y()), f, kMinSpanG, kMaxSpan));
+}
+
 void Tf2dView::mouseReleaseEvent(QMouseEvent*) {
+  pan_.reset();
   if (!drag_) return;
   drag_.reset();
   model_.endGesture();

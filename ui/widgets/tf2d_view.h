@@ -3,8 +3,11 @@
 // histogram (Tf2dHistogram, log counts as grey) with the Tf2d's rectangles and triangles over
 // it (outline and translucent fill in their colour). Drag a body to move it, a corner handle to
 // resize it; the right-click menu adds a rectangle or triangle at the mouse, deletes, or picks
-// a colour; Delete removes the selected one. Edits go to the TfEditorModel (undo steps, the 3D
-// view follows); this widget keeps only how the axes are shown.
+// a colour; Delete removes the selected one. Both axes zoom (axis_zoom.h): the wheel over the
+// HU axis (the strip under the plot) or the gradient axis (the strip left of it) zooms that
+// axis, over the plot (with or without Ctrl) both, about the value under the cursor; a drag
+// along a strip pans its axis, a middle-button drag pans both. Edits go to the TfEditorModel
+// (undo steps, the 3D view follows); this widget keeps only how the axes are shown.
 #include <functional>
 #include <optional>
 
@@ -12,6 +15,7 @@
 #include <QMenu>
 #include <QWidget>
 
+#include "axis_zoom.h"
 #include "tf2d_edit.h"
 #include "tf2d_histogram.h"
 #include "tf_editor_model.h"
@@ -24,13 +28,22 @@ class Tf2dView : public QWidget {
 
   // The histogram sets both axes (HU: the volume's range; |gradient|: 0 ... its top). Empty:
   // no image, axes -1024 ... 3071 HU and 0 ... 200 HU/mm.
+  // Also resets both axes.
   void setHistogram(const Tf2dHistogram& h);
-  double huLo() const { return huLo_; }
-  double huHi() const { return huHi_; }
-  double gradientTop() const { return gTop_; }
+  double huLo() const { return hu_.lo; }
+  double huHi() const { return hu_.hi; }
+  double gradientLo() const { return g_.lo; }
+  double gradientTop() const { return g_.hi; }
+  void setRanges(AxisRange hu, AxisRange g);
+  // The histogram's whole axes, or where it holds voxels (occupiedRange of its column and
+  // row sums at kVisibleFraction; the gradient axis from 0).
+  void resetRanges();
+  void fitVisible();
 
   // Where things are drawn, in widget pixels (tests drag there).
   QRectF plotArea() const;
+  QRectF huStrip() const;        // under the plot: the HU axis' wheel and drag
+  QRectF gradientStrip() const;  // left of the plot: the gradient axis'
   double xOf(double hu) const;
   double yOf(double g) const;
   double huAt(double x) const;
@@ -52,6 +65,7 @@ class Tf2dView : public QWidget {
   void mouseMoveEvent(QMouseEvent* e) override;
   void mouseReleaseEvent(QMouseEvent* e) override;
   void keyPressEvent(QKeyEvent* e) override;
+  void wheelEvent(QWheelEvent* e) override;
   void contextMenuEvent(QContextMenuEvent* e) override;
 
  private:
@@ -60,7 +74,16 @@ class Tf2dView : public QWidget {
 
   TfEditorModel& model_;
   QImage image_;  // the log histogram, one pixel a bin, row 0 at the top (the highest |gradient|)
-  double huLo_ = -1024.0, huHi_ = 3071.0, gTop_ = 200.0;
+  Tf2dHistogram histogram_;
+  AxisRange hu_{-1024.0, 3071.0}, g_{0.0, 200.0};  // shown
+  AxisRange fullHu_{-1024.0, 3071.0};              // the histogram's
+  double fullG_ = 200.0;  // the histogram's gradient top: a new table's gradientMax
+  struct Pan {
+    QPointF from;
+    AxisRange hu, g;
+    bool panHu, panG;
+  };
+  std::optional<Pan> pan_;
   std::optional<size_t> selection_;
   std::optional<Tf2dHit> drag_;
   QPointF dragFrom_;

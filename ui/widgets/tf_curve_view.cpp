@@ -18,7 +18,9 @@ namespace {
 
 constexpr double kMargin = 8.0;
 constexpr double kBarHeight = 18.0;
-constexpr double kGrab = 6.0;  // pixels from a point that still take it
+constexpr double kAxisHeight = 16.0;                  // the HU labels' strip
+constexpr double kMinSpanHu = 1.0, kMaxSpanHu = 1e6;  // how far the axis zooms
+constexpr double kGrab = 6.0;                         // pixels from a point that still take it
 
 QColor toQColor(glm::dvec3 c) { return QColor::fromRgbF(float(c.r), float(c.g), float(c.b)); }
 
@@ -31,7 +33,8 @@ TfCurveView::TfCurveView(TfEditorModel& model, QWidget* parent) : QWidget(parent
   setToolTip(
       "Opacity over HU, on the volume's histogram. Click: add a point; drag: move it; right "
       "click or Delete: remove it. Colour bar: click adds a colour point, double click picks "
-      "its colour. Wheel: zoom the HU axis");
+      "its colour. Wheel: zoom the HU axis about the mouse; drag the HU axis (or the middle "
+      "button): pan");
   onModelChange<>(this, model_.changed, [this] {
     // Indices may have gone with an undo or a file: keep the selection only if it exists.
     if (selection_) {
@@ -57,9 +60,18 @@ void TfCurveView::setLogHistogram(bool on) {
 
 void TfCurveView::setHuRange(double lo, double hi) {
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return;
-  lo_ = lo;
-  hi_ = hi;
+  if (hu_ == AxisRange{lo, hi}) return;
+  hu_ = {lo, hi};
   update();
+  if (rangeChanged) rangeChanged();
+}
+
+double TfCurveView::huPerPixel() const { return hu_.span() / curveArea().width(); }
+
+void TfCurveView::fitVisible() {
+  if (histogram_.empty()) return;
+  AxisRange r = visibleHuRange(histogram_, slope_, intercept_);
+  setHuRange(r.lo, r.hi);
 }
 
 void TfCurveView::setOpacityTop(double top) {
@@ -68,7 +80,13 @@ void TfCurveView::setOpacityTop(double top) {
 }
 
 QRectF TfCurveView::curveArea() const {
-  return QRectF(kMargin, kMargin, width() - 2 * kMargin, height() - 3 * kMargin - kBarHeight);
+  return QRectF(kMargin, kMargin, width() - 2 * kMargin,
+                height() - 3 * kMargin - kBarHeight - kAxisHeight);
+}
+
+QRectF TfCurveView::axisStrip() const {
+  QRectF b = colorBar();
+  return QRectF(b.left(), b.bottom(), b.width(), kAxisHeight);
 }
 
 QRectF TfCurveView::colorBar() const {
@@ -78,7 +96,7 @@ QRectF TfCurveView::colorBar() const {
 
 double TfCurveView::xOf(double hu) const {
   QRectF a = curveArea();
-  return a.left() + (hu - lo_) / (hi_ - lo_) * a.width();
+  return axisPixel(hu_, hu, a.left(), a.width());
 }
 
 double TfCurveView::yOf(double opacity) const {
@@ -88,7 +106,7 @@ double TfCurveView::yOf(double opacity) const {
 
 double TfCurveView::huAt(double x) const {
   QRectF a = curveArea();
-  return lo_ + (x - a.left()) / a.width() * (hi_ - lo_);
+  return axisValue(hu_, x, a.left(), a.width());
 }
 
 double TfCurveView::opacityAt(double y) const {
@@ -140,7 +158,7 @@ void TfCurveView::paintEvent(QPaintEvent*) {
   QLinearGradient fill(area.left(), 0, area.right(), 0);
   for (int k = 0; k <= 32; ++k) {
     double f = k / 32.0;
-    QColor c = toQColor(colorAt(vp, lo_ + f * (hi_ - lo_)));
+    QColor c = toQColor(colorAt(vp, hu_.lo + f * hu_.span()));
     c.setAlpha(110);
     fill.setColorAt(f, c);
   }
@@ -177,6 +195,13 @@ void TfCurveView::paintEvent(QPaintEvent*) {
     p.drawPolygon(mark);
   }
   p.restore();
+  // The HU axis: its two ends and its middle.
+  const QRectF axis = axisStrip();
+  p.setPen(palette().windowText().color());
+  p.drawText(axis, Qt::AlignLeft | Qt::AlignVCenter, QString::number(hu_.lo, 'f', 0));
+  p.drawText(axis, Qt::AlignHCenter | Qt::AlignVCenter,
+             QString("%1 HU").arg(0.5 * (hu_.lo + hu_.hi), 0, 'f', 0));
+  p.drawText(axis, Qt::AlignRight | Qt::AlignVCenter, QString::number(hu_.hi, 'f', 0));
 }
 
 std::optional<TfCurveView::Selection> TfCurveView::pointAt(QPointF pos) const {
@@ -207,6 +232,11 @@ void TfCurveView::mousePressEvent(QMouseEvent* e) {
     }
     return;
   }
+  if (e->button() == Qt::MiddleButton ||
+      (e->button() == Qt::LeftButton && axisStrip().contains(pos))) {
+    pan_ = {pos.x(), hu_};
+    return;
+  }
   if (e->button() != Qt::LeftButton) return;
   model_.beginGesture();
   dragging_ = true;
@@ -218,6 +248,11 @@ void TfCurveView::mousePressEvent(QMouseEvent* e) {
 }
 
 void TfCurveView::mouseMoveEvent(QMouseEvent* e) {
+  if (pan_) {
+    AxisRange r = panByPixels(pan_->second, e->position().x() - pan_->first, curveArea().width());
+    setHuRange(r.lo, r.hi);
+    return;
+  }
   if (!dragging_ || !selection_) return;
   const QPointF pos = e->position();
   if (selection_->list == List::Opacity)
@@ -227,6 +262,7 @@ void TfCurveView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void TfCurveView::mouseReleaseEvent(QMouseEvent*) {
+  pan_.reset();
   if (!dragging_) return;
   dragging_ = false;
   model_.endGesture();
@@ -238,10 +274,10 @@ void TfCurveView::mouseDoubleClickEvent(QMouseEvent* e) {
 }
 
 void TfCurveView::wheelEvent(QWheelEvent* e) {
-  // Zoom about the HU under the cursor: 20 % per notch.
-  double at = huAt(e->position().x());
-  double f = std::pow(0.8, e->angleDelta().y() / 120.0);
-  setHuRange(at - (at - lo_) * f, at + (hi_ - at) * f);
+  // Over the curve, the axis or with Ctrl alike: the wheel has no other use here.
+  AxisRange r = zoomAbout(hu_, huAt(e->position().x()),
+                          wheelZoomFactor(e->angleDelta().y() / 120.0), kMinSpanHu, kMaxSpanHu);
+  setHuRange(r.lo, r.hi);
 }
 
 void TfCurveView::keyPressEvent(QKeyEvent* e) {

@@ -3,7 +3,8 @@
 // volume's histogram (TfCurveView), the selected point's numbers, the curve type, the opacity
 // unit distance, the HU axis, and files (Voxray .json, 3D Slicer .vp). Edits render at once.
 // A second tab edits the 2D transfer function (Tf2dView over the value x |gradient|
-// histogram, counted in the background the first time the tab shows a volume).
+// histogram, counted in the background the first time the tab shows a volume); a third is
+// the preset gallery (TfGalleryView: pictures of every preset on the volume).
 #include <memory>
 
 #include <QCheckBox>
@@ -19,12 +20,14 @@
 #include "tf2d_view.h"
 #include "tf_curve_view.h"
 #include "tf_editor_model.h"
+#include "tf_gallery_view.h"
 
 namespace voxray::ui {
 
 class TfEditorDialog : public QDialog {
  public:
-  TfEditorDialog(AppModels& models, QWidget* parent = nullptr);
+  // SCHEDULER renders the preset gallery's pictures (none: the tiles stay empty).
+  TfEditorDialog(AppModels& models, RenderScheduler* scheduler, QWidget* parent = nullptr);
   ~TfEditorDialog() override;
 
   TfEditorModel& model() { return *model_; }
@@ -42,13 +45,18 @@ class TfEditorDialog : public QDialog {
   QTabWidget& tabs() { return *tabs_; }
   // The 2D histogram's count is done (tests wait for it).
   bool tf2dHistogramReady() const { return tf2dReady_; }
+  TfGalleryView& gallery() { return *gallery_; }
+  // The gallery shows the built-in presets and DIR's (read again), the tab names DIR and
+  // what could not be read there. Not remembered (the Folder… button remembers its choice).
+  void usePresetFolder(const QString& dir);
 
  private:
   void countHistogram();
   void showSelection();
-  void fitVisible();
+  void fitCurve();
   void fitVolume();
   QWidget* make2dTab();
+  QWidget* makePresetsTab(RenderScheduler* scheduler);  // tf_gallery_tab.cpp
   void count2dHistogram();
   void show2dSelection();
 
@@ -72,6 +80,8 @@ class TfEditorDialog : public QDialog {
   // freed one's address is never taken for it.
   std::weak_ptr<const Volume> tf2dCounted_;
   BackgroundTask tf2dTask_;
+  TfGalleryView* gallery_;
+  QLabel *galleryStatus_, *galleryFolder_;
 };
 
 }  // namespace voxray::ui
