@@ -87,6 +87,7 @@ KernelSwitches kernelSwitches(const RenderParams& p, const KernelFacts& f) {
   s.LABELS = f.labels && p.mode == Mode::Dvr;
   // The levels live with the macro cells, and read the colour table alone (not the labels).
   s.OVERLAY = f.overlay && p.mode == Mode::Dvr;
+  s.SURFACES = f.surfaces && p.mode == Mode::Dvr;
   s.ADAPTIVE = s.ADAPTIVE && s.ESS && !s.LABELS && !s.OVERLAY;  // (nor the overlay)
   s.STORAGE_IMAGE = f.storageImage;
   s.SLABS = f.slabs;

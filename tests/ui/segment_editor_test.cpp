@@ -22,6 +22,7 @@
 #include "segment_panel.h"
 #include "slice_view.h"
 #include "study_state.h"
+#include "voxray/engine/camera.h"
 #include "voxray/io/orientation.h"
 #include "voxray/io/phantom.h"
 #include "voxray/io/raw_import.h"
@@ -250,6 +251,53 @@ class SegmentEditorTest : public QObject {
     QVERIFY(shown < allLit * 3 / 4);
     QVERIFY(std::abs(off - allLit) <= allLit / 50);  // back to the whole head (the blend tints it)
     QCOMPARE(hidden, 0);
+  }
+
+  // The list's "3D" choice (issue 34): a sphere painted in the air before the face shows
+  // nothing in the volume (air is transparent in the dvr); switched to Surface, the 3D frame
+  // changes, and only at the sphere's pixels (rays passing within its radius, plus the
+  // voxelisation's and smoothing's reach); Hidden gives the first frame back.
+  void surfaceChoiceChangesThe3DFrameAtTheSegment() {
+    models().render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Dvr; });
+    const uint8_t label = addSegment();
+    const glm::dvec3 centre(14, 6, 14);  // voxels of 4 mm: right, anterior, low; in the air
+    const double radiusMm = 20.0;
+    models().segmentation.paintSphere(centre, radiusMm, label);
+    const QImage inVolume = test::settledFrame(*fixture_.window);
+    auto* box = panel().findChild<QComboBox*>("segmentDisplay3d");
+    QVERIFY(box);
+    QCOMPARE(box->currentText(), QString("In volume"));
+    box->setCurrentIndex(box->findText("Surface"));
+    QCOMPARE(models().segmentation.segmentation().find(label)->display3d,
+             Segment::Display3d::Surface);
+    const QImage surface = test::changedFrame(*fixture_.window, inVolume);
+    QCOMPARE(surface.size(), inVolume.size());
+    // Each pixel's ray's distance from the sphere's centre (world: mm from the volume centre).
+    RenderParams p = models().render.params();
+    p.width = surface.width();
+    p.height = surface.height();
+    const ViewGeometry g = makeViewGeometry(*models().document.volume(), p);
+    const glm::dvec3 c = glm::inverse(g.worldToVoxel) * (centre - g.voxelCentre);
+    int changed = 0, changedOff = 0, inner = 0, innerChanged = 0;
+    for (int y = 0; y < p.height; ++y)
+      for (int x = 0; x < p.width; ++x) {
+        glm::dvec3 o, d;
+        g.ray(x, y, p.width, p.height, o, d);
+        const double dist = glm::length(glm::cross(c - o, d));
+        const bool differs = surface.pixel(x, y) != inVolume.pixel(x, y);
+        changed += differs;
+        // A voxel's half diagonal (3.5 mm) and a pixel (2.7 mm here) beyond the radius.
+        changedOff += differs && dist > radiusMm + 7.0;
+        if (dist < radiusMm - 7.0) inner += 1, innerChanged += differs;
+      }
+    qInfo("surface: %d pixels changed, %d beyond the sphere; %d of %d inner pixels", changed,
+          changedOff, innerChanged, inner);
+    QVERIFY(inner > 20);
+    QCOMPARE(innerChanged, inner);
+    QCOMPARE(changedOff, 0);
+    box->setCurrentIndex(box->findText("Hidden"));
+    const QImage hidden = test::changedFrame(*fixture_.window, surface);
+    QCOMPARE(test::differingPixels(hidden, inVolume), 0);
   }
 
   // The seeded-region click and voxray-cli segment --threshold --seed --connectivity give the

@@ -1,0 +1,132 @@
+#include "surface_field.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "surface_layer.h"  // kernels/: the block edge
+#include "voxray/io/parallel.h"
+
+namespace voxray {
+
+namespace {
+
+// Taps of a normalised Gaussian of SIGMA voxels out to 3 sigma (one tap at sigma 0).
+std::vector<float> gaussianTaps(float sigma) {
+  if (sigma <= 0.0f) return {1.0f};
+  const int radius = int(std::ceil(3.0f * sigma));
+  std::vector<float> w(size_t(2 * radius + 1));
+  float sum = 0.0f;
+  for (int i = -radius; i <= radius; ++i)
+    sum += w[size_t(i + radius)] = std::exp(-0.5f * float(i * i) / (sigma * sigma));
+  for (float& x : w) x /= sum;
+  return w;
+}
+
+// One separable pass along AXIS over a float grid of DIMS (clamped at the edges, where the
+// padding holds zeros).
+void blurAxis(std::vector<float>& g, glm::ivec3 dims, int axis, const std::vector<float>& taps) {
+  const int radius = int(taps.size() / 2);
+  const size_t stride = axis == 0 ? 1 : axis == 1 ? size_t(dims.x) : size_t(dims.x) * dims.y;
+  const int n = dims[axis];
+  // One line per index of the other two axes; lines of one z plane (or y row) go together.
+  const int a = axis == 0 ? 1 : 0, b = axis == 2 ? 1 : 2;
+  parallelFor(size_t(dims[b]), [&](size_t ib) {
+    std::vector<float> line(static_cast<size_t>(n));
+    for (int ia = 0; ia < dims[a]; ++ia) {
+      glm::ivec3 p(0);
+      p[a] = ia;
+      p[b] = int(ib);
+      const size_t base = (size_t(p.z) * dims.y + p.y) * dims.x + p.x;
+      for (int i = 0; i < n; ++i) line[size_t(i)] = g[base + size_t(i) * stride];
+      for (int i = 0; i < n; ++i) {
+        float s = 0.0f;
+        for (int k = -radius; k <= radius; ++k)
+          s += taps[size_t(k + radius)] * line[size_t(std::clamp(i + k, 0, n - 1))];
+        g[base + size_t(i) * stride] = s;
+      }
+    }
+  });
+}
+
+}  // namespace
+
+SurfaceField buildSurfaceField(const Segmentation& seg, uint8_t label, float sigmaVoxels) {
+  SurfaceField f;
+  f.label = label;
+  const glm::ivec3 d = seg.grid.dims;
+  // The segment's voxel box, a z plane per task.
+  std::vector<glm::ivec3> plo(size_t(d.z), glm::ivec3(INT32_MAX)), phi(size_t(d.z), glm::ivec3(-1));
+  parallelFor(size_t(d.z), [&](size_t z) {
+    const uint8_t* plane = seg.labels.data() + z * size_t(d.x) * size_t(d.y);
+    for (int y = 0; y < d.y; ++y)
+      for (int x = 0; x < d.x; ++x)
+        if (plane[size_t(y) * d.x + x] == label) {
+          plo[z] = glm::min(plo[z], glm::ivec3(x, y, int(z)));
+          phi[z] = glm::max(phi[z], glm::ivec3(x, y, int(z)));
+        }
+  });
+  glm::ivec3 lo(INT32_MAX), hi(-1);
+  for (int z = 0; z < d.z; ++z)
+    if (phi[size_t(z)].x >= 0) lo = glm::min(lo, plo[size_t(z)]), hi = glm::max(hi, phi[size_t(z)]);
+  if (hi.x < 0) return f;  // no voxel: no surface
+  const std::vector<float> taps = gaussianTaps(sigmaVoxels);
+  // Padded by the filter's reach plus one voxel of zeros, so that the field falls below 0.5
+  // inside its box and a ray never meets a surface at the box's faces. (Beyond the label
+  // map the field may reach outside it: the rays' clip box cuts it there.)
+  const int pad = int(taps.size() / 2) + 1;
+  f.lo = lo - pad;
+  f.dims = hi - lo + 1 + 2 * pad;
+  std::vector<float> g(size_t(f.dims.x) * f.dims.y * f.dims.z, 0.0f);
+  parallelFor(size_t(hi.z - lo.z + 1), [&](size_t k) {
+    const int z = lo.z + int(k);
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x)
+        if (seg.labels[seg.grid.index(x, y, z)] == label) {
+          const glm::ivec3 q = glm::ivec3(x, y, z) - f.lo;
+          g[(size_t(q.z) * f.dims.y + q.y) * f.dims.x + q.x] = 1.0f;
+        }
+  });
+  // A separable Gaussian by hand: the engine links no ITK, and three passes of 7 taps over the
+  // segment's box are a few lines.
+  if (taps.size() > 1)
+    for (int axis = 0; axis < 3; ++axis) blurAxis(g, f.dims, axis, taps);
+  f.values.resize(g.size());
+  for (size_t i = 0; i < g.size(); ++i)
+    f.values[i] = uint8_t(std::lround(std::clamp(g[i], 0.0f, 1.0f) * 255.0f));
+  // The block flags: a block may hold the level where one of its voxels, or of the next
+  // voxel along each axis (trilinear reads reach them), is at least 128 (0.5 rounds to it).
+  constexpr int kBlock = SURFACE_BLOCK;
+  f.blockDims = (f.dims + kBlock - 1) / kBlock;
+  f.blocks.assign(size_t(f.blockDims.x) * f.blockDims.y * f.blockDims.z, 0);
+  parallelFor(size_t(f.blockDims.z), [&](size_t bz) {
+    for (int by = 0; by < f.blockDims.y; ++by)
+      for (int bx = 0; bx < f.blockDims.x; ++bx) {
+        const glm::ivec3 b(bx, by, int(bz));
+        const glm::ivec3 a = b * kBlock, e = glm::min(a + kBlock, f.dims - 1);
+        bool any = false;
+        for (int z = a.z; z <= e.z && !any; ++z)
+          for (int y = a.y; y <= e.y && !any; ++y)
+            for (int x = a.x; x <= e.x && !any; ++x)
+              any = f.values[(size_t(z) * f.dims.y + y) * f.dims.x + x] >= 128;
+        f.blocks[(size_t(b.z) * f.blockDims.y + b.y) * f.blockDims.x + b.x] = any ? 1 : 0;
+      }
+  });
+  return f;
+}
+
+bool surfaceFieldTouched(const SurfaceField& field, const Segmentation& seg, glm::ivec3 lo,
+                         glm::ivec3 hi) {
+  if (!field.empty()) {
+    const glm::ivec3 flo = field.lo, fhi = field.lo + field.dims - 1;
+    if (glm::all(glm::lessThanEqual(lo, fhi)) && glm::all(glm::lessThanEqual(flo, hi))) return true;
+  }
+  lo = glm::max(lo, glm::ivec3(0));
+  hi = glm::min(hi, seg.grid.dims - 1);
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x)
+        if (seg.labels[seg.grid.index(x, y, z)] == field.label) return true;
+  return false;
+}
+
+}  // namespace voxray
