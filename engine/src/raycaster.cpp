@@ -61,7 +61,7 @@ struct Raycaster::Impl {
   // fields the device holds, in their order, and the pass's layer.
   std::map<uint8_t, SurfaceField> surfaceFields;
   float surfaceSigma = kSurfaceSigmaVoxels;
-  int surfaceBuilds = 0;
+  int surfaceBuilds = 0;  // whole builds (an edit inside a field's box filters it again)
   std::vector<uint8_t> surfacesOnDevice;
   bool surfaceFieldsChanged = true;
   cl::Buffer surfaceFieldBuffer, surfaceGeoBuffer, surfaceColourBuffer, surfaceLayer, surfaceProbe;
@@ -335,12 +335,19 @@ void Raycaster::updateSegmentation(const Segmentation& seg, glm::ivec3 lo, glm::
   lo = glm::clamp(lo, glm::ivec3(0), m.volume.dims - 1);
   hi = glm::clamp(hi, glm::ivec3(0), m.volume.dims - 1);
   if (glm::any(glm::greaterThan(lo, hi))) return m.buildSurfaceFields(seg);
-  // Fields the edit may have changed go, and are built again (a surface segment's) below.
+  // Fields the edit may have changed: filtered again around the box, or, where the segment grew
+  // out of the box a field was built over, dropped and built again (a surface segment's) below.
   for (auto it = m.surfaceFields.begin(); it != m.surfaceFields.end();) {
-    if (surfaceFieldTouched(it->second, seg, lo, hi))
-      it = m.surfaceFields.erase(it), m.surfaceFieldsChanged = true;
-    else
+    if (!surfaceFieldTouched(it->second, seg, lo, hi)) {
       ++it;
+      continue;
+    }
+    m.surfaceFieldsChanged = true;
+    if (updateSurfaceField(it->second, seg, lo, hi)) {
+      ++it;
+    } else {
+      it = m.surfaceFields.erase(it);
+    }
   }
   m.buildSurfaceFields(seg);
   // Whole planes lo.z ... hi.z: one contiguous write (a box's rows would be many small ones).

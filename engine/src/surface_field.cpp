@@ -48,6 +48,65 @@ void blurAxis(std::vector<float>& g, glm::ivec3 dims, int axis, const std::vecto
   });
 }
 
+// The block flags of FIELD for blocks BLO ... BHI (inclusive): a block may hold the level where
+// one of its voxels, or of the next voxel along each axis (trilinear reads reach them), is at
+// least 128 (0.5 rounds to it).
+void flagBlocks(SurfaceField& f, glm::ivec3 blo, glm::ivec3 bhi) {
+  constexpr int kBlock = SURFACE_BLOCK;
+  parallelFor(size_t(bhi.z - blo.z + 1), [&](size_t k) {
+    const int bz = blo.z + int(k);
+    for (int by = blo.y; by <= bhi.y; ++by)
+      for (int bx = blo.x; bx <= bhi.x; ++bx) {
+        const glm::ivec3 b(bx, by, bz);
+        const glm::ivec3 a = b * kBlock, e = glm::min(a + kBlock, f.dims - 1);
+        bool any = false;
+        for (int z = a.z; z <= e.z && !any; ++z)
+          for (int y = a.y; y <= e.y && !any; ++y)
+            for (int x = a.x; x <= e.x && !any; ++x)
+              any = f.values[(size_t(z) * f.dims.y + y) * f.dims.x + x] >= 128;
+        f.blocks[(size_t(b.z) * f.blockDims.y + b.y) * f.blockDims.x + b.x] = any ? 1 : 0;
+      }
+  });
+}
+
+// The field's values over its voxels RLO ... RHI (field coordinates, inclusive) from SEG's mask:
+// the mask over that box and the filter's reach (clamped to the field's box, as a whole build
+// clamps), filtered, and the box's part written back. Each separable pass reads along its own
+// axis only, so the box's values are a whole build's.
+void filterRegion(SurfaceField& f, const Segmentation& seg, const std::vector<float>& taps,
+                  glm::ivec3 rlo, glm::ivec3 rhi) {
+  const int radius = int(taps.size() / 2);
+  const glm::ivec3 slo = glm::max(rlo - radius, glm::ivec3(0));
+  const glm::ivec3 shi = glm::min(rhi + radius, f.dims - 1);
+  const glm::ivec3 sd = shi - slo + 1;
+  std::vector<float> g(size_t(sd.x) * sd.y * sd.z, 0.0f);
+  const glm::ivec3 vd = seg.grid.dims;
+  parallelFor(size_t(sd.z), [&](size_t k) {
+    for (int y = 0; y < sd.y; ++y)
+      for (int x = 0; x < sd.x; ++x) {
+        const glm::ivec3 p = glm::ivec3(x, y, int(k)) + slo + f.lo;  // in the label map
+        if (glm::any(glm::lessThan(p, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(p, vd)))
+          continue;
+        if (seg.labels[seg.grid.index(p.x, p.y, p.z)] == f.label)
+          g[(k * sd.y + size_t(y)) * sd.x + size_t(x)] = 1.0f;
+      }
+  });
+  // A separable Gaussian by hand: the engine links no ITK, and three passes of a few taps over
+  // the segment's box are a few lines.
+  if (taps.size() > 1)
+    for (int axis = 0; axis < 3; ++axis) blurAxis(g, sd, axis, taps);
+  parallelFor(size_t(rhi.z - rlo.z + 1), [&](size_t k) {
+    const int z = rlo.z + int(k);
+    for (int y = rlo.y; y <= rhi.y; ++y)
+      for (int x = rlo.x; x <= rhi.x; ++x) {
+        const glm::ivec3 q = glm::ivec3(x, y, z) - slo;
+        const float v = g[(size_t(q.z) * sd.y + q.y) * sd.x + q.x];
+        f.values[(size_t(z) * f.dims.y + y) * f.dims.x + x] =
+            uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+      }
+  });
+}
+
 }  // namespace
 
 SurfaceField buildSurfaceField(const Segmentation& seg, uint8_t label, float sigmaVoxels) {
@@ -76,42 +135,40 @@ SurfaceField buildSurfaceField(const Segmentation& seg, uint8_t label, float sig
   const int pad = int(taps.size() / 2) + 1;
   f.lo = lo - pad;
   f.dims = hi - lo + 1 + 2 * pad;
-  std::vector<float> g(size_t(f.dims.x) * f.dims.y * f.dims.z, 0.0f);
-  parallelFor(size_t(hi.z - lo.z + 1), [&](size_t k) {
-    const int z = lo.z + int(k);
+  f.coreLo = lo;
+  f.coreHi = hi;
+  f.sigma = sigmaVoxels;
+  f.values.assign(size_t(f.dims.x) * f.dims.y * f.dims.z, 0);
+  filterRegion(f, seg, taps, glm::ivec3(0), f.dims - 1);
+  f.blockDims = (f.dims + SURFACE_BLOCK - 1) / SURFACE_BLOCK;
+  f.blocks.assign(size_t(f.blockDims.x) * f.blockDims.y * f.blockDims.z, 0);
+  flagBlocks(f, glm::ivec3(0), f.blockDims - 1);
+  return f;
+}
+
+bool updateSurfaceField(SurfaceField& f, const Segmentation& seg, glm::ivec3 lo, glm::ivec3 hi) {
+  if (f.empty()) return false;
+  lo = glm::max(lo, glm::ivec3(0));
+  hi = glm::min(hi, seg.grid.dims - 1);
+  if (glm::any(glm::greaterThan(lo, hi))) return true;  // nothing edited
+  for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x)
-        if (seg.labels[seg.grid.index(x, y, z)] == label) {
-          const glm::ivec3 q = glm::ivec3(x, y, z) - f.lo;
-          g[(size_t(q.z) * f.dims.y + q.y) * f.dims.x + q.x] = 1.0f;
-        }
-  });
-  // A separable Gaussian by hand: the engine links no ITK, and three passes of 7 taps over the
-  // segment's box are a few lines.
-  if (taps.size() > 1)
-    for (int axis = 0; axis < 3; ++axis) blurAxis(g, f.dims, axis, taps);
-  f.values.resize(g.size());
-  for (size_t i = 0; i < g.size(); ++i)
-    f.values[i] = uint8_t(std::lround(std::clamp(g[i], 0.0f, 1.0f) * 255.0f));
-  // The block flags: a block may hold the level where one of its voxels, or of the next
-  // voxel along each axis (trilinear reads reach them), is at least 128 (0.5 rounds to it).
-  constexpr int kBlock = SURFACE_BLOCK;
-  f.blockDims = (f.dims + kBlock - 1) / kBlock;
-  f.blocks.assign(size_t(f.blockDims.x) * f.blockDims.y * f.blockDims.z, 0);
-  parallelFor(size_t(f.blockDims.z), [&](size_t bz) {
-    for (int by = 0; by < f.blockDims.y; ++by)
-      for (int bx = 0; bx < f.blockDims.x; ++bx) {
-        const glm::ivec3 b(bx, by, int(bz));
-        const glm::ivec3 a = b * kBlock, e = glm::min(a + kBlock, f.dims - 1);
-        bool any = false;
-        for (int z = a.z; z <= e.z && !any; ++z)
-          for (int y = a.y; y <= e.y && !any; ++y)
-            for (int x = a.x; x <= e.x && !any; ++x)
-              any = f.values[(size_t(z) * f.dims.y + y) * f.dims.x + x] >= 128;
-        f.blocks[(size_t(b.z) * f.blockDims.y + b.y) * f.blockDims.x + b.x] = any ? 1 : 0;
-      }
-  });
-  return f;
+        if (seg.labels[seg.grid.index(x, y, z)] == f.label &&
+            (glm::any(glm::lessThan(glm::ivec3(x, y, z), f.coreLo)) ||
+             glm::any(glm::greaterThan(glm::ivec3(x, y, z), f.coreHi))))
+          return false;  // grown out of its box
+  const std::vector<float> taps = gaussianTaps(f.sigma);
+  const int radius = int(taps.size() / 2);
+  const glm::ivec3 rlo = glm::max(lo - radius - f.lo, glm::ivec3(0));
+  const glm::ivec3 rhi = glm::min(hi + radius - f.lo, f.dims - 1);
+  if (glm::any(glm::greaterThan(rlo, rhi))) return true;  // beyond its reach
+  filterRegion(f, seg, taps, rlo, rhi);
+  // Blocks whose voxels (and next ones) meet the region.
+  const glm::ivec3 blo = glm::max(rlo - 1, glm::ivec3(0)) / SURFACE_BLOCK;
+  const glm::ivec3 bhi = rhi / SURFACE_BLOCK;
+  flagBlocks(f, blo, glm::min(bhi, f.blockDims - 1));
+  return true;
 }
 
 bool surfaceFieldTouched(const SurfaceField& field, const Segmentation& seg, glm::ivec3 lo,

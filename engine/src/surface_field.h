@@ -21,6 +21,10 @@ struct SurfaceField {
   // Per SURFACE_BLOCK^3 voxels (kernels/surface_layer.h) 1 where the 0.5 level may lie.
   glm::ivec3 blockDims{0};
   std::vector<uint8_t> blocks;
+  // What it was built from: the segment's voxel box then (the field's box less its padding)
+  // and the sigma.
+  glm::ivec3 coreLo{0}, coreHi{-1};
+  float sigma = 0.0f;
   bool empty() const { return values.empty(); }
 };
 
@@ -37,6 +41,13 @@ constexpr float kSurfaceSigmaVoxels = 1.25f;
 // compare with). Runs on parallelFor's threads (the caller is the render thread, never the GUI).
 SurfaceField buildSurfaceField(const Segmentation& seg, uint8_t label,
                                float sigmaVoxels = kSurfaceSigmaVoxels);
+
+// After an edit of the label map in the box LO ... HI (inclusive): FIELD's values again over the
+// box and the filter's reach around it, equal to a new build's there, when the segment's voxels
+// in the box lie inside the box FIELD was built over (a paint dab on a large segment costs its
+// own neighbourhood, not the segment). False, FIELD unchanged, when they do not (the segment
+// grew out of its box: build it again).
+bool updateSurfaceField(SurfaceField& field, const Segmentation& seg, glm::ivec3 lo, glm::ivec3 hi);
 
 // Whether an edit of the label map in the box LO ... HI (inclusive) may change FIELD: the box
 // meets its padded box, or holds its label now (the segment grew outside it).

@@ -77,8 +77,7 @@ TEST(SegmentDisplay3d, TheSessionKeepsItAndOldSessionsShowInTheVolume) {
     sessionFromJson(damaged.dump(), "s.json");
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("segments[1].display-3d must be \"volume\", \"surface\" or "
-                                    "\"hidden\""));
+    EXPECT_THAT(e.what(), HasSubstr("segments[1].display-3d must be volume, surface or hidden"));
   }
 }
 

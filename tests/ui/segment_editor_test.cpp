@@ -665,6 +665,57 @@ class SegmentEditorTest : public QObject {
     QTest::qWait(500);
     QVERIFY(fixture_.window->grab().save(shot));
   }
+
+  // The README's surface figure: the same skull, its 3D display Surface (the list's 3D column),
+  // the dvr hiding the skull's voxels (Hide) so that the surface shows alone.
+  void readmeSurfaceScreenshot() {
+    const QString shot = qEnvironmentVariable("VOXRAY_SEGMENT_SURFACE_SHOT");
+    if (shot.isEmpty())
+      QSKIP("set VOXRAY_SEGMENT_SURFACE_SHOT=PATH to write the README's surface screenshot");
+    RawLayout l;  // as readmeScreenshot
+    l.dims = {256, 256, 0};
+    l.type = SampleType::I16;
+    l.order = ByteOrder::Big;
+    l.spacingMm = {1.0, 1.0, 2.0};
+    l.slope = 1.0;
+    l.intercept = -1024.0;
+    l.direction = directionFromAxesCode("LPI");
+    auto v = std::make_shared<const Volume>(
+        importRaw(std::string(VOXRAY_DATA_DIR) + "/stanford/CThead", l));
+    Quality q = models().render.quality();
+    q.resolution = {0, 0};
+    models().render.setQuality(q);
+    fixture_.window->resize(1900, 1040);
+    openStudy(models(), v, "CThead");
+    models().render.update(kAppearance | kCamera, [](RenderParams& p) {
+      p.mode = Mode::Dvr;
+      p.preset = "CT-Bone";
+      p.camera.azimuthDeg = 30.0;
+    });
+    const uint8_t label = addSegment();
+    models().segmentation.rename(label, "Skull");
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Threshold;
+      s.range = {300, 3000};
+    });
+    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
+    panel()
+        .findChild<QComboBox*>("segmentOperation")
+        ->setCurrentIndex(int(MaskOperation::KeepLargest));
+    panel().findChild<QPushButton*>("segmentApplyOperation")->click();
+    setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::None; });
+    models().segmentation.setColour(label, {0.95f, 0.75f, 0.35f});
+    auto* display = panel().findChild<QComboBox*>("segmentDisplay3d");
+    display->setCurrentIndex(display->findText("Surface"));
+    panel().findChild<QComboBox*>("segmentMask3d")->setCurrentIndex(int(MaskChoice::Hide));
+    panel().updateStatistics();
+    fixture_.window->segmentDock()->show();
+    fixture_.window->segmentDock()->raise();
+    QVERIFY(errors_.isEmpty());
+    test::settledFrame(*fixture_.window);
+    QTest::qWait(500);
+    QVERIFY(fixture_.window->grab().save(shot));
+  }
 };
 
 }  // namespace voxray::ui

@@ -134,7 +134,7 @@ Segmentation segmentationFromJson(const nlohmann::ordered_json& j) {
     seg.visible = visible.get<bool>();
     if (e.contains("display-3d")) {  // optional: older sessions show every segment in the volume
       const auto d = parseDisplay3d(text(e.at("display-3d"), f + ".display-3d"));
-      if (!d) wrong(f + ".display-3d", "must be \"volume\", \"surface\" or \"hidden\"");
+      if (!d) wrong(f + ".display-3d", "must be volume, surface or hidden");
       seg.display3d = *d;
     }
     seg.category = codeFrom(member(e, "category", f + ".category"), f + ".category");
