@@ -14,6 +14,7 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 
@@ -711,9 +712,21 @@ class SegmentEditorTest : public QObject {
     panel().updateStatistics();
     fixture_.window->segmentDock()->show();
     fixture_.window->segmentDock()->raise();
+    // The list scrolled to its 3D column.
+    auto* list = panel().findChild<QTableWidget*>("segmentList");
+    list->scrollToItem(list->item(0, list->columnCount() - 2), QAbstractItemView::PositionAtCenter);
+    list->horizontalScrollBar()->setValue(list->horizontalScrollBar()->maximum());
     QVERIFY(errors_.isEmpty());
-    test::settledFrame(*fixture_.window);
-    QTest::qWait(500);
+    // The surface variant's build and the skull's field come before its first frame: wait for
+    // 10 s without a frame or a band of one (a sharp frame comes in bands).
+    QSignalSpy frames(&fixture_.window->scheduler(), &RenderScheduler::frameReady);
+    QSignalSpy bands(&fixture_.window->scheduler(), &RenderScheduler::bandReady);
+    for (int quiet = 0; quiet < 100;) {
+      const qsizetype seen = frames.size() + bands.size();
+      QTest::qWait(100);
+      quiet = frames.size() + bands.size() == seen ? quiet + 1 : 0;
+    }
+    QCoreApplication::processEvents();
     QVERIFY(fixture_.window->grab().save(shot));
   }
 };
