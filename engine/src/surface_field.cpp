@@ -23,26 +23,42 @@ std::vector<float> gaussianTaps(float sigma) {
 }
 
 // One separable pass along AXIS over a float grid of DIMS (clamped at the edges, where the
-// padding holds zeros).
+// padding holds zeros). Along y and z whole x rows are combined (contiguous, vectorised) rather
+// than one strided line at a time.
 void blurAxis(std::vector<float>& g, glm::ivec3 dims, int axis, const std::vector<float>& taps) {
   const int radius = int(taps.size() / 2);
-  const size_t stride = axis == 0 ? 1 : axis == 1 ? size_t(dims.x) : size_t(dims.x) * dims.y;
   const int n = dims[axis];
-  // One line per index of the other two axes; lines of one z plane (or y row) go together.
-  const int a = axis == 0 ? 1 : 0, b = axis == 2 ? 1 : 2;
-  parallelFor(size_t(dims[b]), [&](size_t ib) {
-    std::vector<float> line(static_cast<size_t>(n));
-    for (int ia = 0; ia < dims[a]; ++ia) {
-      glm::ivec3 p(0);
-      p[a] = ia;
-      p[b] = int(ib);
-      const size_t base = (size_t(p.z) * dims.y + p.y) * dims.x + p.x;
-      for (int i = 0; i < n; ++i) line[size_t(i)] = g[base + size_t(i) * stride];
+  const size_t nx = size_t(dims.x);
+  if (axis == 0) {
+    parallelFor(size_t(dims.y) * size_t(dims.z), [&](size_t line) {
+      float* row = g.data() + line * nx;
+      std::vector<float> src(row, row + nx);
       for (int i = 0; i < n; ++i) {
         float s = 0.0f;
         for (int k = -radius; k <= radius; ++k)
-          s += taps[size_t(k + radius)] * line[size_t(std::clamp(i + k, 0, n - 1))];
-        g[base + size_t(i) * stride] = s;
+          s += taps[size_t(k + radius)] * src[size_t(std::clamp(i + k, 0, n - 1))];
+        row[i] = s;
+      }
+    });
+    return;
+  }
+  // The rows of one y (axis z) or one z (axis y), n of them `stride` floats apart.
+  const size_t stride = axis == 1 ? nx : nx * size_t(dims.y);
+  const int other = axis == 1 ? dims.z : dims.y;
+  const size_t otherStep = axis == 1 ? nx * size_t(dims.y) : nx;
+  parallelFor(size_t(other), [&](size_t o) {
+    float* base = g.data() + o * otherStep;
+    std::vector<float> src(size_t(n) * nx);
+    for (int i = 0; i < n; ++i)
+      std::copy(base + size_t(i) * stride, base + size_t(i) * stride + nx,
+                src.begin() + std::ptrdiff_t(size_t(i) * nx));
+    for (int i = 0; i < n; ++i) {
+      float* out = base + size_t(i) * stride;
+      std::fill(out, out + nx, 0.0f);
+      for (int k = -radius; k <= radius; ++k) {
+        const float w = taps[size_t(k + radius)];
+        const float* in = src.data() + size_t(std::clamp(i + k, 0, n - 1)) * nx;
+        for (size_t x = 0; x < nx; ++x) out[x] += w * in[x];
       }
     }
   });
