@@ -257,9 +257,13 @@ TEST(Surfaces, ASurfaceInsideAnOpaqueDvrBallIsNotSeen) {
   RenderParams p = test::ballView(Mode::Dvr);
   p.transferFunction = {
       {-1000.0, {1.0, 1.0, 1.0, 0.0}}, {0.0, {1.0, 1.0, 1.0, 0.0}}, {500.0, {1.0, 0.2, 0.2, 1.0}}};
-  for (bool packets : {true, false}) {
-    SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
-    Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
+  // Packets, one ray per work-item, and the volume as an image (the GPUs' storage, one ray per
+  // work-item) where the device has images.
+  for (int path = 0; path < 3; ++path) {
+    const bool packets = path == 0, image = path == 2;
+    if (image && !test::pocl().device().imageSupport) continue;
+    SCOPED_TRACE(packets ? "packets" : image ? "image3d" : "one ray per work-item");
+    Raycaster rc(test::pocl(), v, image ? VolumeStorage::Image3d : VolumeStorage::Buffer);
     RaycasterOptions o;
     o.packets = packets;
     rc.setOptions(o);
