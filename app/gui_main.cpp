@@ -120,7 +120,8 @@ int main(int argc, char** argv) {
   // own threads), then for the fused 3D frame.
   auto extrasShown = [&] {
     return (options.overlay.empty() || models->fusion.overlay()) &&
-           (options.prior.empty() || (window->compareView() && window->compareView()->hasPrior()));
+           (options.prior.empty() || (window->compareView() && window->compareView()->hasPrior() &&
+                                      !window->compareView()->moving3dView().lastFrame().isNull()));
   };
   if (!options.screenshot.empty() || options.quitAfterFirstFrame) {
     QObject::connect(&window->scheduler(), &RenderScheduler::firstFullFrame, window.get(), [&] {

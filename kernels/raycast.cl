@@ -43,8 +43,25 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
   else if (MODE == 1)
     dvr_packet(vol, P, lut, out, leap, range, count, get_global_id(0),
                get_global_id(1) PACKET_HITS_ARG LABEL_PASS OVERLAY_PASS SURFACE_PASS);
-  else
+  else {
     mip_packet(vol, P, out, leap, range, count, get_global_id(0), get_global_id(1));
+#if OVERLAY
+    // Fused mip: each of the packets' pixels (pixel_raysN's layout) takes the overlay over
+    // its grey, one ray at a time (overlay_mip).
+    for (int y = 0; y < MIP_HALVES * PACKET_ROWS; ++y)
+      for (int x = 0; x < 4; ++x) {
+        int px = 4 * (int)get_global_id(0) + x,
+            py = MIP_HALVES * PACKET_ROWS * (int)get_global_id(1) + y;
+        Ray r;
+        float3 ow, dw;
+        if (px >= P->image.x || py >= P->image.y || pixel_ray(P, px, py, &r, &ow, &dw) <= -2)
+          continue;
+        __global uchar4* o = &out[py * P->image.x + px];
+        *o = to_rgba8(
+            overlay_mip(ovol, olut, ocells, ogeo, P, &r, convert_float3((*o).xyz) / 255.0f));
+      }
+#endif
+  }
 #if HIT_OUTPUT
   if (MODE == 2)  // no pixel of a mip frame has a hit
     for (int h = 0; h < MIP_HALVES; ++h)
@@ -71,8 +88,12 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
                         &hit
 #endif
                             LABEL_PASS OVERLAY_PASS SURFACE_PASS);
-    else
+    else {
       color = march_mip(VOLUME, P, leap, range, &r, &samples);
+#if OVERLAY
+      color = overlay_mip(ovol, olut, ocells, ogeo, P, &r, color);
+#endif
+    }
   }
   out[py * width + px] = to_rgba8(color);
   if (COUNT_SAMPLES) atomic_add(&count[(px ^ py) & 63], samples);

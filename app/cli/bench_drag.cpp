@@ -1,24 +1,68 @@
 #include "bench_drag.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
+#include "clip_box_math.h"
 #include "render_state_model.h"
+#include "voxray/io/error.h"
 #include "voxray/io/statistics.h"
 
 namespace voxray::cli {
 
+DragOption parseDragOption(const std::string& text) {
+  DragOption o;
+  std::string count = text;
+  if (text.rfind("clip", 0) == 0) {
+    o.motion = DragMotion::ClipFace;
+    o.frames = DragOption::kClipDragFrames;
+    count = text.size() > 5 && text[4] == ':' ? text.substr(5) : text == "clip" ? "" : "x";
+  }
+  if (!count.empty()) {
+    char* end = nullptr;
+    const long n = std::strtol(count.c_str(), &end, 10);
+    if (*end != '\0' || n < 1 || n > 100000)
+      throw inputError(
+          "--drag: expected a frame count 1..100000 (a rotation), clip or clip:N "
+          "(a clip-box drag), got '" +
+          text + "'");
+    o.frames = int(n);
+  }
+  return o;
+}
+
+ClipBox clipDragBox(int i, int frames) {
+  // A triangle wave: in to half the extent over the first half of the frames, back out over
+  // the second, as a user drags a face in to look and lets it back.
+  const double half = std::max(1.0, std::floor(frames / 2.0));
+  const double t = i <= half ? i / half : std::max(0.0, (frames - 1 - i) / half);
+  ClipBox box;
+  setClipFace(box, 2, 0.5 * t);
+  return box;
+}
+
 DragReplay replayDrag(Raycaster& rc, const RenderParams& base, const glm::ivec2& view,
-                      double minSpacingMm, Orbit orbit, int frames, double targetFps) {
+                      double minSpacingMm, Orbit orbit, int frames, double targetFps,
+                      DragMotion motion) {
   AdaptiveQuality adaptive(targetFps, dragPresetSetting());
   RenderParams b = base;
   Image image;
   DragReplay d;
+  d.motion = motion;
+  // The drag's first frame may classify (the drag preset's own step): count from the second
+  // frame on, once the tables stand for this classification.
+  int classifiedBefore = 0;
   for (int i = 0; i < frames; ++i) {
-    orbitCamera(b.camera, orbit, i, 180);
+    if (motion == DragMotion::Rotation)
+      orbitCamera(b.camera, orbit, i, 180);
+    else
+      b.clip = clipDragBox(i, frames);
     const RenderParams p = planFrame(b, {}, view, true, minSpacingMm, &adaptive.setting());
     FrameStats stats;
     rc.rendererFor(p).render(p, image, &stats);
+    if (i == 0) classifiedBefore = rc.classifications();
     d.ms.push_back(stats.totalMs);
     d.widths.push_back(p.width);
     // As RenderScheduler::onFrame reads the setting back from the frame.
@@ -27,6 +71,7 @@ DragReplay replayDrag(Raycaster& rc, const RenderParams& base, const glm::ivec2&
     if (adaptive.changes() != before)
       d.path.push_back({i, adaptive.setting().scale, adaptive.setting().stepVoxels});
   }
+  d.classifications = rc.classifications() - classifiedBefore;
   return d;
 }
 
@@ -43,12 +88,15 @@ void printDragReplay(const DragReplay& d, double targetFps) {
                         double(std::max<size_t>(adapted.size(), 1));
   const double median = quantile(adapted, 0.5);
   std::printf(
-      "drag replay: %zu frames toward %.0f fps; the drag preset's own frames: median %.1f ms; "
+      "%s replay: %zu frames toward %.0f fps; the drag preset's own frames: median %.1f ms; "
       "%zu setting changes; the %zu frames after the first (widths %d-%d): median %.1f ms "
       "(%.1f fps), 90th percentile %.1f ms, %.0f %% within %.1f ms\n",
-      d.ms.size(), targetFps, quantile(start, 0.5), d.path.size(), adapted.size(),
-      adapted.empty() ? 0 : *lo, adapted.empty() ? 0 : *hi, median,
-      median > 0 ? 1000.0 / median : 0.0, quantile(adapted, 0.9), 100.0 * within, budget);
+      d.motion == DragMotion::ClipFace ? "clip drag" : "drag", d.ms.size(), targetFps,
+      quantile(start, 0.5), d.path.size(), adapted.size(), adapted.empty() ? 0 : *lo,
+      adapted.empty() ? 0 : *hi, median, median > 0 ? 1000.0 / median : 0.0, quantile(adapted, 0.9),
+      100.0 * within, budget);
+  std::printf("  empty-space classifications after the first frame: %d (%zu setting changes)\n",
+              d.classifications, d.path.size());
   for (const DragChange& c : d.path)
     std::printf("  after frame %d: scale %.3f, step %.2f voxels\n", c.frame, c.scale, c.stepVoxels);
   std::fflush(stdout);

@@ -16,6 +16,7 @@
 #include "bench_run.h"
 #include "bench_seed.h"
 #include "bench_stall.h"
+#include "bench_tf_drag.h"
 #include "cinematic_run.h"
 #include "commands.h"
 #include "input_options.h"
@@ -43,8 +44,9 @@ struct BenchOptions {
   std::string orbit = "azimuth";
   std::string quality;   // a resources/quality preset: the workstation's frame at each size
   int stallRepeats = 0;  // --stall: replays of the end of a drag
-  int dragFrames = 0;    // --drag: frames of a replayed drag
+  std::string drag;      // --drag: N frames of a replayed rotation, clip or clip:N
   double dragFps = Quality{}.dragFps;
+  int tfDragPairs = 0;  // --tf-drag: still/moved-table frame pairs
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
@@ -87,11 +89,11 @@ RaycasterOptions raycasterOptions(const BenchOptions& o) {
 
 // --split / --devices: each size (and gradient) over the orbit on several devices at once.
 int benchSplit(const BenchOptions& o) {
-  if (o.seedTable || o.stallRepeats > 0 || o.dragFrames > 0 || !o.labels.raw.empty() ||
-      !o.labels.file.empty() || !o.overlay.path.empty())
+  if (o.seedTable || o.stallRepeats > 0 || !o.drag.empty() || o.tfDragPairs > 0 ||
+      !o.labels.raw.empty() || !o.labels.file.empty() || !o.overlay.path.empty())
     throw inputError(
         "--split/--devices bench plain frames: leave out --seed-table, --stall, --drag, "
-        "--labels-raw and --overlay");
+        "--tf-drag, --labels-raw and --overlay");
   Volume v = o.input.load();
   std::string name =
       o.input.input.empty() ? "phantom" : std::filesystem::path(o.input.input).filename().string();
@@ -143,10 +145,23 @@ Run addBenchCommand(CLI::App& app) {
                   "frames, then the --quality frame whole (the old scheduler) and in bands "
                   "(the 3D view's refinement); prints the largest gap between frames shown")
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--drag", o->dragFrames,
-                  "after each case, replay a drag of this many frames as the 3D view renders "
-                  "it (the drag preset, sized and stepped by its frame-rate controller); "
-                  "prints the settings it chose and the frame times after its first change")
+  cmd->add_option("--drag", o->drag,
+                  "after each case, replay a drag as the 3D view renders it (the drag preset, "
+                  "sized and stepped by its frame-rate controller): N frames of a rotation, or "
+                  "clip / clip:N (90 frames) of a clip-box drag, the anterior face moved to half "
+                  "the volume and back; prints the settings it chose, the frame times after its "
+                  "first change and whether the empty-space tables were rebuilt")
+      ->check([](const std::string& s) {
+        try {
+          parseDragOption(s);
+          return std::string();
+        } catch (const std::exception& e) {
+          return std::string(e.what());
+        }
+      });
+  cmd->add_option("--tf-drag", o->tfDragPairs,
+                  "pairs of frames at a still camera, the table unchanged then moved 1 HU: the "
+                  "transfer-function edit's update cost (issue 35)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--drag-fps", o->dragFps, "the drag replay's target frame rate (the 3D view's)")
       ->check(CLI::Range(kDragFpsMin, kDragFpsMax));
@@ -252,11 +267,13 @@ Run addBenchCommand(CLI::App& app) {
               drag.gradient = p.gradient;
               printStallReplay(rc, drag, p, o->run.orbit, o->stallRepeats);
             }
-            if (o->dragFrames > 0) {
+            if (o->tfDragPairs > 0) printTfDrag(replayTfDrag(rc, p, o->tfDragPairs));
+            if (!o->drag.empty()) {
               RenderParams b = base;
               b.gradient = p.gradient;
-              printDragReplay(replayDrag(rc, b, view, v.minSpacingMm(), o->run.orbit, o->dragFrames,
-                                         o->dragFps),
+              const DragOption drag = parseDragOption(o->drag);
+              printDragReplay(replayDrag(rc, b, view, v.minSpacingMm(), o->run.orbit, drag.frames,
+                                         o->dragFps, drag.motion),
                               o->dragFps);
             }
           }

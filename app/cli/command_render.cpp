@@ -183,9 +183,9 @@ Run addRenderCommand(CLI::App& app) {
     if (overlay) {
       for (const std::string& w : rc.setOverlay(overlay->first, overlay->second))
         std::cerr << "voxray-cli: warning: --overlay: " << w << "\n";
-      if (p.mode != Mode::Dvr)
-        std::cerr << "voxray-cli: warning: --overlay is fused into dvr frames only; this "
-                     "frame is "
+      if (p.mode == Mode::Iso)
+        std::cerr << "voxray-cli: warning: --overlay is fused into dvr and mip frames only; "
+                     "this frame is "
                   << toString(p.mode) << "\n";
     }
     FrameStats stats;

@@ -27,7 +27,8 @@ std::pair<double, double> parseWindow(const std::string& s) {
 void OverlayOption::add(CLI::App& cmd) {
   cmd.add_option("--overlay", path,
                  "a second volume (e.g. PET) fused into dvr frames in patient space, on its "
-                 "own grid; warns when the two name no common Frame of Reference");
+                 "own grid (mip: its maximum along each ray over the grey); warns when the two "
+                 "name no common Frame of Reference");
   cmd.add_option("--overlay-tf", tf,
                  "the overlay's table: a preset name or a preset JSON file, over the overlay's "
                  "values (default: --overlay-window and --overlay-colormap)");

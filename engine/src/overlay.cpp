@@ -89,21 +89,38 @@ OverlayClassifier::OverlayClassifier(const Volume& base, const Volume& o,
                                      const TransferFunction& tf)
     : overlay(&o), lut(bakeLut(tf, o)), map(overlayVoxelMap(base, o)) {}
 
-glm::dvec4 OverlayClassifier::at(const glm::dvec3& pv) const {
+bool OverlayClassifier::value(const glm::dvec3& pv, double& stored) const {
   const Volume& o = *overlay;
   const glm::dvec3 q(map * glm::dvec4(pv, 1.0));
   const glm::dvec3 d(o.dims);
   for (int a = 0; a < 3; ++a)
-    if (q[a] < -0.5 || q[a] > d[a] - 0.5) return glm::dvec4(0.0);
+    if (q[a] < -0.5 || q[a] > d[a] - 0.5) return false;
   const glm::dvec3 f = glm::floor(q), w = q - f;
   const glm::ivec3 n = o.dims - 1;
   const glm::ivec3 i0 = glm::clamp(glm::ivec3(f), glm::ivec3(0), n);
   const glm::ivec3 i1 = glm::clamp(glm::ivec3(f) + 1, glm::ivec3(0), n);
   auto v = [&](int x, int y, int z) { return double(o.at(x, y, z)); };
   auto lx = [&](int y, int z) { return glm::mix(v(i0.x, y, z), v(i1.x, y, z), w.x); };
-  const double s = glm::mix(glm::mix(lx(i0.y, i0.z), lx(i1.y, i0.z), w.y),
-                            glm::mix(lx(i0.y, i1.z), lx(i1.y, i1.z), w.y), w.z);
-  return lut.lookup(s);
+  stored = glm::mix(glm::mix(lx(i0.y, i0.z), lx(i1.y, i0.z), w.y),
+                    glm::mix(lx(i0.y, i1.z), lx(i1.y, i1.z), w.y), w.z);
+  return true;
+}
+
+glm::dvec4 OverlayClassifier::at(const glm::dvec3& pv) const {
+  double s = 0.0;
+  return value(pv, s) ? lut.lookup(s) : glm::dvec4(0.0);
+}
+
+double overlayMipOpacity(const Lut& lut) {
+  float top = 0.0f;
+  for (const glm::vec4& e : lut.rgba) top = std::max(top, e.a);
+  return std::clamp(double(top), 0.0, 1.0);
+}
+
+glm::dvec3 OverlayClassifier::overMip(const glm::dvec3& grey, double largest) const {
+  const glm::dvec4 c = lut.lookup(largest);
+  if (!(c.a > 0.0)) return grey;
+  return glm::mix(grey, glm::dvec3(c), overlayMipOpacity(lut));
 }
 
 std::vector<uint8_t> overlayCells(const Volume& base, const Volume& o, const Lut& lut,

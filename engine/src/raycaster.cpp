@@ -414,7 +414,16 @@ std::vector<std::string> Raycaster::setOverlay(const Volume& o, const TransferFu
   for (int r = 0; r < 3; ++r)
     geo[size_t(r)] = {{float(map[0][r]), float(map[1][r]), float(map[2][r]), float(map[3][r])}};
   geo[3] = {{float(o.dims.x), float(o.dims.y), float(o.dims.z), float(lut.rgba.size() - 1)}};
-  geo[4] = {{float(lut.storedMin), float(lut.scale), 0.0f, 0.0f}};
+  // Whether the table is transparent only below its first visible entry: fused mip may then
+  // leave out the macro cells where the overlay shows nothing (overlay.cl's overlay_mip).
+  // Its largest opacity is what fused mip lays over the grey (overlayMipOpacity).
+  bool seen = false, prefixOnly = true;
+  for (const glm::vec4& e : lut.rgba) {
+    seen = seen || e.a > 0.0f;
+    prefixOnly = prefixOnly && !(seen && !(e.a > 0.0f));
+  }
+  geo[4] = {{float(lut.storedMin), float(lut.scale), prefixOnly ? 1.0f : 0.0f,
+             float(overlayMipOpacity(lut))}};
   m.overlayCellsShown = overlayCells(m.volume, o, lut, map);
   clCall([&] {
     m.overlayCellBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,

@@ -150,7 +150,13 @@ struct Marcher {
     }
     double vmax = -std::numeric_limits<double>::infinity();
     for (int i = 0; i <= n; ++i) vmax = std::max(vmax, sample(ov + at(i) * dv, o));
-    return glm::dvec3(std::clamp((vmax - s.windowLoStored) * s.windowInvWidth, 0.0, 1.0));
+    const glm::dvec3 grey(std::clamp((vmax - s.windowLoStored) * s.windowInvWidth, 0.0, 1.0));
+    if (!overlay) return grey;
+    // Fused mip (overlay.cl's overlay_mip): the overlay's largest value at the same samples.
+    double omax = -std::numeric_limits<double>::infinity(), value = 0.0;
+    for (int i = 0; i <= n; ++i)
+      if (overlay->value(ov + at(i) * dv, value)) omax = std::max(omax, value);
+    return std::isinf(omax) ? grey : overlay->overMip(grey, omax);
   }
 
   template <class At>
@@ -235,7 +241,7 @@ FloatImage renderReferenceFloat(const Volume& v, const RenderParams& p, Referenc
   FrameSetup s = makeFrameSetup(v, p);
   Marcher m{v, p, s};
   m.hooks = hooks;
-  if (p.mode == Mode::Dvr) m.overlay = overlay;
+  if (p.mode == Mode::Dvr || p.mode == Mode::Mip) m.overlay = overlay;
   if (seg && p.mode == Mode::Dvr) {
     if (seg->grid.dims != v.dims || seg->labels.size() != v.voxelCount())
       throw inputError("the segmentation's label map does not lie on the volume's voxels");

@@ -122,13 +122,83 @@ TEST(Overlay, FramesWithoutAnOverlayRenderAsBefore) {
     EXPECT_NE(rc.render(p).rgba, plain.rgba);
     rc.clearOverlay();
     EXPECT_EQ(rc.render(p).rgba, plain.rgba);
-    // mip ignores the overlay: the same kernel and pixels as without one.
+    // mip takes it too (fused mip); iso does not: the same kernel and pixels as without one.
     RenderParams mip = p;
     mip.mode = Mode::Mip;
     const Image plainMip = rc.render(mip);
+    RenderParams iso = p;
+    iso.mode = Mode::Iso;
+    const Image plainIso = rc.render(iso);
     rc.setOverlay(o, redTable(0.5));
-    EXPECT_NE(rc.variantOptions(mip).find("OVERLAY=0"), std::string::npos);
-    EXPECT_EQ(rc.render(mip).rgba, plainMip.rgba);
+    EXPECT_NE(rc.variantOptions(mip).find("OVERLAY=1"), std::string::npos);
+    EXPECT_NE(rc.render(mip).rgba, plainMip.rgba);
+    EXPECT_NE(rc.variantOptions(iso).find("OVERLAY=0"), std::string::npos);
+    EXPECT_EQ(rc.render(iso).rgba, plainIso.rgba);
+  }
+}
+
+// Fused mip (overlay.cl's overlay_mip): where a ray passes through the lesion its largest
+// value (1000) is above the window (400 ... 600, rainbow: red there), so the pixel is the
+// plain mip's grey and red half and half (opacity 0.5), as the slice views fuse; where it
+// passes the lesion by more than an overlay voxel the largest value is 0, below the window:
+// the plain mip's pixel exactly.
+TEST(Overlay, MipShowsTheOverlaysMaximumOverTheGrey) {
+  const Volume& v = test::anisotropicBall();
+  const Volume o = lesion();
+  RenderParams p = test::faintTableParams(false);
+  p.mode = Mode::Mip;
+  const TransferFunction tf = overlayWindowTable(400.0, 600.0, "rainbow", 0.5);
+  const std::vector<double> dist = lesionDistances(v, p);
+  for (bool packets : {true, false}) {
+    SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
+    const Image plain = renderWith(v, p, nullptr, {}, packets);
+    const Image fused = renderWith(v, p, &o, tf, packets);
+    int in = 0, out = 0;
+    for (size_t i = 0; i < dist.size(); ++i) {
+      const int grey = plain.rgba[4 * i];
+      ASSERT_EQ(plain.rgba[4 * i + 1], grey);  // mip is grey
+      if (dist[i] < kRadiusMm - kMarginMm) {
+        // Half of 255 red over half the grey; packets blend the grey as stored (8 bits), one
+        // ray per work-item before storing it: within one level either way.
+        EXPECT_NEAR(fused.rgba[4 * i], 0.5 * grey + 127.5, 1.0) << "pixel " << i;
+        EXPECT_NEAR(fused.rgba[4 * i + 1], 0.5 * grey, 1.0) << "pixel " << i;
+        EXPECT_NEAR(fused.rgba[4 * i + 2], 0.5 * grey, 1.0) << "pixel " << i;
+        ++in;
+      } else if (dist[i] > kRadiusMm + kMarginMm) {
+        for (int c = 0; c < 4; ++c)
+          EXPECT_EQ(fused.rgba[4 * i + c], plain.rgba[4 * i + c]) << "pixel " << i;
+        ++out;
+      }
+    }
+    EXPECT_GT(in, 40);  // the disc is about 12 pixels across at this zoom
+    EXPECT_GT(out, 2000);
+    expectCloseToReference(fused, renderReference(v, p, o, tf),
+                           packets ? "fused mip, packets" : "fused mip, per ray");
+  }
+  // A band table (green from 450 to 800 only) is not transparent only below its first visible
+  // value, so no cell is left out: through the lesion the largest value (1000) shows nothing
+  // and the plain pixel stays; the rim, where the largest value falls in the band, is green.
+  const TransferFunction band{{{0.0, {0.0, 1.0, 0.0, 0.0}},
+                               {400.0, {0.0, 1.0, 0.0, 0.0}},
+                               {450.0, {0.0, 1.0, 0.0, 1.0}},
+                               {800.0, {0.0, 1.0, 0.0, 1.0}},
+                               {850.0, {0.0, 1.0, 0.0, 0.0}},
+                               {1000.0, {0.0, 1.0, 0.0, 0.0}}}};
+  const Image ref = renderReference(v, p, o, band);
+  for (bool packets : {true, false}) {
+    const Image plain = renderWith(v, p, nullptr, {}, packets);
+    const Image fused = renderWith(v, p, &o, band, packets);
+    int centre = 0, green = 0;
+    for (size_t i = 0; i < dist.size(); ++i) {
+      if (dist[i] < kRadiusMm - kMarginMm) {
+        EXPECT_EQ(fused.rgba[4 * i + 1], plain.rgba[4 * i + 1]) << "pixel " << i;
+        ++centre;
+      }
+      green += fused.rgba[4 * i + 1] > fused.rgba[4 * i] + 20;
+    }
+    EXPECT_GT(centre, 40);
+    EXPECT_GT(green, 10);  // the rim
+    expectCloseToReference(fused, ref, packets ? "band mip, packets" : "band mip, per ray");
   }
 }
 

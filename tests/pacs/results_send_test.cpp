@@ -2,8 +2,13 @@
 // workstation on the Philips phantom go to a real Orthanc through the PACS client's send; a
 // new C-FIND finds them in the shown volume's study as two new series (the report's and the key
 // images'), one instance each, and retrieved back the SR holds the value in mm.
+#include <QApplication>
+#include <QDialogButtonBox>
+#include <QInputDialog>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
+#include <QTimer>
 
 #include <dcmtk/dcmdata/dctk.h>
 
@@ -82,12 +87,75 @@ class ResultsSendTest : public QObject {
     QVERIFY(std::abs(std::stod(value.c_str()) - 45.1171875) < 1e-6);
   }
 
+  // Issue 37: Results > Send to PACS… driven as a dialog. It says how many files it sends;
+  // Cancel sends nothing; a typed node address and OK send the session's anonymised copy
+  // (28 files), which a new C-FIND finds as one ANONYMOUS study of 28 images.
+  void sendDialogSendsTheAnonymisedCopyAndCancelSendsNothing() {
+    ui::MainWindow& w = *fixture_.window;
+    QStringList errors;
+    w.setErrorSink([&](const QString& t, const QString& m) { errors << t + ": " + m; });
+    QSignalSpy shown(&w, &ui::MainWindow::volumeShown);
+    w.open(dicomPath("ct-philips-phantom/S2010"), {});
+    QVERIFY(shown.wait(120000));
+    auto* results = w.findChild<ui::ResultsActions*>();
+    QVERIFY(results);
+    QVERIFY(results->anonymisedExport(QString::fromStdString(tempFolder("send-dialog-anon")), false,
+                                      DateHandling::Remove));
+    QCOMPARE(results->written().size(), 28);
+    QAction* action = w.findChild<QAction*>("resultsSend");
+    QVERIFY(action);
+    auto client = makePacsClient(server_->dimseNode());
+    PacsQuery anonymous;
+    anonymous.patientName = "ANONYMOUS";
+    QCOMPARE(client->find(anonymous).size(), size_t(0));
+
+    QSignalSpy sent(results, &ui::ResultsActions::sent);
+    QString label;
+    whenModal("sendDialog", [&](QWidget* d) {
+      auto* input = static_cast<QInputDialog*>(d);
+      label = input->labelText();
+      input->reject();
+    });
+    action->trigger();
+    QVERIFY(label.startsWith("Send the 28 DICOM files written this session to"));
+    QVERIFY(!sent.wait(2000));  // Cancel: nothing goes
+    QCOMPARE(client->find(anonymous).size(), size_t(0));
+
+    whenModal("sendDialog", [&](QWidget* d) {
+      auto* input = static_cast<QInputDialog*>(d);
+      input->setTextValue(QString::fromStdString("dicom://" + server_->dimseNode().label()));
+      QTest::mouseClick(input->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok),
+                        Qt::LeftButton);
+    });
+    action->trigger();
+    QVERIFY2(sent.wait(60000), qPrintable(errors.join('\n')));
+    QCOMPARE(sent[0][0].toInt(), 28);
+    const auto studies = client->find(anonymous);
+    QCOMPARE(studies.size(), size_t(1));
+    QCOMPARE(studies[0].numberOfInstances, 28);
+    QVERIFY(studies[0].studyInstanceUid != kPhantomStudy);  // a new study UID
+  }
+
   void cleanupTestCase() {
     fixture_.stop();
     server_.reset();
   }
 
  private:
+  // Runs FN on the modal dialog named NAME once it is up (the trigger that opens it blocks).
+  void whenModal(const QString& name, std::function<void(QWidget*)> fn) {
+    auto* timer = new QTimer(this);
+    timer->setInterval(20);
+    connect(timer, &QTimer::timeout, this, [timer, name, fn] {
+      QWidget* w = QApplication::activeModalWidget();
+      if (!w || w->objectName() != name) return;
+      timer->stop();
+      timer->deleteLater();
+      fn(w);
+    });
+    timer->start();
+  }
+
   ui::test::PhantomWindow fixture_;
   std::unique_ptr<OrthancServer> server_;
 };

@@ -17,6 +17,7 @@
 #include "gui_message.h"
 #include "qt_image.h"
 #include "slice_view.h"
+#include "volume_overlay.h"
 #include "voxray/io/load.h"
 #include "window_fixture.h"
 
@@ -156,6 +157,86 @@ class ExportLoadTest : public QObject {
              0);
     QVERIFY(differingPixels(slab, thin) > 100);  // the MIP brightens the head's slice
     models_->crosshair.setSlab(Orientation::Axial, {});
+  }
+
+  // Issue 41 item 8: "Overlays" unticked exports the axial slice clean: its own pixels (one per
+  // voxel here: the phantom's 64 x 64 slice at 4 mm), each the voxel's HU through the window
+  // (DICOM's linear ramp, mapToGrey), and no pixel of the crosshair's, the border's or the
+  // clip box's colours; the default export (the view as shown) has them.
+  void cleanSliceExportIsTheWindowedSliceWithoutCrosshair() {
+    const WindowLevel wl{350.0, 60.0};
+    models_->windowLevel.set(wl);
+    models_->crosshair.setVoxel({20, 40, 33});
+    models_->render.update(kClip, [](RenderParams& p) { p.clip.lo.x = 0.25; });  // edges drawn
+    auto dialog = makeDialog();
+    dialog->findChild<QComboBox*>("exportWhat")->setCurrentIndex(1);  // axial
+    auto* overlays = dialog->findChild<QCheckBox*>("exportOverlays");
+    QVERIFY(overlays && overlays->isEnabled() && overlays->isChecked());  // on by default
+    QVERIFY(dialog->exportTo(tempPath("shown.png")));
+    overlays->setChecked(false);
+    const Volume& v = *models_->document.volume();
+    QCOMPARE(dialog->findChild<QSpinBox*>("exportWidth")->value(), v.dims.x);  // what is written
+    QVERIFY(dialog->exportTo(tempPath("clean.png")));
+
+    const QImage shown = toQImage(readImage(tempPath("shown.png").toStdString()));
+    const QImage clean = toQImage(readImage(tempPath("clean.png").toStdString()));
+    QCOMPARE(clean.width(), v.dims.x);
+    QCOMPARE(clean.height(), v.dims.y);
+    // The phantom's axes are LPS: the axial view has +i to the right, +j down (anterior up).
+    int wrong = 0, inside = 0;
+    for (int y = 0; y < v.dims.y; ++y)
+      for (int x = 0; x < v.dims.x; ++x) {
+        const int expected = mapToGrey(v.toPhysical(v.voxels[v.index(x, y, 33)]), wl);
+        const QRgb got = clean.pixel(x, y);
+        wrong += qRed(got) != expected || qGreen(got) != expected || qBlue(got) != expected;
+        inside += expected > 0 && expected < 255;
+      }
+    QCOMPARE(wrong, 0);
+    QVERIFY2(inside > 500, "the window shows the head's values, not only black and white");
+
+    // The overlay colours: the crosshair's two lines (the coronal and sagittal planes'), the
+    // view's border (its own plane's) and the clip box's edges.
+    const QList<QRgb> overlayColours = {planeColor(0).rgb(), planeColor(1).rgb(),
+                                        planeColor(2).rgb(), clipBoxColor().rgb()};
+    auto count = [&](const QImage& image) {
+      int n = 0;
+      const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+      for (int y = 0; y < rgb.height(); ++y)
+        for (int x = 0; x < rgb.width(); ++x)
+          n += overlayColours.contains(rgb.pixel(x, y) | 0xff000000);
+      return n;
+    };
+    QCOMPARE(count(clean), 0);
+    // At least the crosshair's horizontal line across the view and the border around it.
+    QVERIFY2(count(shown) > shown.width(), qPrintable(QString::number(count(shown))));
+
+    // Segments are optional in the clean image: a 12 mm disc painted on the slice colours
+    // exactly its voxels (counted in the label map) with "With segments" ticked, none without.
+    models_->segmentation.reset(v);
+    const uint8_t label = models_->segmentation.addSegment("disc", {0.0f, 1.0f, 0.0f});
+    models_->segmentation.paintDisc(2, {32.0, 32.0, 33.0}, 12.0, label);
+    int discVoxels = 0;
+    for (int y = 0; y < v.dims.y; ++y)
+      for (int x = 0; x < v.dims.x; ++x)
+        discVoxels += models_->segmentation.segmentation().labels[v.index(x, y, 33)] == label;
+    QVERIFY(discVoxels > 20);
+    auto coloured = [](const QImage& image) {
+      int n = 0;
+      for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+          const QRgb c = image.pixel(x, y);
+          n += qRed(c) != qGreen(c) || qGreen(c) != qBlue(c);
+        }
+      return n;
+    };
+    auto* layers = dialog->findChild<QCheckBox*>("exportLayers");
+    QVERIFY(layers->isEnabled() && layers->isChecked());
+    QVERIFY(dialog->exportTo(tempPath("clean-segments.png")));
+    QCOMPARE(coloured(toQImage(readImage(tempPath("clean-segments.png").toStdString()))),
+             discVoxels);
+    layers->setChecked(false);
+    QVERIFY(dialog->exportTo(tempPath("clean-alone.png")));
+    QCOMPARE(coloured(toQImage(readImage(tempPath("clean-alone.png").toStdString()))), 0);
   }
 
   // Patient and study text: off until the user asks (View menu), then in every view but

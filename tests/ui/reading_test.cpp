@@ -9,13 +9,22 @@
 #include <fstream>
 #include <set>
 
+#include <QApplication>
+#include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QProcess>
+#include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTest>
+#include <QTimer>
 
 #include <dcmtk/dcmdata/dctk.h>
 
@@ -370,6 +379,98 @@ class ReadingTest : public QObject {
     QVERIFY(!fs::exists(kBrain + "/anon"));
   }
 
+  // Issue 37: Results > Anonymised export… driven through its widgets. The dialog's choices
+  // (this series, dates shifted by -40 days) reach the files: pydicom finds no Basic Profile
+  // value and the dates moved by 40 days (tests/report/check_anonymised.py), DCMTK finds the
+  // source's patient name and ID in no file. Into the same folder again it asks first: No
+  // leaves every file as it was and the dialog open; Yes writes the new choice (dates kept).
+  void anonymiseDialogWritesTheChosenDatesAndAsksBeforeReplacing() {
+    openBrain();
+    const fs::path out = freshDir("anon-dialog") / "copy";  // made by the export
+    const fs::path first = fs::path(kBrain) / fs::directory_iterator(kBrain)->path().filename();
+    const std::string name = valuesIn(first, DCM_PatientName).at(0);
+    const std::string id = valuesIn(first, DCM_PatientID).at(0);
+    const std::string studyDate = valuesIn(first, DCM_StudyDate).at(0);
+    QVERIFY(!name.empty() && !id.empty() && studyDate.size() == 8);
+    QAction* action = window_->findChild<QAction*>("resultsAnonymise");
+    QVERIFY(action);
+    auto fill = [&](QWidget* d, int dates, int days) {
+      d->findChild<QComboBox*>("anonymiseScope")->setCurrentIndex(0);  // this series
+      d->findChild<QComboBox*>("anonymiseDates")->setCurrentIndex(dates);
+      auto* shift = d->findChild<QSpinBox*>("anonymiseShiftDays");
+      QCOMPARE(shift->isEnabled(), dates == 2);  // only for "Shifted"
+      if (dates == 2) shift->setValue(days);
+      d->findChild<QLineEdit*>("anonymiseFolder")->setText(QString::fromStdString(out.string()));
+    };
+    auto save = [](QWidget* d) {
+      QTest::mouseClick(d->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Save),
+                        Qt::LeftButton);
+    };
+    bool driven = false;
+    whenModal("anonymiseDialog", [&](QWidget* d) {
+      fill(d, 2, -40);
+      save(d);  // writes and closes the dialog
+      driven = true;
+    });
+    action->trigger();  // the dialog's own event loop, until it closes
+    QVERIFY(driven);
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+    QCOMPARE(results_->written().size(), 28);
+    std::vector<fs::path> files;
+    for (const auto& e : fs::recursive_directory_iterator(out))
+      if (e.is_regular_file()) files.push_back(e.path());
+    QCOMPARE(files.size(), size_t(28));
+    for (const fs::path& f : files) {
+      for (const DcmTagKey& tag : {DCM_PatientName, DCM_PatientID})
+        for (const std::string& value : valuesIn(f, tag)) {
+          QVERIFY2(value.find(name) == std::string::npos, f.c_str());
+          QVERIFY2(value.find(id) == std::string::npos, f.c_str());
+        }
+      QVERIFY(valuesIn(f, DCM_StudyDate).at(0) != studyDate);
+    }
+    QProcess check;
+    check.start(VOXRAY_PYTHON, {VOXRAY_SOURCE_DIR "/tests/report/check_anonymised.py",
+                                QString::fromStdString(kBrain),
+                                QString::fromStdString(out.string()), "shift", "-40"});
+    QVERIFY2(check.waitForFinished(120000), "check_anonymised.py did not finish");
+    QVERIFY2(check.exitCode() == 0,
+             qPrintable(check.readAllStandardOutput() + check.readAllStandardError() +
+                        "\n(a missing pydicom: run scripts/bootstrap)"));
+
+    // Again into the same folder, dates kept this time: asked first.
+    std::map<fs::path, fs::file_time_type> before;
+    for (const fs::path& f : files) before[f] = fs::last_write_time(f);
+    QString question;
+    bool stayedOpen = false;
+    driven = false;
+    whenModal("anonymiseDialog", [&](QWidget* d) {
+      fill(d, 1, 0);
+      whenModal<QMessageBox>([&](QMessageBox* box) {
+        question = box->text();
+        box->button(QMessageBox::No)->click();
+      });
+      save(d);  // No: nothing written, the dialog stays
+      stayedOpen = d->isVisible();
+      for (const auto& [f, t] : before) QVERIFY(fs::last_write_time(f) == t);
+      whenModal<QMessageBox>([](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
+      save(d);  // Yes: written, closed
+      driven = true;
+    });
+    action->trigger();
+    QVERIFY(driven);
+    QVERIFY(stayedOpen);
+    QCOMPARE(question, QString::fromStdString(out.string()) +
+                           " is not empty. Write the anonymised files into it (files of the "
+                           "same name are replaced)?");
+    size_t count = 0;
+    for (const auto& e : fs::recursive_directory_iterator(out))
+      if (e.is_regular_file()) {
+        ++count;
+        QCOMPARE(valuesIn(e.path(), DCM_StudyDate).at(0), studyDate);  // kept, as chosen
+      }
+    QCOMPARE(count, size_t(28));  // the same names, replaced
+  }
+
   // README's docs/images/reading-1plus3.png (run with VOXRAY_READING_SHOT=PATH under
   // xvfb-run -s "-screen 0 1920x1080x24"): the Philips head CT in the 1+3 layout, a distance
   // on slice 14 marked as a key image. Skipped otherwise.
@@ -406,6 +507,29 @@ class ReadingTest : public QObject {
     QVERIFY(QTest::qWaitForWindowActive(window_));
     view.setFocus();
     QTRY_VERIFY(view.hasFocus());
+  }
+
+  // Runs FN on the modal dialog named NAME (or of type T) once it is up: polled, since the
+  // click or trigger that opens it blocks in the dialog's own event loop.
+  void whenModal(const QString& name, std::function<void(QWidget*)> fn) {
+    pollModal([name](QWidget* w) { return w->objectName() == name; }, std::move(fn));
+  }
+  template <class T>
+  void whenModal(std::function<void(T*)> fn) {
+    pollModal([](QWidget* w) { return qobject_cast<T*>(w) != nullptr; },
+              [fn](QWidget* w) { fn(qobject_cast<T*>(w)); });
+  }
+  void pollModal(std::function<bool(QWidget*)> match, std::function<void(QWidget*)> fn) {
+    auto* timer = new QTimer(this);
+    timer->setInterval(20);
+    connect(timer, &QTimer::timeout, this, [timer, match, fn] {
+      QWidget* w = QApplication::activeModalWidget();
+      if (!w || !match(w)) return;
+      timer->stop();
+      timer->deleteLater();
+      fn(w);
+    });
+    timer->start();
   }
 
   PhantomWindow fixture_;

@@ -104,6 +104,33 @@ class WidgetTest : public QObject {
     QVERIFY(differingPixels(before, after) > 100);
   }
 
+  // Issue 41 item 3: a clip-handle drag in the 3D view is a drag: its frames are the frame-rate
+  // controller's interactive frames (the drag setting's width), as a rotation's, with the box
+  // already moved; the release brings the sharp frame.
+  void clipHandleDragRendersDragFrames() {
+    VolumeView& view = window_->volumeView();
+    const Volume& v = *models_->document.volume();
+    const QPointF handle = handleOnWidget(clipFaceCentreWorld(v, models_->render.params().clip, 1));
+    const QPointF to = handle + (handleOnWidget(glm::dvec3(0.0)) - handle) * 0.5;
+    QSignalSpy frames(&window_->scheduler(), &RenderScheduler::frameReady);
+    auto send = [&view](QEvent::Type type, QPointF at, Qt::MouseButton b, Qt::MouseButtons held) {
+      QMouseEvent e(type, at, view.mapToGlobal(at), b, held, Qt::NoModifier);
+      QApplication::sendEvent(&view, &e);
+    };
+    send(QEvent::MouseButtonPress, handle, Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseMove, to, Qt::NoButton, Qt::LeftButton);
+    const double moved = models_->render.params().clip.hi.x;
+    QVERIFY2(moved < 0.9, qPrintable(QString::number(moved)));
+    QVERIFY(frames.wait(60000));
+    auto first = frames.takeFirst().at(0).value<std::shared_ptr<const Frame>>();
+    QVERIFY(first->interactive);
+    QCOMPARE(first->params.clip.hi.x, moved);
+    const DragSetting& s = window_->scheduler().dragSetting();
+    QCOMPARE(first->params.width, int(128 * s.scale + 0.5));
+    send(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
+    waitFullFrame();  // fails the test unless a sharp frame follows the release
+  }
+
   void lightDragLightsExpectedSide() {
     VolumeView& view = window_->volumeView();
     const Volume& v = *models_->document.volume();

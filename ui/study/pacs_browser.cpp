@@ -141,5 +141,14 @@ void PacsBrowser::send(const std::string& node, std::vector<std::string> files) 
   });
 }
 
+void PacsBrowser::echo(PacsNode node) {
+  run([this, node = std::move(node)] {
+    makePacsClient(node)->echo();
+    task_.post([events = events_, label = node.label()] {
+      if (events.echoed) events.echoed(label);
+    });
+  });
+}
+
 }  // namespace voxray
 #endif

@@ -32,6 +32,8 @@ struct PacsBrowserEvents {
   std::function<void(const std::string& message)> failed;
   std::function<void()> cancelled;
   std::function<void()> sent;  // send(): the node took every file
+  // echo(): the node answered (its label: the address without secrets).
+  std::function<void(const std::string& label)> echoed;
 };
 
 class PacsBrowser {
@@ -61,6 +63,9 @@ class PacsBrowser {
   // Sends FILES (C-STORE; STOW-RS): the screenshot export's "Send to". Failure: failed();
   // cancel(): cancelled() (STOW-RS at once; C-STORE once a blocked connect or file returns).
   void send(const std::string& node, std::vector<std::string> files);
+  // Checks that NODE answers as voxray-cli pacs echo does (C-ECHO; DICOMweb: a QIDO search
+  // with limit 1): echoed() or failed(). The node editor's Test, before the node is saved.
+  void echo(PacsNode node);
   void cancel() { task_.cancel(); }
   bool busy() const { return busy_; }
 

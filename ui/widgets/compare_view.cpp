@@ -8,24 +8,31 @@
 #include <QVBoxLayout>
 
 #include "gui_message.h"
+#include "render_scheduler.h"
 #include "slice_view.h"
 #include "study_state.h"
+#include "volume_view.h"
 
 namespace voxray::ui {
 
 namespace {
-QWidget* column(QLabel* name, SliceView* view) {
+// A column: the volume's name, its axial view and its 3D view below.
+QWidget* column(QLabel* name, SliceView* view, VolumeView* view3d) {
   auto* w = new QWidget;
   auto* l = new QVBoxLayout(w);
   l->setContentsMargins(0, 0, 0, 0);
   l->addWidget(name);
   l->addWidget(view, 1);
+  l->addWidget(view3d, 1);
   return w;
 }
 }  // namespace
 
-CompareView::CompareView(AppModels& study, QWidget* parent)
-    : QWidget(parent), study_(study), prior_(std::make_unique<PriorColumn>()) {
+CompareView::CompareView(AppModels& study, RenderScheduler& studyScheduler, QWidget* parent)
+    : QWidget(parent),
+      study_(study),
+      prior_(std::make_unique<PriorColumn>()),
+      studyScheduler_(studyScheduler) {
   setObjectName("compareView");
   fixedView_ = new SliceView(Orientation::Axial, study.document, study.crosshair, study.windowLevel,
                              study.render);
@@ -33,10 +40,21 @@ CompareView::CompareView(AppModels& study, QWidget* parent)
                               prior_->windowLevel, prior_->render);
   fixedView_->setObjectName("compareFixed");
   movingView_->setObjectName("compareMoving");
+  // The prior's 3D view: a render thread (and device copy) of its own, on the window's device.
+  priorScheduler_ = std::make_unique<RenderScheduler>(prior_->render, prior_->document,
+                                                      QString::fromStdString(study.device));
+  fixed3d_ = new VolumeView(study.render, study.document, study.crosshair, studyScheduler);
+  moving3d_ = new VolumeView(prior_->render, prior_->document, prior_->crosshair, *priorScheduler_);
+  fixed3d_->setObjectName("compareFixed3d");
+  moving3d_->setObjectName("compareMoving3d");
+  for (QWidget* w : {static_cast<QWidget*>(fixedView_), static_cast<QWidget*>(movingView_),
+                     static_cast<QWidget*>(fixed3d_), static_cast<QWidget*>(moving3d_)})
+    w->installEventFilter(this);
+  installEventFilter(this);  // Ctrl+Z with the focus here too (eventFilter)
   fixedName_ = new QLabel;
   movingName_ = new QLabel;
-  fixedColumn_ = column(fixedName_, fixedView_);
-  movingColumn_ = column(movingName_, movingView_);
+  fixedColumn_ = column(fixedName_, fixedView_, fixed3d_);
+  movingColumn_ = column(movingName_, movingView_, moving3d_);
   // Zoom follows the other column (both show millimetres square at one scale then).
   connect(fixedView_, &SliceView::zoomChanged, movingView_, &SliceView::setZoom);
   connect(movingView_, &SliceView::zoomChanged, fixedView_, &SliceView::setZoom);
@@ -53,6 +71,15 @@ CompareView::CompareView(AppModels& study, QWidget* parent)
   wlBox_->setChecked(true);
   connect(wlBox_, &QCheckBox::toggled, this,
           [this](bool on) { comparison_.setWindowLevelLinked(on); });
+  lookBox_ = new QCheckBox("Link 3D look");
+  lookBox_->setObjectName("compareLinkLook");
+  lookBox_->setChecked(true);
+  lookBox_->setToolTip(
+      "The prior's 3D view takes the study's transfer function, preset, lighting and quality "
+      "(the camera follows while navigation is linked)");
+  connect(lookBox_, &QCheckBox::toggled, this, [this](bool on) {
+    if (renderLink_) renderLink_->setLookLinked(on);
+  });
   auto button = [this](const QString& text, const QString& name, const QString& tip, auto slot) {
     auto* b = new QPushButton(text);
     b->setObjectName(name);
@@ -64,6 +91,7 @@ CompareView::CompareView(AppModels& study, QWidget* parent)
   auto* bar = new QHBoxLayout;
   bar->addWidget(linkBox_);
   bar->addWidget(wlBox_);
+  bar->addWidget(lookBox_);
   bar->addWidget(
       button("Swap (X)", "compareSwap", "Trade the columns' sides", [this] { swapSides(); }));
   bar->addWidget(button("Flicker (F)", "compareFlicker",
@@ -80,6 +108,19 @@ CompareView::CompareView(AppModels& study, QWidget* parent)
                         [this] { align(); }));
   bar->addWidget(button("Clear pairs", "compareClearPairs", "Forget the point pairs",
                         [this] { comparison_.clearPairs(); }));
+  moveButton_ = button("Move prior (M)", "compareMovePrior",
+                       "Drag in a slice view to move the prior in that plane (mm as dragged), "
+                       "Shift+drag to turn it about the crosshair; each drag is one undo step",
+                       [this] { setMovePrior(moveButton_->isChecked()); });
+  moveButton_->setCheckable(true);
+  bar->addWidget(moveButton_);
+  undoButton_ = button("Undo move", "compareUndoMove", "Take back the last drag of the prior",
+                       [this] { undoMove(); });
+  redoButton_ = button("Redo move", "compareRedoMove", "Do the drag taken back again",
+                       [this] { redoMove(); });
+  bar->addWidget(undoButton_);
+  bar->addWidget(redoButton_);
+  refreshMoveButtons();
   bar->addStretch(1);
   bar->addWidget(button("Close compare", "compareClose", "Back to the four views",
                         [this] { emit closeRequested(); }));
@@ -102,13 +143,31 @@ CompareView::CompareView(AppModels& study, QWidget* parent)
   refreshGeometry();
 }
 
+void CompareView::showEvent(QShowEvent* e) {
+  QWidget::showEvent(e);
+  if (renderLink_) return;
+  renderLink_ = std::make_unique<RenderLink>(comparison_, study_.render, prior_->render);
+  renderLink_->setLookLinked(lookBox_->isChecked());
+  renderLink_->syncMovingToFixed();
+}
+
+void CompareView::hideEvent(QHideEvent* e) {
+  // The four views are back: the prior's camera stops following, so its render thread rests
+  // while the study is turned; showing compare again links it from the study's camera.
+  renderLink_.reset();
+  QWidget::hideEvent(e);
+}
+
 CompareView::~CompareView() {
   study_.document.changed.disconnect(docConnection_);
   comparison_.changed.disconnect(modelConnection_);
   link_.reset();
-  // The views are bound to the prior's models: they go first (children would go after).
+  renderLink_.reset();
+  // The views are bound to the prior's models: they go first (children would go after), then
+  // the prior's render thread.
   delete fixedColumn_;
   delete movingColumn_;
+  priorScheduler_.reset();
 }
 
 void CompareView::placeColumns() {
@@ -127,9 +186,12 @@ void CompareView::setPrior(std::shared_ptr<const Volume> prior, const QString& n
   prior_->crosshair.setGeometry(prior->dims, prior->spacingMm, prior->direction);
   const InitialWindow w = initialWindow(*prior);
   prior_->windowLevel.reset(w.wl, w.source);
+  if (renderLink_) renderLink_->setLookLinked(lookBox_->isChecked());  // the study's look
   prior_->document.set(std::move(prior), name.toStdString());
   comparison_.clearPairs();
   comparison_.clearAlignment();
+  history_.clear();
+  refreshMoveButtons();
   refreshGeometry();
 }
 
@@ -198,12 +260,16 @@ bool CompareView::align() {
 }
 
 void CompareView::keyPressEvent(QKeyEvent* e) {
+  if (undoKeyPressed(e)) return;
   switch (e->key()) {
     case Qt::Key_X:
       swapSides();
       break;
     case Qt::Key_F:
       flicker();
+      break;
+    case Qt::Key_M:
+      setMovePrior(!moveMode_);
       break;
     case Qt::Key_B:  // a slice view keeps Esc (it ends a measuring tool)
     case Qt::Key_Escape:

@@ -75,6 +75,17 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
       "Off: the exported image leaves out the patient's name, ID and study text even while "
       "the views show them (View > Patient and study text)");
   form->addRow(studyText_);
+  overlays_ = new QCheckBox("Overlays (crosshair, handles, border, text, measurements)");
+  overlays_->setObjectName("exportOverlays");
+  overlays_->setChecked(true);
+  overlays_->setToolTip(
+      "Off: a slice view's image alone, one pixel per sample of the slice, as the window maps "
+      "it; for figures and further processing");
+  form->addRow(overlays_);
+  layers_ = new QCheckBox("With segments and the fused overlay");
+  layers_->setObjectName("exportLayers");
+  layers_->setChecked(true);
+  form->addRow(layers_);
   sendTo_ = new QComboBox(this);  // parented: without DICOM it is never laid out
   sendTo_->setObjectName("exportSendTo");
   sendTo_->setEditable(true);  // a configured node, or dicom://AE@host:port, https://...
@@ -121,6 +132,12 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
   auto sync = [this] {
     bool custom = what_->currentIndex() == 0 && size_->currentIndex() == 1;
     size_->setEnabled(what_->currentIndex() == 0);
+    const bool slice = what_->currentIndex() >= 1 && what_->currentIndex() <= 3;
+    overlays_->setEnabled(slice);
+    layers_->setEnabled(slice && !overlays_->isChecked());
+    // A clean image carries no text: neither choice applies to it.
+    annotations_->setEnabled(!cleanSlice());
+    studyText_->setEnabled(!cleanSlice());
     width_->setEnabled(custom);
     height_->setEnabled(custom);
     if (custom) {
@@ -142,11 +159,19 @@ ExportDialog::ExportDialog(QWidget* window, RenderScheduler& scheduler, VolumeVi
   });
   connect(what_, &QComboBox::currentIndexChanged, this, sync);
   connect(size_, &QComboBox::currentIndexChanged, this, sync);
+  connect(overlays_, &QCheckBox::toggled, this, sync);
   sync();
+}
+
+bool ExportDialog::cleanSlice() const {
+  const int what = what_->currentIndex();
+  return what >= 1 && what <= 3 && !overlays_->isChecked();
 }
 
 QSize ExportDialog::capturedSize(int what) const {
   if (what == 0) return view_.lastFrame().size();  // the rendered pixels
+  if (what <= 3 && !overlays_->isChecked())
+    return slices_[size_t(what - 1)]->cleanImage(false).size();  // the slice's own pixels
   QWidget* w = what == 4 ? window_ : static_cast<QWidget*>(slices_[size_t(what - 1)]);
   return w->size() * w->devicePixelRatio();  // grab() keeps device pixels
 }
@@ -169,6 +194,11 @@ QImage ExportDialog::capture() {
     return result;
   }
   if (what == 0) return view_.lastFrame();  // the rendered pixels, no overlays
+  if (cleanSlice()) {
+    SliceView* s = slices_[size_t(what - 1)];
+    waitForSlab(s);  // the slab, not the thin slice standing in
+    return s->cleanImage(layers_->isChecked());
+  }
   const bool hideStudy = !studyText_->isChecked();
   for (SliceView* s : slices_) {
     waitForSlab(s);
@@ -236,7 +266,7 @@ bool ExportDialog::exportTo(const QString& chosen) {
       // The 3D view's frame is rendered pixels only; the other captures are grabs of
       // widgets that draw text over the image (orientation letters; readout and study text
       // when ticked).
-      info.burnedInAnnotation = what_->currentIndex() != 0;
+      info.burnedInAnnotation = what_->currentIndex() != 0 && !cleanSlice();
       writeSecondaryCapture(*target, {fromQImage(image)}, info);
     } else
 #endif

@@ -5,7 +5,8 @@
 // in the background (the dialog closes once the node took it, else says why). An existing
 // file is replaced only after a yes (resolveExportTarget, asked with the final name); the
 // cursor readout is left out unless the user ticks it. The 3D view exports its rendered
-// pixels only, never the handles drawn over them.
+// pixels only, never the handles drawn over them; a slice view does too with "Overlays"
+// unticked (SliceView::cleanImage: the slice's own pixels, segments and fusion optional).
 #include <array>
 #include <functional>
 #include <memory>
@@ -63,7 +64,8 @@ class ExportDialog : public QDialog {
   void save();
   QString askPath();
   bool askOverwrite(const std::string& path);
-  QImage capture();  // empty on failure (a dialog has said why)
+  QImage capture();         // empty on failure (a dialog has said why)
+  bool cleanSlice() const;  // a slice view without overlays is chosen
   // The size of what choice WHAT (the capture box's index) writes at its own size.
   QSize capturedSize(int what) const;
 
@@ -77,6 +79,8 @@ class ExportDialog : public QDialog {
   QSpinBox* height_;
   QCheckBox* annotations_;
   QCheckBox* studyText_;
+  QCheckBox* overlays_;  // a slice view as shown (ticked) or its clean image
+  QCheckBox* layers_;    // the clean image with the segments and the fused overlay
   QComboBox* sendTo_;
   QLabel* status_;
   std::string written_;  // the last file exportTo wrote

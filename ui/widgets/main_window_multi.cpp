@@ -14,6 +14,7 @@
 #include "load_controller.h"
 #include "main_window.h"
 #include "slice_view.h"
+#include "volume_view.h"
 
 namespace voxray::ui {
 
@@ -45,7 +46,7 @@ void MainWindow::wireFusion() {
   // Another study under the overlay: its Frame of Reference is checked again.
   onModelChange<>(this, models_.document.changed,
                   [this] { models_.fusion.setBase(models_.document.volume().get()); });
-  // The 3D view raycasts the overlay in the same pass (the engine's fused dvr).
+  // The 3D view raycasts the overlay in the same pass (the engine's fused dvr and mip).
   onModelChange<>(this, models_.fusion.changed, [this] {
     const FusionModel& f = models_.fusion;
     if (!f.active()) {
@@ -88,7 +89,7 @@ void MainWindow::openPrior(const std::string& input, const LoadOptions& options)
 
 void MainWindow::setCompareMode(bool on) {
   if (on && !compare_) {
-    compare_ = new CompareView(models_);
+    compare_ = new CompareView(models_, *scheduler_);
     auto* splitter = qobject_cast<QSplitter*>(centralWidget());
     splitter->insertWidget(0, compare_);
     splitter->setStretchFactor(0, 1);
@@ -98,6 +99,9 @@ void MainWindow::setCompareMode(bool on) {
   }
   if (compare_) compare_->setVisible(on);
   grid_->setVisible(!on);
+  // The study's 3D frames were planned for compare's 3D view (the same scheduler): the grid's
+  // 3D view's size again.
+  if (!on) scheduler_->setViewSize(volumeView_->size());
 }
 
 void MainWindow::addMultiVolumeActions(QMenu* file, QMenu* view) {

@@ -14,6 +14,7 @@
 #include <QVBoxLayout>
 
 #include "gui_post.h"
+#include "pacs_node_dialog.h"
 
 namespace voxray::ui {
 namespace {
@@ -41,18 +42,26 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
                     ", or dicom://AE@host:port, or https://host/dicom-web");
   node_->lineEdit()->setPlaceholderText("dicom://CALLED_AE@host:port or https://host/dicom-web");
   form->addRow("Node", node_);
-  // Without a configured node the combo is empty and says nothing: say how to give one.
-  if (node_->count() == 0) {
-    auto* hint = new QLabel(
-        "No PACS node is configured. Type an address in Node: dicom://CALLED_AE@host:port "
-        "(DIMSE) or https://host/dicom-web (DICOMweb). Or name nodes in " +
-        q(pacsConfigPath()) +
-        ", for example {\"nodes\": {\"hospital\": {\"url\": \"dicom://PACS@pacs.example:104\"}}}");
-    hint->setObjectName("pacsNodeHint");
-    hint->setWordWrap(true);
-    hint->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    form->addRow(hint);
-  }
+  // Without a configured node the combo is empty and says nothing: say how to give one, and
+  // offer the node editor.
+  auto* hint = new QLabel(
+      "No PACS node is configured. Type an address in Node: dicom://CALLED_AE@host:port "
+      "(DIMSE) or https://host/dicom-web (DICOMweb). Or name nodes in " +
+      q(pacsConfigPath()) + " with Add a node…");
+  hint->setObjectName("pacsNodeHint");
+  hint->setWordWrap(true);
+  hint->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  addNode_ = new QPushButton("Add a node…");
+  addNode_->setObjectName("pacsAddNode");
+  connect(addNode_, &QPushButton::clicked, this, &PacsDialog::editNodes);
+  auto* hintRow = new QHBoxLayout;
+  hintRow->addWidget(hint, 1);
+  hintRow->addWidget(addNode_);
+  hint_ = new QWidget;
+  hint_->setLayout(hintRow);
+  hintRow->setContentsMargins(0, 0, 0, 0);
+  form->addRow(hint_);
+  hint_->setVisible(node_->count() == 0);
   for (const auto& f : kFields) {
     auto* edit = new QLineEdit;
     edit->setObjectName(f[0]);
@@ -88,11 +97,16 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
   cancelButton_ = new QPushButton("Cancel");  // a search (10,000 studies) or a retrieval
   cancelButton_->setEnabled(false);
   connect(cancelButton_, &QPushButton::clicked, this, [this] { browser_->cancel(); });
+  auto* nodes = new QPushButton("&Nodes…");
+  nodes->setObjectName("pacsEditNodes");
+  nodes->setToolTip("Add, edit, delete and test the configured PACS nodes");
+  connect(nodes, &QPushButton::clicked, this, &PacsDialog::editNodes);
   auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
   connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(searchButton_);
   buttons->addWidget(cancelButton_);
+  buttons->addWidget(nodes);
   buttons->addStretch();
   buttons->addWidget(close);
   auto* layout = new QVBoxLayout(this);
@@ -140,6 +154,19 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
 PacsDialog::~PacsDialog() { browser_.reset(); }
 
 QLineEdit* PacsDialog::field(const QString& name) const { return findChild<QLineEdit*>(name); }
+
+void PacsDialog::editNodes() {
+  PacsNodeDialog editor(this);
+  emit nodeEditorOpened(&editor);
+  editor.exec();
+  // The combo lists what the file holds now; a typed address stays.
+  const QString typed = node_->currentText();
+  QSignalBlocker block(node_);
+  node_->clear();
+  for (const auto& n : PacsBrowser::configuredNodes()) node_->addItem(q(n));
+  node_->setCurrentText(typed.isEmpty() && node_->count() > 0 ? node_->itemText(0) : typed);
+  hint_->setVisible(node_->count() == 0);
+}
 
 void PacsDialog::search() {
   PacsQuery query;

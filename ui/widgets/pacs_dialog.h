@@ -40,11 +40,16 @@ class PacsDialog : public QDialog {
   QTreeWidget* results() const { return results_; }
   void search();
   void retrieve(QTreeWidgetItem* studyOrSeriesItem);
+  // The node editor (Nodes…, or "Add a node…" while none is configured), then the node list
+  // as the file holds it.
+  void editNodes();
 
  signals:
   void searched(int studies);
   void seriesListed(int count);
   void failed(const QString& message);
+  // The node editor is up (modal): tests drive it from here.
+  void nodeEditorOpened(QDialog* editor);
 
  private:
   void showStudies(const std::vector<PacsMatch>& studies);  // appends a page
@@ -57,6 +62,8 @@ class PacsDialog : public QDialog {
   QProgressBar* progress_ = nullptr;
   QPushButton* searchButton_ = nullptr;
   QPushButton* cancelButton_ = nullptr;
+  QWidget* hint_ = nullptr;  // no node configured: says so, with "Add a node…"
+  QPushButton* addNode_ = nullptr;
   CachedSeries chosen_;
   std::unique_ptr<PacsBrowser> browser_;  // last member: its thread stops before the rest goes
 };

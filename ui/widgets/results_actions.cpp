@@ -245,14 +245,18 @@ bool ResultsActions::anonymisedExport(const QString& folder, bool wholeStudy, Da
 void ResultsActions::showAnonymiseDialog() {
   QDialog d(&window_);
   d.setWindowTitle("Anonymised export");
+  d.setObjectName("anonymiseDialog");  // the tests drive it by these names
   auto* form = new QFormLayout(&d);
   auto* scope = new QComboBox;
+  scope->setObjectName("anonymiseScope");
   scope->addItems({"This series", "The whole study (every series of its folder)"});
   form->addRow("Export", scope);
   auto* dates = new QComboBox;
+  dates->setObjectName("anonymiseDates");
   dates->addItems({"Removed", "Kept (Full Dates option)", "Shifted (Modified Dates option)"});
   form->addRow("Dates", dates);
   auto* days = new QSpinBox;
+  days->setObjectName("anonymiseShiftDays");
   days->setRange(-36500, 36500);
   days->setSuffix(" days");
   days->setEnabled(false);
@@ -260,6 +264,7 @@ void ResultsActions::showAnonymiseDialog() {
           [days](int i) { days->setEnabled(i == 2); });
   form->addRow("Shift by", days);
   auto* folder = new QLineEdit;
+  folder->setObjectName("anonymiseFolder");
   auto* browse = new QPushButton("Browse…");
   connect(browse, &QPushButton::clicked, &d, [this, folder] {
     const QString f = askPath_("Folder for the anonymised copy", QString());
@@ -303,14 +308,17 @@ void ResultsActions::showSendDialog() {
 #ifdef VOXRAY_HAS_DICOM
   QStringList nodes;
   for (const auto& n : PacsBrowser::configuredNodes()) nodes << QString::fromStdString(n);
-  bool ok = false;
-  const QString node = QInputDialog::getItem(
-      &window_, "Send to PACS",
+  QInputDialog d(&window_);
+  d.setObjectName("sendDialog");  // the tests drive it by this name
+  d.setWindowTitle("Send to PACS");
+  d.setLabelText(
       QString("Send the %1 written this session to (a configured node, dicom://AE@host:port or "
               "a DICOMweb address):")
-          .arg(plural(size_t(written_.size()), "DICOM file", "DICOM files")),
-      nodes, 0, true, &ok);
-  if (ok && !node.trimmed().isEmpty()) send(node.trimmed());
+          .arg(plural(size_t(written_.size()), "DICOM file", "DICOM files")));
+  d.setComboBoxItems(nodes);
+  d.setComboBoxEditable(true);
+  if (d.exec() == QDialog::Accepted && !d.textValue().trimmed().isEmpty())
+    send(d.textValue().trimmed());
 #else
   send({});
 #endif

@@ -122,6 +122,18 @@ void SliceView::setExporting(bool on) {
   update();
 }
 
+QImage SliceView::cleanImage(bool layers) const {
+  if (image_.isNull()) return {};
+  QImage out = image_.convertToFormat(QImage::Format_RGB32);
+  if (layers) {
+    // The overlays have the plane's size (the slice image's): pixel onto pixel.
+    QPainter p(&out);
+    for (const QImage* layer : {&fusionOverlay_, &segmentOverlay_})
+      if (!layer->isNull()) p.drawImage(out.rect(), *layer);
+  }
+  return out;
+}
+
 void SliceView::setSegmentation(SegmentationModel* model, SegmentToolModel* tools) {
   if (segmentation_) segmentation_->changed.disconnect(segConnection_);
   if (segmentTools_) segmentTools_->changed.disconnect(toolConnection_);
@@ -571,10 +583,9 @@ void SliceView::mousePressEvent(QMouseEvent* e) {
   const std::optional<ClickChain> chain = std::exchange(clickChain_, std::nullopt);
   if (doc_.empty()) return;
   const bool plain = !(e->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
-  if (e->button() == Qt::LeftButton && plain && pressSegmentTool(e->position())) {
-    return;
-  } else if (e->button() == Qt::LeftButton && plain && pressAnnotation(e->position())) {
-    return;
+  if (e->button() == Qt::LeftButton && plain &&
+      (pressSegmentTool(e->position()) || pressAnnotation(e->position()))) {
+    return;  // a segment tool, else the annotation tool, took the press
   } else if (e->button() == Qt::LeftButton && pressMeasure(e->position())) {
     drag_ = Drag::Handle;
   } else if (e->button() == Qt::LeftButton) {

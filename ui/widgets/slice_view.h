@@ -68,6 +68,11 @@ class SliceView : public QWidget {
   QWidget* annotationEditor() const { return textEdit_; }
   // While exporting, measurements show only when the user asked for them in exports.
   void setExporting(bool on);
+  // The export without overlays (issue 41): the slice as rendered, one pixel per sample of
+  // its plane (W/L applied; a slab's projection), with no crosshair, handles, border, text,
+  // measurements or annotations; with LAYERS the fused overlay and the segments over it, as
+  // the view blends them. Empty while no slice is shown.
+  QImage cleanImage(bool layers) const;
   // The segmentation to draw (each visible segment filled and outlined, on every plane: the
   // overlay takes each pixel's voxel) and the tools that edit it: with Paint or Erase a left
   // press and drag paints (one undo step), with Seed a left click fills the connected region,

@@ -1,8 +1,9 @@
 #pragma once
 // Fused dvr (issue 36): a second volume (PET on CT, ...) raycast in the same pass as the
 // first, each dvr sample classifying both at one patient point (kernels/classification/
-// overlay.cl). The overlay keeps its own grid: its origin, spacing and LPS direction place
-// it, so it need not share the base's dims or voxels.
+// overlay.cl); in mip its largest value along each ray over the volume's grey. The overlay keeps
+// its own grid: its origin, spacing and LPS direction place it, so it need not share the base's
+// dims or voxels.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -37,6 +38,11 @@ TransferFunction overlayWindowTable(double lo, double hi, const std::string& col
 // TF with every opacity times FACTOR (clamped to 0 ... 1): --overlay-opacity on a preset.
 TransferFunction scaledOpacity(TransferFunction tf, double factor);
 
+// What fused mip lays over the grey where the overlay's largest value along a ray shows: the
+// table's largest opacity (0 ... 1; for a window's table its opacity at and above HI, the
+// user's), as the slice views lay the colour map at the user's opacity.
+double overlayMipOpacity(const Lut& lut);
+
 // The overlay's classification in double precision, as overlay.cl (the reference renderer):
 // trilinear in the overlay's voxels (clamped to its edge voxels), transparent outside its box.
 struct OverlayClassifier {
@@ -45,6 +51,12 @@ struct OverlayClassifier {
   glm::dmat4 map{1.0};  // overlayVoxelMap
   OverlayClassifier(const Volume& base, const Volume& overlay, const TransferFunction& tf);
   glm::dvec4 at(const glm::dvec3& baseVoxel) const;
+  // The stored value there (trilinear); false outside the overlay's box.
+  bool value(const glm::dvec3& baseVoxel, double& stored) const;
+  // Fused mip (overlay.cl's overlay_mip): the overlay's largest VALUE along a ray over the
+  // volume's mip GREY: the table's colour there at overlayMipOpacity, as the slice views
+  // fuse; GREY where the table shows nothing there.
+  glm::dvec3 overMip(const glm::dvec3& grey, double largest) const;
 };
 
 }  // namespace voxray
