@@ -360,9 +360,10 @@ void RenderWorker::run() {
         reportError(e.what(), false);
       }
     }
-    if (overlayUpdate) overlay = std::move(overlayUpdate);
+    const bool overlayChanged = bool(overlayUpdate);  // (read before the move, for clang-tidy)
+    if (overlayChanged) overlay = std::move(overlayUpdate);
     // A new raycaster may reuse a freed one's address: a new volume sets it again.
-    if (overlayUpdate || nextVolume) overlayOn = nullptr;
+    if (overlayChanged || nextVolume) overlayOn = nullptr;
     if (raycaster && raycaster != overlayOn) {
       // Each raycaster (a time point) holds its own copy of the overlay on the device.
       overlayOn = raycaster;
