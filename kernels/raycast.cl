@@ -24,7 +24,7 @@
 #endif
 
 // LABELS (dvr): the label map and the segment table follow the other arguments (LABEL_PARAMS,
-// classification/labels.cl).
+// classification/labels.cl); then OVERLAY's (overlay.cl) and SURFACES' layer (surfaces.cl).
 // count: COUNT_SAMPLES adds each ray's samples to one of 64 counters (fewer collisions
 // than one; the host sums them). Unused otherwise, like leap and range without ESS.
 // PACKET 1 (CPUs): each work-item marches the 4 x PACKET_ROWS pixels at (4 x, PACKET_ROWS y)
@@ -35,14 +35,14 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
                       ,
                       __global float4* hits
 #endif
-                          LABEL_PARAMS OVERLAY_PARAMS) {
+                          LABEL_PARAMS OVERLAY_PARAMS SURFACE_PARAMS) {
 #if PACKET
   if (MODE == 0)
     iso_packet(vol, P, lut, out, leap, range, count, get_global_id(0),
-               get_global_id(1) PACKET_HITS_ARG LABEL_PASS OVERLAY_PASS);
+               get_global_id(1) PACKET_HITS_ARG LABEL_PASS OVERLAY_PASS SURFACE_PASS);
   else if (MODE == 1)
     dvr_packet(vol, P, lut, out, leap, range, count, get_global_id(0),
-               get_global_id(1) PACKET_HITS_ARG LABEL_PASS OVERLAY_PASS);
+               get_global_id(1) PACKET_HITS_ARG LABEL_PASS OVERLAY_PASS SURFACE_PASS);
   else {
     mip_packet(vol, P, out, leap, range, count, get_global_id(0), get_global_id(1));
 #if OVERLAY
@@ -87,7 +87,7 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
                         ,
                         &hit
 #endif
-                            LABEL_PASS OVERLAY_PASS);
+                            LABEL_PASS OVERLAY_PASS SURFACE_PASS);
     else {
       color = march_mip(VOLUME, P, leap, range, &r, &samples);
 #if OVERLAY

@@ -106,6 +106,11 @@ VOXRAY_SWITCH(SEGMENT_TF, 0, BUILD, "|segtf")
 // compiles and renders as before (#if). Not with ADAPTIVE (its levels read the base's table
 // alone); the light grid (shadows, ao), the path tracer, iso and mip ignore the overlay.
 VOXRAY_SWITCH(OVERLAY, 0, BUILD, "|overlay")
+// dvr: segments shown as smooth surfaces (issue 34, Raycaster's surface pass,
+// surface/surface_layer.cl): the march composites the pass's layer at its depth
+// (classification/surfaces.cl), one more kernel argument. Set only where the raycaster holds a
+// segmentation with a visible surface segment, so every other variant compiles as before (#if).
+VOXRAY_SWITCH(SURFACES, 0, BUILD, "|surfaces")
 
 // The packets' tuning (VOXRAY_TUNING above), measured on CPUs (docs/bench/history). An
 // experiment in a kernel directory (VOXRAY_KERNEL_DIR) tries another value with #undef and

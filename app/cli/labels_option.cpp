@@ -3,6 +3,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "voxray/io/error.h"
 #ifdef VOXRAY_HAS_SEGMENT_FILES
@@ -36,19 +37,56 @@ void LabelsOption::add(CLI::App& cmd) {
   cmd.add_option("--labels", file,
                  "segmentation for dvr: NIfTI or .seg.nrrd label map on the volume's grid, or "
                  "a DICOM SEG of the volume's series (names and colours as stored)");
+  cmd.add_option("--segment-surface", surfaces,
+                 "labels L,... of --labels / --labels-raw drawn in dvr as smooth surfaces (the "
+                 "mask filtered by a 1-voxel Gaussian, its 0.5 level) in the segment's colour "
+                 "and opacity, instead of tinting the volume");
 }
+
+namespace {
+
+// The segments --segment-surface names shown as surfaces.
+Segmentation withSurfaces(Segmentation s, const std::string& list) {
+  if (list.empty()) return s;
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    int label = 0;
+    try {
+      size_t used = 0;
+      label = std::stoi(item, &used);
+      if (used != item.size()) label = 0;
+    } catch (const std::exception&) {
+      label = 0;
+    }
+    Segment* seg = nullptr;
+    for (Segment& x : s.segments)
+      if (label > 0 && x.label == label) seg = &x;
+    if (!seg)
+      throw inputError("--segment-surface: '" + item +
+                       "' is not a label of the segmentation's segments (1 ... 255, comma-"
+                       "separated, each holding voxels)");
+    seg->display3d = Segment::Display3d::Surface;
+  }
+  return s;
+}
+
+}  // namespace
 
 std::optional<Segmentation> LabelsOption::load(const Volume& v) const {
   if (!raw.empty() && !file.empty())
     throw inputError("give --labels FILE or --labels-raw FILE, not both");
   if (!file.empty()) {
 #ifdef VOXRAY_HAS_SEGMENT_FILES
-    return readSegmentationFile(file, v);
+    return withSurfaces(readSegmentationFile(file, v), surfaces);
 #else
     throw inputError("--labels needs Voxray built with its NIfTI, Teem and DICOM parts");
 #endif
   }
-  if (raw.empty()) return std::nullopt;
+  if (raw.empty()) {
+    if (!surfaces.empty()) throw inputError("--segment-surface needs --labels or --labels-raw");
+    return std::nullopt;
+  }
   Segmentation s = emptySegmentation(v);
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(raw, ec);
@@ -71,7 +109,7 @@ std::optional<Segmentation> LabelsOption::load(const Volume& v) const {
     seg.colour = paletteColour(l);
     s.segments.push_back(seg);
   }
-  return s;
+  return withSurfaces(std::move(s), surfaces);
 }
 
 }  // namespace voxray::cli

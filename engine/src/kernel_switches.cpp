@@ -89,6 +89,7 @@ KernelSwitches kernelSwitches(const RenderParams& p, const KernelFacts& f) {
   // The levels live with the macro cells, and read the colour table alone (not the labels).
   // The overlay: fused into dvr's samples, or its maximum over mip's grey (overlay_mip).
   s.OVERLAY = f.overlay && (p.mode == Mode::Dvr || p.mode == Mode::Mip);
+  s.SURFACES = f.surfaces && p.mode == Mode::Dvr;
   s.ADAPTIVE = s.ADAPTIVE && s.ESS && !s.LABELS && !s.OVERLAY;  // (nor the overlay)
   s.STORAGE_IMAGE = f.storageImage;
   s.SLABS = f.slabs;

@@ -30,6 +30,8 @@ struct KernelFacts {
   bool segmentTf = false;
   // A dvr frame of a raycaster that holds an overlay (Raycaster::setOverlay).
   bool overlay = false;
+  // A dvr frame with a segment shown as a surface (Raycaster's surface pass).
+  bool surfaces = false;
 };
 
 // The switches a frame's parameters decide (the rest keep their defaults). A switch that

@@ -22,7 +22,9 @@ std::vector<glm::vec4> segmentTable(const std::vector<Segment>& segments, const 
     t[2 * l + 1].x = keep;
   }
   for (const Segment& s : segments) {
-    if (s.label == 0 || !s.visible) continue;  // an invisible segment is plain volume
+    // An invisible segment is plain volume; so is one shown as a surface (the surface pass
+    // draws it) or hidden in 3D.
+    if (s.label == 0 || !s.visible || s.display3d != Segment::Display3d::Volume) continue;
     const int l = s.label;
     t[2 * l] = glm::vec4(glm::clamp(s.colour, 0.0f, 1.0f), float(p.segmentBlend));
     t[2 * l + 1].x *= std::clamp(s.opacity, 0.0f, 1.0f);

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "device_frame.h"
@@ -14,6 +15,8 @@
 #include "overlay_cells.h"
 #include "segment_table.h"  // kernels/: the table's size
 #include "segment_tf.h"
+#include "surface_field.h"
+#include "surface_layer.h"  // kernels/: the pass's layout
 #include "voxray/engine/overlay.h"
 #include "voxray/engine/path_tracer.h"
 #include "voxray/io/segmentation.h"
@@ -61,6 +64,17 @@ struct Raycaster::Impl {
   bool overlay = false;
   cl::Buffer overlayVolume, overlayLut, overlayCellBuffer, overlayGeometry;
   std::vector<uint8_t> overlayCellsShown;
+  // Segments shown as surfaces (surfaceHits, surface_layer.cl): the fields by label (kept
+  // while a segment is shown otherwise, dropped where an edit touches them), the labels whose
+  // fields the device holds, in their order, and the pass's layer.
+  std::map<uint8_t, SurfaceField> surfaceFields;
+  float surfaceSigma = kSurfaceSigmaVoxels;
+  int surfaceBuilds = 0;  // whole builds (an edit inside a field's box filters it again)
+  std::vector<uint8_t> surfacesOnDevice;
+  bool surfaceFieldsChanged = true;
+  cl::Buffer surfaceFieldBuffer, surfaceGeoBuffer, surfaceColourBuffer, surfaceLayer, surfaceProbe;
+  size_t surfaceLayerCapacity = 0, surfaceProbeCapacity = 0;
+  std::vector<Raycaster::SurfaceHit>* probeOut = nullptr;  // set by surfaceHits
 
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s)
       : frame(std::make_shared<DeviceFrame>(ctx.impl(), v, s)),
@@ -78,7 +92,128 @@ struct Raycaster::Impl {
   cl::NDRange local() const;
   std::unique_ptr<PathTracer> pathTracer;  // lighting cinematic, made on first use
   PathTracer& tracer(Raycaster& r);
+  // Surfaces
+  std::vector<uint8_t> shownSurfaces() const;
+  void buildSurfaceFields(const Segmentation& seg);
+  void uploadSurfaces(const std::vector<uint8_t>& shown);
+  void surfacePass(const RenderParams& p, const KernelSwitches& sw, size_t y0, size_t y1,
+                   bool probe);
 };
+
+// The labels of the segments a dvr frame draws as surfaces, in the list's order.
+std::vector<uint8_t> Raycaster::Impl::shownSurfaces() const {
+  std::vector<uint8_t> out;
+  for (const Segment& s : segments) {
+    if (!s.visible || s.display3d != Segment::Display3d::Surface) continue;
+    auto it = surfaceFields.find(s.label);
+    if (it == surfaceFields.end() || it->second.empty()) continue;
+    if (out.size() < SURFACE_MAX) out.push_back(s.label);
+  }
+  return out;
+}
+
+// Fields for the surface segments that have none (a new surface, or one an edit touched).
+void Raycaster::Impl::buildSurfaceFields(const Segmentation& seg) {
+  for (const Segment& s : seg.segments) {
+    if (!s.visible || s.display3d != Segment::Display3d::Surface) continue;
+    if (surfaceFields.count(s.label)) continue;
+    surfaceFields[s.label] = buildSurfaceField(seg, s.label, surfaceSigma);
+    ++surfaceBuilds;
+    surfaceFieldsChanged = true;
+  }
+  // Fields of segments no longer in the list go.
+  for (auto it = surfaceFields.begin(); it != surfaceFields.end();) {
+    if (!seg.find(it->first))
+      it = surfaceFields.erase(it), surfaceFieldsChanged = true;
+    else
+      ++it;
+  }
+}
+
+// The fields of SHOWN into one device buffer (fields, then block flags) and their geometry.
+void Raycaster::Impl::uploadSurfaces(const std::vector<uint8_t>& shown) {
+  if (!surfaceFieldsChanged && shown == surfacesOnDevice) return;
+  std::vector<cl_int4> geo;
+  size_t bytes = 0;
+  for (uint8_t l : shown) {
+    const SurfaceField& f = surfaceFields.at(l);
+    bytes += f.values.size() + f.blocks.size();
+  }
+  if (bytes >= (size_t(1) << 31) || bytes > cl.info.maxAllocBytes)
+    throw deviceError("the surfaces' fields need " + std::to_string(bytes) +
+                      " bytes in one allocation: show fewer segments as surfaces");
+  std::vector<uint8_t> all;
+  all.reserve(bytes);
+  for (uint8_t l : shown) {
+    const SurfaceField& f = surfaceFields.at(l);
+    const int at = int(all.size());
+    all.insert(all.end(), f.values.begin(), f.values.end());
+    const int blocksAt = int(all.size());
+    all.insert(all.end(), f.blocks.begin(), f.blocks.end());
+    geo.push_back({{f.lo.x, f.lo.y, f.lo.z, at}});
+    geo.push_back({{f.dims.x, f.dims.y, f.dims.z, blocksAt}});
+    geo.push_back({{f.blockDims.x, f.blockDims.y, f.blockDims.z, int(l)}});
+  }
+  clCall([&] {
+    surfaceFieldBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                    std::max<size_t>(all.size(), 1), all.data());
+    surfaceGeoBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                  std::max<size_t>(geo.size(), 1) * sizeof(cl_int4), geo.data());
+    if (!surfaceColourBuffer())
+      surfaceColourBuffer =
+          cl::Buffer(cl.context, CL_MEM_READ_ONLY, SURFACE_MAX * sizeof(cl_float4));
+    return 0;
+  });
+  surfacesOnDevice = shown;
+  surfaceFieldsChanged = false;
+}
+
+// The surface pass over rows [Y0, Y1) into surfaceLayer (and the probe): enqueued before the
+// frame's kernel on the same in-order queue, after its parameters are uploaded.
+void Raycaster::Impl::surfacePass(const RenderParams& p, const KernelSwitches& sw, size_t y0,
+                                  size_t y1, bool probe) {
+  const std::vector<uint8_t> shown = shownSurfaces();
+  uploadSurfaces(shown);
+  std::vector<cl_float4> colours(SURFACE_MAX, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}});
+  for (size_t i = 0; i < shown.size(); ++i) {
+    const Segment& s = *std::find_if(segments.begin(), segments.end(),
+                                     [&](const Segment& x) { return x.label == shown[i]; });
+    const glm::vec3 c = glm::clamp(s.colour, 0.0f, 1.0f);
+    colours[i] = {{c.r, c.g, c.b, std::clamp(s.opacity, 0.0f, 1.0f)}};
+  }
+  KernelSwitches only;  // the pass reads the frame's camera (ORTHO) alone
+  only.ORTHO = sw.ORTHO;
+  const std::string options = "-cl-fast-relaxed-math " + switchOptions(only, false) +
+                              " -D SURFACE_PROBE=" + (probe ? "1" : "0");
+  cl::Kernel kernel = cl.kernel("surface/surface_layer.cl", "surface_layer", options);
+  const size_t pixels = size_t(p.width) * size_t(p.height);
+  clCall([&] {
+    if (2 * pixels * sizeof(cl_float4) > surfaceLayerCapacity) {
+      surfaceLayer = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 2 * pixels * sizeof(cl_float4));
+      surfaceLayerCapacity = 2 * pixels * sizeof(cl_float4);
+    }
+    if (probe && 2 * pixels * sizeof(cl_float4) > surfaceProbeCapacity) {
+      surfaceProbe = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, 2 * pixels * sizeof(cl_float4));
+      surfaceProbeCapacity = 2 * pixels * sizeof(cl_float4);
+    }
+    cl.queue.enqueueWriteBuffer(surfaceColourBuffer, CL_FALSE, 0, SURFACE_MAX * sizeof(cl_float4),
+                                colours.data());
+    cl_uint arg = 0;
+    kernel.setArg(arg++, frame->paramsBuffer);
+    kernel.setArg(arg++, surfaceFieldBuffer);
+    kernel.setArg(arg++, surfaceGeoBuffer);
+    kernel.setArg(arg++, surfaceColourBuffer);
+    kernel.setArg(arg++, cl_int(shown.size()));
+    kernel.setArg(arg++, surfaceLayer);
+    if (probe) kernel.setArg(arg++, surfaceProbe);
+    if (y1 > y0)
+      cl.queue.enqueueNDRangeKernel(kernel, cl::NDRange(0, y0),
+                                    cl::NDRange(size_t(p.width), y1 - y0), cl::NullRange);
+    // The colours' asynchronous write reads `colours`: wait before it goes out of scope.
+    cl.queue.finish();
+    return 0;
+  });
+}
 
 void Raycaster::Impl::upload() {
   frame->upload(opts.maxSlabBytes);
@@ -100,6 +235,7 @@ KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
   f.labels = labels && p.mode == Mode::Dvr && !changesNothing(segmentTable(segments, p));
   f.segmentTf = f.labels && anySegmentTf(segmentTfSlots(segments, p));
   f.overlay = overlay;
+  f.surfaces = labels && p.mode == Mode::Dvr && !shownSurfaces().empty();
   return kernelSwitches(p, f);
 }
 
@@ -196,6 +332,9 @@ void Raycaster::setSegmentation(const Segmentation& seg) {
   m.segmentsUploaded.clear();
   m.segTfCellsTable.clear();
   m.labels = true;
+  m.surfaceFields.clear();  // a new label map
+  m.surfaceFieldsChanged = true;
+  m.buildSurfaceFields(seg);
 }
 
 void Raycaster::updateSegmentation(const Segmentation& seg, glm::ivec3 lo, glm::ivec3 hi) {
@@ -205,7 +344,22 @@ void Raycaster::updateSegmentation(const Segmentation& seg, glm::ivec3 lo, glm::
   m.segments = seg.segments;
   lo = glm::clamp(lo, glm::ivec3(0), m.volume.dims - 1);
   hi = glm::clamp(hi, glm::ivec3(0), m.volume.dims - 1);
-  if (glm::any(glm::greaterThan(lo, hi))) return;
+  if (glm::any(glm::greaterThan(lo, hi))) return m.buildSurfaceFields(seg);
+  // Fields the edit may have changed: filtered again around the box, or, where the segment grew
+  // out of the box a field was built over, dropped and built again (a surface segment's) below.
+  for (auto it = m.surfaceFields.begin(); it != m.surfaceFields.end();) {
+    if (!surfaceFieldTouched(it->second, seg, lo, hi)) {
+      ++it;
+      continue;
+    }
+    m.surfaceFieldsChanged = true;
+    if (updateSurfaceField(it->second, seg, lo, hi)) {
+      ++it;
+    } else {
+      it = m.surfaceFields.erase(it);
+    }
+  }
+  m.buildSurfaceFields(seg);
   // Whole planes lo.z ... hi.z: one contiguous write (a box's rows would be many small ones).
   const size_t plane = size_t(m.volume.dims.x) * size_t(m.volume.dims.y);
   clCall([&] {
@@ -228,9 +382,37 @@ void Raycaster::clearSegmentation() {
   m.segmentsUploaded.clear();
   m.segTfCellsTable.clear();
   m.space.setShownCells(m.cl, {});
+  m.surfaceFields.clear();
+  m.surfacesOnDevice.clear();
+  m.surfaceFieldBuffer = cl::Buffer();
+  m.surfaceFieldsChanged = true;
 }
 
 bool Raycaster::hasSegmentation() const { return impl_->labels; }
+
+void Raycaster::setSurfaceSigma(float sigmaVoxels) {
+  Impl& m = *impl_;
+  if (!(sigmaVoxels >= 0.0f) || sigmaVoxels > 8.0f)
+    throw inputError("the surfaces' smoothing sigma must be 0 ... 8 voxels, not " +
+                     std::to_string(sigmaVoxels));
+  m.surfaceSigma = sigmaVoxels;
+  m.surfaceFields.clear();  // built again at the next setSegmentation
+  m.surfaceFieldsChanged = true;
+}
+
+int Raycaster::surfaceFieldBuilds() const { return impl_->surfaceBuilds; }
+
+std::vector<Raycaster::SurfaceHit> Raycaster::surfaceHits(const RenderParams& params) {
+  std::vector<SurfaceHit> hits;
+  struct Reset {
+    Impl& m;
+    ~Reset() { m.probeOut = nullptr; }
+  } reset{*impl_};
+  impl_->probeOut = &hits;
+  Image scratch;
+  render(params, scratch);
+  return hits;
+}
 
 std::vector<std::string> Raycaster::setOverlay(const Volume& o, const TransferFunction& tf) {
   Impl& m = *impl_;
@@ -410,6 +592,8 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     }
     if (m.opts.countSamples)
       q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
+    // Segments shown as surfaces: their layer first (the same rows), which the march reads.
+    if (sw.SURFACES) m.surfacePass(p, sw, size_t(y0), size_t(y1), m.probeOut != nullptr);
     cl_uint arg = m.device.setArgs(kernel, 0);  // vol, or vol0 .. per slab
     kernel.setArg(arg++, f.paramsBuffer);
     kernel.setArg(arg++, f.lutBuffer);
@@ -436,6 +620,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       kernel.setArg(arg++, m.overlayCellBuffer);
       kernel.setArg(arg++, m.overlayGeometry);
     }
+    if (sw.SURFACES) kernel.setArg(arg++, m.surfaceLayer);  // SURFACE_PARAMS (surfaces.cl)
     cl::NDRange local = m.local();
     // A band starts at the work-item row holding Y0: the kernels take their pixel from
     // get_global_id, which counts the offset, and drop items past the image.
@@ -459,6 +644,19 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       q.enqueueReadBuffer(m.hitBuffer, CL_FALSE, 0, pixels * sizeof(cl_float4), m.hitsOut->data());
     q.enqueueReadBuffer(m.outBuffer, CL_TRUE, size_t(y0) * rowBytes, size_t(y1 - y0) * rowBytes,
                         out.rgba.data() + size_t(y0) * rowBytes);
+    if (m.probeOut) {
+      std::vector<cl_float4> probe(2 * pixels, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}});
+      if (sw.SURFACES)
+        q.enqueueReadBuffer(m.surfaceProbe, CL_TRUE, 0, probe.size() * sizeof(cl_float4),
+                            probe.data());
+      m.probeOut->assign(pixels, SurfaceHit{});
+      for (size_t i = 0; i < pixels; ++i) {
+        const cl_float4& a = probe[2 * i];
+        const cl_float4& n = probe[2 * i + 1];
+        (*m.probeOut)[i] = {glm::vec3(a.s[0], a.s[1], a.s[2]), glm::vec3(n.s[0], n.s[1], n.s[2]),
+                            int(std::lround(a.s[3]))};
+      }
+    }
     return 0;
   });
   if (stats) {

@@ -17,8 +17,9 @@
 #include "simd/math_lanes.cl"
 
 // TF2D frames without labels, an overlay or hit output classify their samples from a queue
-// (classify_queue.cl says why); the others in place (dvr_tf2dN below).
-#define DVR_CLASSIFY_QUEUE (TF2D && !LABELS && !OVERLAY && !HIT_OUTPUT)
+// (classify_queue.cl says why); the others in place (dvr_tf2dN below). SURFACES inserts
+// its layer by the composite's opacity now, which the classify queue holds back.
+#define DVR_CLASSIFY_QUEUE (TF2D && !LABELS && !OVERLAY && !HIT_OUTPUT && !SURFACES)
 
 #if GRADIENT_OPACITY
 // The lanes in `live` whose table opacity is above 0 take their gradient at t now (their
@@ -153,6 +154,37 @@ inline void dvr_compositeN(
   *active &= ~(seen & (*alpha >= P->dvr.z));
 }
 
+#if SURFACES
+// Each lane's pixel's surface layer (surfaces.cl): premultiplied colour and opacity lc, depth
+// lt; lanes past the image's edge get none.
+inline void surface_layerN(__constant RaycastParams* P, __global const float4* restrict surf,
+                           int gx, int gy, floatN lc[4], floatN* lt) {
+  float cs[4][LANES], ts[LANES];
+  for (int l = 0; l < LANES; ++l) {
+    int px = 4 * gx + (l & 3), py = PACKET_ROWS * gy + (l >> 2);
+    float4 c = (float4)(0.0f);
+    float t = SURFACE_NONE;
+    if (px < P->image.x && py < P->image.y) {
+      size_t pix = (size_t)py * P->image.x + px;
+      c = surf[2 * pix];
+      t = surf[2 * pix + 1].x;
+    }
+    cs[0][l] = c.x, cs[1][l] = c.y, cs[2][l] = c.z, cs[3][l] = c.w, ts[l] = t;
+  }
+  for (int ch = 0; ch < 4; ++ch) lc[ch] = vloadN(0, cs[ch]);
+  *lt = vloadN(0, ts);
+}
+
+// surface_composite (surfaces.cl) for the lanes in `now`, which then have their layer.
+inline void surface_compositeN(const floatN lc[4], intN now, floatN acc[3], floatN* alpha,
+                               intN* due) {
+  floatN w = select((floatN)(0.0f), 1.0f - *alpha, now);
+  for (int ch = 0; ch < 3; ++ch) acc[ch] += w * lc[ch];
+  *alpha += w * lc[3];
+  *due &= ~now;
+}
+#endif
+
 #if ADAPTIVE
 // adaptive_segment (march.cl) for the lanes in `live` (f 1 for the others), `reach` as
 // adaptive_reach's for each lane.
@@ -204,6 +236,11 @@ inline void dvr_packet(PACKET_ARGS) {
 #if HIT_OUTPUT
   floatN t_hit = 0.0f;
   intN found = 0;
+#endif
+#if SURFACES
+  floatN layer[4], layer_t;
+  surface_layerN(P, surf, gx, gy, layer, &layer_t);
+  intN layer_due = layer[3] > 0.0f;
 #endif
   while (any(active)) {
     if (ESS) {
@@ -280,6 +317,14 @@ inline void dvr_packet(PACKET_ARGS) {
       alpha = classify_queue_push(vol, P, lut, &cq, t[k], value[k], sb[k] - sa[k], seen);
       active &= ~(alpha >= P->dvr.z);
 #else
+#if SURFACES
+      // The layer before the first sample at or beyond its depth (march_dvr's rule).
+      intN layer_now = layer_due & live[k] & active & (t[k] >= layer_t);
+      if (any(layer_now)) {
+        surface_compositeN(layer, layer_now, acc, &alpha, &layer_due);
+        active &= ~(layer_now & (alpha >= P->dvr.z));
+      }
+#endif
 #if HIT_OUTPUT
       floatN before = alpha;
 #endif
@@ -301,6 +346,9 @@ inline void dvr_packet(PACKET_ARGS) {
     i = at;
     active &= i <= r.n;
   }
+#if SURFACES
+  if (any(layer_due)) surface_compositeN(layer, layer_due, acc, &alpha, &layer_due);  // behind
+#endif
 #if DVR_CLASSIFY_QUEUE
   if (cq.n > 0) classify_queue_flush(vol, P, lut, &cq, cq.n);  // n < LANES after a push
   for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, cq.acc[ch]);
@@ -308,8 +356,9 @@ inline void dvr_packet(PACKET_ARGS) {
 #else
   if (SHADING) {
     if (queue.n > 0) shade_queue_flush(vol, P, lut, &queue, queue.n QUEUE_SEGS_ARG);
-#if OVERLAY
-    for (int ch = 0; ch < 3; ++ch) acc[ch] += vloadN(0, queue.acc[ch]);  // the overlay's part
+#if OVERLAY || SURFACES
+    // acc holds the overlay's part, or the surface layers': the queue's colours join them.
+    for (int ch = 0; ch < 3; ++ch) acc[ch] += vloadN(0, queue.acc[ch]);
 #else
     for (int ch = 0; ch < 3; ++ch) acc[ch] = vloadN(0, queue.acc[ch]);
 #endif

@@ -8,6 +8,7 @@
 #include "classification/labels.cl"
 #include "classification/lut.cl"
 #include "classification/overlay.cl"
+#include "classification/surfaces.cl"
 #include "classification/tf2d.cl"
 #include "empty_space/skip.cl"
 #include "math.cl"
@@ -211,9 +212,16 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
                         ,
                         float4* hit_out
 #endif
-                            LABEL_PARAMS OVERLAY_PARAMS) {
+                            LABEL_PARAMS OVERLAY_PARAMS SURFACE_PARAMS) {
   float3 acc = (float3)(0.0f);
   float alpha = 0.0f;
+#if SURFACES
+  // The surface layer of this pixel (one work-item per pixel: the global id is the pixel).
+  const size_t pix = (size_t)get_global_id(1) * P->image.x + get_global_id(0);
+  const float4 layer = surf[2 * pix];
+  const float layer_t = surf[2 * pix + 1].x;
+  bool layer_due = layer.w > 0.0f;
+#endif
 #if HIT_OUTPUT
 #define DVR_HIT_ARG , hit_out
 #else
@@ -232,11 +240,21 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #else
     float2 s = ray_segment(r, i);
 #endif
+#if SURFACES
+    if (layer_due && 0.5f * (s.x + s.y) >= layer_t) {
+      surface_composite(layer, &acc, &alpha);
+      layer_due = false;
+      if (alpha >= P->dvr.z) break;
+    }
+#endif
     if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc,
                     &alpha DVR_HIT_ARG LABEL_PASS OVERLAY_PASS))
       break;
   }
 #undef DVR_HIT_ARG
+#if SURFACES
+  if (layer_due) surface_composite(layer, &acc, &alpha);  // behind the last sample
+#endif
   return acc + (1.0f - alpha) * P->background.xyz;
 }
 

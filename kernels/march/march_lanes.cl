@@ -32,7 +32,7 @@
 #define PACKET_ARGS                                                                            \
   __global const short *restrict vol, __constant RaycastParams *P, __global const float4 *lut, \
       __global uchar4 *out, CELL_ARGS, __global uint *count, int gx,                           \
-      int gy PACKET_HITS LABEL_PARAMS OVERLAY_PARAMS
+      int gy PACKET_HITS LABEL_PARAMS OVERLAY_PARAMS SURFACE_PARAMS
 
 // Writes the packet's pixels that lie inside the image, and adds its samples to a counter.
 inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __global uint* count,

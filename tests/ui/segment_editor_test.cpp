@@ -14,6 +14,7 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 
@@ -22,6 +23,7 @@
 #include "segment_panel.h"
 #include "slice_view.h"
 #include "study_state.h"
+#include "voxray/engine/camera.h"
 #include "voxray/io/orientation.h"
 #include "voxray/io/phantom.h"
 #include "voxray/io/raw_import.h"
@@ -311,6 +313,53 @@ class SegmentEditorTest : public QObject {
     QCOMPARE(tf->currentText(), QString("Volume's"));
     const QImage restored = test::changedFrame(*fixture_.window, bone);
     QCOMPARE(test::differingPixels(restored, before), 0);
+  }
+
+  // The list's "3D" choice (issue 34): a sphere painted in the air before the face shows
+  // nothing in the volume (air is transparent in the dvr); switched to Surface, the 3D frame
+  // changes, and only at the sphere's pixels (rays passing within its radius, plus the
+  // voxelisation's and smoothing's reach); Hidden gives the first frame back.
+  void surfaceChoiceChangesThe3DFrameAtTheSegment() {
+    models().render.update(kAppearance, [](RenderParams& p) { p.mode = Mode::Dvr; });
+    const uint8_t label = addSegment();
+    const glm::dvec3 centre(14, 6, 14);  // voxels of 4 mm: right, anterior, low; in the air
+    const double radiusMm = 20.0;
+    models().segmentation.paintSphere(centre, radiusMm, label);
+    const QImage inVolume = test::settledFrame(*fixture_.window);
+    auto* box = panel().findChild<QComboBox*>("segmentDisplay3d");
+    QVERIFY(box);
+    QCOMPARE(box->currentText(), QString("In volume"));
+    box->setCurrentIndex(box->findText("Surface"));
+    QCOMPARE(models().segmentation.segmentation().find(label)->display3d,
+             Segment::Display3d::Surface);
+    const QImage surface = test::changedFrame(*fixture_.window, inVolume);
+    QCOMPARE(surface.size(), inVolume.size());
+    // Each pixel's ray's distance from the sphere's centre (world: mm from the volume centre).
+    RenderParams p = models().render.params();
+    p.width = surface.width();
+    p.height = surface.height();
+    const ViewGeometry g = makeViewGeometry(*models().document.volume(), p);
+    const glm::dvec3 c = glm::inverse(g.worldToVoxel) * (centre - g.voxelCentre);
+    int changed = 0, changedOff = 0, inner = 0, innerChanged = 0;
+    for (int y = 0; y < p.height; ++y)
+      for (int x = 0; x < p.width; ++x) {
+        glm::dvec3 o, d;
+        g.ray(x, y, p.width, p.height, o, d);
+        const double dist = glm::length(glm::cross(c - o, d));
+        const bool differs = surface.pixel(x, y) != inVolume.pixel(x, y);
+        changed += differs;
+        // A voxel's half diagonal (3.5 mm) and a pixel (2.7 mm here) beyond the radius.
+        changedOff += differs && dist > radiusMm + 7.0;
+        if (dist < radiusMm - 7.0) inner += 1, innerChanged += differs;
+      }
+    qInfo("surface: %d pixels changed, %d beyond the sphere; %d of %d inner pixels", changed,
+          changedOff, innerChanged, inner);
+    QVERIFY(inner > 20);
+    QCOMPARE(innerChanged, inner);
+    QCOMPARE(changedOff, 0);
+    box->setCurrentIndex(box->findText("Hidden"));
+    const QImage hidden = test::changedFrame(*fixture_.window, surface);
+    QCOMPARE(test::differingPixels(hidden, inVolume), 0);
   }
 
   // The seeded-region click and voxray-cli segment --threshold --seed --connectivity give the
@@ -676,6 +725,69 @@ class SegmentEditorTest : public QObject {
     QVERIFY(errors_.isEmpty());
     test::waitFullFrame(*fixture_.window);
     QTest::qWait(500);
+    QVERIFY(fixture_.window->grab().save(shot));
+  }
+
+  // The README's surface figure: the same skull, its 3D display Surface (the list's 3D column),
+  // the dvr hiding the skull's voxels (Hide) so that the surface shows alone.
+  void readmeSurfaceScreenshot() {
+    const QString shot = qEnvironmentVariable("VOXRAY_SEGMENT_SURFACE_SHOT");
+    if (shot.isEmpty())
+      QSKIP("set VOXRAY_SEGMENT_SURFACE_SHOT=PATH to write the README's surface screenshot");
+    RawLayout l;  // as readmeScreenshot
+    l.dims = {256, 256, 0};
+    l.type = SampleType::I16;
+    l.order = ByteOrder::Big;
+    l.spacingMm = {1.0, 1.0, 2.0};
+    l.slope = 1.0;
+    l.intercept = -1024.0;
+    l.direction = directionFromAxesCode("LPI");
+    auto v = std::make_shared<const Volume>(
+        importRaw(std::string(VOXRAY_DATA_DIR) + "/stanford/CThead", l));
+    Quality q = models().render.quality();
+    q.resolution = {0, 0};
+    models().render.setQuality(q);
+    fixture_.window->resize(1900, 1040);
+    openStudy(models(), v, "CThead");
+    models().render.update(kAppearance | kCamera, [](RenderParams& p) {
+      p.mode = Mode::Dvr;
+      p.preset = "CT-Bone";
+      p.camera.azimuthDeg = 30.0;
+    });
+    const uint8_t label = addSegment();
+    models().segmentation.rename(label, "Skull");
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Threshold;
+      s.range = {300, 3000};
+    });
+    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
+    panel()
+        .findChild<QComboBox*>("segmentOperation")
+        ->setCurrentIndex(int(MaskOperation::KeepLargest));
+    panel().findChild<QPushButton*>("segmentApplyOperation")->click();
+    setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::None; });
+    models().segmentation.setColour(label, {0.95f, 0.75f, 0.35f});
+    auto* display = panel().findChild<QComboBox*>("segmentDisplay3d");
+    display->setCurrentIndex(display->findText("Surface"));
+    panel().findChild<QComboBox*>("segmentMask3d")->setCurrentIndex(int(MaskChoice::Hide));
+    panel().updateStatistics();
+    fixture_.window->segmentDock()->show();
+    fixture_.window->segmentDock()->raise();
+    // The list scrolled to its 3D column.
+    auto* list = panel().findChild<QTableWidget*>("segmentList");
+    list->scrollToItem(list->item(0, list->columnCount() - 2), QAbstractItemView::PositionAtCenter);
+    list->horizontalScrollBar()->setValue(list->horizontalScrollBar()->maximum());
+    QVERIFY(errors_.isEmpty());
+    // The surface variant's build and the skull's field come before its first frame: wait for
+    // 10 s without a frame or a band of one (a sharp frame comes in bands).
+    QSignalSpy frames(&fixture_.window->scheduler(), &RenderScheduler::frameReady);
+    QSignalSpy bands(&fixture_.window->scheduler(), &RenderScheduler::bandReady);
+    for (int quiet = 0; quiet < 100;) {
+      const qsizetype seen = frames.size() + bands.size();
+      QTest::qWait(100);
+      quiet = frames.size() + bands.size() == seen ? quiet + 1 : 0;
+    }
+    QCoreApplication::processEvents();
     QVERIFY(fixture_.window->grab().save(shot));
   }
 };

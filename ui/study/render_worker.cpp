@@ -365,7 +365,8 @@ void RenderWorker::run() {
           segOn = raycaster;
         } else {
           // The list always (colours, visibility); the labels of the boxes (inclusive ends).
-          raycaster->updateSegmentation(*segmentation, anyPatch ? lo : glm::ivec3(0),
+          // (No box: an empty one, lo above hi, so no surface field counts as edited.)
+          raycaster->updateSegmentation(*segmentation, anyPatch ? lo : glm::ivec3(1),
                                         anyPatch ? hi - 1 : glm::ivec3(0));
         }
       } catch (const std::exception& e) {

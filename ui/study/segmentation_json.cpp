@@ -50,6 +50,25 @@ Segment::Code codeFrom(const Json& j, const std::string& field) {
 
 }  // namespace
 
+std::string display3dName(Segment::Display3d d) {
+  switch (d) {
+    case Segment::Display3d::Surface:
+      return "surface";
+    case Segment::Display3d::Hidden:
+      return "hidden";
+    case Segment::Display3d::Volume:
+      break;
+  }
+  return "volume";
+}
+
+std::optional<Segment::Display3d> parseDisplay3d(const std::string& name) {
+  for (auto d :
+       {Segment::Display3d::Volume, Segment::Display3d::Surface, Segment::Display3d::Hidden})
+    if (display3dName(d) == name) return d;
+  return std::nullopt;
+}
+
 nlohmann::ordered_json segmentationToJson(const Segmentation& s) {
   const auto& g = s.grid;
   Json j;
@@ -66,6 +85,7 @@ nlohmann::ordered_json segmentationToJson(const Segmentation& s) {
                              {"colour", {seg.colour.r, seg.colour.g, seg.colour.b}},
                              {"opacity", seg.opacity},
                              {"visible", seg.visible},
+                             {"display-3d", display3dName(seg.display3d)},
                              {"category", codeJson(seg.category)},
                              {"type", codeJson(seg.type)}});
   j["label-map"] = {{"encoding", "zlib+base64"}, {"text", labelMapToText(s.labels)}};
@@ -112,6 +132,11 @@ Segmentation segmentationFromJson(const nlohmann::ordered_json& j) {
     const Json& visible = member(e, "visible", f + ".visible");
     if (!visible.is_boolean()) wrong(f + ".visible", "must be true or false");
     seg.visible = visible.get<bool>();
+    if (e.contains("display-3d")) {  // optional: older sessions show every segment in the volume
+      const auto d = parseDisplay3d(text(e.at("display-3d"), f + ".display-3d"));
+      if (!d) wrong(f + ".display-3d", "must be volume, surface or hidden");
+      seg.display3d = *d;
+    }
     seg.category = codeFrom(member(e, "category", f + ".category"), f + ".category");
     seg.type = codeFrom(member(e, "type", f + ".type"), f + ".type");
     s.segments.push_back(seg);

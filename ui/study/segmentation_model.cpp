@@ -51,7 +51,7 @@ void SegmentationModel::endStroke() {
 }
 
 void SegmentationModel::reset(const Volume& v) {
-  s_ = emptySegmentation(v);
+  s_ = std::make_shared<Segmentation>(emptySegmentation(v));
   active_ = true;
   steps_.clear();
   done_ = 0;
@@ -62,7 +62,7 @@ void SegmentationModel::reset(const Volume& v) {
 void SegmentationModel::load(Segmentation s, const Volume& v) {
   checkSegmentation(s);
   checkSameGrid(s, v);
-  s_ = std::move(s);
+  s_ = std::make_shared<Segmentation>(std::move(s));
   active_ = true;
   steps_.clear();
   done_ = 0;
@@ -71,7 +71,7 @@ void SegmentationModel::load(Segmentation s, const Volume& v) {
 }
 
 void SegmentationModel::clear() {
-  s_ = Segmentation{};
+  s_ = std::make_shared<Segmentation>();
   active_ = false;
   steps_.clear();
   done_ = 0;
@@ -79,8 +79,15 @@ void SegmentationModel::clear() {
   changed.notify();
 }
 
+Segmentation& SegmentationModel::mut() {
+  // Copy on write: a snapshot still held elsewhere (the statistics counting on the pool, the
+  // render worker's pending update) keeps the labels it took; the model edits its own copy.
+  if (s_.use_count() > 1) s_ = std::make_shared<Segmentation>(*s_);
+  return *s_;
+}
+
 Segment& SegmentationModel::segment(uint8_t label) {
-  for (auto& seg : s_.segments)
+  for (auto& seg : mut().segments)
     if (seg.label == label) return seg;
   throw inputError("There is no segment with label " + std::to_string(label) + ".");
 }
@@ -92,11 +99,11 @@ void SegmentationModel::push(std::string what, LabelPatch patch, std::vector<Seg
     // both boxes. Swapping both patches out gives the map before the stroke, to copy.
     Step& a = steps_.back();
     const glm::ivec3 lo = glm::min(a.patch.lo, patch.lo), hi = glm::max(a.patch.hi, patch.hi);
-    swapPatch(s_, patch);
-    swapPatch(s_, a.patch);
-    LabelPatch merged = copyLabels(s_, lo, hi);
-    swapPatch(s_, a.patch);
-    swapPatch(s_, patch);
+    swapPatch(mut(), patch);
+    swapPatch(mut(), a.patch);
+    LabelPatch merged = copyLabels(mut(), lo, hi);
+    swapPatch(mut(), a.patch);
+    swapPatch(mut(), patch);
     a.patch = std::move(merged);
     changed.notify();
     return;
@@ -112,66 +119,74 @@ void SegmentationModel::push(std::string what, LabelPatch patch, std::vector<Seg
 void SegmentationModel::swap(Step& step) {
   strokeStep_ = false;
   touched(step.patch);
-  swapPatch(s_, step.patch);
-  std::swap(s_.segments, step.segments);
+  swapPatch(mut(), step.patch);
+  std::swap(mut().segments, step.segments);
 }
 
 uint8_t SegmentationModel::addSegment(const std::string& name, glm::vec3 colour) {
   if (!active_) throw inputError("Open a volume before adding a segment.");
   std::array<bool, 256> used{};
-  for (const auto& seg : s_.segments) used[seg.label] = true;
+  for (const auto& seg : mut().segments) used[seg.label] = true;
   int label = 1;
   while (label < 256 && used[size_t(label)]) ++label;
   if (label == 256)
     throw inputError(
         "This segmentation holds 255 segments, the most a label map can: remove "
         "one before adding another.");
-  auto before = s_.segments;
+  auto before = mut().segments;
   Segment seg;
   seg.label = uint8_t(label);
   seg.name = name;
   seg.colour = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
-  s_.segments.push_back(seg);
+  mut().segments.push_back(seg);
   push("Add segment", {}, std::move(before));
   return uint8_t(label);
 }
 
 void SegmentationModel::removeSegment(uint8_t label) {
   segment(label);
-  auto before = s_.segments;
+  auto before = mut().segments;
   // Its voxels become background, in the same step.
-  LabelPatch patch = voxray::setMask(s_, label, Mask(s_.labels.size(), 0), EditPolicy{});
-  std::erase_if(s_.segments, [&](const Segment& s) { return s.label == label; });
+  LabelPatch patch = voxray::setMask(mut(), label, Mask(mut().labels.size(), 0), EditPolicy{});
+  std::erase_if(mut().segments, [&](const Segment& s) { return s.label == label; });
   push("Remove segment", std::move(patch), std::move(before));
 }
 
 void SegmentationModel::rename(uint8_t label, const std::string& name) {
-  auto before = s_.segments;
+  auto before = mut().segments;
   segment(label).name = name;
   push("Rename segment", {}, std::move(before));
 }
 
 void SegmentationModel::setColour(uint8_t label, glm::vec3 colour) {
-  auto before = s_.segments;
+  auto before = mut().segments;
   segment(label).colour = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
   push("Segment colour", {}, std::move(before));
 }
 
 void SegmentationModel::setOpacity(uint8_t label, float opacity) {
-  auto before = s_.segments;
+  auto before = mut().segments;
   segment(label).opacity = std::clamp(opacity, 0.0f, 1.0f);
   push("Segment opacity", {}, std::move(before));
 }
 
 void SegmentationModel::setVisible(uint8_t label, bool visible) {
-  auto before = s_.segments;
+  auto before = mut().segments;
   segment(label).visible = visible;
   push(visible ? "Show segment" : "Hide segment", {}, std::move(before));
 }
 
+void SegmentationModel::setDisplay3d(uint8_t label, Segment::Display3d display) {
+  auto before = mut().segments;
+  Segment& seg = segment(label);
+  if (seg.display3d == display) return;  // no step for nothing
+  seg.display3d = display;
+  push("Segment 3D display", {}, std::move(before));
+}
+
 void SegmentationModel::setCodes(uint8_t label, const Segment::Code& category,
                                  const Segment::Code& type) {
-  auto before = s_.segments;
+  auto before = mut().segments;
   Segment& seg = segment(label);
   seg.category = category;
   seg.type = type;
@@ -180,35 +195,35 @@ void SegmentationModel::setCodes(uint8_t label, const Segment::Code& category,
 
 void SegmentationModel::paintSphere(glm::dvec3 centre, double radiusMm, uint8_t label,
                                     EditPolicy p) {
-  LabelPatch patch = voxray::paintSphere(s_, centre, radiusMm, label, p);
-  if (!patch.empty()) push("Paint", std::move(patch), s_.segments);
+  LabelPatch patch = voxray::paintSphere(mut(), centre, radiusMm, label, p);
+  if (!patch.empty()) push("Paint", std::move(patch), mut().segments);
 }
 
 void SegmentationModel::eraseSphere(glm::dvec3 centre, double radiusMm, uint8_t label) {
-  LabelPatch patch = voxray::eraseSphere(s_, centre, radiusMm, label);
-  if (!patch.empty()) push("Erase", std::move(patch), s_.segments);
+  LabelPatch patch = voxray::eraseSphere(mut(), centre, radiusMm, label);
+  if (!patch.empty()) push("Erase", std::move(patch), mut().segments);
 }
 
 void SegmentationModel::paintDisc(int axis, glm::dvec3 centre, double radiusMm, uint8_t label,
                                   EditPolicy p) {
-  LabelPatch patch = voxray::paintDisc(s_, axis, centre, radiusMm, label, p);
-  if (!patch.empty()) push("Paint", std::move(patch), s_.segments);
+  LabelPatch patch = voxray::paintDisc(mut(), axis, centre, radiusMm, label, p);
+  if (!patch.empty()) push("Paint", std::move(patch), mut().segments);
 }
 
 void SegmentationModel::eraseDisc(int axis, glm::dvec3 centre, double radiusMm, uint8_t label) {
-  LabelPatch patch = voxray::eraseDisc(s_, axis, centre, radiusMm, label);
-  if (!patch.empty()) push("Erase", std::move(patch), s_.segments);
+  LabelPatch patch = voxray::eraseDisc(mut(), axis, centre, radiusMm, label);
+  if (!patch.empty()) push("Erase", std::move(patch), mut().segments);
 }
 
 void SegmentationModel::setMask(uint8_t label, const Mask& m, const std::string& what,
                                 EditPolicy p) {
-  LabelPatch patch = voxray::setMask(s_, label, m, p);
-  if (!patch.empty()) push(what, std::move(patch), s_.segments);
+  LabelPatch patch = voxray::setMask(mut(), label, m, p);
+  if (!patch.empty()) push(what, std::move(patch), mut().segments);
 }
 
 void SegmentationModel::applyRecipe(const Volume& v, const SegmentRecipe& r, uint8_t label,
                                     EditPolicy p) {
-  checkSameGrid(s_, v);
+  checkSameGrid(*s_, v);
   setMask(label, runRecipe(v, r), "Threshold", p);
 }
 

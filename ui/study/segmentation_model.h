@@ -3,6 +3,7 @@
 // segments, and every edit (labels or the list) as one undo step. The operations are
 // voxray/io's (segment_edit.h, segment_recipe.h), the same the CLI runs.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -27,7 +28,11 @@ class SegmentationModel {
   void load(Segmentation s, const Volume& v);
   void clear();  // no volume: nothing to segment
   bool active() const { return active_; }
-  const Segmentation& segmentation() const { return s_; }
+  const Segmentation& segmentation() const { return *s_; }
+  // The segmentation as it is now, shared and never changed (copy on write: the model's next
+  // edit copies the labels first if a snapshot is still held), for work off the GUI thread
+  // (the statistics, the 3D view's copy) without copying the label map on it.
+  std::shared_ptr<const Segmentation> snapshot() const { return s_; }
 
   // The segment list. Each edit is one undo step; a label that names no segment throws an
   // input Error.
@@ -37,6 +42,8 @@ class SegmentationModel {
   void setColour(uint8_t label, glm::vec3 colour);
   void setOpacity(uint8_t label, float opacity);  // clamped to 0..1
   void setVisible(uint8_t label, bool visible);
+  // How the segment shows in the 3D view: in the volume, as a surface, or hidden.
+  void setDisplay3d(uint8_t label, Segment::Display3d display);
   void setCodes(uint8_t label, const Segment::Code& category, const Segment::Code& type);
 
   // Label edits, each one undo step (none when nothing changed).
@@ -80,12 +87,13 @@ class SegmentationModel {
     std::vector<Segment> segments;  // the list on the other side of the step
   };
   Segment& segment(uint8_t label);
+  Segmentation& mut();  // s_ to edit, detached from any snapshot first
   void push(std::string what, LabelPatch patch, std::vector<Segment> before);
   void swap(Step& step);
   void touched(const LabelPatch& p);  // adds the patch's box to edits_
   void touchedAll();
 
-  Segmentation s_;
+  std::shared_ptr<Segmentation> s_ = std::make_shared<Segmentation>();
   bool active_ = false;
   std::vector<Step> steps_;
   size_t done_ = 0;  // steps_[0, done_) are done; the rest undone (redo)

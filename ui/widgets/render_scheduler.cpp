@@ -94,8 +94,9 @@ void RenderScheduler::updateSegmentation(SegmentationModel& model) {
     worker_->setSegmentation(nullptr);
     sentSegmentation_ = false;
   } else if (edits.whole || !sentSegmentation_) {
-    // The render thread's own copy: the model goes on changing while it renders.
-    worker_->setSegmentation(std::make_shared<const Segmentation>(model.segmentation()));
+    // The render thread copies it for its own (the model goes on changing while it renders);
+    // the snapshot hands it over without a copy on the GUI thread (copy on write).
+    worker_->setSegmentation(model.snapshot());
     sentSegmentation_ = true;
   } else {
     // After an edit only its box travels (and the list: colours, visibility).

@@ -56,14 +56,16 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   layout->addLayout(buttons);
   list_ = new QTableWidget(0, kColumns);
   list_->setObjectName("segmentList");
-  list_->setHorizontalHeaderLabels({"Show", "Colour", "Name", "Opacity %", "Category", "Type"});
+  list_->setHorizontalHeaderLabels(
+      {"Show", "Colour", "Name", "Opacity %", "Category", "Type", "3D"});
   list_->setSelectionBehavior(QAbstractItemView::SelectRows);
   list_->setSelectionMode(QAbstractItemView::SingleSelection);
   list_->verticalHeader()->hide();
   list_->horizontalHeader()->setStretchLastSection(true);
   list_->setToolTip(
       "The segments: tick to show, double-click the colour to change it, edit the name, "
-      "opacity and the category and type (free text)");
+      "opacity and the category and type (free text); 3D: in the volume's colours, as a "
+      "smooth surface, or hidden in the 3D view");
   list_->setMinimumHeight(120);
   layout->addWidget(list_);
   auto* files = new QHBoxLayout;

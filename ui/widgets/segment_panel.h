@@ -82,6 +82,7 @@ class SegmentPanel : public QWidget {
   void refreshTools();
   void ensureActive();  // a segmentation on the open volume before the first segment
   void addSegment();
+  void setDisplay3dCell(int row, const Segment& s);
   void chooseColour(int row);
   void editCell(int row, int column);
   void setTools(const std::function<void(SegmentToolSettings&)>& edit);

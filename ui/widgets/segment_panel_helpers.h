@@ -11,7 +11,8 @@
 
 namespace voxray::ui {
 
-enum Column { kVisible, kColour, kName, kOpacity, kCategory, kType, kColumns };
+// kDisplay3d last: a combo box per row (3D: surface / in volume / hidden).
+enum Column { kVisible, kColour, kName, kOpacity, kCategory, kType, kDisplay3d, kColumns };
 
 // New segments' colours in turn: bone first, then colours far apart from it and each other.
 inline glm::vec3 nextColour(size_t n) {

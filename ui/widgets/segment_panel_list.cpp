@@ -21,6 +21,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSlider>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -90,6 +91,7 @@ void SegmentPanel::refreshList() {
     list_->setItem(row, kCategory,
                    new QTableWidgetItem(QString::fromStdString(s.category.meaning)));
     list_->setItem(row, kType, new QTableWidgetItem(QString::fromStdString(s.type.meaning)));
+    setDisplay3dCell(row, s);
     other_->addItem(QString::fromStdString(s.name), int(s.label));
   }
   selectLabel(current);
@@ -104,6 +106,37 @@ void SegmentPanel::refreshList() {
   refreshing_ = false;
   // The tools follow the chosen row (a removed segment's label goes).
   setTools([this](SegmentToolSettings& s) { s.label = currentLabel(); });
+}
+
+// The row's "3D" choice: a combo box kept across refreshes (a refresh inside its own signal
+// must not delete it), showing the segment's display.
+void SegmentPanel::setDisplay3dCell(int row, const Segment& s) {
+  auto* box = qobject_cast<QComboBox*>(list_->cellWidget(row, kDisplay3d));
+  if (!box) {
+    box = new QComboBox;
+    box->setObjectName("segmentDisplay3d");
+    // In the order of Segment::Display3d.
+    box->addItem("In volume", int(Segment::Display3d::Volume));
+    box->addItem("Surface", int(Segment::Display3d::Surface));
+    box->addItem("Hidden", int(Segment::Display3d::Hidden));
+    box->setToolTip(
+        "How the segment shows in 3D: its colour inside the volume rendering (dvr), a smooth "
+        "surface drawn over the dvr, or hidden there (the slice views still show it)");
+    list_->setCellWidget(row, kDisplay3d, box);
+    connect(box, qOverload<int>(&QComboBox::currentIndexChanged), this, [this, box](int index) {
+      if (refreshing_ || index < 0) return;
+      const uint8_t label = uint8_t(box->property("label").toInt());
+      if (!m_.segmentation.segmentation().find(label)) return;
+      try {
+        m_.segmentation.setDisplay3d(label, Segment::Display3d(box->itemData(index).toInt()));
+      } catch (const std::exception& e) {
+        fail("Segment 3D display", e.what());
+      }
+    });
+  }
+  const QSignalBlocker block(box);
+  box->setProperty("label", int(s.label));
+  box->setCurrentIndex(box->findData(int(s.display3d)));
 }
 
 void SegmentPanel::chooseColour(int row) {

@@ -86,10 +86,32 @@ class Raycaster : public Renderer {
   // (Device) when its label map exceeds one allocation.
   void setSegmentation(const Segmentation& seg);
   // After an edit of SEG (set before): its segments again, and its label map within the
-  // voxel box LO ... HI (inclusive, clamped to the volume).
+  // voxel box LO ... HI (inclusive, clamped to the volume; an empty box, LO above HI along an
+  // axis: the segments only).
   void updateSegmentation(const Segmentation& seg, glm::ivec3 lo, glm::ivec3 hi);
   void clearSegmentation();
   bool hasSegmentation() const;
+
+  // Segments shown as surfaces (Segment::display3d Surface, visible; the first 8 in the
+  // list): dvr frames draw each as the smooth 0.5 level of its occupancy field (the mask
+  // filtered by a Gaussian of sigmaVoxels per axis, engine/src/surface_field.h), shaded with
+  // the field's gradient in the segment's colour and opacity, composited into the dvr at its
+  // depth (kernels/surface/surface_layer.cl). The fields are built in setSegmentation and
+  // updateSegmentation (the caller's thread and parallelFor's: the workstation's render
+  // thread), again only where an edit of the label map touches them; a camera move builds
+  // nothing. Sigma 0: the mask itself (blocky; the tests' comparison). Rebuilds the fields.
+  void setSurfaceSigma(float sigmaVoxels);
+  // Times a segment's field was built (for tests: edits of the labels only).
+  int surfaceFieldBuilds() const;
+  // Each pixel's nearest surface hit of a frame with PARAMS (dvr), row by row: the world
+  // point (mm, LPS from the volume centre) and the outward unit normal the shading used;
+  // label 0 where no surface is hit.
+  struct SurfaceHit {
+    glm::vec3 pointMm{0.0f};
+    glm::vec3 normal{0.0f};
+    int label = 0;
+  };
+  std::vector<SurfaceHit> surfaceHits(const RenderParams& params);
 
   // Fused dvr (issue 36, voxray/engine/overlay.h): OVERLAY (e.g. PET on this CT) goes to the
   // device with its own table TF (over its physical values), and every dvr frame then

@@ -57,6 +57,11 @@ struct Segment {
   glm::vec3 colour{0.9f, 0.85f, 0.7f};  // sRGB 0..1
   float opacity = 1.0f;
   bool visible = true;
+  // How a visible segment shows in the 3D view: its colour inside the dvr (label-aware
+  // classification), a smooth surface the raycaster draws over the dvr (Raycaster's surface
+  // pass), or not at all (the volume there as without the segment). The slice views ignore it.
+  enum class Display3d : uint8_t { Volume, Surface, Hidden };
+  Display3d display3d = Display3d::Volume;
   // What it is, as a DICOM SEG and Slicer name it: a coded category and type (SNOMED CT
   // code value, scheme designator, meaning) or free text in the meaning alone.
   struct Code {
