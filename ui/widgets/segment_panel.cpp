@@ -208,10 +208,13 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   // Statistics.
   auto* statsBox = new QGroupBox("Statistics");
   auto* statsLayout = new QVBoxLayout(statsBox);
-  stats_ = new QTableWidget(0, 8);
+  stats_ = new QTableWidget(0, 9);
   stats_->setObjectName("segmentStats");
   stats_->setHorizontalHeaderLabels(
-      {"Segment", "Voxels", "Volume mL", "Mean", "SD", "Min", "Max", "Median"});
+      {"Segment", "Voxels", "Volume mL", "Mean", "SD", "Min", "Max", "Median", "SUVpeak"});
+  stats_->horizontalHeaderItem(8)->setToolTip(
+      "The highest mean SUVbw in a 1 cm³ sphere inside the segment (PERCIST): of a PET with "
+      "its SUV attributes, or of the fused PET overlay");
   stats_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   stats_->verticalHeader()->hide();
   stats_->setMinimumHeight(90);

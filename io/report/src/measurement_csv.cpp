@@ -36,6 +36,8 @@ std::string kindName(ReportKind k) {
       return "ellipse";
     case ReportKind::Rect:
       return "rect";
+    case ReportKind::Segment:
+      return "segment";
   }
   return "";
 }
@@ -83,6 +85,14 @@ void writeMeasurementCsv(const std::string& path, const Volume& v,
       row("area", m.areaMm2, "mm2");
       row("pixels", double(m.pixels), "");
     }
+    if (m.kind == ReportKind::Segment) {
+      row("mean", scaled(m.mean), unit);
+      row("sd", scaled(m.sd), unit);
+      row("min", scaled(m.min), unit);
+      row("max", scaled(m.max), unit);
+      row("volume", m.volumeMm3, "mm3");
+    }
+    if (m.suvPeak) row("suv_peak", m.suvPeak, "SUVbw");
   }
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   file << out.str();

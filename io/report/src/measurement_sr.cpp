@@ -158,7 +158,9 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
     const int k = measurementSlice(m);
     const bool onImage = perSlice && k >= 0 && k < v.dims.z;
     const std::vector<int> touched = touchedSlices(v, m);
-    if (perSlice && !onImage)
+    if (m.kind == ReportKind::Segment)
+      out.notes.push_back(label + ": a segment's values reference the series, not its images");
+    else if (perSlice && !onImage)
       out.notes.push_back(label + ": its points lie on " + std::to_string(touched.size()) +
                           " slices; it references their images without image coordinates");
     check(report.addIndividualMeasurements(), "measurement group");
@@ -174,7 +176,9 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
           label + " value");
       auto& value = group.getMeasurement();
       if (derivation) check(value.setDerivation(*derivation), label + " derivation");
-      if (onImage) {
+      if (m.kind == ReportKind::Segment) {
+        // A label map has no SCOORD: the values name the series (the evidence) only.
+      } else if (onImage) {
         DSRImageReferenceValue image(s.sopClassUid, s.sliceSopInstanceUids[size_t(k)]);
         check(value.addSpatialCoordinates(CODE_DCM_ImageRegion, scoord(m), image),
               label + " image region");
@@ -203,8 +207,23 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
       if (m.sd) add(roi.name, scaled(*m.sd), roi.unit, &sd);
       if (m.min) add(roi.name, scaled(*m.min), roi.unit, &min);
       if (m.max) add(roi.name, scaled(*m.max), roi.unit, &max);
-      add(DSRCodedEntryValue("42798000", "SCT", "Area"), m.areaMm2,
-          DSRCodedEntryValue("mm2", "UCUM", "square millimeter"), nullptr);
+      if (m.kind == ReportKind::Segment) {
+        if (m.volumeMm3)
+          add(DSRCodedEntryValue("118565006", "SCT", "Volume"), *m.volumeMm3,
+              DSRCodedEntryValue("mm3", "UCUM", "cubic millimeter"), nullptr);
+      } else {
+        add(DSRCodedEntryValue("42798000", "SCT", "Area"), m.areaMm2,
+            DSRCodedEntryValue("mm2", "UCUM", "square millimeter"), nullptr);
+      }
+      // SUVpeak (PERCIST's 1 cm³ sphere): SUVbw (126401, DCM) derived as the Peak Value
+      // Within ROI (126031, DCM; CID 7464), in g/ml{SUVbw}. Already in SUVbw: it may be the
+      // fused PET overlay's, whatever this volume's unit.
+      if (m.suvPeak) {
+        const CMR_CID7464 peak(CMR_CID7464::PeakValueWithinROI);
+        add(DSRCodedEntryValue("126401", "DCM", "SUVbw"), *m.suvPeak,
+            DSRCodedEntryValue("g/ml{SUVbw}", "UCUM", "Standardized Uptake Value body weight"),
+            &peak);
+      }
     }
     if (!group.hasMeasurements(OFTrue))
       throw inputError(label +
