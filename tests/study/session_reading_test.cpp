@@ -1,7 +1,8 @@
 // Sessions keep the reading layout (issue 37: the grid's layout and which series a hanging
 // protocol put in which view) and the fusion overlay's settings (issue 36): each value
 // round-trips, older sessions open without them, and a missing overlay file is named while the
-// rest of the session reads.
+// rest of the session reads. And the results the SR takes: a distance picked in 3D is reported
+// in 3D, a segment with its volume and SUVpeak.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "app_models.h"
 #include "hanging_protocol.h"
 #include "layout_model.h"
+#include "results_export.h"
 #include "session.h"
 #include "session_state.h"
 #include "voxray/io/error.h"
@@ -270,3 +272,45 @@ TEST(FusionSession, ThePetOverlaysSuvWindowIsSavedFromTheModelAndPutBack) {
 }  // namespace
 }  // namespace voxray
 
+namespace voxray {
+namespace {
+
+TEST(ResultsOut, ADistancePickedIn3dIsReportedIn3dAndSegmentsCarryTheirSuvPeak) {
+  test::TempDir dir;
+  const PetSpherePhantom phantom;
+  writePetSpherePhantom(dir.file("pet"), phantom);
+  const Volume pet = loadVolume(dir.file("pet"));
+  MeasurementModel m;
+  m.add(MeasureKind::Distance, {{10, 10, 16}, {20, 10, 16}}, 2);   // on slice 16
+  m.add(MeasureKind::Distance, {{10, 10, 16}, {20, 10, 16}}, -1);  // picked in the 3D view
+  const auto r = reportMeasurements(pet, m);
+  ASSERT_EQ(r.size(), size_t(2));
+  EXPECT_FALSE(r[0].in3d);
+  EXPECT_EQ(measurementSlice(r[0]), 16);
+  EXPECT_TRUE(r[1].in3d);
+  EXPECT_EQ(measurementSlice(r[1]), -1);  // on no image: SCOORD3D in the SR
+  EXPECT_DOUBLE_EQ(*r[1].value, 40.0);    // 10 voxels of 4 mm
+  // The sphere as a segment: its group has the volume and the SUVpeak (the sphere's SUV).
+  Segmentation s = emptySegmentation(pet);
+  size_t inside = 0;
+  for (size_t n = 0; n < s.labels.size(); ++n) {
+    s.labels[n] = pet.toPhysical(pet.voxels[n]) > 10000.0 ? 1 : 0;
+    inside += s.labels[n];
+  }
+  Segment sphere;
+  sphere.name = "Sphere";
+  s.segments = {sphere};
+  const auto groups = reportSegments(s, pet);
+  ASSERT_EQ(groups.size(), size_t(1));
+  EXPECT_EQ(groups[0].kind, ReportKind::Segment);
+  EXPECT_EQ(groups[0].label, "segment 1 Sphere");
+  EXPECT_DOUBLE_EQ(*groups[0].volumeMm3, double(inside) * 64.0);
+  const double suv = petSphereSuv(phantom);
+  ASSERT_TRUE(groups[0].suvPeak);
+  EXPECT_NEAR(*groups[0].suvPeak, suv, 1e-9 * suv);
+  // Its mean is the volume's (Bq/mL): the report converts it to SUVbw as an ROI's.
+  EXPECT_NEAR(pet.suv->toSuv(*groups[0].mean), suv, 1e-9 * suv);
+}
+
+}  // namespace
+}  // namespace voxray

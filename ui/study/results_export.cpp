@@ -18,6 +18,7 @@ std::vector<ReportMeasurement> reportMeasurements(const Volume& v, const Measure
     ReportMeasurement r;
     r.points = x.points;
     r.normalAxis = x.normalAxis < 0 ? 2 : x.normalAxis;
+    r.in3d = x.normalAxis < 0;  // picked on surfaces in the 3D view
     switch (x.kind) {
       case MeasureKind::Distance:
         r.kind = ReportKind::Length;

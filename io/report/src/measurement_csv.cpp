@@ -13,6 +13,7 @@ int measurementSlice(const ReportMeasurement& m) {
   const bool roi = m.kind == ReportKind::Ellipse || m.kind == ReportKind::Rect;
   // An ROI lies in the slice of its first corner along its normal (engine/measure.h).
   if (roi) return m.normalAxis == 2 ? int(std::lround(m.points[0].z)) : -1;
+  if (m.in3d) return -1;  // picked in the 3D view: on no slice, wherever its points lie
   for (const auto& p : m.points)
     if (std::abs(p.z - m.points[0].z) > 1e-6) return -1;
   return int(std::lround(m.points[0].z));
