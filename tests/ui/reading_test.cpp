@@ -13,9 +13,11 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTest>
 
 #include <dcmtk/dcmdata/dctk.h>
@@ -26,8 +28,10 @@
 #include "json_text_dialog.h"
 #include "reading_actions.h"
 #include "results_actions.h"
+#include "segment_panel.h"
 #include "session_actions.h"
 #include "slice_view.h"
+#include "voxray/io/phantom_series.h"
 #include "window_fixture.h"
 
 namespace voxray::ui::test {
@@ -472,6 +476,43 @@ class ReadingTest : public QObject {
     QCOMPARE(reading_->reading(), r);
     QTRY_VERIFY(window_->sliceView(1).isVisible());
     QVERIFY(!window_->sliceView(2).isVisible());
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+  }
+
+  // Issue 36: a PET's segment shows its SUVpeak in the Segments panel (the sphere phantom's
+  // SUV: the segment lies inside the uniform sphere), and the SR holds it as SUVbw with the
+  // derivation Peak Value Within ROI (126031, DCM).
+  void petSegmentShowsItsSuvPeakAndTheReportHoldsIt() {
+    const fs::path dir = freshDir("pet-segment");
+    const PetSpherePhantom phantom;
+    writePetSpherePhantom((dir / "pet").string(), phantom);
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open((dir / "pet").string(), {});
+    QVERIFY(shown.wait(120000));
+    QVERIFY(fixture_.models->document.volume()->suv);
+    window_->segmentDock()->show();
+    window_->segments().findChild<QPushButton*>("segmentAdd")->click();
+    const uint8_t label = window_->segments().currentLabel();
+    // 16 mm about the sphere's centre voxel (the sphere: 36 mm; 4 mm voxels).
+    fixture_.models->segmentation.paintSphere({24, 24, 16}, 16.0, label);
+    auto* stats = window_->segments().findChild<QTableWidget*>("segmentStats");
+    QVERIFY(stats);
+    const double suv = petSphereSuv(phantom);  // 6.60744
+    window_->segments().updateStatistics();
+    QTRY_COMPARE_WITH_TIMEOUT(stats->item(0, 8) ? stats->item(0, 8)->text() : QString(),
+                              QString::number(suv, 'f', 3), 10000);
+    QCOMPARE(stats->horizontalHeaderItem(8)->text(), QString("SUVpeak"));
+    QCOMPARE(stats->item(0, 8)->toolTip(), QString("SUVbw of this PET"));
+    const fs::path out = freshDir("pet-segment-sr");
+    QVERIFY(results_->saveReport(QString::fromStdString((out / "sr.dcm").string())));
+    const auto numbers = valuesIn(out / "sr.dcm", DCM_NumericValue);
+    const auto codes = valuesIn(out / "sr.dcm", DCM_CodeValue);
+    QVERIFY(std::find(codes.begin(), codes.end(), "126031") != codes.end());
+    // The SR's 9 digits: 1e-6 relative.
+    QVERIFY2(std::any_of(
+                 numbers.begin(), numbers.end(),
+                 [&](const std::string& n) { return std::abs(std::stod(n) - suv) < 1e-6 * suv; }),
+             "no value equal to the sphere's SUV");
     QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
   }
 

@@ -2,6 +2,7 @@
 #include "segment_panel.h"
 
 #include <filesystem>
+#include <memory>
 
 #include <QApplication>
 #include <QCheckBox>
@@ -324,6 +325,14 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   connect(statsTimer_, &QTimer::timeout, this, [this] { refreshStatisticsInBackground(); });
   onModelChange<>(this, m_.segmentation.changed, [this] {
     refreshList();
+    statsTimer_->start();
+  });
+  // An overlay opened or closed: a CT's segments may take their SUVpeak from it now (its
+  // window, map and opacity do not change the numbers).
+  auto countedOverlay = std::make_shared<const Volume*>(nullptr);
+  onModelChange<>(this, m_.fusion.changed, [this, countedOverlay] {
+    if (*countedOverlay == m_.fusion.overlay().get()) return;
+    *countedOverlay = m_.fusion.overlay().get();
     statsTimer_->start();
   });
   onModelChange<>(this, m_.segmentTools.changed, [this] { refreshTools(); });
