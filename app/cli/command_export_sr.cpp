@@ -5,7 +5,9 @@
 #include "commands.h"
 #include "existing_output.h"
 #include "input_options.h"
+#include "labels_option.h"
 #include "measure_points.h"
+#include "results_export.h"
 #include "voxray/engine/measure.h"
 #include "voxray/io/error.h"
 #include "voxray/io/measurement_report.h"
@@ -18,6 +20,7 @@ struct ExportSrOptions {
   std::vector<std::string> lines, angles, ellipses, rects;
   std::string plane = "k";
   std::string output, csv;
+  LabelsOption labels;  // segments: --labels FILE or --labels-raw FILE on the volume's grid
   bool mm = false, force = false;
 };
 
@@ -71,12 +74,18 @@ std::vector<ReportMeasurement> measurements(const Volume& v, const ExportSrOptio
 int runExportSr(const InputOptions& in, const ExportSrOptions& o) {
   if (o.output.empty() && o.csv.empty())
     throw inputError("export-sr: give -o REPORT.dcm (DICOM SR), --csv FILE, or both");
-  if (o.lines.empty() && o.angles.empty() && o.ellipses.empty() && o.rects.empty())
-    throw inputError("export-sr: give at least one --line, --angle, --ellipse or --rect");
+  if (o.lines.empty() && o.angles.empty() && o.ellipses.empty() && o.rects.empty() &&
+      o.labels.file.empty() && o.labels.raw.empty())
+    throw inputError("export-sr: give at least one --line, --angle, --ellipse, --rect or --labels");
   refuseExisting(o.output, o.force);
   refuseExisting(o.csv, o.force);
   const Volume v = in.load();
-  const auto list = measurements(v, o);
+  auto list = measurements(v, o);
+  if (const auto segmentation = o.labels.load(v)) {
+    // Each segment's statistics, volume and SUVpeak (a PET with its SUV attributes).
+    const auto segments = reportSegments(*segmentation, v);
+    list.insert(list.end(), segments.begin(), segments.end());
+  }
   if (!o.output.empty()) {
     const WrittenReport r = writeMeasurementReport(o.output, v, list);
     std::cout << o.output << ": measurement report (TID 1500) with " << list.size()
@@ -108,6 +117,7 @@ Run addExportSrCommand(CLI::App& app) {
   cmd->add_option("--rect", o->rects, "a rectangle ROI in the corners P1,P2; repeatable");
   cmd->add_option("--plane", o->plane,
                   "the voxel axis across the ROIs' plane: i, j or k (default k)");
+  o->labels.add(*cmd);  // each segment's statistics, volume and SUVpeak (PET) as a group
   cmd->add_flag("--mm", o->mm, "points are LPS patient positions in mm, not voxel indices");
   cmd->add_option("-o,--output", o->output, "the DICOM SR file to write");
   cmd->add_option("--csv", o->csv, "also (or only) write the values as CSV");

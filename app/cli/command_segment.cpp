@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "existing_output.h"
 #include "input_options.h"
+#include "segment_peak.h"
 #include "voxray/io/error.h"
 #include "voxray/io/segment_output.h"
 #include "voxray/io/segment_recipe.h"
@@ -103,6 +104,7 @@ int runSegment(const InputOptions& in, const SegmentOptions& o) {
     writeSegmentationOutput(o.output, s, v, out);
   }
   auto stats = allSegmentStats(s, v);
+  addSuvPeaks(stats, s, v);  // a PET with its SUV attributes: the 1 cm³ sphere's SUVbw
   if (!o.statsJson.empty() && !o.noSurfaceArea) addSurfaceAreas(stats, s);
   if (o.statsJson == "-") {
     std::cout << statsJson(stats);
@@ -112,8 +114,12 @@ int runSegment(const InputOptions& in, const SegmentOptions& o) {
     if (!out)
       throw outputError("Cannot write " + o.statsJson + ": check the folder and free space.");
   }
-  if (o.statsJson != "-")
-    std::cout << r.name << ": " << stats[0].voxels << " voxels, " << stats[0].volumeMl << " mL\n";
+  if (o.statsJson != "-") {
+    std::cout << r.name << ": " << stats[0].voxels << " voxels, " << stats[0].volumeMl << " mL";
+    if (stats[0].suvPeak) std::cout << ", SUVpeak " << *stats[0].suvPeak << " SUVbw";
+    if (!stats[0].peakNote.empty()) std::cout << ", no SUVpeak: " << stats[0].peakNote;
+    std::cout << "\n";
+  }
   return 0;
 }
 

@@ -5,7 +5,8 @@ from the DICOM files themselves (pydicom), not from Voxray.
 usage: check_sr.py REPORT.dcm SOURCE_FOLDER
 The report holds (see tests/report/CMakeLists.txt): line 1 100:200:1-130:240:1, angle 1
 100:200:1,130:240:1,200:100:1, ellipse 1 240:90:1-260:110:1, rect 1 10:10:1-40:50:1, line 2 10:10:0-20:20:3 (across
-slices: no image region)."""
+slices: no image region; its points as SCOORD3D in LPS mm, so the report is a Comprehensive 3D
+SR)."""
 import math
 import sys
 from pathlib import Path
@@ -35,7 +36,9 @@ slice1 = images[1]
 row_mm, col_mm = (float(x) for x in slice1.PixelSpacing)  # row spacing, column spacing
 
 ds = pydicom.dcmread(report_path)
-sr = hd.sr.EnhancedSR.from_dataset(ds)
+expect(ds.SOPClassUID == "1.2.840.10008.5.1.4.1.1.88.34", f"SOP class {ds.SOPClassUID}, not "
+       "Comprehensive 3D SR")
+sr = hd.sr.Comprehensive3DSR.from_dataset(ds)
 groups = {g.tracking_identifier: g for g in sr.content.get_image_measurement_groups()}
 expect(sorted(groups) == ["angle 1", "ellipse 1", "line 1", "line 2", "rect 1"], f"groups {sorted(groups)}")
 expect(ds.StudyInstanceUID == slice1.StudyInstanceUID, "the report is not in the images' study")
@@ -133,6 +136,43 @@ ends = [images[0].SOPInstanceUID, images[3].SOPInstanceUID]
 refs = [r.ReferencedSOPSequence[0].ReferencedSOPInstanceUID for m in measurements("line 2")
         for r in m.referenced_images]
 expect(refs == ends, f"line 2 references {refs}, not its ends' images {ends}")
+
+
+
+# Line 2's points in patient coordinates, recomputed from the files: voxel (i, j) of slice k
+# is at ImagePositionPatient + i * column spacing * row direction + j * row spacing * column
+# direction (PS3.3 C.7.6.2.1.1). Under each of its values: SCOORD3D, FoR of the images.
+def lps(i, j, k):
+    d = images[k]
+    o = np.array(d.ImageOrientationPatient, float)
+    r_mm, c_mm = (float(x) for x in d.PixelSpacing)
+    return np.array(d.ImagePositionPatient, float) + i * c_mm * o[:3] + j * r_mm * o[3:]
+
+
+def scoords3d(item):
+    for child in getattr(item, "ContentSequence", []):
+        if child.ValueType == "SCOORD3D":
+            yield child
+        yield from scoords3d(child)
+
+
+found = list(scoords3d(g)) if g is not None else []
+expect(len(found) == len(measurements("line 2")), f"line 2: {len(found)} SCOORD3D")
+expected = np.concatenate([lps(10, 10, 0), lps(20, 20, 3)])
+for s3 in found:
+    expect(s3.GraphicType == "POLYLINE", f"line 2: graphic type {s3.GraphicType}")
+    expect(s3.RelationshipType == "INFERRED FROM", f"line 2: {s3.RelationshipType}")
+    expect(s3.ConceptNameCodeSequence[0].CodeValue == "121112", "line 2: not Source of Measurement")
+    expect(s3.ReferencedFrameOfReferenceUID == images[0].FrameOfReferenceUID,
+           f"line 2: Frame of Reference {s3.ReferencedFrameOfReferenceUID}")
+    # GraphicData is FL (32-bit): 1e-3 mm holds for coordinates of some hundred mm.
+    got = np.array(s3.GraphicData, float)
+    expect(got.shape == expected.shape and np.abs(got - expected).max() < 1e-3,
+           f"line 2: points {got} mm, not {expected} mm")
+# Its length is the distance of those points (the pydicom positions give it too).
+(length2,) = measurements("line 2")
+expect(close(float(length2.value), float(np.linalg.norm(expected[3:] - expected[:3]))),
+       f"line 2: length {length2.value}")
 
 evidence = [r.ReferencedSOPInstanceUID for e in ds.CurrentRequestedProcedureEvidenceSequence
             for s in e.ReferencedSeriesSequence for r in s.ReferencedSOPSequence]

@@ -62,10 +62,13 @@ TEST(SegmentStats, JsonAndCsvCarryTheSameNumbersAndQuoteNames) {
   EXPECT_DOUBLE_EQ(j["segments"][0]["median"].get<double>(), 5.0);
   EXPECT_TRUE(j["segments"][0]["surface_mm2"].is_null());
   EXPECT_TRUE(j["segments"][1]["mean"].is_null());
+  EXPECT_TRUE(j["segments"][0]["suv_peak"].is_null());  // a CT: no SUV
+  EXPECT_FALSE(j["segments"][0].contains("suv_peak_note"));
   EXPECT_EQ(statsCsv(all),
-            "label,name,voxels,volume_mm3,volume_ml,unit,mean,sd,min,max,median,surface_mm2\n"
-            "1,\"Bone, \"\"cortical\"\"\",4,2,0.002,HU,10,18.7083,-10,40,5,\n"
-            "4,Empty,0,0,0,HU,,,,,,\n");
+            "label,name,voxels,volume_mm3,volume_ml,unit,mean,sd,min,max,median,surface_mm2,"
+            "suv_peak\n"
+            "1,\"Bone, \"\"cortical\"\"\",4,2,0.002,HU,10,18.7083,-10,40,5,,\n"
+            "4,Empty,0,0,0,HU,,,,,,,\n");
 }
 
 TEST(SegmentStats, ALabelMapOnAnotherGridIsRefusedNamingBothGrids) {

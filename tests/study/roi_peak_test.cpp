@@ -1,13 +1,21 @@
-// SUVpeak (issue 36): the best 1 cm³ sphere of a ROI (voxray/engine/roi_peak.h) against
-// analytic values, and the ROI readout (measurementText) that shows it for a PET only.
+// SUVpeak (issue 36): the best 1 cm³ sphere of a ROI (voxray/engine/roi_peak.h) and of a 3D
+// segment (mask_peak.h, segment_peak.h) against analytic values, and the ROI readout
+// (measurementText) that shows it for a PET only.
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "measurement_model.h"
+#include "segment_peak.h"
+#include "voxray/engine/mask_peak.h"
 #include "voxray/engine/roi_peak.h"
 #include "voxray/io/error.h"
+#include "voxray/io/load.h"
+#include "voxray/io/phantom_series.h"
 #include "voxray/io/volume.h"
 
 using namespace voxray;
@@ -167,3 +175,118 @@ TEST(RoiPeakReadout, PetShowsSuvPeakOthersDoNot) {
 }
 
 }  // namespace
+
+// Issue 36, SUVpeak of 3D segments (voxray/engine/mask_peak.h, segment_peak.h).
+
+namespace {
+
+// The box LO..HI (voxels, both ends included) of V's grid as label 1.
+std::vector<uint8_t> boxLabels(const Volume& v, glm::ivec3 lo, glm::ivec3 hi) {
+  std::vector<uint8_t> labels(v.voxelCount(), 0);
+  for (int k = lo.z; k <= hi.z; ++k)
+    for (int j = lo.y; j <= hi.y; ++j)
+      for (int i = lo.x; i <= hi.x; ++i) labels[v.index(i, j, k)] = 1;
+  return labels;
+}
+
+}  // namespace
+
+TEST(MaskPeak, OnARampTheBestSphereIsTheHighestCentreWhoseSphereFitsTheSegment) {
+  // 2 mm voxels, value 10 i: the 1 cm³ sphere (radius 6.2 mm) holds the voxel centres up to
+  // 3 voxels away, so the best centre is 3 voxels inside the box's high i face (i = 27), and
+  // a kernel symmetric about its centre averages a linear ramp to the centre's value.
+  const Volume v = makeVolume({40, 40, 40}, {2, 2, 2}, [](int i, int, int) { return 10 * i; });
+  const auto labels = boxLabels(v, {8, 8, 8}, {30, 30, 30});
+  const RoiPeak p = maskPeak(v, labels, 1);
+  ASSERT_TRUE(p.mean);
+  EXPECT_NEAR(*p.mean, 270.0, 1e-9);
+  EXPECT_EQ(p.centre, glm::ivec3(27, 11, 11));  // ties: the first in voxel order
+  EXPECT_EQ(p.centres, size_t(17 * 17 * 17));   // 11 ... 27 on each axis
+  // The weights sum to the sphere's 1000 mm³ (the kernel's sub-sampling: ~1e-3 relative).
+  EXPECT_NEAR(p.sphereMm3, 1000.0, 2.0);
+  // Another label is not the segment.
+  EXPECT_FALSE(maskPeak(v, labels, 2).mean);
+  // 10 mm across: no centre has room.
+  const RoiPeak small = maskPeak(v, boxLabels(v, {10, 10, 10}, {14, 14, 14}), 1);
+  EXPECT_FALSE(small.mean);
+  EXPECT_EQ(small.centres, size_t(0));
+  EXPECT_THROW(maskPeak(v, std::vector<uint8_t>(10, 1), 1), Error);
+}
+
+TEST(MaskPeak, ASegmentOnAnotherGridIsTakenByTheNearestVoxel) {
+  // FROM: 1 mm voxels at the origin; ONTO: 2 mm voxels shifted by 0.4 mm in x, so onto's voxel
+  // i lies at from's i' = 2 i + 0.4, nearest 2 i: in the box 5 ... 14 for i = 3 ... 7.
+  VoxelGrid from;
+  from.dims = {20, 20, 20};
+  Volume onto;
+  onto.dims = {10, 10, 10};
+  onto.spacingMm = {2, 2, 2};
+  onto.originMm = {0.4, 0, 0};
+  onto.voxels.assign(onto.voxelCount(), 0);
+  std::vector<uint8_t> labels(from.voxelCount(), 0);
+  for (int k = 0; k < 20; ++k)
+    for (int j = 0; j < 20; ++j)
+      for (int i = 5; i <= 14; ++i) labels[from.index(i, j, k)] = 3;
+  const auto on = maskOnGrid(from, labels, 3, onto);
+  for (int i = 0; i < 10; ++i)
+    EXPECT_EQ(int(on[onto.index(i, 4, 4)]), i >= 3 && i <= 7 ? 1 : 0) << "i " << i;
+}
+
+TEST(SegmentPeak, ThePetSpheresSuvPeakOnThePetAndThroughAFusedOverlay) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("voxray-segment-peak-" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  const PetSpherePhantom phantom;
+  writePetSpherePhantom((dir / "pet").string(), phantom);
+  auto pet = std::make_shared<const Volume>(loadVolume((dir / "pet").string()));
+  std::filesystem::remove_all(dir);
+  ASSERT_TRUE(pet->suv);
+  const double suv = petSphereSuv(phantom);
+  // The sphere (uniform activity) segmented on the PET: the peak is the sphere's SUV.
+  Segmentation s = emptySegmentation(*pet);
+  for (size_t n = 0; n < s.labels.size(); ++n)
+    s.labels[n] = pet->toPhysical(pet->voxels[n]) > 10000.0 ? 1 : 0;
+  s.segments = {Segment{}};
+  auto stats = allSegmentStats(s, *pet);
+  addSuvPeaks(stats, s, *pet);
+  ASSERT_TRUE(stats[0].suvPeak);
+  // 1e-9 relative: every voxel of the sphere holds the same stored value.
+  EXPECT_NEAR(*stats[0].suvPeak, suv, 1e-9 * suv);
+  EXPECT_EQ(stats[0].peakOf, "");
+  // A CT-like volume of its own grid (1.5 mm voxels, shifted) with no SUV, the PET fused over
+  // it: a ball of 30 mm about the sphere's centre, drawn on the CT, is taken onto the PET grid.
+  Volume ct;
+  ct.dims = {120, 120, 80};
+  ct.spacingMm = {1.5, 1.5, 1.5};
+  const glm::dvec3 centre =
+      pet->originMm + pet->direction * (pet->spacingMm * 0.5 * glm::dvec3(pet->dims - 1));
+  ct.originMm = centre - 0.5 * ct.spacingMm * glm::dvec3(ct.dims - 1) + glm::dvec3(0.3, -0.7, 0.2);
+  ct.voxels.assign(ct.voxelCount(), 0);
+  Segmentation onCt = emptySegmentation(ct);
+  for (int k = 0; k < ct.dims.z; ++k)
+    for (int j = 0; j < ct.dims.y; ++j)
+      for (int i = 0; i < ct.dims.x; ++i)
+        if (glm::length(onCt.grid.toPatient({i, j, k}) - centre) <= 30.0)
+          onCt.labels[ct.index(i, j, k)] = 1;
+  onCt.segments = {Segment{}};
+  auto fused = allSegmentStats(onCt, ct);
+  addSuvPeaks(fused, onCt, ct, pet.get(), "PET sphere");
+  ASSERT_TRUE(fused[0].suvPeak);
+  EXPECT_NEAR(*fused[0].suvPeak, suv, 1e-9 * suv);
+  EXPECT_EQ(fused[0].peakOf, "PET sphere");
+  EXPECT_EQ(fused[0].unit, "HU");  // the CT's own statistics stay its own
+  // Without an SUV anywhere: none, no note.
+  auto plain = allSegmentStats(onCt, ct);
+  addSuvPeaks(plain, onCt, ct);
+  EXPECT_FALSE(plain[0].suvPeak);
+  EXPECT_TRUE(plain[0].peakNote.empty());
+  // A segment of 8 mm across on the PET: no room, said.
+  Segmentation tiny = emptySegmentation(*pet);
+  tiny.labels[pet->index(24, 24, 16)] = 1;
+  tiny.labels[pet->index(25, 24, 16)] = 1;
+  tiny.segments = {Segment{}};
+  auto none = allSegmentStats(tiny, *pet);
+  addSuvPeaks(none, tiny, *pet);
+  EXPECT_FALSE(none[0].suvPeak);
+  EXPECT_EQ(none[0].peakNote, kNoRoomForPeakInSegment);
+}

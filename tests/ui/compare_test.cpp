@@ -10,6 +10,8 @@
 // and turn it by the swept angle, one undo step each.
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -427,6 +429,56 @@ class CompareTest : public QObject {
     QTest::keyClick(&mv, Qt::Key_Z, Qt::ControlModifier);  // the Edit menu's: not the prior's
     QVERIFY(c->comparison().movingToFixed() == t1);
     QVERIFY(m.render.params().camera.azimuthDeg != azimuth);  // the view change taken back
+  }
+
+  // The overlay's file and look go into the session: reopened, the PET overlay comes back with
+  // its SUV window, map, opacity and off state; with its file gone, the session still opens
+  // (the study's window) and says the overlay is missing.
+  void fusionOverlayIsKeptBySessionsAndAMissingOneIsSaid() {
+    AppModels& m = *fixture_.models;
+    MainWindow& w = *fixture_.window;
+    const std::string pet = (tmp_.path() + "/fused-pet").toStdString();
+    writePetSpherePhantom(pet, PetSpherePhantom{});
+    w.openOverlay(pet);
+    QTRY_VERIFY_WITH_TIMEOUT(m.fusion.overlay() != nullptr, 60000);
+    QCOMPARE(QString::fromStdString(m.fusion.sourcePath()), QString::fromStdString(pet));
+    FusionSettings look = m.fusion.settings();
+    look.colormap = "rainbow";
+    look.lo = 2.25;  // SUVbw
+    look.hi = 5.5;
+    look.opacity = 0.3;
+    look.on = false;
+    m.fusion.setSettings(look);
+    m.windowLevel.set({700.0, 60.0});
+    SessionActions& sessions = w.sessions();
+    QStringList told;
+    sessions.tell = [&](const QString& t, const QString& text) { told << t + ": " + text; };
+    const QString file = tmp_.path() + "/fused.json";
+    QVERIFY(sessions.saveTo(file));
+    m.fusion.clear();
+    m.windowLevel.set({100.0, 0.0});
+    QSignalSpy shown(&sessions, &SessionActions::sessionShown);
+    sessions.openFile(file.toStdString());
+    QVERIFY(shown.wait(60000));
+    QTRY_VERIFY_WITH_TIMEOUT(m.fusion.overlay() != nullptr && m.fusion.settings() == look, 60000);
+    QCOMPARE(m.fusion.settings().lo, 2.25);
+    QVERIFY(!m.fusion.active());  // saved off
+    QCOMPARE(w.fusionPanel().colormapBox()->currentText(), QString("rainbow"));
+    QCOMPARE(w.fusionPanel().loBox()->value(), 2.25);
+    QCOMPARE(m.windowLevel.value().width, 700.0);
+    QVERIFY2(told.isEmpty(), qPrintable(told.join('\n')));
+    // The overlay's folder gone: the rest of the session opens, the message names the place.
+    QDir(QString::fromStdString(pet)).removeRecursively();
+    m.windowLevel.set({100.0, 0.0});
+    sessions.openFile(file.toStdString());
+    QVERIFY(shown.wait(60000));
+    QCOMPARE(m.windowLevel.value().width, 700.0);
+    QVERIFY(m.fusion.overlay() == nullptr);
+    QCOMPARE(told.size(), 1);
+    QVERIFY2(told[0].contains("its data is missing (not at " + QString::fromStdString(pet)) &&
+                 told[0].contains("The session opened without its fusion overlay"),
+             qPrintable(told[0]));
+    QVERIFY(errors_.isEmpty());
   }
 
   void windowLevelLinkAndSwapAndFlickerKeys() {

@@ -20,20 +20,26 @@
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTest>
 #include <QTimer>
 
 #include <dcmtk/dcmdata/dctk.h>
+#include <nlohmann/json.hpp>
 
 #include "annotation_model.h"
 #include "help_dialogs.h"
 #include "json_text_dialog.h"
 #include "reading_actions.h"
 #include "results_actions.h"
+#include "segment_panel.h"
+#include "session_actions.h"
 #include "slice_view.h"
+#include "voxray/io/phantom_series.h"
 #include "window_fixture.h"
 
 namespace voxray::ui::test {
@@ -80,6 +86,8 @@ class ReadingTest : public QObject {
   Q_OBJECT
  private slots:
   void init() {
+    // Each test starts in the default layout, whatever a test before chose (remembered).
+    QSettings().remove("reading/lastLayout");
     QVERIFY(fixture_.start());
     window_ = fixture_.window.get();
     window_->setErrorSink(
@@ -474,6 +482,140 @@ class ReadingTest : public QObject {
   // README's docs/images/reading-1plus3.png (run with VOXRAY_READING_SHOT=PATH under
   // xvfb-run -s "-screen 0 1920x1080x24"): the Philips head CT in the 1+3 layout, a distance
   // on slice 14 marked as a key image. Skipped otherwise.
+  // The layout goes into the session and comes back after another study hung differently;
+  // the layout last chosen is the next start's (no rule matches the phantom).
+  void sessionKeepsTheLayoutAndTheNextStartRemembersIt() {
+    struct Forget {
+      ~Forget() { QSettings().remove("reading/lastLayout"); }
+    } forget;
+    window_->resize(1800, 1000);
+    SliceView& axial = window_->sliceView(0);
+    QWidget& volume = window_->volumeView();
+    QTest::keyClick(&axial, Qt::Key_3, Qt::ControlModifier);  // 2x2: slices first, 3D last
+    QCOMPARE(reading_->layout(), ViewLayout::TwoByTwo);
+    QCOMPARE(QSettings().value("reading/lastLayout").toString(), QString("2x2"));
+    auto isTwoByTwo = [&] {
+      return axial.isVisible() && volume.isVisible() && axial.x() < window_->sliceView(1).x() &&
+             axial.y() < window_->sliceView(2).y() && volume.x() > axial.x() &&
+             volume.y() > axial.y();
+    };
+    QTRY_VERIFY(isTwoByTwo());
+    const fs::path dir = freshDir("layout-session");
+    SessionActions& sessions = window_->sessions();
+    sessions.tell = [this](const QString& t, const QString& m) { errors_ << t + ": " + m; };
+    const std::string file = (dir / "s.json").string();
+    QVERIFY(sessions.saveTo(QString::fromStdString(file)));
+    std::ifstream in(file);
+    const auto saved = nlohmann::json::parse(in);
+    QCOMPARE(saved["reading"]["layout"].get<std::string>(), std::string("2x2"));
+    // Another study: the head CT hangs by the default rule "CT head" in MPR+3D.
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open(kBrain, {});
+    QVERIFY(shown.wait(120000));
+    QCOMPARE(reading_->layout(), ViewLayout::MprPlus3d);
+    QTRY_VERIFY(volume.x() < axial.x());  // 3D top left
+    // The session: the phantom in 2x2 again, not hung by the rules.
+    sessions.openFile(file);
+    QVERIFY(shown.wait(120000));
+    // The session's input: the embedded head phantom (no path), not the head CT.
+    QVERIFY(fixture_.models->source.path.empty());
+    QVERIFY(fixture_.models->document.volume()->study.seriesInstanceUid.empty());
+    QCOMPARE(reading_->layout(), ViewLayout::TwoByTwo);
+    QTRY_VERIFY(isTwoByTwo());
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+    // The next start (a new window, no session): the layout last chosen, 2x2.
+    PhantomWindow next;
+    QVERIFY(next.start());
+    auto* nextReading = next.window->findChild<ReadingActions*>();
+    QVERIFY(nextReading);
+    QCOMPARE(nextReading->layout(), ViewLayout::TwoByTwo);
+    QVERIFY(next.window->volumeView().isVisible() && next.window->sliceView(2).isVisible());
+    next.stop();
+  }
+
+  // A rule's series placement: the view whose series the study lacks is left empty with a
+  // note, and a session keeps the placement.
+  void ruleSeriesPlacementLeavesAMissingSeriesEmptyAndTheSessionKeepsIt() {
+    window_->resize(1800, 1000);
+    const fs::path dir = freshDir("placement");
+    std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
+      {"name": "head", "match": {"modality": "CT"}, "layout": "2x2",
+       "series": {"axial": "brain", "coronal": 1, "sagittal": "STIR"}}]})";
+    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+    QVERIFY(errors_.isEmpty());
+    openBrain();
+    QCOMPARE(reading_->layout(), ViewLayout::TwoByTwo);
+    const ReadingLayout& r = reading_->reading();
+    QCOMPARE(r.placed.size(), size_t(3));
+    for (const PlacedView& p : r.placed) {
+      if (p.view == GridView::Sagittal) {
+        QVERIFY(p.series.empty());
+        QCOMPARE(p.note, std::string("no series of this study matches 'STIR' (rule 'head'); the "
+                                     "view is left empty"));
+      } else {
+        QCOMPARE(p.description, std::string("STD BRAIN 5MM"));  // the study's one volume series
+        QVERIFY(!p.series.empty());
+      }
+    }
+    QTRY_VERIFY(window_->sliceView(0).isVisible() && window_->sliceView(1).isVisible());
+    QVERIFY(!window_->sliceView(2).isVisible());  // empty: no STIR series
+    QVERIFY(window_->volumeView().isVisible());   // the rule names no series for it
+    QVERIFY2(window_->statusBar()->currentMessage().contains("sagittal: no series of this study "
+                                                             "matches 'STIR'"),
+             qPrintable(window_->statusBar()->currentMessage()));
+    const std::string file = (freshDir("placement-session") / "s.json").string();
+    window_->sessions().tell = [this](const QString& t, const QString& m) {
+      errors_ << t + ": " + m;
+    };
+    QVERIFY(window_->sessions().saveTo(QString::fromStdString(file)));
+    reading_->setLayout(ViewLayout::One);  // the user's choice: every view shows the volume
+    QVERIFY(reading_->reading().placed.empty());
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->sessions().openFile(file);
+    QVERIFY(shown.wait(120000));
+    QCOMPARE(reading_->reading(), r);
+    QTRY_VERIFY(window_->sliceView(1).isVisible());
+    QVERIFY(!window_->sliceView(2).isVisible());
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+  }
+
+  // Issue 36: a PET's segment shows its SUVpeak in the Segments panel (the sphere phantom's
+  // SUV: the segment lies inside the uniform sphere), and the SR holds it as SUVbw with the
+  // derivation Peak Value Within ROI (126031, DCM).
+  void petSegmentShowsItsSuvPeakAndTheReportHoldsIt() {
+    const fs::path dir = freshDir("pet-segment");
+    const PetSpherePhantom phantom;
+    writePetSpherePhantom((dir / "pet").string(), phantom);
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open((dir / "pet").string(), {});
+    QVERIFY(shown.wait(120000));
+    QVERIFY(fixture_.models->document.volume()->suv);
+    window_->segmentDock()->show();
+    window_->segments().findChild<QPushButton*>("segmentAdd")->click();
+    const uint8_t label = window_->segments().currentLabel();
+    // 16 mm about the sphere's centre voxel (the sphere: 36 mm; 4 mm voxels).
+    fixture_.models->segmentation.paintSphere({24, 24, 16}, 16.0, label);
+    auto* stats = window_->segments().findChild<QTableWidget*>("segmentStats");
+    QVERIFY(stats);
+    const double suv = petSphereSuv(phantom);  // 6.60744
+    window_->segments().updateStatistics();
+    QTRY_COMPARE_WITH_TIMEOUT(stats->item(0, 8) ? stats->item(0, 8)->text() : QString(),
+                              QString::number(suv, 'f', 3), 10000);
+    QCOMPARE(stats->horizontalHeaderItem(8)->text(), QString("SUVpeak"));
+    QCOMPARE(stats->item(0, 8)->toolTip(), QString("SUVbw of this PET"));
+    const fs::path out = freshDir("pet-segment-sr");
+    QVERIFY(results_->saveReport(QString::fromStdString((out / "sr.dcm").string())));
+    const auto numbers = valuesIn(out / "sr.dcm", DCM_NumericValue);
+    const auto codes = valuesIn(out / "sr.dcm", DCM_CodeValue);
+    QVERIFY(std::find(codes.begin(), codes.end(), "126031") != codes.end());
+    // The SR's 9 digits: 1e-6 relative.
+    QVERIFY2(std::any_of(
+                 numbers.begin(), numbers.end(),
+                 [&](const std::string& n) { return std::abs(std::stod(n) - suv) < 1e-6 * suv; }),
+             "no value equal to the sphere's SUV");
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+  }
+
   void readmeScreenshot() {
     const QString shot = qEnvironmentVariable("VOXRAY_READING_SHOT");
     if (shot.isEmpty()) QSKIP("set VOXRAY_READING_SHOT=PATH to write the README's screenshot");

@@ -101,13 +101,22 @@ void FusionModel::setOverlay(std::shared_ptr<const Volume> overlay, std::string 
   warnings_ = base ? overlayWarnings(*base, *overlay) : std::vector<std::string>{};
   overlay_ = std::move(overlay);
   name_ = std::move(name);
+  sourcePath_.clear();  // the caller that read it from a file says where (setSource)
+  sourceFlags_.clear();
   changed.notify();
+}
+
+void FusionModel::setSource(std::string path, std::map<std::string, std::string> flags) {
+  sourcePath_ = std::move(path);
+  sourceFlags_ = std::move(flags);
 }
 
 void FusionModel::clear() {
   if (!overlay_) return;
   overlay_.reset();
   name_.clear();
+  sourcePath_.clear();
+  sourceFlags_.clear();
   warnings_.clear();
   changed.notify();
 }

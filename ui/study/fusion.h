@@ -4,6 +4,7 @@
 // (LPS mm) is looked up in the overlay's voxels (trilinear, engine's samplePlane), so the
 // two need not share dims, spacing or direction. The 3D view gets the same window and map
 // as the engine's overlay table (Raycaster::setOverlay, overlayWindowTable).
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -66,6 +67,11 @@ class FusionModel {
 
   // OVERLAY over BASE (its Frame of Reference checked), with defaultFusion's window.
   void setOverlay(std::shared_ptr<const Volume> overlay, std::string name, const Volume* base);
+  // Where the overlay was read from (a session saves it): its input (file or DICOM folder)
+  // and load flags (input_flags.h). Empty: not from a file (a test's volume).
+  const std::string& sourcePath() const { return sourcePath_; }
+  const std::map<std::string, std::string>& sourceFlags() const { return sourceFlags_; }
+  void setSource(std::string path, std::map<std::string, std::string> flags);
   void clear();
   // Another study under the overlay: its Frame of Reference checked again; settings stay.
   void setBase(const Volume* base);
@@ -77,6 +83,8 @@ class FusionModel {
  private:
   std::shared_ptr<const Volume> overlay_;
   std::string name_;
+  std::string sourcePath_;
+  std::map<std::string, std::string> sourceFlags_;
   FusionSettings settings_;
   std::vector<std::string> warnings_;
 };

@@ -112,7 +112,7 @@ HangingProtocols parseHangingProtocols(const std::string& text_) {
   for (const json& r : doc["rules"]) {
     const std::string at = "rules[" + std::to_string(i++) + "].";
     if (!r.is_object()) throw inputError(at.substr(0, at.size() - 1) + ": give an object");
-    refuseUnknownKeys(r, {"name", "match", "layout", "window", "preset"}, at);
+    refuseUnknownKeys(r, {"name", "match", "layout", "window", "preset", "series"}, at);
     HangingRule rule;
     rule.name = text(r, "name", at + "name");
     if (rule.name.empty()) throw inputError(at + "name: give each rule a name");
@@ -158,9 +158,83 @@ HangingProtocols parseHangingProtocols(const std::string& text_) {
         throw inputError(at + "preset: '" + rule.preset + "' is not a 3D preset; give one of " +
                          names);
     }
+    if (r.contains("series")) {
+      const json& views = r["series"];
+      if (!views.is_object())
+        throw inputError(at + "series: give an object of views, e.g. {\"axial\": \"T2\"}");
+      for (const auto& [name, choice] : views.items()) {
+        const std::string field = at + "series." + name;
+        const auto view = parseGridView(name);
+        if (!view) throw inputError(field + ": not a view; give 3d, axial, coronal or sagittal");
+        SeriesChoice c;
+        if (choice.is_number_integer() && choice.get<long long>() >= 1 &&
+            choice.get<long long>() <= 10000) {
+          c.index = choice.get<int>();
+        } else if (choice.is_string() && !choice.get<std::string>().empty()) {
+          c.description = choice.get<std::string>();
+          checkPattern(c.description, field);
+        } else {
+          throw inputError(field +
+                           ": give a series description pattern (text or /regex/) or the "
+                           "series' place in the study (1, 2, ...)");
+        }
+        rule.series[*view] = c;
+      }
+    }
     out.rules.push_back(rule);
   }
   return out;
+}
+
+std::vector<PlacedView> placeSeries(const HangingRule& rule,
+                                    const std::vector<StudySeries>& study) {
+  std::vector<PlacedView> out;
+  for (const auto& [view, choice] : rule.series) {
+    PlacedView p;
+    p.view = view;
+    const StudySeries* found = nullptr;
+    if (choice.index > 0) {
+      if (size_t(choice.index) <= study.size())
+        found = &study[size_t(choice.index - 1)];
+      else
+        p.note = "series " + std::to_string(choice.index) + " of the rule '" + rule.name +
+                 "' is not in this study (it has " + std::to_string(study.size()) +
+                 " volume series); the view is left empty";
+    } else {
+      for (const StudySeries& s : study)
+        if (patternMatches(choice.description, s.description)) {
+          found = &s;
+          break;
+        }
+      if (!found)
+        p.note = "no series of this study matches '" + choice.description + "' (rule '" +
+                 rule.name + "'); the view is left empty";
+    }
+    if (found) {
+      p.series = found->selector;
+      p.description = found->description;
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+std::optional<std::string> shownSeries(ViewLayout layout, const std::vector<PlacedView>& placed) {
+  for (const LayoutCell& c : layoutCells(layout))
+    for (const PlacedView& p : placed)
+      if (p.view == c.view && !p.series.empty()) return p.series;
+  return std::nullopt;
+}
+
+std::vector<PlacedView> keepShown(std::vector<PlacedView> placed, const std::string& shown) {
+  for (PlacedView& p : placed)
+    if (!p.series.empty() && p.series != shown) {
+      p.note = "its series '" + p.description +
+               "' is not the one shown (the views show one series at a time); the view is "
+               "left empty";
+      p.series.clear();
+    }
+  return placed;
 }
 
 std::string hangingProtocolsJson(const HangingProtocols& p) {
@@ -175,6 +249,9 @@ std::string hangingProtocolsJson(const HangingProtocols& p) {
     if (r.layout) j["layout"] = layoutName(*r.layout);
     if (!r.window.empty()) j["window"] = r.window;
     if (!r.preset.empty()) j["preset"] = r.preset;
+    for (const auto& [view, choice] : r.series)
+      j["series"][gridViewName(view)] =
+          choice.index > 0 ? json(choice.index) : json(choice.description);
     rules.push_back(j);
   }
   return json{{"voxray-hanging-protocols", kHangingProtocolVersion}, {"rules", rules}}.dump(2) +

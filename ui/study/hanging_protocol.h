@@ -4,7 +4,10 @@
 // description. The rules are a versioned JSON file in the user's config folder
 // (hanging-protocols.json); without one the embedded default set applies. The first rule
 // whose every given field matches wins. A field's pattern is a case-insensitive substring,
-// or, written as /…/, a case-insensitive ECMAScript regex.
+// or, written as /…/, a case-insensitive ECMAScript regex. A rule may also say which series
+// of the study goes in which view ("series": {"axial": "T2", "3d": 2}): by a pattern on the
+// series description, or by the series' place in the study (1-based, by series number).
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +23,14 @@ struct StudyAttributes {
   std::string modality, bodyPart, seriesDescription;
 };
 
+// Which series a view shows: the first whose description matches DESCRIPTION (a pattern as
+// the match fields'), or, with INDEX from 1, the study's INDEX-th series by series number.
+struct SeriesChoice {
+  std::string description;
+  int index = 0;
+  bool operator==(const SeriesChoice&) const = default;
+};
+
 struct HangingRule {
   std::string name;
   // Patterns; empty: any value.
@@ -27,7 +38,24 @@ struct HangingRule {
   std::optional<ViewLayout> layout;
   std::string window;  // a windowLevelPresets() name; empty: the study's own window
   std::string preset;  // a builtinPresets() name; empty: the 3D view keeps its preset
+  std::map<GridView, SeriesChoice> series;  // none: every view shows the opened series
 };
+
+// One volume series of the study, in the study's order (series number).
+struct StudySeries {
+  std::string selector;  // LoadOptions::series
+  std::string description;
+};
+
+// The views RULE names, each with the series of STUDY it chooses, or empty with a note when
+// no series fits (a missing series leaves the view empty; the rest still hang).
+std::vector<PlacedView> placeSeries(const HangingRule& rule, const std::vector<StudySeries>& study);
+// The series the grid shows (its views show one series at a time): that of the first cell of
+// LAYOUT whose view PLACED fills; none when no placed view has a series.
+std::optional<std::string> shownSeries(ViewLayout layout, const std::vector<PlacedView>& placed);
+// PLACED with the views that hold another series than SHOWN emptied, each with a note (the
+// views show one series at a time).
+std::vector<PlacedView> keepShown(std::vector<PlacedView> placed, const std::string& shown);
 
 struct HangingProtocols {
   std::vector<HangingRule> rules;

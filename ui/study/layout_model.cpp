@@ -77,4 +77,51 @@ std::vector<LayoutCell> layoutCells(ViewLayout l) {
   return {};
 }
 
+std::string gridViewName(GridView v) {
+  switch (v) {
+    case GridView::Volume3d:
+      return "3d";
+    case GridView::Axial:
+      return "axial";
+    case GridView::Coronal:
+      return "coronal";
+    case GridView::Sagittal:
+      return "sagittal";
+  }
+  return "axial";
+}
+
+const std::vector<GridView>& gridViews() {
+  static const std::vector<GridView> all = {GridView::Volume3d, GridView::Axial, GridView::Coronal,
+                                            GridView::Sagittal};
+  return all;
+}
+
+std::optional<GridView> parseGridView(const std::string& name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  for (GridView v : gridViews())
+    if (gridViewName(v) == lower) return v;
+  return std::nullopt;
+}
+
+std::vector<LayoutCell> visibleCells(const ReadingLayout& l) {
+  std::vector<LayoutCell> out;
+  for (const LayoutCell& c : layoutCells(l.layout)) {
+    auto it = std::find_if(l.placed.begin(), l.placed.end(),
+                           [&](const PlacedView& p) { return p.view == c.view; });
+    if (it == l.placed.end() || !it->series.empty()) out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<std::string> emptyViewNotes(const ReadingLayout& l) {
+  std::vector<std::string> out;
+  for (const LayoutCell& c : layoutCells(l.layout))
+    for (const PlacedView& p : l.placed)
+      if (p.view == c.view && p.series.empty()) out.push_back(gridViewName(p.view) + ": " + p.note);
+  return out;
+}
+
 }  // namespace voxray

@@ -30,4 +30,32 @@ std::optional<ViewLayout> parseLayout(const std::string& name);  // case-insensi
 // (3D top left, axial, coronal, sagittal); TwoByTwo reads the three slices first (3D last).
 std::vector<LayoutCell> layoutCells(ViewLayout l);
 
+// "3d", "axial", "coronal", "sagittal": the views' names in rules and sessions.
+std::string gridViewName(GridView v);
+std::optional<GridView> parseGridView(const std::string& name);  // case-insensitive
+const std::vector<GridView>& gridViews();                        // in that order
+
+// What a hanging protocol put in one view: the series (its loader selector and description),
+// or nothing, with the note saying why the view is empty.
+struct PlacedView {
+  GridView view = GridView::Axial;
+  std::string series;       // LoadOptions::series of the series shown; empty: the view is empty
+  std::string description;  // the series' description, for the user
+  std::string note;         // why the view is empty ("no series matches 'STIR'")
+  bool operator==(const PlacedView&) const = default;
+};
+
+// The grid as the reader left it: the layout and, when a hanging protocol placed series, what
+// each named view holds. Saved in sessions (Session::reading).
+struct ReadingLayout {
+  ViewLayout layout = ViewLayout::MprPlus3d;
+  std::vector<PlacedView> placed;  // empty: every view shows the open volume
+  bool operator==(const ReadingLayout&) const = default;
+};
+
+// L's cells less the views left empty (they are hidden; their cell stays blank).
+std::vector<LayoutCell> visibleCells(const ReadingLayout& l);
+// The notes of the views L left empty, one line each ("sagittal: no series matches 'STIR'").
+std::vector<std::string> emptyViewNotes(const ReadingLayout& l);
+
 }  // namespace voxray

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "segment_peak.h"
 #include "voxray/engine/measure.h"
 #include "voxray/io/error.h"
 
@@ -17,6 +18,7 @@ std::vector<ReportMeasurement> reportMeasurements(const Volume& v, const Measure
     ReportMeasurement r;
     r.points = x.points;
     r.normalAxis = x.normalAxis < 0 ? 2 : x.normalAxis;
+    r.in3d = x.normalAxis < 0;  // picked on surfaces in the 3D view
     switch (x.kind) {
       case MeasureKind::Distance:
         r.kind = ReportKind::Length;
@@ -41,6 +43,26 @@ std::vector<ReportMeasurement> reportMeasurements(const Volume& v, const Measure
         break;
       }
     }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+std::vector<ReportMeasurement> reportSegments(const Segmentation& s, const Volume& v,
+                                              const Volume* overlay,
+                                              const std::string& overlayName) {
+  std::vector<SegmentStats> stats = allSegmentStats(s, v);
+  addSuvPeaks(stats, s, v, overlay, overlayName);
+  std::vector<ReportMeasurement> out;
+  for (const SegmentStats& st : stats) {
+    if (st.voxels == 0) continue;  // nothing to report of an empty segment
+    ReportMeasurement r;
+    r.kind = ReportKind::Segment;
+    r.label = "segment " + std::to_string(int(st.label)) + (st.name.empty() ? "" : " " + st.name);
+    r.mean = st.mean, r.sd = st.sd, r.min = st.min, r.max = st.max;
+    r.volumeMm3 = st.volumeMm3;
+    r.suvPeak = st.suvPeak;
+    r.pixels = st.voxels;
     out.push_back(std::move(r));
   }
   return out;

@@ -10,12 +10,19 @@
 #include "no_qt.h"
 #include "notifier.h"
 #include "voxray/io/measurement_report.h"
+#include "voxray/io/segmentation.h"
 
 namespace voxray {
 
 // M's measurements of V with the engine's values, labelled as voxray-cli export-sr labels
 // them ("line 1", "angle 1", "ellipse 1", "rect 1", numbered per kind in list order).
+// A distance picked in the 3D view is in3d (SCOORD3D in the SR).
 std::vector<ReportMeasurement> reportMeasurements(const Volume& v, const MeasurementModel& m);
+// The segments of S (on V's grid) as report groups labelled "segment LABEL NAME": their
+// statistics, volume and SUVpeak (V's SUV, else the fused OVERLAY's; segment_peak.h).
+std::vector<ReportMeasurement> reportSegments(const Segmentation& s, const Volume& v,
+                                              const Volume* overlay = nullptr,
+                                              const std::string& overlayName = "");
 
 // The slices (k of the volume: the series' own images) marked as key images, in the order
 // marked, each once.

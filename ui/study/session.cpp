@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fusion.h"
 #include "segmentation_json.h"
 #include "voxray/engine/input_flags.h"
 #include "voxray/engine/quality.h"
@@ -155,45 +156,139 @@ Json inputJson(const SessionInput& in, const std::string& sessionPath) {
   return j;
 }
 
-void readInput(Reader& r, const Json& root, const std::string& sessionPath, SessionRead& out) {
-  const Json& in = r.object(root, "input", "input");
-  r.warnUnknown(in, "input.", {"path", "absolute-path", "flags"});
-  const std::string written = r.text(r.require(in, "input.path", "path"), "input.path");
+// An input object (the study's "input", the overlay's "fusion.input"), FIELD naming it: its
+// path resolved beside the session first (a folder moved with its session), then where it was
+// saved; MISSING lists the paths tried when it is at none.
+void readInputObject(Reader& r, const Json& in, const std::string& field,
+                     const std::string& sessionPath, SessionInput& out,
+                     std::vector<std::string>& missing) {
+  r.warnUnknown(in, field + ".", {"path", "absolute-path", "flags"});
+  const std::string written = r.text(r.require(in, field + ".path", "path"), field + ".path");
   if (in.contains("flags")) {
-    const Json& flags = r.object(in, "input.flags", "flags");
+    const Json& flags = r.object(in, field + ".flags", "flags");
     for (const auto& item : flags.items()) {
-      const std::string field = "input.flags." + item.key();
+      const std::string flag = field + ".flags." + item.key();
       try {
         findInputFlagSpec(item.key());
       } catch (const Error&) {
-        r.unknown(field);
+        r.unknown(flag);
         continue;
       }
-      out.session.input.flags[item.key()] = r.valueText(item.value(), field);
+      out.flags[item.key()] = r.valueText(item.value(), flag);
     }
     try {
-      loadOptionsFromFlags(out.session.input.flags);
+      loadOptionsFromFlags(out.flags);
     } catch (const Error& e) {
-      r.fail("input.flags", std::string("is wrong: ") + e.what());
+      r.fail(field + ".flags", std::string("is wrong: ") + e.what());
     }
   }
   if (written.empty()) return;  // the embedded head phantom
-  // Beside the session first (a folder moved with its session), then where it was saved.
   std::vector<fs::path> candidates;
   const fs::path p(written);
   candidates.push_back(p.is_absolute() ? p : (folderOf(sessionPath) / p).lexically_normal());
   if (in.contains("absolute-path")) {
-    fs::path a(r.text(in.at("absolute-path"), "input.absolute-path"));
+    fs::path a(r.text(in.at("absolute-path"), field + ".absolute-path"));
     if (a != candidates.front()) candidates.push_back(a);
   }
   std::error_code ec;
   for (const fs::path& c : candidates)
     if (fs::exists(c, ec)) {
-      out.session.input.path = c.string();
+      out.path = c.string();
       return;
     }
-  out.session.input.path = candidates.front().string();
-  for (const fs::path& c : candidates) out.missingInput.push_back(c.string());
+  out.path = candidates.front().string();
+  for (const fs::path& c : candidates) missing.push_back(c.string());
+}
+
+void readInput(Reader& r, const Json& root, const std::string& sessionPath, SessionRead& out) {
+  readInputObject(r, r.object(root, "input", "input"), "input", sessionPath, out.session.input,
+                  out.missingInput);
+}
+
+Json readingJson(const ReadingLayout& l) {
+  Json views = Json::object();
+  for (const PlacedView& p : l.placed) {
+    Json v = Json::object();
+    if (!p.series.empty()) v["series"] = p.series;
+    if (!p.description.empty()) v["description"] = p.description;
+    if (!p.note.empty()) v["note"] = p.note;
+    views[gridViewName(p.view)] = v;
+  }
+  Json j = {{"layout", layoutName(l.layout)}};
+  if (!views.empty()) j["views"] = views;
+  return j;
+}
+
+void readReading(Reader& r, const Json& root, Session& s) {
+  if (!root.contains("reading")) return;
+  const Json& reading = r.object(root, "reading", "reading");
+  r.warnUnknown(reading, "reading.", {"layout", "views"});
+  ReadingLayout l;
+  const std::string name = r.text(r.require(reading, "reading.layout", "layout"), "reading.layout");
+  const auto layout = parseLayout(name);
+  if (!layout) r.fail("reading.layout", "must be one of 1x1, 1x2, 2x2, 1+3, mpr+3d, 3d");
+  l.layout = *layout;
+  if (reading.contains("views")) {
+    const Json& views = r.object(reading, "reading.views", "views");
+    for (const auto& item : views.items()) {
+      const std::string field = "reading.views." + item.key();
+      const auto view = parseGridView(item.key());
+      if (!view) {
+        r.unknown(field);
+        continue;
+      }
+      const Json& v = r.object(views, field, item.key());
+      r.warnUnknown(v, field + ".", {"series", "description", "note"});
+      PlacedView p;
+      p.view = *view;
+      if (v.contains("series")) p.series = r.text(v.at("series"), field + ".series");
+      if (v.contains("description"))
+        p.description = r.text(v.at("description"), field + ".description");
+      if (v.contains("note")) p.note = r.text(v.at("note"), field + ".note");
+      if (p.series.empty() && p.note.empty()) p.note = "left empty when the session was saved";
+      l.placed.push_back(p);
+    }
+  }
+  s.reading = l;
+}
+
+Json fusionJson(const Session::Fusion& f, const std::string& sessionPath) {
+  return {{"input", inputJson(f.input, sessionPath)},
+          {"on", f.on},
+          {"colormap", f.colormap},
+          {"window", {{"lo", f.lo}, {"hi", f.hi}, {"unit", f.unit}}},
+          {"opacity", f.opacity}};
+}
+
+void readFusion(Reader& r, const Json& root, const std::string& sessionPath, SessionRead& out) {
+  if (!root.contains("fusion")) return;
+  const Json& j = r.object(root, "fusion", "fusion");
+  r.warnUnknown(j, "fusion.", {"input", "on", "colormap", "window", "opacity"});
+  Session::Fusion f;
+  readInputObject(r, r.object(j, "fusion.input", "input"), "fusion.input", sessionPath, f.input,
+                  out.missingFusion);
+  if (f.input.path.empty()) r.fail("fusion.input.path", "must name the overlay's file or folder");
+  if (j.contains("on")) {
+    if (!j.at("on").is_boolean()) r.fail("fusion.on", "must be true or false");
+    f.on = j.at("on").get<bool>();
+  }
+  f.colormap = r.text(r.require(j, "fusion.colormap", "colormap"), "fusion.colormap");
+  const auto& maps = fusionColormaps();
+  if (std::find(maps.begin(), maps.end(), f.colormap) == maps.end()) {
+    std::string names;
+    for (const auto& m : maps) names += (names.empty() ? "" : ", ") + m;
+    r.fail("fusion.colormap", "must be one of " + names);
+  }
+  const Json& window = r.object(j, "fusion.window", "window");
+  r.warnUnknown(window, "fusion.window.", {"lo", "hi", "unit"});
+  f.lo = r.number(r.require(window, "fusion.window.lo", "lo"), "fusion.window.lo");
+  f.hi = r.number(r.require(window, "fusion.window.hi", "hi"), "fusion.window.hi");
+  if (!std::isfinite(f.lo) || !std::isfinite(f.hi) || !(f.lo < f.hi))
+    r.fail("fusion.window", "must have lo below hi (finite numbers in the overlay's unit)");
+  if (window.contains("unit")) f.unit = r.text(window.at("unit"), "fusion.window.unit");
+  f.opacity = r.number(r.require(j, "fusion.opacity", "opacity"), "fusion.opacity");
+  if (!(f.opacity >= 0.0 && f.opacity <= 1.0)) r.fail("fusion.opacity", "must be 0 ... 1");
+  out.session.fusion = f;
 }
 
 void readRender(Reader& r, const Json& root, RenderParams& p) {
@@ -336,6 +431,8 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
     }
     j["comparison"] = c;
   }
+  if (s.reading) j["reading"] = readingJson(*s.reading);
+  if (s.fusion) j["fusion"] = fusionJson(*s.fusion, sessionPath);
   if (s.segmentation) j["segmentation"] = segmentationToJson(*s.segmentation);
   try {
     j["measurements"] = Json::parse(s.measurements);
@@ -389,10 +486,10 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
     throw inputError("session " + sessionPath + ": written by a newer Voxray (session version " +
                      version.dump() + "; this one reads up to " + std::to_string(kSessionVersion) +
                      "); open it with a newer Voxray");
-  r.warnUnknown(
-      root, "",
-      {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays",
-       "transfer-function", "measurements", "annotations", "segmentation", "time", "comparison"});
+  r.warnUnknown(root, "",
+                {kVersionKey, "input", "render", "quality", "slices", "layout", "overlays",
+                 "transfer-function", "measurements", "annotations", "segmentation", "time",
+                 "comparison", "reading", "fusion"});
   SessionRead out;
   Session& s = out.session;
   readInput(r, root, sessionPath, out);
@@ -438,6 +535,8 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   if (std::find(layouts.begin(), layouts.end(), s.layout) == layouts.end())
     r.fail("layout", "must be one of grid, 3d, axial, coronal, sagittal");
   readOverlays(r, root, s.overlays);
+  readReading(r, root, s);
+  readFusion(r, root, sessionPath, out);
   if (root.contains("transfer-function")) {
     try {
       s.transferFunction =

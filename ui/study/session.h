@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "layout_model.h"
 #include "view_overlays.h"
 #include "voxray/engine/plane_sampler.h"
 #include "voxray/engine/render_params.h"
@@ -29,6 +30,7 @@ inline constexpr int kSessionVersion = 1;
 struct SessionInput {
   std::string path;                          // absolute once read; empty: the embedded head phantom
   std::map<std::string, std::string> flags;  // keys of inputFlagSpecs(): raw layout, series
+  bool operator==(const SessionInput&) const = default;
 };
 
 // The slice views' layout names, in the workstation's grid order ("grid": none maximised).
@@ -80,6 +82,21 @@ struct Session {
     std::optional<glm::dmat4> movingToFixed;  // none: linked by a shared Frame of Reference only
   };
   std::optional<Comparison> comparison;
+  // The reading layout (issue 37: 1x1 ... 3d, Ctrl+1..6) and what a hanging protocol placed in
+  // which view. Optional in the file ("reading"; older sessions: the window's layout stays).
+  std::optional<ReadingLayout> reading;
+  // The fusion overlay (issue 36): its file, how it opens and how it is shown. Optional in the
+  // file ("fusion"; older sessions: none).
+  struct Fusion {
+    SessionInput input;  // path absolute once read; flags as the study's
+    std::string colormap = "hot-iron";
+    double lo = 0.0, hi = 1.0;  // in the overlay's display unit (SUVbw for a PET with SUV)
+    std::string unit;           // that unit when saved ("SUVbw", "Bq/ml", ...), for the reader
+    double opacity = 0.5;
+    bool on = true;
+    bool operator==(const Fusion&) const = default;
+  };
+  std::optional<Fusion> fusion;
 };
 
 struct SessionRead {
@@ -90,6 +107,9 @@ struct SessionRead {
   // Non-empty when the input is at none of these paths (the session's folder first, then
   // where it was saved from): the data moved. session.input.path is the first of them.
   std::vector<std::string> missingInput;
+  // Non-empty when the fusion overlay's file is at none of these paths: the session opens
+  // without the overlay, and says so (session.fusion keeps its settings).
+  std::vector<std::string> missingFusion;
 };
 
 // S as JSON. SESSIONPATH: where it will be written; the input is stored relative to its

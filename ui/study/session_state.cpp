@@ -6,8 +6,8 @@
 
 namespace voxray {
 
-Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
-                          const std::string& layout) {
+Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize, const std::string& layout,
+                          const std::optional<ReadingLayout>& reading) {
   Session s;
   s.input = m.source;
   s.render = m.render.params();
@@ -34,7 +34,47 @@ Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
     s.input.flags["time"] = std::to_string(m.document.timePoint());
   }
   s.comparison = m.comparison;
+  s.reading = reading;
+  if (m.fusion.overlay() && !m.fusion.sourcePath().empty()) s.fusion = sessionFusion(m.fusion);
   return s;
+}
+
+Session::Fusion sessionFusion(const FusionModel& fusion) {
+  Session::Fusion f;
+  f.input = {fusion.sourcePath(), fusion.sourceFlags()};
+  const FusionSettings& s = fusion.settings();
+  f.colormap = s.colormap;
+  f.lo = s.lo;
+  f.hi = s.hi;
+  f.opacity = s.opacity;
+  f.on = s.on;
+  if (fusion.overlay()) f.unit = fusionUnit(*fusion.overlay());
+  return f;
+}
+
+std::vector<std::string> applySessionFusion(FusionModel& fusion, const Session::Fusion& f) {
+  std::vector<std::string> problems;
+  if (!fusion.overlay()) return {"the overlay is not open: its settings were left out"};
+  fusion.setSource(f.input.path, f.input.flags);
+  FusionSettings s = fusion.settings();
+  s.colormap = f.colormap;
+  s.opacity = f.opacity;
+  s.on = f.on;
+  const std::string unit = fusionUnit(*fusion.overlay());
+  if (f.unit.empty() || f.unit == unit) {
+    s.lo = f.lo;
+    s.hi = f.hi;
+  } else {
+    problems.push_back("the overlay's window was saved in " + f.unit +
+                       " but the overlay now reads in " + unit +
+                       ": its first window is shown instead");
+  }
+  try {
+    fusion.setSettings(s);
+  } catch (const Error& e) {
+    problems.push_back(std::string("the overlay's saved settings were left out: ") + e.what());
+  }
+  return problems;
 }
 
 std::vector<std::string> openSession(AppModels& m, std::shared_ptr<const Volume> v,

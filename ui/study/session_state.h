@@ -3,6 +3,7 @@
 // File → Save session writes and Open session restores, Qt-free so that a test can save
 // the models' state and compare voxray-cli's render of it with the 3D view's frame.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,17 @@ namespace voxray {
 // 3D view's size in pixels), the quality choice, the slice window/level, crosshair and
 // interpolation, the 3D view's overlays, LAYOUT (a sessionLayouts() name) and the
 // measurements.
-Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize,
-                          const std::string& layout);
+// READING: the reading layout and the series a hanging protocol placed (none: not saved).
+// The fusion overlay is saved when it was read from a file (FusionModel::sourcePath).
+Session sessionFromModels(const AppModels& m, const glm::ivec2& viewSize, const std::string& layout,
+                          const std::optional<ReadingLayout>& reading = std::nullopt);
+
+// The overlay's settings as a session keeps them (F's input from its source), and back: the
+// saved window, map, opacity and on/off onto FUSION's overlay just opened from F.input.
+// Returns what could not be applied: a window saved in another unit than the overlay's now
+// (e.g. SUVbw, and the overlay lost its weight) keeps the overlay's first window, said.
+Session::Fusion sessionFusion(const FusionModel& fusion);
+std::vector<std::string> applySessionFusion(FusionModel& fusion, const Session::Fusion& f);
 
 // Sets everything S holds on the study just opened (openStudy) from S.input: render
 // parameters (the view keeps deciding the size), quality, window/level, crosshair, slice

@@ -15,6 +15,7 @@
 
 #include "coupling.h"
 #include "load_controller.h"
+#include "voxray/engine/input_flags.h"
 #include "voxray/io/volume_file.h"
 
 namespace voxray::ui {
@@ -127,6 +128,7 @@ OverlayLoader::OverlayLoader(AppModels& models, QWidget* dialogParent)
             // A 4D overlay shows its first time point (the 3D view's overlay is one volume).
             models_.fusion.setOverlay(series.front(), name.toStdString(),
                                       models_.document.volume().get());
+            models_.fusion.setSource(sourcePath_, sourceFlags_);
             QStringList warnings;
             for (const std::string& w : models_.fusion.warnings())
               warnings << QString::fromStdString(w);
@@ -136,6 +138,9 @@ OverlayLoader::OverlayLoader(AppModels& models, QWidget* dialogParent)
 }
 
 void OverlayLoader::load(const std::string& input, const LoadOptions& options) {
+  // Where it comes from, for a session (one overlay loads at a time: the loader's own rule).
+  sourcePath_ = QFileInfo(QString::fromStdString(input)).absoluteFilePath().toStdString();
+  sourceFlags_ = flagsFromLoadOptions(options);
   loader_->load(input, options, QFileInfo(QString::fromStdString(input)).fileName());
 }
 

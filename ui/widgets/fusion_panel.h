@@ -3,6 +3,7 @@
 // view, its colour map, window (in the overlay's unit, SUV for a PET with one), opacity and
 // on/off. Thin: the overlay and its settings are FusionModel's; the slice views draw it
 // (SliceView::setFusion), the 3D view raycasts it with the volume (RenderScheduler::setOverlay).
+#include <map>
 #include <string>
 
 #include <QObject>
@@ -64,6 +65,8 @@ class OverlayLoader : public QObject {
  private:
   AppModels& models_;
   LoadController* loader_;
+  std::string sourcePath_;
+  std::map<std::string, std::string> sourceFlags_;
 };
 
 // Asks for any input the loader reads: a volume file, or any file of a DICOM series (its

@@ -11,6 +11,7 @@
 #include <QKeySequence>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTimer>
@@ -18,7 +19,9 @@
 
 #include "gui_message.h"
 #include "json_text_dialog.h"
+#include "load_controller.h"
 #include "main_window.h"
+#include "session_actions.h"
 #include "slice_view.h"
 #include "study_attributes.h"
 #include "study_browser_dialog.h"
@@ -29,6 +32,10 @@
 #endif
 
 namespace voxray::ui {
+
+namespace {
+const char* kLastLayoutKey = "reading/lastLayout";
+}  // namespace
 
 std::string qtKeyNormaliser(const std::string& key) {
   const QKeySequence k =
@@ -48,10 +55,32 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
     for (int i = 0; i < 3; ++i)
       if (now == &window_.sliceView(i)) focusedSlice_ = i;
   });
+  // The last layout the user chose, for a start where no hanging protocol matches.
+  if (const auto last = parseLayout(QSettings().value(kLastLayoutKey).toString().toStdString()))
+    setReading(ReadingLayout{*last, {}});
   // A study the user opens (not a session: it brings its own view) hangs by the rules.
   connect(&window_, &MainWindow::volumeShown, this, [this] {
-    if (!window_.openedWithValues()) applyHangingProtocol();
+    if (pendingPlacement_) {  // the series a rule placed is shown now
+      ReadingLayout r = *pendingPlacement_;
+      pendingPlacement_.reset();
+      const std::string shown = shownSeries(r.layout, r.placed).value_or("");
+      r.placed = keepShown(r.placed, shown);
+      setReading(r);
+      if (pendingRule_) {
+        const HangingRule rule = *pendingRule_;
+        pendingRule_.reset();
+        applyLook(&rule);
+      }
+      return;
+    }
+    if (!window_.openedWithValues() && !window_.sessions().showingSession()) applyHangingProtocol();
   });
+  auto dropPending = [this] {
+    pendingPlacement_.reset();
+    pendingRule_.reset();
+  };
+  connect(&window_.loader(), &LoadController::failed, this, dropPending);
+  connect(&window_.loader(), &LoadController::cancelled, this, dropPending);
 }
 
 void ReadingActions::setConfigFolder(const QString& folder) {
@@ -121,7 +150,7 @@ void ReadingActions::buildMenu() {
     QAction* a = layouts->addAction(QString::fromStdString(layoutTitle(l)), this,
                                     [this, l] { setLayout(l); });
     a->setCheckable(true);
-    a->setChecked(l == layout_);
+    a->setChecked(l == reading_.layout);
     group->addAction(a);
     bind("layout-" + layoutName(l), a);
   }
@@ -158,10 +187,87 @@ void ReadingActions::buildMenu() {
 }
 
 void ReadingActions::setLayout(ViewLayout l) {
-  layout_ = l;
-  window_.grid().arrange(layoutCells(l));
-  if (QAction* a = action("layout-" + layoutName(l))) a->setChecked(true);
+  QSettings().setValue(kLastLayoutKey, QString::fromStdString(layoutName(l)));
+  pendingPlacement_.reset();
+  pendingRule_.reset();
+  setReading(ReadingLayout{l, {}});
+}
+
+void ReadingActions::setReading(const ReadingLayout& r) {
+  reading_ = r;
+  window_.grid().arrange(visibleCells(r));
+  if (QAction* a = action("layout-" + layoutName(r.layout))) a->setChecked(true);
+  if (const QString notes = emptyViewsText(); !notes.isEmpty()) status(notes);
   emit layoutChanged();
+}
+
+#ifdef VOXRAY_HAS_DICOM
+namespace {
+// The study folder's volume series in the study's order, and which of them is open (-1: none).
+std::vector<SeriesInfo> studyVolumes(const std::string& folder) {
+  std::vector<SeriesInfo> volumes;
+  for (const auto& s : listDicomSeries(folder).series)
+    if (s.isVolume) volumes.push_back(s);
+  std::stable_sort(volumes.begin(), volumes.end(), [](const auto& a, const auto& b) {
+    return std::pair(a.number, a.part) < std::pair(b.number, b.part);
+  });
+  return volumes;
+}
+
+long openSeries(const std::vector<SeriesInfo>& volumes, const AppModels& m) {
+  const auto v = m.document.volume();
+  const auto flag = m.source.flags.find("series");
+  for (int pass = 0; pass < 2; ++pass)  // the selector it was opened with, else its UID
+    for (size_t i = 0; i < volumes.size(); ++i) {
+      const bool bySelector = pass == 0 && flag != m.source.flags.end() && !flag->second.empty();
+      if (bySelector ? volumes[i].selector == flag->second
+                     : pass == 1 && v && volumes[i].uid == v->study.seriesInstanceUid)
+        return long(i);
+    }
+  return -1;
+}
+}  // namespace
+#endif
+
+bool ReadingActions::placeSeriesOf(const HangingRule& r) {
+  if (r.series.empty()) return false;
+#ifdef VOXRAY_HAS_DICOM
+  const auto v = models_.document.volume();
+  const std::string folder = models_.source.path;
+  if (!v || folder.empty() || v->study.seriesInstanceUid.empty()) return false;
+  std::vector<SeriesInfo> volumes;
+  try {
+    volumes = studyVolumes(folder);
+  } catch (const std::exception& e) {
+    status("Hanging protocol: cannot list the study's series (" + QString::fromStdString(e.what()) +
+           ")");
+    return false;
+  }
+  std::vector<StudySeries> study;
+  for (const auto& s : volumes) study.push_back({s.selector, s.description});
+  ReadingLayout placed{reading_.layout, placeSeries(r, study)};
+  const long open = openSeries(volumes, models_);
+  const std::string current = open >= 0 ? volumes[size_t(open)].selector : std::string();
+  const auto shown = shownSeries(placed.layout, placed.placed);
+  if (shown && *shown != current) {
+    pendingPlacement_ = placed;
+    LoadOptions options;
+    options.series = *shown;
+    window_.open(folder, options);
+    return true;
+  }
+  placed.placed = keepShown(placed.placed, current);
+  setReading(placed);
+  return false;
+#else
+  return false;
+#endif
+}
+
+QString ReadingActions::emptyViewsText() const {
+  QStringList notes;
+  for (const std::string& n : emptyViewNotes(reading_)) notes << QString::fromStdString(n);
+  return notes.isEmpty() ? QString() : "Views left empty: " + notes.join("  ·  ");
 }
 
 SliceView& ReadingActions::focusedSlice() const { return window_.sliceView(focusedSlice_); }
@@ -171,7 +277,17 @@ QString ReadingActions::applyHangingProtocol() {
   if (!v) return {};
   const HangingRule* r = matchRule(protocols_, studyAttributes(*v, models_.source.path));
   if (!r) return {};
-  if (r->layout) setLayout(*r->layout);
+  if (r->layout) setReading(ReadingLayout{*r->layout, {}});
+  pendingRule_.reset();
+  if (placeSeriesOf(*r)) {  // its series opens; the rest is applied once it is shown
+    pendingRule_ = *r;
+    return QString::fromStdString(r->name);
+  }
+  return applyLook(r);
+}
+
+QString ReadingActions::applyLook(const HangingRule* rule) {
+  const HangingRule* r = rule;
   if (!r->window.empty())
     for (const auto& p : windowLevelPresets())
       if (p.name == r->window) models_.windowLevel.reset(p.wl, "hanging protocol: " + r->name);
@@ -183,7 +299,8 @@ QString ReadingActions::applyHangingProtocol() {
     }
   }
   const QString name = QString::fromStdString(r->name);
-  status("Hanging protocol: " + name);
+  const QString notes = emptyViewsText();
+  status("Hanging protocol: " + name + (notes.isEmpty() ? "" : "  ·  " + notes));
   emit protocolApplied(name);
   return name;
 }
@@ -198,7 +315,9 @@ void ReadingActions::showHangingProtocolEditor() {
   JsonTextDialog d(&window_, "Hanging protocols",
                    "Rules picking the layout, window and 3D preset when a study opens; the "
                    "first whose every match field fits wins. A pattern is a case-insensitive "
-                   "substring, or /a regex/. Layouts: 1x1, 1x2, 2x2, 1+3, mpr+3d, 3d.",
+                   "substring, or /a regex/. Layouts: 1x1, 1x2, 2x2, 1+3, mpr+3d, 3d. \"series\": "
+                   "{\"axial\": \"T2\", \"3d\": 2} puts the study's series in views by "
+                   "description or by place (1, 2, …); the views show one series at a time.",
                    QString::fromStdString(hangingProtocolsJson(protocols_)),
                    QString::fromStdString(defaultHangingProtocolsJson()),
                    [this](const std::string& json) { setProtocolsJson(json); });

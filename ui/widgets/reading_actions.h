@@ -6,6 +6,7 @@
 // it) acting while the views have the focus, and comes from the keymap (keymap.json in the
 // config folder). The rules and keys are reading_keymap.h's and hanging_protocol.h's.
 #include <map>
+#include <optional>
 #include <string>
 
 #include <QObject>
@@ -42,8 +43,14 @@ class ReadingActions : public QObject {
   void bind(const std::string& id, QAction* a);
   QAction* action(const std::string& id) const;
 
-  ViewLayout layout() const { return layout_; }
+  ViewLayout layout() const { return reading_.layout; }
+  // The user's choice (a key, the menu): every view shows the open volume, and the layout is
+  // remembered in the settings for the next start (used when no hanging protocol matches).
   void setLayout(ViewLayout l);
+  // The layout and what a hanging protocol placed in each view (a session saves it).
+  const ReadingLayout& reading() const { return reading_; }
+  // Puts R on the grid: views left empty are hidden, their notes in the status bar.
+  void setReading(const ReadingLayout& r);
   // The slice view last focused (axial before any).
   SliceView& focusedSlice() const;
   // The rule matching the open study applied (layout, window, 3D preset); its name, or "".
@@ -66,6 +73,12 @@ class ReadingActions : public QObject {
   void applyKeys();
   void loadUserFiles();
   void status(const QString& text);
+  // The rule's series placement for the open study: opens the series its first view holds
+  // when another is open (the placement is put on once it is shown). False: the rule places
+  // no series, or the study is no DICOM folder.
+  bool placeSeriesOf(const HangingRule& r);
+  QString applyLook(const HangingRule* r);  // the rule's window and 3D preset, said
+  QString emptyViewsText() const;           // "Views left empty: sagittal: …", or ""
 
   MainWindow& window_;
   AppModels& models_;
@@ -73,7 +86,10 @@ class ReadingActions : public QObject {
   ReadingKeymap keymap_;
   HangingProtocols protocols_;
   std::map<std::string, QAction*> actions_;
-  ViewLayout layout_ = ViewLayout::MprPlus3d;
+  ReadingLayout reading_;
+  // A rule's placement waiting for its series to be shown (placeSeriesOf opened it).
+  std::optional<ReadingLayout> pendingPlacement_;
+  std::optional<HangingRule> pendingRule_;
   int focusedSlice_ = 0;
 };
 

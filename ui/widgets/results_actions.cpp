@@ -131,14 +131,25 @@ void ResultsActions::remember(const QString& path) {
   if (!written_.contains(abs)) written_ << abs;
 }
 
+std::vector<ReportMeasurement> ResultsActions::allResults(const Volume& v) const {
+  auto out = reportMeasurements(v, models_.measurements);
+  // The segment editor's segments too, with their SUVpeak (the volume's or the overlay's).
+  if (models_.segmentation.active()) {
+    const FusionModel& f = models_.fusion;
+    const auto segments = reportSegments(models_.segmentation.segmentation(), v,
+                                         f.overlay() ? f.overlay().get() : nullptr, f.name());
+    out.insert(out.end(), segments.begin(), segments.end());
+  }
+  return out;
+}
+
 bool ResultsActions::saveReport(const QString& path) {
   const auto v = models_.document.volume();
   if (!v || !mayWrite(path, "measurement report")) return false;
   try {
     MeasurementReportInfo info;
     info.comments = annotationReportTexts(models_.annotations);  // as TEXT items
-    const WrittenReport r = writeMeasurementReport(
-        path.toStdString(), *v, reportMeasurements(*v, models_.measurements), info);
+    const WrittenReport r = writeMeasurementReport(path.toStdString(), *v, allResults(*v), info);
     remember(path);
     QString text = "Measurement report saved: " + path;
     for (const auto& n : r.notes) text += "  ·  " + QString::fromStdString(n);
@@ -154,7 +165,7 @@ bool ResultsActions::saveCsv(const QString& path) {
   const auto v = models_.document.volume();
   if (!v || !mayWrite(path, "measurements")) return false;
   try {
-    writeMeasurementCsv(path.toStdString(), *v, reportMeasurements(*v, models_.measurements));
+    writeMeasurementCsv(path.toStdString(), *v, allResults(*v));
     status("Measurements saved: " + path);
     return true;
   } catch (const std::exception& e) {

@@ -62,6 +62,8 @@ class ResultsActions : public QObject {
   void showSendDialog();
   bool mayWrite(const QString& path, const char* what);  // source folder and replace checks
   void remember(const QString& path);
+  // The measurements and the segments' statistics of V as the report writers take them.
+  std::vector<ReportMeasurement> allResults(const Volume& v) const;
   void status(const QString& text);
 
   MainWindow& window_;

@@ -2,6 +2,7 @@
 #include "segment_panel.h"
 
 #include <filesystem>
+#include <memory>
 
 #include <QApplication>
 #include <QCheckBox>
@@ -223,10 +224,13 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   // Statistics.
   auto* statsBox = new QGroupBox("Statistics");
   auto* statsLayout = new QVBoxLayout(statsBox);
-  stats_ = new QTableWidget(0, 8);
+  stats_ = new QTableWidget(0, 9);
   stats_->setObjectName("segmentStats");
   stats_->setHorizontalHeaderLabels(
-      {"Segment", "Voxels", "Volume mL", "Mean", "SD", "Min", "Max", "Median"});
+      {"Segment", "Voxels", "Volume mL", "Mean", "SD", "Min", "Max", "Median", "SUVpeak"});
+  stats_->horizontalHeaderItem(8)->setToolTip(
+      "The highest mean SUVbw in a 1 cm³ sphere inside the segment (PERCIST): of a PET with "
+      "its SUV attributes, or of the fused PET overlay");
   stats_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   stats_->verticalHeader()->hide();
   stats_->setMinimumHeight(90);
@@ -353,6 +357,14 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   connect(statsTimer_, &QTimer::timeout, this, [this] { refreshStatisticsInBackground(); });
   onModelChange<>(this, m_.segmentation.changed, [this] {
     refreshList();
+    statsTimer_->start();
+  });
+  // An overlay opened or closed: a CT's segments may take their SUVpeak from it now (its
+  // window, map and opacity do not change the numbers).
+  auto countedOverlay = std::make_shared<const Volume*>(nullptr);
+  onModelChange<>(this, m_.fusion.changed, [this, countedOverlay] {
+    if (*countedOverlay == m_.fusion.overlay().get()) return;
+    *countedOverlay = m_.fusion.overlay().get();
     statsTimer_->start();
   });
   onModelChange<>(this, m_.segmentTools.changed, [this] { refreshTools(); });

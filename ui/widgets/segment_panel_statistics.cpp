@@ -35,6 +35,7 @@
 #include "voxray/io/segment_files.h"
 #endif
 #include "segment_panel_helpers.h"
+#include "segment_peak.h"
 
 namespace voxray::ui {
 
@@ -44,6 +45,8 @@ void SegmentPanel::updateStatistics() {
   if (!m_.document.empty() && m_.segmentation.active()) {
     try {
       stats = allSegmentStats(m_.segmentation.segmentation(), *m_.document.volume());
+      addSuvPeaks(stats, m_.segmentation.segmentation(), *m_.document.volume(),
+                  m_.fusion.overlay().get(), m_.fusion.name());
     } catch (const std::exception& e) {
       fail("Cannot count the segments", e.what());
     }
@@ -60,11 +63,14 @@ void SegmentPanel::refreshStatisticsInBackground() {
   // (copy on write, SegmentationModel::snapshot). The volume is shared and never changed.
   std::shared_ptr<const Segmentation> seg = m_.segmentation.snapshot();
   std::shared_ptr<const Volume> volume = m_.document.volume();
+  std::shared_ptr<const Volume> overlay = m_.fusion.overlay();  // shared, never changed in place
+  const std::string overlayName = m_.fusion.name();
   QPointer<SegmentPanel> self(this);
-  QThreadPool::globalInstance()->start([self, seg, volume, generation] {
+  QThreadPool::globalInstance()->start([self, seg, volume, overlay, overlayName, generation] {
     auto stats = std::make_shared<std::vector<SegmentStats>>();
     try {
       *stats = allSegmentStats(*seg, *volume);
+      addSuvPeaks(*stats, *seg, *volume, overlay.get(), overlayName);
     } catch (const std::exception&) {
       return;  // Update says why; a background refresh keeps the last table
     }
@@ -89,8 +95,15 @@ void SegmentPanel::showStatistics(std::vector<SegmentStats> stats) {
                                number(s.sd),
                                number(s.min),
                                number(s.max),
-                               number(s.median)};
+                               number(s.median),
+                               s.suvPeak ? QString::number(*s.suvPeak, 'f', 3) : QString()};
     for (int c = 0; c < cells.size(); ++c) stats_->setItem(row, c, new QTableWidgetItem(cells[c]));
+    // Where the SUVpeak comes from, or why there is none.
+    const std::string peakTip = !s.peakNote.empty() ? s.peakNote
+                                : s.peakOf.empty()  ? std::string("SUVbw of this PET")
+                                                    : "SUVbw of the fused overlay " + s.peakOf;
+    if (s.suvPeak || !s.peakNote.empty())
+      stats_->item(row, 8)->setToolTip(QString::fromStdString(peakTip));
   }
   emit statisticsShown();
 }

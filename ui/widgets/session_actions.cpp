@@ -8,7 +8,9 @@
 #include <QPushButton>
 #include <QSettings>
 
+#include "fusion_panel.h"
 #include "main_window.h"
+#include "reading_actions.h"
 #include "session_state.h"
 #include "voxray/engine/input_flags.h"
 
@@ -23,13 +25,22 @@ SessionActions::SessionActions(MainWindow& window, AppModels& models)
   // The session's state goes on once its volume is the document; a failed or cancelled
   // load drops it (the volume on screen keeps its own state).
   connect(&window, &MainWindow::volumeShown, this, [this] {
+    shownSession_ = pending_.has_value();
     if (!pending_) return;
     const Session s = std::move(*pending_);
     pending_.reset();
-    const auto problems = applySession(models_, s);
+    auto problems = applySession(models_, s);
+    // The reading layout before the maximised view: arranging shows the grid's views.
+    if (s.reading)
+      if (auto* reading = window_.findChild<ReadingActions*>()) reading->setReading(*s.reading);
     const auto& layouts = sessionLayouts();
     window_.grid().setMaximised(
         int(std::find(layouts.begin(), layouts.end(), s.layout) - layouts.begin()) - 1);
+    openFusion(s, pendingMissingFusion_, pendingPath_);
+    if (s.fusion && !pendingMissingFusion_.empty())
+      problems.push_back(movedDataMessage(pendingPath_, pendingMissingFusion_,
+                                          "The session opened without its fusion overlay; open "
+                                          "it with File → Open overlay volume…"));
     emit sessionShown();
     // What the session held but could not be put on this volume (a segmentation of another
     // grid): said, not silently dropped.
@@ -40,7 +51,34 @@ SessionActions::SessionActions(MainWindow& window, AppModels& models)
     }
   });
   connect(&window.loader(), &LoadController::failed, this, [this] { pending_.reset(); });
+  // The session's overlay: its saved look once loaded; a failed load is said by the window.
+  if (auto* overlays = window.findChild<OverlayLoader*>()) {
+    connect(overlays, &OverlayLoader::opened, this, [this] {
+      if (!pendingFusion_) return;
+      const Session::Fusion f = std::move(*pendingFusion_);
+      pendingFusion_.reset();
+      const auto problems = applySessionFusion(models_.fusion, f);
+      if (!problems.empty()) {
+        QString text;
+        for (const auto& p : problems) text += QString::fromStdString(p) + "\n";
+        say("Session's overlay opened in part", text.trimmed());
+      }
+    });
+    connect(overlays, &OverlayLoader::failed, this, [this] { pendingFusion_.reset(); });
+  }
   connect(&window.loader(), &LoadController::cancelled, this, [this] { pending_.reset(); });
+}
+
+void SessionActions::openFusion(const Session& s, const std::vector<std::string>& missing,
+                                const std::string&) {
+  pendingFusion_.reset();
+  // The session is the window's state: an overlay it does not hold goes.
+  models_.fusion.clear();
+  if (!s.fusion || !missing.empty()) return;
+  auto* loader = window_.findChild<OverlayLoader*>();
+  if (!loader) return;
+  pendingFusion_ = *s.fusion;
+  window_.openOverlay(s.fusion->input.path, loadOptionsFromFlags(s.fusion->input.flags));
 }
 
 void SessionActions::say(const QString& title, const QString& text) {
@@ -84,8 +122,10 @@ bool SessionActions::saveTo(const QString& chosen) {
   const QSize view = window_.scheduler().viewSize();
   const int maximised = window_.grid().maximisedIndex();
   try {
+    std::optional<ReadingLayout> reading;
+    if (auto* r = window_.findChild<ReadingActions*>()) reading = r->reading();
     const Session s = sessionFromModels(models_, {view.width(), view.height()},
-                                        sessionLayouts()[size_t(maximised + 1)]);
+                                        sessionLayouts()[size_t(maximised + 1)], reading);
     writeSessionFile(path.toStdString(), s, /*replace=*/true);  // the user said yes above
   } catch (const std::exception& e) {
     say("Cannot save session", QString::fromStdString(e.what()));
@@ -138,6 +178,8 @@ void SessionActions::openFile(const std::string& path) {
             list);
   }
   pending_ = read.session;
+  pendingMissingFusion_ = read.missingFusion;
+  pendingPath_ = path;
   // Checked when read: the flags load.
   window_.open(read.session.input.path, loadOptionsFromFlags(read.session.input.flags));
   remember(path);

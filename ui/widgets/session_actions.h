@@ -26,6 +26,9 @@ class SessionActions : public QObject {
   bool saveTo(const QString& path);  // asks before replacing; false: nothing written
   void open();                       // asks for a file
   void openFile(const std::string& path);
+  // Whether the volume being shown or last shown came from a session (its own layout and
+  // window: the hanging protocols leave it as saved).
+  bool showingSession() const { return pending_.has_value() || shownSession_; }
 
   // Tests answer the questions instead of a user (unset: dialogs).
   std::function<QString()> choosePath;                                  // the file to save or open
@@ -44,7 +47,14 @@ class SessionActions : public QObject {
 
   MainWindow& window_;
   AppModels& models_;
-  std::optional<Session> pending_;  // applied once its volume is shown
+  std::optional<Session> pending_;
+  std::vector<std::string> pendingMissingFusion_;
+  std::string pendingPath_;  // applied once its volume is shown
+  bool shownSession_ = false;
+  // The session's overlay settings, put on once its overlay is loaded.
+  std::optional<Session::Fusion> pendingFusion_;
+  void openFusion(const Session& s, const std::vector<std::string>& missing,
+                  const std::string& sessionPath);
 };
 
 }  // namespace voxray::ui

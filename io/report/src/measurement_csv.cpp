@@ -13,6 +13,7 @@ int measurementSlice(const ReportMeasurement& m) {
   const bool roi = m.kind == ReportKind::Ellipse || m.kind == ReportKind::Rect;
   // An ROI lies in the slice of its first corner along its normal (engine/measure.h).
   if (roi) return m.normalAxis == 2 ? int(std::lround(m.points[0].z)) : -1;
+  if (m.in3d) return -1;  // picked in the 3D view: on no slice, wherever its points lie
   for (const auto& p : m.points)
     if (std::abs(p.z - m.points[0].z) > 1e-6) return -1;
   return int(std::lround(m.points[0].z));
@@ -36,6 +37,8 @@ std::string kindName(ReportKind k) {
       return "ellipse";
     case ReportKind::Rect:
       return "rect";
+    case ReportKind::Segment:
+      return "segment";
   }
   return "";
 }
@@ -83,6 +86,14 @@ void writeMeasurementCsv(const std::string& path, const Volume& v,
       row("area", m.areaMm2, "mm2");
       row("pixels", double(m.pixels), "");
     }
+    if (m.kind == ReportKind::Segment) {
+      row("mean", scaled(m.mean), unit);
+      row("sd", scaled(m.sd), unit);
+      row("min", scaled(m.min), unit);
+      row("max", scaled(m.max), unit);
+      row("volume", m.volumeMm3, "mm3");
+    }
+    if (m.suvPeak) row("suv_peak", m.suvPeak, "SUVbw");
   }
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   file << out.str();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -108,6 +110,88 @@ std::vector<int> touchedSlices(const Volume& v, const ReportMeasurement& m) {
   return out;
 }
 
+glm::dvec3 patientMm(const Volume& v, const glm::dvec3& voxel) {
+  return v.originMm + v.direction * (voxel * v.spacingMm);
+}
+
+// Whether M goes in patient coordinates (SCOORD3D): made in the 3D view, or its points off
+// one image (an oblique line, an ROI in a coronal or sagittal plane).
+bool in3d(const ReportMeasurement& m) {
+  return m.kind != ReportKind::Segment && !m.points.empty() && (m.in3d || measurementSlice(m) < 0);
+}
+
+// M's points as SCOORD3D in LPS mm (PS3.3 C.18.9.1.2): a line or an angle's arms as a
+// POLYLINE, a rectangle as a closed POLYGON (first point repeated last), an ellipse as its
+// major and then minor axis' ends in its plane (the two voxel axes other than its normal).
+DSRSpatialCoordinates3DValue scoord3d(const Volume& v, const ReportMeasurement& m) {
+  auto add = [&](DSRSpatialCoordinates3DValue& s, const glm::dvec3& voxel) {
+    const glm::dvec3 p = patientMm(v, voxel);
+    s.getGraphicDataList().addItem(Float32(p.x), Float32(p.y), Float32(p.z));
+  };
+  if (m.kind == ReportKind::Length || m.kind == ReportKind::Angle) {
+    DSRSpatialCoordinates3DValue s(DSRTypes::GT3_Polyline);
+    for (const auto& p : m.points) add(s, p);
+    return s;
+  }
+  const glm::dvec3 &a = m.points[0], &b = m.points[1];
+  // The plane's two axes: u and w, the voxel axes other than the normal.
+  const int n = m.normalAxis < 0 || m.normalAxis > 2 ? 2 : m.normalAxis;
+  const int u = n == 0 ? 1 : 0, w = n == 2 ? 1 : 2;
+  auto at = [&](double cu, double cw) {
+    glm::dvec3 p = a;
+    p[u] = cu;
+    p[w] = cw;
+    return p;
+  };
+  if (m.kind == ReportKind::Rect) {
+    DSRSpatialCoordinates3DValue s(DSRTypes::GT3_Polygon);
+    const double us[] = {a[u], b[u], b[u], a[u], a[u]}, ws[] = {a[w], a[w], b[w], b[w], a[w]};
+    for (int k = 0; k < 5; ++k) add(s, at(us[k], ws[k]));
+    return s;
+  }
+  DSRSpatialCoordinates3DValue s(DSRTypes::GT3_Ellipse);
+  const double cu = (a[u] + b[u]) / 2, cw = (a[w] + b[w]) / 2;
+  // The axes in mm decide which is major (the voxels need not be square).
+  const double ru = std::abs(b[u] - a[u]) / 2, rw = std::abs(b[w] - a[w]) / 2;
+  if (ru * v.spacingMm[u] >= rw * v.spacingMm[w]) {
+    add(s, at(cu - ru, cw)), add(s, at(cu + ru, cw)), add(s, at(cu, cw - rw)),
+        add(s, at(cu, cw + rw));
+  } else {
+    add(s, at(cu, cw - rw)), add(s, at(cu, cw + rw)), add(s, at(cu - ru, cw)),
+        add(s, at(cu + ru, cw));
+  }
+  return s;
+}
+
+// Adds M's SCOORD3D under each of its values (TID 300 row 8 → TID 320 row 5: INFERRED FROM
+// SCOORD3D "Source of Measurement" with the Frame of Reference): DCMTK's TID 300 class has
+// no call for it, so it goes into the finished tree, found by the group's tracking identifier.
+void addScoord3d(DSRDocumentTree& tree, const std::string& label,
+                 const DSRSpatialCoordinates3DValue& coordinates) {
+  const DSRCodedEntryValue trackingId(CODE_DCM_TrackingIdentifier);
+  std::vector<size_t> values;  // the node IDs of the group's NUM items
+  bool inGroup = false;
+  if (tree.gotoRoot() == 0) return;
+  do {
+    const DSRContentItem& item = tree.getCurrentContentItem();
+    if (item.getValueType() == DSRTypes::VT_Text && item.getConceptName() == trackingId)
+      inGroup = item.getStringValue() == label.c_str();
+    else if (inGroup && item.getValueType() == DSRTypes::VT_Num)
+      values.push_back(tree.getNodeID());
+  } while (tree.iterate());
+  if (values.empty()) check(EC_IllegalCall, label + " (no value to give 3D coordinates)");
+  for (size_t id : values) {
+    if (tree.gotoNode(id) == 0) check(EC_IllegalCall, label + " (its value is lost)");
+    if (tree.addContentItem(DSRTypes::RT_inferredFrom, DSRTypes::VT_SCoord3D,
+                            DSRTypes::AM_belowCurrent) == 0)
+      check(EC_IllegalCall, label + " 3D coordinates");
+    check(tree.getCurrentContentItem().setConceptName(CODE_DCM_SourceOfMeasurement),
+          label + " 3D coordinates' name");
+    check(tree.getCurrentContentItem().setSpatialCoordinates3D(coordinates),
+          label + " 3D coordinates");
+  }
+}
+
 }  // namespace
 
 WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
@@ -151,6 +235,10 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
   }
 
   const Quantity roi = roiQuantity(v);
+  const std::string& frameOfReference = s.frameOfReferenceUid;
+  // Measurements off one image go in patient coordinates: SCOORD3D needs the Comprehensive 3D
+  // SR (the Comprehensive SR IOD has no SCOORD3D) and the volume's Frame of Reference.
+  std::vector<std::pair<std::string, DSRSpatialCoordinates3DValue>> points3d;
   int number = 0;
   for (const auto& m : measurements) {
     ++number;
@@ -158,7 +246,14 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
     const int k = measurementSlice(m);
     const bool onImage = perSlice && k >= 0 && k < v.dims.z;
     const std::vector<int> touched = touchedSlices(v, m);
-    if (perSlice && !onImage)
+    const bool coordinates3d = in3d(m) && !frameOfReference.empty();
+    if (m.kind == ReportKind::Segment)
+      out.notes.push_back(label + ": a segment's values reference the series, not its images");
+    else if (coordinates3d)
+      out.notes.push_back(label +
+                          ": off one image (3D view or a turned plane); its points are "
+                          "given in patient coordinates (SCOORD3D, LPS mm)");
+    else if (perSlice && !onImage)
       out.notes.push_back(label + ": its points lie on " + std::to_string(touched.size()) +
                           " slices; it references their images without image coordinates");
     check(report.addIndividualMeasurements(), "measurement group");
@@ -174,7 +269,9 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
           label + " value");
       auto& value = group.getMeasurement();
       if (derivation) check(value.setDerivation(*derivation), label + " derivation");
-      if (onImage) {
+      if (m.kind == ReportKind::Segment) {
+        // A label map has no SCOORD: the values name the series (the evidence) only.
+      } else if (onImage) {
         DSRImageReferenceValue image(s.sopClassUid, s.sliceSopInstanceUids[size_t(k)]);
         check(value.addSpatialCoordinates(CODE_DCM_ImageRegion, scoord(m), image),
               label + " image region");
@@ -203,9 +300,30 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
       if (m.sd) add(roi.name, scaled(*m.sd), roi.unit, &sd);
       if (m.min) add(roi.name, scaled(*m.min), roi.unit, &min);
       if (m.max) add(roi.name, scaled(*m.max), roi.unit, &max);
-      add(DSRCodedEntryValue("42798000", "SCT", "Area"), m.areaMm2,
-          DSRCodedEntryValue("mm2", "UCUM", "square millimeter"), nullptr);
+      if (m.kind == ReportKind::Segment) {
+        if (m.volumeMm3)
+          add(DSRCodedEntryValue("118565006", "SCT", "Volume"), *m.volumeMm3,
+              DSRCodedEntryValue("mm3", "UCUM", "cubic millimeter"), nullptr);
+      } else {
+        add(DSRCodedEntryValue("42798000", "SCT", "Area"), m.areaMm2,
+            DSRCodedEntryValue("mm2", "UCUM", "square millimeter"), nullptr);
+      }
+      // SUVpeak (PERCIST's 1 cm³ sphere): SUVbw (126401, DCM) derived as the Peak Value
+      // Within ROI (126031, DCM; CID 7464), in g/ml{SUVbw}. Already in SUVbw: it may be the
+      // fused PET overlay's, whatever this volume's unit.
+      if (m.suvPeak) {
+        const CMR_CID7464 peak(CMR_CID7464::PeakValueWithinROI);
+        add(DSRCodedEntryValue("126401", "DCM", "SUVbw"), *m.suvPeak,
+            DSRCodedEntryValue("g/ml{SUVbw}", "UCUM", "Standardized Uptake Value body weight"),
+            &peak);
+      }
     }
+    if (coordinates3d && group.hasMeasurements(OFTrue))
+      points3d.emplace_back(label, scoord3d(v, m));
+    else if (in3d(m) && frameOfReference.empty())
+      out.notes.push_back(label +
+                          ": off one image, but the series names no Frame of Reference: no 3D "
+                          "coordinates");
     if (!group.hasMeasurements(OFTrue))
       throw inputError(label +
                        " has no value (an angle with a zero-length arm, or an ROI "
@@ -220,6 +338,15 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
 
   DSRDocument doc(DSRTypes::DT_ComprehensiveSR);
   check(doc.setTreeFromRootTemplate(report, OFTrue), "document tree");
+  // The template makes the document the simplest type its tree fits (an Enhanced SR):
+  // SCOORD3D needs the Comprehensive 3D SR, asked for before the coordinates go in.
+  if (!points3d.empty())
+    check(doc.changeDocumentType(DSRTypes::DT_Comprehensive3DSR), "Comprehensive 3D SR");
+  for (const auto& [label, coordinates] : points3d) {
+    DSRSpatialCoordinates3DValue c = coordinates;
+    check(c.setFrameOfReferenceUID(frameOfReference.c_str()), label + " Frame of Reference");
+    addScoord3d(doc.getTree(), label, c);
+  }
   report::fileWithImages(doc, s, "9001", info.seriesDescription, check);
   // Complete: every measurement made is in it; unverified: a person has not signed it.
   doc.completeDocument();

@@ -88,18 +88,19 @@ nlohmann::json optionalJson(const std::optional<double>& x) {
 
 std::string statsCsv(const std::vector<SegmentStats>& stats) {
   std::ostringstream out;
-  out << "label,name,voxels,volume_mm3,volume_ml,unit,mean,sd,min,max,median,surface_mm2\n";
+  out << "label,name,voxels,volume_mm3,volume_ml,unit,mean,sd,min,max,median,surface_mm2,"
+         "suv_peak\n";
   for (const auto& s : stats)
     out << int(s.label) << "," << csvText(s.name) << "," << s.voxels << "," << number(s.volumeMm3)
         << "," << number(s.volumeMl) << "," << csvText(s.unit) << "," << number(s.mean) << ","
         << number(s.sd) << "," << number(s.min) << "," << number(s.max) << "," << number(s.median)
-        << "," << number(s.surfaceMm2) << "\n";
+        << "," << number(s.surfaceMm2) << "," << number(s.suvPeak) << "\n";
   return out.str();
 }
 
 std::string statsJson(const std::vector<SegmentStats>& stats) {
   nlohmann::json segments = nlohmann::json::array();
-  for (const auto& s : stats)
+  for (const auto& s : stats) {
     segments.push_back({{"label", s.label},
                         {"name", s.name},
                         {"voxels", s.voxels},
@@ -111,7 +112,11 @@ std::string statsJson(const std::vector<SegmentStats>& stats) {
                         {"min", optionalJson(s.min)},
                         {"max", optionalJson(s.max)},
                         {"median", optionalJson(s.median)},
-                        {"surface_mm2", optionalJson(s.surfaceMm2)}});
+                        {"surface_mm2", optionalJson(s.surfaceMm2)},
+                        {"suv_peak", optionalJson(s.suvPeak)}});
+    if (!s.peakOf.empty()) segments.back()["suv_peak_of"] = s.peakOf;
+    if (!s.peakNote.empty()) segments.back()["suv_peak_note"] = s.peakNote;
+  }
   // Names are the user's text: dump replaces invalid UTF-8 rather than throwing.
   return nlohmann::json{{"segments", segments}}.dump(2, ' ', false,
                                                      nlohmann::json::error_handler_t::replace) +

@@ -13,7 +13,8 @@
 
 namespace voxray {
 
-enum class ReportKind { Length, Angle, Ellipse, Rect };
+// Segment: a 3D region of the segment editor (its statistics, no points).
+enum class ReportKind { Length, Angle, Ellipse, Rect, Segment };
 
 struct ReportMeasurement {
   ReportKind kind = ReportKind::Length;
@@ -28,6 +29,12 @@ struct ReportMeasurement {
   std::optional<double> mean, sd, min, max;
   double areaMm2 = 0.0;
   size_t pixels = 0;
+  // A segment: its volume, and its SUVpeak already in SUVbw (the volume's SUV or the fused PET
+  // overlay's; segment_peak.h). ROIs may carry an SUVpeak too.
+  std::optional<double> volumeMm3, suvPeak;
+  // Made in the 3D view: reported in patient coordinates (SCOORD3D, LPS mm, in the volume's
+  // Frame of Reference) as are measurements whose points lie off one image (turned planes).
+  bool in3d = false;
 };
 
 // The slice a measurement lies on when all its points share one k (the image of a source
@@ -51,8 +58,12 @@ struct WrittenReport {
 // Each measurement is a TID 1501 group (tracking identifier, TID 300 values with units in
 // UCUM) that references the source image of its slice (SOP Instance UID from
 // v.study.sliceSopInstanceUids) with its SCOORD in that image's pixels; without per-slice
-// UIDs it references the series only and says so in the notes. Throws Error (Input) for a
-// volume not read from DICOM or no measurements, (Output) when PATH cannot be written.
+// UIDs it references the series only and says so in the notes. A measurement off one image
+// (in3d, or points on several slices) has its points as SCOORD3D in LPS mm with the volume's
+// Frame of Reference UID, and the document is then a Comprehensive 3D SR. A segment's group
+// holds its statistics, volume and SUVpeak (SUVbw, derivation Peak Value Within ROI). Throws Error
+// (Input) for a volume not read from DICOM or no measurements, (Output) when PATH cannot be
+// written.
 WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
                                      const std::vector<ReportMeasurement>& measurements,
                                      const MeasurementReportInfo& info = {});
