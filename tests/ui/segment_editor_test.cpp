@@ -362,6 +362,21 @@ class SegmentEditorTest : public QObject {
     QCOMPARE(test::differingPixels(hidden, inVolume), 0);
   }
 
+  // A removed segment's table stays with its label (undo brings both back); a new segment
+  // that gets the label again starts with the volume's table, not the removed one's.
+  void aNewSegmentOnAFreedLabelStartsWithTheVolumesTf() {
+    const uint8_t label = addSegment();
+    QComboBox* tf = panel().findChild<QComboBox*>("segmentTf");
+    QVERIFY(tf);
+    tf->setCurrentIndex(tf->findText("CT-Bone"));
+    QCOMPARE(models().render.params().segmentTfs.count(label), size_t(1));
+    panel().findChild<QPushButton*>("segmentRemove")->click();
+    QCOMPARE(models().render.params().segmentTfs.count(label), size_t(1));
+    QCOMPARE(addSegment(), label);  // the lowest free label
+    QCOMPARE(models().render.params().segmentTfs.count(label), size_t(0));
+    QCOMPARE(tf->currentText(), QString("Volume's"));
+  }
+
   // The seeded-region click and voxray-cli segment --threshold --seed --connectivity give the
   // same label map byte for byte (.labels.raw).
   void cliTwinWritesTheSameLabelMap() {

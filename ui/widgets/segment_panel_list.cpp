@@ -60,6 +60,10 @@ void SegmentPanel::addSegment() {
   try {
     const uint8_t label =
         m_.segmentation.addSegment("Segment " + std::to_string(n + 1), nextColour(n));
+    // A removed segment's own transfer function stays with its label (undoing the removal
+    // brings both back); a new segment given that label starts with the volume's.
+    if (m_.render.params().segmentTfs.count(label))
+      m_.render.update(kAppearance, [label](RenderParams& p) { p.segmentTfs.erase(label); });
     selectLabel(label);
   } catch (const std::exception& e) {
     fail("Cannot add a segment", e.what());
