@@ -22,6 +22,18 @@ namespace voxray::test {
 
 class ResultsSendTest : public QObject {
   Q_OBJECT
+ private:
+  // The Philips phantom shown, the window's errors collected into ERRORS (QVERIFY returns
+  // from here: the caller checks RESULTS).
+  void openPhantom(QStringList& errors, ui::ResultsActions*& results) {
+    ui::MainWindow& w = *fixture_.window;
+    w.setErrorSink([&errors](const QString& t, const QString& m) { errors << t + ": " + m; });
+    QSignalSpy shown(&w, &ui::MainWindow::volumeShown);
+    w.open(dicomPath("ct-philips-phantom/S2010"), {});
+    QVERIFY(shown.wait(120000));
+    results = w.findChild<ui::ResultsActions*>();
+  }
+
  private slots:
   void initTestCase() {
     server_ = phantomServer();
@@ -31,11 +43,8 @@ class ResultsSendTest : public QObject {
   void srAndKosAreSentAndFoundByANewFind() {
     ui::MainWindow& w = *fixture_.window;
     QStringList errors;
-    w.setErrorSink([&](const QString& t, const QString& m) { errors << t + ": " + m; });
-    QSignalSpy shown(&w, &ui::MainWindow::volumeShown);
-    w.open(dicomPath("ct-philips-phantom/S2010"), {});
-    QVERIFY(shown.wait(120000));
-    auto* results = w.findChild<ui::ResultsActions*>();
+    ui::ResultsActions* results = nullptr;
+    openPhantom(errors, results);
     QVERIFY(results);
     // 60 x 80 pixels at 0.451171875 mm: 45.1171875 mm.
     fixture_.models->measurements.add(MeasureKind::Distance, {{100, 100, 5}, {160, 180, 5}}, 2);
@@ -93,11 +102,8 @@ class ResultsSendTest : public QObject {
   void sendDialogSendsTheAnonymisedCopyAndCancelSendsNothing() {
     ui::MainWindow& w = *fixture_.window;
     QStringList errors;
-    w.setErrorSink([&](const QString& t, const QString& m) { errors << t + ": " + m; });
-    QSignalSpy shown(&w, &ui::MainWindow::volumeShown);
-    w.open(dicomPath("ct-philips-phantom/S2010"), {});
-    QVERIFY(shown.wait(120000));
-    auto* results = w.findChild<ui::ResultsActions*>();
+    ui::ResultsActions* results = nullptr;
+    openPhantom(errors, results);
     QVERIFY(results);
     QVERIFY(results->anonymisedExport(QString::fromStdString(tempFolder("send-dialog-anon")), false,
                                       DateHandling::Remove));
