@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <tuple>
@@ -14,6 +15,7 @@
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -307,10 +309,19 @@ vtkSmartPointer<vtkPolyData> smooth(vtkPolyData* poly, const SurfaceOptions& o) 
   return smoother->GetOutput();
 }
 
+// VTK makes its object-factory list on the first New() and not thread-safely: segments meshed
+// in parallel (mesh_file.cpp) made it twice at once, and LeakSanitizer found the lost copy. The
+// first surface of the process makes it alone.
+void initialiseVtkFactories() {
+  static std::once_flag once;
+  std::call_once(once, [] { vtkObjectFactory::GetRegisteredFactories(); });
+}
+
 }  // namespace
 
 SegmentSurface makeSurface(const Segmentation& s, uint8_t label, const SurfaceOptions& options,
                            SurfaceTimings* timings) {
+  initialiseVtkFactories();
   checkSegmentation(s);
   const Segment* segment = s.find(label);
   if (!segment)
