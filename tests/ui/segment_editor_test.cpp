@@ -88,6 +88,44 @@ class SegmentEditorTest : public QObject {
     return panel().currentLabel();
   }
 
+  // The README figures' scene: CThead (in HU) in a 1900 x 1040 window, dvr CT-Bone turned by
+  // 30 degrees, and a "Skull" segment (threshold 300 ... 3000 HU, largest island) in its colour.
+  void openCtheadWithASkullSegment() {
+    RawLayout l;  // voxray-cli's --raw-dims 256,256 --raw-type i16 --raw-endian big ...
+    l.dims = {256, 256, 0};
+    l.type = SampleType::I16;
+    l.order = ByteOrder::Big;
+    l.spacingMm = {1.0, 1.0, 2.0};
+    l.slope = 1.0;
+    l.intercept = -1024.0;
+    l.direction = directionFromAxesCode("LPI");
+    auto v = std::make_shared<const Volume>(
+        importRaw(std::string(VOXRAY_DATA_DIR) + "/stanford/CThead", l));
+    Quality q = models().render.quality();
+    q.resolution = {0, 0};  // the view's size
+    models().render.setQuality(q);
+    fixture_.window->resize(1900, 1040);
+    openStudy(models(), v, "CThead");
+    models().render.update(kAppearance | kCamera, [](RenderParams& p) {
+      p.mode = Mode::Dvr;
+      p.preset = "CT-Bone";
+      p.camera.azimuthDeg = 30.0;
+    });
+    const uint8_t label = addSegment();
+    models().segmentation.rename(label, "Skull");
+    setTool([](SegmentToolSettings& s) {
+      s.tool = SegmentTool::Threshold;
+      s.range = {300, 3000};
+    });
+    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
+    panel()
+        .findChild<QComboBox*>("segmentOperation")
+        ->setCurrentIndex(int(MaskOperation::KeepLargest));
+    panel().findChild<QPushButton*>("segmentApplyOperation")->click();
+    setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::None; });
+    models().segmentation.setColour(label, {0.95f, 0.75f, 0.35f});
+  }
+
  private slots:
   void init() {
     QVERIFY(fixture_.start());
@@ -699,39 +737,7 @@ class SegmentEditorTest : public QObject {
   void readmeScreenshot() {
     const QString shot = qEnvironmentVariable("VOXRAY_SEGMENT_SHOT");
     if (shot.isEmpty()) QSKIP("set VOXRAY_SEGMENT_SHOT=PATH to write the README's screenshot");
-    RawLayout l;  // voxray-cli's --raw-dims 256,256 --raw-type i16 --raw-endian big ...
-    l.dims = {256, 256, 0};
-    l.type = SampleType::I16;
-    l.order = ByteOrder::Big;
-    l.spacingMm = {1.0, 1.0, 2.0};
-    l.slope = 1.0;
-    l.intercept = -1024.0;
-    l.direction = directionFromAxesCode("LPI");
-    auto v = std::make_shared<const Volume>(
-        importRaw(std::string(VOXRAY_DATA_DIR) + "/stanford/CThead", l));
-    Quality q = models().render.quality();
-    q.resolution = {0, 0};  // the view's size
-    models().render.setQuality(q);
-    fixture_.window->resize(1900, 1040);
-    openStudy(models(), v, "CThead");
-    models().render.update(kAppearance | kCamera, [](RenderParams& p) {
-      p.mode = Mode::Dvr;
-      p.preset = "CT-Bone";
-      p.camera.azimuthDeg = 30.0;
-    });
-    const uint8_t label = addSegment();
-    models().segmentation.rename(label, "Skull");
-    setTool([](SegmentToolSettings& s) {
-      s.tool = SegmentTool::Threshold;
-      s.range = {300, 3000};
-    });
-    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
-    panel()
-        .findChild<QComboBox*>("segmentOperation")
-        ->setCurrentIndex(int(MaskOperation::KeepLargest));
-    panel().findChild<QPushButton*>("segmentApplyOperation")->click();
-    setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::None; });
-    models().segmentation.setColour(label, {0.95f, 0.75f, 0.35f});
+    openCtheadWithASkullSegment();
     // 3D: the segment alone, in its colour (Show only).
     panel().findChild<QComboBox*>("segmentMask3d")->setCurrentIndex(int(MaskChoice::ShowOnly));
     panel().updateStatistics();
@@ -749,39 +755,7 @@ class SegmentEditorTest : public QObject {
     const QString shot = qEnvironmentVariable("VOXRAY_SEGMENT_SURFACE_SHOT");
     if (shot.isEmpty())
       QSKIP("set VOXRAY_SEGMENT_SURFACE_SHOT=PATH to write the README's surface screenshot");
-    RawLayout l;  // as readmeScreenshot
-    l.dims = {256, 256, 0};
-    l.type = SampleType::I16;
-    l.order = ByteOrder::Big;
-    l.spacingMm = {1.0, 1.0, 2.0};
-    l.slope = 1.0;
-    l.intercept = -1024.0;
-    l.direction = directionFromAxesCode("LPI");
-    auto v = std::make_shared<const Volume>(
-        importRaw(std::string(VOXRAY_DATA_DIR) + "/stanford/CThead", l));
-    Quality q = models().render.quality();
-    q.resolution = {0, 0};
-    models().render.setQuality(q);
-    fixture_.window->resize(1900, 1040);
-    openStudy(models(), v, "CThead");
-    models().render.update(kAppearance | kCamera, [](RenderParams& p) {
-      p.mode = Mode::Dvr;
-      p.preset = "CT-Bone";
-      p.camera.azimuthDeg = 30.0;
-    });
-    const uint8_t label = addSegment();
-    models().segmentation.rename(label, "Skull");
-    setTool([](SegmentToolSettings& s) {
-      s.tool = SegmentTool::Threshold;
-      s.range = {300, 3000};
-    });
-    panel().findChild<QPushButton*>("segmentApplyThreshold")->click();
-    panel()
-        .findChild<QComboBox*>("segmentOperation")
-        ->setCurrentIndex(int(MaskOperation::KeepLargest));
-    panel().findChild<QPushButton*>("segmentApplyOperation")->click();
-    setTool([](SegmentToolSettings& s) { s.tool = SegmentTool::None; });
-    models().segmentation.setColour(label, {0.95f, 0.75f, 0.35f});
+    openCtheadWithASkullSegment();
     auto* display = panel().findChild<QComboBox*>("segmentDisplay3d");
     display->setCurrentIndex(display->findText("Surface"));
     panel().findChild<QComboBox*>("segmentMask3d")->setCurrentIndex(int(MaskChoice::Hide));
