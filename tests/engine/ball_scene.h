@@ -13,6 +13,7 @@
 #include "voxray/engine/camera.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
+#include "voxray/io/segmentation.h"
 
 namespace voxray::test {
 
@@ -21,6 +22,27 @@ namespace voxray::test {
 inline const Volume& anisotropicBall() {
   static Volume v = ball({40, 36, 24}, 13.0, 1000.0, -1000.0, {1.0, 1.1, 1.6});
   return v;
+}
+
+// A segment inside the ball: label 1 on the voxels within kSphereSegmentRadiusMm (mm) of the
+// volume's centre, one segment "Sphere" of COLOUR (the labels and segment-table tests).
+constexpr double kSphereSegmentRadiusMm = 6.0;
+// Half the ball's voxel diagonal, 0.5 * |(1, 1.1, 1.6)| mm: how far a voxelised edge may lie.
+constexpr double kBallHalfDiagonalMm = 1.09;
+inline Segmentation sphereSegment(const Volume& v, glm::vec3 colour) {
+  Segmentation s = emptySegmentation(v);
+  const glm::dvec3 c = (glm::dvec3(v.dims) - 1.0) * 0.5;
+  for (int z = 0; z < v.dims.z; ++z)
+    for (int y = 0; y < v.dims.y; ++y)
+      for (int x = 0; x < v.dims.x; ++x)
+        if (glm::length((glm::dvec3(x, y, z) - c) * v.spacingMm) <= kSphereSegmentRadiusMm)
+          s.labels[s.grid.index(x, y, z)] = 1;
+  Segment seg;
+  seg.label = 1;
+  seg.name = "Sphere";
+  seg.colour = colour;
+  s.segments.push_back(seg);
+  return s;
 }
 
 // 64 x 48 pixels, azimuth 30, elevation 20, zoom 1.8 (the ball fills most of the frame).

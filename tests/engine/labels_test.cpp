@@ -30,25 +30,11 @@ namespace {
 // a voxel's middle may also take the neighbour's label there, as those bounds allow.
 using test::expectCloseToReference;
 
-constexpr double kRadiusMm = 6.0;
-constexpr double kHalfDiagonalMm = 1.09;  // 0.5 * |(1, 1.1, 1.6)|
+constexpr double kRadiusMm = test::kSphereSegmentRadiusMm;
+constexpr double kHalfDiagonalMm = test::kBallHalfDiagonalMm;
 
-// Label 1 on the voxels within kRadiusMm (in mm) of the volume's centre; one red segment.
-Segmentation sphereSegment(const Volume& v) {
-  Segmentation s = emptySegmentation(v);
-  const glm::dvec3 c = (glm::dvec3(v.dims) - 1.0) * 0.5;
-  for (int z = 0; z < v.dims.z; ++z)
-    for (int y = 0; y < v.dims.y; ++y)
-      for (int x = 0; x < v.dims.x; ++x)
-        if (glm::length((glm::dvec3(x, y, z) - c) * v.spacingMm) <= kRadiusMm)
-          s.labels[s.grid.index(x, y, z)] = 1;
-  Segment red;
-  red.label = 1;
-  red.name = "Sphere";
-  red.colour = {1.0f, 0.0f, 0.0f};
-  s.segments.push_back(red);
-  return s;
-}
+// Label 1 on the voxels within kRadiusMm of the volume's centre; one red segment.
+Segmentation sphereSegment(const Volume& v) { return test::sphereSegment(v, {1.0f, 0.0f, 0.0f}); }
 
 // Each pixel's ray's distance (mm) from the volume's centre (the world origin).
 std::vector<double> rayDistances(const Volume& v, const RenderParams& p) {

@@ -26,26 +26,12 @@ namespace voxray {
 
 namespace {
 
-constexpr double kRadiusMm = 6.0;
-constexpr double kHalfDiagonalMm = 1.09;  // 0.5 * |(1, 1.1, 1.6)|
+constexpr double kRadiusMm = test::kSphereSegmentRadiusMm;
+constexpr double kHalfDiagonalMm = test::kBallHalfDiagonalMm;
 
 // Label 1 within kRadiusMm of the centre; its segment green, so that a red pixel can only come
 // from its own table (which replaces the tint).
-Segmentation sphereSegment(const Volume& v) {
-  Segmentation s = emptySegmentation(v);
-  const glm::dvec3 c = (glm::dvec3(v.dims) - 1.0) * 0.5;
-  for (int z = 0; z < v.dims.z; ++z)
-    for (int y = 0; y < v.dims.y; ++y)
-      for (int x = 0; x < v.dims.x; ++x)
-        if (glm::length((glm::dvec3(x, y, z) - c) * v.spacingMm) <= kRadiusMm)
-          s.labels[s.grid.index(x, y, z)] = 1;
-  Segment seg;
-  seg.label = 1;
-  seg.name = "Sphere";
-  seg.colour = {0.0f, 1.0f, 0.0f};
-  s.segments.push_back(seg);
-  return s;
-}
+Segmentation sphereSegment(const Volume& v) { return test::sphereSegment(v, {0.0f, 1.0f, 0.0f}); }
 
 const std::vector<ControlPoint> kTransparent = {{-1000.0, {1.0, 1.0, 1.0, 0.0}},
                                                 {3000.0, {1.0, 1.0, 1.0, 0.0}}};
