@@ -6,21 +6,7 @@
 #     transparent table (the background);
 #   - show:1: an image that differs from both.
 set(common --phantom-size 64 --size 96x72 --mode dvr --preset CT-Bone --azimuth 30)
-set(labels ${WORK}/labels_64.raw)
-execute_process(COMMAND ${PYTHON} -c "
-import sys
-n = 64
-out = bytearray(n * n * n)
-for z in range(n):
-    for y in range(n):
-        for x in range(n):
-            if (x - 31.5) ** 2 + (y - 31.5) ** 2 + (z - 31.5) ** 2 <= 144:
-                out[(z * n + y) * n + x] = 1
-open(sys.argv[1], 'wb').write(out)
-" ${labels} RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "could not write the label map with ${PYTHON}: run scripts/bootstrap")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/sphere_labels_64.cmake)  # sets labels
 function(render out)
   execute_process(COMMAND ${CLI} render ${common} ${ARGN} -o ${WORK}/${out} RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
