@@ -14,8 +14,8 @@ def when(date, time):
     return t + datetime.timedelta(microseconds=int(fraction.ljust(6, "0")[:6] or 0))
 
 
-def main(folder):
-    images = [pydicom.dcmread(f) for f in sorted(glob.glob(folder + "/*.dcm"))]
+def suv_factor(images):
+    """The SUVbw factor (g/mL per Bq/mL) of a PET series' datasets by the QIBA rule."""
     first = images[0]
     assert first.Units == "BQML", first.Units
     series = when(first.SeriesDate, first.SeriesTime)
@@ -32,7 +32,12 @@ def main(folder):
     dose = float(drug.RadionuclideTotalDose)
     if first.DecayCorrection == "START":
         dose *= 2.0 ** (-(scan - injected).total_seconds() / float(drug.RadionuclideHalfLife))
-    factor = float(first.PatientWeight) * 1000.0 / dose
+    return float(first.PatientWeight) * 1000.0 / dose
+
+
+def main(folder):
+    images = [pydicom.dcmread(f) for f in sorted(glob.glob(folder + "/*.dcm"))]
+    factor = suv_factor(images)
     brightest = max(float(d.pixel_array.max()) * float(d.RescaleSlope) + float(d.RescaleIntercept)
                     for d in images)
     print(repr(factor), repr(brightest * factor))

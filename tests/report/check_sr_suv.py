@@ -14,21 +14,12 @@ except ImportError as e:
     sys.exit(f"{e}: run scripts/bootstrap (it makes the .venv with pydicom and highdicom)")
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "dicom"))
-import suv_pydicom  # noqa: E402  (its when() and QIBA rule)
+import suv_pydicom  # noqa: E402  (its QIBA rule)
 
 report_path, folder = sys.argv[1], Path(sys.argv[2])
 images = [pydicom.dcmread(p) for p in sorted(folder.glob("*.dcm"))]
 images.sort(key=lambda d: float(d.ImagePositionPatient[2]))
-first = images[0]
-series = suv_pydicom.when(first.SeriesDate, first.SeriesTime)
-acquired = min(suv_pydicom.when(d.AcquisitionDate, d.AcquisitionTime) for d in images)
-scan = min(series, acquired)
-drug = first.RadiopharmaceuticalInformationSequence[0]
-injected = suv_pydicom.when(first.SeriesDate, drug.RadiopharmaceuticalStartTime)
-dose = float(drug.RadionuclideTotalDose)
-if first.DecayCorrection == "START":
-    dose *= 2.0 ** (-(scan - injected).total_seconds() / float(drug.RadionuclideHalfLife))
-factor = float(first.PatientWeight) * 1000.0 / dose
+factor = suv_pydicom.suv_factor(images)
 
 s = images[16]
 bq = s.pixel_array.astype(float) * float(s.RescaleSlope) + float(s.RescaleIntercept)
