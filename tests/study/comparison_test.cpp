@@ -7,6 +7,7 @@
 
 #include "comparison_model.h"
 #include "point_alignment.h"
+#include "rigid_motion.h"
 #include "session.h"
 #include "slice_geometry.h"
 #include "voxray/io/error.h"
@@ -14,19 +15,8 @@
 namespace voxray {
 namespace {
 
-glm::dmat3 rotation(glm::dvec3 axis, double degrees) {
-  axis = glm::normalize(axis);
-  const double a = glm::radians(degrees), c = std::cos(a), s = std::sin(a);
-  const glm::dmat3 k(glm::dvec3(0, axis.z, -axis.y), glm::dvec3(-axis.z, 0, axis.x),
-                     glm::dvec3(axis.y, -axis.x, 0));
-  return glm::dmat3(1.0) + s * k + (1 - c) * k * k;
-}
-
-glm::dmat4 rigid(const glm::dmat3& r, const glm::dvec3& t) {
-  glm::dmat4 m(r);
-  m[3] = glm::dvec4(t, 1.0);
-  return m;
-}
+using test::rigid;
+using test::rotation;
 
 // Today's CT: 96 x 96 x 48 voxels of 0.9 x 0.9 x 2 mm, centred near the patient origin.
 VolumeGeometry fixedGeometry() {

@@ -10,6 +10,7 @@
 
 #include "../io/test_support.h"
 #include "fusion.h"
+#include "rigid_motion.h"
 #include "slice_geometry.h"
 #include "slice_image.h"
 #include "voxray/io/error.h"
@@ -19,13 +20,7 @@
 namespace voxray {
 namespace {
 
-glm::dmat3 rotation(glm::dvec3 axis, double degrees) {
-  axis = glm::normalize(axis);
-  const double a = glm::radians(degrees), c = std::cos(a), s = std::sin(a);
-  const glm::dmat3 k(glm::dvec3(0, axis.z, -axis.y), glm::dvec3(-axis.z, 0, axis.x),
-                     glm::dvec3(axis.y, -axis.x, 0));
-  return glm::dmat3(1.0) + s * k + (1 - c) * k * k;
-}
+using test::rotation;
 
 glm::dvec3 patientOf(const Volume& v, const glm::dvec3& voxel) {
   return v.originMm + v.direction * (v.spacingMm * voxel);
