@@ -1,5 +1,6 @@
 // voxray-cli make-phantom: DICOM series of known phantoms (phantom_series.h) for trying and
 // testing PET SUV and 4D: what they should measure is printed, from the phantom's numbers.
+#include <cmath>
 #include <iostream>
 
 #include "commands.h"
@@ -17,7 +18,7 @@ struct PhantomOptions {
   std::string decay = "START", seriesTime, injectionTime, injectionDateTime, timing = "temporal";
   std::vector<std::string> omit;
   std::vector<int> dims;
-  int phases = 10;
+  int phases = 10, timePoints = 3;
   double weightKg = 0;
 };
 
@@ -38,6 +39,18 @@ int runMakePhantom(const PhantomOptions& o) {
     std::cout << "wrote " << p.dims.z << " PET images to " << o.dir << "\n"
               << "sphere radius " << p.radiusMm << " mm, " << p.insideBqml
               << " Bq/mL inside, SUVbw " << petSphereSuv(p) << "\n";
+    return 0;
+  }
+  if (o.kind == "mosaic") {
+    MosaicPhantom p;
+    p.timePoints = o.timePoints;
+    if (!o.dims.empty()) p.dims = {o.dims[0], o.dims[1], o.dims[2]};
+    writeMosaicPhantom(o.dir, p);
+    const int across = int(std::ceil(std::sqrt(double(p.dims.z)) - 1e-9));
+    std::cout << "wrote " << p.timePoints << " Siemens mosaic MR images to " << o.dir << "\n"
+              << p.dims.z << " slices of " << p.dims.x << "x" << p.dims.y << " tiled " << across
+              << " x " << across << " in " << across * p.dims.x << "x" << across * p.dims.y
+              << " pixels; sphere radius " << p.radiusMm << " mm\n";
     return 0;
   }
   BeatingSpherePhantom p;
@@ -61,11 +74,12 @@ int runMakePhantom(const PhantomOptions& o) {
 Run addMakePhantomCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "make-phantom",
-      "Write a DICOM phantom series: pet-sphere (PET of known SUV) or beating-sphere (4D CT)");
+      "Write a DICOM phantom series: pet-sphere (PET of known SUV), beating-sphere (4D CT) or "
+      "mosaic (Siemens mosaic fMRI, 4D)");
   auto o = std::make_shared<PhantomOptions>();
-  cmd->add_option("kind", o->kind, "pet-sphere or beating-sphere")
+  cmd->add_option("kind", o->kind, "pet-sphere, beating-sphere or mosaic")
       ->required()
-      ->check(CLI::IsMember({"pet-sphere", "beating-sphere"}));
+      ->check(CLI::IsMember({"pet-sphere", "beating-sphere", "mosaic"}));
   cmd->add_option("dir", o->dir, "a new or empty folder for the files")->required();
   cmd->add_option("--decay", o->decay, "pet-sphere: Decay Correction, START or ADMIN")
       ->check(CLI::IsMember({"START", "ADMIN", "NONE"}));
@@ -81,6 +95,8 @@ Run addMakePhantomCommand(CLI::App& app) {
                   "RadiopharmaceuticalStartTime, SeriesTime)");
   cmd->add_option("--dims", o->dims, "voxels X,Y,Z")->delimiter(',');
   cmd->add_option("--phases", o->phases, "beating-sphere: phases (time points)")
+      ->check(CLI::Range(1, 100));
+  cmd->add_option("--time-points", o->timePoints, "mosaic: volumes (one mosaic image each)")
       ->check(CLI::Range(1, 100));
   cmd->add_option("--timing", o->timing,
                   "beating-sphere: how phases are marked: temporal (Temporal Position "

@@ -112,11 +112,18 @@ TEST(DicomSeriesDiscovery, UnknownSelectorListsTheCandidates) {
   EXPECT_EQ(m.find("PLASTIC"), std::string::npos);
 }
 
-TEST(DicomSeriesDiscovery, FolderOfSingleMosaicsIsRefusedWithReasons) {
-  std::string m = test::importError(dicomPath("transfer-syntaxes"));
-  EXPECT_NE(m.find("no series here is a 3D volume"), std::string::npos) << m;
-  EXPECT_NE(m.find("mosaic"), std::string::npos) << m;
-  EXPECT_NE(m.find("--series"), std::string::npos) << m;
+// Nine copies of one Siemens mosaic (a series each, one per transfer syntax): each is split
+// into its 35 slices of 64 x 64 (6 x 6 tiles of the 384 x 384 image) and listed as a volume.
+TEST(DicomSeriesDiscovery, FolderOfSingleMosaicsListsEachAsAVolume) {
+  DicomListing l = listDicomSeries(dicomPath("transfer-syntaxes"));
+  ASSERT_EQ(l.series.size(), 9u);
+  for (const SeriesInfo& s : l.series) {
+    EXPECT_TRUE(s.isVolume) << s.selector << ": " << s.notVolumeReason;
+    EXPECT_EQ(s.dims, glm::ivec3(64, 64, 35)) << s.selector;
+    EXPECT_EQ(s.sliceCount, 35) << s.selector;
+    EXPECT_EQ(s.fileCount, 1) << s.selector;
+  }
+  EXPECT_TRUE(l.series.front().chosenByDefault);
 }
 
 TEST(DicomSeriesDiscovery, PrivacyPatientFieldsNeverInMessages) {

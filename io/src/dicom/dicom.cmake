@@ -17,6 +17,7 @@ target_sources(voxray_io PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/resample.cpp
   ${CMAKE_CURRENT_LIST_DIR}/secondary_capture.cpp
   ${CMAKE_CURRENT_LIST_DIR}/series_grouping.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/siemens_mosaic.cpp
   ${CMAKE_CURRENT_LIST_DIR}/phantom_series.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stack_geometry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/suv.cpp

@@ -203,8 +203,9 @@ void decodeSlices(const Candidate& c, const LoadOptions& options, const std::vec
     if (!done0[k]) byFile[c.frames[k].path].push_back(k);
   std::vector<const std::vector<size_t>*> tasks;
   for (auto& [path, list] : byFile) {
-    std::sort(list.begin(), list.end(),
-              [&](size_t a, size_t b) { return c.frames[a].frame < c.frames[b].frame; });
+    std::sort(list.begin(), list.end(), [&](size_t a, size_t b) {
+      return c.frames[a].imageIndex() < c.frames[b].imageIndex();
+    });
     tasks.push_back(&list);
   }
   std::atomic<size_t> done{size_t(std::count(done0.begin(), done0.end(), true))};
@@ -307,8 +308,9 @@ std::vector<SliceScale> assembleSlices(const Candidate& c, const LoadOptions& op
   if (arrived && arrived->sliceSize() == sliceSize) {
     for (size_t k = 0; k < c.frames.size(); ++k) {
       const ArrivedFiles::File* file = arrived->find(c.frames[k].path);
-      if (!file || size_t(c.frames[k].frame) >= file->slots.size()) continue;
-      const size_t slot = file->slots[size_t(c.frames[k].frame)];
+      const size_t image = size_t(c.frames[k].imageIndex());  // slots are kept per image
+      if (!file || image >= file->slots.size()) continue;
+      const size_t slot = file->slots[image];
       if (arrived->slots()[slot].air != air) continue;
       source[k] = slot;
       ++found;
@@ -520,8 +522,9 @@ Volume decodeCandidate(const Scan& s, int index, const std::string& input,
   v.window = f0.window;  // the first slice's: what a viewer shows when the series opens
   v.study = studyIdentity(f0);
   v.study.sopClassUid = f0.sopClassUid;
-  // Slice k is frame k of the sorted stack only when nothing was resampled.
-  if (!g.needsResampling && !f0.isEnhanced() && int(c.frames.size()) == v.dims.z) {
+  // Slice k is frame k of the sorted stack only when nothing was resampled (a mosaic's
+  // slices share one SOP instance).
+  if (!g.needsResampling && !f0.isEnhanced() && !f0.mosaic && int(c.frames.size()) == v.dims.z) {
     for (auto& f : c.frames) v.study.sliceSopInstanceUids.push_back(f.sopInstanceUid);
     if (std::any_of(c.frames.begin(), c.frames.end(),
                     [](const FrameHeader& f) { return f.sopInstanceUid.empty(); }))

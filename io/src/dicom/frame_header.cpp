@@ -3,6 +3,7 @@
 #include "frame_header.h"
 
 #include "bounded_load.h"
+#include "siemens_mosaic.h"
 #include "text_decode.h"
 
 #include <dcmtk/config/osconfig.h>
@@ -268,13 +269,21 @@ ScanResult headersOf(DcmFileFormat& file, const std::string& failure,
   ds->findAndGetSequence(DCM_PerFrameFunctionalGroupsSequence, perFrame);
   h.fileFrames = frames;
   h.perFrameGroups = shared || perFrame;
+  const MosaicAttributes mosaic = readMosaicAttributes(ds, h.imageType);
+  std::vector<FrameHeader> images;
   for (int f = 0; f < frames; ++f) {
     FrameHeader fh = h;
     fh.frame = f;
     DcmItem* item = (perFrame && unsigned(f) < perFrame->card()) ? perFrame->getItem(f) : nullptr;
     if (shared || item) readFrameGroups(item, shared, text, fh);
-    out.push_back(std::move(fh));
+    if (!mosaic.isMosaic) {
+      images.push_back(std::move(fh));
+    } else if (std::string wrong = splitMosaic(fh, mosaic, images); !wrong.empty()) {
+      why = wrong;
+      return ScanResult::NoImage;
+    }
   }
+  for (auto& image : images) out.push_back(std::move(image));
   return ScanResult::Image;
 }
 

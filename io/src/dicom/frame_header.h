@@ -54,6 +54,14 @@ struct FrameHeader {
   // when the file has its pixel data at the top level (NativeFrames checks before using it);
   // 0 when read from bytes or unknown.
   uint64_t pixelValueOffset = 0;
+  // A tile of a Siemens mosaic (siemens_mosaic.h): rows, columns and position above are the
+  // tile's; the pixels are cut from frame `frame` of ROWS x COLUMNS.
+  struct MosaicTile {
+    int tile = 0, images = 0, across = 0, rows = 0, columns = 0;
+  };
+  std::optional<MosaicTile> mosaic;
+  // Which image of the file this is, counting each mosaic tile: frame, or frame * images + tile.
+  int imageIndex() const { return mosaic ? frame * mosaic->images + mosaic->tile : frame; }
 };
 
 enum class ScanResult { Image, NotDicom, NoImage };

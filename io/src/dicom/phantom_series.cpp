@@ -1,5 +1,6 @@
 #include "voxray/io/phantom_series.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,8 @@
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmdata/dcvrda.h>
 #include <dcmtk/dcmdata/dcvrtm.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
@@ -126,7 +129,61 @@ double julianSeconds(const std::string& date, const std::string& time) {
   return dayNumber(d) * 86400.0 + t.getTimeInSeconds();
 }
 
+// A CSA2 ("SV10") image header holding TAGS, each a name and its items as text: the layout
+// Siemens writes into (0029,1010) and dcm2niix reads.
+std::vector<Uint8> csaHeader(
+    const std::vector<std::pair<std::string, std::vector<std::string>>>& tags) {
+  std::vector<Uint8> out;
+  auto u32 = [&](uint32_t v) {
+    for (int b = 0; b < 4; ++b) out.push_back(Uint8(v >> (8 * b)));
+  };
+  for (char c : std::string("SV10\4\3\2\1")) out.push_back(Uint8(c));
+  u32(uint32_t(tags.size()));
+  u32(77);
+  for (const auto& [name, items] : tags) {
+    std::string field = name;
+    field.resize(64, '\0');
+    out.insert(out.end(), field.begin(), field.end());
+    u32(uint32_t(items.size()));                                      // VM
+    for (char c : std::string("IS\0\0", 4)) out.push_back(Uint8(c));  // VR (text either way)
+    u32(6);                                                           // SyngoDT
+    u32(uint32_t(items.size()));
+    u32(77);
+    for (const std::string& item : items) {
+      const uint32_t length = uint32_t(item.size() + 1);  // with its terminating zero
+      u32(length);
+      u32(length);
+      u32(77);
+      u32(length);
+      out.insert(out.end(), item.begin(), item.end());
+      out.resize(out.size() + 1 + (4 - length % 4) % 4, 0);
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+glm::dmat3 MosaicPhantom::axes() const {
+  const double toRad = 3.14159265358979323846 / 180.0;
+  const glm::dmat4 turn =
+      glm::rotate(glm::rotate(glm::dmat4(1.0), yawDegrees * toRad, glm::dvec3(0, 0, 1)),
+                  pitchDegrees * toRad, glm::dvec3(1, 0, 0));
+  glm::dmat3 a(turn);
+  if (reverseSlices) a[2] = -a[2];
+  return a;
+}
+
+glm::dvec3 MosaicPhantom::position(glm::ivec3 ijk) const {
+  return originMm + axes() * (glm::dvec3(ijk) * spacingMm);
+}
+
+int MosaicPhantom::value(glm::ivec3 ijk, int timePoint) const {
+  // The sphere's signal rises per time point; the background ramps along every axis, so a
+  // swapped or flipped axis changes the values.
+  if (glm::length(position(ijk) - sphereCentreMm) <= radiusMm) return 1000 + 150 * timePoint;
+  return 100 + ijk.x + 2 * ijk.y + 3 * ijk.z + timePoint;
+}
 
 double petSphereSuv(const PetSpherePhantom& p) {
   double dose = p.injectedDoseBq;
@@ -281,6 +338,116 @@ void writeBeatingSpherePhantom(const std::string& dir, const BeatingSpherePhanto
       std::snprintf(name, sizeof name, "CT%05d.dcm", instance);
       dicomwrite::saveAtomically(file, (fs::path(dir) / name).string(), "phantom slice");
     }
+  }
+}
+
+}  // namespace voxray
+
+namespace voxray {
+
+void writeMosaicPhantom(const std::string& dir, const MosaicPhantom& p) {
+  checkDims(p.dims, p.spacingMm);
+  if (p.timePoints < 1 || p.timePoints > 100)
+    throw inputError("phantom: time points must be 1..100");
+  const int n = p.dims.z;
+  const int across = int(std::ceil(std::sqrt(double(n)) - 1e-9));
+  if (across * std::max(p.dims.x, p.dims.y) > 4096)
+    throw inputError("phantom: the mosaic would be over 4096 pixels wide");
+  prepareFolder(dir);
+  SeriesHeader s;
+  s.modality = "MR";
+  s.sopClass = UID_MRImageStorage;
+  s.description = "Mosaic fMRI phantom (" + std::to_string(p.timePoints) + " volumes)";
+  s.date = "20260115";
+  s.time = "140000";
+  const glm::dmat3 a = p.axes();
+  const glm::ivec2 whole = across * glm::ivec2(p.dims.x, p.dims.y);  // columns, rows
+  // Siemens' Image Position: the corner of the whole tiled image, not of tile 0.
+  const glm::dvec3 corner = p.position({0, 0, 0}) -
+                            a[0] * (p.spacingMm.x * (whole.x - p.dims.x) / 2.0) -
+                            a[1] * (p.spacingMm.y * (whole.y - p.dims.y) / 2.0);
+  auto triple = [](const glm::dvec3& v) {
+    return number(v.x) + "\\" + number(v.y) + "\\" + number(v.z);
+  };
+  const int images = p.mrHeaderImages.value_or(n);
+  const int csaImages = p.csaImages.value_or(images);
+  const glm::dvec3 sliceNormal = a[2];
+  std::vector<Uint16> pixels(size_t(whole.x) * size_t(whole.y));
+  for (int t = 0; t < p.timePoints; ++t) {
+    DcmFileFormat file;
+    DcmDataset* d = file.getDataset();
+    Put put = [&](const DcmTagKey& tag, const std::string& value) {
+      d->putAndInsertString(tag, value.c_str());
+    };
+    putCommon(d, s, put);
+    d->findAndDeleteElement(DCM_RescaleSlope);  // MR has no Modality LUT module
+    put(DCM_Manufacturer, "SIEMENS");           // the vendor whose private layout this copies
+    put(DCM_ManufacturerModelName, "Voxray mosaic phantom");
+    put(DCM_SoftwareVersions, "Voxray");
+    // MR Image (PS3.3 C.8.3.1): a single-shot gradient-echo EPI, as fMRI is.
+    put(DCM_ImageType, "ORIGINAL\\PRIMARY\\M\\ND\\MOSAIC");
+    put(DCM_ScanningSequence, "EP");
+    put(DCM_SequenceVariant, "SK");
+    put(DCM_ScanOptions, "FS");
+    put(DCM_MRAcquisitionType, "2D");
+    put(DCM_SequenceName, "epfid2d1_" + std::to_string(p.dims.x));
+    put(DCM_AngioFlag, "N");
+    put(DCM_RepetitionTime, "2000");
+    put(DCM_EchoTime, "30");
+    put(DCM_EchoTrainLength, "1");
+    put(DCM_NumberOfAverages, "1");
+    put(DCM_ImagingFrequency, "123.2");
+    put(DCM_ImagedNucleus, "1H");
+    put(DCM_EchoNumbers, "1");
+    put(DCM_MagneticFieldStrength, "3");
+    put(DCM_FlipAngle, "90");
+    put(DCM_InPlanePhaseEncodingDirection, "COL");
+    put(DCM_SliceThickness, number(p.sliceThicknessMm));
+    put(DCM_SpacingBetweenSlices, number(p.spacingMm.z));
+    put(DCM_InstanceNumber, std::to_string(t + 1));
+    put(DCM_AcquisitionNumber, std::to_string(t + 1));
+    put(DCM_AcquisitionDate, s.date);
+    char time[16];
+    std::snprintf(time, sizeof time, "1400%02d.000000", 2 * t % 60);  // TR 2 s
+    put(DCM_AcquisitionTime, time);
+    put(DCM_ImagePositionPatient, triple(corner));
+    put(DCM_ImageOrientationPatient, triple(a[0]) + "\\" + triple(a[1]));
+    put(DCM_PixelSpacing, number(p.spacingMm.y) + "\\" + number(p.spacingMm.x));
+    // Siemens' private attributes the split reads (dcm2niix reads the same).
+    DcmTag creator19(0x0019, 0x0010, EVR_LO), creator29(0x0029, 0x0010, EVR_LO);
+    d->putAndInsertString(creator19, "SIEMENS MR HEADER");
+    if (p.writeMrHeaderImages) {
+      DcmTag imagesTag(0x0019, 0x100A, EVR_US);
+      imagesTag.setPrivateCreator("SIEMENS MR HEADER");
+      d->putAndInsertUint16(imagesTag, Uint16(std::clamp(images, 0, 65535)));
+    }
+    d->putAndInsertString(creator29, "SIEMENS CSA HEADER");
+    DcmTag headerType(0x0029, 0x1008, EVR_CS), headerVersion(0x0029, 0x1009, EVR_LO),
+        header(0x0029, 0x1010, EVR_OB);
+    for (DcmTag* tag : {&headerType, &headerVersion, &header})
+      tag->setPrivateCreator("SIEMENS CSA HEADER");
+    d->putAndInsertString(headerType, "IMAGE NUM 4");
+    d->putAndInsertString(headerVersion, "20260115");
+    const std::vector<Uint8> csa =
+        csaHeader({{"NumberOfImagesInMosaic", {std::to_string(csaImages)}},
+                   {"SliceNormalVector",
+                    {number(sliceNormal.x), number(sliceNormal.y), number(sliceNormal.z)}}});
+    d->putAndInsertUint8Array(header, csa.data(), Uint32(csa.size()));
+    d->putAndInsertUint16(DCM_PixelRepresentation, 0);
+    d->putAndInsertUint16(DCM_Rows, Uint16(whole.y));
+    d->putAndInsertUint16(DCM_Columns, Uint16(whole.x));
+    std::fill(pixels.begin(), pixels.end(), Uint16(0));  // tiles past the last slice stay 0
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < p.dims.y; ++j)
+        for (int i = 0; i < p.dims.x; ++i) {
+          const size_t row = size_t(k / across * p.dims.y + j),
+                       col = size_t(k % across * p.dims.x + i);
+          pixels[row * size_t(whole.x) + col] = Uint16(p.value({i, j, k}, t));
+        }
+    d->putAndInsertUint16Array(DCM_PixelData, pixels.data(), pixels.size());
+    char name[32];
+    std::snprintf(name, sizeof name, "MR%04d.dcm", t + 1);
+    dicomwrite::saveAtomically(file, (fs::path(dir) / name).string(), "phantom mosaic");
   }
 }
 

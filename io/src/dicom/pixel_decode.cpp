@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "bounded_load.h"
@@ -85,6 +86,8 @@ struct PixelFile::Impl {
   std::vector<uint8_t> buffer;  // one decoded or concatenated frame
   int lastFrame = -2;
   Uint32 nextStart = 0;
+  int mosaicFrame = -1;  // the frame whose whole mosaic is in mosaicValues
+  std::vector<int32_t> mosaicValues;
 
   [[noreturn]] void fail(const std::string& why) const { throw inputError(path + ": " + why); }
 
@@ -217,10 +220,30 @@ PixelFile::~PixelFile() = default;
 
 void PixelFile::frameValues(const FrameHeader& h, std::vector<int32_t>& out) {
   if (std::string why = unsupportedReason(h); !why.empty()) impl_->fail(why);
-  if (isJpeg2000(impl_->xfer))
-    impl_->decodeJ2k(h, out);
-  else
-    impl_->decodeOther(h, out);
+  if (!h.mosaic) {
+    if (isJpeg2000(impl_->xfer))
+      impl_->decodeJ2k(h, out);
+    else
+      impl_->decodeOther(h, out);
+    return;
+  }
+  // A mosaic tile: the whole image is decoded once for all of its tiles.
+  const FrameHeader::MosaicTile& m = *h.mosaic;
+  if (impl_->mosaicFrame != h.frame) {
+    FrameHeader whole = h;
+    whole.mosaic.reset();
+    whole.rows = m.rows;
+    whole.columns = m.columns;
+    impl_->mosaicFrame = -1;
+    frameValues(whole, impl_->mosaicValues);
+    impl_->mosaicFrame = h.frame;
+  }
+  const size_t across = size_t(m.across), tileRows = size_t(h.rows), tileCols = size_t(h.columns);
+  const size_t row0 = size_t(m.tile) / across * tileRows, col0 = size_t(m.tile) % across * tileCols;
+  out.resize(tileRows * tileCols);
+  for (size_t j = 0; j < tileRows; ++j)
+    std::copy_n(impl_->mosaicValues.begin() + ptrdiff_t((row0 + j) * size_t(m.columns) + col0),
+                tileCols, out.begin() + ptrdiff_t(j * tileCols));
 }
 
 namespace {
@@ -335,6 +358,7 @@ NativeFrames::NativeFrames(DcmFileFormat& parsed) : impl_(std::make_unique<Impl>
 NativeFrames::~NativeFrames() = default;
 
 bool NativeFrames::fits(const FrameHeader& h) const {
+  if (h.mosaic) return false;  // a tile's rows are not contiguous: PixelFile cuts them out
   impl_->parse();
   const size_t frameBytes = size_t(h.rows) * size_t(h.columns) * 2;
   return impl_->pixels && nativeWords(h) &&
@@ -343,6 +367,7 @@ bool NativeFrames::fits(const FrameHeader& h) const {
 }
 
 bool NativeFrames::read(const FrameHeader& h, uint16_t* out) {
+  if (h.mosaic) return false;
   if (impl_->direct && nativeWords(h) && impl_->direct->read(h, out)) return true;
   if (!fits(h)) return false;
   const size_t frameBytes = size_t(h.rows) * size_t(h.columns) * 2;

@@ -105,8 +105,6 @@ void classify(Candidate& c) {
   } else if (upper(f.imageType, "LOCALIZER") || upper(f.imageType, "SCOUT") ||
              upper(f.imageType, "SURVIEW")) {
     c.notVolumeReason = "a localizer (scout) image";
-  } else if (upper(f.imageType, "MOSAIC")) {
-    c.notVolumeReason = "a Siemens mosaic (slices tiled in one image), not split by Voxray";
   } else if (n < kMinVolumeSlices) {
     c.notVolumeReason = n == 1 ? "a single image" : "only " + std::to_string(n) + " images";
   } else if (!f.hasPosition || !f.hasOrientation) {
