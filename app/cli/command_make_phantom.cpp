@@ -15,7 +15,8 @@ namespace {
 
 struct PhantomOptions {
   std::string kind, dir;
-  std::string decay = "START", seriesTime, injectionTime, injectionDateTime, timing = "temporal";
+  std::string decay = "START", seriesTime, acquisitionTime, injectionTime, injectionDateTime,
+              geScanDateTime, timing = "temporal";
   std::vector<std::string> omit;
   std::vector<int> dims;
   int phases = 10, timePoints = 3;
@@ -30,6 +31,8 @@ int runMakePhantom(const PhantomOptions& o) {
     PetSpherePhantom p;
     p.decayCorrection = o.decay;
     if (!o.seriesTime.empty()) p.seriesTime = p.acquisitionTime = o.seriesTime;
+    if (!o.acquisitionTime.empty()) p.acquisitionTime = o.acquisitionTime;
+    p.geScanDateTime = o.geScanDateTime;
     if (!o.injectionTime.empty()) p.injectionTime = o.injectionTime;
     p.injectionDateTime = o.injectionDateTime;
     if (o.weightKg > 0) p.weightKg = o.weightKg;
@@ -84,6 +87,10 @@ Run addMakePhantomCommand(CLI::App& app) {
   cmd->add_option("--decay", o->decay, "pet-sphere: Decay Correction, START or ADMIN")
       ->check(CLI::IsMember({"START", "ADMIN", "NONE"}));
   cmd->add_option("--series-time", o->seriesTime, "pet-sphere: Series Time (HHMMSS)");
+  cmd->add_option("--acquisition-time", o->acquisitionTime,
+                  "pet-sphere: every image's Acquisition Time (HHMMSS); default the series time");
+  cmd->add_option("--ge-scan-datetime", o->geScanDateTime,
+                  "pet-sphere: GE's private scan DateTime (0009,100D) (YYYYMMDDHHMMSS)");
   cmd->add_option("--injection-time", o->injectionTime,
                   "pet-sphere: Radiopharmaceutical Start Time (HHMMSS)");
   cmd->add_option("--injection-datetime", o->injectionDateTime,

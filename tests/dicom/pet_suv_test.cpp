@@ -107,6 +107,50 @@ TEST(PetSuv, AgreesWithPydicomOnSeveralSeries) {
               1e-12);
 }
 
+// QIBA's GE branch: a series re-made after the scan (Series Time 11:30, later than every
+// Acquisition Time, 10:50, which on GE is a later bed's) is decayed to GE's private scan
+// DateTime (0009,100D), 10:45: 4500 s, as the original series. Without the tag, to the
+// earliest acquisition: 4800 s. pydicom (suv_pydicom.py) follows the same rule.
+TEST(PetSuv, GesPrivateScanTimeWinsWhenTheSeriesIsLaterThanTheAcquisition) {
+  for (const bool ge : {true, false}) {
+    SCOPED_TRACE(ge ? "GE scan DateTime" : "no GE tag");
+    test::TempDir dir;
+    PetSpherePhantom p;
+    p.seriesTime = "113000";
+    p.acquisitionTime = "105000";
+    if (ge) p.geScanDateTime = "20260115104500";
+    writePetSpherePhantom(dir.file("pt"), p);
+    const Volume v = loadVolume(dir.file("pt"));
+    ASSERT_TRUE(v.suv) << (v.warnings.empty() ? "" : v.warnings.back());
+    const double expected = analyticSuv(p, ge ? 4500.0 : 4800.0);
+    EXPECT_NEAR(maxSuv(v), expected, expected * kSameFormula);
+    EXPECT_NEAR(petSphereSuv(p), expected, expected * kSameFormula);
+    const auto [factor, suvMax] = pydicomSuv(dir.file("pt"));
+    EXPECT_NEAR(v.suv->factor, factor, factor * kSameFormula);
+    EXPECT_NEAR(maxSuv(v), suvMax, suvMax * kSameFormula);
+  }
+  // 300 s of F-18 decay apart: 2^(300 / 6586.2) = 1.0321...
+  PetSpherePhantom p;
+  EXPECT_NEAR(analyticSuv(p, 4800.0) / analyticSuv(p, 4500.0), std::pow(2.0, 300 / 6586.2), 1e-12);
+}
+
+// The GE tag is used only when the series time is later than the acquisition (QIBA): an
+// ordinary series keeps its Series Time whatever the tag says.
+TEST(PetSuv, GesPrivateScanTimeIsIgnoredForAnOrdinarySeries) {
+  PetSuvAttributes a;
+  a.units = "BQML";
+  a.decayCorrection = "START";
+  a.seriesDate = a.acquisitionDate = "20260115";
+  a.seriesTime = a.acquisitionTime = "104500";
+  a.injectionTime = "093000";
+  a.geScanDateTime = "20260115100000";
+  EXPECT_DOUBLE_EQ(suvDecaySeconds(a), 4500.0);
+  a.seriesTime = "113000";  // now re-made after the scan: GE's 10:00
+  EXPECT_DOUBLE_EQ(suvDecaySeconds(a), 1800.0);
+  a.geScanDateTime = "not a date";  // unusable: the earliest acquisition
+  EXPECT_DOUBLE_EQ(suvDecaySeconds(a), 4500.0);
+}
+
 TEST(PetSuv, AMissingAttributeIsNamedAndValuesStayInBqPerMl) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"PatientWeight", "Patient's Weight (0010,1030) is missing"},

@@ -20,7 +20,14 @@ def suv_factor(images):
     assert first.Units == "BQML", first.Units
     series = when(first.SeriesDate, first.SeriesTime)
     acquired = min(when(d.AcquisitionDate, d.AcquisitionTime) for d in images)
-    scan = min(series, acquired)
+    scan = series
+    if acquired < series:
+        # A series made after the scan: GE keeps the scan's start in a private DateTime.
+        try:
+            ge = first.private_block(0x0009, "GEMS_PETD_01")[0x0D].value
+            scan = datetime.datetime.strptime(str(ge)[:14], "%Y%m%d%H%M%S")
+        except KeyError:
+            scan = acquired
     drug = first.RadiopharmaceuticalInformationSequence[0]
     if "RadiopharmaceuticalStartDateTime" in drug:
         injected = datetime.datetime.strptime(drug.RadiopharmaceuticalStartDateTime[:14],

@@ -3,6 +3,7 @@
 #include "frame_header.h"
 
 #include "bounded_load.h"
+#include "private_tags.h"
 #include "siemens_mosaic.h"
 #include "text_decode.h"
 
@@ -151,6 +152,7 @@ std::shared_ptr<const PetSuvAttributes> readPet(DcmDataset* ds, const TextDecode
   p->seriesDate = str(ds, DCM_SeriesDate, text);
   p->seriesTime = str(ds, DCM_SeriesTime, text);
   p->weightKg = positive(ds, DCM_PatientWeight);
+  p->geScanDateTime = text(privateText(ds, 0x0009, "GEMS_PETD_01", 0x0D), false);
   DcmItem* drug = nullptr;
   if (ds->findAndGetSequenceItem(DCM_RadiopharmaceuticalInformationSequence, drug, 0).good()) {
     p->injectionTime = str(drug, DCM_RadiopharmaceuticalStartTime, text);

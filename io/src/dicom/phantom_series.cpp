@@ -191,8 +191,15 @@ double petSphereSuv(const PetSpherePhantom& p) {
       p.injectionDateTime.size() >= 14
           ? julianSeconds(p.injectionDateTime.substr(0, 8), p.injectionDateTime.substr(8, 6))
           : julianSeconds(p.seriesDate, p.injectionTime);
-  if (p.decayCorrection == "START")
-    dose *= std::pow(0.5, (julianSeconds(p.seriesDate, p.seriesTime) - injected) / p.halfLifeS);
+  // The scan's start: the series time, unless the images were acquired before it (a series
+  // made after the scan): then GE's private scan time when written, else the acquisition.
+  double scan = julianSeconds(p.seriesDate, p.seriesTime);
+  const double acquired = julianSeconds(p.seriesDate, p.acquisitionTime);
+  if (acquired < scan)
+    scan = p.geScanDateTime.size() >= 14
+               ? julianSeconds(p.geScanDateTime.substr(0, 8), p.geScanDateTime.substr(8, 6))
+               : acquired;
+  if (p.decayCorrection == "START") dose *= std::pow(0.5, (scan - injected) / p.halfLifeS);
   return p.insideBqml * p.weightKg * 1000.0 / dose;
 }
 
@@ -216,6 +223,12 @@ void writePetSpherePhantom(const std::string& dir, const PetSpherePhantom& p) {
     };
     putCommon(d, s, put);
     if (!omitted("PatientWeight")) put(DCM_PatientWeight, number(p.weightKg));
+    if (!p.geScanDateTime.empty()) {
+      d->putAndInsertString(DcmTag(0x0009, 0x0010, EVR_LO), "GEMS_PETD_01");
+      DcmTag scan(0x0009, 0x100D, EVR_DT);
+      scan.setPrivateCreator("GEMS_PETD_01");
+      d->putAndInsertString(scan, p.geScanDateTime.c_str());
+    }
     // PET Series (PS3.3 C.8.9.1).
     put(DCM_SeriesDate, p.seriesDate);
     if (!omitted("SeriesTime")) put(DCM_SeriesTime, p.seriesTime);

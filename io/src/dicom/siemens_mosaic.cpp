@@ -1,5 +1,7 @@
 #include "siemens_mosaic.h"
 
+#include "private_tags.h"
+
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcelem.h>
 #include <dcmtk/dcmdata/dcitem.h>
@@ -34,19 +36,6 @@ std::optional<double> number(const std::string& s) {
   const double v = std::strtod(s.c_str(), &end);
   if (end == s.c_str() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
   return v;
-}
-
-// The element number of the private block GROUP's creator CREATOR reserved (0x10..0xFF), or 0.
-Uint16 privateBlock(DcmItem* ds, Uint16 group, const char* creator) {
-  for (Uint16 e = 0x10; e <= 0xFF; ++e) {
-    OFString s;
-    if (ds->findAndGetOFString(DcmTagKey(group, e), s).good()) {
-      std::string name(s.c_str());
-      while (!name.empty() && name.back() == ' ') name.pop_back();
-      if (name == creator) return e;
-    }
-  }
-  return 0;
 }
 
 // An unsigned short that may have been read as US or, without a dictionary, as bytes (UN).
@@ -107,17 +96,17 @@ MosaicAttributes readMosaicAttributes(DcmItem* ds, const std::string& imageType)
                  [](unsigned char c) { return char(std::toupper(c)); });
   a.isMosaic = upper.find("MOSAIC") != std::string::npos;
   if (!a.isMosaic || !ds) return a;
-  if (Uint16 block = privateBlock(ds, 0x0019, "SIEMENS MR HEADER")) {
-    if (auto n = shortValue(ds, DcmTagKey(0x0019, Uint16(block << 8 | 0x0A)))) {
+  if (auto tag = privateTag(ds, 0x0019, "SIEMENS MR HEADER", 0x0A)) {
+    if (auto n = shortValue(ds, *tag)) {
       a.images = n;
       a.imagesFrom = "(0019,100A) NumberOfImagesInMosaic";
     }
   }
-  if (Uint16 block = privateBlock(ds, 0x0029, "SIEMENS CSA HEADER")) {
+  if (auto tag = privateTag(ds, 0x0029, "SIEMENS CSA HEADER", 0x10)) {
     DcmElement* e = nullptr;
     Uint8* bytes = nullptr;
-    if (ds->findAndGetElement(DcmTagKey(0x0029, Uint16(block << 8 | 0x10)), e).good() && e &&
-        e->getLength() <= kMaxCsaBytes && e->getUint8Array(bytes).good() && bytes) {
+    if (ds->findAndGetElement(*tag, e).good() && e && e->getLength() <= kMaxCsaBytes &&
+        e->getUint8Array(bytes).good() && bytes) {
       const CsaImageInfo csa = parseCsaImageHeader(bytes, e->getLength());
       a.sliceNormal = csa.sliceNormal;
       if (!a.images && csa.imagesInMosaic) {

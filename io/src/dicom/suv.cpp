@@ -53,7 +53,8 @@ std::optional<double> dateTimeSeconds(const std::string& dt) {
 }
 
 // The scan's start: the series date and time, unless an image was acquired before it (a
-// series re-made after the scan, QIBA's case): then the earliest acquisition.
+// series re-made after the scan, QIBA's case): then GE's private scan DateTime when the
+// file has one, else the earliest acquisition (which on GE may be a later bed's).
 double scanStart(const PetSuvAttributes& a) {
   if (a.seriesDate.empty()) refuse(missing("Series Date", "(0008,0021)"));
   if (a.seriesTime.empty()) refuse(missing("Series Time", "(0008,0031)"));
@@ -62,7 +63,9 @@ double scanStart(const PetSuvAttributes& a) {
     refuse("Series Date/Time '" + a.seriesDate + " " + a.seriesTime + "' is not a DICOM date/time");
   const auto acquired = dateTimeSeconds(
       a.acquisitionDate.empty() ? a.seriesDate : a.acquisitionDate, a.acquisitionTime);
-  return acquired && *acquired < *series ? *acquired : *series;
+  if (!acquired || *acquired >= *series) return *series;
+  if (const auto ge = dateTimeSeconds(a.geScanDateTime)) return *ge;
+  return *acquired;
 }
 
 double injection(const PetSuvAttributes& a, double scan) {

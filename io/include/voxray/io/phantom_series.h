@@ -26,6 +26,10 @@ struct PetSpherePhantom {
   std::string acquisitionTime = "104500";  // every image's
   std::string injectionTime = "093000";    // Radiopharmaceutical Start Time (TM)
   std::string injectionDateTime;           // Radiopharmaceutical Start DateTime; empty: none
+  // GE's private scan DateTime (0009,100D) of creator GEMS_PETD_01, written when not empty: a
+  // GE series re-made after the scan (its Series Time later than the acquisition) keeps the
+  // scan's start there.
+  std::string geScanDateTime;
   // DICOM keywords of attributes to leave out (PatientWeight, Units, DecayCorrection,
   // RadionuclideTotalDose, RadionuclideHalfLife, RadiopharmaceuticalStartTime, SeriesTime):
   // the objects are then incomplete on purpose, for the tests of SUV's messages.
@@ -33,7 +37,8 @@ struct PetSpherePhantom {
 };
 
 // The SUVbw of the sphere's voxels from P's own numbers (QIBA: the dose decayed from the
-// injection to the series time for START, as injected for ADMIN).
+// injection to the scan's start for START, as injected for ADMIN; the scan's start is the
+// series time, or GE's scan time or the acquisition time when the series is later).
 double petSphereSuv(const PetSpherePhantom& p);
 
 struct BeatingSpherePhantom {

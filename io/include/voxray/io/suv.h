@@ -20,6 +20,9 @@ struct PetSuvAttributes {
   std::optional<double> injectedDoseBq;  // (0018,1074) Radionuclide Total Dose
   std::optional<double> halfLifeS;       // (0018,1075) Radionuclide Half Life
   std::optional<double> weightKg;        // (0010,1030) Patient's Weight
+  // GE's private scan start, (0009,xx0D) of creator GEMS_PETD_01 (DT): QIBA's scan time when
+  // the series time is later than the acquisition (a series made after the scan).
+  std::string geScanDateTime;
 };
 
 // The scale from Bq/mL to SUVbw. Throws Error (Input) naming the attribute that is missing or
