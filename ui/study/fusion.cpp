@@ -96,13 +96,40 @@ FusionSettings defaultFusion(const Volume& overlay) {
 
 void FusionModel::setOverlay(std::shared_ptr<const Volume> overlay, std::string name,
                              const Volume* base) {
-  if (!overlay) return clear();
-  settings_ = defaultFusion(*overlay);
-  warnings_ = base ? overlayWarnings(*base, *overlay) : std::vector<std::string>{};
-  overlay_ = std::move(overlay);
+  VolumeSeries one;
+  if (overlay) one.push_back(std::move(overlay));
+  setOverlaySeries(std::move(one), std::move(name), base);
+}
+
+void FusionModel::setOverlaySeries(VolumeSeries series, std::string name, const Volume* base) {
+  if (series.empty() || !series.front()) return clear();
+  series_ = std::move(series);
+  time_.setCount(int(series_.size()));
+  time_.setOwn(0);  // a new overlay starts at its first time point (unless it follows)
+  overlay_ = series_[size_t(time_.shown())];
+  settings_ = defaultFusion(*overlay_);
+  warnings_ = base ? overlayWarnings(*base, *overlay_) : std::vector<std::string>{};
   name_ = std::move(name);
   sourcePath_.clear();  // the caller that read it from a file says where (setSource)
   sourceFlags_.clear();
+  changed.notify();
+}
+
+void FusionModel::setMainTime(int point, int count) {
+  time_.setMain(point, count);
+  showTimePoint();
+}
+
+void FusionModel::setOwnTimePoint(int point) {
+  time_.setOwn(point);
+  showTimePoint();
+}
+
+void FusionModel::showTimePoint() {
+  if (series_.empty()) return;
+  const std::shared_ptr<const Volume>& shown = series_[size_t(time_.shown())];
+  if (shown == overlay_) return;
+  overlay_ = shown;  // the same geometry and Frame of Reference: warnings and window stay
   changed.notify();
 }
 
@@ -114,6 +141,8 @@ void FusionModel::setSource(std::string path, std::map<std::string, std::string>
 void FusionModel::clear() {
   if (!overlay_) return;
   overlay_.reset();
+  series_.clear();
+  time_.setCount(1);
   name_.clear();
   sourcePath_.clear();
   sourceFlags_.clear();

@@ -11,6 +11,8 @@
 
 #include "no_qt.h"
 #include "notifier.h"
+#include "time_follow.h"
+#include "time_series.h"
 #include "voxray/engine/plane_sampler.h"
 #include "voxray/engine/transfer_function.h"
 #include "voxray/io/image.h"
@@ -55,10 +57,14 @@ TransferFunction fusionTable(const Volume& overlay, const FusionSettings& s);
 // the upper nine tenths of the stored range.
 FusionSettings defaultFusion(const Volume& overlay);
 
-// The overlay of one window: its volume, where it came from and how it is shown.
+// The overlay of one window: its volume, where it came from and how it is shown. A 4D
+// overlay keeps every time point; overlay() is the one shown, by TimeFollow's rule: the
+// study's time point when both have as many, else the overlay's own (setOwnTimePoint).
 class FusionModel {
  public:
   const std::shared_ptr<const Volume>& overlay() const { return overlay_; }
+  const VolumeSeries& series() const { return series_; }
+  const TimeFollow& time() const { return time_; }
   const std::string& name() const { return name_; }
   bool active() const { return overlay_ && settings_.on; }
   const FusionSettings& settings() const { return settings_; }
@@ -67,6 +73,13 @@ class FusionModel {
 
   // OVERLAY over BASE (its Frame of Reference checked), with defaultFusion's window.
   void setOverlay(std::shared_ptr<const Volume> overlay, std::string name, const Volume* base);
+  // Every time point of a 4D overlay (one geometry, as loadVolumeSeries gives them); the window
+  // is defaultFusion's of the time point shown first.
+  void setOverlaySeries(VolumeSeries series, std::string name, const Volume* base);
+  // The study's time slider moved (or another study opened): POINT of COUNT.
+  void setMainTime(int point, int count);
+  // The overlay's own time point, shown while it does not follow the study's.
+  void setOwnTimePoint(int point);
   // Where the overlay was read from (a session saves it): its input (file or DICOM folder)
   // and load flags (input_flags.h). Empty: not from a file (a test's volume).
   const std::string& sourcePath() const { return sourcePath_; }
@@ -81,7 +94,10 @@ class FusionModel {
   Notifier<> changed;
 
  private:
+  void showTimePoint();  // overlay_ from series_ by time_; told when it changed
   std::shared_ptr<const Volume> overlay_;
+  VolumeSeries series_;
+  TimeFollow time_;
   std::string name_;
   std::string sourcePath_;
   std::map<std::string, std::string> sourceFlags_;

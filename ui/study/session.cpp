@@ -257,13 +257,23 @@ Json fusionJson(const Session::Fusion& f, const std::string& sessionPath) {
           {"on", f.on},
           {"colormap", f.colormap},
           {"window", {{"lo", f.lo}, {"hi", f.hi}, {"unit", f.unit}}},
-          {"opacity", f.opacity}};
+          {"opacity", f.opacity},
+          {"time-point", f.timePoint}};
+}
+
+// An optional time point (a 4D overlay's or prior's own) at KEY of J, FIELD naming it.
+int readTimePoint(Reader& r, const Json& j, const char* key, const std::string& field) {
+  if (!j.contains(key)) return 0;
+  const Json& t = j.at(key);
+  if (!t.is_number_integer() || t.get<long long>() < 0 || t.get<long long>() > 100000)
+    r.fail(field, "must be a time point, 0 or more");
+  return int(t.get<long long>());
 }
 
 void readFusion(Reader& r, const Json& root, const std::string& sessionPath, SessionRead& out) {
   if (!root.contains("fusion")) return;
   const Json& j = r.object(root, "fusion", "fusion");
-  r.warnUnknown(j, "fusion.", {"input", "on", "colormap", "window", "opacity"});
+  r.warnUnknown(j, "fusion.", {"input", "on", "colormap", "window", "opacity", "time-point"});
   Session::Fusion f;
   readInputObject(r, r.object(j, "fusion.input", "input"), "fusion.input", sessionPath, f.input,
                   out.missingFusion);
@@ -288,6 +298,7 @@ void readFusion(Reader& r, const Json& root, const std::string& sessionPath, Ses
   if (window.contains("unit")) f.unit = r.text(window.at("unit"), "fusion.window.unit");
   f.opacity = r.number(r.require(j, "fusion.opacity", "opacity"), "fusion.opacity");
   if (!(f.opacity >= 0.0 && f.opacity <= 1.0)) r.fail("fusion.opacity", "must be 0 ... 1");
+  f.timePoint = readTimePoint(r, j, "time-point", "fusion.time-point");
   out.session.fusion = f;
 }
 
@@ -419,7 +430,8 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
     j["transfer-function"] = Json::parse(toVolumePropertyJson(*s.transferFunction));
   if (s.time) j["time"] = {{"point", s.time->point}, {"fps", s.time->fps}};
   if (s.comparison) {
-    Json c = {{"prior", s.comparison->priorPath}};
+    Json c = {{"prior", s.comparison->priorPath},
+              {"prior-time-point", s.comparison->priorTimePoint}};
     if (s.comparison->movingToFixed) {
       Json rows = Json::array();  // row by row, as the matrix is written on paper
       for (int row = 0; row < 4; ++row) {
@@ -563,9 +575,10 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   }
   if (root.contains("comparison")) {
     const Json& c = r.object(root, "comparison", "comparison");
-    r.warnUnknown(c, "comparison.", {"prior", "moving-to-fixed"});
+    r.warnUnknown(c, "comparison.", {"prior", "moving-to-fixed", "prior-time-point"});
     Session::Comparison out;
     out.priorPath = r.text(r.require(c, "comparison.prior", "prior"), "comparison.prior");
+    out.priorTimePoint = readTimePoint(r, c, "prior-time-point", "comparison.prior-time-point");
     if (c.contains("moving-to-fixed")) {
       const std::string want =
           "must be 4 rows of 4 numbers: a rotation and a translation in mm, last row 0 0 0 1";

@@ -80,6 +80,8 @@ struct Session {
   struct Comparison {
     std::string priorPath;                    // absolute
     std::optional<glm::dmat4> movingToFixed;  // none: linked by a shared Frame of Reference only
+    // A 4D prior's own time point (time_follow.h: shown while it does not follow the study's).
+    int priorTimePoint = 0;
   };
   std::optional<Comparison> comparison;
   // The reading layout (issue 37: 1x1 ... 3d, Ctrl+1..6) and what a hanging protocol placed in
@@ -94,6 +96,8 @@ struct Session {
     std::string unit;           // that unit when saved ("SUVbw", "Bq/ml", ...), for the reader
     double opacity = 0.5;
     bool on = true;
+    // A 4D overlay's own time point (time_follow.h: shown while it does not follow the study's).
+    int timePoint = 0;
     bool operator==(const Fusion&) const = default;
   };
   std::optional<Fusion> fusion;

@@ -48,6 +48,7 @@ Session::Fusion sessionFusion(const FusionModel& fusion) {
   f.hi = s.hi;
   f.opacity = s.opacity;
   f.on = s.on;
+  f.timePoint = fusion.time().own();
   if (fusion.overlay()) f.unit = fusionUnit(*fusion.overlay());
   return f;
 }
@@ -74,6 +75,11 @@ std::vector<std::string> applySessionFusion(FusionModel& fusion, const Session::
   } catch (const Error& e) {
     problems.push_back(std::string("the overlay's saved settings were left out: ") + e.what());
   }
+  if (f.timePoint >= fusion.time().count())
+    problems.push_back("the overlay's time point " + std::to_string(f.timePoint) +
+                       " is beyond its " + std::to_string(fusion.time().count()) +
+                       " time point(s): its last is shown");
+  fusion.setOwnTimePoint(f.timePoint);  // clamped
   return problems;
 }
 
