@@ -16,6 +16,9 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QWheelEvent>
@@ -26,6 +29,7 @@
 #include "session_state.h"
 #include "slice_geometry.h"
 #include "slice_view.h"
+#include "time_panel.h"
 #include "voxray/io/phantom_series.h"
 #include "window_fixture.h"
 
@@ -479,6 +483,84 @@ class CompareTest : public QObject {
                  told[0].contains("The session opened without its fusion overlay"),
              qPrintable(told[0]));
     QVERIFY(errors_.isEmpty());
+  }
+
+  // A 4D overlay and a 4D prior beside a 4D study (the beating sphere: radius 12 + 4 sin(2 pi
+  // t / phases) mm): with as many phases they follow the study's time slider, the panel's and
+  // the bar's time boxes saying so; with five phases beside ten they keep the time point
+  // chosen in their box, and a session keeps it.
+  void fourDOverlayAndPriorFollowTheStudysTimeSlider() {
+    AppModels& m = *fixture_.models;
+    MainWindow& w = *fixture_.window;
+    BeatingSpherePhantom p;
+    p.dims = {32, 32, 16};
+    p.radiusMm = 12.0;
+    p.amplitudeMm = 4.0;
+    const QString dir = tmp_.path();
+    writeBeatingSpherePhantom((dir + "/study").toStdString(), p);
+    writeBeatingSpherePhantom((dir + "/ten").toStdString(), p);
+    BeatingSpherePhantom five = p;
+    five.phases = 5;
+    writeBeatingSpherePhantom((dir + "/five").toStdString(), five);
+    QSignalSpy shown(&w, &MainWindow::volumeShown);
+    w.open((dir + "/study").toStdString(), {});
+    QVERIFY(shown.wait(60000));
+    QCOMPARE(m.document.timePoints(), 10);
+    // Voxel (25, 15, 7): 14.35 mm from the centre, inside at phases 2 and 3 (15.8 mm), outside
+    // at 0 (12 mm) and 7 (8.2 mm).
+    const Volume& v0 = *m.document.volume();
+    const glm::dvec3 probe = v0.originMm + v0.direction * (glm::dvec3(25, 15, 7) * v0.spacingMm);
+    w.openOverlay((dir + "/ten").toStdString());
+    QTRY_VERIFY_WITH_TIMEOUT(m.fusion.series().size() == 10, 60000);
+    QSpinBox* box = w.fusionPanel().timeBox();
+    QVERIFY(!box->isEnabled());
+    QCOMPARE(box->suffix(), QString(" (follows the study)"));
+    QSlider* slider = w.timePanel().slider();
+    for (int t : {2, 7, 3, 0}) {
+      slider->setValue(t);
+      QCOMPARE(m.document.timePoint(), t);
+      QCOMPARE(m.fusion.overlay()->timePoint, t);
+      QCOMPARE(box->value(), t);
+      const bool inside = t == 2 || t == 3;
+      QCOMPARE(QString::fromStdString(fusionProbeText(*m.fusion.overlay(), probe)),
+               QString(inside ? "overlay 300 HU" : "overlay -50 HU"));
+    }
+    // Five phases over ten: its own time point, chosen in the panel.
+    w.openOverlay((dir + "/five").toStdString());
+    QTRY_VERIFY_WITH_TIMEOUT(m.fusion.series().size() == 5, 60000);
+    QVERIFY(box->isEnabled());
+    QCOMPARE(box->suffix(), QString(" of 0-4"));
+    slider->setValue(6);
+    QCOMPARE(m.fusion.overlay()->timePoint, 0);
+    box->setValue(1);  // radius 12 + 4 sin 72 degrees = 15.8 mm: the probe is inside
+    QCOMPARE(m.fusion.overlay()->timePoint, 1);
+    QCOMPARE(QString::fromStdString(fusionProbeText(*m.fusion.overlay(), probe)),
+             QString("overlay 300 HU"));
+    slider->setValue(7);
+    QCOMPARE(m.fusion.overlay()->timePoint, 1);
+    // The prior: ten phases follow the slider; five keep the bar's choice.
+    w.openPrior((dir + "/ten").toStdString());
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareView() && w.compareView()->hasPrior(), 60000);
+    CompareView& c = *w.compareView();
+    QVERIFY(c.priorTimeBox()->isVisible());
+    QVERIFY(!c.priorTimeBox()->isEnabled());
+    QCOMPARE(c.prior().document.timePoint(), 7);  // the study's, at once
+    slider->setValue(4);
+    QCOMPARE(c.prior().document.timePoint(), 4);
+    QCOMPARE(c.priorTimeBox()->value(), 4);
+    w.openPrior((dir + "/five").toStdString());
+    QTRY_VERIFY_WITH_TIMEOUT(c.prior().document.timePoints() == 5, 60000);
+    QVERIFY(c.priorTimeBox()->isEnabled());
+    QCOMPARE(c.prior().document.timePoint(), 0);
+    c.priorTimeBox()->setValue(3);
+    QCOMPARE(c.prior().document.timePoint(), 3);
+    slider->setValue(9);
+    QCOMPARE(c.prior().document.timePoint(), 3);
+    const Session saved = sessionFromModels(m, {128, 96}, "grid");
+    QVERIFY(saved.fusion && saved.comparison);
+    QCOMPARE(saved.fusion->timePoint, 1);
+    QCOMPARE(saved.comparison->priorTimePoint, 3);
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join("; ")));
   }
 
   void windowLevelLinkAndSwapAndFlickerKeys() {

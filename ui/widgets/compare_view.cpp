@@ -5,6 +5,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include "gui_message.h"
@@ -121,6 +122,20 @@ CompareView::CompareView(AppModels& study, RenderScheduler& studyScheduler, QWid
   bar->addWidget(undoButton_);
   bar->addWidget(redoButton_);
   refreshMoveButtons();
+  priorTimeBox_ = new QSpinBox;
+  priorTimeBox_->setObjectName("comparePriorTime");
+  priorTimeBox_->setPrefix("Prior time ");
+  priorTimeBox_->setKeyboardTracking(false);
+  priorTimeBox_->setToolTip(
+      "A 4D prior's time point. With as many time points as the study it follows the study's "
+      "time slider (the same index); otherwise it shows the one chosen here");
+  priorTimeBox_->setVisible(false);  // a 3D prior has none
+  connect(priorTimeBox_, &QSpinBox::valueChanged, this, [this](int t) {
+    priorTime_.setOwn(t);
+    if (study_.comparison) study_.comparison->priorTimePoint = priorTime_.own();
+    followStudyTime();
+  });
+  bar->addWidget(priorTimeBox_);
   bar->addStretch(1);
   bar->addWidget(button("Close compare", "compareClose", "Back to the four views",
                         [this] { emit closeRequested(); }));
@@ -136,7 +151,11 @@ CompareView::CompareView(AppModels& study, RenderScheduler& studyScheduler, QWid
   layout->addLayout(columns, 1);
   placeColumns();
 
-  docConnection_ = study_.document.changed.connect([this] { refreshGeometry(); });
+  docConnection_ = study_.document.changed.connect([this] {
+    refreshGeometry();
+    followStudyTime();
+  });
+  timeConnection_ = study_.document.timeChanged.connect([this] { followStudyTime(); });
   modelConnection_ = comparison_.changed.connect([this] { refreshStatus(); });
   link_ = std::make_unique<ComparisonLink>(comparison_, study_.crosshair, prior_->crosshair,
                                            &study_.windowLevel, &prior_->windowLevel);
@@ -160,6 +179,7 @@ void CompareView::hideEvent(QHideEvent* e) {
 
 CompareView::~CompareView() {
   study_.document.changed.disconnect(docConnection_);
+  study_.document.timeChanged.disconnect(timeConnection_);
   comparison_.changed.disconnect(modelConnection_);
   link_.reset();
   renderLink_.reset();
@@ -183,16 +203,38 @@ void CompareView::placeColumns() {
 
 void CompareView::setPrior(std::shared_ptr<const Volume> prior, const QString& name) {
   if (!prior) return;
-  prior_->crosshair.setGeometry(prior->dims, prior->spacingMm, prior->direction);
-  const InitialWindow w = initialWindow(*prior);
+  setPrior(VolumeSeries{std::move(prior)}, name, 0);
+}
+
+void CompareView::setPrior(VolumeSeries series, const QString& name, int ownTime) {
+  if (series.empty() || !series.front()) return;
+  const Volume& first = *series.front();  // the time points share one geometry
+  prior_->crosshair.setGeometry(first.dims, first.spacingMm, first.direction);
+  const InitialWindow w = initialWindow(first);
   prior_->windowLevel.reset(w.wl, w.source);
   if (renderLink_) renderLink_->setLookLinked(lookBox_->isChecked());  // the study's look
-  prior_->document.set(std::move(prior), name.toStdString());
+  priorTime_.setCount(int(series.size()));
+  priorTime_.setOwn(ownTime);
+  priorTime_.setMain(study_.document.timePoint(), study_.document.timePoints());
+  prior_->document.setSeries(std::move(series), name.toStdString(), priorTime_.shown());
   comparison_.clearPairs();
   comparison_.clearAlignment();
   history_.clear();
   refreshMoveButtons();
   refreshGeometry();
+  followStudyTime();
+}
+
+void CompareView::followStudyTime() {
+  if (prior_->document.empty()) return;
+  showFollowedTime(prior_->document, priorTime_, study_.document);
+  const QSignalBlocker block(priorTimeBox_);
+  priorTimeBox_->setVisible(priorTime_.count() > 1);
+  priorTimeBox_->setRange(0, priorTime_.count() - 1);
+  priorTimeBox_->setValue(priorTime_.shown());
+  priorTimeBox_->setSuffix(priorTime_.follows() ? QString(" (follows the study)")
+                                                : QString(" of 0-%1").arg(priorTime_.count() - 1));
+  priorTimeBox_->setEnabled(!priorTime_.follows());
 }
 
 void CompareView::refreshGeometry() {

@@ -24,6 +24,7 @@
 class QCheckBox;
 class QLabel;
 class QPushButton;
+class QSpinBox;
 
 namespace voxray::ui {
 
@@ -48,6 +49,11 @@ class CompareView : public QWidget {
 
   // The prior in the right column; linking starts when the model says so.
   void setPrior(std::shared_ptr<const Volume> prior, const QString& name);
+  // A 4D prior: every time point; OWNTIME is shown while it does not follow the study's time
+  // slider (time_follow.h: it follows when both have as many time points).
+  void setPrior(VolumeSeries series, const QString& name, int ownTime = 0);
+  QSpinBox* priorTimeBox() const { return priorTimeBox_; }
+  const TimeFollow& priorTime() const { return priorTime_; }
   bool hasPrior() const { return !prior_->document.empty(); }
   SliceView& fixedView() { return *fixedView_; }
   SliceView& movingView() { return *movingView_; }
@@ -90,6 +96,7 @@ class CompareView : public QWidget {
   void refreshGeometry();  // either volume changed
   void refreshStatus();
   void placeColumns();
+  void followStudyTime();  // the prior's time point by priorTime_, and the box
   // compare_move.cpp: a Move prior drag in a slice view (true: the event was taken).
   bool moveDrag(SliceView& view, QEvent* e);
   ScreenPlane screenPlane(SliceView& view, ComparisonModel::Side side) const;
@@ -110,6 +117,8 @@ class CompareView : public QWidget {
   QLabel *fixedName_, *movingName_, *status_;
   QCheckBox *linkBox_, *wlBox_, *lookBox_;
   QPushButton *moveButton_, *undoButton_, *redoButton_;
+  QSpinBox* priorTimeBox_;
+  TimeFollow priorTime_;
   bool moveMode_ = false;
   PriorMoveHistory history_;
   // The Move prior drag under way: where it started and what it started from.
@@ -125,7 +134,7 @@ class CompareView : public QWidget {
   bool swapped_ = false;
   int shown_ = 0;
   QString message_;  // the last alignment's outcome
-  int docConnection_ = 0, modelConnection_ = 0;
+  int docConnection_ = 0, modelConnection_ = 0, timeConnection_ = 0;
 };
 
 }  // namespace voxray::ui

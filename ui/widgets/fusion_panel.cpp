@@ -11,6 +11,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include "coupling.h"
@@ -54,6 +55,12 @@ FusionPanel::FusionPanel(FusionModel& fusion, QWidget* parent) : QWidget(parent)
   opacity_->setObjectName("fusionOpacity");
   opacity_->setRange(0, 100);
   opacity_->setToolTip("Opacity of the overlay over the slices (and its peak opacity in 3D)");
+  time_ = new QSpinBox;
+  time_->setObjectName("fusionTime");
+  time_->setKeyboardTracking(false);
+  time_->setToolTip(
+      "A 4D overlay's time point. With as many time points as the study it follows the study's "
+      "time slider (the same index); otherwise it shows the one chosen here");
   error_ = new QLabel;
   error_->setObjectName("fusionError");
   error_->setWordWrap(true);
@@ -64,6 +71,7 @@ FusionPanel::FusionPanel(FusionModel& fusion, QWidget* parent) : QWidget(parent)
   form->addRow("Window low", lo_);
   form->addRow("Window high", hi_);
   form->addRow("Opacity", opacity_);
+  form->addRow("Time point", time_);
   layout->addWidget(name_);
   layout->addWidget(open);
   layout->addWidget(remove);
@@ -75,6 +83,7 @@ FusionPanel::FusionPanel(FusionModel& fusion, QWidget* parent) : QWidget(parent)
   connect(lo_, &QDoubleSpinBox::valueChanged, this, &FusionPanel::apply);
   connect(hi_, &QDoubleSpinBox::valueChanged, this, &FusionPanel::apply);
   connect(opacity_, &QSlider::valueChanged, this, &FusionPanel::apply);
+  connect(time_, &QSpinBox::valueChanged, this, [this](int t) { fusion_.setOwnTimePoint(t); });
   onModelChange<>(this, fusion_.changed, [this] { showModel(); });
   showModel();
 }
@@ -84,7 +93,14 @@ void FusionPanel::showModel() {
   for (QWidget* w : std::initializer_list<QWidget*>{on_, map_, lo_, hi_, opacity_})
     w->setEnabled(any);
   const FusionSettings& s = fusion_.settings();
-  const QSignalBlocker b1(on_), b2(map_), b3(lo_), b4(hi_), b5(opacity_);
+  const QSignalBlocker b1(on_), b2(map_), b3(lo_), b4(hi_), b5(opacity_), b6(time_);
+  const TimeFollow& t = fusion_.time();
+  time_->setRange(0, t.count() - 1);
+  time_->setValue(t.shown());
+  time_->setSuffix(t.follows()     ? QString(" (follows the study)")
+                   : t.count() > 1 ? QString(" of 0-%1").arg(t.count() - 1)
+                                   : QString());
+  time_->setEnabled(any && t.count() > 1 && !t.follows());
   QString unit;
   if (any) {
     unit = " " + QString::fromStdString(fusionUnit(*fusion_.overlay()));
@@ -125,9 +141,10 @@ OverlayLoader::OverlayLoader(AppModels& models, QWidget* dialogParent)
   connect(loader_, &LoadController::loaded, this,
           [this](VolumeSeries series, const QString& name, const QString&) {
             if (series.empty()) return;
-            // A 4D overlay shows its first time point (the 3D view's overlay is one volume).
-            models_.fusion.setOverlay(series.front(), name.toStdString(),
-                                      models_.document.volume().get());
+            // A 4D overlay: every time point, shown by the rule of time_follow.h.
+            models_.fusion.setMainTime(models_.document.timePoint(), models_.document.timePoints());
+            models_.fusion.setOverlaySeries(std::move(series), name.toStdString(),
+                                            models_.document.volume().get());
             models_.fusion.setSource(sourcePath_, sourceFlags_);
             QStringList warnings;
             for (const std::string& w : models_.fusion.warnings())

@@ -17,6 +17,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSlider;
+class QSpinBox;
 
 namespace voxray::ui {
 
@@ -32,6 +33,8 @@ class FusionPanel : public QWidget {
   QDoubleSpinBox* loBox() const { return lo_; }
   QDoubleSpinBox* hiBox() const { return hi_; }
   QSlider* opacitySlider() const { return opacity_; }
+  // A 4D overlay's own time point (time_follow.h): off while it follows the study's.
+  QSpinBox* timeBox() const { return time_; }
 
  signals:
   void openRequested();  // the "Open overlay volume…" button
@@ -47,6 +50,7 @@ class FusionPanel : public QWidget {
   QComboBox* map_;
   QDoubleSpinBox *lo_, *hi_;
   QSlider* opacity_;
+  QSpinBox* time_;
 };
 
 // Loads an overlay on a load thread of its own (the study's loader stays free) and makes it

@@ -44,8 +44,14 @@ void MainWindow::wireFusion() {
   connect(overlayLoader_, &OverlayLoader::failed, this,
           [this](const QString& m) { showError("Cannot open the overlay", m); });
   // Another study under the overlay: its Frame of Reference is checked again.
-  onModelChange<>(this, models_.document.changed,
-                  [this] { models_.fusion.setBase(models_.document.volume().get()); });
+  onModelChange<>(this, models_.document.changed, [this] {
+    models_.fusion.setMainTime(models_.document.timePoint(), models_.document.timePoints());
+    models_.fusion.setBase(models_.document.volume().get());
+  });
+  // A 4D overlay follows the study's time slider (time_follow.h's rule).
+  onModelChange<>(this, models_.document.timeChanged, [this] {
+    models_.fusion.setMainTime(models_.document.timePoint(), models_.document.timePoints());
+  });
   // The 3D view raycasts the overlay in the same pass (the engine's fused dvr and mip).
   onModelChange<>(this, models_.fusion.changed, [this] {
     const FusionModel& f = models_.fusion;
@@ -72,10 +78,12 @@ void MainWindow::wireCompare() {
             if (series.empty()) return;
             // A session's alignment of this prior comes back after setPrior (which resets it).
             const auto saved = models_.comparison;
+            const bool same = saved && saved->priorPath == input.toStdString();
+            const int ownTime = same ? saved->priorTimePoint : 0;  // a 4D prior's, if saved
             setCompareMode(true);
-            models_.comparison = Session::Comparison{input.toStdString(), std::nullopt};
-            compare_->setPrior(series.front(), name);  // a 4D prior: its first time point
-            if (saved && saved->priorPath == input.toStdString() && saved->movingToFixed)
+            models_.comparison = Session::Comparison{input.toStdString(), std::nullopt, ownTime};
+            compare_->setPrior(std::move(series), name, ownTime);
+            if (same && saved->movingToFixed)
               compare_->comparison().setMovingToFixed(*saved->movingToFixed);  // checked rigid
             statusBar()->showMessage(compare_->statusText(), 30000);
           });
