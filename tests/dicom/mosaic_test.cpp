@@ -121,8 +121,8 @@ std::string badMosaic(std::optional<int> mrHeader, std::optional<int> csa, bool 
 
 TEST(Mosaic, AWrongNumberOfImagesInMosaicIsRefusedNamingIt) {
   EXPECT_THAT(badMosaic(0, std::nullopt),
-              testing::HasSubstr("(0019,100A) NumberOfImagesInMosaic is 0; a mosaic holds 1 "
-                                 "slice or more"));
+              testing::HasSubstr("1 file(s) skipped: a Siemens mosaic whose (0019,100A) "
+                                 "NumberOfImagesInMosaic is 0; a mosaic holds 1 slice or more"));
   // 4 x 4 tiles of 40 x 32: 17 images would need 5 x 5 tiles, which 160 x 128 does not hold.
   EXPECT_THAT(badMosaic(17, std::nullopt),
               testing::HasSubstr("(0019,100A) NumberOfImagesInMosaic is 17, which Siemens tiles "

@@ -121,27 +121,27 @@ MosaicAttributes readMosaicAttributes(DcmItem* ds, const std::string& imageType)
 std::string splitMosaic(const FrameHeader& m, const MosaicAttributes& a,
                         std::vector<FrameHeader>& out) {
   if (!a.images)
-    return "is a Siemens mosaic (Image Type MOSAIC) without NumberOfImagesInMosaic "
+    return "a Siemens mosaic (Image Type MOSAIC) without NumberOfImagesInMosaic "
            "((0019,100A) or the CSA image header (0029,1010)): how many slices it holds is "
            "unknown; convert it with the scanner's or dcm2niix's tools";
   const int n = *a.images;
   const std::string said = a.imagesFrom + " is " + std::to_string(n);
-  if (n < 1) return "is a Siemens mosaic whose " + said + "; a mosaic holds 1 slice or more";
+  if (n < 1) return "a Siemens mosaic whose " + said + "; a mosaic holds 1 slice or more";
   const int across = int(std::ceil(std::sqrt(double(n)) - 1e-9));
   const std::string image = std::to_string(m.columns) + "x" + std::to_string(m.rows);
   if (across > m.rows || across > m.columns)
-    return "is a Siemens mosaic whose " + said + ": more tiles (" + std::to_string(across) + " x " +
+    return "a Siemens mosaic whose " + said + ": more tiles (" + std::to_string(across) + " x " +
            std::to_string(across) + ") than the " + image + " image has pixels";
   if (m.rows % across != 0 || m.columns % across != 0)
-    return "is a Siemens mosaic whose " + said + ", which Siemens tiles " + std::to_string(across) +
+    return "a Siemens mosaic whose " + said + ", which Siemens tiles " + std::to_string(across) +
            " x " + std::to_string(across) + ", but the " + image +
            " image does not divide into that square tiling; the attribute or the image is wrong";
   if (!m.hasPosition || !m.hasOrientation || !m.hasPixelSpacing)
-    return "is a Siemens mosaic without Image Position, Image Orientation or Pixel Spacing: "
+    return "a Siemens mosaic without Image Position, Image Orientation or Pixel Spacing: "
            "its slices cannot be placed";
   const double spacing = m.spacingBetweenSlices > 0 ? m.spacingBetweenSlices : m.sliceThickness;
   if (!(spacing > 0))
-    return "is a Siemens mosaic without Spacing Between Slices (0018,0088) or Slice Thickness "
+    return "a Siemens mosaic without Spacing Between Slices (0018,0088) or Slice Thickness "
            "(0018,0050): the distance between its slices is unknown";
   FrameHeader tile = m;
   tile.rows = m.rows / across;
