@@ -128,6 +128,12 @@ TEST(Mosaic, AWrongNumberOfImagesInMosaicIsRefusedNamingIt) {
               testing::HasSubstr("(0019,100A) NumberOfImagesInMosaic is 17, which Siemens tiles "
                                  "5 x 5, but the 160x128 image does not divide into that square "
                                  "tiling"));
+  EXPECT_THAT(badMosaic(65535, std::nullopt),
+              testing::HasSubstr("(0019,100A) NumberOfImagesInMosaic is 65535: more tiles (256 x "
+                                 "256) than the 160x128 image has pixels"));
+  EXPECT_THAT(badMosaic(std::nullopt, 200000, false),
+              testing::HasSubstr("NumberOfImagesInMosaic of the CSA image header (0029,1010) is "
+                                 "200000: more slices than any real series"));
   EXPECT_THAT(badMosaic(40000, std::nullopt),
               testing::HasSubstr("NumberOfImagesInMosaic is 40000: more tiles (200 x 200) than "
                                  "the 160x128 image has pixels"));

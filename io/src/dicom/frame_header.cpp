@@ -14,6 +14,7 @@
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmdata/dcxfer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -272,6 +273,13 @@ ScanResult headersOf(DcmFileFormat& file, const std::string& failure,
   h.fileFrames = frames;
   h.perFrameGroups = shared || perFrame;
   const MosaicAttributes mosaic = readMosaicAttributes(ds, h.imageType);
+  // Each tile becomes an image: as many as the frames of a multi-frame file may be at most.
+  if (mosaic.images && int64_t(frames) * int64_t(std::max(1, *mosaic.images)) > kMaxFramesPerFile) {
+    why = "a Siemens mosaic whose " + mosaic.imagesFrom + " is " + std::to_string(*mosaic.images) +
+          (frames > 1 ? " in each of " + std::to_string(frames) + " frames" : std::string()) +
+          ": more slices than any real series; the header is damaged";
+    return ScanResult::NoImage;
+  }
   std::vector<FrameHeader> images;
   for (int f = 0; f < frames; ++f) {
     FrameHeader fh = h;
