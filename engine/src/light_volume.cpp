@@ -76,7 +76,7 @@ void LightVolume::prepare(const FrameSetup& s, RaycastParams& k) const {
 bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::string& options,
                          int model, bool iso, const cl::Buffer& params, const cl::Buffer& lut,
                          const cl::Buffer* leap, const RaycastParams& k,
-                         const std::vector<glm::vec4>& table) {
+                         const std::vector<glm::vec4>& table, bool holdLight) {
   // What the sigma grid depends on: the reference step, the clip box, and for iso the iso
   // range, else where the table sits in stored units and its opacities; the grid then adds
   // the model and the march, and the light for shadows only.
@@ -89,9 +89,16 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
     for (const glm::vec4& e : table) sigmaKey.push_back(e.a);
   }
   std::vector<float> key = {float(model), k.light_march.s[0], k.light_march.s[1]};
-  if (model == 1) key.insert(key.end(), {k.light_v.s[0], k.light_v.s[1], k.light_v.s[2]});
+  std::vector<float> lightKey;
+  if (model == 1) lightKey = {k.light_v.s[0], k.light_v.s[1], k.light_v.s[2]};
   bool sigmaKept = sigmaKey == sigmaKey_;
-  if (sigmaKept && key == key_) return false;
+  if (sigmaKept && key == key_) {
+    if (lightKey == lightKey_) return false;
+    if (holdLight) {  // a drag: the grid of the light it was built for
+      ++heldFrames_;
+      return false;
+    }
+  }
   auto start = std::chrono::steady_clock::now();
   clCall([&] {
     if (!sigma_()) {
@@ -162,6 +169,7 @@ bool LightVolume::update(ContextImpl& cl, const DeviceVolume& dev, const std::st
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   sigmaKey_ = std::move(sigmaKey);
   key_ = std::move(key);
+  lightKey_ = std::move(lightKey);
   ++builds_;
   return true;
 }

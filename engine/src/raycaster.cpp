@@ -33,7 +33,8 @@ struct Raycaster::Impl {
   cl::Buffer outBuffer;
   size_t outCapacity = 0;
   EmptySpace space;
-  LightVolume light;  // shadows, ao (issue 15): the light grid behind the table
+  LightVolume light;       // shadows, ao (issue 15): the light grid behind the table
+  bool holdLight = false;  // holdLightGrid: keep the grid while only the light moves
   // The frame's table buffer (DeviceFrame::lutAllocations) the current grid was copied
   // into, -1: none; and where in it (behind the tables, whose bytes change with the gradient
   // opacity).
@@ -305,6 +306,12 @@ int Raycaster::isoBlockScans() const { return impl_->space.isoBlockScans(); }
 int Raycaster::lightingBuilds() const { return impl_->light.builds(); }
 
 int Raycaster::lightingSigmaBuilds() const { return impl_->light.sigmaBuilds(); }
+
+void Raycaster::holdLightGrid(bool hold) { impl_->holdLight = hold; }
+
+bool Raycaster::lightGridHeld() const { return impl_->holdLight; }
+
+int Raycaster::lightingHeldFrames() const { return impl_->light.heldFrames(); }
 
 std::shared_ptr<DeviceFrame> Raycaster::deviceFrame() const { return impl_->frame; }
 
@@ -581,7 +588,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
               m.opts.emptySpaceSkipping && p.mode == Mode::Dvr && !sw.LABELS && !sw.OVERLAY
                   ? &m.space.leap()
                   : nullptr,
-              k, s.lut.rgba)) {
+              k, s.lut.rgba, m.holdLight)) {
         lightingMs = m.light.lastMs();
         m.lightCopiedInto = -1;
       }
