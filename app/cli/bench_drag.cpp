@@ -94,9 +94,11 @@ DragReplay replayDrag(Raycaster& rc, const RenderParams& base, const glm::ivec2&
   d.lightingBuilds = rc.lightingBuilds() - builtBefore;
   rc.holdLightGrid(false);
   if (lit && base.lighting == Lighting::Shadows && motion == DragMotion::Rotation) {
-    // Each sampled frame held on the grid of frame 0's light, then rebuilt for its own.
+    // Each sampled frame held on the grid of frame 0's light, then rebuilt for its own: 10,
+    // 30 and 44 degrees into the drag (the raycaster rebuilds a held grid past 45 degrees of
+    // the light's turn, so 44 is about the worst a drag shows).
     Image held, fresh, phong;
-    for (int i : {5, 15, 30, 45}) {
+    for (int i : {5, 15, 22}) {
       if (i >= int(planned.size())) break;
       const RenderParams& p = planned[size_t(i)];
       rc.render(planned[0], image);  // the grid of the drag's start

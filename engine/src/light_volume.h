@@ -31,7 +31,8 @@ class LightVolume {
   // the wall time of the build (kernel compilation included the first time). leap: the
   // frame's macro-cell occupancy when it follows this table's opacities (dvr with empty-space
   // skipping), so that empty cells are not read; else nullptr. holdLight: keep a grid that
-  // differs from the frame's only by the light (Raycaster::holdLightGrid, a drag).
+  // differs from the frame's only by the light (Raycaster::holdLightGrid, a drag) while that
+  // light is within kHeldLightDeg of the grid's, seen from the volume's centre.
   bool update(ContextImpl& cl, const DeviceVolume& dev, const std::string& options, int model,
               bool iso, const cl::Buffer& params, const cl::Buffer& lut, const cl::Buffer* leap,
               const RaycastParams& k, const std::vector<glm::vec4>& table, bool holdLight);
@@ -53,7 +54,7 @@ class LightVolume {
   int cell_ = 1;
   size_t points_ = 0;
   double minSpacingMm_ = 1.0, shadowOffsetMm_ = 1.0;
-  glm::dvec3 spacingMm_{1.0};
+  glm::dvec3 spacingMm_{1.0}, centre_{0.0};  // centre: the volume's, in voxels
   cl::Buffer sigma_, lattice_, grid_;
   // What the grid and its sigma were built for, the light apart (shadows only); equal keys
   // skip the work.

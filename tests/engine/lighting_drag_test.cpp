@@ -117,6 +117,30 @@ TEST(LightingDrag, AHeldGridIsNotRebuiltAndTheReleasedFrameIsTheStillFrame) {
   EXPECT_EQ(rc.lightingHeldFrames(), 11);  // the drag's 10 and lastHeld
 }
 
+TEST(LightingDrag, AHeldGridIsRebuiltOnceItsLightTurnedPast45Degrees) {
+  // Past ~45 degrees a held grid's shadows are further from the converged frame than none
+  // (light_volume.cpp, kHeldLightDeg): the drag then rebuilds it for the light it has.
+  Raycaster rc(test::pocl(), ballOnPlane());
+  const RenderParams still = ballScene();
+  rc.render(still);
+  rc.holdLightGrid(true);
+  rc.render(turned(still, 20.0));  // the light less than 20 degrees from the grid's: held
+  EXPECT_EQ(rc.lightingBuilds(), 1);
+  rc.render(turned(still, 120.0));  // a third of a turn: the light over 45 degrees away
+  EXPECT_EQ(rc.lightingBuilds(), 2);
+  EXPECT_EQ(rc.lightingHeldFrames(), 1);
+  rc.render(turned(still, 130.0));  // held again, on the new grid
+  EXPECT_EQ(rc.lightingBuilds(), 2);
+  EXPECT_EQ(rc.lightingHeldFrames(), 2);
+  // The rebuilt grid is the one a still frame there builds: the held frame 10 degrees on
+  // equals a fresh raycaster's held frame from the same start.
+  const Image held = rc.render(turned(still, 130.0));
+  Raycaster fresh(test::pocl(), ballOnPlane());
+  fresh.render(turned(still, 120.0));
+  fresh.holdLightGrid(true);
+  EXPECT_EQ(test::maxDiff(held, fresh.render(turned(still, 130.0))), 0);
+}
+
 TEST(LightingDrag, AHeldGridsErrorIsBoundedAndBelowDroppingTheShadows) {
   // The ball's shadow on the plane, the grid held 10 and 30 degrees of the light's turn
   // (5 and 15 drag frames of the 3D view's 2 degrees). Measured on PoCL (AVX-512): 33.1 and
