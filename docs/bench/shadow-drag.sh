@@ -23,6 +23,6 @@ for input in "$ct400" "$cthead $raw"; do
   # shellcheck disable=SC2086
   VOXRAY_DEVICE=${DEVICE:-cpu} "$cli" bench $input --mode dvr --preset CT-Bone \
     --quality balanced --sizes 1024x768 --frames 2 --warmup 1 --no-count --lighting shadows \
-    --drag "$frames" 2>/dev/null | sed -n '/^ *[0-9].*ms\|replay/,/^device/p'
+    --drag "$frames" 2>/dev/null | sed -n '/^input/,/^memory/p'
 done
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
