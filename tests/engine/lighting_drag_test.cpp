@@ -115,6 +115,13 @@ TEST(LightingDrag, AHeldGridIsNotRebuiltAndTheReleasedFrameIsTheStillFrame) {
   rc.render(table);
   EXPECT_EQ(rc.lightingBuilds(), 4);
   EXPECT_EQ(rc.lightingHeldFrames(), 11);  // the drag's 10 and lastHeld
+  // Dragging the light itself (its place relative to the camera) rebuilds: its shadows are
+  // what that drag is for.
+  RenderParams light = table;
+  light.light.position.x -= 0.2;
+  rc.render(light);
+  EXPECT_EQ(rc.lightingBuilds(), 5);
+  EXPECT_EQ(rc.lightingHeldFrames(), 11);
 }
 
 TEST(LightingDrag, AHeldGridIsRebuiltOnceItsLightTurnedPast45Degrees) {

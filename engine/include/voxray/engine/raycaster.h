@@ -150,8 +150,9 @@ class Raycaster : public Renderer {
   // light or model change alone reuses it).
   int lightingSigmaBuilds() const;
   // A drag with the light following the camera (issue 40 item 4): while held, a shadows
-  // grid is kept when only the light moved, so a drag frame costs what phong does instead of a
-  // grid build per frame (a table, clip box or model change still rebuilds). Such a frame is
+  // grid is kept when the light moved only with the camera, so a drag frame costs what phong
+  // does instead of a grid build per frame (a table, clip box, model or camera-relative light
+  // change still rebuilds, and so does a light turned 45 degrees from the grid's). Such a frame is
   // lit by the current light, its shadows those of the light where the grid was built (the
   // drag's start: shadows stay put on the anatomy while the highlights follow the camera).
   // Releasing changes nothing by itself; the next frame rebuilds for its light and is then
