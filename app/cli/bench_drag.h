@@ -36,6 +36,14 @@ struct DragChange {
   double scale = 0, stepVoxels = 0;
 };
 
+// A drag frame lit through the light grid held from the drag's start (Raycaster::
+// holdLightGrid) against the same frame with the grid rebuilt for its own light (what the
+// frame converges to on release), and the same frame in phong (no shadows at all) against it.
+struct HeldGridError {
+  double degrees = 0;  // the camera's (and the light's) turn since the grid was built
+  double psnrDb = 0, phongPsnrDb = 0;
+};
+
 struct DragReplay {
   std::vector<double> ms;        // each drag frame's time, 2-degree steps of the orbit
   std::vector<int> widths;       // and its width
@@ -43,6 +51,12 @@ struct DragReplay {
   // The empty-space occupancy's (re)classifications during the drag (Raycaster::
   // classifications): 0 when the tables were not rebuilt for any move.
   int classifications = 0;
+  // Lighting shadows or ao: the light grid's builds after the first frame (0 when the grid
+  // held through the drag), each frame's time again in phong at the same setting (rendered
+  // right after it, so that both see the same load) and the held grid's error.
+  int lightingBuilds = 0;
+  std::vector<double> phongMs;
+  std::vector<HeldGridError> heldErrors;
   DragMotion motion = DragMotion::Rotation;
   // The first frame rendered with the controller's own setting (0 when it never changed:
   // then every frame counts as adapted).
@@ -51,6 +65,10 @@ struct DragReplay {
 
 // Renders FRAMES drag frames of BASE in a view of VIEW pixels toward TARGETFPS: the camera
 // round ORBIT, or (DragMotion::ClipFace) the clip box by clipDragBox with the camera still.
+// With lighting shadows or ao the light grid is held through the drag as the workstation
+// holds it, each frame is timed in phong too, and (a rotation with shadows) the held grid's
+// error is measured after the timed frames, 10, 30 and 44 degrees into the drag; RC is left
+// released.
 DragReplay replayDrag(Raycaster& rc, const RenderParams& base, const glm::ivec2& view,
                       double minSpacingMm, Orbit orbit, int frames, double targetFps,
                       DragMotion motion = DragMotion::Rotation);

@@ -1,6 +1,7 @@
 #include "device_volume.h"
 
 #include <algorithm>
+#include <atomic>
 #include <optional>
 #include <string>
 
@@ -16,8 +17,15 @@ std::string mib(size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >>
 
 }  // namespace
 
+namespace {
+std::atomic<int> uploads{0};  // deviceVolumeUploads()
+}  // namespace
+
+int deviceVolumeUploads() { return uploads.load(); }
+
 void DeviceVolume::upload(ContextImpl& cl, const Volume& volume, VolumeStorage storage,
                           size_t maxSlabBytes) {
+  ++uploads;
   const DeviceInfo& d = cl.info;
   const glm::ivec3 n = volume.dims;
   std::string dims = std::to_string(n.x) + "x" + std::to_string(n.y) + "x" + std::to_string(n.z);

@@ -30,16 +30,19 @@ class LightVolume {
   // iso range (k.values.x .. y), not the table. Returns whether it rebuilt; then lastMs() is
   // the wall time of the build (kernel compilation included the first time). leap: the
   // frame's macro-cell occupancy when it follows this table's opacities (dvr with empty-space
-  // skipping), so that empty cells are not read; else nullptr.
+  // skipping), so that empty cells are not read; else nullptr. holdLight: keep a grid that
+  // differs from the frame's only by the light (Raycaster::holdLightGrid, a drag) while that
+  // light is within kHeldLightDeg of the grid's, seen from the volume's centre.
   bool update(ContextImpl& cl, const DeviceVolume& dev, const std::string& options, int model,
               bool iso, const cl::Buffer& params, const cl::Buffer& lut, const cl::Buffer* leap,
-              const RaycastParams& k, const std::vector<glm::vec4>& table);
+              const RaycastParams& k, const std::vector<glm::vec4>& table, bool holdLight);
   // Copies the grid into buf at byte offset (the raycaster's table buffer, behind the table).
   void copyInto(ContextImpl& cl, const cl::Buffer& buf, size_t offset) const;
   size_t bytes() const { return points_ * sizeof(float); }
   int cell() const { return cell_; }
   int builds() const { return builds_; }
   int sigmaBuilds() const { return sigmaBuilds_; }
+  int heldFrames() const { return heldFrames_; }
   double lastMs() const { return lastMs_; }
 
  private:
@@ -51,11 +54,12 @@ class LightVolume {
   int cell_ = 1;
   size_t points_ = 0;
   double minSpacingMm_ = 1.0, shadowOffsetMm_ = 1.0;
-  glm::dvec3 spacingMm_{1.0};
+  glm::dvec3 spacingMm_{1.0}, centre_{0.0};  // centre: the volume's, in voxels
   cl::Buffer sigma_, lattice_, grid_;
-  // What the grid and its sigma were built for; equal keys skip the work.
-  std::vector<float> key_, sigmaKey_;
-  int builds_ = 0, sigmaBuilds_ = 0;
+  // What the grid and its sigma were built for, the light apart (shadows only); equal keys
+  // skip the work.
+  std::vector<float> key_, lightKey_, sigmaKey_;
+  int builds_ = 0, sigmaBuilds_ = 0, heldFrames_ = 0;
   double lastMs_ = 0.0;
 };
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "device_frame.h"
@@ -33,7 +34,12 @@ struct Raycaster::Impl {
   cl::Buffer outBuffer;
   size_t outCapacity = 0;
   EmptySpace space;
-  LightVolume light;  // shadows, ao (issue 15): the light grid behind the table
+  LightVolume light;       // shadows, ao (issue 15): the light grid behind the table
+  bool holdLight = false;  // holdLightGrid: keep the grid while only the light moves
+  // The camera-relative light (followCamera) the grid was last built for: a drag holds the
+  // grid only while the light keeps that place (a camera drag), not while the light itself
+  // is dragged (its shadows are what that drag is for).
+  std::optional<glm::dvec3> lightBuiltFor;
   // The frame's table buffer (DeviceFrame::lutAllocations) the current grid was copied
   // into, -1: none; and where in it (behind the tables, whose bytes change with the gradient
   // opacity).
@@ -305,6 +311,12 @@ int Raycaster::isoBlockScans() const { return impl_->space.isoBlockScans(); }
 int Raycaster::lightingBuilds() const { return impl_->light.builds(); }
 
 int Raycaster::lightingSigmaBuilds() const { return impl_->light.sigmaBuilds(); }
+
+void Raycaster::holdLightGrid(bool hold) { impl_->holdLight = hold; }
+
+bool Raycaster::lightGridHeld() const { return impl_->holdLight; }
+
+int Raycaster::lightingHeldFrames() const { return impl_->light.heldFrames(); }
 
 std::shared_ptr<DeviceFrame> Raycaster::deviceFrame() const { return impl_->frame; }
 
@@ -581,8 +593,10 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
               m.opts.emptySpaceSkipping && p.mode == Mode::Dvr && !sw.LABELS && !sw.OVERLAY
                   ? &m.space.leap()
                   : nullptr,
-              k, s.lut.rgba)) {
+              k, s.lut.rgba,
+              m.holdLight && p.light.followCamera && m.lightBuiltFor == p.light.position)) {
         lightingMs = m.light.lastMs();
+        m.lightBuiltFor = p.light.followCamera ? std::optional(p.light.position) : std::nullopt;
         m.lightCopiedInto = -1;
       }
       if (m.lightCopiedInto != f.lutAllocations || m.lightCopiedAt != tableBytes)

@@ -7,8 +7,11 @@
 #include <QTemporaryDir>
 
 #include "movie_dialog.h"
+#include "movie_export.h"
 #include "qt_image.h"
 #include "slice_image.h"
+#include "voxray/engine/cl_context.h"
+#include "voxray/engine/raycaster.h"
 #include "voxray/io/image.h"
 #include "window_fixture.h"
 
@@ -89,6 +92,28 @@ class MovieExportTest : public QObject {
     QVERIFY(written.rgba == still->image.rgba);
     // Frame 1 is half a turn away: another image.
     QVERIFY(readImage(frame("orbit", 1).toStdString()).rgba != still->image.rgba);
+  }
+
+  // Issue 40 item 6: an orbit renders on the view's device volume (no second upload) and
+  // its frames are those of a raycaster of the export's own, byte for byte.
+  void orbitUploadsNoSecondVolume() {
+    const int before = deviceVolumeUploads();
+    auto d = makeDialog(0, 2, {96, 64});
+    QVERIFY(exportAndWait(*d, dir_.filePath("shared/")));
+    QCOMPARE(deviceVolumeUploads(), before);
+    MovieChoice c;
+    c.frames = 2;
+    c.size = {96, 64};
+    const Volume& v = *fixture_.models->document.volume();
+    const MoviePlan plan =
+        planMovie(c, fixture_.models->render, fixture_.models->windowLevel.value(), v,
+                  dir_.filePath("own/").toStdString());
+    ClContext ctx("cpu");
+    MovieFrames own(v, &ctx, plan);
+    QCOMPARE(deviceVolumeUploads(), before + 1);  // the export's own context, as before
+    for (int k = 0; k < 2; ++k)
+      QVERIFY2(readImage(frame("shared", k).toStdString()).rgba == own.frame(k).rgba,
+               qPrintable(QString("frame %1").arg(k)));
   }
 
   // Issue 41 item 8: the dialog offered 0.48 s of orbit; its defaults are one turn in 3 s.

@@ -41,7 +41,13 @@ int movieFrameCount(const MoviePlan& plan, const Volume& v) {
 }
 
 MovieFrames::MovieFrames(const Volume& v, ClContext* ctx, MoviePlan plan)
-    : v_(v), plan_(std::move(plan)) {
+    : MovieFrames(v, ctx, MovieRenderer{}, std::move(plan)) {}
+
+MovieFrames::MovieFrames(const Volume& v, MoviePlan plan, MovieRenderer render)
+    : MovieFrames(v, nullptr, std::move(render), std::move(plan)) {}
+
+MovieFrames::MovieFrames(const Volume& v, ClContext* ctx, MovieRenderer render, MoviePlan plan)
+    : v_(v), plan_(std::move(plan)), render_(std::move(render)) {
   if (v.voxelCount() == 0) throw inputError("the volume is empty: there is nothing to film");
   const int slices = plan_.cine ? cineSliceCount(v, plan_.view) : 0;
   count_ = movieFrameCount(plan_, v);
@@ -56,7 +62,7 @@ MovieFrames::MovieFrames(const Volume& v, ClContext* ctx, MoviePlan plan)
   }
   if (plan_.params.width <= 0 || plan_.params.height <= 0)
     throw inputError("--size: a movie needs a frame size such as 1024x768");
-  if (!plan_.cine) {
+  if (!plan_.cine && !render_) {
     if (!ctx) throw Error(Error::Kind::Internal, "an orbit movie needs an OpenCL context");
     raycaster_ = std::make_unique<Raycaster>(*ctx, v);
   }
@@ -88,7 +94,7 @@ RenderParams MovieFrames::params(int k) const {
 
 Image MovieFrames::frame(int k) {
   const RenderParams p = params(k);
-  if (!plan_.cine) return raycaster_->rendererFor(p).render(p);
+  if (!plan_.cine) return render_ ? render_(p) : raycaster_->rendererFor(p).render(p);
   // Over time: time point K at the middle slice; else slice K of the one volume.
   const Volume& v = plan_.timePoints ? (*plan_.timePoints)[size_t(k)] : v_;
   const int slices = cineSliceCount(v, plan_.view);

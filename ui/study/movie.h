@@ -62,10 +62,16 @@ MovieSize settleMovieSize(MoviePlan& plan, const Volume& v, MovieFormat format);
 // How many frames PLAN makes of V (a cine's 0: every slice of the view).
 int movieFrameCount(const MoviePlan& plan, const Volume& v);
 
+// Renders one orbit frame on a device that already holds the volume (the workstation's
+// RenderWorker::renderOnDevice: the 3D view's raycaster).
+using MovieRenderer = std::function<Image(const RenderParams&)>;
+
 class MovieFrames {
  public:
   // CTX renders orbits (unused for a cine; may be null then). V must outlive this.
   MovieFrames(const Volume& v, ClContext* ctx, MoviePlan plan);
+  // RENDER renders orbits instead of a raycaster of its own (no second upload of V).
+  MovieFrames(const Volume& v, MoviePlan plan, MovieRenderer render);
   ~MovieFrames();
   int count() const { return count_; }
   MovieSize size() const;
@@ -78,6 +84,8 @@ class MovieFrames {
   MoviePlan plan_;
   int count_ = 0;
   std::unique_ptr<Raycaster> raycaster_;
+  MovieRenderer render_;
+  MovieFrames(const Volume& v, ClContext* ctx, MovieRenderer render, MoviePlan plan);
 };
 
 struct MovieProgress {

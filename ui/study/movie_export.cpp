@@ -53,15 +53,18 @@ std::vector<std::string> existingMovieFiles(const std::string& path, int frames)
 
 void MovieExportTask::start(std::shared_ptr<const Volume> volume, const std::string& device,
                             MoviePlan plan, const std::string& path, MovieSettings settings,
-                            Events events) {
+                            Events events, MovieRenderer onDevice) {
   if (busy_.exchange(true)) return;
-  task_.start([this, volume, device, plan, path, settings, events] {
+  task_.start([this, volume, device, plan, path, settings, events, onDevice] {
     std::string error;
     bool cancelled = false;
     try {
       std::unique_ptr<ClContext> ctx;
-      if (!plan.cine) ctx = std::make_unique<ClContext>(device);
-      MovieFrames frames(*volume, ctx.get(), plan);
+      if (!plan.cine && !onDevice) ctx = std::make_unique<ClContext>(device);
+      std::unique_ptr<MovieFrames> made =
+          onDevice ? std::make_unique<MovieFrames>(*volume, plan, onDevice)
+                   : std::make_unique<MovieFrames>(*volume, ctx.get(), plan);
+      MovieFrames& frames = *made;
       writeMovie(
           frames, path, settings,
           [&](const MovieProgress& p) {

@@ -2,8 +2,10 @@
 // File > Export movie, without Qt: the dialog's choices, the plan they make from what the
 // view shows, and the export running as a BackgroundTask with progress, an estimate of the
 // time left and cancel. Frames are rendered at the chosen quality preset (reference by
-// default) whatever the view's interactive state, on an OpenCL context of the export's own:
-// the view keeps rendering while the movie is made.
+// default) whatever the view's interactive state: through the 3D view's renderer when the
+// caller gives one (RenderWorker::renderOnDevice: the volume already on the device, no second
+// upload; the view's frames go on between the movie's), else on an OpenCL context of the
+// export's own.
 #include <functional>
 #include <memory>
 #include <string>
@@ -52,9 +54,11 @@ class MovieExportTask {
   explicit MovieExportTask(BackgroundTask::Post post = {}) : task_(std::move(post)) {}
 
   // Renders PLAN of VOLUME into PATH on a thread of its own; DEVICE as ClContext takes it.
-  // Ignored while an export runs.
+  // ON_DEVICE, when set, renders the orbit's frames instead (with VOLUME on its device: no
+  // context of the export's own). Ignored while an export runs.
   void start(std::shared_ptr<const Volume> volume, const std::string& device, MoviePlan plan,
-             const std::string& path, MovieSettings settings, Events events);
+             const std::string& path, MovieSettings settings, Events events,
+             MovieRenderer onDevice = {});
   void cancel() { task_.cancel(); }
   bool busy() const { return busy_; }
   void wait() { task_.wait(); }

@@ -85,6 +85,25 @@ void RenderWorker::request(const RenderParams& params, bool interactive, int tag
   wake_.notify_all();
 }
 
+Image RenderWorker::renderOnDevice(const RenderParams& params, const Volume* volume) {
+  auto job = std::make_shared<OnDevice>();
+  job->params = params;
+  job->volume = volume;
+  std::future<Image> image = job->image.get_future();
+  {
+    std::lock_guard lock(mutex_);
+    if (task_.cancelled())
+      throw Error(Error::Kind::Device, "the 3D view's renderer has stopped: export again");
+    pendingOnDevice_.push_back(job);
+  }
+  wake_.notify_all();
+  try {
+    return image.get();
+  } catch (const std::future_error&) {  // the worker ended with the request still queued
+    throw Error(Error::Kind::Device, "the 3D view's renderer has stopped: export again");
+  }
+}
+
 void RenderWorker::requestBands(const RenderParams& params, std::vector<RowBand> bands) {
   {
     std::lock_guard lock(mutex_);
@@ -238,16 +257,21 @@ void RenderWorker::run() {
     std::optional<OverlayUpdate> overlayUpdate;
     std::optional<Request> req;
     std::vector<RenderParams> prepare;
+    std::shared_ptr<OnDevice> onDevice;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
                pendingSegmentation_ || pendingOverlay_ || (!pendingPrepare_.empty() && raycaster) ||
                (!pendingPreload_.empty() && raycaster) ||
-               (!pendingBackground_.empty() && raycaster);
+               (!pendingBackground_.empty() && raycaster) || !pendingOnDevice_.empty();
       });
       if (task_.cancelled()) return;
       if (raycaster) prepare = std::exchange(pendingPrepare_, {});
+      if (!pendingOnDevice_.empty()) {
+        onDevice = std::move(pendingOnDevice_.front());
+        pendingOnDevice_.erase(pendingOnDevice_.begin());
+      }
       nextVolume = std::move(pendingVolume_);
       sameSeries = pendingSameSeries_;
       pendingVolume_.reset();
@@ -390,7 +414,28 @@ void RenderWorker::run() {
         reportError(e.what(), false);
       }
     }
+    if (onDevice) {
+      // The raycaster that holds its volume, lit as a still frame: the image a raycaster of
+      // its own would render.
+      const auto u = std::find_if(uploaded.begin(), uploaded.end(), [&](const Uploaded& each) {
+        return each.volume.get() == onDevice->volume;
+      });
+      try {
+        if (u == uploaded.end())
+          throw Error(Error::Kind::Device,
+                      "the volume is no longer on the device (another study was opened): "
+                      "export again");
+        u->raycaster->holdLightGrid(false);
+        onDevice->image.set_value(
+            u->raycaster->rendererFor(onDevice->params).render(onDevice->params));
+      } catch (...) {
+        onDevice->image.set_exception(std::current_exception());
+      }
+    }
     if (!req || !raycaster) continue;
+    // A drag's frames keep the shadows grid of its start (issue 40 item 4); the first frame
+    // after it rebuilds for its light: the still frame as ever.
+    raycaster->holdLightGrid(req->interactive);
     const Volume* shown = nullptr;
     for (const Uploaded& u : uploaded)
       if (u.raycaster.get() == raycaster) shown = u.volume.get();

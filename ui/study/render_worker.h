@@ -8,6 +8,7 @@
 // arrive through its Post (the scheduler's GUI thread).
 #include <condition_variable>
 #include <functional>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -97,6 +98,13 @@ class RenderWorker {
   // posted through RenderCallbacks::background. A new call replaces the frames not yet
   // started (an empty list cancels them).
   void requestBackground(std::vector<std::pair<int, RenderParams>> frames);
+  // A frame of VOLUME (the one shown, or a time point on the device) for a caller on another
+  // thread (the movie export, issue 40 item 6): rendered on the render thread by the
+  // raycaster that holds VOLUME, between the view's frames (ahead of them, as an export), so
+  // that no second context uploads the volume again. Blocks until it is rendered; throws what
+  // the render throws, Error (Device) when VOLUME is not on the device (another study was
+  // opened) or the worker stopped. Never call it on the render thread.
+  Image renderOnDevice(const RenderParams& params, const Volume* volume);
   // Builds the kernel variants of PARAMS (frames likely soon: a drag, another mode) on a
   // low-priority thread of their own, in order, so that such a frame does not wait for the
   // compiler (issue 41 item 9: a variant took 2-3 s on PoCL). Frames render meanwhile. A new
@@ -154,9 +162,15 @@ class RenderWorker {
   std::optional<Request> pendingView_;    // latest view frame wins
   std::optional<Request> pendingExport_;  // exports are never replaced by view frames
   std::vector<std::pair<int, RenderParams>> pendingBackground_;  // in order
-  std::vector<RenderParams> pendingPrepare_;  // for the render thread: to options
-  std::vector<std::string> toBuild_;          // for the build thread: raycast options
-  BackgroundTask task_;                       // cancelled: the loop ends
+  struct OnDevice {                                              // a renderOnDevice call waiting
+    RenderParams params;
+    const Volume* volume = nullptr;
+    std::promise<Image> image;
+  };
+  std::vector<std::shared_ptr<OnDevice>> pendingOnDevice_;  // in order
+  std::vector<RenderParams> pendingPrepare_;                // for the render thread: to options
+  std::vector<std::string> toBuild_;                        // for the build thread: raycast options
+  BackgroundTask task_;                                     // cancelled: the loop ends
 };
 
 }  // namespace voxray

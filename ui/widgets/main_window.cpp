@@ -127,6 +127,9 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
           });
 
   movies_ = new MovieController(this);
+  // Orbit frames on the view's device volume (issue 40 item 6): no second upload.
+  movies_->setOnDevice(
+      [s = scheduler_](const RenderParams& p, const Volume* v) { return s->renderOnDevice(p, v); });
   connect(movies_, &MovieController::written, this,
           [this](const QString& path) { statusBar()->showMessage("Movie saved: " + path, 10000); });
   connect(movies_, &MovieController::cancelled, this,
@@ -182,6 +185,10 @@ QSize defaultWindowSize(QSize available) {
 
 MainWindow::~MainWindow() {
   qApp->removeEventFilter(this);
+  // An export renders through the scheduler's worker: it stops first (children go in the
+  // order they were made, the scheduler before the movie controller).
+  delete movies_;
+  movies_ = nullptr;
   delete historyListeners_;
 }
 

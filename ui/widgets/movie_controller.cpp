@@ -36,8 +36,11 @@ void MovieController::start(std::shared_ptr<const Volume> volume, const std::str
     else
       emit written(path);
   };
+  MovieRenderer onDevice;
+  if (onDevice_)
+    onDevice = [f = onDevice_, v = volume.get()](const RenderParams& p) { return f(p, v); };
   task_.start(std::move(volume), device, std::move(plan), path.toStdString(), settings,
-              std::move(events));
+              std::move(events), std::move(onDevice));
 }
 
 }  // namespace voxray::ui

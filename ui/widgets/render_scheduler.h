@@ -53,6 +53,11 @@ class RenderScheduler : public QObject {
   void requestBackground(std::vector<std::pair<int, RenderParams>> frames);
   // Fused dvr: OVERLAY (null: none) with its table, raycast with the volume; a frame follows.
   void setOverlay(std::shared_ptr<const Volume> overlay, TransferFunction tf);
+  // A frame of VOLUME on the render thread's device, for another thread (the movie export):
+  // blocks; throws as RenderWorker::renderOnDevice. Thread-safe.
+  Image renderOnDevice(const RenderParams& params, const Volume* volume) {
+    return worker_->renderOnDevice(params, volume);
+  }
 
  signals:
   void frameReady(std::shared_ptr<const voxray::Frame> frame);

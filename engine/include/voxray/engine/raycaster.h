@@ -41,6 +41,11 @@ struct RaycasterOptions {
   size_t maxSlabBytes = 0;
 };
 
+// Volumes put on a device by any raycaster of this process so far (each raycaster's upload,
+// each re-upload of setOptions), for tests of what shares one (the workstation's movie
+// export renders on the view's, issue 40 item 6).
+int deviceVolumeUploads();
+
 class Raycaster : public Renderer {
  public:
   // Uploads the volume. Auto storage: image3d_t with hardware filtering on a GPU, a
@@ -144,6 +149,19 @@ class Raycaster : public Renderer {
   // Of those, the builds that classified the volume again into the grid's extinction (a
   // light or model change alone reuses it).
   int lightingSigmaBuilds() const;
+  // A drag with the light following the camera (issue 40 item 4): while held, a shadows
+  // grid is kept when the light moved only with the camera, so a drag frame costs what phong
+  // does instead of a grid build per frame (a table, clip box, model or camera-relative light
+  // change still rebuilds, and so does a light turned 45 degrees from the grid's). Such a frame is
+  // lit by the current light, its shadows those of the light where the grid was built (the
+  // drag's start: shadows stay put on the anatomy while the highlights follow the camera).
+  // Releasing changes nothing by itself; the next frame rebuilds for its light and is then
+  // byte for byte the frame an unheld raycaster renders. The workstation holds it for its
+  // interactive frames, `voxray-cli bench --drag` for its replay.
+  void holdLightGrid(bool hold);
+  bool lightGridHeld() const;
+  // Frames rendered with a held grid built for another light than theirs.
+  int lightingHeldFrames() const;
 
  private:
   struct Impl;
