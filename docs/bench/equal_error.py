@@ -17,7 +17,7 @@ matrix enters either renderer.
 
 The same transfer function and shading: VTK's (the opacity and colour points of
 ../shared/peers/vtk_volume_bench.py, ambient 0.2, diffuse 0.7, specular 0.3, power 10, one
-headlight) written as a 3D Slicer .vp file that Voxray imports (--tf-file), opacity per 1 mm
+white headlight) written as a 3D Slicer .vp file that Voxray imports (--tf-file), opacity per 1 mm
 on both sides; Voxray's light a point 100 m behind the eye (a headlight, as VTK's). mip: a grey
 ramp over the window on both sides (VTK: colour ramp, opacity 1).
 
@@ -141,6 +141,16 @@ class VtkRenderer:
         ren = vtk.vtkRenderer()
         ren.AddVolume(vol)
         ren.SetBackground(0, 0, 0)
+        # VTK's automatic headlight has a black ambient colour, which zeroes the property's
+        # ambient term; this one is white, so that ambient 0.2 means in VTK what it means in
+        # Voxray (and in the .vp file) and the two shade alike.
+        light = vtk.vtkLight()
+        light.SetLightTypeToHeadlight()
+        light.SetAmbientColor(1, 1, 1)
+        light.SetDiffuseColor(1, 1, 1)
+        light.SetSpecularColor(1, 1, 1)
+        light.SetIntensity(1.0)
+        ren.AddLight(light)
         rw = vtk.vtkRenderWindow()
         rw.SetOffScreenRendering(1)
         rw.AddRenderer(ren)
