@@ -24,6 +24,7 @@ ramp over the window on both sides (VTK: colour ramp, opacity 1).
 usage: equal_error.py --out DIR --cli VOXRAY_CLI --scene NAME=RAW:NX,NY,NZ:SX,SY,SZ [...]
        [--modes dvr,mip] [--steps 4,2,1,0.5,0.25] [--size 512x384] [--rounds 3] [--frames 3]
        [--device cpu|gpu] [--azimuth 30] [--elevation 15] [--zoom 1.3] [--fov 30]
+       equal_error.py --out DIR --replot --cli - --scene - (pareto.png again from results.tsv)
 """
 import argparse
 import math
@@ -269,7 +270,12 @@ def main():
     ap.add_argument("--elevation", type=float, default=15.0)
     ap.add_argument("--zoom", type=float, default=1.3)
     ap.add_argument("--fov", type=float, default=30.0)
+    ap.add_argument("--replot", action="store_true",
+                    help="only draw pareto.png again from the results.tsv in --out")
     a = ap.parse_args()
+    if a.replot:
+        replot(a)
+        return
     os.makedirs(a.out, exist_ok=True)
     width, height = (int(v) for v in a.size.lower().split("x"))
     steps = [float(s) for s in a.steps.split(",")]
@@ -401,6 +407,16 @@ def write_results(a, rows, notes):
     plot(a, rows, cases)
 
 
+def replot(a):
+    import csv
+    with open(os.path.join(a.out, "results.tsv")) as f:
+        rows = [dict(scene=r["scene"], mode=r["mode"], renderer=r["renderer"],
+                     step=float(r["step_voxels"]), ms=float(r["ms_median"]),
+                     psnr_own=float(r["psnr_own_db"]), psnr_ref=float(r["psnr_ref_db"]))
+                for r in csv.DictReader(f, delimiter="\t")]
+    plot(a, rows, sorted({(r["scene"], r["mode"]) for r in rows}))
+
+
 def plot(a, rows, cases):
     import matplotlib
     matplotlib.use("Agg")
@@ -411,8 +427,10 @@ def plot(a, rows, cases):
                                            ("psnr_ref", "vs Voxray's reference"))):
             ax = axes[row][col]
             for name in sorted({r["renderer"] for r in rows}):
+                # In step order: the curve is the trade as the step shrinks (a time that
+                # noise made longer for a coarser step shows as a back-turn, not hidden).
                 rs = sorted((r for r in rows if (r["scene"], r["mode"], r["renderer"]) ==
-                             (sc, mode, name)), key=lambda r: r["ms"])
+                             (sc, mode, name)), key=lambda r: -r["step"])
                 ax.plot([r["ms"] for r in rs], [r[key] for r in rs], "o-", label=name)
                 for r in rs:
                     ax.annotate(f"{r['step']:g}", (r["ms"], r[key]), fontsize=7,
