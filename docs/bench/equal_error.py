@@ -163,6 +163,7 @@ class VtkRenderer:
         c.SetViewAngle(cam.view_angle)
         ren.ResetCameraClippingRange()
         self.m, self.rw, self.ren = m, rw, ren
+        rw.Initialize()  # the OpenGL context, so that its renderer string can be read
         self.gl = rw.ReportCapabilities()
 
     def frames(self, step_mm, n):
@@ -290,9 +291,10 @@ def main():
             tag = f"{scene.name}-{mode}"
             mapper = "gpu" if a.device == "gpu" else "fixed"
             vr = VtkRenderer(scene, mode, width, height, cam, mapper)
-            if a.device == "gpu" and "llvmpipe" in vr.gl.lower():
-                notes.append(f"{tag}: no GPU OpenGL context (Mesa llvmpipe): VTK's GPU mapper "
-                             "skipped, VTK rows are its CPU ray caster")
+            gl = next((l for l in vr.gl.splitlines() if "renderer string" in l), "")
+            if a.device == "gpu" and (not gl or "llvmpipe" in gl or "softpipe" in gl):
+                notes.append(f"{tag}: no GPU OpenGL context ({gl.strip() or 'none'}): VTK's GPU "
+                             "mapper skipped, VTK rows are its CPU ray caster")
                 vr = VtkRenderer(scene, mode, width, height, cam, "fixed")
                 mapper = "fixed"
             vtk_name = "VTK " + ("GPU" if mapper == "gpu" else "fixed-point")
