@@ -167,8 +167,10 @@ void printRepeatedFrames(Renderer& r, const RenderParams& p, const RenderOptions
   std::sort(sorted.begin(), sorted.end());
   const size_t n = sorted.size();
   const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-  std::printf("frames %d ms median %.3f min %.3f max %.3f\n", o.repeat, median, sorted.front(),
+  std::printf("frames %d ms median %.3f min %.3f max %.3f each", o.repeat, median, sorted.front(),
               sorted.back());
+  for (double t : ms) std::printf(" %.3f", t);
+  std::printf("\n");
 }
 
 }  // namespace

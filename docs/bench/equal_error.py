@@ -213,10 +213,11 @@ def run(args):
 
 
 def voxray_frames(a, base, n, png):
+    """Each timed frame's wall time (ms), as VTK's: the median is then over all rounds' frames."""
     out = run(base + ["--device", a.device, "--repeat", str(n), "-o", png])
     for line in out.splitlines():
-        if line.startswith("frames "):
-            return float(line.split()[4])  # "frames N ms median M ..."
+        if line.startswith("frames ") and " each " in line:  # "frames N ms median M ... each t..."
+            return [float(t) for t in line.split(" each ")[1].split()]
     sys.exit(f"voxray-cli render --repeat printed no frame times: {out}")
 
 
@@ -306,8 +307,14 @@ def main():
             run(base(FINE) + ["--device", a.device, "-o", vox_fine_png])
             vox_fine = read_rgb(vox_fine_png)
             ref_png = os.path.join(a.out, f"{tag}-reference.png")
-            if not os.path.exists(ref_png):  # minutes on a CPU: kept between runs
+            # Minutes on a CPU: kept between runs into the same folder, beside the command that
+            # made it, and made again when this run's command differs.
+            ref_cmd = " ".join(base(FINE) + ["--reference", "-o", ref_png])
+            made = open(ref_png + ".cmd").read() if os.path.exists(ref_png + ".cmd") else ""
+            if not os.path.exists(ref_png) or made != ref_cmd:
                 run(base(FINE) + ["--reference", "-o", ref_png])
+                with open(ref_png + ".cmd", "w") as f:
+                    f.write(ref_cmd)
             ref = read_rgb(ref_png)
             from skimage.io import imsave
             imsave(os.path.join(a.out, f"{tag}-vtk-fine.png"), vtk_fine, check_contrast=False)
@@ -322,7 +329,7 @@ def main():
                 for s in steps:
                     times[("vtk", s)] += vr.frames(s * scene.voxel_mm, a.frames)
                     png = os.path.join(a.out, f"{tag}-voxray-{s:g}.png")
-                    times[("voxray", s)].append(voxray_frames(a, base(s), a.frames, png))
+                    times[("voxray", s)] += voxray_frames(a, base(s), a.frames, png)
                 log(f"{tag}: round {rnd + 1} of {a.rounds}")
             for s in steps:
                 vimg = vr.image(s * scene.voxel_mm)
