@@ -1,5 +1,8 @@
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <iostream>
+#include <vector>
 
 #include "cinematic_run.h"
 #include "commands.h"
@@ -14,6 +17,7 @@
 #include "voxray/engine/multi_device.h"
 #include "voxray/engine/quality.h"
 #include "voxray/engine/raycaster.h"
+#include "voxray/engine/reference_renderer.h"
 #include "voxray/io/error.h"
 #include "voxray/io/secondary_capture.h"
 
@@ -25,6 +29,8 @@ struct RenderOptions {
   RenderFlags flags;
   std::string output, device, storage = "auto";
   size_t slabMib = 0;
+  int repeat = 0;          // timed frames after the first (a still camera's frame time)
+  bool reference = false;  // the double-precision host renderer instead of OpenCL
   std::string session, quality, saveSession;
   bool force = false;
   CinematicFlags cinematic;
@@ -128,6 +134,45 @@ int renderSplit(const RenderOptions& o, const Volume& v, const RenderParams& p) 
   return 0;
 }
 
+// --reference: the host renderer has no labels, overlay, devices or path tracer to offer.
+int renderWithReference(const RenderOptions& o, const Volume& v, const RenderParams& p) {
+  if (!o.labels.raw.empty() || !o.labels.file.empty() || !o.overlay.path.empty() ||
+      o.multi.active() || o.repeat > 0 || p.lighting != Lighting::Phong)
+    throw inputError(
+        "--reference renders phong lighting alone: leave out labels, --overlay, --split, "
+        "--devices, --repeat and --lighting other than phong");
+  const auto t0 = std::chrono::steady_clock::now();
+  Image img = renderReference(v, p);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  writeRenderOutput(o.output, img, v);
+  std::cerr << "rendered " << p.width << "x" << p.height << " " << toString(p.mode)
+            << " with the double-precision reference renderer in " << ms << " ms -> " << o.output
+            << "\n";
+  return 0;
+}
+
+// --repeat N: wall time of each whole frame (kernel, read-back, any per-frame tables) at
+// the still camera; stdout, so that scripts can read it apart from the log.
+void printRepeatedFrames(Renderer& r, const RenderParams& p, const RenderOptions& o) {
+  std::vector<double> ms;
+  Image img;
+  for (int i = 0; i < o.repeat; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    r.renderStill(p, o.cinematic.budget(), img, nullptr);
+    ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::vector<double> sorted = ms;
+  std::sort(sorted.begin(), sorted.end());
+  const size_t n = sorted.size();
+  const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+  std::printf("frames %d ms median %.3f min %.3f max %.3f each", o.repeat, median, sorted.front(),
+              sorted.back());
+  for (double t : ms) std::printf(" %.3f", t);
+  std::printf("\n");
+}
+
 }  // namespace
 
 Run addRenderCommand(CLI::App& app) {
@@ -153,6 +198,13 @@ Run addRenderCommand(CLI::App& app) {
   cmd->add_option("--save-session", o->saveSession,
                   "also save this render's input, parameters and quality as a session file");
   cmd->add_flag("--force", o->force, "--save-session may replace an existing file");
+  cmd->add_option("--repeat", o->repeat,
+                  "render the frame N more times at the still camera and print the median wall "
+                  "time of those (the first frame builds the kernels, so it is left out)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_flag("--reference", o->reference,
+                "render with the double-precision host reference renderer (the accuracy "
+                "sweep's ground truth: the kernels' maths without OpenCL; slow) instead");
   o->flags.add(*cmd);
   o->cinematic.add(*cmd);
   o->labels.add(*cmd);
@@ -171,6 +223,7 @@ Run addRenderCommand(CLI::App& app) {
       writeSessionFile(o->saveSession, saved, o->force);
       std::cerr << "session saved -> " << o->saveSession << "\n";
     }
+    if (o->reference) return renderWithReference(*o, v, p);
     if (o->multi.active()) return renderSplit(*o, v, p);
     ClContext ctx(o->device);
     Raycaster rc(ctx, v, parseStorage(o->storage));
@@ -200,6 +253,7 @@ Run addRenderCommand(CLI::App& app) {
       std::cerr << "; " << toString(p.lighting) << " precomputation " << stats.lightingMs << " ms";
     if (rc.slabCount() > 1) std::cerr << "; " << rc.slabCount() << " z slabs";
     std::cerr << ") -> " << o->output << "\n";
+    if (o->repeat > 0) printRepeatedFrames(rc.rendererFor(p), p, *o);
     return 0;
   };
 }
