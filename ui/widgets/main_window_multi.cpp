@@ -67,23 +67,37 @@ void MainWindow::openOverlay(const std::string& input, const LoadOptions& option
 
 void MainWindow::wireCompare() {
   priorLoader_ = new LoadController(this);
-  connect(priorLoader_, &LoadController::loaded, this,
-          [this](VolumeSeries series, const QString& name, const QString& input) {
-            if (series.empty()) return;
-            // A session's alignment of this prior comes back after setPrior (which resets it).
-            const auto saved = models_.comparison;
-            setCompareMode(true);
-            models_.comparison = Session::Comparison{input.toStdString(), std::nullopt};
-            compare_->setPrior(series.front(), name);  // a 4D prior: its first time point
-            if (saved && saved->priorPath == input.toStdString() && saved->movingToFixed)
-              compare_->comparison().setMovingToFixed(*saved->movingToFixed);  // checked rigid
-            statusBar()->showMessage(compare_->statusText(), 30000);
-          });
+  connect(
+      priorLoader_, &LoadController::loaded, this,
+      [this](VolumeSeries series, const QString& name, const QString& input) {
+        if (series.empty()) return;
+        // A session's alignment of this prior comes back after setPrior (which resets it).
+        const auto saved = models_.comparison;
+        setCompareMode(true);
+        models_.comparison = Session::Comparison{input.toStdString(), std::nullopt, priorSeries_};
+        compare_->setPrior(series.front(), name);  // a 4D prior: its first time point
+        const bool same =
+            saved && saved->priorPath == input.toStdString() && saved->priorSeries == priorSeries_;
+        if (same && saved->movingToFixed)
+          compare_->comparison().setMovingToFixed(*saved->movingToFixed);  // checked rigid
+        // The session's Link 3D look, then its prior camera (older sessions: linked, and
+        // the camera the link gives).
+        compare_->setLookLinked(same ? saved->linkLook : true);
+        if (same && saved->priorCamera) {
+          const CameraParams camera = *saved->priorCamera;
+          compare_->prior().render.update(kCamera, [&](RenderParams& p) { p.camera = camera; });
+        }
+        // What the box and the camera are now (a change since is kept as it happens).
+        models_.comparison->linkLook = compare_->lookLinked();
+        models_.comparison->priorCamera = compare_->prior().render.params().camera;
+        statusBar()->showMessage(compare_->statusText(), 30000);
+      });
   connect(priorLoader_, &LoadController::failed, this,
           [this](const QString& m) { showError("Cannot open the prior", m); });
 }
 
 void MainWindow::openPrior(const std::string& input, const LoadOptions& options) {
+  priorSeries_ = options.series;  // a session opens the same series again
   priorLoader_->load(input, options, QFileInfo(QString::fromStdString(input)).fileName());
 }
 
@@ -96,6 +110,8 @@ void MainWindow::setCompareMode(bool on) {
     connect(compare_, &CompareView::closeRequested, this, [this] { setCompareMode(false); });
     connect(compare_, &CompareView::statusChanged, this,
             [this](const QString& t) { statusBar()->showMessage(t, 30000); });
+    // Move prior's drags in Edit → Undo's order with the view's and the segments' edits.
+    editOrder_->setPriorMoves(&compare_->moveHistory(), &compare_->comparison());
   }
   if (compare_) compare_->setVisible(on);
   grid_->setVisible(!on);
@@ -109,9 +125,11 @@ void MainWindow::addMultiVolumeActions(QMenu* file, QMenu* view) {
     // (Here, not in wireCompare: the session actions exist once the menus are built.) A
     // session with a prior opens it beside the study, with its alignment.
     connect(sessions_, &SessionActions::sessionShown, this, [this] {
-      if (models_.comparison && !models_.comparison->priorPath.empty())
-        openPrior(models_.comparison->priorPath);
-      else
+      if (models_.comparison && !models_.comparison->priorPath.empty()) {
+        LoadOptions options;
+        options.series = models_.comparison->priorSeries;
+        openPrior(models_.comparison->priorPath, options);
+      } else
         setCompareMode(false);
     });
     file->addAction("Open o&verlay volume…", this,
