@@ -42,7 +42,7 @@ struct PlacedView {
   std::string series;       // LoadOptions::series of the series shown; empty: the view is empty
   std::string description;  // the series' description, for the user
   std::string note;         // why the view is empty ("no series matches 'STIR'")
-  std::string uid;          // its Series Instance UID (a session checks it still exists)
+  std::string uid{};        // its Series Instance UID (a session checks it still exists)
   bool operator==(const PlacedView&) const = default;
 };
 
