@@ -85,5 +85,63 @@ TEST(EditOrder, UndoTakesBackViewAndSegmentEditsInTheOrderMade) {
   EXPECT_FALSE(order.canUndo());
 }
 
+// Issue 36: compare's Move prior drags take their place in Edit → Undo's order with the view's
+// edits; the compare view's own Undo move (the history's) is followed.
+TEST(EditOrder, PriorMovesAreUndoneInTheOrderMade) {
+  AppModels m;
+  ViewHistory h(m);
+  EditOrder order(h, m.segmentation);
+  ComparisonModel compare;
+  PriorMoveHistory moves;
+  order.setPriorMoves(&moves, &compare);
+  EXPECT_FALSE(order.canUndo());
+  auto drag = [&](const glm::dvec3& byMm) {  // as CompareView's drag: one step, then the move
+    moves.beginDrag(PriorPlacement::of(compare));
+    glm::dmat4 t = compare.movingToFixed();
+    t[3] += glm::dvec4(byMm, 0.0);
+    compare.setMovingToFixed(t);
+  };
+  auto shift = [&] { return glm::dvec3(compare.movingToFixed()[3]); };
+
+  turn(m, 30.0);           // view
+  drag({5.0, 0.0, 0.0});   // prior: aligns it
+  drag({0.0, -2.5, 0.0});  // prior
+  turn(m, 60.0);           // view
+  EXPECT_EQ(order.undoText(), "Undo view change");
+  order.undo();
+  EXPECT_DOUBLE_EQ(m.render.params().camera.azimuthDeg, 30.0);
+  EXPECT_EQ(shift(), glm::dvec3(5.0, -2.5, 0.0));  // the prior stays where it was dragged
+  EXPECT_EQ(order.undoText(), "Undo move prior");
+  order.undo();
+  EXPECT_EQ(shift(), glm::dvec3(5.0, 0.0, 0.0));
+  order.undo();  // the first drag: not aligned again
+  EXPECT_FALSE(compare.aligned());
+  EXPECT_EQ(shift(), glm::dvec3(0.0));
+  EXPECT_DOUBLE_EQ(m.render.params().camera.azimuthDeg, 30.0);
+  order.undo();
+  EXPECT_DOUBLE_EQ(m.render.params().camera.azimuthDeg, 0.0);
+  EXPECT_FALSE(order.canUndo());
+  order.redo();
+  order.redo();
+  EXPECT_TRUE(compare.aligned());
+  EXPECT_EQ(shift(), glm::dvec3(5.0, 0.0, 0.0));
+  EXPECT_EQ(order.redoText(), "Redo move prior");
+
+  // The compare view's own Undo move: the order's next redo is that drag, its next undo the
+  // turn before it.
+  order.redo();  // 5, -2.5
+  moves.undo(PriorPlacement::of(compare))->applyTo(compare);
+  EXPECT_EQ(shift(), glm::dvec3(5.0, 0.0, 0.0));
+  EXPECT_EQ(order.redoText(), "Redo move prior");
+  order.redo();
+  EXPECT_EQ(shift(), glm::dvec3(5.0, -2.5, 0.0));
+  // A new prior clears its moves: they leave the order, the view's steps stay.
+  moves.clear();
+  EXPECT_EQ(order.undoText(), "Undo view change");
+  order.undo();
+  EXPECT_DOUBLE_EQ(m.render.params().camera.azimuthDeg, 0.0);
+  EXPECT_FALSE(order.canUndo());
+}
+
 }  // namespace
 }  // namespace voxray

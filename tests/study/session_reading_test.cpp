@@ -29,7 +29,7 @@ using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
 const std::vector<StudySeries> kStudy = {
-    {"1", "Scout"}, {"2", "AX T1"}, {"3", "AX T2 FLAIR"}, {"4", "COR T2"}};
+    {"1", "Scout", ""}, {"2", "AX T1", ""}, {"3", "AX T2 FLAIR", ""}, {"4", "COR T2", ""}};
 
 HangingRule ruleFromJson(const std::string& rule) {
   return parseHangingProtocols(R"({"voxray-hanging-protocols": 1, "rules": [)" + rule + "]}")

@@ -345,6 +345,89 @@ class CompareTest : public QObject {
                                     360.0)) < 1e-9);
   }
 
+  // Issue 36 leftovers: a Move prior drag is one step of Edit → Undo, in the order made with
+  // the view's edits (the compare view's own Undo move buttons follow); the Link 3D look box
+  // and the prior's 3D camera are kept by sessions.
+  void editUndoTakesBackPriorDragsInTheOrderMadeAndSessionsKeepTheLook() {
+    AppModels& m = *fixture_.models;
+    MainWindow& w = *fixture_.window;
+    w.setCompareMode(true);
+    CompareView* c = w.compareView();
+    c->setPrior(std::make_shared<const Volume>(makeHeadPhantom(48)), "prior");
+    m.comparison = Session::Comparison{"/somewhere/prior", std::nullopt};  // as openPrior sets
+    glm::dmat4 t0(turnAboutZ(5.0));
+    t0[3] = glm::dvec4(2.0, 1.0, -4.0, 1.0);
+    c->comparison().setMovingToFixed(t0);
+    QAction* undo = w.findChild<QAction*>("editUndo");
+    QAction* redo = w.findChild<QAction*>("editRedo");
+    QVERIFY(undo && redo);
+    const WindowLevel start = m.windowLevel.value();
+    m.windowLevel.set(WindowLevel{350.0, 45.0});  // a view edit before the drag
+    c->findChild<QPushButton*>("compareMovePrior")->click();
+    SliceView& mv = c->movingView();
+    const QPointF from(mv.width() * 0.3, mv.height() * 0.4);
+    drag(&mv, from, from + QPointF(40.0, 0.0));
+    const glm::dmat4 t1 = c->comparison().movingToFixed();
+    QVERIFY(t1 != t0);
+    m.windowLevel.set(WindowLevel{1500.0, -600.0});  // and one after it
+    QCOMPARE(undo->toolTip(), QString("Undo view change"));
+    undo->trigger();
+    QCOMPARE(m.windowLevel.value().width, 350.0);
+    QVERIFY(c->comparison().movingToFixed() == t1);  // the prior stays where it was dragged
+    QCOMPARE(undo->toolTip(), QString("Undo move prior"));
+    undo->trigger();
+    QVERIFY(c->comparison().movingToFixed() == t0);  // the whole drag is one step
+    QCOMPARE(m.windowLevel.value().width, 350.0);
+    QVERIFY(!c->findChild<QPushButton*>("compareUndoMove")->isEnabled());
+    QVERIFY(c->findChild<QPushButton*>("compareRedoMove")->isEnabled());
+    undo->trigger();
+    QCOMPARE(m.windowLevel.value().width, start.width);
+    redo->trigger();
+    redo->trigger();
+    QVERIFY(c->comparison().movingToFixed() == t1);
+    QCOMPARE(m.windowLevel.value().width, 350.0);
+    // The compare view's own Undo move: Edit → Redo then redoes that drag.
+    c->findChild<QPushButton*>("compareUndoMove")->click();
+    QVERIFY(c->comparison().movingToFixed() == t0);
+    QCOMPARE(redo->toolTip(), QString("Redo move prior"));
+    redo->trigger();
+    QVERIFY(c->comparison().movingToFixed() == t1);
+
+    // Sessions: Link 3D look unticked and the prior's camera as it is now.
+    c->setMovePrior(false);
+    c->findChild<QCheckBox*>("compareLinkLook")->setChecked(false);
+    c->prior().render.update(kCamera, [](RenderParams& p) {
+      p.camera.azimuthDeg = 41.5;
+      p.camera.zoom = 1.6;
+    });
+    const CameraParams priorCamera = c->prior().render.params().camera;
+    const Session saved = sessionFromModels(m, {128, 96}, "grid");
+    QVERIFY(saved.comparison && !saved.comparison->linkLook);
+    QVERIFY(saved.comparison->priorCamera);
+    QCOMPARE(saved.comparison->priorCamera->azimuthDeg, priorCamera.azimuthDeg);
+    QCOMPARE(saved.comparison->priorCamera->zoom, 1.6);
+    // Through the file and back, then reopened by the window (the prior loads again).
+    const QString file = tmp_.path() + "/look.json";
+    const std::string dir = (tmp_.path() + "/prior-look").toStdString();
+    writePetSpherePhantom(dir, PetSpherePhantom{});
+    Session withFile = saved;
+    withFile.comparison->priorPath = dir;
+    writeSessionFile(file.toStdString(), withFile, true);
+    const Session read = readSessionFile(file.toStdString()).session;
+    c->findChild<QCheckBox*>("compareLinkLook")->setChecked(true);
+    applySession(m, read);
+    emit w.sessions().sessionShown();
+    QTRY_VERIFY_WITH_TIMEOUT(c->prior().document.volume() &&
+                                 c->prior().document.volume()->dims == glm::ivec3(48, 48, 32),
+                             60000);
+    QTRY_VERIFY(!c->lookLinked());
+    QVERIFY(!c->findChild<QCheckBox*>("compareLinkLook")->isChecked());
+    // The saved camera; the link does not follow (no shared Frame of Reference, not aligned).
+    QTRY_COMPARE(c->prior().render.params().camera.azimuthDeg, 41.5);
+    QCOMPARE(c->prior().render.params().camera.zoom, 1.6);
+    QVERIFY(errors_.isEmpty());
+  }
+
   void movePriorDragsMoveByThePixelSpacingAndTurnByTheSweptAngle() {
     AppModels& m = *fixture_.models;
     fixture_.window->setCompareMode(true);

@@ -15,6 +15,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
@@ -27,17 +28,22 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QTimer>
+#include <QWheelEvent>
 
 #include <dcmtk/dcmdata/dctk.h>
 #include <nlohmann/json.hpp>
 
 #include "annotation_model.h"
+#include "compare_view.h"
 #include "help_dialogs.h"
 #include "json_text_dialog.h"
+#include "pacs_node_config.h"
+#include "pacs_node_dialog.h"
 #include "reading_actions.h"
 #include "results_actions.h"
 #include "segment_panel.h"
 #include "session_actions.h"
+#include "slice_geometry.h"
 #include "slice_view.h"
 #include "voxray/io/phantom_series.h"
 #include "window_fixture.h"
@@ -78,6 +84,42 @@ std::vector<std::string> valuesIn(const fs::path& file, const DcmTagKey& tag) {
   std::vector<std::string> out;
   collect(*f.getDataset(), tag, out);
   return out;
+}
+
+// A study of two series in FOLDER: the Philips head CT as it is ("STD BRAIN 5MM", 28 slices
+// of 5 mm) and, made from it, every other slice as a second series ("T2 LIKE 10MM": its own
+// Series Instance UID, number and SOP Instance UIDs; the same study and Frame of Reference),
+// so that its slices are 10 mm apart. Returns the second series' UID ("" on failure).
+std::string writeTwoSeriesStudy(const fs::path& folder) {
+  char uid[100];
+  const std::string seriesUid = dcmGenerateUniqueIdentifier(uid, SITE_SERIES_UID_ROOT);
+  int written = 0;
+  for (const auto& e : fs::directory_iterator(kBrain)) {
+    DcmFileFormat f;
+    if (!e.is_regular_file() || f.loadFile(e.path().c_str()).bad()) continue;
+    fs::copy_file(e.path(), folder / ("a-" + e.path().filename().string()));
+    DcmDataset& d = *f.getDataset();
+    Sint32 instance = 0;
+    if (d.findAndGetSint32(DCM_InstanceNumber, instance).bad() || instance % 2 == 0) continue;
+    d.putAndInsertString(DCM_SeriesInstanceUID, seriesUid.c_str());
+    d.putAndInsertString(DCM_SeriesDescription, "T2 LIKE 10MM");
+    d.putAndInsertString(DCM_SeriesNumber, "3010");
+    d.putAndInsertString(DCM_SOPInstanceUID,
+                         dcmGenerateUniqueIdentifier(uid, SITE_INSTANCE_UID_ROOT));
+    if (f.saveFile((folder / ("b-" + e.path().filename().string())).c_str(), EXS_Unknown,
+                   EET_UndefinedLength, EGL_recalcGL, EPD_noChange, 0, 0, EWM_updateMeta)
+            .bad())
+      return "";
+    ++written;
+  }
+  return written == 14 ? seriesUid : "";
+}
+
+void wheel(QWidget* w, int notches) {
+  const QPointF at(w->width() / 2.0, w->height() / 2.0);
+  QWheelEvent e(at, w->mapToGlobal(at), QPoint(), QPoint(0, 120 * notches), Qt::NoButton,
+                Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(w, &e);
 }
 
 }  // namespace
@@ -577,6 +619,155 @@ class ReadingTest : public QObject {
     QTRY_VERIFY(window_->sliceView(1).isVisible());
     QVERIFY(!window_->sliceView(2).isVisible());
     QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+  }
+
+  // The classic T1 | T2 hanging: a rule placing two series of one study in one layout shows
+  // both, side by side (compare's two columns, each with its own volume), linked in patient
+  // coordinates; the session keeps the placement and opens both again; a session whose second
+  // series was removed since opens the rest and says which view is left empty.
+  void ruleShowsTwoSeriesSideBySideLinkedInPatientZ() {
+    window_->resize(1800, 1000);
+    const fs::path study = freshDir("two-series");
+    const std::string t2Uid = writeTwoSeriesStudy(study);
+    QVERIFY(!t2Uid.empty());
+    const fs::path dir = freshDir("two-series-config");
+    std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
+      {"name": "pair", "match": {"modality": "CT"}, "layout": "1x2",
+       "series": {"axial": "STD BRAIN", "3d": "T2 LIKE"}}]})";
+    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+    QVERIFY(errors_.isEmpty());
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open(study.string(), {});
+    QVERIFY(shown.wait(120000));
+    // Both series placed, neither left empty.
+    const ReadingLayout r = reading_->reading();
+    QCOMPARE(r.layout, ViewLayout::OneByTwo);
+    QCOMPARE(r.placed.size(), size_t(2));
+    QVERIFY(emptyViewNotes(r).empty());
+    const auto placed3d = std::find_if(r.placed.begin(), r.placed.end(), [](const PlacedView& p) {
+      return p.view == GridView::Volume3d;
+    });
+    QCOMPARE(placed3d->description, std::string("T2 LIKE 10MM"));
+    QCOMPARE(placed3d->uid, t2Uid);
+    // The second series opens beside the first: two columns, each its own volume.
+    QTRY_VERIFY_WITH_TIMEOUT(window_->compareView() && window_->compareView()->hasPrior(), 60000);
+    CompareView* c = window_->compareView();
+    QTRY_VERIFY(c->isVisible() && c->fixedView().isVisible() && c->movingView().isVisible());
+    const Volume& left = *fixture_.models->document.volume();
+    const Volume& right = *c->prior().document.volume();
+    QCOMPARE(left.study.seriesDescription, std::string("STD BRAIN 5MM"));
+    QCOMPARE(right.study.seriesInstanceUid, t2Uid);
+    QCOMPARE(left.dims.z, 28);
+    QCOMPARE(right.dims.z, 14);
+    QVERIFY(std::abs(right.spacingMm.z - 2.0 * left.spacingMm.z) < 1e-3);  // 10 mm and 5 mm
+    QVERIFY(c->comparison().sameFrameOfReference() && c->comparison().linked());
+    // Scrolling the left column moves the right one to the same patient z, within half of
+    // its 10 mm slices (it rounds to its own slice centres).
+    CrosshairModel& lc = fixture_.models->crosshair;
+    double lastZ = voxelToPatientMm(left, lc.centre()).z;
+    for (int notches : {3, -1, 5, -7, 2}) {
+      wheel(&c->fixedView(), notches);
+      const double z = voxelToPatientMm(left, lc.centre()).z;
+      QVERIFY2(std::abs(std::abs(z - lastZ) - std::abs(notches) * left.spacingMm.z) < 1e-6,
+               qPrintable(QString("moved %1 mm for %2 notches").arg(z - lastZ).arg(notches)));
+      lastZ = z;
+      const double rz = voxelToPatientMm(right, c->prior().crosshair.centre()).z;
+      QVERIFY2(std::abs(rz - z) <= 0.5 * right.spacingMm.z + 1e-6,
+               qPrintable(QString("right z %1 vs left z %2").arg(rz).arg(z)));
+    }
+
+    // The session keeps both series and opens them again.
+    const std::string file = (freshDir("two-series-session") / "s.json").string();
+    window_->sessions().tell = [this](const QString& t, const QString& m) {
+      errors_ << t + ": " + m;
+    };
+    QVERIFY(window_->sessions().saveTo(QString::fromStdString(file)));
+    reading_->setLayout(ViewLayout::One);  // the user's choice: the second column goes
+    QTRY_VERIFY(!c->isVisible());
+    window_->sessions().openFile(file);
+    QVERIFY(shown.wait(120000));
+    QCOMPARE(reading_->reading(), r);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        window_->compareView()->isVisible() && window_->compareView()->prior().document.volume() &&
+            window_->compareView()->prior().document.volume()->study.seriesInstanceUid == t2Uid,
+        60000);
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+
+    // The second series removed from the study: the session opens the first and names the
+    // view left empty.
+    for (const auto& e : fs::directory_iterator(study))
+      if (e.path().filename().string().rfind("b-", 0) == 0) fs::remove(e.path());
+    window_->sessions().openFile(file);
+    QVERIFY(shown.wait(120000));
+    QTRY_VERIFY(!errors_.isEmpty());
+    QVERIFY2(errors_.join('\n').contains("View 3d: its series 'T2 LIKE 10MM' is no longer in the "
+                                         "study; the view is left empty"),
+             qPrintable(errors_.join('\n')));
+    QCOMPARE(fixture_.models->document.volume()->study.seriesDescription,
+             std::string("STD BRAIN 5MM"));
+    QTRY_VERIFY(!window_->compareView()->isVisible());
+    QVERIFY(window_->sliceView(0).isVisible());
+    QVERIFY(!fixture_.models->comparison);  // nothing left to open beside it
+  }
+
+  // Issue 37: "Show series in this view" (Reading menu) puts another series of the study in
+  // the focused view: it opens beside the open one.
+  void showSeriesInThisViewOpensItBeside() {
+    const fs::path study = freshDir("show-series");
+    const std::string t2Uid = writeTwoSeriesStudy(study);
+    QVERIFY(!t2Uid.empty());
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open(study.string(), {});
+    QVERIFY(shown.wait(120000));
+    QMenu* menu = window_->findChild<QMenu*>("readingShowSeries");
+    QVERIFY(menu);
+    emit menu->aboutToShow();
+    QAction* t2 = nullptr;
+    for (QAction* a : menu->actions())
+      if (a->text() == "T2 LIKE 10MM") t2 = a;
+    QVERIFY2(t2, "the menu lists the study's second series");
+    t2->trigger();  // the axial view focused (init)
+    QTRY_VERIFY_WITH_TIMEOUT(window_->compareView() && window_->compareView()->hasPrior(), 60000);
+    QCOMPARE(window_->compareView()->prior().document.volume()->study.seriesInstanceUid, t2Uid);
+    const auto& placed = reading_->reading().placed;
+    const auto axial = std::find_if(placed.begin(), placed.end(),
+                                    [](const PlacedView& p) { return p.view == GridView::Axial; });
+    QVERIFY(axial != placed.end());
+    QCOMPARE(axial->uid, t2Uid);
+    QVERIFY(errors_.isEmpty());
+  }
+
+  // Issue 41: File → PACS nodes… opens the node editor on the user's node file (its nodes
+  // listed, as stored) without going through Open from PACS.
+  void fileMenuOpensThePacsNodeEditor() {
+    const fs::path config = freshDir("pacs-nodes-config");
+    const QByteArray before = qgetenv("XDG_CONFIG_HOME");
+    qputenv("XDG_CONFIG_HOME", QByteArray::fromStdString(config.string()));
+    {
+      PacsNodeFile nodes((config / "voxray" / "pacs-nodes.json").string());
+      PacsNodeForm a;
+      a.name = "hospital";
+      a.calledAe = "ORTHANC";
+      a.host = "pacs.example";
+      a.port = "4242";
+      nodes.put(a);
+    }
+    QAction* action = window_->findChild<QAction*>("filePacsNodes");
+    QVERIFY(action);
+    QCOMPARE(action->text().remove('&'), QString("PACS nodes…"));
+    QString listed, ae, port;
+    whenModal<PacsNodeDialog>([&](PacsNodeDialog* d) {
+      if (d->list()->count() == 1) listed = d->list()->item(0)->text();
+      d->list()->setCurrentRow(0);
+      ae = d->field("calledAe")->text();
+      port = d->field("port")->text();
+      d->reject();
+    });
+    action->trigger();  // returns once the editor is closed
+    qputenv("XDG_CONFIG_HOME", before);
+    QVERIFY2(listed.contains("hospital"), qPrintable(listed));
+    QCOMPARE(ae, QString("ORTHANC"));
+    QCOMPARE(port, QString("4242"));
   }
 
   // Issue 36: a PET's segment shows its SUVpeak in the Segments panel (the sphere phantom's

@@ -35,7 +35,21 @@ EditOrder::EditOrder(ViewHistory& view, SegmentationModel& segments, AnnotationM
     annotationsConnection_ = annotations_->changed.connect([this] { follow(Source::Annotations); });
 }
 
+void EditOrder::setPriorMoves(PriorMoveHistory* history, ComparisonModel* model) {
+  if (priorMoves_) priorMoves_->changed.disconnect(priorConnection_);
+  priorMoves_ = history;
+  priorModel_ = model;
+  if (!priorMoves_ || !priorModel_) {
+    priorMoves_ = nullptr;
+    follow(Source::PriorMoves);  // its steps leave the order
+    return;
+  }
+  priorConnection_ = priorMoves_->changed.connect([this] { follow(Source::PriorMoves); });
+  follow(Source::PriorMoves);
+}
+
 EditOrder::~EditOrder() {
+  if (priorMoves_) priorMoves_->changed.disconnect(priorConnection_);
   view_.changed.disconnect(viewConnection_);
   segments_.changed.disconnect(segmentsConnection_);
   if (annotations_) annotations_->changed.disconnect(annotationsConnection_);
@@ -45,6 +59,8 @@ EditOrder::Counts EditOrder::countsOf(Source s) const {
   if (s == Source::View) return {view_.undoCount(), view_.redoCount()};
   if (s == Source::Annotations)
     return annotations_ ? Counts{annotations_->undoCount(), annotations_->redoCount()} : Counts{};
+  if (s == Source::PriorMoves)
+    return priorMoves_ ? Counts{priorMoves_->undoCount(), priorMoves_->redoCount()} : Counts{};
   return {segments_.undoCount(), segments_.redoCount()};
 }
 
@@ -84,7 +100,10 @@ bool EditOrder::step(Source s, bool undo) {
     undo ? view_.undo() : view_.redo();
   else if (s == Source::Annotations)
     undo ? annotations_->undo() : annotations_->redo();
-  else
+  else if (s == Source::PriorMoves) {
+    const PriorPlacement now = PriorPlacement::of(*priorModel_);
+    if (auto p = undo ? priorMoves_->undo(now) : priorMoves_->redo(now)) p->applyTo(*priorModel_);
+  } else
     undo ? segments_.undo() : segments_.redo();
   stepping_ = false;
   known_[int(s)] = countsOf(s);
@@ -132,6 +151,7 @@ bool EditOrder::canRedo() const { return !redo_.empty(); }
 std::string EditOrder::textOf(Source s, bool undo) const {
   if (s == Source::View) return undo ? "Undo view change" : "Redo view change";
   if (s == Source::Annotations) return undo ? annotations_->undoText() : annotations_->redoText();
+  if (s == Source::PriorMoves) return undo ? "Undo move prior" : "Redo move prior";
   return undo ? segments_.undoText() : segments_.redoText();
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Edit → Undo and Redo over the view's history, the segment editor's and the annotations' (when
-// given), in the order the user
+// Edit → Undo and Redo over the view's history, the segment editor's, the annotations' (when
+// given) and compare's prior moves (once set), in the order the user
 // made the edits: Ctrl+Z takes back the last edit of either, the next Ctrl+Z the one before.
 // Each history keeps its own steps (ViewHistory, SegmentationModel); this keeps only which of
 // the two each step was. It follows their step counts, so a step taken back elsewhere (the
@@ -11,6 +11,7 @@
 
 #include "annotation_model.h"
 #include "no_qt.h"
+#include "prior_move.h"
 #include "segmentation_model.h"
 #include "view_history.h"
 
@@ -18,12 +19,16 @@ namespace voxray {
 
 class EditOrder {
  public:
-  enum class Source { View, Segments, Annotations };
+  enum class Source { View, Segments, Annotations, PriorMoves };
   // Listens to each until destroyed (destroy it before them).
   EditOrder(ViewHistory& view, SegmentationModel& segments, AnnotationModel* annotations = nullptr);
   ~EditOrder();
   EditOrder(const EditOrder&) = delete;
   EditOrder& operator=(const EditOrder&) = delete;
+
+  // Compare's Move prior drags (issue 36): HISTORY's steps put back onto MODEL, in this order
+  // too. Listens until destroyed or set again (nullptr: none).
+  void setPriorMoves(PriorMoveHistory* history, ComparisonModel* model);
 
   bool canUndo() const;
   bool canRedo() const;
@@ -51,10 +56,13 @@ class EditOrder {
   ViewHistory& view_;
   SegmentationModel& segments_;
   AnnotationModel* annotations_;
+  PriorMoveHistory* priorMoves_ = nullptr;
+  ComparisonModel* priorModel_ = nullptr;
   std::vector<Source> undo_, redo_;  // oldest first; the back is the next step
-  Counts known_[3];
+  Counts known_[4];
   bool stepping_ = false;
-  int viewConnection_ = 0, segmentsConnection_ = 0, annotationsConnection_ = 0;
+  int viewConnection_ = 0, segmentsConnection_ = 0, annotationsConnection_ = 0,
+      priorConnection_ = 0;
 };
 
 }  // namespace voxray

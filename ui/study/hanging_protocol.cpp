@@ -212,6 +212,7 @@ std::vector<PlacedView> placeSeries(const HangingRule& rule,
     }
     if (found) {
       p.series = found->selector;
+      p.uid = found->uid;
       p.description = found->description;
     }
     out.push_back(p);
@@ -224,6 +225,26 @@ std::optional<std::string> shownSeries(ViewLayout layout, const std::vector<Plac
     for (const PlacedView& p : placed)
       if (p.view == c.view && !p.series.empty()) return p.series;
   return std::nullopt;
+}
+
+std::optional<PlacedView> besideSeries(ViewLayout layout, const std::vector<PlacedView>& placed,
+                                       const std::string& shown) {
+  for (const LayoutCell& c : layoutCells(layout))
+    for (const PlacedView& p : placed)
+      if (p.view == c.view && !p.series.empty() && p.series != shown) return p;
+  return std::nullopt;
+}
+
+std::vector<PlacedView> keepShown(std::vector<PlacedView> placed, const std::string& shown,
+                                  const std::string& beside) {
+  for (PlacedView& p : placed)
+    if (!p.series.empty() && p.series != shown && p.series != beside) {
+      p.note = "its series '" + p.description +
+               "' is a third one (two series show at once, side by side); the view is left "
+               "empty";
+      p.series.clear();
+    }
+  return placed;
 }
 
 std::vector<PlacedView> keepShown(std::vector<PlacedView> placed, const std::string& shown) {

@@ -41,21 +41,24 @@ struct HangingRule {
   std::map<GridView, SeriesChoice> series;  // none: every view shows the opened series
 };
 
-// One volume series of the study, in the study's order (series number).
-struct StudySeries {
-  std::string selector;  // LoadOptions::series
-  std::string description;
-};
-
 // The views RULE names, each with the series of STUDY it chooses, or empty with a note when
 // no series fits (a missing series leaves the view empty; the rest still hang).
 std::vector<PlacedView> placeSeries(const HangingRule& rule, const std::vector<StudySeries>& study);
 // The series the grid shows (its views show one series at a time): that of the first cell of
 // LAYOUT whose view PLACED fills; none when no placed view has a series.
 std::optional<std::string> shownSeries(ViewLayout layout, const std::vector<PlacedView>& placed);
+// The series shown beside it (compare's right column, linked in patient coordinates): that of
+// the first cell of LAYOUT holding another series than SHOWN; none when every placed view
+// holds SHOWN.
+std::optional<PlacedView> besideSeries(ViewLayout layout, const std::vector<PlacedView>& placed,
+                                       const std::string& shown);
 // PLACED with the views that hold another series than SHOWN emptied, each with a note (the
 // views show one series at a time).
 std::vector<PlacedView> keepShown(std::vector<PlacedView> placed, const std::string& shown);
+// As keepShown, keeping SHOWN and BESIDE (two series side by side); a third series' view is
+// emptied with a note.
+std::vector<PlacedView> keepShown(std::vector<PlacedView> placed, const std::string& shown,
+                                  const std::string& beside);
 
 struct HangingProtocols {
   std::vector<HangingRule> rules;

@@ -124,4 +124,41 @@ std::vector<std::string> emptyViewNotes(const ReadingLayout& l) {
   return out;
 }
 
+std::vector<std::string> seriesInCells(const ReadingLayout& l) {
+  std::vector<std::string> out;
+  for (const LayoutCell& c : layoutCells(l.layout))
+    for (const PlacedView& p : l.placed)
+      if (p.view == c.view && !p.series.empty() &&
+          std::find(out.begin(), out.end(), p.series) == out.end())
+        out.push_back(p.series);
+  return out;
+}
+
+ReadingLayout placeInView(ReadingLayout l, GridView view, const StudySeries& s) {
+  auto it = std::find_if(l.placed.begin(), l.placed.end(),
+                         [&](const PlacedView& p) { return p.view == view; });
+  if (it == l.placed.end()) {
+    l.placed.push_back(PlacedView{});
+    it = l.placed.end() - 1;
+  }
+  *it = PlacedView{view, s.selector, s.description, "", s.uid};
+  return l;
+}
+
+ReadingLayout checkPlacement(ReadingLayout l, const std::vector<StudySeries>& study) {
+  for (PlacedView& p : l.placed) {
+    if (p.series.empty()) continue;
+    // The UID names the series wherever the folder's files moved; older sessions have none.
+    const bool there = std::any_of(study.begin(), study.end(), [&](const StudySeries& s) {
+      return p.uid.empty() ? s.selector == p.series : s.uid == p.uid;
+    });
+    if (there) continue;
+    const std::string name = p.description.empty() ? p.series : p.description;
+    p.note = "its series '" + name + "' is no longer in the study; the view is left empty";
+    p.series.clear();
+    p.uid.clear();
+  }
+  return l;
+}
+
 }  // namespace voxray

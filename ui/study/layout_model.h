@@ -42,11 +42,14 @@ struct PlacedView {
   std::string series;       // LoadOptions::series of the series shown; empty: the view is empty
   std::string description;  // the series' description, for the user
   std::string note;         // why the view is empty ("no series matches 'STIR'")
+  std::string uid{};        // its Series Instance UID (a session checks it still exists)
   bool operator==(const PlacedView&) const = default;
 };
 
-// The grid as the reader left it: the layout and, when a hanging protocol placed series, what
-// each named view holds. Saved in sessions (Session::reading).
+// The grid as the reader left it: the layout and, when a hanging protocol (or the user: Show
+// series in this view) placed series, what each named view holds. Two different series show
+// side by side (the first cell's series in the left column, the other in the right, linked in
+// patient coordinates: compare). Saved in sessions (Session::reading).
 struct ReadingLayout {
   ViewLayout layout = ViewLayout::MprPlus3d;
   std::vector<PlacedView> placed;  // empty: every view shows the open volume
@@ -57,5 +60,21 @@ struct ReadingLayout {
 std::vector<LayoutCell> visibleCells(const ReadingLayout& l);
 // The notes of the views L left empty, one line each ("sagittal: no series matches 'STIR'").
 std::vector<std::string> emptyViewNotes(const ReadingLayout& l);
+
+// One volume series of the study, in the study's order (series number).
+struct StudySeries {
+  std::string selector;  // LoadOptions::series
+  std::string description;
+  std::string uid;  // Series Instance UID
+};
+
+// The series of L's cells in cell order, each once (the first: the left column).
+std::vector<std::string> seriesInCells(const ReadingLayout& l);
+// L with VIEW showing S (the user's Show series in this view; a series dropped on a cell).
+ReadingLayout placeInView(ReadingLayout l, GridView view, const StudySeries& s);
+// A session's placement checked against the series STUDY still has (by UID; by selector
+// where the session has no UID): a view whose series is gone is left empty with a note naming
+// the series; the rest stays as saved.
+ReadingLayout checkPlacement(ReadingLayout l, const std::vector<StudySeries>& study);
 
 }  // namespace voxray

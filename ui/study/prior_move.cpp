@@ -55,6 +55,7 @@ void PriorMoveHistory::beginDrag(const PriorPlacement& before) {
   undo_.push_back(before);
   if (undo_.size() > kLimit) undo_.erase(undo_.begin());
   redo_.clear();
+  changed.notify();
 }
 
 std::optional<PriorPlacement> PriorMoveHistory::undo(const PriorPlacement& now) {
@@ -62,6 +63,7 @@ std::optional<PriorPlacement> PriorMoveHistory::undo(const PriorPlacement& now) 
   const PriorPlacement back = undo_.back();
   undo_.pop_back();
   redo_.push_back(now);
+  changed.notify();
   return back;
 }
 
@@ -70,12 +72,14 @@ std::optional<PriorPlacement> PriorMoveHistory::redo(const PriorPlacement& now) 
   const PriorPlacement next = redo_.back();
   redo_.pop_back();
   undo_.push_back(now);
+  changed.notify();
   return next;
 }
 
 void PriorMoveHistory::clear() {
   undo_.clear();
   redo_.clear();
+  changed.notify();
 }
 
 }  // namespace voxray

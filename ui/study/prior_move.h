@@ -13,6 +13,7 @@
 
 #include "comparison_model.h"
 #include "no_qt.h"
+#include "notifier.h"
 
 namespace voxray {
 
@@ -57,10 +58,14 @@ class PriorMoveHistory {
   bool canUndo() const { return !undo_.empty(); }
   bool canRedo() const { return !redo_.empty(); }
   size_t undoCount() const { return undo_.size(); }
+  size_t redoCount() const { return redo_.size(); }
   // What to restore, given the placement NOW (it becomes the redo or undo step).
   std::optional<PriorPlacement> undo(const PriorPlacement& now);
   std::optional<PriorPlacement> redo(const PriorPlacement& now);
   void clear();
+
+  // A step was added, taken back or redone, or the steps cleared (Edit → Undo follows it).
+  Notifier<> changed;
 
  private:
   std::vector<PriorPlacement> undo_, redo_;

@@ -210,6 +210,7 @@ Json readingJson(const ReadingLayout& l) {
   for (const PlacedView& p : l.placed) {
     Json v = Json::object();
     if (!p.series.empty()) v["series"] = p.series;
+    if (!p.uid.empty()) v["uid"] = p.uid;
     if (!p.description.empty()) v["description"] = p.description;
     if (!p.note.empty()) v["note"] = p.note;
     views[gridViewName(p.view)] = v;
@@ -217,6 +218,36 @@ Json readingJson(const ReadingLayout& l) {
   Json j = {{"layout", layoutName(l.layout)}};
   if (!views.empty()) j["views"] = views;
   return j;
+}
+
+// The prior's 3D camera (compare): every field required, in the ranges the camera takes.
+CameraParams readPriorCamera(Reader& r, const Json& comparison) {
+  const std::string f = "comparison.prior-camera";
+  const Json& j = r.object(comparison, f, "prior-camera");
+  r.warnUnknown(
+      j, f + ".",
+      {"azimuth-deg", "elevation-deg", "zoom", "distance-mm", "pan-mm", "projection", "fov-deg"});
+  CameraParams c;
+  auto number = [&](const char* key) {
+    return r.number(r.require(j, f + "." + key, key), f + "." + key);
+  };
+  c.azimuthDeg = number("azimuth-deg");
+  c.elevationDeg = number("elevation-deg");
+  c.zoom = number("zoom");
+  c.distanceMm = number("distance-mm");
+  c.fovDeg = number("fov-deg");
+  if (!(c.zoom > 0.0)) r.fail(f + ".zoom", "must be above 0");
+  if (!(c.distanceMm >= 0.0)) r.fail(f + ".distance-mm", "must be 0 (frame the volume) or more");
+  if (!(c.fovDeg > 0.0 && c.fovDeg < 180.0)) r.fail(f + ".fov-deg", "must be 0 ... 180 degrees");
+  const Json& pan = r.require(j, f + ".pan-mm", "pan-mm");
+  if (!pan.is_array() || pan.size() != 2 || !pan[0].is_number() || !pan[1].is_number())
+    r.fail(f + ".pan-mm", "must be two numbers (mm)");
+  c.panMm = {pan[0].get<double>(), pan[1].get<double>()};
+  const std::string p = r.text(r.require(j, f + ".projection", "projection"), f + ".projection");
+  if (p != "perspective" && p != "orthographic")
+    r.fail(f + ".projection", "must be perspective or orthographic");
+  c.projection = p == "orthographic" ? Projection::Orthographic : Projection::Perspective;
+  return c;
 }
 
 void readReading(Reader& r, const Json& root, Session& s) {
@@ -238,10 +269,11 @@ void readReading(Reader& r, const Json& root, Session& s) {
         continue;
       }
       const Json& v = r.object(views, field, item.key());
-      r.warnUnknown(v, field + ".", {"series", "description", "note"});
+      r.warnUnknown(v, field + ".", {"series", "uid", "description", "note"});
       PlacedView p;
       p.view = *view;
       if (v.contains("series")) p.series = r.text(v.at("series"), field + ".series");
+      if (v.contains("uid")) p.uid = r.text(v.at("uid"), field + ".uid");
       if (v.contains("description"))
         p.description = r.text(v.at("description"), field + ".description");
       if (v.contains("note")) p.note = r.text(v.at("note"), field + ".note");
@@ -432,6 +464,18 @@ std::string sessionToJson(const Session& s, const std::string& sessionPath) {
   if (s.comparison) {
     Json c = {{"prior", s.comparison->priorPath},
               {"prior-time-point", s.comparison->priorTimePoint}};
+    if (!s.comparison->priorSeries.empty()) c["series"] = s.comparison->priorSeries;
+    if (!s.comparison->linkLook) c["link-look"] = false;
+    if (const auto& cam = s.comparison->priorCamera)
+      c["prior-camera"] = {
+          {"azimuth-deg", cam->azimuthDeg},
+          {"elevation-deg", cam->elevationDeg},
+          {"zoom", cam->zoom},
+          {"distance-mm", cam->distanceMm},
+          {"pan-mm", {cam->panMm.x, cam->panMm.y}},
+          {"projection",
+           cam->projection == Projection::Orthographic ? "orthographic" : "perspective"},
+          {"fov-deg", cam->fovDeg}};
     if (s.comparison->movingToFixed) {
       Json rows = Json::array();  // row by row, as the matrix is written on paper
       for (int row = 0; row < 4; ++row) {
@@ -575,10 +619,18 @@ SessionRead sessionFromJson(const std::string& text, const std::string& sessionP
   }
   if (root.contains("comparison")) {
     const Json& c = r.object(root, "comparison", "comparison");
-    r.warnUnknown(c, "comparison.", {"prior", "moving-to-fixed", "prior-time-point"});
+    r.warnUnknown(
+        c, "comparison.",
+        {"prior", "series", "moving-to-fixed", "link-look", "prior-camera", "prior-time-point"});
     Session::Comparison out;
     out.priorPath = r.text(r.require(c, "comparison.prior", "prior"), "comparison.prior");
     out.priorTimePoint = readTimePoint(r, c, "prior-time-point", "comparison.prior-time-point");
+    if (c.contains("series")) out.priorSeries = r.text(c.at("series"), "comparison.series");
+    if (c.contains("link-look")) {
+      if (!c.at("link-look").is_boolean()) r.fail("comparison.link-look", "must be true or false");
+      out.linkLook = c.at("link-look").get<bool>();
+    }
+    if (c.contains("prior-camera")) out.priorCamera = readPriorCamera(r, c);
     if (c.contains("moving-to-fixed")) {
       const std::string want =
           "must be 4 rows of 4 numbers: a rotation and a translation in mm, last row 0 0 0 1";

@@ -82,6 +82,13 @@ struct Session {
     std::optional<glm::dmat4> movingToFixed;  // none: linked by a shared Frame of Reference only
     // A 4D prior's own time point (time_follow.h: shown while it does not follow the study's).
     int priorTimePoint = 0;
+    // The prior's series in PRIORPATH (LoadOptions::series; empty: the default choice): a
+    // layout's second series of the study is its prior. Optional in the file ("series").
+    std::string priorSeries{};
+    // The "Link 3D look" box and the prior's 3D camera (issue 36). Optional in the file
+    // ("link-look", "prior-camera"; older sessions: linked, the camera the link gives).
+    bool linkLook = true;
+    std::optional<CameraParams> priorCamera{};
   };
   std::optional<Comparison> comparison;
   // The reading layout (issue 37: 1x1 ... 3d, Ctrl+1..6) and what a hanging protocol placed in

@@ -80,6 +80,7 @@ CompareView::CompareView(AppModels& study, RenderScheduler& studyScheduler, QWid
       "(the camera follows while navigation is linked)");
   connect(lookBox_, &QCheckBox::toggled, this, [this](bool on) {
     if (renderLink_) renderLink_->setLookLinked(on);
+    if (study_.comparison) study_.comparison->linkLook = on;  // a session keeps it
   });
   auto button = [this](const QString& text, const QString& name, const QString& tip, auto slot) {
     auto* b = new QPushButton(text);
@@ -157,6 +158,13 @@ CompareView::CompareView(AppModels& study, RenderScheduler& studyScheduler, QWid
   });
   timeConnection_ = study_.document.timeChanged.connect([this] { followStudyTime(); });
   modelConnection_ = comparison_.changed.connect([this] { refreshStatus(); });
+  // A session keeps the prior's camera (set by the window that opened the prior).
+  cameraConnection_ = prior_->render.changed.connect([this](unsigned what) {
+    if ((what & kCamera) && study_.comparison && !prior_->document.empty())
+      study_.comparison->priorCamera = prior_->render.params().camera;
+  });
+  // Edit → Undo may take a drag back too: the buttons follow the history whoever steps it.
+  historyConnection_ = history_.changed.connect([this] { refreshMoveButtons(); });
   link_ = std::make_unique<ComparisonLink>(comparison_, study_.crosshair, prior_->crosshair,
                                            &study_.windowLevel, &prior_->windowLevel);
   refreshGeometry();
@@ -181,6 +189,8 @@ CompareView::~CompareView() {
   study_.document.changed.disconnect(docConnection_);
   study_.document.timeChanged.disconnect(timeConnection_);
   comparison_.changed.disconnect(modelConnection_);
+  prior_->render.changed.disconnect(cameraConnection_);
+  history_.changed.disconnect(historyConnection_);
   link_.reset();
   renderLink_.reset();
   // The views are bound to the prior's models: they go first (children would go after), then
@@ -247,6 +257,10 @@ void CompareView::refreshGeometry() {
   fixedName_->setText("Study: " + QString::fromStdString(study_.document.name()));
   movingName_->setText("Prior: " + QString::fromStdString(prior_->document.name()));
 }
+
+bool CompareView::lookLinked() const { return lookBox_->isChecked(); }
+
+void CompareView::setLookLinked(bool on) { lookBox_->setChecked(on); }
 
 QString CompareView::statusText() const {
   QString text = QString::fromStdString(comparison_.linkText());

@@ -79,6 +79,10 @@ class CompareView : public QWidget {
   void setMovePrior(bool on);
   bool movePrior() const { return moveMode_; }
   const PriorMoveHistory& moveHistory() const { return history_; }
+  PriorMoveHistory& moveHistory() { return history_; }  // Edit → Undo takes its steps too
+  // The "Link 3D look" box (a session sets it).
+  bool lookLinked() const;
+  void setLookLinked(bool on);
   void undoMove();
   void redoMove();
 
@@ -134,7 +138,8 @@ class CompareView : public QWidget {
   bool swapped_ = false;
   int shown_ = 0;
   QString message_;  // the last alignment's outcome
-  int docConnection_ = 0, modelConnection_ = 0, timeConnection_ = 0;
+  int docConnection_ = 0, modelConnection_ = 0, timeConnection_ = 0, cameraConnection_ = 0,
+      historyConnection_ = 0;
 };
 
 }  // namespace voxray::ui

@@ -26,6 +26,7 @@
 #include "measure_panel.h"
 #include "movie_dialog.h"
 #include "pacs_dialog.h"
+#include "pacs_node_dialog.h"
 #include "raw_import_dialog.h"
 #include "reading_actions.h"
 #include "recent_files.h"
@@ -275,6 +276,15 @@ void MainWindow::buildMenus() {
   file->addAction("Open &session…", QKeySequence("Ctrl+Alt+O"), sessions_, &SessionActions::open);
   file->addAction("Open from &PACS…", QKeySequence("Ctrl+Shift+P"), this,
                   &MainWindow::openFromPacs);
+#ifdef VOXRAY_HAS_DICOM
+  // Issue 41: the node editor without going through Open from PACS first.
+  file->addAction("PACS &nodes…", this,
+                  [this] {
+                    PacsNodeDialog editor(this);
+                    editor.exec();
+                  })
+      ->setObjectName("filePacsNodes");
+#endif
   addMultiVolumeActions(file, nullptr);
   recentMenu_ = file->addMenu("Open &recent");
   rebuildRecentMenu();

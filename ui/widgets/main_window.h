@@ -159,6 +159,7 @@ class MainWindow : public QMainWindow {
   OverlayLoader* overlayLoader_ = nullptr;
   LoadController* priorLoader_ = nullptr;  // the prior for compare, beside the study's loader
   CompareView* compare_ = nullptr;
+  std::string priorSeries_;             // the series the prior loader opens (LoadOptions::series)
   int loadingTimePoint_ = 0;            // the time point to show first of the input being loaded
   SessionInput loading_;                // the input being loaded, for AppModels::source
   MovieController* movies_ = nullptr;   // File → Export movie, in the background

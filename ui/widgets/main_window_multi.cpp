@@ -78,13 +78,25 @@ void MainWindow::wireCompare() {
             if (series.empty()) return;
             // A session's alignment of this prior comes back after setPrior (which resets it).
             const auto saved = models_.comparison;
-            const bool same = saved && saved->priorPath == input.toStdString();
+            const bool same = saved && saved->priorPath == input.toStdString() &&
+                              saved->priorSeries == priorSeries_;
             const int ownTime = same ? saved->priorTimePoint : 0;  // a 4D prior's, if saved
             setCompareMode(true);
-            models_.comparison = Session::Comparison{input.toStdString(), std::nullopt, ownTime};
+            models_.comparison =
+                Session::Comparison{input.toStdString(), std::nullopt, ownTime, priorSeries_};
             compare_->setPrior(std::move(series), name, ownTime);
             if (same && saved->movingToFixed)
               compare_->comparison().setMovingToFixed(*saved->movingToFixed);  // checked rigid
+            // The session's Link 3D look, then its prior camera (older sessions: linked, and
+            // the camera the link gives).
+            compare_->setLookLinked(same ? saved->linkLook : true);
+            if (same && saved->priorCamera) {
+              const CameraParams camera = *saved->priorCamera;
+              compare_->prior().render.update(kCamera, [&](RenderParams& p) { p.camera = camera; });
+            }
+            // What the box and the camera are now (a change since is kept as it happens).
+            models_.comparison->linkLook = compare_->lookLinked();
+            models_.comparison->priorCamera = compare_->prior().render.params().camera;
             statusBar()->showMessage(compare_->statusText(), 30000);
           });
   connect(priorLoader_, &LoadController::failed, this,
@@ -92,6 +104,7 @@ void MainWindow::wireCompare() {
 }
 
 void MainWindow::openPrior(const std::string& input, const LoadOptions& options) {
+  priorSeries_ = options.series;  // a session opens the same series again
   priorLoader_->load(input, options, QFileInfo(QString::fromStdString(input)).fileName());
 }
 
@@ -104,6 +117,8 @@ void MainWindow::setCompareMode(bool on) {
     connect(compare_, &CompareView::closeRequested, this, [this] { setCompareMode(false); });
     connect(compare_, &CompareView::statusChanged, this,
             [this](const QString& t) { statusBar()->showMessage(t, 30000); });
+    // Move prior's drags in Edit → Undo's order with the view's and the segments' edits.
+    editOrder_->setPriorMoves(&compare_->moveHistory(), &compare_->comparison());
   }
   if (compare_) compare_->setVisible(on);
   grid_->setVisible(!on);
@@ -117,9 +132,11 @@ void MainWindow::addMultiVolumeActions(QMenu* file, QMenu* view) {
     // (Here, not in wireCompare: the session actions exist once the menus are built.) A
     // session with a prior opens it beside the study, with its alignment.
     connect(sessions_, &SessionActions::sessionShown, this, [this] {
-      if (models_.comparison && !models_.comparison->priorPath.empty())
-        openPrior(models_.comparison->priorPath);
-      else
+      if (models_.comparison && !models_.comparison->priorPath.empty()) {
+        LoadOptions options;
+        options.series = models_.comparison->priorSeries;
+        openPrior(models_.comparison->priorPath, options);
+      } else
         setCompareMode(false);
     });
     file->addAction("Open o&verlay volume…", this,

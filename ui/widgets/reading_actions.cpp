@@ -1,7 +1,9 @@
 #include "reading_actions.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 #include <QAction>
@@ -17,6 +19,7 @@
 #include <QTimer>
 #include <QTreeWidget>
 
+#include "compare_view.h"
 #include "gui_message.h"
 #include "json_text_dialog.h"
 #include "load_controller.h"
@@ -35,6 +38,14 @@ namespace voxray::ui {
 
 namespace {
 const char* kLastLayoutKey = "reading/lastLayout";
+
+// Whether the compare prior is SERIES of FOLDER (a session reads its paths normalised).
+bool priorIs(const AppModels& m, const std::string& folder, const std::string& series) {
+  namespace fs = std::filesystem;
+  return m.comparison && m.comparison->priorSeries == series &&
+         fs::path(m.comparison->priorPath).lexically_normal() ==
+             fs::path(folder).lexically_normal();
+}
 }  // namespace
 
 std::string qtKeyNormaliser(const std::string& key) {
@@ -64,8 +75,7 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
       ReadingLayout r = *pendingPlacement_;
       pendingPlacement_.reset();
       const std::string shown = shownSeries(r.layout, r.placed).value_or("");
-      r.placed = keepShown(r.placed, shown);
-      setReading(r);
+      hang(r, shown);
       if (pendingRule_) {
         const HangingRule rule = *pendingRule_;
         pendingRule_.reset();
@@ -181,6 +191,11 @@ void ReadingActions::buildMenu() {
          menu->addAction(toolTitles[i], this, [this, t] { models_.measurements.setTool(t); }));
   }
   menu->addSeparator();
+  // Show series in this view: the study's series, listed when the menu opens.
+  QMenu* series = menu->addMenu("Show &series in this view");
+  series->setObjectName("readingShowSeries");
+  connect(series, &QMenu::aboutToShow, this, [this, series] { fillSeriesMenu(series); });
+  menu->addSeparator();
   menu->addAction("&Hanging protocols…", this, [this] { showHangingProtocolEditor(); })
       ->setObjectName("readingHangingProtocols");
   menu->addAction("&Keymap…", this, [this] { showKeymapEditor(); })->setObjectName("readingKeymap");
@@ -190,6 +205,11 @@ void ReadingActions::setLayout(ViewLayout l) {
   QSettings().setValue(kLastLayoutKey, QString::fromStdString(layoutName(l)));
   pendingPlacement_.reset();
   pendingRule_.reset();
+  if (besideShown_) {  // every view shows the open volume again: the second series goes
+    besideShown_ = false;
+    models_.comparison.reset();
+    window_.setCompareMode(false);
+  }
   setReading(ReadingLayout{l, {}});
 }
 
@@ -244,7 +264,7 @@ bool ReadingActions::placeSeriesOf(const HangingRule& r) {
     return false;
   }
   std::vector<StudySeries> study;
-  for (const auto& s : volumes) study.push_back({s.selector, s.description});
+  for (const auto& s : volumes) study.push_back({s.selector, s.description, s.uid});
   ReadingLayout placed{reading_.layout, placeSeries(r, study)};
   const long open = openSeries(volumes, models_);
   const std::string current = open >= 0 ? volumes[size_t(open)].selector : std::string();
@@ -256,12 +276,122 @@ bool ReadingActions::placeSeriesOf(const HangingRule& r) {
     window_.open(folder, options);
     return true;
   }
-  placed.placed = keepShown(placed.placed, current);
-  setReading(placed);
+  hang(placed, current);
   return false;
 #else
   return false;
 #endif
+}
+
+void ReadingActions::hang(ReadingLayout placed, const std::string& current) {
+  const auto beside = besideSeries(placed.layout, placed.placed, current);
+  placed.placed = beside ? keepShown(placed.placed, current, beside->series)
+                         : keepShown(placed.placed, current);
+  setReading(placed);
+  if (!beside) return;
+  // The second series in compare's right column: its own volume, crosshair and window,
+  // linked to the study's in patient coordinates (one study: one Frame of Reference).
+  besideShown_ = true;
+  const std::string folder = models_.source.path;
+  CompareView* c = window_.compareView();
+  if (c && c->hasPrior() && priorIs(models_, folder, beside->series)) {
+    window_.setCompareMode(true);
+    return;
+  }
+  LoadOptions options;
+  options.series = beside->series;
+  window_.openPrior(folder, options);
+}
+
+std::string ReadingActions::openSeriesSelector() const {
+#ifdef VOXRAY_HAS_DICOM
+  const auto v = models_.document.volume();
+  if (!v || models_.source.path.empty() || v->study.seriesInstanceUid.empty()) return {};
+  try {
+    const auto volumes = studyVolumes(models_.source.path);
+    const long open = openSeries(volumes, models_);
+    return open >= 0 ? volumes[size_t(open)].selector : std::string();
+  } catch (const std::exception&) {
+    return {};
+  }
+#else
+  return {};
+#endif
+}
+
+std::vector<StudySeries> ReadingActions::studySeries() const {
+  std::vector<StudySeries> study;
+#ifdef VOXRAY_HAS_DICOM
+  const auto v = models_.document.volume();
+  if (!v || models_.source.path.empty() || v->study.seriesInstanceUid.empty()) return study;
+  try {
+    for (const auto& s : studyVolumes(models_.source.path))
+      study.push_back({s.selector, s.description, s.uid});
+  } catch (const std::exception&) {  // an unreadable folder: no series to offer
+  }
+#endif
+  return study;
+}
+
+GridView ReadingActions::focusedGridView() const {
+  return std::array{GridView::Axial, GridView::Coronal, GridView::Sagittal}[size_t(focusedSlice_)];
+}
+
+std::vector<std::string> ReadingActions::restoreReading(const ReadingLayout& r) {
+  const bool placed = std::any_of(r.placed.begin(), r.placed.end(),
+                                  [](const PlacedView& p) { return !p.series.empty(); });
+  const std::vector<StudySeries> study = placed ? studySeries() : std::vector<StudySeries>{};
+  // No listing (not a DICOM folder, or unreadable): the placement as saved.
+  const ReadingLayout checked = study.empty() ? r : checkPlacement(r, study);
+  std::vector<std::string> notes;
+  for (size_t i = 0; i < r.placed.size(); ++i)
+    if (!r.placed[i].series.empty() && checked.placed[i].series.empty()) {
+      notes.push_back(gridViewName(checked.placed[i].view) + ": " + checked.placed[i].note);
+      // The session's second column was that series: it does not open.
+      if (priorIs(models_, models_.source.path, r.placed[i].series)) models_.comparison.reset();
+    }
+  const auto cells = seriesInCells(checked);
+  besideShown_ = cells.size() > 1 && priorIs(models_, models_.source.path, cells[1]);
+  setReading(checked);
+  return notes;
+}
+
+void ReadingActions::showSeriesInView(GridView view, const StudySeries& s) {
+  const std::string current = openSeriesSelector();
+  ReadingLayout r = reading_;
+  // Views holding a third series show the open volume again (two series at once).
+  r.placed.erase(std::remove_if(r.placed.begin(), r.placed.end(),
+                                [&](const PlacedView& p) {
+                                  return p.view != view && p.series != current &&
+                                         p.series != s.selector;
+                                }),
+                 r.placed.end());
+  r = placeInView(r, view, s);
+  // The other cells show the open series (placed, so the session keeps them).
+  for (const LayoutCell& c : layoutCells(r.layout))
+    if (std::none_of(r.placed.begin(), r.placed.end(),
+                     [&](const PlacedView& p) { return p.view == c.view; })) {
+      const auto study = studySeries();
+      auto it = std::find_if(study.begin(), study.end(),
+                             [&](const StudySeries& x) { return x.selector == current; });
+      if (it != study.end()) r = placeInView(r, c.view, *it);
+    }
+  hang(r, current);
+}
+
+void ReadingActions::fillSeriesMenu(QMenu* menu) {
+  menu->clear();
+  const auto study = studySeries();
+  if (study.empty()) {
+    menu->addAction("(the open volume is no DICOM series of a study)")->setEnabled(false);
+    return;
+  }
+  for (const StudySeries& s : study) {
+    QAction* a =
+        menu->addAction(QString::fromStdString(s.description.empty() ? s.selector : s.description),
+                        this, [this, s] { showSeriesInView(focusedGridView(), s); });
+    a->setObjectName(QString::fromStdString("readingShowSeries-" + s.selector));
+  }
 }
 
 QString ReadingActions::emptyViewsText() const {

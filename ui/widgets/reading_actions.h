@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <QObject>
 #include <QString>
@@ -51,6 +52,17 @@ class ReadingActions : public QObject {
   const ReadingLayout& reading() const { return reading_; }
   // Puts R on the grid: views left empty are hidden, their notes in the status bar.
   void setReading(const ReadingLayout& r);
+  // A session's layout: its placement checked against the study's series first (a removed
+  // series leaves its view empty); the notes of the views so emptied ("coronal: its series
+  // 'T2' is no longer in the study; …"), for the session's message.
+  std::vector<std::string> restoreReading(const ReadingLayout& r);
+  // Show series in this view: S in VIEW; a series other than the open one shows beside it
+  // (compare's two columns, linked in patient coordinates).
+  void showSeriesInView(GridView view, const StudySeries& s);
+  // The open study's volume series in the study's order (none: no DICOM folder).
+  std::vector<StudySeries> studySeries() const;
+  // The view the last focused slice view is (axial before any).
+  GridView focusedGridView() const;
   // The slice view last focused (axial before any).
   SliceView& focusedSlice() const;
   // The rule matching the open study applied (layout, window, 3D preset); its name, or "".
@@ -79,6 +91,11 @@ class ReadingActions : public QObject {
   bool placeSeriesOf(const HangingRule& r);
   QString applyLook(const HangingRule* r);  // the rule's window and 3D preset, said
   QString emptyViewsText() const;           // "Views left empty: sagittal: …", or ""
+  // PLACED on the grid with CURRENT (the open series) shown: a second series opens beside it
+  // in compare's right column; a third's view is left empty with a note.
+  void hang(ReadingLayout placed, const std::string& current);
+  std::string openSeriesSelector() const;  // the open series' selector, or ""
+  void fillSeriesMenu(QMenu* menu);
 
   MainWindow& window_;
   AppModels& models_;
@@ -91,6 +108,8 @@ class ReadingActions : public QObject {
   std::optional<ReadingLayout> pendingPlacement_;
   std::optional<HangingRule> pendingRule_;
   int focusedSlice_ = 0;
+  // The placement opened its second series as compare's prior (a layout key closes it).
+  bool besideShown_ = false;
 };
 
 // Qt's reading of a key text ("ctrl+n" → "Ctrl+N"); "" when it is no key.

@@ -31,8 +31,11 @@ SessionActions::SessionActions(MainWindow& window, AppModels& models)
     pending_.reset();
     auto problems = applySession(models_, s);
     // The reading layout before the maximised view: arranging shows the grid's views.
+    // A series it placed that the study no longer has leaves its view empty, said.
     if (s.reading)
-      if (auto* reading = window_.findChild<ReadingActions*>()) reading->setReading(*s.reading);
+      if (auto* reading = window_.findChild<ReadingActions*>())
+        for (const std::string& n : reading->restoreReading(*s.reading))
+          problems.push_back("View " + n);
     const auto& layouts = sessionLayouts();
     window_.grid().setMaximised(
         int(std::find(layouts.begin(), layouts.end(), s.layout) - layouts.begin()) - 1);
