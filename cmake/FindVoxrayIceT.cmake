@@ -19,7 +19,9 @@ else()
   add_library(Voxray::IceT INTERFACE IMPORTED)
   target_include_directories(Voxray::IceT SYSTEM INTERFACE ${VOXRAY_ICET_INCLUDE_DIR})
   target_link_libraries(Voxray::IceT INTERFACE ${VOXRAY_ICET_MPI} ${VOXRAY_ICET_CORE} MPI::MPI_CXX)
-  find_program(VOXRAY_MPIEXEC NAMES mpiexec mpirun HINTS ${MPI_HOME}/bin)
+  # FindMPI's mpiexec (/usr/bin/mpiexec): Open MPI takes its prefix from the path it was
+  # started by, and /bin/mpiexec (merged /usr) gives "/", which it refuses.
+  set(VOXRAY_MPIEXEC ${MPIEXEC_EXECUTABLE} CACHE INTERNAL "mpiexec for the voxray-mpi tests")
   set(VOXRAY_MPI_FOUND ON)
   message(STATUS "voxray-mpi: MPI ${MPI_CXX_VERSION}, IceT ${VOXRAY_ICET_CORE}, ${VOXRAY_MPIEXEC}")
 endif()
