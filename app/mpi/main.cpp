@@ -13,6 +13,7 @@
 #include <iostream>
 #include <numeric>
 #include <optional>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 
@@ -183,29 +184,44 @@ int run(const Options& o, MPI_Comm world) {
   // 5. The frames: the first builds the kernels; with --frames N the rest are timed.
   IcetCompositor icet(world);
   Image image;
-  std::vector<double> frameMs, renderMs, compositeMs;
+  std::vector<double> frameMs, renderMs, compositeMs, ownMs, ownCompositeMs;
   for (int f = 0; f < std::max(o.frames, 1); ++f) {
     IcetFrameStats stats;
     MPI_Barrier(world);  // every rank starts the frame together: the time is the frame's
     icet.drawFrame(*renderer, p, order, &image, &stats, &error);
     if (!allSucceeded(world, error, sliceText(range))) return 1;
-    double slowest = stats.renderMs;  // the slowest rank's part bounds the frame
-    MPI_Allreduce(MPI_IN_PLACE, &slowest, 1, MPI_DOUBLE, MPI_MAX, world);
+    // The slowest rank's part bounds the frame. IceT's composite time on a faster rank holds
+    // its wait for that part; on the slowest rank it is the composite alone.
+    struct {
+      double ms;
+      int rank;
+    } slowest{stats.renderMs, rank};
+    MPI_Allreduce(MPI_IN_PLACE, &slowest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+    double composite = stats.compositeMs;
+    MPI_Bcast(&composite, 1, MPI_DOUBLE, slowest.rank, world);
     if (f > 0 || o.frames <= 1) {
       frameMs.push_back(stats.frameMs);
-      renderMs.push_back(slowest);
-      compositeMs.push_back(stats.compositeMs);
+      ownMs.push_back(stats.renderMs);
+      ownCompositeMs.push_back(stats.compositeMs);
+      renderMs.push_back(slowest.ms);
+      compositeMs.push_back(composite);
     }
   }
   if (rank == 0) {
     std::cerr << "rendered " << p.width << "x" << p.height << " " << toString(p.mode) << " on "
               << size << (size == 1 ? " rank" : " ranks") << ": frame " << median(frameMs)
               << " ms, slowest part " << median(renderMs) << " ms, IceT composite "
-              << median(compositeMs) << " ms ("
+              << median(compositeMs) << " ms on the slowest part's rank ("
               << (o.frames > 1 ? "median of " + std::to_string(frameMs.size()) + " frames after one"
                                : std::string("first frame, includes the kernel builds"))
               << ")\n";
   }
+  // Each rank's own part and IceT's composite time there (with its wait for slower parts).
+  std::ostringstream own;
+  own << "  " << ofRank << ": part " << median(ownMs) << " ms, IceT composite "
+      << median(ownCompositeMs) << " ms";
+  const auto partLines = gatherText(world, own.str());
+  for (const auto& line : partLines) std::cerr << line << "\n";
   error.clear();
   if (rank == 0 && !o.output.empty()) {
     try {

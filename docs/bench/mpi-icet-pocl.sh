@@ -23,7 +23,7 @@ export VOXRAY_DEVICE=cpu
       for n in 1 2 3; do
         echo "## round $round, $n rank(s): $m"
         mpiexec --oversubscribe -n $n $mpi "${cthead[@]}" $m --size 512x384 --azimuth 30 \
-          --elevation 20 --frames 11 2>&1 | grep -E '^rendered|^  rank'
+          --elevation 20 --frames 11 2>&1 | grep -E '^rendered|^  rank [0-9]: part'
       done
     done
   done
