@@ -40,8 +40,9 @@ void drawPart(const IceTDouble*, const IceTDouble*, const IceTFloat*, const IceT
   const RenderParams& p = *f.params;
   const int w = int(icetImageGetWidth(result)), h = int(icetImageGetHeight(result));
   IceTFloat* colour = icetImageGetColorf(result);
-  IceTFloat* depth =
-      icetImageGetDepthFormat(result) == ICET_IMAGE_DEPTH_FLOAT ? icetImageGetDepthf(result) : nullptr;
+  IceTFloat* depth = icetImageGetDepthFormat(result) == ICET_IMAGE_DEPTH_FLOAT
+                         ? icetImageGetDepthf(result)
+                         : nullptr;
   std::fill(colour, colour + size_t(w) * size_t(h) * 4, 0.0f);
   if (depth) std::fill(depth, depth + size_t(w) * size_t(h), 1.0f);
   if (w != p.width || h != p.height) {
@@ -91,8 +92,8 @@ IcetCompositor::~IcetCompositor() {
 }
 
 void IcetCompositor::drawFrame(MultiDeviceRenderer& renderer, const RenderParams& p,
-                               const std::vector<int>& rankOrder, Image* out,
-                               IcetFrameStats* stats, std::string* error) {
+                               const std::vector<int>& rankOrder, Image* out, IcetFrameStats* stats,
+                               std::string* error) {
   icetSetContext(static_cast<IceTContext>(context_));
   icetResetTiles();
   icetAddTile(0, 0, p.width, p.height, 0);  // one tile, shown by rank 0

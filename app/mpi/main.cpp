@@ -158,18 +158,19 @@ int run(const Options& o, MPI_Comm world) {
     MultiDeviceOptions mo;
     mo.ranges = {range};
     mo.valueRange = valueRange;
-    renderer = std::make_unique<MultiDeviceRenderer>(std::vector<ClContext*>{context.get()},
-                                                     volume, mo);
+    renderer =
+        std::make_unique<MultiDeviceRenderer>(std::vector<ClContext*>{context.get()}, volume, mo);
     keys = renderer->visibilityKeys(p);
   } catch (const std::exception& e) {
     error = e.what();
   }
   if (!allSucceeded(world, error, sliceText(range))) return 1;
   {
-    std::string held = std::to_string(range.storedFirst) + "-" + std::to_string(range.storedEnd - 1);
-    const auto lines = gatherText(
-        world, ofRank + ": " + context->device().name + ", " + sliceText(range) + " (held " +
-                   held + ", " + (slabRead ? "read alone" : "whole volume read") + ")");
+    std::string held =
+        std::to_string(range.storedFirst) + "-" + std::to_string(range.storedEnd - 1);
+    const auto lines = gatherText(world, ofRank + ": " + context->device().name + ", " +
+                                             sliceText(range) + " (held " + held + ", " +
+                                             (slabRead ? "read alone" : "whole volume read") + ")");
     for (const auto& line : lines) std::cerr << "  " << line << "\n";
   }
 
@@ -263,8 +264,10 @@ int main(int argc, char** argv) {
       throw CLI::RequiredError("-o,--output (or --frames N to time frames only)");
   } catch (const CLI::ParseError& e) {
     // Every rank parsed the same arguments: rank 0 speaks.
-    if (rank == 0) rc = app.exit(e);
-    else rc = e.get_exit_code();
+    if (rank == 0)
+      rc = app.exit(e);
+    else
+      rc = e.get_exit_code();
     MPI_Finalize();
     return rc == 0 ? 0 : 2;
   }

@@ -46,8 +46,7 @@ bool allSucceeded(MPI_Comm comm, const std::string& error, const std::string& wh
   for (const std::string& text : order) {
     const std::vector<int>& ranks = byText[text];
     std::string who = ranks.size() == 1 ? "rank " : "ranks ";
-    for (size_t i = 0; i < ranks.size(); ++i)
-      who += (i ? ", " : "") + std::to_string(ranks[i] + 1);
+    for (size_t i = 0; i < ranks.size(); ++i) who += (i ? ", " : "") + std::to_string(ranks[i] + 1);
     who += " of " + std::to_string(size);
     if (ranks.size() == 1 && !places[size_t(ranks[0])].empty())
       who += " (" + places[size_t(ranks[0])] + ")";

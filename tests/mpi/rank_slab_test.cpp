@@ -3,10 +3,10 @@
 // voxel for voxel against the whole import: the slab read must not change a value.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 #include <string>
 #include <vector>
 
@@ -34,9 +34,9 @@ LoadOptions ctHeadOptions() {
 
 // A folder under the temp folder, gone at the end.
 struct TempDir {
-  fs::path path = fs::temp_directory_path() /
-                  ("voxray-mpi-slab-" + std::to_string(::getpid()) + "-" +
-                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::path path =
+      fs::temp_directory_path() / ("voxray-mpi-slab-" + std::to_string(::getpid()) + "-" +
+                                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
   TempDir() { fs::create_directories(path); }
   ~TempDir() { fs::remove_all(path); }
 };
@@ -61,7 +61,7 @@ TEST(RankSlab, CtheadSlabEqualsTheWholeImportsSlices) {
   ASSERT_EQ(placed.dims, whole.dims);
   EXPECT_EQ(placed.originMm, whole.originMm);
   EXPECT_EQ(placed.spacingMm, whole.spacingMm);
-  EXPECT_EQ(placed.voxels[0], -5000);                    // slice 0: filler
+  EXPECT_EQ(placed.voxels[0], -5000);                     // slice 0: filler
   EXPECT_EQ(placed.voxels[53 * sliceVoxels - 1], -5000);  // slice 52: filler
   for (size_t i = 53 * sliceVoxels; i < placed.voxels.size(); ++i)
     ASSERT_EQ(placed.voxels[i], whole.voxels[i]) << "voxel " << i;
