@@ -16,9 +16,10 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Folder -> layer, and each layer's rank: a file may include a header of a lower rank.
 LAYERS = {'io/core': 'core', 'io/pacs': 'pacs', 'io': 'io', 'kernels': 'kernels',
           'engine/lab': 'lab', 'engine': 'engine', 'ui/study': 'study', 'ui/widgets': 'widgets',
-          'app/cli': 'cli', 'app': 'app'}
+          'app/cli': 'cli', 'app/mpi': 'mpi', 'app': 'app'}
+# mpi (voxray-mpi) sits above cli: it reuses the CLI's INPUT and render flags.
 RANK = {'core': 0, 'io': 1, 'kernels': 1, 'pacs': 2, 'engine': 2, 'lab': 3, 'study': 4,
-        'widgets': 5, 'cli': 6, 'app': 6}
+        'widgets': 5, 'cli': 6, 'app': 6, 'mpi': 7}
 SOURCES = ('.h', '.hpp', '.inl', '.cl', '.cpp')
 
 

@@ -176,7 +176,23 @@ MultiDeviceRenderer::MultiDeviceRenderer(const std::vector<ClContext*>& contexts
     if (options.budgetBytes > 0) mem = std::min(mem, double(options.budgetBytes));
     weights.push_back(std::max(mem, 1.0));
   }
-  std::vector<PartRange> ranges = planParts(volume.dims.z, weights, options.apron);
+  std::vector<PartRange> ranges = options.ranges;
+  if (ranges.empty()) {
+    ranges = planParts(volume.dims.z, weights, options.apron);
+  } else if (ranges.size() != contexts.size()) {
+    throw inputError("give one range per device: " + std::to_string(ranges.size()) +
+                     " ranges for " + std::to_string(contexts.size()) + " devices");
+  } else {
+    for (const PartRange& r : ranges)
+      if (r.first < 0 || r.end > volume.dims.z || r.first >= r.end ||
+          r.storedFirst > std::max(r.first - options.apron, 0) ||
+          r.storedEnd < std::min(r.end + options.apron, volume.dims.z))
+        throw inputError("the range of slices " + std::to_string(r.first) + " to " +
+                         std::to_string(r.end - 1) + " (held " + std::to_string(r.storedFirst) +
+                         " to " + std::to_string(r.storedEnd - 1) + ") does not fit the " +
+                         std::to_string(volume.dims.z) + " slices with an apron of " +
+                         std::to_string(options.apron));
+  }
   for (size_t k = 0; k < contexts.size(); ++k) {
     ContextImpl& cl = contexts[k]->impl();
     VolumeStorage s = options.storage;
@@ -185,6 +201,7 @@ MultiDeviceRenderer::MultiDeviceRenderer(const std::vector<ClContext*>& contexts
     if (s == VolumeStorage::Image3d && !cl.info.imageSupport)
       throw deviceError(cl.info.name + " has no image support: render with the buffer storage");
     impl_->parts.push_back(std::make_unique<Impl::Part>(cl, volume, ranges[k], s));
+    impl_->parts.back()->frame.valueRange = options.valueRange;
   }
   for (size_t k = 0; k < impl_->parts.size(); ++k) impl_->upload(*impl_->parts[k], int(k));
 }
@@ -268,7 +285,42 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
   });
 }
 
+std::vector<double> MultiDeviceRenderer::visibilityKeys(const RenderParams& p) {
+  std::vector<double> keys;
+  const int slices = impl_->volume.dims.z;
+  for (auto& part : impl_->parts) {
+    DeviceFrame& f = part->frame;
+    f.updateSetup(p);
+    const ViewGeometry& g = f.setup.view;
+    const PartRange& r = part->range;
+    // The planes z = first and z = end bound the part's samples (raycast_part.cl); the first
+    // and last parts are open below and above.
+    const double lo = r.first == 0 ? -HUGE_VAL : double(r.first);
+    const double hi = r.end == slices ? HUGE_VAL : double(r.end);
+    if (p.camera.projection == Projection::Orthographic) {
+      const double dz = g.dirToVoxel(g.forward).z;
+      keys.push_back(dz >= 0.0 ? double(r.first) : -double(r.first));
+    } else {
+      const double ez = g.toVoxel(g.eye).z;
+      keys.push_back(std::max({lo - ez, ez - hi, 0.0}));
+    }
+  }
+  return keys;
+}
+
+std::vector<PartImage> MultiDeviceRenderer::renderParts(const RenderParams& p,
+                                                        MultiDeviceStats* stats) {
+  std::vector<PartImage> images;
+  renderInto(p, nullptr, stats, &images);
+  return images;
+}
+
 void MultiDeviceRenderer::render(const RenderParams& p, Image& out, MultiDeviceStats* stats) {
+  renderInto(p, &out, stats, nullptr);
+}
+
+void MultiDeviceRenderer::renderInto(const RenderParams& p, Image* out, MultiDeviceStats* stats,
+                                     std::vector<PartImage>* partImages) {
   const auto start = Clock::now();
   if (p.lighting != Lighting::Phong)
     throw inputError(std::string("a frame over several devices is lit by phong only, not ") +
@@ -312,10 +364,16 @@ void MultiDeviceRenderer::render(const RenderParams& p, Image& out, MultiDeviceS
     }
   }
   const auto composite = Clock::now();
-  std::vector<const PartImage*> images;
-  for (const auto& part : m.parts) images.push_back(&part->image);
-  compositeParts(p.mode, images, p.width, p.height, glm::vec3(p.background),
-                 float(p.earlyTermination), out);
+  if (out) {
+    std::vector<const PartImage*> images;
+    for (const auto& part : m.parts) images.push_back(&part->image);
+    compositeParts(p.mode, images, p.width, p.height, glm::vec3(p.background),
+                   float(p.earlyTermination), *out);
+  }
+  if (partImages) {
+    partImages->clear();
+    for (const auto& part : m.parts) partImages->push_back(part->image);
+  }
   if (stats) {
     stats->compositeMs = msSince(composite);
     stats->parts = std::move(partStats);

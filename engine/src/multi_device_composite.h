@@ -4,18 +4,11 @@
 
 #include <glm/glm.hpp>
 
+#include "voxray/engine/multi_device.h"  // PartImage
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
 
 namespace voxray {
-
-// One device's partial image (kernels/multidev/raycast_part.cl): per pixel premultiplied
-// RGBA (4 floats) and the index its range starts at along the ray (dvr) or of its hit (iso),
-// which orders the parts per pixel. The memory is the caller's (pinned, mapped buffers).
-struct PartImage {
-  const float* colour = nullptr;
-  const float* order = nullptr;
-};
 
 // Composites PARTS (all WIDTH x HEIGHT) into OUT: dvr "over" front to back in each pixel's
 // order, stopping once the opacity reaches EARLYTERMINATION as the one-device ray does, then

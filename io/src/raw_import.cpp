@@ -81,7 +81,8 @@ size_t fileSize(const std::string& path) {
   return size_t(size);
 }
 
-// Slices of a folder or pattern: one file each, all header + one slice long.
+// Slices of a folder or pattern: one file each, all header + one slice long. With a zSlab only
+// its files are checked (a rank reading its part does not open the others).
 std::vector<SliceSource> stackSources(const std::vector<detail::SliceFile>& files,
                                       const RawLayout& l, int& z) {
   if (l.dims.z != 0 && size_t(l.dims.z) != files.size()) {
@@ -92,7 +93,13 @@ std::vector<SliceSource> stackSources(const std::vector<detail::SliceFile>& file
   checkVoxelCount(l.dims.x, l.dims.y, (long long)files.size());
   z = int(files.size());
   std::vector<SliceSource> sources;
-  for (const auto& f : files) {
+  for (size_t k = 0; k < files.size(); ++k) {
+    const auto& f = files[k];
+    const bool inSlab = !l.zSlab || (int(k) >= l.zSlab->first && int(k) < l.zSlab->second);
+    if (!inSlab) {
+      sources.push_back({f.path, l.headerBytes});
+      continue;
+    }
     const size_t found = fileSize(f.path);
     const size_t expected = detail::rawFileBytes(l, found, true).expected;
     if (found != expected) {
@@ -159,21 +166,13 @@ void readExactly(const SliceSource& s, uint8_t* dest, size_t bytes) {
   ::close(fd);
 }
 
-}  // namespace
-
-Volume importRaw(const std::string& input, const RawLayout& layout) {
-  return importRaw(input, layout, RawFeedback{});
-}
-
-Volume importRaw(const std::string& input, const RawLayout& layout, const RawFeedback& feedback) {
+// INPUT's slices in z order (only listed and checked, not read); Z their count.
+std::vector<SliceSource> listSources(const std::string& input, const RawLayout& layout, int& z) {
   validateLayout(layout);
   checkVoxelCount(layout.dims.x, layout.dims.y, layout.dims.z);
-  const size_t sliceVoxels = size_t(layout.dims.x) * size_t(layout.dims.y);
-  const size_t sampleSize = sampleBytes(layout.type);
-  const size_t sliceBytes = sliceVoxels * sampleSize;
-
+  const size_t sliceBytes =
+      size_t(layout.dims.x) * size_t(layout.dims.y) * sampleBytes(layout.type);
   std::vector<SliceSource> sources;
-  int z = 0;
   std::error_code ec;
   if (fs::is_directory(input, ec)) {
     if (layout.range)
@@ -188,6 +187,40 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
     sources = stackSources(detail::listSlicePattern(input, layout.range), layout, z);
   } else {
     throw inputError(input + ": no such file or folder");
+  }
+  return sources;
+}
+
+}  // namespace
+
+Volume importRaw(const std::string& input, const RawLayout& layout) {
+  return importRaw(input, layout, RawFeedback{});
+}
+
+int rawSliceCount(const std::string& input, const RawLayout& layout) {
+  RawLayout listOnly = layout;
+  listOnly.zSlab = std::pair<int, int>{0, 0};  // check no file's size: only count them
+  int z = 0;
+  listSources(input, listOnly, z);
+  return z;
+}
+
+Volume importRaw(const std::string& input, const RawLayout& layout, const RawFeedback& feedback) {
+  const size_t sliceVoxels = size_t(layout.dims.x) * size_t(layout.dims.y);
+  const size_t sampleSize = sampleBytes(layout.type);
+  const size_t sliceBytes = sliceVoxels * sampleSize;
+  int z = 0;
+  std::vector<SliceSource> sources = listSources(input, layout, z);
+  int slabFirst = 0;
+  if (layout.zSlab) {
+    const auto [first, end] = *layout.zSlab;
+    if (first < 0 || end > z || first >= end)
+      throw inputError(input + ": slices " + std::to_string(first) + " to " +
+                       std::to_string(end - 1) + " were asked for, but it holds slices 0 to " +
+                       std::to_string(z - 1));
+    sources = std::vector<SliceSource>(sources.begin() + first, sources.begin() + end);
+    z = end - first;
+    slabFirst = first;
   }
 
   const auto cancelled = [&] { return feedback.cancel && feedback.cancel->load(); };
@@ -227,6 +260,8 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   v.dims = {layout.dims.x, layout.dims.y, z};
   v.spacingMm = layout.spacingMm;
   v.direction = layout.direction;
+  // A slab starts at its first slice (the whole stack's origin is at slice 0).
+  v.originMm = v.direction * glm::dvec3(0.0, 0.0, slabFirst * layout.spacingMm.z);
   v.slope = storage.slope;
   v.intercept = storage.intercept;
   v.unit = rawValueUnit(layout);

@@ -24,17 +24,34 @@
 // would differ from the whole ray's); labels, an overlay, shadows, ao and cinematic are the
 // one-device Raycaster's (render throws Error (Input) for the lighting).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "voxray/engine/render_params.h"
 #include "voxray/engine/volume_storage.h"
 #include "voxray/io/image.h"
+#include "voxray/io/volume.h"  // ValueRange
 
 namespace voxray {
 
 struct Volume;
 class ClContext;
+
+// Slices [first, end) a device owns and [storedFirst, storedEnd) it holds (apron included).
+struct PartRange {
+  int first = 0, end = 0;
+  int storedFirst = 0, storedEnd = 0;
+};
+
+// One part's image on the host (kernels/multidev/raycast_part.cl): per pixel premultiplied
+// RGBA (4 floats, without the background) and the index its range starts at along the ray
+// (dvr) or of its hit (iso), FLT_MAX where it has none, which orders the parts per pixel.
+// Top row first. The memory is the renderer's, valid until its next frame.
+struct PartImage {
+  const float* colour = nullptr;
+  const float* order = nullptr;
+};
 
 struct MultiDeviceOptions {
   bool emptySpaceSkipping = true;
@@ -49,12 +66,12 @@ struct MultiDeviceOptions {
   size_t budgetBytes = 0;
   // Auto: image3d_t on GPUs with image support, else a buffer (as the Raycaster's Auto).
   VolumeStorage storage = VolumeStorage::Auto;
-};
-
-// Slices [first, end) a device owns and [storedFirst, storedEnd) it holds (apron included).
-struct PartRange {
-  int first = 0, end = 0;
-  int storedFirst = 0, storedEnd = 0;
+  // The ranges of the parts, one per context, instead of planParts' split of the volume: an
+  // MPI rank renders its one range (app/mpi). Empty: planParts by memory.
+  std::vector<PartRange> ranges;
+  // The whole volume's stored value range (the tables map it), when VOLUME holds the stored
+  // slices of the ranges alone and the rest is filler (an MPI rank's slab). None: VOLUME's.
+  std::optional<ValueRange> valueRange;
 };
 
 // DIMZ slices into weights.size() contiguous ranges in proportion to WEIGHTS (each > 0), each
@@ -94,10 +111,20 @@ class MultiDeviceRenderer {
     render(params, out, stats);
     return out;
   }
+  // The parts' images of the frame, not composited (an MPI rank's part, composited by IceT).
+  std::vector<PartImage> renderParts(const RenderParams& params, MultiDeviceStats* stats = nullptr);
+  // Per part, a key that orders the parts front to back for every pixel of the frame at once
+  // (lower: nearer). The ranges are z slabs: with a parallel projection every ray meets them in
+  // the order of its direction's z; from an eye, a ray meets only the slabs on one side of the
+  // eye's z, nearest first, so the distance from the eye's z to each slab orders them.
+  std::vector<double> visibilityKeys(const RenderParams& params);
   int partCount() const;
   std::vector<PartRange> ranges() const;
 
  private:
+  // The frame on every part: composited into OUT and/or the parts' images into PARTS.
+  void renderInto(const RenderParams& params, Image* out, MultiDeviceStats* stats,
+                  std::vector<PartImage>* parts);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -25,6 +25,10 @@ struct RawLayout {
   // Raw data carry no orientation: columns are the LPS directions of the x, y, z index
   // axes (see orientation.h for codes such as "LPI").
   glm::dmat3 direction{1.0};
+  // Slices [first, end) of the z index alone (one MPI rank's part, issue 38): only their files
+  // (or bytes) are checked and read, and the volume holds just them, its origin moved to
+  // slice `first`. The value storage (slope, intercept) is chosen from those slices alone.
+  std::optional<std::pair<int, int>> zSlab;
 };
 
 // Largest volume accepted before allocating anything (a typo must not allocate 100 GB).
@@ -34,6 +38,10 @@ constexpr size_t kMaxVoxels = size_t(2048) * 2048 * 2048;
 // a printf pattern such as "CThead.%d" (needs layout.range), or a single raw file.
 // Throws Error (Input) naming the file and what is wrong.
 Volume importRaw(const std::string& input, const RawLayout& layout);
+
+// The number of z slices INPUT holds under LAYOUT (layout.dims.z when given), from the file
+// listing and sizes alone: nothing is read. Throws Error (Input) as importRaw does.
+int rawSliceCount(const std::string& input, const RawLayout& layout);
 
 // Progress and cancellation of a raw load; loadVolume passes LoadOptions' own through.
 struct RawFeedback {

@@ -1,0 +1,22 @@
+# A rank that cannot read its slab: every rank must exit (non-zero, within the timeout: no
+# rank left waiting in a collective) and rank 0 must say once what failed where.
+execute_process(COMMAND ${MPIEXEC} ${MPI_FLAGS} -n ${NP} ${MPI} ${ARGS} -o ${OUT}
+  RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_VARIABLE out TIMEOUT 120)
+message("${out}${err}")
+if(rc STREQUAL "Process terminated due to timeout")
+  message(FATAL_ERROR "voxray-mpi hung: still running after 120 s")
+endif()
+if(rc EQUAL 0)
+  message(FATAL_ERROR "voxray-mpi succeeded on a broken input")
+endif()
+if(NOT err MATCHES "${EXPECT}")
+  message(FATAL_ERROR "no message matching: ${EXPECT}")
+endif()
+string(REGEX MATCHALL "voxray-mpi: " said "${err}")
+list(LENGTH said count)
+if(NOT count EQUAL 1)
+  message(FATAL_ERROR "${count} messages, not one")
+endif()
+if(EXISTS ${OUT})
+  message(FATAL_ERROR "an image was written: ${OUT}")
+endif()
