@@ -1,0 +1,30 @@
+#include "leap_distances.h"
+
+#include "cl_context_impl.h"
+
+namespace voxray {
+
+void enqueueLeapDistances(ContextImpl& cl, const cl::Buffer& occ, const cl::Buffer& out,
+                          const cl::Buffer& scratch, glm::ivec3 dims) {
+  cl_int4 n = {{dims.x, dims.y, dims.z, 0}};
+  auto rounded = [](size_t items) { return cl::NDRange((items + 63) / 64 * 64); };
+  cl::CommandQueue& q = cl.queue;
+  cl::Kernel x = cl.kernel("empty_space/classify.cl", "leap_distance_x", "");
+  x.setArg(0, occ);
+  x.setArg(1, out);
+  x.setArg(2, n);
+  q.enqueueNDRangeKernel(x, cl::NullRange, rounded(size_t(dims.y) * size_t(dims.z)), cl::NullRange);
+  // One work-item per 16 lines side by side along x (LEAP_LANES).
+  cl::Kernel lanes = cl.kernel("empty_space/classify.cl", "leap_distance_lanes", "");
+  const size_t groups = (size_t(dims.x) + 15) / 16;
+  for (int axis = 1; axis <= 2; ++axis) {
+    lanes.setArg(0, axis == 1 ? out : scratch);
+    lanes.setArg(1, axis == 1 ? scratch : out);
+    lanes.setArg(2, n);
+    lanes.setArg(3, cl_int(axis));
+    q.enqueueNDRangeKernel(lanes, cl::NullRange,
+                           rounded(groups * size_t(axis == 1 ? dims.z : dims.y)), cl::NullRange);
+  }
+}
+
+}  // namespace voxray
