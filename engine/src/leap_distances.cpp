@@ -5,10 +5,26 @@
 namespace voxray {
 
 void enqueueLeapDistances(ContextImpl& cl, const cl::Buffer& occ, const cl::Buffer& out,
-                          const cl::Buffer& scratch, glm::ivec3 dims) {
+                          const cl::Buffer& scratch, glm::ivec3 dims, LeapPasses how) {
+  if (how == LeapPasses::Auto) how = cl.info.isGpu ? LeapPasses::PerCell : LeapPasses::Sweeps;
   cl_int4 n = {{dims.x, dims.y, dims.z, 0}};
   auto rounded = [](size_t items) { return cl::NDRange((items + 63) / 64 * 64); };
   cl::CommandQueue& q = cl.queue;
+  const size_t cells = size_t(dims.x) * size_t(dims.y) * size_t(dims.z);
+  if (how == LeapPasses::PerCell) {
+    cl::Kernel pass = cl.kernel("empty_space/classify.cl", "leap_distance", "");
+    const cl::Buffer* from[3] = {&occ, &out, &scratch};
+    const cl::Buffer* to[3] = {&out, &scratch, &out};
+    for (int axis = 0; axis < 3; ++axis) {
+      pass.setArg(0, *from[axis]);
+      pass.setArg(1, *to[axis]);
+      pass.setArg(2, n);
+      pass.setArg(3, cl_int(axis));
+      pass.setArg(4, cl_int(axis == 0));
+      q.enqueueNDRangeKernel(pass, cl::NullRange, rounded(cells), cl::NullRange);
+    }
+    return;
+  }
   cl::Kernel x = cl.kernel("empty_space/classify.cl", "leap_distance_x", "");
   x.setArg(0, occ);
   x.setArg(1, out);

@@ -41,15 +41,37 @@ __kernel void occupy(__global const uchar* overlay, int cells, __global uchar* o
 // in three passes, one per axis: out = min over s of max(|s|, in[c + s]) along the axis.
 // Three passes (x, y, z) give the exact distance, because a cube is the product of three
 // segments. Distances stop at MAX_LEAP: a ray in a cell at distance d may leap the cube of
-// radius d - 1 around it. Each pass is linear in the cells (a transfer-function drag
+// radius d - 1 around it. On CPUs each pass is linear in the cells (a transfer-function drag
 // reclassifies every frame: reading the 2 MAX_LEAP + 1 cells around each cell cost 200 ms a
-// pass on PoCL on a 512x512x400 CT, 128x128x100 cells).
+// pass on PoCL on a 512x512x400 CT, 128x128x100 cells; the sweeps below, 2-4 ms).
 #define MAX_LEAP 15
 // The one-sided distances (iso packets) reach further: CT 512x512x400 iso frames took 3 % (16
 // lanes) and 10 % (8 lanes) less kernel CPU with 31 than with 15, images identical, for about
 // 26 ms more CPU per iso change. The two-sided ones (dvr, mip, one ray per work-item) stay at
 // MAX_LEAP: dvr and mip frames were no faster at 31.
 #define MAX_LEAP_AHEAD 31
+
+// The same passes one work-item per cell, reading the 2 MAX_LEAP + 1 cells around it along
+// `axis` (the first pass reads the occupancy itself: from_occ). GPUs run these: 1.6 M
+// work-items in step, a whole table update in 0.18-0.22 ms on an H200
+// (docs/bench/gpu-h200x2-round7.txt), where the sweeps below leave most of the chip idle.
+__kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 cells, int axis,
+                            int from_occ) {
+  int k = get_global_id(0);
+  int n = cells.x * cells.y * cells.z;
+  if (k >= n) return;
+  int3 c = (int3)(k % cells.x, (k / cells.x) % cells.y, k / (cells.x * cells.y));
+  int len = axis == 0 ? cells.x : axis == 1 ? cells.y : cells.z;
+  int pos = axis == 0 ? c.x : axis == 1 ? c.y : c.z;
+  int stride = axis == 0 ? 1 : axis == 1 ? cells.x : cells.x * cells.y;
+  int best = MAX_LEAP;
+  for (int s = max(-MAX_LEAP, -pos); s <= min(MAX_LEAP, len - 1 - pos); ++s) {
+    int v = in[k + s * stride];
+    int d = from_occ ? (v ? 0 : MAX_LEAP) : v;
+    best = min(best, max(s < 0 ? -s : s, d));
+  }
+  out[k] = (uchar)best;
+}
 
 // The x pass, from the occupancy (1: occupied): the distance along the line to the nearest
 // occupied cell, one sweep each way. One work-item per line along x.

@@ -1,7 +1,8 @@
-// The empty-space grid's leap distances (engine/src/leap_distances.h: three linear passes on
-// the device) equal the chessboard distance to the nearest occupied cell, capped at 15, found by
-// brute force; and the dvr occupancy folded per stored value (engine/src/dvr_occupancy.h) is
-// the test it replaces, entry by entry. White box: the passes run on the test device's queue.
+// The empty-space grid's leap distances (engine/src/leap_distances.h: three passes on the
+// device, linear sweeps or per cell) equal the chessboard distance to the nearest occupied cell,
+// capped at 15, found by brute force; and the dvr occupancy folded per stored value
+// (engine/src/dvr_occupancy.h) is the test it replaces, entry by entry. White box: the passes run
+// on the test device's queue.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,14 +40,14 @@ std::vector<uint8_t> bruteForce(const std::vector<uint8_t>& occ, glm::ivec3 n) {
   return d;
 }
 
-std::vector<uint8_t> onDevice(const std::vector<uint8_t>& occ, glm::ivec3 n) {
+std::vector<uint8_t> onDevice(const std::vector<uint8_t>& occ, glm::ivec3 n, LeapPasses how) {
   ContextImpl& cl = test::pocl().impl();
   std::vector<uint8_t> out(occ.size(), 0xEE);
   cl::Buffer in(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, occ.size(),
                 const_cast<uint8_t*>(occ.data()));
   cl::Buffer leap(cl.context, CL_MEM_READ_WRITE, occ.size());
   cl::Buffer scratch(cl.context, CL_MEM_READ_WRITE, occ.size());
-  enqueueLeapDistances(cl, in, leap, scratch, n);
+  enqueueLeapDistances(cl, in, leap, scratch, n, how);
   cl.queue.enqueueReadBuffer(leap, CL_TRUE, 0, out.size(), out.data());
   return out;
 }
@@ -74,15 +75,20 @@ TEST(LeapDistances, EqualTheBruteForceChessboardDistance) {
         // Occupancy other than 1 counts too (the kernels test nonzero).
         for (auto& o : occ) o = coin(rng) ? uint8_t(1 + rng() % 3) : 0;
       }
-      const std::vector<uint8_t> want = bruteForce(occ, n), got = onDevice(occ, n);
-      size_t wrong = 0, first = cells;
-      for (size_t c = 0; c < cells; ++c)
-        if (got[c] != want[c] && wrong++ == 0) first = c;
-      EXPECT_EQ(wrong, 0u) << "first at cell " << first << ": got " << int(got[first]) << ", want "
-                           << int(want[first]);
-      // The cap is reached where nothing is near: the empty grid is 15 everywhere.
-      if (density == 0.0) {
-        EXPECT_EQ(*std::min_element(got.begin(), got.end()), kMaxLeap);
+      const std::vector<uint8_t> want = bruteForce(occ, n);
+      // Both ways the device may run the passes (CPUs sweep, GPUs go per cell).
+      for (LeapPasses how : {LeapPasses::Sweeps, LeapPasses::PerCell}) {
+        SCOPED_TRACE(how == LeapPasses::Sweeps ? "sweeps" : "per cell");
+        const std::vector<uint8_t> got = onDevice(occ, n, how);
+        size_t wrong = 0, first = cells;
+        for (size_t c = 0; c < cells; ++c)
+          if (got[c] != want[c] && wrong++ == 0) first = c;
+        EXPECT_EQ(wrong, 0u) << "first at cell " << first << ": got " << int(got[first])
+                             << ", want " << int(want[first]);
+        // The cap is reached where nothing is near: the empty grid is 15 everywhere.
+        if (density == 0.0) {
+          EXPECT_EQ(*std::min_element(got.begin(), got.end()), kMaxLeap);
+        }
       }
     }
   }
@@ -93,9 +99,12 @@ TEST(LeapDistances, CountUpFromAnOccupiedCellToTheCap) {
   const glm::ivec3 n{3, 40, 2};
   std::vector<uint8_t> occ(size_t(n.x) * n.y * n.z, 0);
   occ[(size_t(1) * n.y + 10) * n.x + 2] = 1;  // (2, 10, 1)
-  const std::vector<uint8_t> d = onDevice(occ, n);
-  for (int y = 0; y < n.y; ++y)
-    EXPECT_EQ(int(d[size_t(y) * n.x]), std::min(std::max(std::abs(y - 10), 2), 15)) << y;
+  for (LeapPasses how : {LeapPasses::Sweeps, LeapPasses::PerCell}) {
+    const std::vector<uint8_t> d = onDevice(occ, n, how);
+    for (int y = 0; y < n.y; ++y)
+      EXPECT_EQ(int(d[size_t(y) * n.x]), std::min(std::max(std::abs(y - 10), 2), 15))
+          << y << (how == LeapPasses::Sweeps ? " (sweeps)" : " (per cell)");
+  }
 }
 
 // classify.cl's dvr test, written out: the entries a cell with min a and max b can read, with
