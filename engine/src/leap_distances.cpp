@@ -25,22 +25,25 @@ void enqueueLeapDistances(ContextImpl& cl, const cl::Buffer& occ, const cl::Buff
     }
     return;
   }
-  cl::Kernel x = cl.kernel("empty_space/classify.cl", "leap_distance_x", "");
-  x.setArg(0, occ);
-  x.setArg(1, out);
-  x.setArg(2, n);
-  q.enqueueNDRangeKernel(x, cl::NullRange, rounded(size_t(dims.y) * size_t(dims.z)), cl::NullRange);
-  // One work-item per 16 lines side by side along x (LEAP_LANES).
-  cl::Kernel lanes = cl.kernel("empty_space/classify.cl", "leap_distance_lanes", "");
+  // occupancy -> out (z), out -> scratch (y): one work-item per 16 lines side by side along x;
+  // scratch -> out (x): one per 16 cells of a line (LEAP_LANES).
   const size_t groups = (size_t(dims.x) + 15) / 16;
-  for (int axis = 1; axis <= 2; ++axis) {
-    lanes.setArg(0, axis == 1 ? out : scratch);
-    lanes.setArg(1, axis == 1 ? scratch : out);
+  cl::Kernel lanes = cl.kernel("empty_space/classify.cl", "leap_distance_lanes", "");
+  for (int axis = 2; axis >= 1; --axis) {
+    lanes.setArg(0, axis == 2 ? occ : out);
+    lanes.setArg(1, axis == 2 ? out : scratch);
     lanes.setArg(2, n);
     lanes.setArg(3, cl_int(axis));
+    lanes.setArg(4, cl_int(axis == 2));
     q.enqueueNDRangeKernel(lanes, cl::NullRange,
                            rounded(groups * size_t(axis == 1 ? dims.z : dims.y)), cl::NullRange);
   }
+  cl::Kernel rows = cl.kernel("empty_space/classify.cl", "leap_distance_rows", "");
+  rows.setArg(0, scratch);
+  rows.setArg(1, out);
+  rows.setArg(2, n);
+  q.enqueueNDRangeKernel(rows, cl::NullRange, rounded(groups * size_t(dims.y) * size_t(dims.z)),
+                         cl::NullRange);
 }
 
 }  // namespace voxray

@@ -41,9 +41,10 @@ __kernel void occupy(__global const uchar* overlay, int cells, __global uchar* o
 // in three passes, one per axis: out = min over s of max(|s|, in[c + s]) along the axis.
 // Three passes (x, y, z) give the exact distance, because a cube is the product of three
 // segments. Distances stop at MAX_LEAP: a ray in a cell at distance d may leap the cube of
-// radius d - 1 around it. On CPUs each pass is linear in the cells (a transfer-function drag
-// reclassifies every frame: reading the 2 MAX_LEAP + 1 cells around each cell cost 200 ms a
-// pass on PoCL on a 512x512x400 CT, 128x128x100 cells; the sweeps below, 2-4 ms).
+// radius d - 1 around it. A transfer-function drag reclassifies every frame: on CPUs the
+// passes below are the sweeps (z and y linear in the cells, x 16 cells per load), 2-3 ms of
+// CPU each on a 512x512x400 CT (128x128x100 cells) where reading the 2 MAX_LEAP + 1 cells
+// around each cell one work-item per cell cost 200 ms a pass on PoCL.
 #define MAX_LEAP 15
 // The one-sided distances (iso packets) reach further: CT 512x512x400 iso frames took 3 % (16
 // lanes) and 10 % (8 lanes) less kernel CPU with 31 than with 15, images identical, for about
@@ -73,30 +74,8 @@ __kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 
   out[k] = (uchar)best;
 }
 
-// The x pass, from the occupancy (1: occupied): the distance along the line to the nearest
-// occupied cell, one sweep each way. One work-item per line along x.
-__kernel void leap_distance_x(__global const uchar* occ, __global uchar* out, int4 cells) {
-  int k = get_global_id(0);
-  if (k >= cells.y * cells.z) return;
-  occ += (size_t)k * cells.x;
-  out += (size_t)k * cells.x;
-  int d = MAX_LEAP;
-  for (int x = 0; x < cells.x; ++x) {
-    d = occ[x] ? 0 : min(d + 1, MAX_LEAP);
-    out[x] = (uchar)d;
-  }
-  d = MAX_LEAP;
-  for (int x = cells.x - 1; x >= 0; --x) {
-    d = occ[x] ? 0 : min(d + 1, MAX_LEAP);
-    out[x] = min(out[x], (uchar)d);
-  }
-}
-
-// The y (axis 1) and z (axis 2) passes, on the x pass's distances. One work-item per 16
-// neighbouring lines (consecutive x, one uchar16 lane each, so the loads are contiguous).
-// Sweeping the line one way, w[j] is the minimum of in over the last j + 1 cells; the
-// distance from that side is min over j of max(j, w[j]) (j = MAX_LEAP always holds); the
-// other sweep takes the minimum with it.
+// The sweeps (CPUs): z from the occupancy, then y, then x, each linear in the cells and each
+// work-item on 16 cells side by side along x (one uchar16, contiguous loads and stores).
 #define LEAP_LANES 16
 inline uchar16 leap_load(__global const uchar* p, int lanes) {
   if (lanes == LEAP_LANES) return vload16(0, p);
@@ -114,8 +93,13 @@ inline void leap_store(uchar16 v, __global uchar* p, int lanes) {
   for (int i = 0; i < lanes; ++i) p[i] = t[i];
 }
 
+// The z pass (from_occ: in is the occupancy, nonzero occupied) or the y pass (on the z pass's
+// distances), along `axis` (1: y, 2: z). One work-item per 16 lines. From the occupancy, each
+// sweep counts the cells since the last occupied one. Otherwise, sweeping one way, w[j] is the
+// minimum of in over the last j + 1 cells, and the distance from that side is min over j of
+// max(j, w[j]) (j = MAX_LEAP always holds). The second sweep takes the minimum with the first.
 __kernel void leap_distance_lanes(__global const uchar* in, __global uchar* out, int4 cells,
-                                  int axis) {
+                                  int axis, int from_occ) {
   int groups = (cells.x + LEAP_LANES - 1) / LEAP_LANES;
   int k = get_global_id(0);
   int other = axis == 1 ? cells.z : cells.y;  // lines across x and the pass's axis
@@ -127,23 +111,64 @@ __kernel void leap_distance_lanes(__global const uchar* in, __global uchar* out,
   size_t start = (axis == 1 ? (size_t)o * cells.x * cells.y : (size_t)o * cells.x) + x0;
   in += start;
   out += start;
-  uchar16 w[MAX_LEAP];
+  const uchar16 cap = (uchar16)(MAX_LEAP);
   for (int sweep = 0; sweep < 2; ++sweep) {
+    if (from_occ) {
+      uchar16 d = cap;
+      for (int i = 0; i < len; ++i) {
+        size_t at = (size_t)(sweep == 0 ? i : len - 1 - i) * stride;
+        d = select(min(d + (uchar16)(1), cap), (uchar16)(0),
+                   leap_load(in + at, lanes) != (uchar16)(0));
+        leap_store(sweep == 1 ? min(d, leap_load(out + at, lanes)) : d, out + at, lanes);
+      }
+      continue;
+    }
+    uchar16 w[MAX_LEAP];
 #pragma unroll
-    for (int j = 0; j < MAX_LEAP; ++j) w[j] = (uchar16)(MAX_LEAP);
+    for (int j = 0; j < MAX_LEAP; ++j) w[j] = cap;
     for (int i = 0; i < len; ++i) {
       size_t at = (size_t)(sweep == 0 ? i : len - 1 - i) * stride;
       uchar16 v = leap_load(in + at, lanes);
 #pragma unroll
       for (int j = MAX_LEAP - 1; j > 0; --j) w[j] = min(w[j - 1], v);
       w[0] = v;
-      uchar16 best = (uchar16)(MAX_LEAP);
+      uchar16 best = cap;
 #pragma unroll
       for (int j = 0; j < MAX_LEAP; ++j) best = min(best, max((uchar16)((uchar)j), w[j]));
       if (sweep == 1) best = min(best, leap_load(out + at, lanes));
       leap_store(best, out + at, lanes);
     }
   }
+}
+
+// The x pass, on the y pass's distances: one work-item per 16 cells of a line along x,
+// out = min over |s| < MAX_LEAP of max(|s|, in[x + s]) from 2 MAX_LEAP - 1 unaligned loads
+// of 16 (|s| = MAX_LEAP is the cap itself). Near the line's ends, from a copy in which the
+// cells beyond the line are the cap.
+__kernel void leap_distance_rows(__global const uchar* in, __global uchar* out, int4 cells) {
+  int groups = (cells.x + LEAP_LANES - 1) / LEAP_LANES;
+  int k = get_global_id(0);
+  if (k >= groups * cells.y * cells.z) return;
+  int x0 = (k % groups) * LEAP_LANES, lanes = min(LEAP_LANES, cells.x - x0);
+  size_t line = (size_t)(k / groups) * cells.x;
+  in += line;
+  const int reach = MAX_LEAP - 1;
+  uchar16 best = (uchar16)(MAX_LEAP);
+  if (x0 >= reach && x0 + LEAP_LANES + reach <= cells.x) {
+#pragma unroll
+    for (int s = -reach; s <= reach; ++s)
+      best = min(best, max((uchar16)((uchar)abs(s)), vload16(0, in + x0 + s)));
+  } else {
+    uchar t[LEAP_LANES + 2 * (MAX_LEAP - 1)];
+    for (int j = 0; j < LEAP_LANES + 2 * reach; ++j) {
+      int x = x0 - reach + j;
+      t[j] = x >= 0 && x < cells.x ? in[x] : (uchar)MAX_LEAP;
+    }
+#pragma unroll
+    for (int s = -reach; s <= reach; ++s)
+      best = min(best, max((uchar16)((uchar)abs(s)), vload16(0, t + reach + s)));
+  }
+  leap_store(best, out + line + x0, lanes);
 }
 
 // The one-sided twin of the passes above for iso packets (skip_ahead_lanes.cl): along `axis`,
