@@ -169,17 +169,18 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
       const DvrCellBounds bounds =
           dvrCellBounds(opaque, k.values.s[2], k.values.s[3], valueLo_, valueHi_);
       const cl_int count = cl_int(bounds.from.size());
-      size_t bytes = std::max<size_t>(2 * bounds.from.size(), 1) * sizeof(cl_int);
+      // One table, from then to; the asynchronous write reads this copy (the frame waits for
+      // its kernel before the next classification).
+      boundsUploaded_ = bounds.from;
+      boundsUploaded_.insert(boundsUploaded_.end(), bounds.to.begin(), bounds.to.end());
+      size_t bytes = std::max<size_t>(boundsUploaded_.size(), 1) * sizeof(cl_int);
       if (bytes > boundsCapacity_) {
         bounds_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY, bytes);
         boundsCapacity_ = bytes;
       }
-      if (count > 0) {  // blocking: bounds goes out of scope
-        q.enqueueWriteBuffer(bounds_, CL_TRUE, 0, bounds.from.size() * sizeof(cl_int),
-                             bounds.from.data());
-        q.enqueueWriteBuffer(bounds_, CL_TRUE, bounds.from.size() * sizeof(cl_int),
-                             bounds.to.size() * sizeof(cl_int), bounds.to.data());
-      }
+      if (count > 0)
+        q.enqueueWriteBuffer(bounds_, CL_FALSE, 0, boundsUploaded_.size() * sizeof(cl_int),
+                             boundsUploaded_.data());
       cl::Kernel kernel = cl.kernel("empty_space/classify.cl", "classify_dvr", "");
       kernel.setArg(0, shown_.empty() ? range_ : shownRange_);
       kernel.setArg(1, bounds_);

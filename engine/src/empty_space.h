@@ -65,6 +65,7 @@ class EmptySpace {
   size_t leapBytes_ = 0;
   int valueLo_ = 0, valueHi_ = -1;  // the cells' values, the dvr bounds' extent
   cl::Buffer bounds_;               // DvrCellBounds, from then to
+  std::vector<int32_t> boundsUploaded_;
   size_t boundsCapacity_ = 0;
   cl::Buffer aheadScratch_;
   std::vector<uint8_t> shown_;    // setShownCells
