@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "cl_context_impl.h"
+#include "dvr_occupancy.h"
+#include "leap_distances.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/engine/transfer_function.h"
 #include "voxray/io/parallel.h"
@@ -13,6 +15,11 @@ namespace voxray {
 void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
   cells_ = computeMacroCells(v);
   volume_ = &v;
+  valueLo_ = INT16_MAX, valueHi_ = INT16_MIN;
+  for (size_t c = 0; c + 1 < cells_.minMax.size(); c += 2) {
+    valueLo_ = std::min<int>(valueLo_, cells_.minMax[c]);
+    valueHi_ = std::max<int>(valueHi_, cells_.minMax[c + 1]);
+  }
   shown_.clear();
   size_t n = cells_.minMax.size() / 2;
   clCall([&] {
@@ -157,23 +164,40 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
   size_t cells = cells_.minMax.size() / 2;
   clCall([&] {
     cl::CommandQueue& q = cl.queue;
-    size_t bytes = std::max<size_t>(opaque.size(), 1) * sizeof(cl_int);
-    if (bytes > opaqueCapacity_) {
-      opaqueBefore_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY, bytes);
-      opaqueCapacity_ = bytes;
-    }
-    if (!opaque.empty())
-      q.enqueueWriteBuffer(opaqueBefore_, CL_TRUE, 0, opaque.size() * sizeof(cl_int),
-                           opaque.data());
-    cl::Kernel kernel = cl.kernel("empty_space/classify.cl", "classify", "");
-    kernel.setArg(0, m == 1 && !shown_.empty() ? shownRange_ : range_);
-    kernel.setArg(1, params);
-    kernel.setArg(2, opaqueBefore_);
-    kernel.setArg(3, cl_int(m));
-    kernel.setArg(4, cl_int(cells));
-    kernel.setArg(5, occ_);
     size_t global = (cells + 63) / 64 * 64;
-    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    if (m == 1) {
+      const DvrCellBounds bounds =
+          dvrCellBounds(opaque, k.values.s[2], k.values.s[3], valueLo_, valueHi_);
+      const cl_int count = cl_int(bounds.from.size());
+      // One table, from then to; the asynchronous write reads this copy (the frame waits for
+      // its kernel before the next classification).
+      boundsUploaded_ = bounds.from;
+      boundsUploaded_.insert(boundsUploaded_.end(), bounds.to.begin(), bounds.to.end());
+      size_t bytes = std::max<size_t>(boundsUploaded_.size(), 1) * sizeof(cl_int);
+      if (bytes > boundsCapacity_) {
+        bounds_ = cl::Buffer(cl.context, CL_MEM_READ_ONLY, bytes);
+        boundsCapacity_ = bytes;
+      }
+      if (count > 0)
+        q.enqueueWriteBuffer(bounds_, CL_FALSE, 0, boundsUploaded_.size() * sizeof(cl_int),
+                             boundsUploaded_.data());
+      cl::Kernel kernel = cl.kernel("empty_space/classify.cl", "classify_dvr", "");
+      kernel.setArg(0, shown_.empty() ? range_ : shownRange_);
+      kernel.setArg(1, bounds_);
+      kernel.setArg(2, cl_int(bounds.lo));
+      kernel.setArg(3, std::max<cl_int>(count, 1));
+      kernel.setArg(4, cl_int(cells));
+      kernel.setArg(5, occ_);
+      q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    } else {
+      cl::Kernel kernel = cl.kernel("empty_space/classify.cl", "classify", "");
+      kernel.setArg(0, range_);
+      kernel.setArg(1, params);
+      kernel.setArg(2, cl_int(m));
+      kernel.setArg(3, cl_int(cells));
+      kernel.setArg(4, occ_);
+      q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    }
     if (m == 1 && overlay_.size() == cells) {  // a cell is empty only when both volumes are
       cl::Kernel occupy = cl.kernel("empty_space/classify.cl", "occupy", "");
       occupy.setArg(0, overlayBuffer_);
@@ -184,8 +208,8 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
     cl_int4 dims = {{cells_.dims.x, cells_.dims.y, cells_.dims.z, 0}};
     // Only iso packets read the one-sided distances (one ray per work-item leaps by the
     // two-sided ones). First: it may enlarge leap_. Their minimum is then the two-sided
-    // distances (the same, at a fraction of the work); otherwise, three passes make them:
-    // occupancy -> leap (x), leap -> scratch (y), scratch -> leap (z).
+    // distances (the same, at a fraction of the work); otherwise, three passes make them
+    // (leap_distances.h).
     const bool oneSided = m == 0 && packets;
     if (oneSided) {
       aheadDistances(cl, dims);
@@ -201,16 +225,8 @@ void EmptySpace::classify(ContextImpl& cl, const cl::Buffer& params, const cl::B
       octants.setArg(1, cl_int(cells));
       q.enqueueNDRangeKernel(octants, cl::NullRange, cl::NDRange(global), cl::NullRange);
     }
-    cl::Kernel pass = cl.kernel("empty_space/classify.cl", "leap_distance", "");
-    const cl::Buffer* from[3] = {&occ_, &leap_, &scratch_};
-    const cl::Buffer* to[3] = {&leap_, &scratch_, &leap_};
-    for (int axis = 0; axis < 3 && !oneSided; ++axis) {
-      pass.setArg(0, *from[axis]);
-      pass.setArg(1, *to[axis]);
-      pass.setArg(2, dims);
-      pass.setArg(3, cl_int(axis));
-      pass.setArg(4, cl_int(axis == 0));
-      q.enqueueNDRangeKernel(pass, cl::NullRange, cl::NDRange(global), cl::NullRange);
+    if (!oneSided) {
+      enqueueLeapDistances(cl, occ_, leap_, scratch_, cells_.dims);
     }
     if (adaptive) {
       cl::Kernel level = cl.kernel("empty_space/classify.cl", "adaptive_level", "");

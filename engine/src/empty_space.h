@@ -61,8 +61,12 @@ class EmptySpace {
   MacroCells cells_;
   const Volume* volume_ = nullptr;  // the raycaster's, which outlives this
   std::vector<uint8_t> blocks_;     // isoBlocks' bits, for the upload
-  cl::Buffer range_, occ_, leap_, scratch_, opaqueBefore_;
-  size_t opaqueCapacity_ = 0, leapBytes_ = 0;
+  cl::Buffer range_, occ_, leap_, scratch_;
+  size_t leapBytes_ = 0;
+  int valueLo_ = 0, valueHi_ = -1;  // the cells' values, the dvr bounds' extent
+  cl::Buffer bounds_;               // DvrCellBounds, from then to
+  std::vector<int32_t> boundsUploaded_;
+  size_t boundsCapacity_ = 0;
   cl::Buffer aheadScratch_;
   std::vector<uint8_t> shown_;    // setShownCells
   cl::Buffer shownRange_;         // range_ with the cells not shown empty (min above max)

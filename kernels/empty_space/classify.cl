@@ -3,32 +3,31 @@
 // each cell's min/max with its apron (skip.cl says why). Conservative on purpose: a cell
 // that might matter is occupied; half a stored unit and one table entry of margin absorb
 // float rounding of samples and table positions.
-//   mode 0 (iso): occupied when [min, max] meets the iso range P->values.xy
-//   mode 1 (dvr): occupied when a table entry the cell's values can interpolate from has
-//                 opacity > 0; opaque_before[k] counts such entries below k
-//   mode 2 (mip): occupied when the cell's max is above the grey window's low end
+//   iso (classify, mode 0): occupied when [min, max] meets the iso range P->values.xy
+//   mip (classify, mode 2): occupied when the cell's max is above the grey window's low end
 //                 P->dvr.x (anything at or below it shows black, like no sample at all)
+//   dvr (classify_dvr): occupied when a table entry the cell's values can interpolate from
+//                 has opacity > 0; the host folds that test per stored value
+//                 (engine/src/dvr_occupancy.h)
 #include "params.cl"
 
-__kernel void classify(__global const short2* range, __constant RaycastParams* P,
-                       __global const int* opaque_before, int mode, int cells,
-                       __global uchar* occ) {
+__kernel void classify(__global const short2* range, __constant RaycastParams* P, int mode,
+                       int cells, __global uchar* occ) {
   int k = get_global_id(0);
   if (k >= cells) return;
   float lo = range[k].x - 0.5f, hi = range[k].y + 0.5f;
-  if (mode == 0) {
-    occ[k] = hi >= P->values.x && lo <= P->values.y;
-    return;
-  }
-  if (mode == 2) {
-    occ[k] = hi > P->dvr.x;
-    return;
-  }
-  int last = P->dims.w - 1;
-  float x0 = clamp((lo - P->values.z) * P->values.w, 0.0f, (float)last);
-  float x1 = clamp((hi - P->values.z) * P->values.w, 0.0f, (float)last);
-  int a = max((int)floor(x0) - 1, 0), b = min((int)floor(x1) + 2, last);
-  occ[k] = opaque_before[b + 1] - opaque_before[a] > 0;
+  occ[k] = mode == 0 ? hi >= P->values.x && lo <= P->values.y : hi > P->dvr.x;
+}
+
+// bounds: from[0 .. count) then to[0 .. count) (DvrCellBounds), for stored values lo + i. A
+// cell whose min is above its max (label-aware dvr's cells where no label shows) is empty.
+__kernel void classify_dvr(__global const short2* range, __global const int* bounds, int lo,
+                           int count, int cells, __global uchar* occ) {
+  int k = get_global_id(0);
+  if (k >= cells) return;
+  short2 r = range[k];
+  int a = clamp(r.x - lo, 0, count - 1), b = clamp(r.y - lo, 0, count - 1);
+  occ[k] = r.x <= r.y && bounds[count + b] > bounds[a];
 }
 
 // Fused dvr (issue 36): the cells where the overlay may show (engine/src/overlay_cells.h)
@@ -38,19 +37,25 @@ __kernel void occupy(__global const uchar* overlay, int cells, __global uchar* o
   if (k < cells && overlay[k]) occ[k] = 1;
 }
 
-// One pass of the chessboard (L-infinity) distance of each cell to the nearest occupied
-// cell, in cells: along `axis`, out = min over |s| <= MAX_LEAP of max(|s|, in[c + s]).
+// The chessboard (L-infinity) distance of each cell to the nearest occupied cell, in cells,
+// in three passes, one per axis: out = min over s of max(|s|, in[c + s]) along the axis.
 // Three passes (x, y, z) give the exact distance, because a cube is the product of three
-// segments. The first pass reads the occupancy itself (from_occ). Distances stop at
-// MAX_LEAP: a ray in a cell at distance d may leap the cube of radius d - 1 around it.
+// segments. Distances stop at MAX_LEAP: a ray in a cell at distance d may leap the cube of
+// radius d - 1 around it. A transfer-function drag reclassifies every frame: on CPUs the
+// passes below are the sweeps (z and y linear in the cells, x 16 cells per load), 2-3 ms of
+// CPU each on a 512x512x400 CT (128x128x100 cells) where reading the 2 MAX_LEAP + 1 cells
+// around each cell one work-item per cell cost 200 ms a pass on PoCL.
 #define MAX_LEAP 15
 // The one-sided distances (iso packets) reach further: CT 512x512x400 iso frames took 3 % (16
 // lanes) and 10 % (8 lanes) less kernel CPU with 31 than with 15, images identical, for about
 // 26 ms more CPU per iso change. The two-sided ones (dvr, mip, one ray per work-item) stay at
-// MAX_LEAP: their three passes read 2 MAX_LEAP + 1 cells per cell (a table change cost 140 ->
-// 247 ms of CPU at 31) and dvr and mip frames were no faster.
+// MAX_LEAP: dvr and mip frames were no faster at 31.
 #define MAX_LEAP_AHEAD 31
 
+// The same passes one work-item per cell, reading the 2 MAX_LEAP + 1 cells around it along
+// `axis` (the first pass reads the occupancy itself: from_occ). GPUs run these: 1.6 M
+// work-items in step, a whole table update in 0.18-0.22 ms on an H200
+// (docs/bench/gpu-h200x2-round7.txt), where the sweeps below leave most of the chip idle.
 __kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 cells, int axis,
                             int from_occ) {
   int k = get_global_id(0);
@@ -69,7 +74,104 @@ __kernel void leap_distance(__global const uchar* in, __global uchar* out, int4 
   out[k] = (uchar)best;
 }
 
-// The one-sided twin of leap_distance for iso packets (skip_ahead_lanes.cl): along `axis`,
+// The sweeps (CPUs): z from the occupancy, then y, then x, each linear in the cells and each
+// work-item on 16 cells side by side along x (one uchar16, contiguous loads and stores).
+#define LEAP_LANES 16
+inline uchar16 leap_load(__global const uchar* p, int lanes) {
+  if (lanes == LEAP_LANES) return vload16(0, p);
+  uchar t[LEAP_LANES];
+  for (int i = 0; i < LEAP_LANES; ++i) t[i] = i < lanes ? p[i] : (uchar)MAX_LEAP;
+  return vload16(0, t);
+}
+inline void leap_store(uchar16 v, __global uchar* p, int lanes) {
+  if (lanes == LEAP_LANES) {
+    vstore16(v, 0, p);
+    return;
+  }
+  uchar t[LEAP_LANES];
+  vstore16(v, 0, t);
+  for (int i = 0; i < lanes; ++i) p[i] = t[i];
+}
+
+// The z pass (from_occ: in is the occupancy, nonzero occupied) or the y pass (on the z pass's
+// distances), along `axis` (1: y, 2: z). One work-item per 16 lines. From the occupancy, each
+// sweep counts the cells since the last occupied one. Otherwise, sweeping one way, w[j] is the
+// minimum of in over the last j + 1 cells, and the distance from that side is min over j of
+// max(j, w[j]) (j = MAX_LEAP always holds). The second sweep takes the minimum with the first.
+__kernel void leap_distance_lanes(__global const uchar* in, __global uchar* out, int4 cells,
+                                  int axis, int from_occ) {
+  int groups = (cells.x + LEAP_LANES - 1) / LEAP_LANES;
+  int k = get_global_id(0);
+  int other = axis == 1 ? cells.z : cells.y;  // lines across x and the pass's axis
+  if (k >= groups * other) return;
+  int x0 = (k % groups) * LEAP_LANES, o = k / groups;
+  int lanes = min(LEAP_LANES, cells.x - x0);
+  int len = axis == 1 ? cells.y : cells.z;
+  size_t stride = axis == 1 ? (size_t)cells.x : (size_t)cells.x * cells.y;
+  size_t start = (axis == 1 ? (size_t)o * cells.x * cells.y : (size_t)o * cells.x) + x0;
+  in += start;
+  out += start;
+  const uchar16 cap = (uchar16)(MAX_LEAP);
+  for (int sweep = 0; sweep < 2; ++sweep) {
+    if (from_occ) {
+      uchar16 d = cap;
+      for (int i = 0; i < len; ++i) {
+        size_t at = (size_t)(sweep == 0 ? i : len - 1 - i) * stride;
+        d = select(min(d + (uchar16)(1), cap), (uchar16)(0),
+                   leap_load(in + at, lanes) != (uchar16)(0));
+        leap_store(sweep == 1 ? min(d, leap_load(out + at, lanes)) : d, out + at, lanes);
+      }
+      continue;
+    }
+    uchar16 w[MAX_LEAP];
+#pragma unroll
+    for (int j = 0; j < MAX_LEAP; ++j) w[j] = cap;
+    for (int i = 0; i < len; ++i) {
+      size_t at = (size_t)(sweep == 0 ? i : len - 1 - i) * stride;
+      uchar16 v = leap_load(in + at, lanes);
+#pragma unroll
+      for (int j = MAX_LEAP - 1; j > 0; --j) w[j] = min(w[j - 1], v);
+      w[0] = v;
+      uchar16 best = cap;
+#pragma unroll
+      for (int j = 0; j < MAX_LEAP; ++j) best = min(best, max((uchar16)((uchar)j), w[j]));
+      if (sweep == 1) best = min(best, leap_load(out + at, lanes));
+      leap_store(best, out + at, lanes);
+    }
+  }
+}
+
+// The x pass, on the y pass's distances: one work-item per 16 cells of a line along x,
+// out = min over |s| < MAX_LEAP of max(|s|, in[x + s]) from 2 MAX_LEAP - 1 unaligned loads
+// of 16 (|s| = MAX_LEAP is the cap itself). Near the line's ends, from a copy in which the
+// cells beyond the line are the cap.
+__kernel void leap_distance_rows(__global const uchar* in, __global uchar* out, int4 cells) {
+  int groups = (cells.x + LEAP_LANES - 1) / LEAP_LANES;
+  int k = get_global_id(0);
+  if (k >= groups * cells.y * cells.z) return;
+  int x0 = (k % groups) * LEAP_LANES, lanes = min(LEAP_LANES, cells.x - x0);
+  size_t line = (size_t)(k / groups) * cells.x;
+  in += line;
+  const int reach = MAX_LEAP - 1;
+  uchar16 best = (uchar16)(MAX_LEAP);
+  if (x0 >= reach && x0 + LEAP_LANES + reach <= cells.x) {
+#pragma unroll
+    for (int s = -reach; s <= reach; ++s)
+      best = min(best, max((uchar16)((uchar)abs(s)), vload16(0, in + x0 + s)));
+  } else {
+    uchar t[LEAP_LANES + 2 * (MAX_LEAP - 1)];
+    for (int j = 0; j < LEAP_LANES + 2 * reach; ++j) {
+      int x = x0 - reach + j;
+      t[j] = x >= 0 && x < cells.x ? in[x] : (uchar)MAX_LEAP;
+    }
+#pragma unroll
+    for (int s = -reach; s <= reach; ++s)
+      best = min(best, max((uchar16)((uchar)abs(s)), vload16(0, t + reach + s)));
+  }
+  leap_store(best, out + line + x0, lanes);
+}
+
+// The one-sided twin of the passes above for iso packets (skip_ahead_lanes.cl): along `axis`,
 // out = min over 0 <= s <= MAX_LEAP_AHEAD of max(s, in[c + sign s]), only ahead in `sign`'s
 // direction. Three passes, one per axis with that octant's signs, give the chessboard
 // distance to the nearest occupied cell in the octant ahead (cells c' with c' - c of the
@@ -118,7 +220,7 @@ __kernel void leap_distance_ahead(__global const uchar* in, int in_at, __global 
 // The two-sided distances of an iso classification for packets, from the one-sided ones
 // (leap_distance_ahead's eight regions behind them): the eight closed octants around a cell
 // cover the grid, so the nearest occupied cell is the nearest in one of them. One read per
-// octant instead of leap_distance's three passes of 2 MAX_LEAP + 1 reads per cell.
+// octant instead of the three passes above.
 __kernel void leap_distance_from_octants(__global uchar* leap, int cells) {
   int k = get_global_id(0);
   if (k >= cells) return;

@@ -120,4 +120,48 @@ TEST(TfEditorModel, APresetChosenElsewhereBecomesWhatIsEdited) {
   EXPECT_EQ(m.property(), edited);
 }
 
+// Retargeted on a segment (the Segments panel's TF… Edit): edits go to that segment's own table
+// and leave the volume's as it was; a segment without a table starts from the volume's, and
+// undoing back to there gives it none again; one with a table starts from it.
+TEST(TfEditorModel, OnASegmentEditsOnlyThatSegmentsTable) {
+  RenderStateModel r = boneView();
+  const RenderParams before = r.params();
+  TfEditorModel m(r);
+  m.setTarget(3);
+  EXPECT_EQ(m.target(), 3);
+  EXPECT_EQ(renderTable(m.property()), findPreset("CT-Bone").tf.points);  // the volume's
+  EXPECT_TRUE(r.params().segmentTfs.empty());                             // nothing made yet
+  const size_t i = m.addOpacityPoint(-500.0, 0.3);
+  ASSERT_EQ(r.params().segmentTfs.count(3), size_t(1));
+  EXPECT_EQ(r.params().segmentTfs.at(3), renderTable(m.property()));
+  EXPECT_NEAR(TransferFunction{r.params().segmentTfs.at(3)}.evaluate(-500.0).a, 0.3, 1e-12);
+  // The volume's table is untouched: still the preset, no table of its own.
+  EXPECT_EQ(r.params().preset, "CT-Bone");
+  EXPECT_EQ(r.params().transferFunction, before.transferFunction);
+  m.beginGesture();  // a drag: one step
+  m.moveOpacityPoint(i, -450.0, 0.5);
+  m.moveOpacityPoint(i, -400.0, 0.6);
+  m.endGesture();
+  EXPECT_NEAR(TransferFunction{r.params().segmentTfs.at(3)}.evaluate(-400.0).a, 0.6, 1e-12);
+  m.undo();
+  EXPECT_NEAR(TransferFunction{r.params().segmentTfs.at(3)}.evaluate(-500.0).a, 0.3, 1e-12);
+  m.undo();  // back to where it began: the segment has no table again
+  EXPECT_TRUE(r.params().segmentTfs.empty());
+  m.redo();
+  EXPECT_EQ(r.params().segmentTfs.count(3), size_t(1));
+  // A segment with a table of its own starts from it (its points, linear).
+  r.update(kAppearance, [](RenderParams& p) { p.segmentTfs[5] = findPreset("CT-Skin").tf.points; });
+  m.setTarget(5);
+  EXPECT_EQ(renderTable(m.property()), findPreset("CT-Skin").tf.points);
+  EXPECT_FALSE(m.canUndo());
+  // The panel choosing another table for it: the editor follows.
+  r.update(kAppearance, [](RenderParams& p) { p.segmentTfs[5] = findPreset("CT-Bone").tf.points; });
+  EXPECT_EQ(renderTable(m.property()), findPreset("CT-Bone").tf.points);
+  // Back on the volume: edits reach the volume's table again.
+  m.setTarget(0);
+  m.addOpacityPoint(700.0, 0.2);
+  EXPECT_EQ(r.params().transferFunction, renderTable(m.property()));
+  EXPECT_EQ(r.params().segmentTfs.at(5), findPreset("CT-Bone").tf.points);
+}
+
 }  // namespace voxray

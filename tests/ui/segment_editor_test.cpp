@@ -23,6 +23,7 @@
 #include "segment_panel.h"
 #include "slice_view.h"
 #include "study_state.h"
+#include "tf_editor_dialog.h"
 #include "voxray/engine/camera.h"
 #include "voxray/io/orientation.h"
 #include "voxray/io/phantom.h"
@@ -351,6 +352,97 @@ class SegmentEditorTest : public QObject {
     QCOMPARE(tf->currentText(), QString("Volume's"));
     const QImage restored = test::changedFrame(*fixture_.window, bone);
     QCOMPARE(test::differingPixels(restored, before), 0);
+  }
+
+  // Issue 35: TF… Edit opens the transfer-function editor on the chosen segment's own table
+  // (CT-Bone, over the volume's CT-Skin). Dragging its bone point (641 HU, 0.72) to (400 HU, 0.15):
+  // bone turns faint. That changes that segment's table only (the volume keeps CT-Skin), the 3D
+  // frame only where the segment shows (as in segmentTfPresetChangesItsPixelsAndUndoRestores: the
+  // lit pixels of Show-only frames under either table, grown by a pixel; a change counts above 2
+  // levels), and the editor's undo gives the frame before back exactly.
+  void segmentTfEditorDragChangesOnlyThatSegmentsPixels() {
+    MainWindow& window = *fixture_.window;
+    models().render.update(kAppearance | kCamera, [](RenderParams& p) {
+      p.mode = Mode::Dvr;
+      p.preset = "CT-Skin";
+      p.camera.azimuthDeg = 30.0;
+      p.camera.elevationDeg = 70.0;  // from above: the ball's scalp and skull face the camera
+    });
+    const uint8_t label = addSegment();
+    models().segmentation.paintSphere({32, 32, 56}, 28.0, label);
+    QComboBox* tf = panel().findChild<QComboBox*>("segmentTf");
+    QComboBox* mask = panel().findChild<QComboBox*>("segmentMask3d");
+    auto* edit = panel().findChild<QPushButton*>("segmentTfEdit");
+    QVERIFY(tf && mask && edit);
+    tf->setCurrentIndex(tf->findText("CT-Bone"));
+    const QImage before = test::settledFrame(window);
+    mask->setCurrentIndex(int(MaskChoice::ShowOnly));
+    const QImage showBefore = test::changedFrame(window, before);
+    mask->setCurrentIndex(int(MaskChoice::Off));
+    QCOMPARE(test::differingPixels(test::changedFrame(window, showBefore), before), 0);
+
+    edit->click();
+    auto* editor = window.findChild<TfEditorDialog*>("tfEditor");
+    QVERIFY(editor && editor->isVisible());
+    QCOMPARE(int(editor->model().target()), int(label));
+    QVERIFY(editor->windowTitle().contains(QString("segment %1").arg(label)));
+    QCOMPARE(renderTable(editor->model().property()), findPreset("CT-Bone").tf.points);
+    TfCurveView& curve = editor->curve();
+    curve.setHuRange(-1000.0, 2000.0);
+    QVERIFY(QTest::qWaitForWindowExposed(editor));
+    const QPoint at(int(std::lround(curve.xOf(641.0))), int(std::lround(curve.yOf(0.72))));
+    const QPoint to(int(std::lround(curve.xOf(400.0))), int(std::lround(curve.yOf(0.15))));
+    QTest::mousePress(&curve, Qt::LeftButton, {}, at);
+    QTest::mouseMove(&curve, (at + to) / 2);
+    QTest::mouseMove(&curve, to);
+    QTest::mouseRelease(&curve, Qt::LeftButton, {}, to);
+    const RenderParams& p = models().render.params();
+    QCOMPARE(p.segmentTfs.count(label), size_t(1));
+    QCOMPARE(p.segmentTfs.at(label), renderTable(editor->model().property()));
+    // The point is at 400 HU and 0.15 within a pixel of the axes (3000 HU over the curve's
+    // width, opacity 1 over its height).
+    auto sel = curve.selection();
+    QVERIFY(sel && sel->list == TfCurveView::List::Opacity);
+    const OpacityNode moved = editor->model().property().opacity[sel->index];
+    QVERIFY2(std::abs(moved.x - 400.0) <= 3000.0 / curve.curveArea().width(),
+             qPrintable(QString::number(moved.x)));
+    QVERIFY(std::abs(moved.opacity - 0.15) <= 1.0 / curve.curveArea().height());
+    QCOMPARE(p.preset, std::string("CT-Skin"));  // the volume's table as it was
+    QVERIFY(p.transferFunction.empty());
+    QVERIFY(editor->model().canUndo());
+
+    const QImage after = test::changedFrame(window, before);
+    mask->setCurrentIndex(int(MaskChoice::ShowOnly));
+    const QImage showAfter = test::changedFrame(window, after);
+    mask->setCurrentIndex(int(MaskChoice::Off));
+    QCOMPARE(test::differingPixels(test::changedFrame(window, showAfter), after), 0);
+    auto lit = [](const QImage& a, int x, int y) {
+      return x >= 0 && y >= 0 && x < a.width() && y < a.height() && (a.pixel(x, y) & 0xffffff);
+    };
+    int changed = 0, changedOutside = 0, shown = 0;
+    for (int y = 0; y < before.height(); ++y)
+      for (int x = 0; x < before.width(); ++x) {
+        bool near = false;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+            near = near || lit(showBefore, x + dx, y + dy) || lit(showAfter, x + dx, y + dy);
+        shown += near;
+        const QRgb a = before.pixel(x, y), b = after.pixel(x, y);
+        if (std::abs(qRed(a) - qRed(b)) > 2 || std::abs(qGreen(a) - qGreen(b)) > 2 ||
+            std::abs(qBlue(a) - qBlue(b)) > 2) {
+          ++changed;
+          changedOutside += !near;
+        }
+      }
+    qInfo("segment TF edit: %d pixels changed, %d outside the %d where the segment shows", changed,
+          changedOutside, shown);
+    QVERIFY(changed > 50);
+    QCOMPARE(changedOutside, 0);
+    QVERIFY(shown < before.width() * before.height() / 2);  // the ball, not the whole frame
+
+    editor->model().undo();  // the drag was one step
+    QCOMPARE(models().render.params().segmentTfs.at(label), findPreset("CT-Bone").tf.points);
+    QCOMPARE(test::differingPixels(test::changedFrame(window, after), before), 0);
   }
 
   // The list's "3D" choice (issue 34): a sphere painted in the air before the face shows

@@ -41,12 +41,22 @@ void TfEditorModel::viewChanged(unsigned what) {
   if (showing_ || !(what & kAppearance)) return;
   const RenderParams& p = render_.params();
   if (p.mode != Mode::Dvr) return;
+  if (target_ != 0) {  // the segment's table chosen elsewhere (the panel, undo), or the volume's
+    auto it = p.segmentTfs.find(target_);
+    const bool own = it != p.segmentTfs.end();
+    VolumeProperty start = volumeProperty();
+    start.tf2d = {};
+    if (own != segmentOwnsTable() || (own && it->second != renderTable(vp_)) ||
+        (!own && !(vp_ == start)))
+      takeFromView();
+    return;
+  }
   if (!p.preset.empty() || p.presetShiftHu != 0.0 || p.opacityUnitMm != vp_.unitDistanceMm ||
       p.transferFunction != renderTable(vp_) || p.tf2d != vp_.tf2d)
     takeFromView();
 }
 
-void TfEditorModel::takeFromView() {
+VolumeProperty TfEditorModel::volumeProperty() const {
   // In iso or mip the table is not the dvr's: start from what dvr would show.
   RenderParams p = render_.params();
   if (p.mode != Mode::Dvr) {
@@ -55,7 +65,29 @@ void TfEditorModel::takeFromView() {
   }
   // The editor's own lists and curve where the view still shows them (a session brings them).
   std::optional<VolumeProperty> shaped = render_.shapedTransferFunction();
-  vp_ = shaped ? *shaped : volumePropertyOf(p);
+  return shaped ? *shaped : volumePropertyOf(p);
+}
+
+void TfEditorModel::setTarget(uint8_t label) {
+  target_ = label;
+  takeFromView();
+}
+
+void TfEditorModel::takeFromView() {
+  vp_ = volumeProperty();
+  startedOwn_ = false;
+  if (target_ != 0) {
+    const RenderParams& p = render_.params();
+    if (auto it = p.segmentTfs.find(target_); it != p.segmentTfs.end()) {
+      // The segment's table read back as a property (linear, at its points).
+      RenderParams own;
+      own.mode = Mode::Dvr;
+      own.transferFunction = it->second;
+      vp_ = volumePropertyOf(own);
+      startedOwn_ = true;
+    }
+    vp_.tf2d = {};  // segments have 1D tables only
+  }
   undo_.clear();
   redo_.clear();
   changed.notify();
@@ -221,8 +253,18 @@ void TfEditorModel::edit(const std::function<void(VolumeProperty&)>& change) {
 
 void TfEditorModel::show() {
   showing_ = true;
-  render_.setShapedTransferFunction(vp_);
-  render_.update(kAppearance, [&](RenderParams& p) { applyVolumeProperty(p, vp_); });
+  if (target_ != 0) {
+    const bool own = segmentOwnsTable();
+    render_.update(kAppearance, [&](RenderParams& p) {
+      if (own)
+        p.segmentTfs[target_] = renderTable(vp_);
+      else
+        p.segmentTfs.erase(target_);
+    });
+  } else {
+    render_.setShapedTransferFunction(vp_);
+    render_.update(kAppearance, [&](RenderParams& p) { applyVolumeProperty(p, vp_); });
+  }
   showing_ = false;
   changed.notify();
 }

@@ -1,7 +1,9 @@
 #pragma once
 // The transfer function the user shapes in the editor (issue 35): a VolumeProperty, its two
 // lists of points edited one at a time, each edit rendered at once (the view's table becomes
-// the property's) and undoable. A drag is one undo step (beginGesture ... endGesture).
+// the property's) and undoable. A drag is one undo step (beginGesture ... endGesture). The
+// table edited is the volume's, or a segment's own (RenderParams::segmentTfs; setTarget).
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -28,6 +30,13 @@ class TfEditorModel {
   // reads it; in iso or mip, what dvr would show), with an empty history. Does not change
   // the view.
   void takeFromView();
+  // Which table the edits go to: 0 the volume's, else segment LABEL's own (its render table
+  // becomes RenderParams::segmentTfs[LABEL]; only its colour and opacity lists and curve
+  // count). Starts from that table (a segment without one: from the volume's, and undoing
+  // back to there gives the segment none again), with an empty history.
+  void setTarget(uint8_t label);
+  uint8_t target() const { return target_; }
+
   // A whole property (a file read by readVolumePropertyFile, already validated): one step.
   void setProperty(const VolumeProperty& vp);
 
@@ -74,10 +83,17 @@ class TfEditorModel {
   void show();  // the property onto the render state
 
   void viewChanged(unsigned what);
+  // The volume's table as dvr shows it (the editor's own lists where the view still has them).
+  VolumeProperty volumeProperty() const;
+  // Segment target: what segmentTfs should hold for it now (none at the start of a history
+  // that began without one).
+  bool segmentOwnsTable() const { return startedOwn_ || !undo_.empty(); }
 
   RenderStateModel& render_;
   int listener_ = 0;
-  bool showing_ = false;  // our own edit reaching the render state
+  uint8_t target_ = 0;       // 0: the volume's table; else this segment's own
+  bool startedOwn_ = false;  // segment target: it had its own table when the history began
+  bool showing_ = false;     // our own edit reaching the render state
   VolumeProperty vp_;
   std::vector<VolumeProperty> undo_, redo_;
   int gesture_ = 0;

@@ -227,12 +227,21 @@ void MainWindow::wireSegments() {
     statusBar()->showMessage(QString::fromStdString(guiMessage(m.toStdString())), 8000);
   });
   segmentDock_ = makeSegmentDock(models_, &segmentPanel_);
+  connect(segmentPanel_, &SegmentPanel::editTfRequested, this,
+          [this](uint8_t label) { openTfEditor(label); });
   addDockWidget(Qt::RightDockWidgetArea, segmentDock_);
   tabifyDockWidget(measureDock_, segmentDock_);
   measureDock_->raise();
   // The 3D view's copy of the label map follows every edit (the edited box only).
   onModelChange<>(this, models_.segmentation.changed,
                   [this] { scheduler_->updateSegmentation(models_.segmentation); });
+}
+
+void MainWindow::openTfEditor(uint8_t label) {
+  if (!tfEditor_) tfEditor_ = new TfEditorDialog(models_, scheduler_, this);
+  tfEditor_->editTable(label);
+  tfEditor_->show();
+  tfEditor_->raise();
 }
 
 void MainWindow::showLoadWarnings() {
@@ -327,11 +336,7 @@ void MainWindow::buildMenus() {
       "(never in exports unless ticked there)");
   // Issue 35: shaping the dvr table on the volume's histogram.
   view->addAction("&Transfer function editor…", QKeySequence("Ctrl+T"), this,
-                  [this] {
-                    if (!tfEditor_) tfEditor_ = new TfEditorDialog(models_, scheduler_, this);
-                    tfEditor_->show();
-                    tfEditor_->raise();
-                  })
+                  [this] { openTfEditor(0); })
       ->setObjectName("viewTfEditor");
   view->addAction("Reset slice &planes", QKeySequence("Ctrl+Shift+R"), this,
                   [this] { models_.crosshair.resetRotation(); })

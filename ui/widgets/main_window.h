@@ -127,6 +127,9 @@ class MainWindow : public QMainWindow {
   void exportMovie();
   void showError(const QString& title, const QString& message);
   void updateTitle();
+  // The transfer-function editor (made when first asked) on the volume's table (0) or on
+  // segment LABEL's own (the Segments panel's TF… Edit).
+  void openTfEditor(uint8_t label);
 
   AppModels& models_;
   RenderScheduler* scheduler_;

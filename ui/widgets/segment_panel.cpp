@@ -218,7 +218,18 @@ SegmentPanel::SegmentPanel(AppModels& models, QWidget* parent) : QWidget(parent)
   segTf_->setToolTip(
       "The chosen segment's own transfer function in the 3D view, used where it lies instead "
       "of the volume's (and of its colour); Volume's: none. Edit → Undo takes a choice back");
-  form3d->addRow("TF…", segTf_);
+  auto* segTfEdit = new QPushButton("Edit…");
+  segTfEdit->setObjectName("segmentTfEdit");
+  segTfEdit->setToolTip(
+      "Shape the chosen segment's own transfer function in the editor (from the volume's when "
+      "it has none); each edit is an undo step of the editor");
+  auto* segTfRow = new QHBoxLayout;
+  segTfRow->addWidget(segTf_, 1);
+  segTfRow->addWidget(segTfEdit);
+  form3d->addRow("TF…", segTfRow);
+  connect(segTfEdit, &QPushButton::clicked, this, [this] {
+    if (const uint8_t label = currentLabel()) emit editTfRequested(label);
+  });
   layout->addWidget(view3d);
 
   // Statistics.

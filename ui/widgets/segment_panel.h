@@ -72,6 +72,8 @@ class SegmentPanel : public QWidget {
   // The statistics table was filled (Update, or the refresh after an edit).
   void statisticsShown();
   void segSent();
+  // TF… Edit: the transfer-function editor on segment LABEL's own table.
+  void editTfRequested(uint8_t label);
 
  public:
   uint8_t currentLabel() const;

@@ -259,6 +259,21 @@ TfEditorDialog::~TfEditorDialog() {
   delete modelLinks_;
 }
 
+void TfEditorDialog::editTable(uint8_t label) {
+  if (label != model_->target()) model_->setTarget(label);  // reopened: the history stays
+  QString title = "Transfer function";
+  if (label != 0) {
+    const Segment* seg = models_.segmentation.segmentation().find(label);
+    title = QString("Transfer function of segment %1").arg(label);
+    if (seg && !seg->name.empty()) title += " (" + QString::fromStdString(seg->name) + ")";
+    tabs_->setCurrentIndex(0);
+  }
+  setWindowTitle(title);
+  tabs_->setTabEnabled(1, label == 0);
+  tabs_->setTabEnabled(2, label == 0);
+  unit_->setEnabled(label == 0);
+}
+
 QString TfEditorDialog::loadFile(const QString& file) {
   try {
     if (file.endsWith(".xml", Qt::CaseInsensitive)) {

@@ -4,7 +4,8 @@
 // unit distance, the HU axis, and files (Voxray .json, 3D Slicer .vp). Edits render at once.
 // A second tab edits the 2D transfer function (Tf2dView over the value x |gradient|
 // histogram, counted in the background the first time the tab shows a volume); a third is
-// the preset gallery (TfGalleryView: pictures of every preset on the volume).
+// the preset gallery (TfGalleryView: pictures of every preset on the volume). The Segments
+// panel opens it on a segment's own table (editTable).
 #include <memory>
 
 #include <QCheckBox>
@@ -31,6 +32,10 @@ class TfEditorDialog : public QDialog {
   ~TfEditorDialog() override;
 
   TfEditorModel& model() { return *model_; }
+  // Which table the editor shapes: the volume's (0; View → Transfer function editor) or
+  // segment LABEL's own (the Segments panel's TF… Edit), as TfEditorModel::setTarget. The 2D
+  // and preset tabs and the opacity unit distance are the volume's: off for a segment.
+  void editTable(uint8_t label);
   TfCurveView& curve() { return *curve_; }
   // Reads FILE into the editor; a bad file leaves the transfer function as it was and
   // returns the message (empty on success). The Load button shows it in a box.
