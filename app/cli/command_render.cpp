@@ -232,7 +232,7 @@ Run addRenderCommand(CLI::App& app) {
     rc.setOptions(ro);
     rc.setPathTracerOptions(o->cinematic.tracer);
     if (auto seg = o->labels.load(v)) rc.setSegmentation(*seg);
-    const auto overlay = o->overlay.load();  // fused dvr (issue 36): copied to the device
+    const auto overlay = o->overlay.load(v);  // fused dvr (issue 36): copied to the device
     if (overlay) {
       for (const std::string& w : rc.setOverlay(overlay->first, overlay->second))
         std::cerr << "voxray-cli: warning: --overlay: " << w << "\n";

@@ -42,15 +42,29 @@ void OverlayOption::add(CLI::App& cmd) {
                  "with a window: the opacity per reference step at HI (default 0.5); with "
                  "--overlay-tf: a factor on the table's opacities (default 1)")
       ->check(CLI::Range(0.0, 1.0));
+  cmd.add_option("--overlay-time", time,
+                 "a 4D overlay's time point, 0-based (default: the study's --time when both "
+                 "have as many time points, as the workstation's overlay follows its time "
+                 "slider; else the first)")
+      ->check(CLI::NonNegativeNumber);
 }
 
-std::optional<std::pair<Volume, TransferFunction>> OverlayOption::load() const {
+std::optional<std::pair<Volume, TransferFunction>> OverlayOption::load(const Volume& study) const {
   if (path.empty()) return std::nullopt;
   Volume o;
   try {
-    o = loadVolume(path);
+    LoadOptions options;
+    options.timePoint = time;
+    o = loadVolume(path, options);
+    // Following the study: the same index when both are 4D with the same count.
+    if (!time && study.timePoints > 1 && o.timePoints == study.timePoints &&
+        study.timePoint != o.timePoint) {
+      options.timePoint = study.timePoint;
+      o = loadVolume(path, options);
+    }
   } catch (const Error& e) {
-    throw Error(e.kind(), "--overlay " + path + ": " + e.what());
+    throw Error(e.kind(), (time ? "--overlay-time " + std::to_string(*time) + ", " : "") +
+                              "--overlay " + path + ": " + e.what());
   }
   if (!tf.empty()) {
     TransferFunction table;
