@@ -479,9 +479,10 @@ class ReadingTest : public QObject {
       QVERIFY(valuesIn(f, DCM_StudyDate).at(0) != studyDate);
     }
     QProcess check;
-    check.start(VOXRAY_PYTHON, {VOXRAY_SOURCE_DIR "/tests/report/check_anonymised.py",
-                                QString::fromStdString(kBrain),
-                                QString::fromStdString(out.string()), "shift", "-40"});
+    check.start(
+        VOXRAY_PYTHON,
+        {QStringLiteral(VOXRAY_SOURCE_DIR) + "/tests/report/check_anonymised.py",
+         QString::fromStdString(kBrain), QString::fromStdString(out.string()), "shift", "-40"});
     QVERIFY2(check.waitForFinished(120000), "check_anonymised.py did not finish");
     QVERIFY2(check.exitCode() == 0,
              qPrintable(check.readAllStandardOutput() + check.readAllStandardError() +
