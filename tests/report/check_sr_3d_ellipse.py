@@ -6,28 +6,17 @@ recomputed here from the files' Image Position, Orientation and Pixel Spacing wi
 
 usage: check_sr_3d_ellipse.py REPORT.dcm SOURCE_FOLDER"""
 import sys
-from pathlib import Path
 
-try:
-    import highdicom as hd
-    import numpy as np
-    import pydicom
-except ImportError as e:
-    sys.exit(f"{e}: run scripts/bootstrap (it makes the .venv with pydicom and highdicom)")
+import numpy as np
 
-report_path, source = sys.argv[1], Path(sys.argv[2])
-images = [pydicom.dcmread(p) for p in sorted(source.iterdir()) if p.suffix == ".dcm"]
-normal = np.cross(np.array(images[0].ImageOrientationPatient[:3], float),
-                  np.array(images[0].ImageOrientationPatient[3:], float))
-images.sort(key=lambda d: float(np.dot(normal, np.array(d.ImagePositionPatient, float))))
+from sr_3d_files import lps as lps_in, scoord3d_items, source_images
+
+report_path = sys.argv[1]
+images = source_images(sys.argv[2])
 
 
-def lps(i, j, k):  # PS3.3 C.7.6.2.1.1: column index i along the row direction; k a whole slice
-    d = images[int(k)]
-    assert k == int(k), "the test's points lie on slices"
-    o = np.array(d.ImageOrientationPatient, float)
-    r_mm, c_mm = (float(x) for x in d.PixelSpacing)
-    return np.array(d.ImagePositionPatient, float) + i * c_mm * o[:3] + j * r_mm * o[3:]
+def lps(i, j, k):
+    return lps_in(images, i, j, k)
 
 
 def axis_points(a, b):
@@ -41,18 +30,8 @@ def axis_points(a, b):
     return np.concatenate(first + second)
 
 
-ds = pydicom.dcmread(report_path)
-hd.sr.Comprehensive3DSR.from_dataset(ds)  # highdicom reads it as its IOD
 failures = []
-
-
-def walk(item):
-    for child in getattr(item, "ContentSequence", []):
-        yield child
-        yield from walk(child)
-
-
-found = [i for i in walk(ds) if i.ValueType == "SCOORD3D"]
+found = scoord3d_items(report_path)
 expected = [axis_points((10, 5, 2), (40, 5, 8)), axis_points((100, 5, 1), (104, 5, 21))]
 matched = [0, 0]
 for s in found:

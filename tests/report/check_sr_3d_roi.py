@@ -5,46 +5,20 @@ highdicom reads the Comprehensive 3D SR.
 
 usage: check_sr_3d_roi.py REPORT.dcm SOURCE_FOLDER"""
 import sys
-from pathlib import Path
 
-try:
-    import highdicom as hd
-    import numpy as np
-    import pydicom
-except ImportError as e:
-    sys.exit(f"{e}: run scripts/bootstrap (it makes the .venv with pydicom and highdicom)")
+import numpy as np
 
-report_path, source = sys.argv[1], Path(sys.argv[2])
-images = [pydicom.dcmread(p) for p in sorted(source.iterdir()) if p.suffix == ".dcm"]
-normal = np.cross(np.array(images[0].ImageOrientationPatient[:3], float),
-                  np.array(images[0].ImageOrientationPatient[3:], float))
-images.sort(key=lambda d: float(np.dot(normal, np.array(d.ImagePositionPatient, float))))
+from sr_3d_files import lps, scoord3d_items, source_images
 
-
-def lps(i, j, k):  # PS3.3 C.7.6.2.1.1: column index i along the row direction
-    d = images[k]
-    o = np.array(d.ImageOrientationPatient, float)
-    r_mm, c_mm = (float(x) for x in d.PixelSpacing)
-    return np.array(d.ImagePositionPatient, float) + i * c_mm * o[:3] + j * r_mm * o[3:]
-
-
-ds = pydicom.dcmread(report_path)
-hd.sr.Comprehensive3DSR.from_dataset(ds)  # highdicom reads it as its IOD
+report_path = sys.argv[1]
+images = source_images(sys.argv[2])
 failures = []
-
-
-def walk(item):
-    for child in getattr(item, "ContentSequence", []):
-        yield child
-        yield from walk(child)
-
-
-found = [i for i in walk(ds) if i.ValueType == "SCOORD3D"]
+found = scoord3d_items(report_path)
 # One under each of the ROI's values: mean, SD, min, max, area.
 if len(found) != 5:
     failures.append(f"{len(found)} SCOORD3D items, not 5")
 corners = [(10, 5, 2), (40, 5, 2), (40, 5, 8), (10, 5, 8), (10, 5, 2)]
-expected = np.concatenate([lps(*c) for c in corners])
+expected = np.concatenate([lps(images, *c) for c in corners])
 for s in found:
     got = np.array(s.GraphicData, float)
     if s.GraphicType != "POLYGON":
