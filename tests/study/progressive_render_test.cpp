@@ -1,52 +1,15 @@
 // Lighting cinematic in the 3D view: frames from the real render worker (PoCL) accumulate
 // path samples while the view is still; any change of the frame restarts the count.
-#include <condition_variable>
-#include <mutex>
-
 #include <gtest/gtest.h>
 
 #include "progressive_render.h"
 #include "render_worker.h"
 #include "voxray/io/phantom.h"
+#include "worker_frames.h"
 
 using namespace voxray;
 
-namespace {
-
-// The worker's frames, collected on its thread (no Post: callbacks run there).
-struct Frames {
-  std::mutex mutex;
-  std::condition_variable arrived;
-  std::shared_ptr<const Frame> last;
-  std::string error;
-  RenderCallbacks callbacks() {
-    RenderCallbacks cb;
-    cb.frame = [this](std::shared_ptr<const Frame> f) {
-      std::lock_guard lock(mutex);
-      last = std::move(f);
-      arrived.notify_all();
-    };
-    cb.error = [this](const std::string& m, bool) {
-      std::lock_guard lock(mutex);
-      error = m;
-      arrived.notify_all();
-    };
-    return cb;
-  }
-  // Requests p and waits for its frame.
-  std::shared_ptr<const Frame> render(RenderWorker& w, const RenderParams& p, bool interactive) {
-    std::unique_lock lock(mutex);
-    last.reset();
-    lock.unlock();
-    w.request(p, interactive);
-    lock.lock();
-    arrived.wait_for(lock, std::chrono::seconds(120), [&] { return last || !error.empty(); });
-    EXPECT_EQ(error, "");
-    return last;
-  }
-};
-
-}  // namespace
+using Frames = test::WorkerFrames;
 
 TEST(ProgressiveRender, StillFramesAccumulateAndAnyChangeRestartsTheCount) {
   Frames frames;

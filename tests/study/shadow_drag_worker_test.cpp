@@ -2,53 +2,17 @@
 // grid for its interactive frames (the light follows the camera: a grid build per frame
 // otherwise) and the first still frame after them is the still frame of a raycaster that
 // never held, byte for byte.
-#include <condition_variable>
-#include <mutex>
-
 #include <gtest/gtest.h>
 
 #include "render_worker.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/phantom.h"
+#include "worker_frames.h"
 
 using namespace voxray;
 
-namespace {
-
-// The worker's frames, collected on its thread (no Post: callbacks run there).
-struct Frames {
-  std::mutex mutex;
-  std::condition_variable arrived;
-  std::shared_ptr<const Frame> last;
-  std::string error;
-  RenderCallbacks callbacks() {
-    RenderCallbacks cb;
-    cb.frame = [this](std::shared_ptr<const Frame> f) {
-      std::lock_guard lock(mutex);
-      last = std::move(f);
-      arrived.notify_all();
-    };
-    cb.error = [this](const std::string& m, bool) {
-      std::lock_guard lock(mutex);
-      error = m;
-      arrived.notify_all();
-    };
-    return cb;
-  }
-  std::shared_ptr<const Frame> render(RenderWorker& w, const RenderParams& p, bool interactive) {
-    std::unique_lock lock(mutex);
-    last.reset();
-    lock.unlock();
-    w.request(p, interactive);
-    lock.lock();
-    arrived.wait_for(lock, std::chrono::seconds(120), [&] { return last || !error.empty(); });
-    EXPECT_EQ(error, "");
-    return last;
-  }
-};
-
-}  // namespace
+using Frames = test::WorkerFrames;
 
 TEST(ShadowDragWorker, DragFramesBuildNoGridAndTheStillFrameAfterIsUnchanged) {
   auto volume = std::make_shared<const Volume>(makeHeadPhantom(48));
