@@ -141,6 +141,7 @@ TEST(EditOrder, PriorMovesAreUndoneInTheOrderMade) {
   order.undo();
   EXPECT_DOUBLE_EQ(m.render.params().camera.azimuthDeg, 0.0);
   EXPECT_FALSE(order.canUndo());
+  order.setPriorMoves(nullptr, nullptr);  // MOVES goes first (declared after the order)
 }
 
 }  // namespace

@@ -27,7 +27,8 @@ class EditOrder {
   EditOrder& operator=(const EditOrder&) = delete;
 
   // Compare's Move prior drags (issue 36): HISTORY's steps put back onto MODEL, in this order
-  // too. Listens until destroyed or set again (nullptr: none).
+  // too. Listens until destroyed or set again (nullptr: none): HISTORY must outlive this
+  // order or be set away first (the window's order goes before its compare view).
   void setPriorMoves(PriorMoveHistory* history, ComparisonModel* model);
 
   bool canUndo() const;
