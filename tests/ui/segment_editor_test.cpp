@@ -89,6 +89,34 @@ class SegmentEditorTest : public QObject {
     return panel().currentLabel();
   }
 
+  // The pixels of AFTER more than 2 levels from BEFORE in a channel, and of those the ones
+  // outside where the segment shows (lit in SHOW_A or SHOW_B, grown by one pixel).
+  struct SegmentChange {
+    int changed = 0, outside = 0, shown = 0;
+  };
+  static SegmentChange changeWhereTheSegmentShows(const QImage& before, const QImage& after,
+                                                  const QImage& showA, const QImage& showB) {
+    auto lit = [](const QImage& a, int x, int y) {
+      return x >= 0 && y >= 0 && x < a.width() && y < a.height() && (a.pixel(x, y) & 0xffffff);
+    };
+    SegmentChange c;
+    for (int y = 0; y < before.height(); ++y)
+      for (int x = 0; x < before.width(); ++x) {
+        bool near = false;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+            near = near || lit(showA, x + dx, y + dy) || lit(showB, x + dx, y + dy);
+        c.shown += near;
+        const QRgb a = before.pixel(x, y), b = after.pixel(x, y);
+        if (std::abs(qRed(a) - qRed(b)) > 2 || std::abs(qGreen(a) - qGreen(b)) > 2 ||
+            std::abs(qBlue(a) - qBlue(b)) > 2) {
+          ++c.changed;
+          c.outside += !near;
+        }
+      }
+    return c;
+  }
+
   // The README figures' scene: CThead (in HU) in a 1900 x 1040 window, dvr CT-Bone turned by
   // 30 degrees, and a "Skull" segment (threshold 300 ... 3000 HU, largest island) in its colour.
   void openCtheadWithASkullSegment() {
@@ -323,30 +351,13 @@ class SegmentEditorTest : public QObject {
     mask->setCurrentIndex(int(MaskChoice::Off));
     const QImage bone = test::changedFrame(*fixture_.window, showBone);
     QCOMPARE(bone.size(), before.size());
-    auto lit = [](const QImage& a, int x, int y) {
-      return x >= 0 && y >= 0 && x < a.width() && y < a.height() && (a.pixel(x, y) & 0xffffff);
-    };
-    int changed = 0, changedOutside = 0, shown = 0;
-    for (int y = 0; y < before.height(); ++y)
-      for (int x = 0; x < before.width(); ++x) {
-        bool near = false;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx)
-            near = near || lit(showSkin, x + dx, y + dy) || lit(showBone, x + dx, y + dy);
-        shown += near;
-        const QRgb a = before.pixel(x, y), b = bone.pixel(x, y);
-        if (std::abs(qRed(a) - qRed(b)) > 2 || std::abs(qGreen(a) - qGreen(b)) > 2 ||
-            std::abs(qBlue(a) - qBlue(b)) > 2) {
-          ++changed;
-          changedOutside += !near;
-        }
-      }
-    qInfo("segment TF: %d pixels changed, %d outside the %d where the segment shows", changed,
-          changedOutside, shown);
-    QVERIFY(changed > 50);
-    QCOMPARE(changedOutside, 0);
-    QVERIFY(shown < before.width() * before.height() / 2);  // the ball, not the whole frame
-    fixture_.window->volumeView().setFocus();               // not the Segments panel (its own undo)
+    const SegmentChange c = changeWhereTheSegmentShows(before, bone, showSkin, showBone);
+    qInfo("segment TF: %d pixels changed, %d outside the %d where the segment shows", c.changed,
+          c.outside, c.shown);
+    QVERIFY(c.changed > 50);
+    QCOMPARE(c.outside, 0);
+    QVERIFY(c.shown < before.width() * before.height() / 2);  // the ball, not the whole frame
+    fixture_.window->volumeView().setFocus();  // not the Segments panel (its own undo)
     QTest::keyClick(fixture_.window.get(), Qt::Key_Z, Qt::ControlModifier);
     QVERIFY(models().render.params().segmentTfs.empty());
     QCOMPARE(tf->currentText(), QString("Volume's"));
@@ -416,29 +427,12 @@ class SegmentEditorTest : public QObject {
     const QImage showAfter = test::changedFrame(window, after);
     mask->setCurrentIndex(int(MaskChoice::Off));
     QCOMPARE(test::differingPixels(test::changedFrame(window, showAfter), after), 0);
-    auto lit = [](const QImage& a, int x, int y) {
-      return x >= 0 && y >= 0 && x < a.width() && y < a.height() && (a.pixel(x, y) & 0xffffff);
-    };
-    int changed = 0, changedOutside = 0, shown = 0;
-    for (int y = 0; y < before.height(); ++y)
-      for (int x = 0; x < before.width(); ++x) {
-        bool near = false;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx)
-            near = near || lit(showBefore, x + dx, y + dy) || lit(showAfter, x + dx, y + dy);
-        shown += near;
-        const QRgb a = before.pixel(x, y), b = after.pixel(x, y);
-        if (std::abs(qRed(a) - qRed(b)) > 2 || std::abs(qGreen(a) - qGreen(b)) > 2 ||
-            std::abs(qBlue(a) - qBlue(b)) > 2) {
-          ++changed;
-          changedOutside += !near;
-        }
-      }
-    qInfo("segment TF edit: %d pixels changed, %d outside the %d where the segment shows", changed,
-          changedOutside, shown);
-    QVERIFY(changed > 50);
-    QCOMPARE(changedOutside, 0);
-    QVERIFY(shown < before.width() * before.height() / 2);  // the ball, not the whole frame
+    const SegmentChange c = changeWhereTheSegmentShows(before, after, showBefore, showAfter);
+    qInfo("segment TF edit: %d pixels changed, %d outside the %d where the segment shows",
+          c.changed, c.outside, c.shown);
+    QVERIFY(c.changed > 50);
+    QCOMPARE(c.outside, 0);
+    QVERIFY(c.shown < before.width() * before.height() / 2);  // the ball, not the whole frame
 
     editor->model().undo();  // the drag was one step
     QCOMPARE(models().render.params().segmentTfs.at(label), findPreset("CT-Bone").tf.points);
