@@ -33,8 +33,13 @@ inline QImage waitFullFrame(MainWindow& window) {
 // renders are answered after it, so the first frame after a change may show an earlier state.
 inline QImage settledFrame(MainWindow& window) {
   QSignalSpy frames(&window.scheduler(), &RenderScheduler::frameReady);
-  while (frames.wait(1500)) {
-  }
+  // Quiet for 1.5 s is not enough alone: a kernel variant still building (seconds on a cold
+  // PoCL cache, as on a fresh CI machine) is quiet too; wait (up to 60 s) until nothing waits.
+  QDeadlineTimer deadline(60000);
+  do {
+    while (frames.wait(1500)) {
+    }
+  } while (window.scheduler().busy() && !deadline.hasExpired());
   QCoreApplication::processEvents();
   return window.volumeView().lastFrame();
 }

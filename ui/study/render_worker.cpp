@@ -223,6 +223,12 @@ void RenderWorker::selectTimePoint(ClContext& ctx, const std::shared_ptr<const V
   });
 }
 
+bool RenderWorker::busy() {
+  std::lock_guard lock(mutex_);
+  return working_ || pendingVolume_ || pendingView_ || pendingExport_ || pendingSegmentation_ ||
+         pendingOverlay_ || !pendingOnDevice_.empty();
+}
+
 void RenderWorker::run() {
   std::unique_ptr<ClContext> ctx;
   try {
@@ -260,6 +266,7 @@ void RenderWorker::run() {
     std::shared_ptr<OnDevice> onDevice;
     {
       std::unique_lock lock(mutex_);
+      working_ = false;
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
                pendingSegmentation_ || pendingOverlay_ || (!pendingPrepare_.empty() && raycaster) ||
@@ -267,6 +274,7 @@ void RenderWorker::run() {
                (!pendingBackground_.empty() && raycaster) || !pendingOnDevice_.empty();
       });
       if (task_.cancelled()) return;
+      working_ = true;
       if (raycaster) prepare = std::exchange(pendingPrepare_, {});
       if (!pendingOnDevice_.empty()) {
         onDevice = std::move(pendingOnDevice_.front());

@@ -110,6 +110,10 @@ class RenderWorker {
   // compiler (issue 41 item 9: a variant took 2-3 s on PoCL). Frames render meanwhile. A new
   // call replaces the variants not yet started; a new volume keeps them.
   void prepare(std::vector<RenderParams> params);
+  // Whether a frame, volume or edit waits or the render thread works on one (a frame it
+  // finished is posted before it is idle again). For tests that wait for the frame of the
+  // last change however long its kernel takes to build.
+  bool busy();
 
  private:
   void buildLoop(ClContext& ctx);
@@ -131,6 +135,7 @@ class RenderWorker {
   RenderCallbacks callbacks_;
   std::mutex mutex_;
   std::condition_variable wake_;
+  bool working_ = false;  // the render thread took work and has not come back for more
   std::shared_ptr<const Volume> pendingVolume_;
   struct SegmentationUpdate {
     bool replace = false;  // `whole` replaces the copy (null: none)

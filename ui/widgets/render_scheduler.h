@@ -58,6 +58,8 @@ class RenderScheduler : public QObject {
   Image renderOnDevice(const RenderParams& params, const Volume* volume) {
     return worker_->renderOnDevice(params, volume);
   }
+  // Whether a frame of the last change is still to come (RenderWorker::busy).
+  bool busy() const { return worker_->busy(); }
 
  signals:
   void frameReady(std::shared_ptr<const voxray::Frame> frame);
