@@ -90,15 +90,6 @@ QImage nextFullFrame(RenderScheduler& scheduler, VolumeView& view) {
   qFatal("no full-quality frame within 60 s");
 }
 
-// The last sharp frame once SCHEDULER has been quiet for 1.5 s.
-QImage settled(RenderScheduler& scheduler, VolumeView& view) {
-  QSignalSpy frames(&scheduler, &RenderScheduler::frameReady);
-  while (frames.wait(1500)) {
-  }
-  QCoreApplication::processEvents();
-  return view.lastFrame();
-}
-
 // The angle (degrees) of a rigid transform's rotation, from its trace.
 double turnDegrees(const glm::dmat4& m) {
   const double c = (m[0][0] + m[1][1] + m[2][2] - 1.0) / 2.0;
@@ -304,7 +295,7 @@ class CompareTest : public QObject {
     glm::dmat4 t(turnAboutZ(7.0));
     t[3] = glm::dvec4(4.0, -3.0, 6.0, 1.0);
     c->comparison().setMovingToFixed(t);
-    const QImage before = settled(c->priorScheduler(), c->moving3dView());
+    const QImage before = test::settledFrame(c->priorScheduler(), c->moving3dView());
     QVERIFY(!before.isNull());
     const double azimuth = m.render.params().camera.azimuthDeg;
     // A 50-pixel left drag in the study's 3D view, clear of the clip and light handles.
@@ -328,7 +319,7 @@ class CompareTest : public QObject {
     const glm::dvec3 eye(glm::inverse(t) * glm::dvec4(va.eyeMm, 1.0));
     QVERIFY(glm::length(vb.eyeMm - eye) < 1e-9);
     // The prior's 3D view shows the turn: a new frame, much of it changed.
-    const QImage after = settled(c->priorScheduler(), c->moving3dView());
+    const QImage after = test::settledFrame(c->priorScheduler(), c->moving3dView());
     const int changed = test::differingPixels(before, after);
     QVERIFY2(changed > before.width() * before.height() / 20,
              qPrintable(QString("%1 pixels changed").arg(changed)));

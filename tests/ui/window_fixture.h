@@ -29,19 +29,23 @@ inline QImage waitFullFrame(MainWindow& window) {
   qFatal("no full-quality frame within 60 s");
 }
 
-// The frame on screen once frames stop arriving (none for 1.5 s): requests made while a frame
-// renders are answered after it, so the first frame after a change may show an earlier state.
-inline QImage settledFrame(MainWindow& window) {
-  QSignalSpy frames(&window.scheduler(), &RenderScheduler::frameReady);
-  // Quiet for 1.5 s is not enough alone: a kernel variant still building (seconds on a cold
-  // PoCL cache, as on a fresh CI machine) is quiet too; wait (up to 60 s) until nothing waits.
+// The frame on screen once frames stop arriving (none for 1.5 s) and SCHEDULER has nothing
+// waiting: requests made while a frame renders are answered after it, so the first frame after
+// a change may show an earlier state; and a kernel variant still building (seconds on a cold
+// PoCL cache, as on a fresh CI machine) is quiet too. Waits up to 60 s.
+inline QImage settledFrame(RenderScheduler& scheduler, const VolumeView& view) {
+  QSignalSpy frames(&scheduler, &RenderScheduler::frameReady);
   QDeadlineTimer deadline(60000);
   do {
     while (frames.wait(1500)) {
     }
-  } while (window.scheduler().busy() && !deadline.hasExpired());
+  } while (scheduler.busy() && !deadline.hasExpired());
   QCoreApplication::processEvents();
-  return window.volumeView().lastFrame();
+  return view.lastFrame();
+}
+
+inline QImage settledFrame(MainWindow& window) {
+  return settledFrame(window.scheduler(), window.volumeView());
 }
 
 // The settled frame after a change that alters the image: first waits (up to 60 s) for a frame
