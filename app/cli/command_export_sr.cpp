@@ -11,6 +11,7 @@
 #include "voxray/engine/measure.h"
 #include "voxray/io/error.h"
 #include "voxray/io/measurement_report.h"
+#include "voxray/io/segment_files.h"
 
 namespace voxray::cli {
 
@@ -20,6 +21,7 @@ struct ExportSrOptions {
   std::vector<std::string> lines, angles, ellipses, rects;
   std::string plane = "k";
   std::string output, csv;
+  std::string seg;      // --seg FILE: the segments as a DICOM SEG the report's groups reference
   LabelsOption labels;  // segments: --labels FILE or --labels-raw FILE on the volume's grid
   bool mm = false, force = false;
 };
@@ -79,15 +81,31 @@ int runExportSr(const InputOptions& in, const ExportSrOptions& o) {
     throw inputError("export-sr: give at least one --line, --angle, --ellipse, --rect or --labels");
   refuseExisting(o.output, o.force);
   refuseExisting(o.csv, o.force);
+  refuseExisting(o.seg, o.force);
+  if (!o.seg.empty() && o.labels.file.empty() && o.labels.raw.empty())
+    throw inputError(
+        "export-sr: --seg writes the segments of --labels as a DICOM SEG: give --labels too");
   const Volume v = in.load();
   auto list = measurements(v, o);
+  MeasurementReportInfo info;
   if (const auto segmentation = o.labels.load(v)) {
     // Each segment's statistics, volume and SUVpeak (a PET with its SUV attributes).
     const auto segments = reportSegments(*segmentation, v);
     list.insert(list.end(), segments.begin(), segments.end());
+    if (!o.seg.empty()) {
+      // Written first: the report's segment groups reference it by its SOP Instance UID.
+      DicomSegOptions segOptions;
+      segOptions.force = o.force;
+      const WrittenDicomSeg written = writeDicomSeg(o.seg, *segmentation, v.study, segOptions);
+      info.segSopInstanceUid = written.sopInstanceUid;
+      info.segSeriesInstanceUid = written.seriesInstanceUid;
+      std::cout << o.seg << ": DICOM SEG of " << segmentation->segments.size() << " segment"
+                << (segmentation->segments.size() == 1 ? "" : "s") << ", SOP Instance UID "
+                << info.segSopInstanceUid << "\n";
+    }
   }
   if (!o.output.empty()) {
-    const WrittenReport r = writeMeasurementReport(o.output, v, list);
+    const WrittenReport r = writeMeasurementReport(o.output, v, list, info);
     std::cout << o.output << ": measurement report (TID 1500) with " << list.size()
               << " measurement" << (list.size() == 1 ? "" : "s") << ", SOP Instance UID "
               << r.sopInstanceUid << "\n";
@@ -121,6 +139,9 @@ Run addExportSrCommand(CLI::App& app) {
   cmd->add_flag("--mm", o->mm, "points are LPS patient positions in mm, not voxel indices");
   cmd->add_option("-o,--output", o->output, "the DICOM SR file to write");
   cmd->add_option("--csv", o->csv, "also (or only) write the values as CSV");
+  cmd->add_option("--seg", o->seg,
+                  "also write the --labels segments as this DICOM SEG; the report's segment "
+                  "groups (TID 1411) reference it");
   cmd->add_flag("--force", o->force, "overwrite existing output files");
   return [in, o] { return runExportSr(*in, *o); };
 }

@@ -272,7 +272,7 @@ TEST(SegmentFiles, ADicomSegReadsBackVoxelForVoxelWithNamesColoursAndCodes) {
   const std::string path = dir / "labels.dcm";
   DicomSegOptions options;
   options.algorithm = DicomSegOptions::Algorithm::Manual;
-  const std::string uid = writeDicomSeg(path, seg, v.study, options);
+  const std::string uid = writeDicomSeg(path, seg, v.study, options).sopInstanceUid;
   EXPECT_FALSE(uid.empty());
   const Segmentation back = readSegmentationFile(path, v);
   // The SEG numbers its segments 1, 2: label 3 comes back as 2, the same voxels.

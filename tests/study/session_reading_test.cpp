@@ -312,5 +312,39 @@ TEST(ResultsOut, ADistancePickedIn3dIsReportedIn3dAndSegmentsCarryTheirSuvPeak) 
   EXPECT_NEAR(pet.suv->toSuv(*groups[0].mean), suv, 1e-9 * suv);
 }
 
+// Issue 37: a segment's group knows its number in a DICOM SEG written from the same
+// segmentation (its place in the list, not its label) and its centroid in voxels, which the
+// SR gives as a SCOORD3D POINT.
+TEST(ResultsOut, SegmentGroupsCarryTheirSegNumberAndCentroid) {
+  Volume v;
+  v.dims = {16, 12, 20};
+  v.spacingMm = {0.5, 0.5, 2.0};
+  v.voxels.assign(v.voxelCount(), 40);
+  Segmentation s = emptySegmentation(v);
+  auto box = [&](uint8_t label, glm::ivec3 lo, glm::ivec3 hi) {  // inclusive
+    for (int k = lo.z; k <= hi.z; ++k)
+      for (int j = lo.y; j <= hi.y; ++j)
+        for (int i = lo.x; i <= hi.x; ++i) s.labels[v.index(i, j, k)] = label;
+  };
+  box(5, {1, 2, 3}, {4, 2, 5});      // centre (2.5, 2, 4): 4 x 1 x 3 voxels
+  box(2, {10, 6, 12}, {11, 9, 19});  // centre (10.5, 7.5, 15.5): 2 x 4 x 8 voxels
+  Segment first, second;
+  first.label = 5, first.name = "First";
+  second.label = 2, second.name = "Second";
+  s.segments = {first, second};  // the SEG's segments 1 and 2, whatever their labels
+  const auto groups = reportSegments(s, v);
+  ASSERT_EQ(groups.size(), size_t(2));
+  EXPECT_EQ(groups[0].label, "segment 5 First");
+  EXPECT_EQ(groups[0].segmentNumber, 1);
+  ASSERT_TRUE(groups[0].centroid);
+  EXPECT_EQ(*groups[0].centroid, glm::dvec3(2.5, 2.0, 4.0));  // means of small integers: exact
+  EXPECT_DOUBLE_EQ(*groups[0].volumeMm3, 12 * 0.5);
+  EXPECT_EQ(groups[1].label, "segment 2 Second");
+  EXPECT_EQ(groups[1].segmentNumber, 2);
+  ASSERT_TRUE(groups[1].centroid);
+  EXPECT_EQ(*groups[1].centroid, glm::dvec3(10.5, 7.5, 15.5));
+  EXPECT_DOUBLE_EQ(*groups[1].volumeMm3, 64 * 0.5);
+}
+
 }  // namespace
 }  // namespace voxray

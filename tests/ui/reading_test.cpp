@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 
 #include <QApplication>
@@ -18,6 +19,7 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QPushButton>
@@ -28,6 +30,7 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QTimer>
+#include <QTreeWidget>
 #include <QWheelEvent>
 
 #include <dcmtk/dcmdata/dctk.h>
@@ -45,8 +48,12 @@
 #include "session_actions.h"
 #include "slice_geometry.h"
 #include "slice_view.h"
+#include "study_browser_dialog.h"
 #include "voxray/io/phantom_series.h"
 #include "window_fixture.h"
+#ifdef VOXRAY_HAS_STUDYDB
+#include "voxray/studydb/study_db.h"
+#endif
 
 namespace voxray::ui::test {
 
@@ -113,6 +120,83 @@ std::string writeTwoSeriesStudy(const fs::path& folder) {
     ++written;
   }
   return written == 14 ? seriesUid : "";
+}
+
+// A series made from the Philips head CT's slices (every other one: the odd or the even
+// instance numbers), with its own UIDs and its values shifted by HUSHIFT (its Rescale
+// Intercept), so that each series' voxels tell it apart from the others'.
+struct DerivedSeries {
+  std::string description;
+  int number = 0;
+  bool odd = true;
+  int huShift = 0;
+};
+
+// A study in FOLDER: the head CT as it is ("STD BRAIN 5MM", 28 slices of 5 mm) and each of
+// DERIVED (14 slices of 10 mm; the same study and Frame of Reference). Returns the derived
+// series' UIDs in DERIVED's order (empty on failure).
+std::vector<std::string> writeStudy(const fs::path& folder,
+                                    const std::vector<DerivedSeries>& derived) {
+  char uid[100];
+  std::vector<std::string> uids;
+  for (size_t n = 0; n < derived.size(); ++n)
+    uids.push_back(dcmGenerateUniqueIdentifier(uid, SITE_SERIES_UID_ROOT));
+  std::vector<int> written(derived.size(), 0);
+  for (const auto& e : fs::directory_iterator(kBrain)) {
+    DcmFileFormat f;
+    if (!e.is_regular_file() || f.loadFile(e.path().c_str()).bad()) continue;
+    fs::copy_file(e.path(), folder / ("a-" + e.path().filename().string()));
+    for (size_t n = 0; n < derived.size(); ++n) {
+      DcmFileFormat g(f);
+      DcmDataset& d = *g.getDataset();
+      Sint32 instance = 0;
+      Float64 intercept = 0;
+      if (d.findAndGetSint32(DCM_InstanceNumber, instance).bad() ||
+          (instance % 2 == 1) != derived[n].odd ||
+          d.findAndGetFloat64(DCM_RescaleIntercept, intercept).bad())
+        continue;
+      d.putAndInsertString(DCM_SeriesInstanceUID, uids[n].c_str());
+      d.putAndInsertString(DCM_SeriesDescription, derived[n].description.c_str());
+      d.putAndInsertString(DCM_SeriesNumber, std::to_string(derived[n].number).c_str());
+      d.putAndInsertString(DCM_RescaleIntercept,
+                           std::to_string(int(intercept) + derived[n].huShift).c_str());
+      d.putAndInsertString(DCM_SOPInstanceUID,
+                           dcmGenerateUniqueIdentifier(uid, SITE_INSTANCE_UID_ROOT));
+      std::string name = "d";  // d0-FILE, d1-FILE, ... (appended: GCC 12 warns on a + chain)
+      name += std::to_string(n);
+      name += '-';
+      name += e.path().filename().string();
+      const fs::path out = folder / name;
+      if (g.saveFile(out.c_str(), EXS_Unknown, EET_UndefinedLength, EGL_recalcGL, EPD_noChange, 0,
+                     0, EWM_updateMeta)
+              .bad())
+        return {};
+      ++written[n];
+    }
+  }
+  for (int w : written)
+    if (w != 14) return {};
+  return uids;
+}
+
+// V's first voxel (0, 0, 0) in HU.
+double firstVoxelHu(const Volume& v) { return v.toPhysical(v.at(0, 0, 0)); }
+// What a series derived from BRAIN with SHIFT must hold there: BRAIN's voxel at the same
+// patient position (its slice nearest to V's first one) plus SHIFT.
+double derivedFirstVoxelHu(const Volume& brain, const Volume& v, int shift) {
+  const glm::dvec3 p = voxelToPatientMm(v, glm::dvec3(0.0));
+  const double along = glm::dot(p - brain.originMm, brain.direction[2]) / brain.spacingMm.z;
+  return brain.toPhysical(brain.at(0, 0, int(std::lround(along)))) + shift;
+}
+
+// A drag of M entering W, then dropped at its centre, as Qt delivers them; whether W took both.
+bool dropOn(QWidget* w, const QMimeData* m) {
+  const QPoint at(w->width() / 2, w->height() / 2);
+  QDragEnterEvent enter(at, Qt::CopyAction, m, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(w, &enter);
+  QDropEvent drop(QPointF(at), Qt::CopyAction, m, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(w, &drop);
+  return enter.isAccepted() && drop.isAccepted();
 }
 
 void wheel(QWidget* w, int notches) {
@@ -738,6 +822,93 @@ class ReadingTest : public QObject {
     QVERIFY(errors_.isEmpty());
   }
 
+  // Issue 37: a series row dragged from the study browser onto a view opens there. On a cell
+  // of the grid other than the main one it shows beside (compare's right column, as Reading →
+  // Show series in this view); on compare's left column it becomes the main document and on
+  // its right column compare's series, the other column kept each time. The mime data is the
+  // browser's own (its rows' drag); the drop goes to the view as Qt delivers it.
+  void seriesDroppedFromTheBrowserOpensInThatView() {
+#ifndef VOXRAY_HAS_STUDYDB
+    QSKIP("built without the study database");
+#else
+    window_->resize(1800, 1000);
+    const fs::path study = freshDir("drop-series");
+    const auto uids =
+        writeStudy(study, {{"T2 LIKE 10MM", 3010, true, 100}, {"EVEN 10MM", 3020, false, 200}});
+    QCOMPARE(uids.size(), size_t(2));
+    const std::string db = freshDir("drop-series-db").string();
+    const QByteArray before = qgetenv("VOXRAY_STUDY_DB");
+    qputenv("VOXRAY_STUDY_DB", QByteArray::fromStdString(db));  // never the user's database
+    StudyDb(db).import({study.string()});
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open(study.string(), {});
+    QVERIFY(shown.wait(120000));
+    const auto brain = fixture_.models->document.volume();
+    QCOMPARE(brain->study.seriesDescription, std::string("STD BRAIN 5MM"));
+    QCOMPARE(brain->dims.z, 28);
+    StudyBrowserDialog* b = window_->showStudyBrowser();
+    qputenv("VOXRAY_STUDY_DB", before);
+    QVERIFY(b);
+    b->search();
+    QCOMPARE(b->tree()->topLevelItemCount(), 1);
+    QTreeWidgetItem* studyItem = b->tree()->topLevelItem(0)->child(0);
+    QVERIFY(studyItem);
+    b->listSeries(studyItem);
+    auto mimeOf = [&](const std::string& uid) {
+      for (int i = 0; i < studyItem->childCount(); ++i)
+        if (studyItem->child(i)->data(0, Qt::UserRole).toString().toStdString() == uid)
+          return std::unique_ptr<QMimeData>(b->dragData(studyItem->child(i)));
+      return std::unique_ptr<QMimeData>();
+    };
+    const auto t2 = mimeOf(uids[0]), even = mimeOf(uids[1]),
+               std = mimeOf(brain->study.seriesInstanceUid);
+    QVERIFY(t2 && even && std);
+
+    // 1. On a slice view that is not the layout's first cell: T2 beside, the study kept.
+    const auto cells = visibleCells(reading_->reading());
+    QVERIFY(cells.size() > 1);
+    const GridView second = cells[1].view;
+    QWidget* cell = second == GridView::Volume3d ? static_cast<QWidget*>(&window_->volumeView())
+                                                 : &window_->sliceView(int(second) - 1);
+    QVERIFY(dropOn(cell, t2.get()));
+    QTRY_VERIFY_WITH_TIMEOUT(window_->compareView() && window_->compareView()->hasPrior() &&
+                                 window_->compareView()->isVisible(),
+                             60000);
+    CompareView* c = window_->compareView();
+    auto prior = [&] { return c->prior().document.volume(); };
+    QCOMPARE(prior()->study.seriesInstanceUid, uids[0]);
+    QCOMPARE(prior()->dims.z, 14);
+    QCOMPARE(firstVoxelHu(*prior()), derivedFirstVoxelHu(*brain, *prior(), 100));
+    QCOMPARE(fixture_.models->document.volume(), brain);  // the left column kept
+    const auto placed =
+        std::find_if(reading_->reading().placed.begin(), reading_->reading().placed.end(),
+                     [&](const PlacedView& p) { return p.view == second; });
+    QVERIFY(placed != reading_->reading().placed.end());
+    QCOMPARE(placed->uid, uids[0]);  // a session keeps it
+
+    // 2. On compare's left column: the main document is EVEN now; the right column kept.
+    QVERIFY(dropOn(&c->fixedView(), even.get()));
+    QVERIFY(shown.wait(120000));
+    const auto left = fixture_.models->document.volume();
+    QCOMPARE(left->study.seriesInstanceUid, uids[1]);
+    QCOMPARE(left->dims.z, 14);
+    QCOMPARE(firstVoxelHu(*left), derivedFirstVoxelHu(*brain, *left, 200));
+    QVERIFY(firstVoxelHu(*left) != firstVoxelHu(*prior()));
+    QTRY_VERIFY(c->isVisible());
+    QCOMPARE(prior()->study.seriesInstanceUid, uids[0]);
+
+    // 3. On compare's right column: STD BRAIN there; the left column (EVEN) kept.
+    QVERIFY(dropOn(&c->movingView(), std.get()));
+    QTRY_VERIFY_WITH_TIMEOUT(
+        prior() && prior()->study.seriesInstanceUid == brain->study.seriesInstanceUid, 60000);
+    QCOMPARE(prior()->dims.z, 28);
+    QCOMPARE(firstVoxelHu(*prior()), firstVoxelHu(*brain));
+    QCOMPARE(fixture_.models->document.volume(), left);
+    QVERIFY(c->isVisible());
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+#endif
+  }
+
   // Issue 41: File → PACS nodes… opens the node editor on the user's node file (its nodes
   // listed, as stored) without going through Open from PACS.
   void fileMenuOpensThePacsNodeEditor() {
@@ -805,6 +976,19 @@ class ReadingTest : public QObject {
                  numbers.begin(), numbers.end(),
                  [&](const std::string& n) { return std::abs(std::stod(n) - suv) < 1e-6 * suv; }),
              "no value equal to the sphere's SUV");
+    // The segment went with the report as a DICOM SEG beside it, which its group (TID 1411)
+    // references: that file's SOP Instance UID, segment 1, and the PET series as its source.
+    const fs::path seg = out / "sr-segments.dcm";
+    const auto segUid = valuesIn(seg, DCM_SOPInstanceUID);
+    QCOMPARE(segUid.size(), size_t(1));
+    const auto referenced = valuesIn(out / "sr.dcm", DCM_ReferencedSOPInstanceUID);
+    QVERIFY(std::find(referenced.begin(), referenced.end(), segUid[0]) != referenced.end());
+    QCOMPARE(valuesIn(out / "sr.dcm", DCM_ReferencedSegmentNumber), std::vector<std::string>{"1"});
+    QVERIFY(std::find(codes.begin(), codes.end(), "121191") != codes.end());  // Referenced Segment
+    const auto uidrefs = valuesIn(out / "sr.dcm", DCM_UID);
+    QVERIFY(std::find(uidrefs.begin(), uidrefs.end(),
+                      fixture_.models->document.volume()->study.seriesInstanceUid) !=
+            uidrefs.end());
     QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
   }
 

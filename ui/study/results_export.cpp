@@ -53,10 +53,27 @@ std::vector<ReportMeasurement> reportSegments(const Segmentation& s, const Volum
                                               const std::string& overlayName) {
   std::vector<SegmentStats> stats = allSegmentStats(s, v);
   addSuvPeaks(stats, s, v, overlay, overlayName);
+  // Each label's centroid: the mean of its voxels' indices (one pass over the label map).
+  std::vector<glm::dvec3> sum(256, glm::dvec3(0.0));
+  std::vector<size_t> count(256, 0);
+  const glm::ivec3 d = s.grid.dims;
+  size_t n = 0;
+  for (int k = 0; k < d.z; ++k)
+    for (int j = 0; j < d.y; ++j)
+      for (int i = 0; i < d.x; ++i, ++n) {
+        const uint8_t l = n < s.labels.size() ? s.labels[n] : 0;
+        if (l == 0) continue;
+        sum[l] += glm::dvec3(i, j, k);
+        ++count[l];
+      }
   std::vector<ReportMeasurement> out;
   for (const SegmentStats& st : stats) {
     if (st.voxels == 0) continue;  // nothing to report of an empty segment
     ReportMeasurement r;
+    // The DICOM SEG numbers segments in the segmentation's order (writeDicomSeg).
+    for (size_t x = 0; x < s.segments.size(); ++x)
+      if (s.segments[x].label == st.label) r.segmentNumber = int(x) + 1;
+    if (count[st.label] > 0) r.centroid = sum[st.label] / double(count[st.label]);
     r.kind = ReportKind::Segment;
     r.label = "segment " + std::to_string(int(st.label)) + (st.name.empty() ? "" : " " + st.name);
     r.mean = st.mean, r.sd = st.sd, r.min = st.min, r.max = st.max;

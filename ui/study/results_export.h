@@ -19,7 +19,8 @@ namespace voxray {
 // A distance picked in the 3D view is in3d (SCOORD3D in the SR).
 std::vector<ReportMeasurement> reportMeasurements(const Volume& v, const MeasurementModel& m);
 // The segments of S (on V's grid) as report groups labelled "segment LABEL NAME": their
-// statistics, volume and SUVpeak (V's SUV, else the fused OVERLAY's; segment_peak.h).
+// statistics, volume and SUVpeak (V's SUV, else the fused OVERLAY's; segment_peak.h), their
+// centroid (voxels) and their number in a DICOM SEG written from S (its order in S).
 std::vector<ReportMeasurement> reportSegments(const Segmentation& s, const Volume& v,
                                               const Volume* overlay = nullptr,
                                               const std::string& overlayName = "");

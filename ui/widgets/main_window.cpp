@@ -32,6 +32,7 @@
 #include "recent_files.h"
 #include "results_actions.h"
 #include "segment_panel.h"
+#include "series_drag.h"
 #include "series_picker.h"
 #include "session_state.h"
 #include "settings_store.h"
@@ -167,6 +168,10 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   // Issue 37: the Reading and Results menus (keys, layouts, hanging protocols; SR, KOS,
   // anonymised export), in files of their own.
   auto* reading = new ReadingActions(*this, models_);
+  seriesDrops_ = new SeriesDropFilter(
+      [reading](QWidget* view, const SeriesDrag& d) { reading->dropSeries(view, d); }, this);
+  seriesDrops_->watch(volumeView_);
+  for (SliceView* s : slices_) seriesDrops_->watch(s);
   auto* results = new ResultsActions(*this, models_, *reading);
   connect(reading, &ReadingActions::failed, this, &MainWindow::showError);
   connect(results, &ResultsActions::failed, this, &MainWindow::showError);

@@ -30,6 +30,7 @@ class FusionPanel;
 class LoadController;
 class OverlayLoader;
 class SegmentPanel;
+class SeriesDropFilter;
 class SliceView;
 class StudyBrowserDialog;
 class TimePanel;
@@ -162,6 +163,8 @@ class MainWindow : public QMainWindow {
   OverlayLoader* overlayLoader_ = nullptr;
   LoadController* priorLoader_ = nullptr;  // the prior for compare, beside the study's loader
   CompareView* compare_ = nullptr;
+  // Series dragged from the study browser onto the grid's and compare's views (series_drag.h).
+  SeriesDropFilter* seriesDrops_ = nullptr;
   std::string priorSeries_;             // the series the prior loader opens (LoadOptions::series)
   int loadingTimePoint_ = 0;            // the time point to show first of the input being loaded
   SessionInput loading_;                // the input being loaded, for AppModels::source

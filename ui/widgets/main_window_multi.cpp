@@ -13,6 +13,7 @@
 #include "gui_message.h"
 #include "load_controller.h"
 #include "main_window.h"
+#include "series_drag.h"
 #include "slice_view.h"
 #include "volume_view.h"
 
@@ -119,6 +120,13 @@ void MainWindow::setCompareMode(bool on) {
             [this](const QString& t) { statusBar()->showMessage(t, 30000); });
     // Move prior's drags in Edit → Undo's order with the view's and the segments' edits.
     editOrder_->setPriorMoves(&compare_->moveHistory(), &compare_->comparison());
+    // A series dropped on a column opens there (ReadingActions::dropSeries).
+    if (seriesDrops_)
+      for (QWidget* w : {static_cast<QWidget*>(&compare_->fixedView()),
+                         static_cast<QWidget*>(&compare_->movingView()),
+                         static_cast<QWidget*>(&compare_->fixed3dView()),
+                         static_cast<QWidget*>(&compare_->moving3dView())})
+        seriesDrops_->watch(w);
   }
   if (compare_) compare_->setVisible(on);
   grid_->setVisible(!on);

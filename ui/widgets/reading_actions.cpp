@@ -24,10 +24,12 @@
 #include "json_text_dialog.h"
 #include "load_controller.h"
 #include "main_window.h"
+#include "series_drag.h"
 #include "session_actions.h"
 #include "slice_view.h"
 #include "study_attributes.h"
 #include "study_browser_dialog.h"
+#include "volume_view.h"
 #include "voxray/io/error.h"
 #include "window_level.h"
 #ifdef VOXRAY_HAS_DICOM
@@ -377,6 +379,47 @@ void ReadingActions::showSeriesInView(GridView view, const StudySeries& s) {
       if (it != study.end()) r = placeInView(r, c.view, *it);
     }
   hang(r, current);
+}
+
+void ReadingActions::dropSeries(QWidget* target, const SeriesDrag& d) {
+  // A series of the open study (by its UID; the browser's folder is the database's view of
+  // it) opens from the study's folder as the study lists it, so that Show series in this view
+  // and sessions name it the same way; another study's from the browser's folder.
+  std::optional<StudySeries> own;
+  for (const StudySeries& s : studySeries())
+    if (s.uid == d.uid.toStdString()) own = s;
+  const std::string folder = own ? models_.source.path : d.folder.toStdString();
+  LoadOptions options;
+  options.series = own ? own->selector : d.series.toStdString();
+  const QString name = d.description.isEmpty() ? d.series : d.description;
+  // Compare's columns: the left one is the main document, the right one compare's own; the
+  // other column stays as it is.
+  if (CompareView* c = window_.compareView(); c && c->isVisible()) {
+    if (target == &c->movingView() || target == &c->moving3dView()) {
+      status(name + " opens in the right column");
+      window_.openPrior(folder, options);
+    } else {
+      status(name + " opens in the left column");
+      window_.open(folder, options);
+    }
+    return;
+  }
+  std::optional<GridView> view;
+  if (target == &window_.volumeView()) view = GridView::Volume3d;
+  for (int i = 0; i < 3; ++i)
+    if (target == &window_.sliceView(i)) view = GridView(i + 1);
+  if (!view) return;
+  // The layout's first cell is the main document's (the left column once two series show).
+  const auto cells = visibleCells(reading_);
+  if (!cells.empty() && cells.front().view == *view) {
+    status(name + " opens as the main series");
+    window_.open(folder, options);
+  } else if (own) {
+    showSeriesInView(*view, *own);  // as Reading → Show series in this view does
+  } else {
+    status(name + " opens beside");  // another study's series: in compare's right column
+    window_.openPrior(folder, options);
+  }
 }
 
 void ReadingActions::fillSeriesMenu(QMenu* menu) {

@@ -20,11 +20,13 @@
 
 class QAction;
 class QMenu;
+class QWidget;
 
 namespace voxray::ui {
 
 class MainWindow;
 class SliceView;
+struct SeriesDrag;
 
 class ReadingActions : public QObject {
   Q_OBJECT
@@ -59,6 +61,11 @@ class ReadingActions : public QObject {
   // Show series in this view: S in VIEW; a series other than the open one shows beside it
   // (compare's two columns, linked in patient coordinates).
   void showSeriesInView(GridView view, const StudySeries& s);
+  // A series dragged from the study browser and dropped on VIEW: on the grid's first cell (the
+  // main one) or compare's left column it opens as the main document; on another cell of the
+  // grid it shows beside as showSeriesInView does (a series of another study: in compare's
+  // right column); on compare's right column it opens there. The other column is kept.
+  void dropSeries(QWidget* view, const SeriesDrag& d);
   // The open study's volume series in the study's order (none: no DICOM folder).
   std::vector<StudySeries> studySeries() const;
   // The view the last focused slice view is (axial before any).

@@ -1,5 +1,6 @@
 #include "results_actions.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <QAction>
@@ -29,6 +30,7 @@
 #include "voxray/io/error.h"
 #include "voxray/io/key_object_selection.h"
 #include "voxray/io/measurement_report.h"
+#include "voxray/io/segment_files.h"
 #ifdef VOXRAY_HAS_DICOM
 #include "pacs_browser.h"
 #endif
@@ -149,9 +151,34 @@ bool ResultsActions::saveReport(const QString& path) {
   try {
     MeasurementReportInfo info;
     info.comments = annotationReportTexts(models_.annotations);  // as TEXT items
-    const WrittenReport r = writeMeasurementReport(path.toStdString(), *v, allResults(*v), info);
+    const auto results = allResults(*v);
+    // The segments go with the report as a DICOM SEG beside it (NAME-segments.dcm), which
+    // their groups reference (TID 1411): a later SEG export would have other UIDs.
+    QString segNote;
+    const bool segments =
+        std::any_of(results.begin(), results.end(),
+                    [](const ReportMeasurement& m) { return m.kind == ReportKind::Segment; });
+    if (segments) {
+      const QFileInfo report(path);
+      const QString segPath = report.dir().filePath(report.completeBaseName() + "-segments.dcm");
+      try {
+        if (!mayWrite(segPath, "segments (DICOM SEG)")) throw outputError("kept the file there");
+        DicomSegOptions options;
+        options.force = true;  // mayWrite asked
+        const WrittenDicomSeg seg = writeDicomSeg(
+            segPath.toStdString(), models_.segmentation.segmentation(), v->study, options);
+        info.segSopInstanceUid = seg.sopInstanceUid;
+        info.segSeriesInstanceUid = seg.seriesInstanceUid;
+        remember(segPath);
+        segNote = "  ·  segments as DICOM SEG: " + segPath;
+      } catch (const std::exception& e) {
+        segNote = "  ·  no DICOM SEG written (" + QString::fromStdString(e.what()) +
+                  "): the segment groups name no segment";
+      }
+    }
+    const WrittenReport r = writeMeasurementReport(path.toStdString(), *v, results, info);
     remember(path);
-    QString text = "Measurement report saved: " + path;
+    QString text = "Measurement report saved: " + path + segNote;
     for (const auto& n : r.notes) text += "  ·  " + QString::fromStdString(n);
     status(text);
     return true;

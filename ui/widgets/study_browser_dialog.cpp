@@ -10,6 +10,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
@@ -21,6 +22,7 @@
 
 #include "gui_post.h"
 #include "qt_image.h"
+#include "series_drag.h"
 #include "thumbnail.h"
 #ifdef VOXRAY_HAS_DICOM
 #include "pacs_dialog.h"
@@ -40,6 +42,7 @@ const char* const kFields[][3] = {{"name", "Patient name", "a part of it, or DOE
 enum Column { Name, IdOrDate, Modality, Series, Images, Files };
 enum Kind { PatientItem, StudyItem, SeriesItem };
 constexpr int kUidRole = Qt::UserRole, kKindRole = Qt::UserRole + 1;
+constexpr int kDescriptionRole = Qt::UserRole + 2;  // a series' description, for its drag
 
 QString q(const std::string& s) { return QString::fromStdString(s); }
 
@@ -62,6 +65,26 @@ std::string uidOf(const QTreeWidgetItem* item) {
   return item->data(0, kUidRole).toString().toStdString();
 }
 
+// The tree whose series rows drag onto the workstation's views (series_drag.h); patients and
+// studies do not drag (a view shows one series).
+class SeriesTree : public QTreeWidget {
+ public:
+  using MimeOf = std::function<QMimeData*(QTreeWidgetItem*)>;
+  explicit SeriesTree(MimeOf mimeOf) : mimeOf_(std::move(mimeOf)) {
+    setDragEnabled(true);
+    setDragDropMode(QAbstractItemView::DragOnly);
+  }
+
+ protected:
+  QStringList mimeTypes() const override { return {kSeriesMimeType}; }
+  QMimeData* mimeData(const QList<QTreeWidgetItem*>& items) const override {
+    return items.size() == 1 ? mimeOf_(items.front()) : nullptr;
+  }
+
+ private:
+  MimeOf mimeOf_;
+};
+
 }  // namespace
 
 StudyBrowserDialog::StudyBrowserDialog(QWidget* parent, const std::string& folder)
@@ -77,7 +100,7 @@ StudyBrowserDialog::StudyBrowserDialog(QWidget* parent, const std::string& folde
     connect(edit, &QLineEdit::returnPressed, this, &StudyBrowserDialog::search);
     form->addRow(f[1], edit);
   }
-  tree_ = new QTreeWidget;
+  tree_ = new SeriesTree([this](QTreeWidgetItem* item) { return dragData(item); });
   tree_->setHeaderLabels(
       {"Patient / study / series", "ID / date", "Modality", "Series", "Images", "Files"});
   tree_->header()->setSectionResizeMode(Name, QHeaderView::Stretch);
@@ -277,9 +300,21 @@ void StudyBrowserDialog::listSeries(QTreeWidgetItem* study) {
     }
     item->setData(0, kKindRole, SeriesItem);
     item->setData(0, kUidRole, q(s.row.series.uid));
+    item->setData(0, kDescriptionRole, name);
   }
   study->setChildIndicatorPolicy(QTreeWidgetItem::DontShowIndicatorWhenChildless);
   tree_->resizeColumnToContents(Files);
+}
+
+QMimeData* StudyBrowserDialog::dragData(QTreeWidgetItem* series) const {
+  if (!model_ || !series || kindOf(series) != SeriesItem) return nullptr;
+  try {
+    auto [folder, options] = model_->openSeries(uidOf(series));
+    return seriesMimeData({q(folder), q(options.series), series->data(0, kUidRole).toString(),
+                           series->data(0, kDescriptionRole).toString()});
+  } catch (const std::exception& e) {  // its files are gone: nothing to drag
+    return nullptr;
+  }
 }
 
 void StudyBrowserDialog::showPriors(QTreeWidgetItem* study) {

@@ -17,6 +17,7 @@
 #include "study_browser_model.h"
 
 class QLabel;
+class QMimeData;
 class QLineEdit;
 class QListWidget;
 class QListWidgetItem;
@@ -45,6 +46,9 @@ class StudyBrowserDialog : public QDialog {
   void search();
   void openItem(QTreeWidgetItem* studyOrSeries);  // the double-click
   void openPrior(QListWidgetItem* prior);         // the click
+  // What a series row carries when dragged onto a view (series_drag.h; the caller owns it);
+  // null for a patient or study row, or a series whose files are gone.
+  QMimeData* dragData(QTreeWidgetItem* series) const;
   void importFolder(const QString& folder, bool copy);
   // A PACS retrieval's folder (its cache entry), copied into the database in the background.
   void storeRetrieved(const QString& folder);

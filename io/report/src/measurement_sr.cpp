@@ -24,6 +24,7 @@ namespace voxray {
 namespace {
 
 using Group = CMR_TID1501_in_TID1500;
+using VolumeGroup = CMR_TID1411_in_TID1500;
 using Value = Group::MeasurementValue;
 
 void check(const OFCondition& c, const std::string& what) {
@@ -164,10 +165,12 @@ DSRSpatialCoordinates3DValue scoord3d(const Volume& v, const ReportMeasurement& 
 }
 
 // Adds M's SCOORD3D under each of its values (TID 300 row 8 → TID 320 row 5: INFERRED FROM
-// SCOORD3D "Source of Measurement" with the Frame of Reference): DCMTK's TID 300 class has
-// no call for it, so it goes into the finished tree, found by the group's tracking identifier.
+// SCOORD3D "Source of Measurement" with the Frame of Reference), or only under the values named
+// ONLY: DCMTK's TID 300 class has no call for it, so it goes into the finished tree, found by
+// the group's tracking identifier.
 void addScoord3d(DSRDocumentTree& tree, const std::string& label,
-                 const DSRSpatialCoordinates3DValue& coordinates) {
+                 const DSRSpatialCoordinates3DValue& coordinates,
+                 const DSRCodedEntryValue* only = nullptr) {
   const DSRCodedEntryValue trackingId(CODE_DCM_TrackingIdentifier);
   std::vector<size_t> values;  // the node IDs of the group's NUM items
   bool inGroup = false;
@@ -176,7 +179,8 @@ void addScoord3d(DSRDocumentTree& tree, const std::string& label,
     const DSRContentItem& item = tree.getCurrentContentItem();
     if (item.getValueType() == DSRTypes::VT_Text && item.getConceptName() == trackingId)
       inGroup = item.getStringValue() == label.c_str();
-    else if (inGroup && item.getValueType() == DSRTypes::VT_Num)
+    else if (inGroup && item.getValueType() == DSRTypes::VT_Num &&
+             (!only || item.getConceptName() == *only))
       values.push_back(tree.getNodeID());
   } while (tree.iterate());
   if (values.empty()) check(EC_IllegalCall, label + " (no value to give 3D coordinates)");
@@ -191,6 +195,18 @@ void addScoord3d(DSRDocumentTree& tree, const std::string& label,
           label + " 3D coordinates");
   }
 }
+
+// A segment's volume: the value its centroid goes under.
+const DSRCodedEntryValue& volumeConcept() {
+  static const DSRCodedEntryValue volume("118565006", "SCT", "Volume");
+  return volume;
+}
+
+struct Coordinates3d {
+  std::string label;
+  DSRSpatialCoordinates3DValue value;
+  bool underVolumeOnly = false;  // a segment's centroid: under its volume, not its HU values
+};
 
 }  // namespace
 
@@ -238,7 +254,7 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
   const std::string& frameOfReference = s.frameOfReferenceUid;
   // Measurements off one image go in patient coordinates: SCOORD3D needs the Comprehensive 3D
   // SR (the Comprehensive SR IOD has no SCOORD3D) and the volume's Frame of Reference.
-  std::vector<std::pair<std::string, DSRSpatialCoordinates3DValue>> points3d;
+  std::vector<Coordinates3d> points3d;
   int number = 0;
   for (const auto& m : measurements) {
     ++number;
@@ -247,8 +263,16 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
     const bool onImage = perSlice && k >= 0 && k < v.dims.z;
     const std::vector<int> touched = touchedSlices(v, m);
     const bool coordinates3d = in3d(m) && !frameOfReference.empty();
-    if (m.kind == ReportKind::Segment)
-      out.notes.push_back(label + ": a segment's values reference the series, not its images");
+    // A segment written as a DICOM SEG with the report: a TID 1411 group naming it there.
+    const bool volumetric = m.kind == ReportKind::Segment && m.segmentNumber > 0 &&
+                            !info.segSopInstanceUid.empty() && !s.seriesInstanceUid.empty();
+    if (volumetric)
+      out.notes.push_back(label + ": references segment " + std::to_string(m.segmentNumber) +
+                          " of the DICOM SEG " + info.segSopInstanceUid);
+    else if (m.kind == ReportKind::Segment)
+      out.notes.push_back(label +
+                          ": a segment's values reference the series, not its images; no DICOM "
+                          "SEG was written with the report, so the group names no segment");
     else if (coordinates3d)
       out.notes.push_back(label +
                           ": off one image (3D view or a turned plane); its points are "
@@ -256,18 +280,42 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
     else if (perSlice && !onImage)
       out.notes.push_back(label + ": its points lie on " + std::to_string(touched.size()) +
                           " slices; it references their images without image coordinates");
-    check(report.addIndividualMeasurements(), "measurement group");
-    Group& group = report.getIndividualMeasurements();
-    check(group.setTrackingIdentifier(label), "tracking identifier");
-    check(group.setTrackingUniqueIdentifier(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT)),
-          "tracking UID");
+    Group* group = nullptr;
+    VolumeGroup* volume = nullptr;
+    if (volumetric) {
+      // TID 1411 allows one reference to the region (rows 5 to 8: image regions, a volume
+      // surface or the segment): the segment, since it has every voxel.
+      check(report.addVolumetricROIMeasurements(), "volumetric measurement group");
+      volume = &report.getVolumetricROIMeasurements();
+      check(volume->setTrackingIdentifier(label), "tracking identifier");
+      check(volume->setTrackingUniqueIdentifier(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT)),
+            "tracking UID");
+      DSRImageReferenceValue segment(UID_SegmentationStorage, info.segSopInstanceUid.c_str());
+      segment.getSegmentList().addItem(Uint16(m.segmentNumber));
+      check(volume->setReferencedSegment(segment), label + " referenced segment");
+      check(volume->setSourceSeriesForSegmentation(s.seriesInstanceUid), label + " source series");
+    } else {
+      check(report.addIndividualMeasurements(), "measurement group");
+      group = &report.getIndividualMeasurements();
+      check(group->setTrackingIdentifier(label), "tracking identifier");
+      check(group->setTrackingUniqueIdentifier(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT)),
+            "tracking UID");
+    }
     // One TID 300 per value, each with the image region it was measured in.
     auto add = [&](const DSRCodedEntryValue& name, double x, const DSRCodedEntryValue& unit,
                    const CID7464_GeneralRegionOfInterestMeasurementModifiers* derivation) {
+      if (volume) {  // TID 1419's values: the segment is their region
+        check(volume->addMeasurement(CMR_CID7469(name), Value(ds(x), CMR_CID7181(unit)), OFTrue,
+                                     OFTrue),
+              label + " value");
+        if (derivation)
+          check(volume->getMeasurement().setDerivation(*derivation), label + " derivation");
+        return;
+      }
       check(
-          group.addMeasurement(CMR_CID7469(name), Value(ds(x), CMR_CID7181(unit)), OFTrue, OFTrue),
+          group->addMeasurement(CMR_CID7469(name), Value(ds(x), CMR_CID7181(unit)), OFTrue, OFTrue),
           label + " value");
-      auto& value = group.getMeasurement();
+      auto& value = group->getMeasurement();
       if (derivation) check(value.setDerivation(*derivation), label + " derivation");
       if (m.kind == ReportKind::Segment) {
         // A label map has no SCOORD: the values name the series (the evidence) only.
@@ -302,8 +350,8 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
       if (m.max) add(roi.name, scaled(*m.max), roi.unit, &max);
       if (m.kind == ReportKind::Segment) {
         if (m.volumeMm3)
-          add(DSRCodedEntryValue("118565006", "SCT", "Volume"), *m.volumeMm3,
-              DSRCodedEntryValue("mm3", "UCUM", "cubic millimeter"), nullptr);
+          add(volumeConcept(), *m.volumeMm3, DSRCodedEntryValue("mm3", "UCUM", "cubic millimeter"),
+              nullptr);
       } else {
         add(DSRCodedEntryValue("42798000", "SCT", "Area"), m.areaMm2,
             DSRCodedEntryValue("mm2", "UCUM", "square millimeter"), nullptr);
@@ -318,13 +366,24 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
             &peak);
       }
     }
-    if (coordinates3d && group.hasMeasurements(OFTrue))
-      points3d.emplace_back(label, scoord3d(v, m));
-    else if (in3d(m) && frameOfReference.empty())
+    const bool hasValues =
+        volume ? volume->hasMeasurements(OFTrue) : group->hasMeasurements(OFTrue);
+    if (coordinates3d && hasValues)
+      points3d.push_back({label, scoord3d(v, m)});
+    else if (m.kind == ReportKind::Segment && m.centroid && m.volumeMm3 && hasValues &&
+             !frameOfReference.empty()) {
+      // The centroid as a SCOORD3D POINT in LPS mm: TID 1411 has no row for a point beside
+      // its segment reference, so it goes where TID 1419 → TID 300 allows coordinates (row 8,
+      // INFERRED FROM SCOORD3D), under the volume.
+      DSRSpatialCoordinates3DValue point(DSRTypes::GT3_Point);
+      const glm::dvec3 p = patientMm(v, *m.centroid);
+      point.getGraphicDataList().addItem(Float32(p.x), Float32(p.y), Float32(p.z));
+      points3d.push_back({label, point, true});
+    } else if (in3d(m) && frameOfReference.empty())
       out.notes.push_back(label +
                           ": off one image, but the series names no Frame of Reference: no 3D "
                           "coordinates");
-    if (!group.hasMeasurements(OFTrue))
+    if (!hasValues)
       throw inputError(label +
                        " has no value (an angle with a zero-length arm, or an ROI "
                        "without a pixel): leave it out of the report");
@@ -342,16 +401,26 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
   // SCOORD3D needs the Comprehensive 3D SR, asked for before the coordinates go in.
   if (!points3d.empty())
     check(doc.changeDocumentType(DSRTypes::DT_Comprehensive3DSR), "Comprehensive 3D SR");
-  for (const auto& [label, coordinates] : points3d) {
-    DSRSpatialCoordinates3DValue c = coordinates;
-    check(c.setFrameOfReferenceUID(frameOfReference.c_str()), label + " Frame of Reference");
-    addScoord3d(doc.getTree(), label, c);
+  for (const Coordinates3d& p : points3d) {
+    DSRSpatialCoordinates3DValue c = p.value;
+    check(c.setFrameOfReferenceUID(frameOfReference.c_str()), p.label + " Frame of Reference");
+    addScoord3d(doc.getTree(), p.label, c, p.underVolumeOnly ? &volumeConcept() : nullptr);
   }
   report::fileWithImages(doc, s, "9001", info.seriesDescription, check);
   // Complete: every measurement made is in it; unverified: a person has not signed it.
   doc.completeDocument();
   // Every image the tree references is evidence of this study.
   report::addEvidence(doc, s, slices, check);
+  // The SEG its segment groups reference: evidence too (PS3.3 C.17.2.3), in the same study.
+  if (std::any_of(measurements.begin(), measurements.end(),
+                  [&](const ReportMeasurement& m) {
+                    return m.kind == ReportKind::Segment && m.segmentNumber > 0;
+                  }) &&
+      !info.segSopInstanceUid.empty())
+    check(doc.getCurrentRequestedProcedureEvidence().addItem(
+              s.studyInstanceUid, info.segSeriesInstanceUid, UID_SegmentationStorage,
+              info.segSopInstanceUid),
+          "the SEG as evidence");
   DcmFileFormat file;
   check(doc.write(*file.getDataset()), "DICOM dataset");
   OFString uid;

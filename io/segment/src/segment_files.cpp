@@ -23,10 +23,10 @@ void writeSegNrrd(const std::string& path, const Segmentation& seg, bool force) 
                        [&](const std::string& temporary) { segfiles::writeNrrd(temporary, seg); });
 }
 
-std::string writeDicomSeg(const std::string& path, const Segmentation& seg,
-                          const StudyIdentity& source, const DicomSegOptions& options) {
+WrittenDicomSeg writeDicomSeg(const std::string& path, const Segmentation& seg,
+                              const StudyIdentity& source, const DicomSegOptions& options) {
   checkSegmentation(seg);
-  std::string uid;
+  WrittenDicomSeg uid;
   segfiles::writeWhole(path, options.force, [&](const std::string& temporary) {
     uid = segfiles::writeSeg(temporary, seg, source, options);
   });

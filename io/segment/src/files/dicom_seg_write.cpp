@@ -100,8 +100,8 @@ void quietDcmtkObjectLibraries() {
   (void)once;
 }
 
-std::string writeSeg(const std::string& temporary, const Segmentation& seg,
-                     const StudyIdentity& source, const DicomSegOptions& options) {
+WrittenDicomSeg writeSeg(const std::string& temporary, const Segmentation& seg,
+                         const StudyIdentity& source, const DicomSegOptions& options) {
   quietDcmtkObjectLibraries();
   requireUid(source.studyInstanceUid, "Study Instance UID");
   requireUid(source.seriesInstanceUid, "Series Instance UID");
@@ -155,7 +155,8 @@ std::string writeSeg(const std::string& temporary, const Segmentation& seg,
   doc->getStudy().setAccessionNumber(source.accessionNumber.c_str(), OFFalse);
   doc->getStudy().setStudyDescription(source.studyDescription.c_str(), OFFalse);
   doc->getFrameOfReference().setFrameOfReferenceUID(source.frameOfReferenceUid.c_str(), OFFalse);
-  doc->getSeries().setSeriesInstanceUID(newUid(SITE_SERIES_UID_ROOT).c_str());
+  const std::string seriesUid = newUid(SITE_SERIES_UID_ROOT);
+  doc->getSeries().setSeriesInstanceUID(seriesUid.c_str());
   doc->getSeries().setSeriesNumber(std::to_string(options.seriesNumber).c_str());
   doc->getSeries().setSeriesDescription(options.seriesDescription.c_str(), OFFalse);
   const std::string sopUid = newUid(SITE_INSTANCE_UID_ROOT);
@@ -255,7 +256,7 @@ std::string writeSeg(const std::string& temporary, const Segmentation& seg,
         "pixel data");
   addReferencedSeries(*file.getDataset(), source);
   check(file.saveFile(temporary.c_str(), EXS_LittleEndianExplicit), "cannot write " + temporary);
-  return sopUid;
+  return {sopUid, seriesUid};
 }
 
 }  // namespace voxray::segfiles

@@ -10,8 +10,8 @@ namespace voxray::segfiles {
 // Write the file at TEMPORARY (writeWhole renames it); throw on failure.
 void writeNifti(const std::string& temporary, const Segmentation& seg);
 void writeNrrd(const std::string& temporary, const Segmentation& seg);
-std::string writeSeg(const std::string& temporary, const Segmentation& seg,
-                     const StudyIdentity& source, const DicomSegOptions& options);
+WrittenDicomSeg writeSeg(const std::string& temporary, const Segmentation& seg,
+                         const StudyIdentity& source, const DicomSegOptions& options);
 
 // DCMTK's dcmiod/dcmfg/dcmseg print warnings on stderr (e.g. about checks they skip while
 // reading); what matters comes back as an OFCondition and becomes our message. Errors only.

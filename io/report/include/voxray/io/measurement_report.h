@@ -32,6 +32,10 @@ struct ReportMeasurement {
   // A segment: its volume, and its SUVpeak already in SUVbw (the volume's SUV or the fused PET
   // overlay's; segment_peak.h). ROIs may carry an SUVpeak too.
   std::optional<double> volumeMm3, suvPeak;
+  // A segment: its number in the DICOM SEG written from the same segmentation (1 = its first
+  // segment; 0 = none), and its centroid, the mean of its voxels' positions (voxels i, j, k).
+  int segmentNumber = 0;
+  std::optional<glm::dvec3> centroid;
   // Made in the 3D view: reported in patient coordinates (SCOORD3D, LPS mm, in the volume's
   // Frame of Reference) as are measurements whose points lie off one image (turned planes).
   bool in3d = false;
@@ -47,6 +51,10 @@ struct MeasurementReportInfo {
   // TEXT content item, TID 1500's qualitative evaluation in text form (row 14), named
   // (121106, DCM, "Comment").
   std::vector<std::string> comments;
+  // The DICOM SEG (Segmentation Storage) holding the segments, its SOP Instance and Series
+  // Instance UID as writeDicomSeg returned them (the report lists it as evidence); empty: none
+  // was written, and segment groups say so.
+  std::string segSopInstanceUid, segSeriesInstanceUid;
 };
 
 struct WrittenReport {
@@ -61,7 +69,10 @@ struct WrittenReport {
 // UIDs it references the series only and says so in the notes. A measurement off one image
 // (in3d, or points on several slices) has its points as SCOORD3D in LPS mm with the volume's
 // Frame of Reference UID, and the document is then a Comprehensive 3D SR. A segment's group
-// holds its statistics, volume and SUVpeak (SUVbw, derivation Peak Value Within ROI). Throws Error
+// holds its statistics, volume and SUVpeak (SUVbw, derivation Peak Value Within ROI); with
+// info.segSopInstanceUid it is a TID 1411 Volumetric ROI group that references its segment in
+// that SEG (Referenced Segment, 121191 DCM) and the segmented series (Source series for
+// segmentation, 121232 DCM), its centroid a SCOORD3D POINT under its volume. Throws Error
 // (Input) for a volume not read from DICOM or no measurements, (Output) when PATH cannot be
 // written.
 WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,

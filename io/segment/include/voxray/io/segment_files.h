@@ -36,10 +36,14 @@ struct DicomSegOptions {
 // and, where SOURCE has them (sliceSopInstanceUids), each frame's source image. The patient
 // and study are SOURCE's (the IOD requires the same patient); nothing identifying is logged.
 // An empty segment is refused (a SEG segment needs a frame). Returns the SEG's SOP Instance
-// UID. Throws an Input error when SOURCE has no study/series/frame of reference UID (the
-// volume was not read from DICOM) or the grid does not match SOURCE's slices.
-std::string writeDicomSeg(const std::string& path, const Segmentation& seg,
-                          const StudyIdentity& source, const DicomSegOptions& options = {});
+// and Series Instance UIDs (an SR that references it lists it as evidence by both). Throws an
+// Input error when SOURCE has no study/series/frame of reference UID (the volume was not read
+// from DICOM) or the grid does not match SOURCE's slices.
+struct WrittenDicomSeg {
+  std::string sopInstanceUid, seriesInstanceUid;
+};
+WrittenDicomSeg writeDicomSeg(const std::string& path, const Segmentation& seg,
+                              const StudyIdentity& source, const DicomSegOptions& options = {});
 
 // Reads any of the three (by content: NIfTI, NRRD, DICOM) onto ONTO's grid. A NIfTI or NRRD
 // label map must lie on that grid (Input error naming the difference otherwise; nothing is
