@@ -1,6 +1,8 @@
 // voxray-cli pacs echo|find|get|send NODE ...: the PACS client, scriptable. NODE is a name
 // from the node configuration or an address (dicom://AE@host:port, http(s)://host/path).
 // Patient names and IDs are printed only with --show-patient.
+#include <malloc.h>
+
 #include <chrono>
 #include <iostream>
 #include <optional>
@@ -104,6 +106,13 @@ int runFind(const PacsOptions& o) {
 int runGet(const PacsOptions& o) {
   if (o.study.empty() || o.series.empty())
     throw inputError("pacs get needs --study UID and --series UID (find them with pacs find)");
+  // The half-megabyte images pass through memory that glibc, left to itself, hands back to
+  // the kernel and takes again image by image (its dynamic thresholds): fresh pages each
+  // time, zeroed by the kernel. Kept instead: on a loaded 2-core Xeon, 8,000 instead of
+  // 13,000-21,000 page faults and 0.2 s instead of 0.3-0.9 s of system time for 400 CT
+  // images (issue 39 item 8). Volumes are not malloc's (voxel_memory.h).
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
   auto client = makePacsClient(resolvePacsNode(o.node));
   PacsCache cache(o.cacheDir.empty() ? defaultPacsCacheFolder() : o.cacheDir);
   auto report = terminalProgress("Retrieving");
