@@ -16,7 +16,8 @@
 #   CT that docs/bench/make-ct400.sh writes, made under WORK (default /tmp/voxray-wado-bench)
 #   when it is not there yet. VOXRAY_CLI: the binary (default build/bin/voxray-cli).
 #   STEPS: the steps to run (default "curl whole retrieve"; curl first).
-# Writes only under WORK; never into the shared data.
+# Needs curl, time (/usr/bin/time), dcmtk, python3, orthanc and orthanc-dicomweb
+# (scripts/bootstrap). Writes only under WORK; never into the shared data.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
