@@ -1,11 +1,14 @@
-#include <OpenImageIO/imageio.h>
+// Image files through OpenImageIO, loaded from libvoxray_oiio.so on first use
+// (image/oiio_codec.h says why it is not linked).
+#include <dlfcn.h>
+#include <unistd.h>
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <system_error>
 
+#include "image/oiio_codec.h"
 #include "voxray/io/error.h"
 #include "voxray/io/image.h"
 #include "voxray/io/temporary_file.h"
@@ -15,29 +18,54 @@ namespace fs = std::filesystem;
 namespace voxray {
 namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
+// The module's functions, or why they could not be loaded.
+struct Codec {
+  decltype(&voxray_oiio_write) write = nullptr;
+  decltype(&voxray_oiio_read) read = nullptr;
+  std::string missing;  // empty when loaded
+};
+
+// Beside the program (the build tree's bin/), else where it is installed (../lib/voxray).
+Codec loadCodec() {
+  Codec c;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  const char* name = "libvoxray_oiio.so";
+  std::string reasons;
+  for (const fs::path& folder : {exe.parent_path(), exe.parent_path() / ".." / "lib" / "voxray"}) {
+    const fs::path module = folder / name;
+    void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      const char* why = dlerror();
+      reasons += std::string(reasons.empty() ? "" : "; ") + (why ? why : module.string());
+      continue;
+    }
+    c.write = reinterpret_cast<decltype(c.write)>(dlsym(handle, "voxray_oiio_write"));
+    c.read = reinterpret_cast<decltype(c.read)>(dlsym(handle, "voxray_oiio_read"));
+    if (c.write && c.read) return c;
+    reasons += "; " + module.string() + " lacks its functions";
+  }
+  c.missing = std::string("OpenImageIO's module ") + name +
+              " is not beside the program nor in ../lib/voxray (" + reasons +
+              "): reinstall Voxray or rebuild it (target voxray_oiio)";
+  return c;
 }
 
-std::string orUnknown(std::string reason) { return reason.empty() ? "unknown error" : reason; }
+const Codec& codec() {
+  static const Codec c = loadCodec();  // once, thread-safe
+  return c;
+}
 
 void writeTo(const fs::path& file, const std::string& shownPath, const Image& image) {
-  auto out = OIIO::ImageOutput::create(file.string());
-  if (!out) {
-    throw outputError(shownPath + ": cannot write this kind of image (" +
-                      orUnknown(OIIO::geterror()) + "); use .png, .tif or .exr");
-  }
-  // EXR is a float format: half keeps 8-bit values exactly (as 0..1).
-  const bool floating = lower(file.extension().string()) == ".exr";
-  OIIO::ImageSpec spec(image.width, image.height, 4,
-                       floating ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
-  // Our pixels are straight (not premultiplied) alpha: store them as they are.
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  if (!out->open(file.string(), spec) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) || !out->close()) {
-    throw outputError(shownPath + ": " + orUnknown(out->geterror()));
-  }
+  const Codec& c = codec();
+  if (!c.write) throw outputError(shownPath + ": " + c.missing);
+  char why[1024] = {};
+  const int result =
+      c.write(file.c_str(), image.width, image.height, image.rgba.data(), why, sizeof why);
+  if (result == 1)
+    throw outputError(shownPath + ": cannot write this kind of image (" + why +
+                      "); use .png, .tif or .exr");
+  if (result != 0) throw outputError(shownPath + ": " + why);
 }
 
 // TARGET exists and is no regular file: encode in the temporary folder (by TARGET's
@@ -100,23 +128,32 @@ void writeImage(const std::string& path, const Image& image) {
 Image readImage(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw inputError(path + ": no such image file");
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);  // keep straight alpha, as written
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) throw inputError(path + ": cannot read the image (" + orUnknown(OIIO::geterror()) + ")");
-  const OIIO::ImageSpec& spec = in->spec();
-  const int channels = spec.nchannels;
-  if (spec.width <= 0 || spec.height <= 0 || channels <= 0) {
-    throw inputError(path + ": the image has no pixels");
-  }
-  std::vector<uint8_t> pixels(size_t(spec.width) * size_t(spec.height) * size_t(channels));
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
-    throw inputError(path + ": cannot read the image (" + orUnknown(in->geterror()) + ")");
-  }
+  const Codec& c = codec();
+  if (!c.read) throw inputError(path + ": cannot read the image (" + c.missing + ")");
+  struct Pixels {
+    std::vector<uint8_t> bytes;
+    int width = 0, height = 0, channels = 0;
+  } read;
+  auto allocate = [](void* context, int width, int height, int channels) -> uint8_t* {
+    auto* p = static_cast<Pixels*>(context);
+    try {  // no exception crosses into the module
+      p->bytes.resize(size_t(width) * size_t(height) * size_t(channels));
+    } catch (const std::bad_alloc&) {
+      return nullptr;
+    }
+    *p = {std::move(p->bytes), width, height, channels};
+    return p->bytes.data();
+  };
+  char why[1024] = {};
+  const int result = c.read(path.c_str(), allocate, &read, why, sizeof why);
+  if (result == 3) throw inputError(path + ": the image has no pixels");
+  if (result != 0) throw inputError(path + ": cannot read the image (" + why + ")");
+  const int channels = read.channels;
+  const std::vector<uint8_t>& pixels = read.bytes;
 
   // Gray, gray + alpha, RGB and RGBA (extra channels dropped) all become RGBA.
-  Image image(spec.width, spec.height);
-  const size_t count = size_t(spec.width) * size_t(spec.height);
+  Image image(read.width, read.height);
+  const size_t count = size_t(read.width) * size_t(read.height);
   for (size_t i = 0; i < count; ++i) {
     const uint8_t* p = &pixels[i * size_t(channels)];
     uint8_t* q = &image.rgba[i * 4];

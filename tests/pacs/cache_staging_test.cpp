@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 
 #include <gmock/gmock.h>
 
@@ -21,22 +22,34 @@ namespace fs = std::filesystem;
 using testing::HasSubstr;
 
 // A node that "retrieves" by copying files: WRITE gets the staging folder, returns the files
-// it reports.
+// it reports. HAND_OVER: each file's bytes also go to RetrieveOptions::written, as WADO-RS
+// hands them over (by default the bytes on disk; HANDED may give others).
 class CopyingClient : public PacsClient {
  public:
-  explicit CopyingClient(std::function<std::vector<std::string>(const std::string&)> write)
-      : write_(std::move(write)) {}
+  explicit CopyingClient(std::function<std::vector<std::string>(const std::string&)> write,
+                         bool handOver = false,
+                         std::function<std::string(const std::string&)> handed = {})
+      : write_(std::move(write)), handOver_(handOver), handed_(std::move(handed)) {}
   void echo() override {}
   FindResult findPages(const PacsQuery&, const FindOptions&) override { return {}; }
   std::vector<std::string> retrieveSeries(const std::string&, const std::string&,
                                           const std::string& folder,
-                                          const RetrieveOptions&) override {
-    return write_(folder);
+                                          const RetrieveOptions& options) override {
+    std::vector<std::string> files = write_(folder);
+    if (handOver_ && options.written)
+      for (const auto& f : files) {
+        std::ifstream in(f, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        options.written(f, handed_ ? handed_(f) : bytes);
+      }
+    return files;
   }
   void store(const std::vector<std::string>&, const std::atomic<bool>*) override {}
 
  private:
   std::function<std::vector<std::string>(const std::string&)> write_;
+  bool handOver_;
+  std::function<std::string(const std::string&)> handed_;
 };
 
 // Copies the phantom files NAMES ("S2010/I10") into FOLDER; returns the copies.
@@ -51,9 +64,10 @@ std::vector<std::string> copyPhantom(const std::string& folder,
 }
 
 std::string retrieveFailure(
-    const std::function<std::vector<std::string>(const std::string&)>& write) {
+    const std::function<std::vector<std::string>(const std::string&)>& write,
+    bool handOver = false) {
   PacsCache cache(tempFolder("cache"));
-  CopyingClient client(write);
+  CopyingClient client(write, handOver);
   std::string m = failure([&] { cache.retrieve(client, kPhantomStudy, kPhantomSeries); });
   expectNothingCached(cache);
   return m;
@@ -100,6 +114,60 @@ TEST(CacheStagingTest, AFileThatIsNotDicomIsNotKept) {
     return std::vector<std::string>{f + "/0.dcm"};
   });
   EXPECT_THAT(m, HasSubstr("0.dcm, which is not an image of it"));
+}
+
+// Files handed over as they arrive (WADO-RS) are checked from their bytes, with the same
+// messages as files read from disk (issue 39 item 8: nothing is read back).
+TEST(CacheStagingTest, HandedOverFilesGiveTheSameVerdicts) {
+  for (bool handOver : {false, true}) {
+    SCOPED_TRACE(handOver ? "handed over" : "read from disk");
+    EXPECT_THAT(
+        retrieveFailure(
+            [](const std::string& f) {
+              return copyPhantom(f, {"S2010/I10", "S1000/I10"});
+            },
+            handOver),
+        testing::AllOf(HasSubstr("1.dcm, which is not an image of it (it belongs to series"),
+                       HasSubstr("nothing was kept")));
+    EXPECT_THAT(retrieveFailure(
+                    [](const std::string& f) {
+                      return copyPhantom(f, {"S2010/I10", "S2010/I10"});
+                    },
+                    handOver),
+                HasSubstr("1.dcm, which is not an image of it (its SOP Instance UID came twice)"));
+    EXPECT_THAT(retrieveFailure(
+                    [](const std::string& f) {
+                      std::ofstream(f + "/0.dcm") << "<html>login</html>";
+                      return std::vector<std::string>{f + "/0.dcm"};
+                    },
+                    handOver),
+                HasSubstr("0.dcm, which is not an image of it"));
+  }
+  PacsCache cache(tempFolder("cache"));
+  CopyingClient client(
+      [](const std::string& f) {
+        return copyPhantom(f, {"S2010/I10", "S2010/I100"});
+      },
+      true);
+  EXPECT_EQ(cache.retrieve(client, kPhantomStudy, kPhantomSeries).images, 2);
+}
+
+// The verdict on a handed-over file comes from the bytes handed over, not from reading the
+// file back: bytes of another series fail a series whose files on disk are right.
+TEST(CacheStagingTest, HandedOverFilesAreCheckedFromTheirBytes) {
+  PacsCache cache(tempFolder("cache"));
+  CopyingClient client(
+      [](const std::string& f) {
+        return copyPhantom(f, {"S2010/I10", "S2010/I100"});
+      },
+      true,
+      [](const std::string&) {
+        std::ifstream in(dicomPath("ct-philips-phantom/S1000/I10"), std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      });
+  EXPECT_THAT(failure([&] { cache.retrieve(client, kPhantomStudy, kPhantomSeries); }),
+              HasSubstr("0.dcm, which is not an image of it (it belongs to series"));
+  expectNothingCached(cache);
 }
 
 // Staging folders: an old one nobody holds goes; one a live retrieval holds (locked) and a

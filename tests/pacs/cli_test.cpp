@@ -52,6 +52,55 @@ TEST_F(PacsCliTest, EchoFindAndGetThroughTheCommandLine) {
   EXPECT_EQ(info.at("cache_folder").get<std::string>().rfind(cache, 0), 0u);
 }
 
+// Issue 39 item 8: over DICOMweb, pacs get decodes the images as they arrive (not from the
+// cache's files afterwards) and reports the volume the same files give from disk; --no-open
+// only fills the cache, which then opens as the same volume.
+TEST_F(PacsCliTest, WebGetOpensTheVolumeAsFromDiskAndNoOpenOnlyCaches) {
+  const PacsNode web = server().webNode();
+  const std::string config = tempFolder("cli-config");
+  std::filesystem::create_directories(config + "/voxray");
+  std::ofstream(config + "/voxray/pacs-nodes.json") << nlohmann::json{
+      {"nodes",
+       {{"orthanc-web",
+         {{"url", web.baseUrl},
+          {"user", web.user},
+          {"password", web.password}}}}}}.dump();
+  const std::string get = "env XDG_CONFIG_HOME=" + config + " " + std::string(VOXRAY_CLI) +
+                          " pacs get orthanc-web --study " + kPhantomStudy + " --series " +
+                          kPhantomSeries + " --json --cache ";
+  CliRun whole = runCommand("timeout 60 " + get + tempFolder("web-cache"));
+  ASSERT_EQ(whole.exitCode, 0) << whole.output;
+  const auto info = nlohmann::json::parse(whole.output);
+  const Volume disk = loadVolume(dicomPath("ct-philips-phantom/S2010"));
+  EXPECT_EQ(info.at("images"), 28);
+  EXPECT_EQ(info.at("dims"), nlohmann::json({disk.dims.x, disk.dims.y, disk.dims.z}));
+  for (int a = 0; a < 3; ++a) {  // the same header values, through JSON's doubles
+    EXPECT_NEAR(info.at("spacing_mm")[a].get<double>(), disk.spacingMm[a], 1e-9);
+    EXPECT_NEAR(info.at("origin_mm")[a].get<double>(), disk.originMm[a], 1e-9);
+  }
+  // The HU range (the output computes it from the decoded voxels), as from disk.
+  EXPECT_EQ(info.at("hu_min").get<double>(), disk.toPhysical(storedRange(disk).min));
+  EXPECT_EQ(info.at("hu_max").get<double>(), disk.toPhysical(storedRange(disk).max));
+  EXPECT_TRUE(info.contains("ready_s"));
+
+  CliRun cached = runCommand("timeout 60 " + get + tempFolder("web-cache") + " --no-open");
+  ASSERT_EQ(cached.exitCode, 0) << cached.output;
+  const auto only = nlohmann::json::parse(cached.output);
+  EXPECT_EQ(only.at("images"), 28);
+  EXPECT_FALSE(only.contains("dims"));  // nothing was decoded
+  EXPECT_FALSE(only.contains("ready_s"));
+  const std::string folder = only.at("cache_folder").get<std::string>();
+  int files = 0;
+  for (const auto& f : std::filesystem::directory_iterator(folder)) files += f.is_regular_file();
+  EXPECT_EQ(files, 28);
+  CliRun opened = cli("info " + folder + " --json");
+  ASSERT_EQ(opened.exitCode, 0) << opened.output;
+  const auto again = nlohmann::json::parse(opened.output);
+  EXPECT_EQ(again.at("dims"), info.at("dims"));
+  EXPECT_EQ(again.at("hu_min"), info.at("hu_min"));
+  EXPECT_EQ(again.at("hu_max"), info.at("hu_max"));
+}
+
 // pacs get --db: the retrieval is copied into the study database (issue 37), found there
 // next time and opened from it as the same volume.
 TEST_F(PacsCliTest, GetWithDbStoresTheSeriesInTheStudyDatabase) {

@@ -182,15 +182,21 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   }
   const std::string pattern = staging->path();
   const std::string folder = root_ + "/series/" + folderName(seriesUid);
+  // Each file is checked as it arrives (WADO-RS hands over its bytes) and, with IMPORT,
+  // decoded; DIMSE files are checked from disk at the end.
+  pacs::SeriesCheck check(seriesUid);
   RetrieveOptions withImport = options;
-  if (import)
-    withImport.written = [&](const std::string& path, std::string content) {
-      // The staging folder becomes FOLDER once the series is complete.
-      const std::string arrived = folder + "/" + fs::path(path).filename().string();
-      if (!options.written) return import->add(arrived, std::move(content));
-      import->add(arrived, content);
-      options.written(path, std::move(content));
-    };
+  withImport.written = [&](const std::string& path, std::string content) {
+    check.arrived(path, content);
+    // The staging folder becomes FOLDER once the series is complete.
+    const std::string arrived = folder + "/" + fs::path(path).filename().string();
+    if (!options.written) {
+      if (import) import->add(arrived, std::move(content));
+      return;
+    }
+    if (import) import->add(arrived, content);
+    options.written(path, std::move(content));
+  };
   std::vector<std::string> files;
   try {
     files = client.retrieveSeries(studyUid, seriesUid, pattern, withImport);
@@ -202,7 +208,7 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   }
   if (options.cancel && options.cancel->load()) throw cancelledError("Retrieval cancelled");
   // Complete only once what arrived is the series, whole: a node may send other objects.
-  pacs::verifyStagedSeries(pattern, seriesUid, files);
+  check.verify(pattern, files);
   CachedSeries entry{studyUid, seriesUid, folder, 0, now(), int(files.size())};
   entry.bytes = diskBytes(pattern);
   std::error_code ec;

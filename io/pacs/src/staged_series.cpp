@@ -61,9 +61,43 @@ void removeStaleStaging(const std::string& stagingRoot) {
   }
 }
 
-void verifyStagedSeries(const std::string& folder, const std::string& seriesUid,
-                        const std::vector<std::string>& files) {
-  const std::string where = "Series " + seriesUid + ": ";
+namespace {
+
+// Why the parsed file (WHY: the parser's reason, if any) is not an image of SERIES_UID;
+// INSTANCE gets its SOP Instance UID.
+std::string notAnImage(std::string why, DcmFileFormat& file, const std::string& seriesUid,
+                       std::string& instance) {
+  DcmDataset& d = *file.getDataset();
+  if (why.empty() && uid(d, DCM_SOPClassUID).empty()) why = "it has no SOP Class UID";
+  const std::string series = uid(d, DCM_SeriesInstanceUID);
+  if (why.empty() && series != seriesUid)
+    why = "it belongs to series " + (series.empty() ? std::string("(none)") : series);
+  instance = uid(d, DCM_SOPInstanceUID);
+  if (why.empty() && instance.empty()) why = "it has no SOP Instance UID";
+  return why;
+}
+
+}  // namespace
+
+void SeriesCheck::arrived(const std::string& path, const std::string& bytes) {
+  DcmFileFormat file;
+  Checked c;
+  c.why = notAnImage(dicom::loadDicomHeader(file, bytes.data(), bytes.size(), DCM_PixelData), file,
+                     seriesUid_, c.instance);
+  arrived_[path] = std::move(c);
+}
+
+SeriesCheck::Checked SeriesCheck::check(const std::string& path) const {
+  if (auto it = arrived_.find(path); it != arrived_.end()) return it->second;
+  DcmFileFormat file;
+  Checked c;
+  c.why = notAnImage(dicom::loadDicomFile(file, path, 4096, DCM_PixelData), file, seriesUid_,
+                     c.instance);
+  return c;
+}
+
+void SeriesCheck::verify(const std::string& folder, const std::vector<std::string>& files) const {
+  const std::string where = "Series " + seriesUid_ + ": ";
   size_t present = 0;
   std::error_code ec;
   for (auto it = fs::directory_iterator(folder, ec); !ec && it != fs::directory_iterator();
@@ -74,21 +108,18 @@ void verifyStagedSeries(const std::string& folder, const std::string& seriesUid,
                      std::to_string(present) + " files arrived" + kNothingKept);
   std::set<std::string> instances;
   for (const auto& path : files) {
-    DcmFileFormat file;
-    const std::string name = fs::path(path).filename().string();
-    std::string why = dicom::loadDicomFile(file, path, 4096, DCM_PixelData);
-    DcmDataset& d = *file.getDataset();
-    if (why.empty() && uid(d, DCM_SOPClassUID).empty()) why = "it has no SOP Class UID";
-    const std::string series = uid(d, DCM_SeriesInstanceUID);
-    if (why.empty() && series != seriesUid)
-      why = "it belongs to series " + (series.empty() ? std::string("(none)") : series);
-    const std::string instance = uid(d, DCM_SOPInstanceUID);
-    if (why.empty() && (instance.empty() || !instances.insert(instance).second))
-      why = instance.empty() ? "it has no SOP Instance UID" : "its SOP Instance UID came twice";
-    if (!why.empty())
-      throw inputError(where + "the node sent " + name + ", which is not an image of it (" + why +
-                       ")" + kNothingKept);
+    Checked c = check(path);
+    if (c.why.empty() && !instances.insert(c.instance).second)
+      c.why = "its SOP Instance UID came twice";
+    if (!c.why.empty())
+      throw inputError(where + "the node sent " + fs::path(path).filename().string() +
+                       ", which is not an image of it (" + c.why + ")" + kNothingKept);
   }
+}
+
+void verifyStagedSeries(const std::string& folder, const std::string& seriesUid,
+                        const std::vector<std::string>& files) {
+  SeriesCheck(seriesUid).verify(folder, files);
 }
 
 }  // namespace voxray::pacs

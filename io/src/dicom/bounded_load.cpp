@@ -163,4 +163,18 @@ std::string loadDicomBytes(DcmFileFormat& file, std::shared_ptr<const std::strin
   }
 }
 
+std::string loadDicomHeader(DcmFileFormat& file, const char* data, size_t size,
+                            const DcmTagKey& stopAt) {
+  ensureCodecsRegistered();
+  try {
+    StackBounded<DcmInputBufferStream> stream(static_cast<const char*>(__builtin_frame_address(0)));
+    stream.setBuffer(data, offile_off_t(size));
+    stream.setEos();
+    return readBounded(file, stream, kLeaveLongValues, stopAt);
+  } catch (const std::exception& e) {
+    file.clear();
+    return std::string("the DICOM parser failed (") + e.what() + ")";
+  }
+}
+
 }  // namespace voxray::dicom

@@ -28,4 +28,9 @@ std::string loadDicomFile(DcmFileFormat& file, const std::string& path, Uint32 m
 // copied: FILE reads them from BYTES when they are asked for, and keeps BYTES alive for that.
 std::string loadDicomBytes(DcmFileFormat& file, std::shared_ptr<const std::string> bytes);
 
+// The same for SIZE bytes at DATA (a whole file in memory, not copied, used only during the
+// call), parsed until STOP_AT; values longer than 4 KiB before it are not kept.
+std::string loadDicomHeader(DcmFileFormat& file, const char* data, size_t size,
+                            const DcmTagKey& stopAt);
+
 }  // namespace voxray::dicom
