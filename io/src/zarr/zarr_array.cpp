@@ -2,14 +2,9 @@
 
 #include <bit>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 #include "voxray/io/error.h"
-
-namespace fs = std::filesystem;
 
 namespace voxray::zarr {
 namespace {
@@ -18,7 +13,7 @@ using detail::SampleKind;
 using Json = nlohmann::json;
 
 // Metadata files are small; a larger one is not metadata (or is hostile).
-constexpr uintmax_t kMaxJsonBytes = 16u << 20;
+constexpr uint64_t kMaxJsonBytes = 16u << 20;
 
 bool littleEndianMachine() { return std::endian::native == std::endian::little; }
 
@@ -228,20 +223,23 @@ void readV3(ArrayMeta& m, const Json& j) {
 
 }  // namespace
 
-Json readJsonFile(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw inputError(path + ": is missing; the Zarr folder is incomplete (copy it again)");
-  const uintmax_t size = fs::file_size(path, ec);
-  if (ec || size > kMaxJsonBytes)
-    throw inputError(path + ": is larger than 16 MiB; it is not Zarr metadata");
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  Json j = Json::parse(text.str(), nullptr, false);
+bool readMetadata(ZarrStore& store, const std::string& key, std::vector<uint8_t>& bytes) {
+  return store.read(key, bytes, kMaxJsonBytes, "is larger than 16 MiB; it is not Zarr metadata");
+}
+
+Json parseJson(const std::vector<uint8_t>& bytes, const std::string& where) {
+  Json j = Json::parse(bytes.begin(), bytes.end(), nullptr, false);
   if (j.is_discarded())
-    throw inputError(path + ": is not valid JSON; the Zarr metadata is damaged");
+    throw inputError(where + ": is not valid JSON; the Zarr metadata is damaged");
   return j;
+}
+
+Json readJson(ZarrStore& store, const std::string& key) {
+  std::vector<uint8_t> bytes;
+  if (!readMetadata(store, key, bytes))
+    throw inputError(store.where(key) +
+                     ": is missing; the Zarr folder is incomplete (copy it again)");
+  return parseJson(bytes, store.where(key));
 }
 
 uint64_t ArrayMeta::chunkSamples() const {
@@ -259,12 +257,22 @@ std::string ArrayMeta::chunkKey(const std::vector<uint64_t>& index) const {
   return key;
 }
 
-ArrayMeta readArrayMeta(const std::string& folder, int format) {
+ArrayMeta readArrayMeta(ZarrStore& store, const std::string& path, int format) {
+  const std::string key = path + (format == 2 ? "/.zarray" : "/zarr.json");
+  std::vector<uint8_t> bytes;
+  if (!readMetadata(store, key, bytes))
+    throw inputError(store.where(key) +
+                     ": is missing; the Zarr folder is incomplete (copy it again)");
+  return parseArrayMeta(bytes, path, store.where(key), format);
+}
+
+ArrayMeta parseArrayMeta(const std::vector<uint8_t>& document, const std::string& path,
+                         const std::string& metadataFile, int format) {
   ArrayMeta m;
   m.format = format;
-  m.folder = folder;
-  m.metadataFile = (fs::path(folder) / (format == 2 ? ".zarray" : "zarr.json")).string();
-  const Json j = readJsonFile(m.metadataFile);
+  m.path = path;
+  m.metadataFile = metadataFile;
+  const Json j = parseJson(document, metadataFile);
   if (!j.is_object()) bad(m, "is not a JSON object");
   try {
     if (format == 2)
