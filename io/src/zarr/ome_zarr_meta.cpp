@@ -173,6 +173,11 @@ Pyramid parsePyramid(int format, const Json& document, const std::string& file) 
                         " along '" + p.axisNames[a] + "'; a voxel size must be positive");
         level.spacingMm[i] = s;
         level.translationMm[i] = (translation[a] * globalScale[a] + globalTranslation[a]) * mm[a];
+        // Each number is finite; their product and sum may not be (1e300 x 1e300).
+        if (!std::isfinite(level.translationMm[i]))
+          bad(file, "the dataset '" + path + "' has a translation along '" + p.axisNames[a] +
+                        "' beyond any length (its translation and scale multiply past 1e308 "
+                        "mm); the metadata is damaged");
       }
       p.levels.push_back(level);
     }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "../file_kind.h"
@@ -182,10 +183,22 @@ Volume describeLevel(const Pyramid& pyramid, int index, const ArrayMeta& m,
                        std::to_string(kMaxVoxels) + "); open a coarser level with --level");
     count *= d;
   }
+  for (int i = 0; i < 3; ++i)
+    if (dims[size_t(i)] > uint64_t(std::numeric_limits<int>::max()))
+      throw inputError(m.metadataFile + ": the shape " + nlohmann::json(m.shape).dump() + " has " +
+                       std::to_string(dims[size_t(i)]) + " voxels along " + "xyz"[i] +
+                       "; Voxray holds at most " + std::to_string(std::numeric_limits<int>::max()) +
+                       " along an axis");
   v.dims = glm::ivec3(int(dims[0]), int(dims[1]), int(dims[2]));
   v.spacingMm = level.spacingMm;
   v.direction = pyramid.direction;
   v.originMm = pyramid.direction * level.translationMm;
+  const glm::dvec3 extent = v.spacingMm * glm::dvec3(v.dims);
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(v.originMm[i]) || !std::isfinite(extent[i]))
+      throw inputError(m.metadataFile + ": level " + std::to_string(index) +
+                       " reaches beyond any length (its origin or extent along " + "xyz"[i] +
+                       " passes 1e308 mm); the multiscales metadata is damaged");
   v.unit = pyramid.unit;
   v.modality = pyramid.modality;
   v.sourceType = kindName(m.kind);

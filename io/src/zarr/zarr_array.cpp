@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "voxray/io/error.h"
 
@@ -89,6 +90,43 @@ double fillOf(const ArrayMeta& m, const Json& j) {
     if (s == "-Infinity") return -std::numeric_limits<double>::infinity();
   }
   bad(m, "fill_value " + j.dump() + " is not a number");
+}
+
+// A missing chunk's samples are the fill value in the array's type: it must be one of them
+// (converting 1e308 to int16 is undefined). A non-finite fill of an integer type reads as 0.
+void checkFill(const ArrayMeta& m) {
+  if (!std::isfinite(m.fill)) return;
+  double lo = -std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::max();
+  switch (m.kind) {
+    case SampleKind::U8:
+      lo = 0, hi = 255;
+      break;
+    case SampleKind::I8:
+      lo = -128, hi = 127;
+      break;
+    case SampleKind::U16:
+      lo = 0, hi = 65535;
+      break;
+    case SampleKind::I16:
+      lo = -32768, hi = 32767;
+      break;
+    case SampleKind::U32:
+      lo = 0, hi = 4294967295.0;
+      break;
+    case SampleKind::I32:
+      lo = -2147483648.0, hi = 2147483647.0;
+      break;
+    case SampleKind::F32:
+      break;
+    case SampleKind::F64:
+      return;
+  }
+  if (m.fill < lo || m.fill > hi) {
+    std::ostringstream text;
+    text << "fill_value " << m.fill << " is not a value of " << m.dataType << " (" << lo << " to "
+         << hi << "); the metadata is damaged: write the array again";
+    bad(m, text.str());
+  }
 }
 
 Codec bloscOf(const ArrayMeta& m, const Json& config) {
@@ -282,6 +320,7 @@ ArrayMeta parseArrayMeta(const std::vector<uint8_t>& document, const std::string
   } catch (const Json::exception& e) {
     bad(m, std::string("has a field of the wrong kind (") + e.what() + ")");
   }
+  checkFill(m);
   if (m.chunks.size() != m.shape.size())
     bad(m, "the chunks have " + std::to_string(m.chunks.size()) + " dimensions, the shape " +
                std::to_string(m.shape.size()));
