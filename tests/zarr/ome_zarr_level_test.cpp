@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <mutex>
 
+#include "voxray/io/load.h"
 #include "zarr_test_support.h"
 
 namespace voxray::test {
@@ -64,6 +65,15 @@ TEST_P(OmeZarrLevel, ALevelReadsItsMetadataAndItsChunksOnly) {
     std::sort(want.begin(), want.end());
     EXPECT_EQ(store.sortedKeys(), want) << "level " << level;
   }
+}
+
+// loadVolume (voxray_io, no network code) names a URL for what it is, without its credentials.
+TEST(OmeZarrUrlOutsideTheFrontEnds, IsRefusedWithoutItsCredentials) {
+  const std::string message =
+      errorMessage([] { loadVolume("https://ann:secret@example.org/x.ome.zarr"); });
+  EXPECT_EQ(message,
+            "https URL: only the main input of voxray-cli and the workstation may be a URL (an "
+            "OME-Zarr); give a local file or folder here");
 }
 
 INSTANTIATE_TEST_SUITE_P(ZarrVersions, OmeZarrLevel, ::testing::Values(2, 3), [](const auto& info) {
