@@ -12,6 +12,9 @@
 #include "voxray/io/error.h"
 #include "voxray/io/ome_zarr.h"
 #include "voxray/io/volume_file.h"
+#ifdef VOXRAY_HAS_DICOM  // the PACS client's library, which reads OME-Zarr URLs too
+#include "voxray/io/zarr_url.h"
+#endif
 
 namespace voxray::cli {
 
@@ -32,7 +35,11 @@ int describeTimePoints(const InputOptions& in, bool json) {
   if (in.flags.count("time"))
     throw inputError("info: give --all-time-points or --time K, not both");
   const auto start = std::chrono::steady_clock::now();
+#ifdef VOXRAY_HAS_DICOM
+  const std::vector<Volume> all = loadVolumeSeriesOrUrl(in.input, in.loadOptions());
+#else
   const std::vector<Volume> all = loadVolumeSeries(in.input, in.loadOptions());
+#endif
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   size_t bytes = 0;
@@ -70,7 +77,7 @@ Run addInfoCommand(CLI::App& app) {
     std::optional<DicomListing> listing;
 #ifdef VOXRAY_HAS_DICOM  // lean builds (VOXRAY_WITH_DICOM=OFF) read raw data only
     if (!in->input.empty() && !in->flags.count("raw-dims") && !isVolumeFile(in->input) &&
-        !isOmeZarr(in->input)) {
+        !isOmeZarr(in->input) && !isUrl(in->input)) {
       try {
         listing = listDicomSeries(in->input);
       } catch (const Error&) {

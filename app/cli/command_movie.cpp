@@ -16,6 +16,9 @@
 #include "voxray/io/error.h"
 #include "voxray/io/load.h"
 #include "voxray/io/volume.h"
+#ifdef VOXRAY_HAS_DICOM  // the PACS client's library, which reads OME-Zarr URLs too
+#include "voxray/io/zarr_url.h"
+#endif
 
 namespace voxray::cli {
 
@@ -108,7 +111,11 @@ Run addMovieCommand(CLI::App& app) {
     if (o->cine == "time") {
       if (o->input.flags.count("time"))
         throw inputError("movie: --cine time shows every time point; leave out --time");
+#ifdef VOXRAY_HAS_DICOM
+      times = loadVolumeSeriesOrUrl(o->input.input, o->input.loadOptions());
+#else
       times = loadVolumeSeries(o->input.input, o->input.loadOptions());
+#endif
     }
     Volume v = times.empty() ? o->input.load() : Volume{};
     const Volume& shown = times.empty() ? v : times.front();

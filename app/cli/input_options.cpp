@@ -8,12 +8,16 @@
 #ifdef VOXRAY_HAS_STUDYDB
 #include "voxray/studydb/study_db.h"
 #endif
+#ifdef VOXRAY_HAS_DICOM  // the PACS client's library, which reads OME-Zarr URLs too
+#include "voxray/io/zarr_url.h"
+#endif
 
 namespace voxray::cli {
 
 void InputOptions::add(CLI::App& cmd) {
   cmd.add_option("input", input,
                  "DICOM file or folder, raw slice folder, printf pattern or raw file, "
+                 "OME-Zarr folder or http(s):// URL, "
                  "db:SERIES_UID (a series of the study database) "
                  "(none: the embedded head phantom)");
   cmd.add_option("--db", db,
@@ -57,7 +61,11 @@ Volume InputOptions::load() const {
 #endif
   }
   o.progress = terminalProgress("loading");
+#ifdef VOXRAY_HAS_DICOM
+  return loadVolumeOrUrl(path, o);
+#else
   return loadVolume(path, o);
+#endif
 }
 
 }  // namespace voxray::cli

@@ -56,6 +56,12 @@ Volume loadVolume(const std::string& input, const LoadOptions& options) {
   if (options.raw) return importRaw(input, *options.raw, {options.progress, options.cancel});
 
   std::error_code ec;
+  // A URL is read by the network library (loadVolumeOrUrl, voxray/io/zarr_url.h); this path has
+  // none. No credentials: the message names the scheme only.
+  if (input.rfind("http://", 0) == 0 || input.rfind("https://", 0) == 0)
+    throw inputError(input.substr(0, input.find(':')) +
+                     " URL: only the main input of voxray-cli and the workstation may be a URL "
+                     "(an OME-Zarr); give a local file or folder here");
   if (!fs::exists(input, ec)) throw inputError(input + ": no such file or folder");
   detail::refuseSpecialFile(input);
   if (options.level != 0 && !isOmeZarr(input))

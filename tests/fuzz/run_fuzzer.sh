@@ -3,7 +3,7 @@
 # and, for the DICOM targets, the small shared DICOM files as seeds. New finds stay in a
 # scratch copy under /tmp unless --keep is given: then they are merged (minimised) into
 # the kept corpus, to be committed, so the next run starts where this one stopped.
-# Usage: run_fuzzer.sh BUILD_DIR NAME SECONDS [--keep]   NAME: dicom|info_json|raw|params|multipart|dicomweb_json|volume_file|session|transfer_function
+# Usage: run_fuzzer.sh BUILD_DIR NAME SECONDS [--keep]   NAME: dicom|info_json|raw|params|multipart|dicomweb_json|volume_file|session|transfer_function|zarr_metadata
 set -euo pipefail
 build=$1
 name=$2
@@ -38,8 +38,10 @@ case $name in
   volume_file) args+=(-max_len=4096) ;;
   session) args+=(-max_len=16384 -dict="$here/session.dict") ;;
   transfer_function) args+=(-max_len=8192) ;;
+  # A group's and an array's metadata (about 1 KiB each as writers make them) and a small chunk.
+  zarr_metadata) args+=(-max_len=8192 -dict="$here/zarr.dict") ;;
   *)
-    echo "run_fuzzer.sh: unknown target '$name' (dicom, info_json, raw, params, multipart, dicomweb_json, volume_file, session, transfer_function)" >&2
+    echo "run_fuzzer.sh: unknown target '$name' (dicom, info_json, raw, params, multipart, dicomweb_json, volume_file, session, transfer_function, zarr_metadata)" >&2
     exit 2
     ;;
 esac

@@ -218,5 +218,59 @@ TEST_F(OmeZarrBadInput, ADatasetPathLeavingTheFolderIsRefused) {
   EXPECT_THAT(loadError(), HasSubstr("the dataset path '../../etc' leaves the folder"));
 }
 
+// Found with voxray_zarr_metadata_fuzzer's inputs (tests/fuzz): each used to reach undefined
+// behaviour or a wrong volume before it was refused.
+
+// A fill value outside the data type: converting 1e308 to int16 for a missing chunk was
+// undefined (UBSan: "outside the range of representable values of type 'short'").
+TEST_F(OmeZarrBadInput, AFillValueOutsideTheDataTypeIsRefused) {
+  write(2);
+  edit("0/.zarray", [](Json& j) { j["fill_value"] = 1e308; });
+  EXPECT_THAT(loadError(), HasSubstr("0/.zarray: fill_value 1e+308 is not a value of <i2 (-32768 "
+                                     "to 32767); the metadata is damaged"));
+  fs::remove_all(path_);
+  write(3);
+  edit("0/zarr.json", [](Json& j) { j["fill_value"] = -1; });
+  edit("0/zarr.json", [](Json& j) { j["data_type"] = "uint8"; });
+  EXPECT_THAT(loadError(), HasSubstr("0/zarr.json: fill_value -1 is not a value of uint8 (0 to "
+                                     "255)"));
+}
+
+// 2^33 voxels along x (and 1 along y and z) is within kMaxVoxels, but an axis of a Volume is
+// an int: it became 0 voxels wide.
+TEST_F(OmeZarrBadInput, AnAxisLongerThanAVolumeHoldsIsRefused) {
+  write(2);
+  edit("0/.zarray", [](Json& j) {
+    j["shape"] = {1, 1, uint64_t(1) << 33};
+    j["chunks"] = {1, 1, 65536};
+  });
+  EXPECT_THAT(loadError(), HasSubstr("0/.zarray: the shape [1,1,8589934592] has 8589934592 "
+                                     "voxels along x; Voxray holds at most 2147483647 along an "
+                                     "axis"));
+}
+
+// Finite numbers whose product is not: a global scale of 1e300 times a translation of 1e300
+// gave an infinite origin; a scale of 1e308 mm times 45 voxels an infinite extent.
+TEST_F(OmeZarrBadInput, ATranslationOrExtentBeyondAnyLengthIsRefused) {
+  write(2);
+  edit(".zattrs", [](Json& j) {
+    auto& ms = j["multiscales"][0];
+    ms["coordinateTransformations"] =
+        Json::parse(R"([{"type": "scale", "scale": [1e300, 1e300, 1e300]}])");
+    ms["datasets"][0]["coordinateTransformations"] = Json::parse(
+        R"([{"type": "scale", "scale": [1e-300, 1e-300, 1e-300]},
+            {"type": "translation", "translation": [0, 0, 1e300]}])");
+  });
+  EXPECT_THAT(loadError(), HasSubstr("the dataset '0' has a translation along 'x' beyond any "
+                                     "length"));
+  fs::remove_all(path_);
+  write(2);
+  edit(".zattrs", [](Json& j) {
+    j["multiscales"][0]["datasets"][0]["coordinateTransformations"][0]["scale"][2] = 1e308;
+  });
+  EXPECT_THAT(loadError(), HasSubstr("0/.zarray: level 0 reaches beyond any length (its origin "
+                                     "or extent along x passes 1e308 mm)"));
+}
+
 }  // namespace
 }  // namespace voxray::test

@@ -6,6 +6,9 @@
 
 #include "gui_post.h"
 #include "voxray/io/error.h"
+#ifdef VOXRAY_HAS_DICOM  // the PACS client's library, which reads OME-Zarr URLs too
+#include "voxray/io/zarr_url.h"
+#endif
 
 namespace voxray::ui {
 
@@ -37,7 +40,11 @@ void LoadController::load(const std::string& input, LoadOptions options, const Q
     try {
       // Every time point at once (all resident in memory, issue 36): playing then never
       // waits for the disk; a 10-phase 512x512x256 series takes 1.25 GiB.
+#ifdef VOXRAY_HAS_DICOM  // an http(s) URL opens as a remote OME-Zarr
+      for (Volume& v : loadVolumeSeriesOrUrl(input, options))
+#else
       for (Volume& v : loadVolumeSeries(input, options))
+#endif
         series.push_back(std::make_shared<const Volume>(std::move(v)));
       if (options.timePoint && *options.timePoint >= int(series.size()))
         throw inputError(input + ": --time " + std::to_string(*options.timePoint) +

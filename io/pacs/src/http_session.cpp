@@ -83,7 +83,16 @@ int onProgress(void* user, curl_off_t, curl_off_t down, curl_off_t, curl_off_t u
   return 0;
 }
 
-std::string httpHint(long status) {
+std::string httpHint(long status, HttpService service) {
+  if (service == HttpService::OmeZarr) {
+    if (status == 401)
+      return "the server wants credentials: give them in the URL "
+             "(https://USER:PASSWORD@host/...; they are never shown)";
+    if (status == 403) return "the server does not let these credentials read it";
+    if (status == 404) return "not found: check the URL (it names the .ome.zarr folder)";
+    if (status >= 500) return "the server failed; try again later or ask its administrator";
+    return "the server refused the request; check the URL";
+  }
   if (status == 401)
     return "the server wants credentials: set user and password (or bearerToken) for this node";
   if (status == 403) return "the credentials are not allowed to do this";
@@ -94,7 +103,8 @@ std::string httpHint(long status) {
 
 }  // namespace
 
-HttpSession::HttpSession(PacsNode node) : node_(std::move(node)), curl_(curl_easy_init()) {
+HttpSession::HttpSession(PacsNode node, HttpService service)
+    : node_(std::move(node)), service_(service), curl_(curl_easy_init()) {
   if (!curl_) throw inputError("Cannot start libcurl for " + node_.label());
   // libcurl opens the CA bundle and reads it to the end: a FIFO would block every request.
   struct stat st {};
@@ -183,10 +193,17 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
   char* type = nullptr;
   curl_easy_getinfo(curl, CURLINFO_CONTENT_TYPE, &type);
   response.contentType = type ? type : "";
-  std::string where = "DICOMweb " + what + " " + redactUrl(url);
+  const bool zarr = service_ == HttpService::OmeZarr;
+  std::string where = (zarr ? "OME-Zarr " : "DICOMweb ") + what + " " + redactUrl(url);
   if (cancel && cancel->load())
     throw cancelledError(what == "POST" ? "Sending cancelled" : "Retrieval cancelled");
   if (!transfer.sinkError.empty()) throw inputError(where + ": " + transfer.sinkError);
+  if (transfer.stalled && zarr)
+    throw inputError(where + ": the server sent " +
+                     (transfer.dripping ? "under " + std::to_string(kLeastProgressBytes) + " bytes"
+                                        : std::string("nothing")) +
+                     " for " + std::to_string(node_.timeoutSec) +
+                     " s: it stopped answering; try again later");
   if (transfer.stalled)
     throw inputError(transfer.dripping ? drippingMessage(node_, what, kLeastProgressBytes)
                                        : stalledMessage(node_, what));
@@ -194,8 +211,10 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
       code == CURLE_SSL_CONNECT_ERROR || code == CURLE_SSL_CERTPROBLEM)
     throw inputError(where + ": TLS failed (" +
                      (*errorText ? errorText : curl_easy_strerror(code)) +
-                     "): the server's certificate is not trusted; give the node a caFile with "
-                     "its CA, or fix the server's certificate");
+                     (zarr ? "): the server's certificate is not trusted; add its CA to the "
+                             "system's (update-ca-certificates), or fix the server's certificate"
+                           : "): the server's certificate is not trusted; give the node a caFile "
+                             "with its CA, or fix the server's certificate"));
   if (transfer.errorBodyCut) code = CURLE_OK;  // the status says what failed
   if (code != CURLE_OK)
     throw inputError(
@@ -204,10 +223,11 @@ HttpResponse HttpSession::perform(const std::string& what, const std::string& ur
              ? ": the server stopped answering (timeout " + std::to_string(node_.timeoutSec) + " s)"
          : code == CURLE_PARTIAL_FILE ? ": the server closed the connection "
                                         "before the end; try again"
+         : zarr                       ? ": check the URL and the network"
                                       : ": check the node's URL and network"));
   if (response.status >= 400)
     throw inputError(where + ": HTTP " + std::to_string(response.status) + ": " +
-                     httpHint(response.status));
+                     httpHint(response.status, service_));
   return response;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// HTTP for DICOMweb through libcurl: authentication (basic, bearer), TLS with the system CA
-// store (or the node's caFile), timeouts, cancel, and HTTP failures worded for the user.
-// Passwords and tokens go to libcurl only, never into a message.
+// HTTP for DICOMweb, and for OME-Zarr over http(s), through libcurl: authentication (basic,
+// bearer), TLS with the system CA store (or the node's caFile), timeouts, cancel, and HTTP
+// failures worded for the user. Passwords and tokens go to libcurl only, never into a message.
 #include <atomic>
 #include <functional>
 #include <string>
@@ -25,9 +25,13 @@ struct HttpResponse {
   std::string body;  // empty when the body went to a sink
 };
 
+// Whom the requests serve, for messages: a configured DICOMweb node, or an OME-Zarr URL (the
+// node is made from the URL; there is no configuration to point to).
+enum class HttpService { DicomWeb, OmeZarr };
+
 class HttpSession {
  public:
-  explicit HttpSession(PacsNode node);
+  explicit HttpSession(PacsNode node, HttpService service = HttpService::DicomWeb);
   ~HttpSession();
   HttpSession(const HttpSession&) = delete;
   HttpSession& operator=(const HttpSession&) = delete;
@@ -50,6 +54,7 @@ class HttpSession {
                        const std::atomic<bool>* cancel);
 
   PacsNode node_;
+  HttpService service_;
   void* curl_;
   long lastStatus_ = 0;
 };

@@ -1,12 +1,9 @@
 #include "ome_zarr_meta.h"
 
 #include <cmath>
-#include <filesystem>
 
 #include "voxray/io/error.h"
 #include "zarr_array.h"
-
-namespace fs = std::filesystem;
 
 namespace voxray::zarr {
 namespace {
@@ -79,36 +76,39 @@ std::string kindName(detail::SampleKind kind) {
   return names[int(kind)];
 }
 
-Pyramid readPyramid(const std::string& folder) {
+Pyramid readPyramid(ZarrStore& store) {
+  std::vector<uint8_t> bytes;
+  if (readMetadata(store, "zarr.json", bytes))
+    return parsePyramid(3, parseJson(bytes, store.where("zarr.json")), store.where("zarr.json"));
+  if (readMetadata(store, ".zattrs", bytes))
+    return parsePyramid(2, parseJson(bytes, store.where(".zattrs")), store.where(".zattrs"));
+  // A group without attributes has no multiscales: said by parsePyramid.
+  if (readMetadata(store, ".zgroup", bytes))
+    return parsePyramid(2, Json::object(), store.where(".zattrs"));
+  if (readMetadata(store, ".zarray", bytes))
+    bad(store.where(""),
+        "is a single Zarr array, not an OME-Zarr group; open the folder that holds it "
+        "with its multiscales metadata");
+  bad(store.where(""),
+      "holds neither zarr.json (Zarr v3) nor .zattrs (Zarr v2): it is not an "
+      "OME-Zarr folder");
+}
+
+Pyramid parsePyramid(int format, const Json& document, const std::string& file) {
   Pyramid p;
-  const fs::path root(folder);
-  std::error_code ec;
-  std::string file;
-  Json attributes;
-  if (fs::exists(root / "zarr.json", ec)) {
-    p.format = 3;
-    file = (root / "zarr.json").string();
-    const Json group = readJsonFile(file);
-    if (!group.is_object() || group.value("zarr_format", 0) != 3)
+  p.format = format;
+  Json attributes = document;
+  if (format == 3) {
+    const Json* zarrFormat = document.is_object() && document.contains("zarr_format")
+                                 ? &document["zarr_format"]
+                                 : nullptr;
+    if (!zarrFormat || *zarrFormat != 3)
       bad(file, "zarr_format is not 3; the Zarr metadata is damaged");
-    if (group.value("node_type", "") != "group")
+    if (!document.contains("node_type") || document["node_type"] != "group")
       bad(file,
           "is a single array, not an OME-Zarr group; open the folder that holds it with "
           "its multiscales metadata");
-    attributes = group.value("attributes", Json::object());
-  } else if (fs::exists(root / ".zattrs", ec) || fs::exists(root / ".zgroup", ec)) {
-    p.format = 2;
-    file = (root / ".zattrs").string();
-    // A group without attributes has no multiscales: said below.
-    attributes = fs::exists(file, ec) ? readJsonFile(file) : Json::object();
-  } else if (fs::exists(root / ".zarray", ec)) {
-    bad(folder,
-        "is a single Zarr array, not an OME-Zarr group; open the folder that holds it "
-        "with its multiscales metadata");
-  } else {
-    bad(folder,
-        "holds neither zarr.json (Zarr v3) nor .zattrs (Zarr v2): it is not an "
-        "OME-Zarr folder");
+    attributes = document.contains("attributes") ? document["attributes"] : Json::object();
   }
   if (!attributes.is_object()) bad(file, "the attributes are not a JSON object");
   // NGFF 0.5 keeps everything under "ome"; 0.4 at the top.
@@ -164,7 +164,7 @@ Pyramid readPyramid(const std::string& folder) {
           file, d.contains("coordinateTransformations") ? d["coordinateTransformations"] : Json(),
           p.axes, scale, translation);
       Level level;
-      level.folder = (root / path).string();
+      level.path = path;
       for (int i = 0; i < 3; ++i) {
         const size_t a = p.axes - 1 - size_t(i);  // x is the last axis
         const double s = scale[a] * globalScale[a] * mm[a];
@@ -173,6 +173,11 @@ Pyramid readPyramid(const std::string& folder) {
                         " along '" + p.axisNames[a] + "'; a voxel size must be positive");
         level.spacingMm[i] = s;
         level.translationMm[i] = (translation[a] * globalScale[a] + globalTranslation[a]) * mm[a];
+        // Each number is finite; their product and sum may not be (1e300 x 1e300).
+        if (!std::isfinite(level.translationMm[i]))
+          bad(file, "the dataset '" + path + "' has a translation along '" + p.axisNames[a] +
+                        "' beyond any length (its translation and scale multiply past 1e308 "
+                        "mm); the metadata is damaged");
       }
       p.levels.push_back(level);
     }

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "../file_kind.h"
@@ -71,26 +71,12 @@ std::vector<uint8_t> sampleOf(double value, detail::SampleKind kind) {
   return out;
 }
 
-// Reads the whole file KEY below the array's folder; false when it does not exist.
-bool readChunkFile(const ArrayMeta& m, const std::string& key, std::vector<uint8_t>& data,
-                   uint64_t maxBytes) {
-  const fs::path file = fs::path(m.folder) / key;
-  std::error_code ec;
-  const auto status = fs::status(file, ec);
-  if (status.type() == fs::file_type::not_found) return false;
-  if (status.type() != fs::file_type::regular)
-    throw inputError(file.string() +
-                     ": the chunk is not a regular file (a folder, FIFO or "
-                     "device); the Zarr array is damaged");
-  const uintmax_t size = fs::file_size(file, ec);
-  if (ec || size > maxBytes)
-    throw inputError(file.string() + ": the chunk has " + std::to_string(size) +
-                     " bytes, more than any encoding of it takes; the Zarr array is damaged");
-  data.resize(size_t(size));
-  std::ifstream in(file, std::ios::binary);
-  if (!in.read(reinterpret_cast<char*>(data.data()), std::streamsize(size)))
-    throw inputError(file.string() + ": cannot read the chunk (check its permissions)");
-  return true;
+// The chunk KEY (below the array) into DATA; false when the store has none.
+bool readChunk(ZarrStore& store, const ArrayMeta& m, const std::string& key,
+               std::vector<uint8_t>& data, uint64_t maxBytes) {
+  return store.read(m.storeKey(key), data, maxBytes,
+                    "the chunk has more than " + std::to_string(maxBytes) +
+                        " bytes, more than any encoding of it takes; the Zarr array is damaged");
 }
 
 struct ChunkCount {
@@ -100,7 +86,8 @@ struct ChunkCount {
 // The array's 3D volume at index 0 of any leading (t, c) axes into DEST, as samples of its own
 // type in native byte order, i fastest. The spatial axes are the last three (z, y, x). Chunks
 // are decoded in parallel; each writes its own box of DEST.
-ChunkCount readSpatial(const ArrayMeta& m, const LoadOptions& options, uint8_t* dest) {
+ChunkCount readSpatial(ZarrStore& store, const ArrayMeta& m, const LoadOptions& options,
+                       uint8_t* dest) {
   const size_t n = m.shape.size(), lead = n - 3, ts = m.typeSize();
   const uint64_t X = m.shape[n - 1], Y = m.shape[n - 2], Z = m.shape[n - 3];
   const uint64_t cx = m.chunks[n - 1], cy = m.chunks[n - 2], cz = m.chunks[n - 3];
@@ -123,7 +110,7 @@ ChunkCount readSpatial(const ArrayMeta& m, const LoadOptions& options, uint8_t* 
         const uint64_t nx = std::min(cx, X - x0), ny = std::min(cy, Y - y0),
                        nz = std::min(cz, Z - z0);
         std::vector<uint8_t> data, raw;
-        if (!readChunkFile(m, key, data, maxFile)) {
+        if (!readChunk(store, m, key, data, maxFile)) {
           ++missing;
           for (uint64_t z = 0; z < nz; ++z)
             for (uint64_t y = 0; y < ny; ++y) {
@@ -131,7 +118,7 @@ ChunkCount readSpatial(const ArrayMeta& m, const LoadOptions& options, uint8_t* 
               for (uint64_t x = 0; x < nx; ++x) std::memcpy(row + x * ts, fill.data(), ts);
             }
         } else {
-          const std::string where = (fs::path(m.folder) / key).string();
+          const std::string where = store.where(m.storeKey(key));
           if (m.crc32cSuffix) {
             if (data.size() < 4) throw inputError(where + ": the chunk is truncated (no checksum)");
             data.resize(data.size() - 4);  // the checksum is not verified (zlib has no CRC-32C)
@@ -162,29 +149,31 @@ std::string number(double v) {
 
 }  // namespace
 
-Volume importOmeZarr(const std::string& path, const LoadOptions& options) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw inputError(path + ": no such folder");
-  detail::refuseSpecialFile(path);
-  report(options, 0.0, "Reading " + fs::path(path).filename().string());
-  const zarr::Pyramid pyramid = zarr::readPyramid(path);
-  if (options.level < 0 || size_t(options.level) >= pyramid.levels.size())
-    throw inputError(path + ": --level " + std::to_string(options.level) +
+namespace zarr {
+
+void checkLevelIndex(const Pyramid& pyramid, int index, const std::string& where) {
+  if (index < 0 || size_t(index) >= pyramid.levels.size())
+    throw inputError(where + ": --level " + std::to_string(index) +
                      " is out of range: the pyramid has " + std::to_string(pyramid.levels.size()) +
                      " level" + (pyramid.levels.size() == 1 ? "" : "s") + " (0 to " +
                      std::to_string(pyramid.levels.size() - 1) + ")");
-  const zarr::Level& level = pyramid.levels[size_t(options.level)];
-  const ArrayMeta m = zarr::readArrayMeta(level.folder, pyramid.format);
+}
+
+Volume describeLevel(const Pyramid& pyramid, int index, const ArrayMeta& m,
+                     const std::string& where) {
+  checkLevelIndex(pyramid, index, where);
+  const Level& level = pyramid.levels[size_t(index)];
   if (m.shape.size() != pyramid.axes)
     throw inputError(m.metadataFile + ": the array has " + std::to_string(m.shape.size()) +
                      " dimensions but the multiscales metadata names " +
                      std::to_string(pyramid.axes) + " axes; the metadata is damaged");
   const size_t n = m.shape.size();
-  std::vector<std::string> warnings = pyramid.warnings;
+  Volume v;
+  v.warnings = pyramid.warnings;
   for (size_t a = 0; a + 3 < n; ++a)
     if (m.shape[a] > 1)
-      warnings.push_back("the array has " + std::to_string(m.shape[a]) + " along its '" +
-                         pyramid.axisNames[a] + "' axis; Voxray shows the first");
+      v.warnings.push_back("the array has " + std::to_string(m.shape[a]) + " along its '" +
+                           pyramid.axisNames[a] + "' axis; Voxray shows the first");
   const std::array<uint64_t, 3> dims = {m.shape[n - 1], m.shape[n - 2], m.shape[n - 3]};
   uint64_t count = 1;
   for (uint64_t d : dims) {
@@ -194,28 +183,57 @@ Volume importOmeZarr(const std::string& path, const LoadOptions& options) {
                        std::to_string(kMaxVoxels) + "); open a coarser level with --level");
     count *= d;
   }
-
-  Volume v;
+  for (int i = 0; i < 3; ++i)
+    if (dims[size_t(i)] > uint64_t(std::numeric_limits<int>::max()))
+      throw inputError(m.metadataFile + ": the shape " + nlohmann::json(m.shape).dump() + " has " +
+                       std::to_string(dims[size_t(i)]) + " voxels along " + "xyz"[i] +
+                       "; Voxray holds at most " + std::to_string(std::numeric_limits<int>::max()) +
+                       " along an axis");
   v.dims = glm::ivec3(int(dims[0]), int(dims[1]), int(dims[2]));
   v.spacingMm = level.spacingMm;
   v.direction = pyramid.direction;
   v.originMm = pyramid.direction * level.translationMm;
+  const glm::dvec3 extent = v.spacingMm * glm::dvec3(v.dims);
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(v.originMm[i]) || !std::isfinite(extent[i]))
+      throw inputError(m.metadataFile + ": level " + std::to_string(index) +
+                       " reaches beyond any length (its origin or extent along " + "xyz"[i] +
+                       " passes 1e308 mm); the multiscales metadata is damaged");
   v.unit = pyramid.unit;
   v.modality = pyramid.modality;
-  v.sourceType = zarr::kindName(m.kind);
+  v.sourceType = kindName(m.kind);
+  return v;
+}
+
+}  // namespace zarr
+
+Volume importOmeZarr(const std::string& path, const LoadOptions& options) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw inputError(path + ": no such folder");
+  detail::refuseSpecialFile(path);
+  report(options, 0.0, "Reading " + fs::path(path).filename().string());
+  return importOmeZarr(*zarrFolderStore(path), options);
+}
+
+Volume importOmeZarr(ZarrStore& store, const LoadOptions& options) {
+  const zarr::Pyramid pyramid = zarr::readPyramid(store);
+  zarr::checkLevelIndex(pyramid, options.level, store.where(""));
+  const ArrayMeta m =
+      zarr::readArrayMeta(store, pyramid.levels[size_t(options.level)].path, pyramid.format);
+  Volume v = zarr::describeLevel(pyramid, options.level, m, store.where(""));
+  const std::array<uint64_t, 3> dims = {uint64_t(v.dims.x), uint64_t(v.dims.y), uint64_t(v.dims.z)};
   v.voxels.resize(v.voxelCount());
   // int16 chunks go straight into the voxels (stored = value); other types through a buffer
   // of their own and raw input's storage rule.
   std::vector<uint8_t> samples;
   if (m.kind != detail::SampleKind::I16) samples.resize(v.voxelCount() * m.typeSize());
-  const ChunkCount s = readSpatial(
-      m, options, samples.empty() ? reinterpret_cast<uint8_t*>(v.voxels.data()) : samples.data());
+  const ChunkCount s =
+      readSpatial(store, m, options,
+                  samples.empty() ? reinterpret_cast<uint8_t*>(v.voxels.data()) : samples.data());
   if (s.missing)
-    warnings.push_back(std::to_string(s.missing) + " of " + std::to_string(s.total) +
-                       " chunks are missing in " + m.folder + "; they show the fill value " +
-                       number(m.fill));
-
-  v.warnings = warnings;
+    v.warnings.push_back(std::to_string(s.missing) + " of " + std::to_string(s.total) +
+                         " chunks are missing in " + store.where(m.path) +
+                         "; they show the fill value " + number(m.fill));
   if (!samples.empty()) {
     detail::SampleDecoding decoding;
     decoding.kind = m.kind;

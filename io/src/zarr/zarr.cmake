@@ -8,6 +8,7 @@ pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
 target_sources(voxray_io PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/zarr_codecs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/zarr_array.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/zarr_folder_store.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ome_zarr_meta.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ome_zarr_read.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ome_zarr_write.cpp)

@@ -2,14 +2,10 @@
 
 #include <bit>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "voxray/io/error.h"
-
-namespace fs = std::filesystem;
 
 namespace voxray::zarr {
 namespace {
@@ -18,7 +14,7 @@ using detail::SampleKind;
 using Json = nlohmann::json;
 
 // Metadata files are small; a larger one is not metadata (or is hostile).
-constexpr uintmax_t kMaxJsonBytes = 16u << 20;
+constexpr uint64_t kMaxJsonBytes = 16u << 20;
 
 bool littleEndianMachine() { return std::endian::native == std::endian::little; }
 
@@ -94,6 +90,43 @@ double fillOf(const ArrayMeta& m, const Json& j) {
     if (s == "-Infinity") return -std::numeric_limits<double>::infinity();
   }
   bad(m, "fill_value " + j.dump() + " is not a number");
+}
+
+// A missing chunk's samples are the fill value in the array's type: it must be one of them
+// (converting 1e308 to int16 is undefined). A non-finite fill of an integer type reads as 0.
+void checkFill(const ArrayMeta& m) {
+  if (!std::isfinite(m.fill)) return;
+  double lo = -std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::max();
+  switch (m.kind) {
+    case SampleKind::U8:
+      lo = 0, hi = 255;
+      break;
+    case SampleKind::I8:
+      lo = -128, hi = 127;
+      break;
+    case SampleKind::U16:
+      lo = 0, hi = 65535;
+      break;
+    case SampleKind::I16:
+      lo = -32768, hi = 32767;
+      break;
+    case SampleKind::U32:
+      lo = 0, hi = 4294967295.0;
+      break;
+    case SampleKind::I32:
+      lo = -2147483648.0, hi = 2147483647.0;
+      break;
+    case SampleKind::F32:
+      break;
+    case SampleKind::F64:
+      return;
+  }
+  if (m.fill < lo || m.fill > hi) {
+    std::ostringstream text;
+    text << "fill_value " << m.fill << " is not a value of " << m.dataType << " (" << lo << " to "
+         << hi << "); the metadata is damaged: write the array again";
+    bad(m, text.str());
+  }
 }
 
 Codec bloscOf(const ArrayMeta& m, const Json& config) {
@@ -228,20 +261,23 @@ void readV3(ArrayMeta& m, const Json& j) {
 
 }  // namespace
 
-Json readJsonFile(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw inputError(path + ": is missing; the Zarr folder is incomplete (copy it again)");
-  const uintmax_t size = fs::file_size(path, ec);
-  if (ec || size > kMaxJsonBytes)
-    throw inputError(path + ": is larger than 16 MiB; it is not Zarr metadata");
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  Json j = Json::parse(text.str(), nullptr, false);
+bool readMetadata(ZarrStore& store, const std::string& key, std::vector<uint8_t>& bytes) {
+  return store.read(key, bytes, kMaxJsonBytes, "is larger than 16 MiB; it is not Zarr metadata");
+}
+
+Json parseJson(const std::vector<uint8_t>& bytes, const std::string& where) {
+  Json j = Json::parse(bytes.begin(), bytes.end(), nullptr, false);
   if (j.is_discarded())
-    throw inputError(path + ": is not valid JSON; the Zarr metadata is damaged");
+    throw inputError(where + ": is not valid JSON; the Zarr metadata is damaged");
   return j;
+}
+
+Json readJson(ZarrStore& store, const std::string& key) {
+  std::vector<uint8_t> bytes;
+  if (!readMetadata(store, key, bytes))
+    throw inputError(store.where(key) +
+                     ": is missing; the Zarr folder is incomplete (copy it again)");
+  return parseJson(bytes, store.where(key));
 }
 
 uint64_t ArrayMeta::chunkSamples() const {
@@ -259,12 +295,22 @@ std::string ArrayMeta::chunkKey(const std::vector<uint64_t>& index) const {
   return key;
 }
 
-ArrayMeta readArrayMeta(const std::string& folder, int format) {
+ArrayMeta readArrayMeta(ZarrStore& store, const std::string& path, int format) {
+  const std::string key = path + (format == 2 ? "/.zarray" : "/zarr.json");
+  std::vector<uint8_t> bytes;
+  if (!readMetadata(store, key, bytes))
+    throw inputError(store.where(key) +
+                     ": is missing; the Zarr folder is incomplete (copy it again)");
+  return parseArrayMeta(bytes, path, store.where(key), format);
+}
+
+ArrayMeta parseArrayMeta(const std::vector<uint8_t>& document, const std::string& path,
+                         const std::string& metadataFile, int format) {
   ArrayMeta m;
   m.format = format;
-  m.folder = folder;
-  m.metadataFile = (fs::path(folder) / (format == 2 ? ".zarray" : "zarr.json")).string();
-  const Json j = readJsonFile(m.metadataFile);
+  m.path = path;
+  m.metadataFile = metadataFile;
+  const Json j = parseJson(document, metadataFile);
   if (!j.is_object()) bad(m, "is not a JSON object");
   try {
     if (format == 2)
@@ -274,6 +320,7 @@ ArrayMeta readArrayMeta(const std::string& folder, int format) {
   } catch (const Json::exception& e) {
     bad(m, std::string("has a field of the wrong kind (") + e.what() + ")");
   }
+  checkFill(m);
   if (m.chunks.size() != m.shape.size())
     bad(m, "the chunks have " + std::to_string(m.chunks.size()) + " dimensions, the shape " +
                std::to_string(m.shape.size()));

@@ -10,14 +10,15 @@
 #include <nlohmann/json.hpp>
 
 #include "../raw_samples.h"
+#include "voxray/io/ome_zarr.h"
 #include "zarr_codecs.h"
 
 namespace voxray::zarr {
 
 struct ArrayMeta {
   int format = 2;               // Zarr v2 or v3
-  std::string folder;           // the array's folder
-  std::string metadataFile;     // .zarray or zarr.json, for messages
+  std::string path;             // the array's key prefix in the store ("0", "s1")
+  std::string metadataFile;     // .zarray or zarr.json, where the store says it is, for messages
   std::vector<uint64_t> shape;  // C order: the last index varies fastest
   std::vector<uint64_t> chunks;
   detail::SampleKind kind = detail::SampleKind::I16;
@@ -32,8 +33,10 @@ struct ArrayMeta {
   size_t typeSize() const { return detail::sampleBytes(kind); }
   // Samples and bytes of one chunk (edge chunks are stored whole, too).
   uint64_t chunkSamples() const;
-  // The chunk at grid position INDEX: its file, below folder.
+  // The chunk at grid position INDEX: its key below path.
   std::string chunkKey(const std::vector<uint64_t>& index) const;
+  // Its key in the store.
+  std::string storeKey(const std::string& chunk) const { return path + "/" + chunk; }
 };
 
 // Largest chunk Voxray decodes (uncompressed): beyond it the metadata is taken as damaged,
@@ -43,12 +46,20 @@ inline constexpr uint64_t kMaxChunkBytes = uint64_t(512) << 20;
 // Most chunks in one array: a 2048^3 volume in 8^3 chunks. Beyond, a read would take hours.
 inline constexpr uint64_t kMaxChunkCount = uint64_t(1) << 24;
 
-// Reads and checks FOLDER's array metadata of Zarr FORMAT (2 or 3). Throws Error (Input)
-// naming the metadata file and what is wrong.
-ArrayMeta readArrayMeta(const std::string& folder, int format);
+// Reads and checks the array metadata of Zarr FORMAT (2 or 3) at PATH in STORE. Throws Error
+// (Input) naming the metadata file and what is wrong.
+ArrayMeta readArrayMeta(ZarrStore& store, const std::string& path, int format);
+// The same from the metadata's bytes, named METADATA_FILE in messages (the fuzz target's
+// entry: no store).
+ArrayMeta parseArrayMeta(const std::vector<uint8_t>& bytes, const std::string& path,
+                         const std::string& metadataFile, int format);
 
-// Reads and parses a JSON file. Throws Error (Input) naming it when it is missing, too large
-// or not JSON.
-nlohmann::json readJsonFile(const std::string& path);
+// Reads and parses the JSON file KEY. Throws Error (Input) naming it when it is missing, too
+// large or not JSON.
+nlohmann::json readJson(ZarrStore& store, const std::string& key);
+// Parses BYTES as JSON. Throws Error (Input) naming WHERE when it is not JSON.
+nlohmann::json parseJson(const std::vector<uint8_t>& bytes, const std::string& where);
+// KEY's bytes, or false when STORE has no KEY; at most 16 MiB (metadata is small).
+bool readMetadata(ZarrStore& store, const std::string& key, std::vector<uint8_t>& bytes);
 
 }  // namespace voxray::zarr

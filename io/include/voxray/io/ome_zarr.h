@@ -8,6 +8,7 @@
 // axes (LPS origin = direction * translation). Only std and GLM types here.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,31 @@ namespace voxray {
 // (v2), or its name ends in .zarr.
 bool isOmeZarr(const std::string& path);
 
+// Where the files of a Zarr hierarchy come from, by key ("zarr.json", "0/.zarray",
+// "0/c/0/1/2"): a local folder (zarrFolderStore), or an http(s) URL through the PACS client's
+// HTTP session (voxray/io/zarr_url.h; network code stays out of this library).
+class ZarrStore {
+ public:
+  virtual ~ZarrStore() = default;
+  // KEY's file or URL as messages name it (never credentials); "" is the hierarchy itself.
+  virtual std::string where(const std::string& key) const = 0;
+  // Reads KEY into DATA. False when the store has no KEY (no such file; HTTP 404). Throws Error
+  // (Input) "where(KEY): TOO_LARGE" when KEY holds more than MAX_BYTES, and Error (Input)
+  // naming where(KEY) and what to do when it cannot be read. Called from several threads at
+  // once.
+  virtual bool read(const std::string& key, std::vector<uint8_t>& data, uint64_t maxBytes,
+                    const std::string& tooLarge) = 0;
+};
+
+// The folder PATH as a store (reads nothing yet).
+std::unique_ptr<ZarrStore> zarrFolderStore(const std::string& path);
+
 // Reads one level of the pyramid (options.level; 0 is full resolution) as a Volume of
-// physical values. Chunks that are missing read as the array's fill value, with a warning
+// physical values: the group's metadata, the level's array metadata and that level's chunks,
+// no other level's. Chunks that are missing read as the array's fill value, with one warning
 // saying how many. Throws Error (Input) naming the file or chunk and what is wrong.
 Volume importOmeZarr(const std::string& path, const LoadOptions& options = {});
+Volume importOmeZarr(ZarrStore& store, const LoadOptions& options = {});
 
 enum class ZarrCodec { BloscZstd, Zstd, Gzip, None };
 // "blosc-zstd", "zstd", "gzip", "none"; throws Error (Input) for another name.
