@@ -64,6 +64,10 @@ int benchFirstImage(const InputOptions& input, const RenderParams& params,
     coarseFrameMs = msSince(t);
     step("coarse frame", t, "upload, tables, kernel build and frame: the coarse preview");
     firstImageMs = msSince(start);
+    // Shown: the level and its tables go before the full volume's are made (the workstation
+    // keeps its preview until the full upload is done; the peak differs by 1/64 of the volume).
+    coarseRc.reset();
+    coarse = Volume();
   }
   t = Clock::now();
   Raycaster rc(ctx, v, parseStorage(o.storage));

@@ -47,7 +47,7 @@ struct BenchOptions {
   int stallRepeats = 0;  // --stall: replays of the end of a drag
   std::string drag;      // --drag: N frames of a replayed rotation, clip or clip:N
   double dragFps = Quality{}.dragFps;
-  int tfDragPairs = 0;  // --tf-drag: still/moved-table frame pairs
+  int tfDragPairs = 0;      // --tf-drag: still/moved-table frame pairs
   bool firstImage = false;  // --first-image: time to the first and the full image
   int coarseFactor = 4;
   BenchRun run;

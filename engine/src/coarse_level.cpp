@@ -12,7 +12,8 @@
 namespace voxray {
 
 Volume coarseLevel(const Volume& v, int factor) {
-  if (factor < 1) throw inputError("a coarse level's factor must be 1 or more, not " + std::to_string(factor));
+  if (factor < 1)
+    throw inputError("a coarse level's factor must be 1 or more, not " + std::to_string(factor));
   if (v.voxelCount() == 0 || v.voxels.size() != v.voxelCount())
     throw inputError("the volume is empty or its voxel count does not match its dimensions");
   Volume c;
@@ -37,13 +38,20 @@ Volume coarseLevel(const Volume& v, int factor) {
   const size_t rowX = size_t(n.x), slice = size_t(n.x) * size_t(n.y);
   parallelFor(size_t(c.dims.z), [&](size_t cz) {
     // Sums of one coarse slice, then their means: the fine slab is read once, row by row.
-    std::vector<int64_t> sum(size_t(c.dims.x) * size_t(c.dims.y), 0);
+    // int32: at most 8^3 values of at most 2^15 each.
+    std::vector<int32_t> sum(size_t(c.dims.x) * size_t(c.dims.y), 0);
     const int z0 = int(cz) * factor, z1 = std::min(n.z, z0 + factor);
+    const int whole = n.x / factor;  // coarse cells with FACTOR voxels along x
     for (int z = z0; z < z1; ++z)
       for (int y = 0; y < n.y; ++y) {
         const int16_t* row = v.voxels.data() + size_t(z) * slice + size_t(y) * rowX;
-        int64_t* out = sum.data() + size_t(y / factor) * size_t(c.dims.x);
-        for (int x = 0; x < n.x; ++x) out[x / factor] += row[x];
+        int32_t* out = sum.data() + size_t(y / factor) * size_t(c.dims.x);
+        for (int cx = 0; cx < whole; ++cx) {
+          int32_t t = 0;
+          for (int i = 0; i < factor; ++i) t += row[cx * factor + i];
+          out[cx] += t;
+        }
+        for (int x = whole * factor; x < n.x; ++x) out[whole] += row[x];
       }
     int16_t* dst = c.voxels.data() + cz * size_t(c.dims.x) * size_t(c.dims.y);
     const int zn = z1 - z0;

@@ -35,8 +35,8 @@ struct Raycaster::Impl {
   size_t outCapacity = 0;
   EmptySpace space;
   double emptySpaceMs = 0.0;  // the last space.upload (uploadTimes)
-  LightVolume light;       // shadows, ao (issue 15): the light grid behind the table
-  bool holdLight = false;  // holdLightGrid: keep the grid while only the light moves
+  LightVolume light;          // shadows, ao (issue 15): the light grid behind the table
+  bool holdLight = false;     // holdLightGrid: keep the grid while only the light moves
   // The camera-relative light (followCamera) the grid was last built for: a drag holds the
   // grid only while the light keeps that place (a camera drag), not while the light itself
   // is dragged (its shadows are what that drag is for).
