@@ -230,6 +230,8 @@ void Raycaster::Impl::upload() {
   });
   const auto t0 = std::chrono::steady_clock::now();
   space.upload(cl, volume);
+  // The first frame's value range from the cells: a pass over a 1 GiB volume saved (issue 38).
+  frame->valueRange = ValueRange{int16_t(space.valueLo()), int16_t(space.valueHi())};
   emptySpaceMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
