@@ -46,11 +46,15 @@ Volume coarseLevel(const Volume& v, int factor) {
       for (int y = 0; y < n.y; ++y) {
         const int16_t* row = v.voxels.data() + size_t(z) * slice + size_t(y) * rowX;
         int32_t* out = sum.data() + size_t(y / factor) * size_t(c.dims.x);
-        for (int cx = 0; cx < whole; ++cx) {
-          int32_t t = 0;
-          for (int i = 0; i < factor; ++i) t += row[cx * factor + i];
-          out[cx] += t;
-        }
+        if (factor == 4)  // the usual level: a constant the compiler unrolls and vectorises
+          for (int cx = 0; cx < whole; ++cx)
+            out[cx] += int32_t(row[4 * cx]) + row[4 * cx + 1] + row[4 * cx + 2] + row[4 * cx + 3];
+        else
+          for (int cx = 0; cx < whole; ++cx) {
+            int32_t t = 0;
+            for (int i = 0; i < factor; ++i) t += row[cx * factor + i];
+            out[cx] += t;
+          }
         for (int x = whole * factor; x < n.x; ++x) out[whole] += row[x];
       }
     int16_t* dst = c.voxels.data() + cz * size_t(c.dims.x) * size_t(c.dims.y);
