@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "bench_drag.h"
+#include "bench_first_image.h"
 #include "bench_multidev.h"
 #include "bench_plot.h"
 #include "bench_run.h"
@@ -46,7 +47,9 @@ struct BenchOptions {
   int stallRepeats = 0;  // --stall: replays of the end of a drag
   std::string drag;      // --drag: N frames of a replayed rotation, clip or clip:N
   double dragFps = Quality{}.dragFps;
-  int tfDragPairs = 0;  // --tf-drag: still/moved-table frame pairs
+  int tfDragPairs = 0;      // --tf-drag: still/moved-table frame pairs
+  bool firstImage = false;  // --first-image: time to the first and the full image
+  int coarseFactor = 4;
   BenchRun run;
   bool json = false, csv = false, seedTable = false, noCount = false;
   size_t slabMib = 0;
@@ -163,6 +166,15 @@ Run addBenchCommand(CLI::App& app) {
                   "pairs of frames at a still camera, the table unchanged then moved 1 HU: the "
                   "transfer-function edit's update cost (issue 35)")
       ->check(CLI::Range(1, 100000));
+  cmd->add_flag("--first-image", o->firstImage,
+                "time from the start to the first image (a coarse level's frame) and to the "
+                "full-resolution frame of the first --sizes, split by step (read, coarse level, "
+                "upload, empty-space tables, frames), with the peak resident memory against "
+                "the volume's bytes (issue 38)");
+  cmd->add_option("--coarse-factor", o->coarseFactor,
+                  "--first-image: the coarse level's reduction per axis, 2, 4 or 8 (box mean); "
+                  "1: no coarse frame (the full frame is the first image, as before)")
+      ->check(CLI::IsMember({1, 2, 4, 8}));
   cmd->add_option("--drag-fps", o->dragFps, "the drag replay's target frame rate (the 3D view's)")
       ->check(CLI::Range(kDragFpsMin, kDragFpsMax));
   CLI::Option* gradientsOption = nullptr;
@@ -216,6 +228,17 @@ Run addBenchCommand(CLI::App& app) {
     o->run.countSamples = !o->noCount;
     o->run.orbit = o->orbit == "elevation" ? Orbit::Elevation : Orbit::Azimuth;
     if (o->multi.active()) return benchSplit(*o);
+    if (o->firstImage) {
+      RenderParams p = o->flags.params();
+      findRenderParamSpec("size").parse(p, split(o->sizes).front());
+      p.gradient = parseGradient(split(o->gradients).front());
+      FirstImageOptions fo;
+      fo.coarseFactor = o->coarseFactor;
+      fo.device = o->device;
+      fo.storage = o->storage;
+      fo.json = o->json;
+      return benchFirstImage(o->input, p, fo, std::cout);
+    }
     ClContext ctx(o->device);
     std::vector<std::string> kernels = {o->kernel};
     if (o->kernel == "both") kernels = {"specialised", "uber"};

@@ -20,11 +20,14 @@ class DeviceVolume {
   // this). Throws Error (Device) when the volume cannot be split within the limits.
   void upload(ContextImpl& cl, const Volume& volume, VolumeStorage storage, size_t maxSlabBytes);
   const SlabPlan& plan() const { return plan_; }
+  // Wall time of the last upload (buffers made and the voxels written), for bench timings.
+  double uploadMs() const { return uploadMs_; }
   // Sets the kernel arguments vol0 .. from index `first`; returns the next free index.
   cl_uint setArgs(cl::Kernel& kernel, cl_uint first) const;
 
  private:
   SlabPlan plan_;
+  double uploadMs_ = 0.0;
   std::vector<cl::Buffer> buffers_;
   std::vector<cl::Image3D> images_;
 };

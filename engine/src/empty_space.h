@@ -39,6 +39,10 @@ class EmptySpace {
   void setOverlayCells(ContextImpl& cl, const std::vector<uint8_t>& cells);
   const glm::ivec3& dims() const { return cells_.dims; }
   const MacroCells& cells() const { return cells_; }
+  // The smallest and largest stored value of the volume (every voxel lies in a cell): what
+  // storedRange(volume) gives, without another pass over it.
+  int valueLo() const { return valueLo_; }
+  int valueHi() const { return valueHi_; }
   const cl::Buffer& range() const { return range_; }
   // Per cell, the chessboard distance in cells to the nearest occupied one (0: occupied),
   // capped at MAX_LEAP (kernels/empty_space/classify.cl); then, after every cell's, each cell's

@@ -1,6 +1,8 @@
 #include "macro_cells.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <vector>
 
 #include "voxray/io/parallel.h"
 #include "voxray/io/volume.h"
@@ -9,27 +11,48 @@ namespace voxray {
 
 namespace {
 
+// One slab of cells, reduced one axis at a time: the z span's slices into one plane of
+// per-voxel minima and maxima, then the y spans' rows, then the x spans. Each step is an
+// elementwise min/max over contiguous rows that the compiler vectorises; the plain loop over
+// each cell's 6^3 voxels (apron included) took 2.5-4 s of a 1 GiB volume's first frame here
+// (issue 38), this reads each voxel about 1.5 times.
 void cellSlab(const Volume& v, MacroCells& m, int cz) {
   const glm::ivec3 d = v.dims;
   auto span = [](int c, int n) {
     return glm::ivec2(std::max(c * kCellSize - 1, 0), std::min((c + 1) * kCellSize, n - 1));
   };
-  glm::ivec2 z = span(cz, d.z);
+  const size_t nx = size_t(d.x), plane = nx * size_t(d.y);
+  const glm::ivec2 z = span(cz, d.z);
+  std::vector<int16_t> zLo(v.voxels.begin() + ptrdiff_t(size_t(z.x) * plane),
+                           v.voxels.begin() + ptrdiff_t(size_t(z.x + 1) * plane));
+  std::vector<int16_t> zHi = zLo;
+  for (int k = z.x + 1; k <= z.y; ++k) {
+    const int16_t* src = v.voxels.data() + size_t(k) * plane;
+    for (size_t i = 0; i < plane; ++i) {
+      zLo[i] = std::min(zLo[i], src[i]);
+      zHi[i] = std::max(zHi[i], src[i]);
+    }
+  }
+  std::vector<int16_t> yLo(nx), yHi(nx);
   for (int cy = 0; cy < m.dims.y; ++cy) {
-    glm::ivec2 y = span(cy, d.y);
+    const glm::ivec2 y = span(cy, d.y);
+    std::copy_n(zLo.begin() + ptrdiff_t(size_t(y.x) * nx), nx, yLo.begin());
+    std::copy_n(zHi.begin() + ptrdiff_t(size_t(y.x) * nx), nx, yHi.begin());
+    for (int j = y.x + 1; j <= y.y; ++j) {
+      const int16_t* lo = zLo.data() + size_t(j) * nx;
+      const int16_t* hi = zHi.data() + size_t(j) * nx;
+      for (size_t i = 0; i < nx; ++i) {
+        yLo[i] = std::min(yLo[i], lo[i]);
+        yHi[i] = std::max(yHi[i], hi[i]);
+      }
+    }
+    const size_t row = (size_t(cz) * size_t(m.dims.y) + size_t(cy)) * size_t(m.dims.x);
     for (int cx = 0; cx < m.dims.x; ++cx) {
-      glm::ivec2 x = span(cx, d.x);
-      int16_t lo = INT16_MAX, hi = INT16_MIN;
-      for (int k = z.x; k <= z.y; ++k)
-        for (int j = y.x; j <= y.y; ++j) {
-          const int16_t* row = &v.voxels[v.index(x.x, j, k)];
-          auto [a, b] = std::minmax_element(row, row + (x.y - x.x + 1));
-          lo = std::min(lo, *a);
-          hi = std::max(hi, *b);
-        }
-      size_t cell = (size_t(cz) * size_t(m.dims.y) + size_t(cy)) * size_t(m.dims.x) + size_t(cx);
-      m.minMax[cell * 2] = lo;
-      m.minMax[cell * 2 + 1] = hi;
+      const glm::ivec2 x = span(cx, d.x);
+      const int16_t lo = *std::min_element(yLo.begin() + x.x, yLo.begin() + x.y + 1);
+      const int16_t hi = *std::max_element(yHi.begin() + x.x, yHi.begin() + x.y + 1);
+      m.minMax[(row + size_t(cx)) * 2] = lo;
+      m.minMax[(row + size_t(cx)) * 2 + 1] = hi;
     }
   }
 }

@@ -34,8 +34,9 @@ struct Raycaster::Impl {
   cl::Buffer outBuffer;
   size_t outCapacity = 0;
   EmptySpace space;
-  LightVolume light;       // shadows, ao (issue 15): the light grid behind the table
-  bool holdLight = false;  // holdLightGrid: keep the grid while only the light moves
+  double emptySpaceMs = 0.0;  // the last space.upload (uploadTimes)
+  LightVolume light;          // shadows, ao (issue 15): the light grid behind the table
+  bool holdLight = false;     // holdLightGrid: keep the grid while only the light moves
   // The camera-relative light (followCamera) the grid was last built for: a drag holds the
   // grid only while the light keeps that place (a camera drag), not while the light itself
   // is dragged (its shadows are what that drag is for).
@@ -227,7 +228,12 @@ void Raycaster::Impl::upload() {
     countBuffer = cl::Buffer(cl.context, CL_MEM_READ_WRITE, 64 * sizeof(cl_uint));
     return 0;
   });
+  const auto t0 = std::chrono::steady_clock::now();
   space.upload(cl, volume);
+  // The first frame's value range from the cells: a pass over a 1 GiB volume saved (issue 38).
+  frame->valueRange = ValueRange{int16_t(space.valueLo()), int16_t(space.valueHi())};
+  emptySpaceMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
@@ -289,6 +295,10 @@ VolumeStorage Raycaster::storage() const { return impl_->storage; }
 
 std::string Raycaster::variantOptions(const RenderParams& p) const {
   return impl_->options(impl_->switches(p));
+}
+
+Raycaster::UploadTimes Raycaster::uploadTimes() const {
+  return {impl_->device.uploadMs(), impl_->emptySpaceMs};
 }
 
 int Raycaster::slabCount() const { return impl_->device.plan().count(); }

@@ -14,6 +14,7 @@
 #include <system_error>
 #include <vector>
 
+#include "consumed_pages.h"
 #include "file_kind.h"
 #include "raw_messages.h"
 #include "raw_samples.h"
@@ -277,6 +278,9 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
       [&](size_t k) {
         detail::storeSamples(raw + k * sliceBytes, sliceVoxels, decoding, storage,
                              v.voxels.data() + k * sliceVoxels);
+        // 8- and 32-bit samples: the read buffer's slice is stored, its pages can go (the
+        // peak stays near the volume plus what is read of one slice per thread).
+        if (!inPlace) detail::releaseConsumedPages(raw + k * sliceBytes, sliceBytes);
       },
       feedback.cancel);
   if (cancelled()) throw cancelledError("loading cancelled");

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
 
@@ -48,6 +50,20 @@ void visitSamples(const uint8_t* raw, size_t count, const SampleDecoding& d, F&&
                                      visitAs<uint32_t, F>, visitAs<int32_t, F>,
                                      visitAs<float, F>,    visitAs<double, F>};
   visits[int(d.kind)](raw, count, d, f);
+}
+
+// Native 16-bit samples with slope 1 and a whole intercept (CT raw files, NRRD, NIfTI without
+// scaling): scanned and stored in integer loops. Through doubles and nearbyint they took 40 %
+// of a 1 GiB raw load (perf; issue 38's first image).
+bool wholeI16(const SampleDecoding& d) {
+  return d.kind == SampleKind::I16 && !d.swap && d.slope == 1.0 &&
+         d.intercept == std::nearbyint(d.intercept) && std::fabs(d.intercept) < 1e9;
+}
+
+int16_t loadI16(const uint8_t* raw, size_t i) {
+  int16_t v;
+  std::memcpy(&v, raw + 2 * i, 2);
+  return v;
 }
 
 std::string number(double v) {
@@ -99,6 +115,20 @@ void ValueStats::merge(const ValueStats& o) {
 
 ValueStats scanSamples(const uint8_t* raw, size_t count, const SampleDecoding& decoding) {
   ValueStats s;
+  if (wholeI16(decoding)) {
+    int lo = INT16_MAX, hi = INT16_MIN;
+    for (size_t i = 0; i < count; ++i) {
+      const int v = loadI16(raw, i);
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    if (count > 0) {
+      s.any = true;
+      s.min = lo + decoding.intercept;
+      s.max = hi + decoding.intercept;
+    }
+    return s;
+  }
   double lo = INFINITY, hi = -INFINITY;
   visitSamples(raw, count, decoding, [&](size_t, double v) {
     if (!std::isfinite(v)) {
@@ -166,6 +196,17 @@ void decodeSamples(const uint8_t* raw, size_t count, const SampleDecoding& decod
 
 void storeSamples(const uint8_t* raw, size_t count, const SampleDecoding& decoding,
                   const Storage& storage, int16_t* out) {
+  if (wholeI16(decoding) && storage.slope == 1.0 &&
+      storage.intercept == std::nearbyint(storage.intercept) &&
+      std::fabs(storage.intercept) < 1e9) {
+    // stored = raw + intercept - storage intercept, exactly as the rounding below gives it.
+    const int delta = int(decoding.intercept - storage.intercept);
+    if (delta == 0 && static_cast<const void*>(raw) == static_cast<const void*>(out))
+      return;  // read into the voxels in place and already what they store
+    for (size_t i = 0; i < count; ++i)
+      out[i] = int16_t(std::clamp(int(loadI16(raw, i)) + delta, -32768, 32767));
+    return;
+  }
   const double inverse = 1.0 / storage.slope, offset = storage.intercept;
   const auto toStored = [&](double v) {
     const double s = std::nearbyint((v - offset) * inverse);

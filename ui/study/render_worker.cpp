@@ -8,6 +8,7 @@
 #include <thread>
 #include <utility>
 
+#include "voxray/engine/coarse_level.h"
 #include "voxray/io/error.h"
 
 namespace voxray {
@@ -152,6 +153,31 @@ void RenderWorker::buildLoop(ClContext& ctx) {
       left = int(toBuild_.size());
     }
     if (callbacks_.preparing) task_.post([f = callbacks_.preparing, left] { f(left); });
+  }
+}
+
+void RenderWorker::previewCoarse(ClContext& ctx, const Volume& volume,
+                                 const std::optional<RenderParams>& lastView) {
+  std::optional<RenderParams> params;
+  {
+    std::lock_guard lock(mutex_);
+    if (pendingView_) params = pendingView_->params;  // the new study's view, when asked yet
+  }
+  if (!params) params = lastView;
+  if (!params || !callbacks_.frame) return;
+  try {
+    // 4x (8x above 32 M voxels at 4x: a 2048 x 2048 x 1024 volume), a box mean: see
+    // coarse_level.h for why not a max.
+    const Volume level = coarseLevel(volume, coarseFactorFor(volume, size_t(1) << 25) < 8 ? 4 : 8);
+    Raycaster preview(ctx, level);
+    auto frame = std::make_shared<Frame>();
+    frame->params = *params;
+    frame->coarse = true;
+    frame->volume = &volume;
+    preview.rendererFor(*params).render(*params, frame->image, &frame->stats);
+    task_.post([f = callbacks_.frame, frame] { f(frame); });
+  } catch (const std::exception&) {
+    // No preview: the full upload that follows renders or says what is wrong.
   }
 }
 
@@ -328,6 +354,8 @@ void RenderWorker::run() {
       if (!sameSeries) {
         // Another study: it replaces every volume uploaded, once it is on the device (a
         // failed upload leaves the last study rendering).
+        if (nextVolume->byteSize() >= kCoarsePreviewBytes)
+          previewCoarse(*ctx, *nextVolume, lastView);
         try {
           auto next = std::make_unique<Raycaster>(*ctx, *nextVolume);
           raycaster = nullptr;

@@ -42,7 +42,17 @@ struct Frame {
   RowBand band;  // the band this frame added
   // The volume it shows (identity only, never read): a 4D series' frames say their time point.
   const Volume* volume = nullptr;
+  // A coarse level's preview of a new study (issue 38): rendered from a 4x (or 8x) box-mean
+  // level of the volume, in its geometry, before the full volume is uploaded; the frame of the
+  // full volume follows. Show it, and say "coarse preview" while it shows.
+  bool coarse = false;
 };
+
+// A new study of at least this many bytes is previewed from a coarse level before its upload
+// (a 512 x 512 x 128 CT; smaller volumes upload about as fast as the preview would render).
+constexpr size_t kCoarsePreviewBytes = size_t(64) << 20;
+// What the workstation's status bar says while a coarse frame shows.
+inline constexpr const char* kCoarsePreviewText = "coarse preview: the full volume is uploading…";
 
 struct RenderCallbacks {
   std::function<void(std::shared_ptr<const Frame>)> frame;
@@ -119,6 +129,10 @@ class RenderWorker {
   void buildLoop(ClContext& ctx);
   void run();
   void reportError(const std::string& message, bool volumeRejected) const;
+  // Posts a coarse frame (Frame::coarse) of VOLUME with the pending view's parameters (else
+  // LASTVIEW's; neither: nothing), on the render thread, before VOLUME is uploaded.
+  void previewCoarse(ClContext& ctx, const Volume& volume,
+                     const std::optional<RenderParams>& lastView);
   // The volumes on the device (one, or time points of a 4D series), each kept alive while
   // its raycaster uses it.
   struct Uploaded {

@@ -98,6 +98,7 @@ MainWindow::MainWindow(AppModels& models, const QString& device, QWidget* parent
   connect(scheduler_, &RenderScheduler::progressChanged, progressLabel, &QLabel::setText);
   // Each lighting model's cost on this scene is that of the frames it really rendered.
   connect(scheduler_, &RenderScheduler::frameReady, this, [this](std::shared_ptr<const Frame> f) {
+    if (f->coarse) return;  // a coarse level's preview costs what the full volume's does not
     models_.lighting.recordFrame(f->params, f->stats, f->interactive);
   });
   connect(scheduler_, &RenderScheduler::statsChanged, this,

@@ -169,6 +169,13 @@ void RenderScheduler::onFrame(std::shared_ptr<const Frame> frame) {
     emit exportReady(frame);
     return;
   }
+  if (frame->coarse) {
+    // Issue 38: a new study's preview from its coarse level while the full volume uploads;
+    // the status bar says so until the full frame's text replaces it. Not a full frame.
+    emit frameReady(frame);
+    emit progressChanged(QString::fromUtf8(kCoarsePreviewText));
+    return;
+  }
   if (frame->bandsDone < frame->bands) {
     emit bandReady(frame);
     return;

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "../consumed_pages.h"
 #include "../file_kind.h"
 #include "metaimage_read.h"
 #include "nifti_read.h"
@@ -198,6 +199,9 @@ Volume importVolumeFile(const std::string& path, const LoadOptions& options) {
       [&](size_t k) {
         detail::storeSamples(g.samples + k * sliceBytes, sliceVoxels, g.decoding, storage,
                              v.voxels.data() + k * sliceVoxels);
+        // The reader's buffer is the grid's own and read once: each slice's pages go as it
+        // is stored, so the peak is the volume once, not the file's samples beside it.
+        detail::releaseConsumedPages(g.samples + k * sliceBytes, sliceBytes);
       },
       options.cancel);
   throwIfCancelled(options);

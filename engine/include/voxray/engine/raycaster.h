@@ -136,6 +136,12 @@ class Raycaster : public Renderer {
   std::string variantOptions(const RenderParams& params) const;
   VolumeStorage storage() const;
   int slabCount() const;  // z slabs the volume is stored in (1: one buffer or image)
+  // Wall times of the constructor's upload (ms): the volume to the device (a re-upload of
+  // setOptions replaces it) and the empty-space tables built from it (bench --first-image).
+  struct UploadTimes {
+    double volumeMs = 0.0, emptySpaceMs = 0.0;
+  };
+  UploadTimes uploadTimes() const;
   // Uploads the volume again when maxSlabBytes changes (throws as the constructor).
   void setOptions(const RaycasterOptions& options);
   const RaycasterOptions& options() const;
