@@ -45,3 +45,5 @@ VOXRAY_PARAM(float4, gradient_opacity)
 // TF2D (tf2d_table.h): the stored value of column 0, columns per stored unit, rows per stored
 // unit / mm of |gradient|, unused.
 VOXRAY_PARAM(float4, tf2d)
+// PREINT (preint_table.h): the stored value of row and column 0, rows per stored unit, unused x 2.
+VOXRAY_PARAM(float4, preint)

@@ -111,6 +111,15 @@ VOXRAY_SWITCH(OVERLAY, 0, BUILD, "|overlay")
 // (classification/surfaces.cl), one more kernel argument. Set only where the raycaster holds a
 // segmentation with a visible surface segment, so every other variant compiles as before (#if).
 VOXRAY_SWITCH(SURFACES, 0, BUILD, "|surfaces")
+// dvr: pre-integrated classification (issue 40, RenderParams::preintegrate;
+// classification/preint.cl): each segment's colour and opacity from a 2D table over the
+// previous sample's value and this one's (preint_table.h, behind the colour table), the
+// opacity correction built in. A leap restarts from the sample before the first one it lands
+// on, so skipping still changes no pixel. Set only where the raycaster is asked for it
+// (KernelFacts::preintegrate), so every other variant compiles as before (#if); not with
+// ADAPTIVE, TF2D, GRADIENT_OPACITY, LABELS, OVERLAY or SURFACES (they classify one sample);
+// the light grid and the path tracer read the colour table.
+VOXRAY_SWITCH(PREINT, 0, BUILD, "|preint")
 
 // The packets' tuning (VOXRAY_TUNING above), measured on CPUs (docs/bench/history). An
 // experiment in a kernel directory (VOXRAY_KERNEL_DIR) tries another value with #undef and

@@ -16,6 +16,8 @@
 #              CThead in HU, 256x256x113, 1x1x2 mm), phantom64 (a 64^3 head-like phantom, for
 #              the test); default ct400,cthead
 #   MODES      default dvr,mip       STEPS   default 4,2,1,0.5,0.25 (voxels)
+#   PREINT_STEPS  dvr: also Voxray with --preintegrate on at these steps (voxels), its own rows
+#              "Voxray preint" (default none; e.g. 1,2,4,8)
 #   SIZE       default 512x384       ROUNDS  default 3      FRAMES  default 3 (per round)
 #   AZIMUTH, ELEVATION, ZOOM, FOV: the camera (defaults 30, 15, 1.3, 30)
 #   CLI        voxray-cli (default build/bin/voxray-cli)
@@ -87,6 +89,6 @@ done
 echo "load before: $(cat /proc/loadavg)" >&2
 VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow "$py" "$here/equal_error.py" --out "$out" --cli "$cli" \
   "${scenes[@]}" --modes "${MODES:-dvr,mip}" --steps "${STEPS:-4,2,1,0.5,0.25}" \
-  --size "${SIZE:-512x384}" --rounds "${ROUNDS:-3}" --frames "${FRAMES:-3}" \
+  --preint-steps "${PREINT_STEPS:-}" --size "${SIZE:-512x384}" --rounds "${ROUNDS:-3}" --frames "${FRAMES:-3}" \
   --device "${DEVICE:-cpu}" --azimuth "${AZIMUTH:-30}" --elevation "${ELEVATION:-15}" \
   --zoom "${ZOOM:-1.3}" --fov "${FOV:-30}"

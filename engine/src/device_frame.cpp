@@ -28,7 +28,7 @@ void DeviceFrame::upload(size_t maxSlabBytes) {
   });
 }
 
-void DeviceFrame::updateSetup(const RenderParams& p) {
+void DeviceFrame::updateSetup(const RenderParams& p, bool preint) {
   SetupKey key = setupKeyOf(p);
   if (key != setupKey) {
     if (!valueRange) valueRange = storedRange(volume);
@@ -36,6 +36,15 @@ void DeviceFrame::updateSetup(const RenderParams& p) {
     setupKey = std::move(key);
   }
   placeFrame(setup, volume, p);
+  if (!preint) {
+    setup.preint = {};
+    return;
+  }
+  // Opacity correction makes the table's opacities those of the step; without it they stay
+  // the table's, as for one sample.
+  double ratio = p.opacityCorrection ? setup.stepMm / setup.referenceStepMm : 1.0;
+  if (setup.preint.empty() || setup.preint.ratio != ratio)
+    setup.preint = bakePreintTable(setup.lut, ratio);
 }
 
 RaycastParams DeviceFrame::frameParams(const RenderParams& p, const KernelSwitches& sw) const {
@@ -69,6 +78,7 @@ RaycastParams DeviceFrame::frameParams(const RenderParams& p, const KernelSwitch
   if (sw.GRADIENT_OPACITY)
     k.gradient_opacity = f4(s.gradient.scale, double(s.gradient.factor.size()) - 1.0, 0, 0);
   if (sw.TF2D) k.tf2d = f4(s.tf2d.storedLo, s.tf2d.perStored, s.tf2d.perStoredPerMm, 0);
+  if (sw.PREINT) k.preint = f4(s.preint.storedLo, s.preint.perStored, 0, 0);
   packSwitches(sw, k);
   k.slabs = {{device.plan().depth, 0, 0, 0}};
   return k;
@@ -76,7 +86,7 @@ RaycastParams DeviceFrame::frameParams(const RenderParams& p, const KernelSwitch
 
 size_t DeviceFrame::tableBytes() const {
   return setup.lut.rgba.size() * sizeof(cl_float4) + setup.gradient.factor.size() * sizeof(float) +
-         setup.tf2d.rgba.size() * sizeof(cl_float4);
+         setup.tf2d.rgba.size() * sizeof(cl_float4) + setup.preint.rgba.size() * sizeof(cl_float4);
 }
 
 void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
@@ -87,6 +97,7 @@ void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
     lutUploaded.clear();
     gradientUploaded.clear();
     tf2dUploaded.clear();
+    preintUploaded.clear();
     ++lutAllocations;
   }
   cl::CommandQueue& q = cl.queue;
@@ -109,6 +120,15 @@ void DeviceFrame::uploadFrame(const RaycastParams& k, size_t extraBytes) {
     if (!tf2dUploaded.empty())
       q.enqueueWriteBuffer(lutBuffer, CL_FALSE, lutBytes + gradientUploaded.size() * sizeof(float),
                            tf2dUploaded.size() * sizeof(cl_float4), tf2dUploaded.data());
+  }
+  // The pre-integrated table (never with the other two: PREINT is not set with them) likewise.
+  if (setup.preint.rgba != preintUploaded) {
+    preintUploaded = setup.preint.rgba;
+    if (!preintUploaded.empty())
+      q.enqueueWriteBuffer(lutBuffer, CL_FALSE,
+                           lutBytes + gradientUploaded.size() * sizeof(float) +
+                               tf2dUploaded.size() * sizeof(cl_float4),
+                           preintUploaded.size() * sizeof(cl_float4), preintUploaded.data());
   }
 }
 

@@ -39,21 +39,24 @@ struct DeviceFrame {
 
   // The volume (resolving Auto storage) and the parameter buffer to the device.
   void upload(size_t maxSlabBytes);
-  void updateSetup(const RenderParams& p);
+  // PREINT: also the pre-integrated table (FrameSetup::preint) for P's step, made again only
+  // when the colour table or the step changed; without, none.
+  void updateSetup(const RenderParams& p, bool preint = false);
   // The frame's kernel parameters from the current setup (cells left 0: the raycaster's
   // macro-cell grid fills them).
   RaycastParams frameParams(const RenderParams& p, const KernelSwitches& sw) const;
   // The parameters and table to the device (the table only when it changed). EXTRA: bytes
   // after the tables in their buffer (the shadows / ao light grid, at tableBytes()).
   void uploadFrame(const RaycastParams& k, size_t extraBytes = 0);
-  // The colour table's bytes and the gradient-opacity table's (gradient_table.h) or the 2D
-  // transfer function's (tf2d_table.h) behind it.
+  // The colour table's bytes and the gradient-opacity table's (gradient_table.h), the 2D
+  // transfer function's (tf2d_table.h) or the pre-integrated one's (preint_table.h) behind it.
   size_t tableBytes() const;
 
  private:
-  std::vector<glm::vec4> lutUploaded;   // the table on the device: uploaded on change only
-  std::vector<float> gradientUploaded;  // likewise the gradient-opacity table
-  std::vector<glm::vec4> tf2dUploaded;  // and the 2D transfer function's
+  std::vector<glm::vec4> lutUploaded;     // the table on the device: uploaded on change only
+  std::vector<float> gradientUploaded;    // likewise the gradient-opacity table
+  std::vector<glm::vec4> tf2dUploaded;    // and the 2D transfer function's
+  std::vector<glm::vec4> preintUploaded;  // and the pre-integrated table
   RaycastParams paramsUploaded{};
 };
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "voxray/engine/camera.h"
+#include "voxray/engine/preint_table.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/engine/tf2d.h"
 #include "voxray/engine/transfer_function.h"
@@ -40,6 +41,10 @@ struct FrameSetup {
   // dvr's 2D transfer function; empty: off. With it, lut holds the table's largest opacity over
   // gradient (reduceTf2dToLut) for what reads the 1D table: empty-space skipping, the light grid.
   Tf2dTable tf2d;
+  // dvr's pre-integrated table (PREINT) for this step; empty: off. Made by
+  // DeviceFrame::updateSetup where the raycaster asks for it, again when the table or the step
+  // changes (placeFrame and makeValueSetup leave it empty).
+  PreintTable preint;
   double stepMm = 1.0;
   double referenceStepMm = 1.0;  // the step the preset's opacities are defined for
   double isoLoStored = 0.0, isoHiStored = 0.0;

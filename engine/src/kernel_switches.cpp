@@ -90,7 +90,11 @@ KernelSwitches kernelSwitches(const RenderParams& p, const KernelFacts& f) {
   // The overlay: fused into dvr's samples, or its maximum over mip's grey (overlay_mip).
   s.OVERLAY = f.overlay && (p.mode == Mode::Dvr || p.mode == Mode::Mip);
   s.SURFACES = f.surfaces && p.mode == Mode::Dvr;
-  s.ADAPTIVE = s.ADAPTIVE && s.ESS && !s.LABELS && !s.OVERLAY;  // (nor the overlay)
+  // Pre-integration classifies segments from the colour table alone (switches.h says which
+  // others classify one sample); it replaces the adaptive steps, whose levels assume samples.
+  s.PREINT = f.preintegrate && p.mode == Mode::Dvr && !s.TF2D && !s.GRADIENT_OPACITY && !s.LABELS &&
+             !s.OVERLAY && !s.SURFACES;
+  s.ADAPTIVE = s.ADAPTIVE && s.ESS && !s.LABELS && !s.OVERLAY && !s.PREINT;  // (nor the overlay)
   s.STORAGE_IMAGE = f.storageImage;
   s.SLABS = f.slabs;
   s.COUNT_SAMPLES = f.countSamples;

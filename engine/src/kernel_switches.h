@@ -32,6 +32,8 @@ struct KernelFacts {
   bool overlay = false;
   // A dvr frame with a segment shown as a surface (Raycaster's surface pass).
   bool surfaces = false;
+  // The raycaster makes the pre-integrated table (RenderParams::preintegrate; PREINT).
+  bool preintegrate = false;
 };
 
 // The switches a frame's parameters decide (the rest keep their defaults). A switch that

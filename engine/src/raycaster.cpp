@@ -248,6 +248,7 @@ KernelSwitches Raycaster::Impl::switches(const RenderParams& p) const {
   f.segmentTf = f.labels && anySegmentTf(segmentTfSlots(segments, p));
   f.overlay = overlay;
   f.surfaces = labels && p.mode == Mode::Dvr && !shownSurfaces().empty();
+  f.preintegrate = p.preintegrate;
   return kernelSwitches(p, f);
 }
 
@@ -512,10 +513,10 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   }
   Impl& m = *impl_;
   DeviceFrame& f = *m.frame;
-  f.updateSetup(p);
+  KernelSwitches sw = m.switches(p);
+  f.updateSetup(p, sw.PREINT != 0);
   const FrameSetup& s = f.setup;
 
-  KernelSwitches sw = m.switches(p);
   RaycastParams k = f.frameParams(p, sw);
   glm::ivec3 cells = m.space.dims();
   k.cells = {{cells.x, cells.y, cells.z, 0}};
@@ -590,8 +591,10 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       q.enqueueWriteBuffer(m.segTfBuffer, CL_FALSE, 0, bytes, m.segTfUploaded.data());
     }
     if (m.opts.emptySpaceSkipping && leaps)
-      m.space.classify(m.cl, f.paramsBuffer, f.lutBuffer, k, p.mode, s.lut, sw.ADAPTIVE != 0,
-                       sw.PACKET != 0, sw.ISO_BLOCK_TRIES > 0);
+      // PREINT reads table entries a row's spacing around a value: skipping reads them too.
+      m.space.classify(m.cl, f.paramsBuffer, f.lutBuffer, k, p.mode,
+                       sw.PREINT ? s.preint.occupancy : s.lut, sw.ADAPTIVE != 0, sw.PACKET != 0,
+                       sw.ISO_BLOCK_TRIES > 0);
     if (sw.LIGHTING) {
       KernelSwitches storage;  // light_volume.cl reads the volume only: one build per storage
       storage.STORAGE_IMAGE = sw.STORAGE_IMAGE;

@@ -338,6 +338,10 @@ std::vector<ParamSpec> makeSpecs() {
              "dvr: longer steps where the table varies little, each changing the composite by at "
              "most E (0 = fixed steps)",
              ParamDomain().atLeast(0).atMost(1).steps(0.005, 3), FIELD(adaptiveError)),
+      toggle("preintegrate",
+             "dvr: classify each step over the values between its two samples (pre-integrated "
+             "table; longer steps keep thin features)",
+             FIELD(preintegrate)),
       {"segment-mask", "off|show:L,...|hide:L,...",
        "dvr with a segmentation: show only what the segments of labels L cover, or hide them "
        "(off = the whole volume)",

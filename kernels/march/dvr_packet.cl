@@ -6,6 +6,7 @@
 #include "classification/gradient_opacity_lanes.cl"
 #include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
+#include "classification/preint_lanes.cl"
 #include "classification/segment_tf_lanes.cl"
 #include "classification/tf2d_lanes.cl"
 #include "empty_space/skip_lanes.cl"
@@ -60,6 +61,33 @@ inline void dvr_tf2dN(__global const short* restrict vol, __constant RaycastPara
 }
 #endif
 
+#if PREINT
+// The front value of each lane's segment `at` (preint_front of march.cl): the last sample the
+// lane took where that was segment at - 1, else (a leap, or the ray's start) segment at - 1's
+// sample taken now for the lanes in `live`; segment 0 its own value.
+inline floatN preint_frontN(__global const short* restrict vol, __constant RaycastParams* P,
+                            const RayPacket* r, intN at, float step, intN live, intN prev_at,
+                            floatN prev_value, floatN value, intN* samples) {
+  intN follows = prev_at == at - 1;
+  floatN front = select(value, prev_value, follows);
+  intN need = live & ~follows & (at >= 1);
+  if (any(need)) {
+    floatN a, b;
+    segmentN(r, at - 1, step, &a, &b);
+    floatN t = 0.5f * (a + b);
+    front = select(front, sampleN(vol, P, r->ox + t * r->dx, r->oy + t * r->dy, r->oz + t * r->dz),
+                   need);
+    *samples -= need;
+  }
+  return front;
+}
+#define DVR_FRONT_PARAM , floatN front
+#define DVR_FRONT_ARG(f) , f
+#else
+#define DVR_FRONT_PARAM
+#define DVR_FRONT_ARG(f)
+#endif
+
 #if GRADIENT_OPACITY || TF2D
 #define DVR_NORMAL_PARAM , VecN normal
 #define DVR_NORMAL_ARG(n) , n
@@ -109,11 +137,12 @@ inline void overlay_classifyN(__global const short* restrict ovol,
 // One dvr sample into the composite: opacity (and colour) c of the segment of length seg
 // at t, for the lanes in `live`. Updates alpha, active, samples and the colour (acc, or
 // the shading queue). GRADIENT_OPACITY: c[3] already scaled, normal its gradient.
-inline void dvr_compositeN(
-    __global const short* restrict vol, __constant RaycastParams* P, __global const float4* lut,
-    ShadeQueue* queue, floatN acc[3], floatN* alpha, intN* active, intN* samples, intN live,
-    floatN seg, floatN t, floatN value,
-    const floatN c[4] DVR_NORMAL_PARAM DVR_LABEL_PARAM QUEUE_SEGS_PARAM DVR_OVERLAY_PARAM) {
+inline void dvr_compositeN(__global const short* restrict vol, __constant RaycastParams* P,
+                           __global const float4* lut, ShadeQueue* queue, floatN acc[3],
+                           floatN* alpha, intN* active, intN* samples, intN live, floatN seg,
+                           floatN t, floatN value,
+                           const floatN c[4] DVR_NORMAL_PARAM DVR_LABEL_PARAM QUEUE_SEGS_PARAM
+                               DVR_OVERLAY_PARAM DVR_FRONT_PARAM) {
   *samples -= live;
 #if OVERLAY
   // march.cl's dvr_segment: summed extinction, each volume's colour weighted by its opacity.
@@ -128,7 +157,7 @@ inline void dvr_compositeN(
   if (!any(seen)) return;
   floatN a = c[3];
 #endif
-  if (OPACITY_CORRECTION) {
+  if (OPACITY_CORRECTION && !PREINT) {  // PREINT: built into its table
     floatN ratio = seg / P->view.w;
     a = CORRECTED_OPACITY_BY(a, ratio, fast_log2N, fast_exp2N);
   }
@@ -142,8 +171,10 @@ inline void dvr_compositeN(
   intN shaded = seen;
 #endif
   if (SHADING) {
-    shade_queue_push(vol, P, lut, queue, t, value, w_base,
-                     shaded DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(label) QUEUE_SEGS_ARG);
+    // PREINT: shaded at the middle of the run from the previous sample (dvr_segment says why).
+    shade_queue_push(vol, P, lut, queue, PREINT ? t - 0.5f * seg : t, value, w_base,
+                     shaded DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(label)
+                         QUEUE_SEGS_ARG DVR_FRONT_ARG(front));
 #if !GRADIENT_OPACITY && !TF2D
     *samples += select((intN)(0), (intN)(GRADIENT_TAPS), shaded);
 #endif
@@ -237,6 +268,10 @@ inline void dvr_packet(PACKET_ARGS) {
   floatN t_hit = 0.0f;
   intN found = 0;
 #endif
+#if PREINT
+  intN prev_at = -2;  // each lane's last segment sampled, and its value (preint_frontN)
+  floatN prev_value = 0.0f;
+#endif
 #if SURFACES
   floatN layer[4], layer_t;
   surface_layerN(P, surf, gx, gy, layer, &layer_t);
@@ -260,6 +295,9 @@ inline void dvr_packet(PACKET_ARGS) {
 #if TF2D
     VecN tf2d_normal[DVR_BATCH];
 #endif
+#if PREINT
+    floatN front[DVR_BATCH];
+#endif
     intN at = i;
     for (int k = 0; k < DVR_BATCH; ++k) {
 #if ADAPTIVE
@@ -273,10 +311,23 @@ inline void dvr_packet(PACKET_ARGS) {
       at += f;
       t[k] = 0.5f * (sa[k] + sb[k]);
       value[k] = sampleN(vol, P, r.ox + t[k] * r.dx, r.oy + t[k] * r.dy, r.oz + t[k] * r.dz);
+#if PREINT
+      // Segments at, at + 1, ...: the first's front may need a sample, the others' is the one
+      // before in the batch (no ADAPTIVE: f is 1).
+      front[k] = k == 0 ? preint_frontN(vol, P, &r, at - f, step, live[k], prev_at, prev_value,
+                                        value[k], &samples)
+                        : value[k - 1];
+      floatN ratio = OPACITY_CORRECTION ? (sb[k] - sa[k]) / step : (floatN)(1.0f);
+      if (SHADING)
+        c[k][3] = preint_alphaN(lut, P, front[k], value[k], ratio);
+      else
+        preintN(lut, P, front[k], value[k], ratio, c[k]);
+#else
       if (SHADING)
         c[k][3] = lut_alphaN(lut, P, value[k]);
       else
         lutN(lut, P, value[k], c[k]);
+#endif
 #if TF2D && !DVR_CLASSIFY_QUEUE
       VecN none = {0.0f, 0.0f, 0.0f};
       tf2d_normal[k] = none;
@@ -337,12 +388,16 @@ inline void dvr_packet(PACKET_ARGS) {
       dvr_compositeN(vol, P, lut, &queue, acc, &alpha, &active, &samples, live[k] & active,
                      sb[k] - sa[k], t[k], value[k],
                      c[k] DVR_NORMAL_ARG(normal) DVR_LABEL_ARG(lab[k])
-                         QUEUE_SEGS_ARG DVR_OVERLAY_ARG(oc[k]));
+                         QUEUE_SEGS_ARG DVR_OVERLAY_ARG(oc[k]) DVR_FRONT_ARG(front[k]));
 #if HIT_OUTPUT
       dvr_hit_crossingN(before, alpha, sa[k], sb[k], &t_hit, &found);
 #endif
 #endif  // DVR_CLASSIFY_QUEUE
     }
+#if PREINT
+    prev_at = at - 1;
+    prev_value = value[DVR_BATCH - 1];
+#endif
     i = at;
     active &= i <= r.n;
   }
@@ -380,6 +435,8 @@ inline void dvr_packet(PACKET_ARGS) {
 #undef DVR_LABEL_ARG
 #undef DVR_OVERLAY_PARAM
 #undef DVR_OVERLAY_ARG
+#undef DVR_FRONT_PARAM
+#undef DVR_FRONT_ARG
 #undef DVR_CLASSIFY_QUEUE
 
 #endif

@@ -8,6 +8,7 @@
 #include "classification/labels.cl"
 #include "classification/lut.cl"
 #include "classification/overlay.cl"
+#include "classification/preint.cl"
 #include "classification/surfaces.cl"
 #include "classification/tf2d.cl"
 #include "empty_space/skip.cl"
@@ -107,6 +108,33 @@ inline float2 adaptive_segment(__global const uchar* leap, __constant RaycastPar
 }
 #endif
 
+#if PREINT
+// Segment i's front value (PREINT): the sample of segment i - 1, which the ray took last unless
+// a leap (or the ray's start) came between; then it is taken now, so that a leap changes no
+// pixel. Segment 0 has none: its own value. *prev_i, *prev_value: the last sample taken.
+inline float preint_front(VOLUME_ARG, __constant RaycastParams* P, const Ray* r, int i, float value,
+                          int* prev_i, float* prev_value, uint* count) {
+  float front = value;
+  if (i >= 1) {
+    if (*prev_i == i - 1) {
+      front = *prev_value;
+    } else {
+      float2 q = ray_segment(r, i - 1);
+      front = sample_volume(VOLUME, P, r->o + 0.5f * (q.x + q.y) * r->d);
+      ++*count;
+    }
+  }
+  *prev_i = i;
+  *prev_value = value;
+  return front;
+}
+#define PREINT_PARAMS , int i, int *prev_i, float *prev_value
+#define PREINT_PASS(i) , i, &prev_i, &prev_value
+#else
+#define PREINT_PARAMS
+#define PREINT_PASS(i)
+#endif
+
 // One dvr segment s into the composite; returns true once the ray terminates.
 inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const float4* lut,
                         const Ray* r, float2 s, float3 origin_w, float3 dir_w, uint* count,
@@ -115,14 +143,21 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
                         ,
                         float4* hit_out
 #endif
-                            LABEL_PARAMS OVERLAY_PARAMS) {
+                            LABEL_PARAMS OVERLAY_PARAMS PREINT_PARAMS) {
   float seg = s.y - s.x;
   if (seg <= 0.0f) return false;  // segment 0 without jitter
   float t = 0.5f * (s.x + s.y);
   float3 p_v = r->o + t * r->d;
   ++*count;
   float value = sample_volume(VOLUME, P, p_v);
+#if PREINT
+  // The segment's value runs from the previous sample's to this one's; its length over the
+  // step the table was made for (opacity correction: otherwise the table's opacity as is).
+  float front = preint_front(VOLUME, P, r, i, value, prev_i, prev_value, count);
+  float4 c = preint_lookup(lut, P, front, value, OPACITY_CORRECTION ? seg / P->view.z : 1.0f);
+#else
   float4 c = lut_lookup(lut, P, value);
+#endif
 #if SEGMENT_TF
   // The label's own table where it has one (segment_tf.cl), before "transparent" is decided.
   int lab = label_at(labels, P, p_v);
@@ -171,6 +206,13 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #endif
 #undef DVR_NOTHING
   float3 rgb = c.xyz;
+#if PREINT
+  // Shaded at the middle of the run from the previous sample to this one (the segment's start,
+  // half a step back): at this sample instead, a long step's surfaces took their normals from
+  // up to a step inside, and CThead lost 1-3 dB against the plain classification.
+  t = s.x;
+  p_v = r->o + t * r->d;
+#endif
   if (SHADING && c.w > 0.0f) {
 #if GRADIENT_OPACITY || TF2D
     rgb = shade(rgb, n_w, origin_w + t * dir_w, -dir_w, P->light_w, frame_light(lut, P, p_v));
@@ -190,7 +232,7 @@ inline bool dvr_segment(VOLUME_ARG, __constant RaycastParams* P, __global const 
   rgb = (c.w * rgb + o.w * o.xyz) / (c.w + o.w);
   c.w = 1.0f - (1.0f - c.w) * (1.0f - o.w);
 #endif
-  float a = OPACITY_CORRECTION ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
+  float a = OPACITY_CORRECTION && !PREINT ? CORRECTED_OPACITY(c.w, seg / P->view.w) : c.w;
   *acc += (1.0f - *alpha) * a * rgb;
 #if HIT_OUTPUT
   float before = *alpha;
@@ -230,6 +272,10 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
 #if ADAPTIVE
   bool reach = adaptive_reach(r->step, fmax(fabs(r->d.x), fmax(fabs(r->d.y), fabs(r->d.z))));
 #endif
+#if PREINT
+  int prev_i = -2;  // the last segment sampled, and its value (preint_front)
+  float prev_value = 0.0f;
+#endif
   for (int i = 0, check = 0, f = 1; i <= r->n; i += f) {  // f: steps segment i spans
     if (ESS && i >= check) {
       i = ess_leap(leap, range, P, r, true, i, &check);
@@ -248,10 +294,12 @@ inline float3 march_dvr(VOLUME_ARG, __constant RaycastParams* P, __global const 
     }
 #endif
     if (dvr_segment(VOLUME, P, lut, r, s, origin_w, dir_w, count, &acc,
-                    &alpha DVR_HIT_ARG LABEL_PASS OVERLAY_PASS))
+                    &alpha DVR_HIT_ARG LABEL_PASS OVERLAY_PASS PREINT_PASS(i)))
       break;
   }
 #undef DVR_HIT_ARG
+#undef PREINT_PARAMS
+#undef PREINT_PASS
 #if SURFACES
   if (layer_due) surface_composite(layer, &acc, &alpha);  // behind the last sample
 #endif

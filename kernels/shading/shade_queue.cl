@@ -9,12 +9,14 @@
 // GRADIENT_OPACITY the weight needs the gradient first (dvr_gradient_opacityN), taken when
 // the sample is: the entry keeps it too, so the flush shades without taking it again; so does
 // TF2D, whose colour the flush looks up at (value, |gradient|). With
-// LABELS the entry keeps its label, whose segment colour the flush mixes in.
+// LABELS the entry keeps its label, whose segment colour the flush mixes in. With PREINT it
+// keeps the segment's front value, whose pre-integrated colour the flush looks up.
 #ifndef VOXRAY_SHADE_QUEUE_CL
 #define VOXRAY_SHADE_QUEUE_CL
 
 #include "classification/labels_lanes.cl"
 #include "classification/lut_lanes.cl"
+#include "classification/preint_lanes.cl"
 #include "classification/segment_tf_lanes.cl"
 #include "classification/tf2d_lanes.cl"
 #include "intersection/ray_lanes.cl"
@@ -37,6 +39,9 @@ typedef struct {
 #if LABELS
   int label[2 * LANES];  // each entry's label (its colour, labels_lanes.cl)
 #endif
+#if PREINT
+  float front[2 * LANES];  // each entry's segment's front value (preint_lanes.cl)
+#endif
   int n;
   // The part of each lane's ray that differs between lanes: voxel and world origins with
   // ORTHO, else voxel and world directions (pixel_raysN).
@@ -58,6 +63,9 @@ inline void shade_queue_init(ShadeQueue* q, const RayPacket* r, const floatN wor
 #endif
 #if LABELS
   for (int e = 0; e < 2 * LANES; ++e) q->label[e] = 0;
+#endif
+#if PREINT
+  for (int e = 0; e < 2 * LANES; ++e) q->front[e] = 0.0f;
 #endif
   for (int c = 0; c < 3; ++c)
     for (int l = 0; l < LANES; ++l) q->acc[c][l] = 0.0f;
@@ -93,6 +101,8 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
 #if TF2D
   VecN kept = {vloadN(0, q->normal[0]), vloadN(0, q->normal[1]), vloadN(0, q->normal[2])};
   tf2dN(lut, P, vloadN(0, q->value), kept, c);
+#elif PREINT
+  preintN(lut, P, vloadN(0, q->front), vloadN(0, q->value), (floatN)(1.0f), c);  // colour only
 #else
   lutN(lut, P, vloadN(0, q->value), c);
 #endif
@@ -128,6 +138,9 @@ inline void shade_queue_flush(__global const short* restrict vol, __constant Ray
 #if LABELS
     q->label[e - count] = q->label[e];
 #endif
+#if PREINT
+    q->front[e - count] = q->front[e];
+#endif
   }
   q->n = n - count;
 }
@@ -145,7 +158,12 @@ inline void shade_queue_push(__global const short* restrict vol, __constant Rayc
                              ,
                              intN label
 #endif
-                                 QUEUE_SEGS_PARAM) {
+                                 QUEUE_SEGS_PARAM
+#if PREINT
+                             ,
+                             floatN front
+#endif
+) {
   float ts[LANES], vs[LANES], ws[LANES];
   int take[LANES];
   vstoreN(t, 0, ts);
@@ -155,6 +173,10 @@ inline void shade_queue_push(__global const short* restrict vol, __constant Rayc
 #if LABELS
   int ls[LANES];
   vstoreN(label, 0, ls);
+#endif
+#if PREINT
+  float fs[LANES];
+  vstoreN(front, 0, fs);
 #endif
 #if GRADIENT_OPACITY || TF2D
   float ns[3][LANES];
@@ -172,6 +194,9 @@ inline void shade_queue_push(__global const short* restrict vol, __constant Rayc
 #endif
 #if LABELS
     q->label[n] = ls[l];
+#endif
+#if PREINT
+    q->front[n] = fs[l];
 #endif
     n += take[l] & 1;
   }

@@ -5,6 +5,7 @@
 #include "gradient_table.h"
 #include "math.cl"
 #include "params.cl"
+#include "preint_table.h"
 #include "tf2d_table.h"
 
 // s^w for s >= 0 by EXP2(w LOG2(s)), keeping pow's value at s = 0 (0, or 1 for w = 0).
@@ -79,6 +80,9 @@ inline float light_grid_at(__global const float4* lut, __constant RaycastParams*
 #endif
 #if TF2D
   grid += VOXRAY_TF2D_FLOAT4S;
+#endif
+#if PREINT
+  grid += VOXRAY_PREINT_FLOAT4S;
 #endif
   return grid_trilinear((__global const float*)grid, P->light_grid, p_v * P->light_march.z);
 }

@@ -94,6 +94,11 @@ struct RenderParams {
   // each long step changes the composite by at most this (kernels/empty_space/classify.cl,
   // adaptive_level); 0 = every step the base step. Needs opacity correction.
   double adaptiveError = 0.0;
+  // dvr: pre-integrated classification (issue 40, voxray/engine/preint_table.h): each segment
+  // classified over the values between its two samples, so long steps keep thin features. The
+  // raycaster's only (the reference renderer stays the plain integral it is measured against);
+  // not with tf2d, gradientOpacity, a segmentation or an overlay (then off), nor adaptiveError.
+  bool preintegrate = false;
   // dvr with a segmentation: the labels shown (segment-mask) and how strongly a visible
   // segment's colour replaces the table's colour (0: not at all, 1: wholly).
   SegmentMask segmentMask;
