@@ -22,7 +22,7 @@ if [ ! -f "$RAW" ]; then
 fi
 IN="$RAW --raw-dims $DIMS --raw-type i16 --raw-rescale 1,0"
 LOOK="--mode dvr --preset CT-Bone --device ${VOXRAY_DEVICE:-gpu}"
-TIME="/usr/bin/time -f %e_s_wall_%M_KiB_peak_RSS"
+TIME="${TIME_BIN:-/usr/bin/time} -f %e_s_wall_%M_KiB_peak_RSS"  # TIME_BIN: a carried GNU time
 ls -l "$RAW"; nproc; free -g | head -2; cat /proc/loadavg
 # Run 1 reads RAW from disk unless it is in the page cache (a file just made is; for a cold
 # read: sync; echo 3 > /proc/sys/vm/drop_caches), run 2 from the cache.
