@@ -795,6 +795,137 @@ class ReadingTest : public QObject {
     QVERIFY(!fixture_.models->comparison);  // nothing left to open beside it
   }
 
+  // Issue 37: a 2x2 rule naming four series puts each in its named cell: the first cell's
+  // series is the main document, each other one opens in a cell of its own (an axial view of
+  // that series: its own volume, window and crosshair) in its view's place, the crosshairs
+  // linked in patient coordinates; a session keeps the four and opens them again.
+  void ruleShowsFourSeriesEachInItsCell() {
+    window_->resize(1800, 1000);
+    const fs::path study = freshDir("four-series");
+    const std::vector<DerivedSeries> derived = {{"T2 LIKE 10MM", 3010, true, 100},
+                                                {"EVEN 10MM", 3020, false, 200},
+                                                {"ODD PLUS 10MM", 3030, true, 300}};
+    const auto uids = writeStudy(study, derived);
+    QCOMPARE(uids.size(), size_t(3));
+    const fs::path dir = freshDir("four-series-config");
+    std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
+      {"name": "four", "match": {"modality": "CT"}, "layout": "2x2",
+       "series": {"axial": "STD BRAIN", "coronal": "T2 LIKE", "sagittal": "EVEN",
+                  "3d": "ODD PLUS"}}]})";
+    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+    QVERIFY(errors_.isEmpty());
+    QSignalSpy shown(window_, &MainWindow::volumeShown);
+    window_->open(study.string(), {});
+    QVERIFY(shown.wait(120000));
+    const ReadingLayout r = reading_->reading();
+    QCOMPARE(r.layout, ViewLayout::TwoByTwo);
+    QCOMPARE(r.placed.size(), size_t(4));
+    QVERIFY(emptyViewNotes(r).empty());
+    const auto brain = fixture_.models->document.volume();
+    QCOMPARE(brain->study.seriesDescription, std::string("STD BRAIN 5MM"));
+    QCOMPARE(brain->dims.z, 28);
+    // The cells in the views the rule names, each with its own series (dims, UID and first
+    // voxel's HU: each derived series is shifted by its own HU).
+    const GridView views[] = {GridView::Coronal, GridView::Sagittal, GridView::Volume3d};
+    const SeriesCells& cells = reading_->seriesCells();
+    auto loaded = [&] {
+      for (GridView v : views) {
+        const SeriesCell* c = cells.cell(v);
+        if (!c || c->document.empty()) return false;
+      }
+      return cells.cells().size() == 3;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(loaded(), 120000);
+    for (size_t i = 0; i < 3; ++i) {
+      const SeriesCell& c = *cells.cell(views[i]);
+      const Volume& v = *c.document.volume();
+      QCOMPARE(v.study.seriesInstanceUid, uids[i]);
+      QCOMPARE(v.dims.z, 14);
+      QCOMPARE(firstVoxelHu(v), derivedFirstVoxelHu(*brain, v, derived[i].huShift));
+      QVERIFY(c.comparison.sameFrameOfReference() && c.comparison.linked());
+      SliceView* view = reading_->cellView(views[i]);
+      QVERIFY(view);
+      QTRY_VERIFY(view->isVisible());
+    }
+    QCOMPARE(fixture_.models->document.volume(), brain);  // the main document kept
+    // Each in its named place (2x2: axial, coronal / sagittal, 3D), the grid's own views of
+    // those places hidden.
+    SliceView& axial = window_->sliceView(0);
+    QVERIFY(axial.isVisible());
+    QVERIFY(!window_->sliceView(1).isVisible() && !window_->sliceView(2).isVisible() &&
+            !window_->volumeView().isVisible());
+    SliceView* coronal = reading_->cellView(GridView::Coronal);
+    SliceView* sagittal = reading_->cellView(GridView::Sagittal);
+    SliceView* threeD = reading_->cellView(GridView::Volume3d);
+    QTRY_VERIFY(coronal->x() > axial.x() && coronal->y() == axial.y());
+    QVERIFY(sagittal->x() == axial.x() && sagittal->y() > axial.y());
+    QVERIFY(threeD->x() > sagittal->x() && threeD->y() == sagittal->y());
+
+    // Scrolling the main cell moves every other to the same patient z within half of its
+    // 10 mm slices (each rounds to its own slice centres); scrolling a cell moves the main
+    // one within half of its 5 mm slices, and the others with it.
+    CrosshairModel& mc = fixture_.models->crosshair;
+    auto mainZ = [&] { return voxelToPatientMm(*brain, mc.centre()).z; };
+    auto cellZ = [&](GridView v) {
+      const SeriesCell& c = *cells.cell(v);
+      return voxelToPatientMm(*c.document.volume(), c.crosshair.centre()).z;
+    };
+    auto othersFollow = [&](const QString& what) {
+      for (GridView v : views)
+        if (std::abs(cellZ(v) - mainZ()) > 0.5 * 10.0 + 1e-6)
+          return what + QString(": %1 at z %2, main at %3")
+                            .arg(QString::fromStdString(gridViewName(v)))
+                            .arg(cellZ(v))
+                            .arg(mainZ());
+      return QString();
+    };
+    double lastZ = mainZ();
+    for (int notches : {3, -1, 5, -7, 2}) {
+      wheel(&axial, notches);
+      QVERIFY2(std::abs(std::abs(mainZ() - lastZ) - std::abs(notches) * brain->spacingMm.z) < 1e-6,
+               qPrintable(QString("moved %1 mm for %2 notches").arg(mainZ() - lastZ).arg(notches)));
+      lastZ = mainZ();
+      const QString off = othersFollow("main scrolled");
+      QVERIFY2(off.isEmpty(), qPrintable(off));
+    }
+    for (int notches : {2, -3}) {
+      const double before = cellZ(GridView::Volume3d);
+      wheel(threeD, notches);
+      QVERIFY2(
+          std::abs(std::abs(cellZ(GridView::Volume3d) - before) - 10.0 * std::abs(notches)) < 1e-6,
+          qPrintable(QString("the cell moved %1 mm").arg(cellZ(GridView::Volume3d) - before)));
+      QVERIFY2(
+          std::abs(mainZ() - cellZ(GridView::Volume3d)) <= 0.5 * brain->spacingMm.z + 1e-6,
+          qPrintable(QString("main z %1, cell z %2").arg(mainZ()).arg(cellZ(GridView::Volume3d))));
+      const QString off = othersFollow("a cell scrolled");
+      QVERIFY2(off.isEmpty(), qPrintable(off));
+    }
+
+    // The session keeps the four and opens them again.
+    const std::string file = (freshDir("four-series-session") / "s.json").string();
+    window_->sessions().tell = [this](const QString& t, const QString& m) {
+      errors_ << t + ": " + m;
+    };
+    QVERIFY(window_->sessions().saveTo(QString::fromStdString(file)));
+    reading_->setLayout(ViewLayout::One);  // the user's choice: the cells close
+    QVERIFY(cells.empty());
+    QVERIFY(!reading_->cellView(GridView::Coronal));
+    window_->sessions().openFile(file);
+    QVERIFY(shown.wait(120000));
+    QCOMPARE(reading_->reading(), r);
+    QTRY_VERIFY_WITH_TIMEOUT(loaded(), 120000);
+    QCOMPARE(fixture_.models->document.volume()->study.seriesDescription,
+             std::string("STD BRAIN 5MM"));
+    for (size_t i = 0; i < 3; ++i) {
+      const Volume& v = *cells.cell(views[i])->document.volume();
+      QCOMPARE(v.study.seriesInstanceUid, uids[i]);
+      QCOMPARE(firstVoxelHu(v), derivedFirstVoxelHu(*brain, v, derived[i].huShift));
+      QTRY_VERIFY(reading_->cellView(views[i]) && reading_->cellView(views[i])->isVisible());
+    }
+    QVERIFY(!window_->compareView() || !window_->compareView()->isVisible());
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+  }
+
   // Issue 37: "Show series in this view" (Reading menu) puts another series of the study in
   // the focused view: it opens beside the open one.
   void showSeriesInThisViewOpensItBeside() {

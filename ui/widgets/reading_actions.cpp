@@ -29,6 +29,7 @@
 #include "slice_view.h"
 #include "study_attributes.h"
 #include "study_browser_dialog.h"
+#include "view_grid.h"
 #include "volume_view.h"
 #include "voxray/io/error.h"
 #include "window_level.h"
@@ -59,7 +60,10 @@ std::string qtKeyNormaliser(const std::string& key) {
 }
 
 ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
-    : QObject(&window), window_(window), models_(models) {
+    : QObject(&window),
+      window_(window),
+      models_(models),
+      cells_(std::make_unique<SeriesCells>(models.document, models.crosshair)) {
   setObjectName("readingActions");
   configFolder_ = QStandardPaths::writableLocation(QStandardPaths::AppConfigLocation);
   buildMenu();
@@ -73,6 +77,9 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
     setReading(ReadingLayout{*last, {}});
   // A study the user opens (not a session: it brings its own view) hangs by the rules.
   connect(&window_, &MainWindow::volumeShown, this, [this] {
+    // Another study: the cells of the last one close (a session of it opens its own again).
+    if (!cells_->empty() && models_.source.path != cellsFolder_)
+      for (GridView c : cells_->leaving({})) closeCell(c);
     if (pendingPlacement_) {  // the series a rule placed is shown now
       ReadingLayout r = *pendingPlacement_;
       pendingPlacement_.reset();
@@ -95,6 +102,71 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
   connect(&window_.loader(), &LoadController::cancelled, this, dropPending);
 }
 
+ReadingActions::~ReadingActions() {
+  // The cells' views and loaders go before the models they are bound to.
+  for (const auto& [view, w] : cellViews_) delete w.data();
+  for (const auto& [view, l] : cellLoaders_) delete l.data();
+  cells_.reset();
+}
+
+SliceView* ReadingActions::cellView(GridView view) const {
+  auto it = cellViews_.find(view);
+  return it == cellViews_.end() ? nullptr : it->second.data();
+}
+
+void ReadingActions::closeCell(GridView view) {
+  if (auto it = cellViews_.find(view); it != cellViews_.end()) {
+    if (it->second) {
+      window_.grid().setCellView(view, nullptr);
+      delete it->second.data();
+    }
+    cellViews_.erase(it);
+  }
+  if (auto it = cellLoaders_.find(view); it != cellLoaders_.end()) {
+    delete it->second.data();  // cancels a load under way and waits for it
+    cellLoaders_.erase(it);
+  }
+  std::vector<PlacedView> rest;
+  for (const auto& c : cells_->cells())
+    if (c->placed.view != view) rest.push_back(c->placed);
+  cells_->setCells(rest);
+}
+
+void ReadingActions::showCells(const std::string& current) {
+  const std::vector<PlacedView> wanted = cellsToOpen(reading_, current);
+  for (GridView v : cells_->leaving(wanted)) closeCell(v);
+  const std::string folder = models_.source.path;
+  cellsFolder_ = folder;
+  for (GridView v : cells_->setCells(wanted)) {
+    SeriesCell& c = *cells_->cell(v);
+    // An axial view of the cell's series, as compare's columns show theirs: the cells read
+    // side by side, one patient z in each.
+    auto* view =
+        new SliceView(Orientation::Axial, c.document, c.crosshair, c.windowLevel, c.render);
+    view->setObjectName(QString::fromStdString("seriesCell-" + gridViewName(v)));
+    cellViews_[v] = view;
+    window_.grid().setCellView(v, view);
+    auto* loader = new LoadController(&window_);
+    cellLoaders_[v] = loader;
+    const std::string series = c.placed.series;
+    const QString name =
+        QString::fromStdString(c.placed.description.empty() ? series : c.placed.description);
+    connect(loader, &LoadController::loaded, this,
+            [this, v, series](VolumeSeries s, const QString& n, const QString&) {
+              // Its cell may have gone or changed series while it loaded.
+              if (SeriesCell* now = cells_->cell(v); now && now->placed.series == series)
+                cells_->setVolume(v, std::move(s), n.toStdString());
+            });
+    connect(loader, &LoadController::failed, this, [this, v, name](const QString& m) {
+      emit failed(
+          "Cannot open " + name + " in the " + QString::fromStdString(gridViewName(v)) + " view",
+          m);
+    });
+    LoadOptions options;
+    options.series = series;
+    loader->load(folder, options, name);
+  }
+}
 void ReadingActions::setConfigFolder(const QString& folder) {
   configFolder_ = folder;
   loadUserFiles();
@@ -212,11 +284,14 @@ void ReadingActions::setLayout(ViewLayout l) {
     models_.comparison.reset();
     window_.setCompareMode(false);
   }
-  setReading(ReadingLayout{l, {}});
+  setReading(ReadingLayout{l, {}});  // no series placed: the cells close
 }
 
 void ReadingActions::setReading(const ReadingLayout& r) {
   reading_ = r;
+  // One or two series: the grid's views and compare's columns show them; no cells.
+  if (seriesInCells(r).size() <= 2)
+    for (GridView c : cells_->leaving({})) closeCell(c);
   window_.grid().arrange(visibleCells(r));
   if (QAction* a = action("layout-" + layoutName(r.layout))) a->setChecked(true);
   if (const QString notes = emptyViewsText(); !notes.isEmpty()) status(notes);
@@ -286,6 +361,18 @@ bool ReadingActions::placeSeriesOf(const HangingRule& r) {
 }
 
 void ReadingActions::hang(ReadingLayout placed, const std::string& current) {
+  if (seriesInCells(placed).size() > 2 && !current.empty()) {
+    // Each series in its named view: the main document's in its views, the others in cells
+    // of their own (compare's columns are not needed).
+    if (besideShown_) {
+      besideShown_ = false;
+      models_.comparison.reset();
+      window_.setCompareMode(false);
+    }
+    setReading(placed);
+    showCells(current);
+    return;
+  }
   const auto beside = besideSeries(placed.layout, placed.placed, current);
   placed.placed = beside ? keepShown(placed.placed, current, beside->series)
                          : keepShown(placed.placed, current);
@@ -355,6 +442,7 @@ std::vector<std::string> ReadingActions::restoreReading(const ReadingLayout& r) 
   const auto cells = seriesInCells(checked);
   besideShown_ = cells.size() > 1 && priorIs(models_, models_.source.path, cells[1]);
   setReading(checked);
+  if (cells.size() > 2) showCells(openSeriesSelector());  // each series in its cell again
   return notes;
 }
 
