@@ -857,9 +857,13 @@ class ReadingTest : public QObject {
     SliceView* coronal = reading_->cellView(GridView::Coronal);
     SliceView* sagittal = reading_->cellView(GridView::Sagittal);
     SliceView* threeD = reading_->cellView(GridView::Volume3d);
-    QTRY_VERIFY(coronal->x() > axial.x() && coronal->y() == axial.y());
-    QVERIFY(sagittal->x() == axial.x() && sagittal->y() > axial.y());
-    QVERIFY(threeD->x() > sagittal->x() && threeD->y() == sagittal->y());
+    // (Each cell's view sits below its series' name: its top is below the axial view's.)
+    auto at = [&](QWidget* w) { return w->mapTo(window_, QPoint(0, 0)); };
+    QTRY_VERIFY(at(coronal).x() > at(&axial).x() && at(coronal).y() >= at(&axial).y() &&
+                at(coronal).y() < at(&axial).y() + axial.height() / 4);
+    QVERIFY(at(sagittal).x() == at(&axial).x() &&
+            at(sagittal).y() > at(&axial).y() + axial.height());
+    QVERIFY(at(threeD).x() == at(coronal).x() && at(threeD).y() == at(sagittal).y());
 
     // Scrolling the main cell moves every other to the same patient z within half of its
     // 10 mm slices (each rounds to its own slice centres); scrolling a cell moves the main
@@ -899,6 +903,15 @@ class ReadingTest : public QObject {
           qPrintable(QString("main z %1, cell z %2").arg(mainZ()).arg(cellZ(GridView::Volume3d))));
       const QString off = othersFollow("a cell scrolled");
       QVERIFY2(off.isEmpty(), qPrintable(off));
+    }
+
+    // README's docs/images/reading-four-series.png with VOXRAY_CELLS_SHOT=PATH (under xvfb-run
+    // -s "-screen 0 1920x1080x24"): the four series on slice 14 of the head CT.
+    if (const QString shot = qEnvironmentVariable("VOXRAY_CELLS_SHOT"); !shot.isEmpty()) {
+      window_->resize(1900, 1040);
+      mc.setVoxel({256, 256, 14});
+      QTest::qWait(1000);
+      QVERIFY(window_->grab().save(shot));
     }
 
     // The session keeps the four and opens them again.

@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QKeySequence>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
@@ -18,6 +19,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QVBoxLayout>
 
 #include "compare_view.h"
 #include "gui_message.h"
@@ -104,7 +106,8 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
 
 ReadingActions::~ReadingActions() {
   // The cells' views and loaders go before the models they are bound to.
-  for (const auto& [view, w] : cellViews_) delete w.data();
+  for (const auto& [view, w] : cellViews_)
+    if (w) delete w->parentWidget();  // the view and its name
   for (const auto& [view, l] : cellLoaders_) delete l.data();
   cells_.reset();
 }
@@ -117,8 +120,9 @@ SliceView* ReadingActions::cellView(GridView view) const {
 void ReadingActions::closeCell(GridView view) {
   if (auto it = cellViews_.find(view); it != cellViews_.end()) {
     if (it->second) {
+      QWidget* box = it->second->parentWidget();  // the view and its name
       window_.grid().setCellView(view, nullptr);
-      delete it->second.data();
+      delete box;
     }
     cellViews_.erase(it);
   }
@@ -144,13 +148,20 @@ void ReadingActions::showCells(const std::string& current) {
     auto* view =
         new SliceView(Orientation::Axial, c.document, c.crosshair, c.windowLevel, c.render);
     view->setObjectName(QString::fromStdString("seriesCell-" + gridViewName(v)));
-    cellViews_[v] = view;
-    window_.grid().setCellView(v, view);
-    auto* loader = new LoadController(&window_);
-    cellLoaders_[v] = loader;
     const std::string series = c.placed.series;
     const QString name =
         QString::fromStdString(c.placed.description.empty() ? series : c.placed.description);
+    // The series' name above its view (as compare's columns have): which cell is which.
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(new QLabel(name));
+    layout->addWidget(view, 1);
+    cellViews_[v] = view;
+    window_.grid().setCellView(v, box);
+    auto* loader = new LoadController(&window_);
+    cellLoaders_[v] = loader;
     connect(loader, &LoadController::loaded, this,
             [this, v, series](VolumeSeries s, const QString& n, const QString&) {
               // Its cell may have gone or changed series while it loaded.
@@ -578,7 +589,8 @@ void ReadingActions::showHangingProtocolEditor() {
                    "first whose every match field fits wins. A pattern is a case-insensitive "
                    "substring, or /a regex/. Layouts: 1x1, 1x2, 2x2, 1+3, mpr+3d, 3d. \"series\": "
                    "{\"axial\": \"T2\", \"3d\": 2} puts the study's series in views by "
-                   "description or by place (1, 2, …); the views show one series at a time.",
+                   "description or by place (1, 2, …); two series show side by side, three or "
+                   "four each in its own cell, linked in patient coordinates.",
                    QString::fromStdString(hangingProtocolsJson(protocols_)),
                    QString::fromStdString(defaultHangingProtocolsJson()),
                    [this](const std::string& json) { setProtocolsJson(json); });
