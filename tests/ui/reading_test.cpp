@@ -45,6 +45,7 @@
 #include "reading_actions.h"
 #include "results_actions.h"
 #include "segment_panel.h"
+#include "series_drag.h"
 #include "session_actions.h"
 #include "slice_geometry.h"
 #include "slice_view.h"
@@ -936,6 +937,28 @@ class ReadingTest : public QObject {
       QTRY_VERIFY(reading_->cellView(views[i]) && reading_->cellView(views[i])->isVisible());
     }
     QVERIFY(!window_->compareView() || !window_->compareView()->isVisible());
+
+    // T2 dragged from the study browser onto the sagittal cell: it shows T2 there (its HU),
+    // the other cells kept as they are; the placement (a session) says so.
+    const SeriesCell* coronalCell = cells.cell(GridView::Coronal);
+    const std::unique_ptr<QMimeData> t2(seriesMimeData(
+        {QString::fromStdString(study.string()), "", QString::fromStdString(uids[0]), "T2"}));
+    QVERIFY(dropOn(reading_->cellView(GridView::Sagittal), t2.get()));
+    auto sagittalIsT2 = [&] {
+      const SeriesCell* c = cells.cell(GridView::Sagittal);
+      return c && !c->document.empty() && c->document.volume()->study.seriesInstanceUid == uids[0];
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(sagittalIsT2(), 120000);
+    const Volume& t2There = *cells.cell(GridView::Sagittal)->document.volume();
+    QCOMPARE(firstVoxelHu(t2There), derivedFirstVoxelHu(*brain, t2There, derived[0].huShift));
+    QCOMPARE(cells.cell(GridView::Coronal), coronalCell);
+    QCOMPARE(cells.cell(GridView::Volume3d)->document.volume()->study.seriesInstanceUid, uids[2]);
+    const auto& placedNow = reading_->reading().placed;
+    QCOMPARE(std::find_if(placedNow.begin(), placedNow.end(),
+                          [](const PlacedView& p) { return p.view == GridView::Sagittal; })
+                 ->uid,
+             uids[0]);
+    QTRY_VERIFY(reading_->cellView(GridView::Sagittal)->isVisible());
     QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
   }
 

@@ -160,6 +160,7 @@ void ReadingActions::showCells(const std::string& current) {
     layout->addWidget(view, 1);
     cellViews_[v] = view;
     window_.grid().setCellView(v, box);
+    if (SeriesDropFilter* drops = window_.seriesDrops()) drops->watch(view);
     auto* loader = new LoadController(&window_);
     cellLoaders_[v] = loader;
     connect(loader, &LoadController::loaded, this,
@@ -503,6 +504,21 @@ void ReadingActions::dropSeries(QWidget* target, const SeriesDrag& d) {
     }
     return;
   }
+  // A series cell's view: the series goes in that cell (a series of the open study; another
+  // study's opens beside, as on the grid's other cells). Later: the drop's view may close.
+  for (const auto& [cell, w] : cellViews_)
+    if (w == target) {
+      if (!own) {
+        status(name + " opens beside");
+        window_.openPrior(folder, options);
+        return;
+      }
+      status(name + " opens in the " + QString::fromStdString(gridViewName(cell)) + " view");
+      QTimer::singleShot(0, this, [this, cell, s = *own] {
+        hang(placeInView(reading_, cell, s), openSeriesSelector());
+      });
+      return;
+    }
   std::optional<GridView> view;
   if (target == &window_.volumeView()) view = GridView::Volume3d;
   for (int i = 0; i < 3; ++i)
