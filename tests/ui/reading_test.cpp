@@ -959,6 +959,16 @@ class ReadingTest : public QObject {
                  ->uid,
              uids[0]);
     QTRY_VERIFY(reading_->cellView(GridView::Sagittal)->isVisible());
+
+    // Another study (hung by the default rules: CT head, MPR+3D, no series placed): its cells
+    // close and the grid's own views are back.
+    reading_->setConfigFolder(QString::fromStdString(freshDir("four-series-defaults").string()));
+    window_->open(kBrain, {});
+    QVERIFY(shown.wait(120000));
+    QVERIFY(cells.empty());
+    QVERIFY(!reading_->cellView(GridView::Coronal));
+    QVERIFY(reading_->reading().placed.empty());
+    QTRY_VERIFY(window_->sliceView(1).isVisible() && window_->sliceView(2).isVisible());
     QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
   }
 

@@ -79,10 +79,11 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
     setReading(ReadingLayout{*last, {}});
   // A study the user opens (not a session: it brings its own view) hangs by the rules.
   connect(&window_, &MainWindow::volumeShown, this, [this] {
-    // Another study: the cells of the last one close (a session of it opens its own again).
+    // Another study: the cells of the last one close, and their placement with them (a
+    // session opens its own again; a rule places the new study's).
     if (!cells_->empty() && models_.source.path != cellsFolder_)
-      for (GridView c : cells_->leaving({})) closeCell(c);
-    if (pendingPlacement_) {  // the series a rule placed is shown now
+      setReading(ReadingLayout{reading_.layout, {}});  // its placement goes with them
+    if (pendingPlacement_) {                           // the series a rule placed is shown now
       ReadingLayout r = *pendingPlacement_;
       pendingPlacement_.reset();
       const std::string shown = shownSeries(r.layout, r.placed).value_or("");
