@@ -68,7 +68,7 @@ TEST(SeriesCells, FourSeriesOfA2x2RuleEachGetTheirNamedCell) {
 
   // Two series are compare's columns, not cells; one series is the grid's.
   ReadingLayout two = l;
-  for (PlacedView& p : two.placed) p.series = p.view == GridView::Coronal ? "2" : "1";
+  for (PlacedView& p : two.placed) p.series.assign(1, p.view == GridView::Coronal ? '2' : '1');
   EXPECT_TRUE(cellsToOpen(two, "1").empty());
   EXPECT_TRUE(cellsToOpen(ReadingLayout{ViewLayout::TwoByTwo, {}}, "").empty());
   // Three series (a view left empty: no series matched): two cells, the empty view none.
@@ -84,7 +84,8 @@ TEST(SeriesCells, FourSeriesOfA2x2RuleEachGetTheirNamedCell) {
 TEST(SeriesCells, CellsKeepTheirSeriesAndOnlyChangedOnesAreNew) {
   VolumeDocument main;
   CrosshairModel mainCrosshair;
-  SeriesCells cells(main, mainCrosshair);
+  RenderStateModel mainRender;
+  SeriesCells cells(main, mainCrosshair, mainRender);
   const ReadingLayout l = fourSeries();
   const auto wanted = cellsToOpen(l, "1");
   EXPECT_TRUE(cells.leaving(wanted).empty());
@@ -116,7 +117,9 @@ TEST(SeriesCells, CrosshairsFollowInPatientZWithinHalfASliceAndWindowsStayOwn) {
   const auto t1 = ct(28, 5.0, 0.0, "1.2.for", 40.0);  // 28 slices of 5 mm from z = 0
   mainCrosshair.setGeometry(t1->dims, t1->spacingMm, t1->direction);
   main.set(t1, "T1");
-  SeriesCells cells(main, mainCrosshair);
+  RenderStateModel mainRender;
+  mainRender.update(kCamera, [](RenderParams& p) { p.camera.azimuthDeg = 30.0; });
+  SeriesCells cells(main, mainCrosshair, mainRender);
   cells.setCells(cellsToOpen(fourSeries(), "1"));
   // T2: 14 slices of 10 mm from z = 5 (the odd slices); FLAIR: 14 of 10 mm from z = 0 (the
   // even ones); DWI: another Frame of Reference (not linked: no alignment).
@@ -161,6 +164,13 @@ TEST(SeriesCells, CrosshairsFollowInPatientZWithinHalfASliceAndWindowsStayOwn) {
               2.5 + 1e-9);  // the main volume's 5 mm slices: within half of one
     expectFollow("T2 scrolled");
   }
+  // The linked cells' 3D cameras are the main one's (one Frame of Reference: no transform),
+  // turned with it; the unlinked one keeps its own.
+  EXPECT_DOUBLE_EQ(t2.render.params().camera.azimuthDeg, 30.0);
+  mainRender.update(kCamera, [](RenderParams& p) { p.camera.azimuthDeg = 75.0; });
+  EXPECT_NEAR(t2.render.params().camera.azimuthDeg, 75.0, 1e-9);
+  EXPECT_NEAR(flair.render.params().camera.azimuthDeg, 75.0, 1e-9);
+  EXPECT_NE(dwi.render.params().camera.azimuthDeg, 75.0);
   // Another Frame of Reference stays where it was (nothing maps it onto the others).
   EXPECT_DOUBLE_EQ(patientZ(dwi.document, dwi.crosshair), dwiZ);
 }

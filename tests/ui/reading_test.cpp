@@ -43,6 +43,7 @@
 #include "pacs_node_config.h"
 #include "pacs_node_dialog.h"
 #include "reading_actions.h"
+#include "render_scheduler.h"
 #include "results_actions.h"
 #include "segment_panel.h"
 #include "series_drag.h"
@@ -50,6 +51,7 @@
 #include "slice_geometry.h"
 #include "slice_view.h"
 #include "study_browser_dialog.h"
+#include "volume_view.h"
 #include "voxray/io/phantom_series.h"
 #include "window_fixture.h"
 #ifdef VOXRAY_HAS_STUDYDB
@@ -798,8 +800,10 @@ class ReadingTest : public QObject {
 
   // Issue 37: a 2x2 rule naming four series puts each in its named cell: the first cell's
   // series is the main document, each other one opens in a cell of its own (an axial view of
-  // that series: its own volume, window and crosshair) in its view's place, the crosshairs
-  // linked in patient coordinates; a session keeps the four and opens them again.
+  // that series: its own volume, window and crosshair; in the 3D view's place the series in
+  // 3D) in its view's place, the crosshairs linked in patient coordinates; a session keeps
+  // the four and opens them again; a series dropped on a cell opens there; another study
+  // closes the cells.
   void ruleShowsFourSeriesEachInItsCell() {
     window_->resize(1800, 1000);
     const fs::path study = freshDir("four-series");
@@ -829,6 +833,10 @@ class ReadingTest : public QObject {
     // voxel's HU: each derived series is shifted by its own HU).
     const GridView views[] = {GridView::Coronal, GridView::Sagittal, GridView::Volume3d};
     const SeriesCells& cells = reading_->seriesCells();
+    auto cellWidget = [&](GridView v) -> QWidget* {
+      return v == GridView::Volume3d ? static_cast<QWidget*>(reading_->cell3dView())
+                                     : reading_->cellView(v);
+    };
     auto loaded = [&] {
       for (GridView v : views) {
         const SeriesCell* c = cells.cell(v);
@@ -844,7 +852,7 @@ class ReadingTest : public QObject {
       QCOMPARE(v.dims.z, 14);
       QCOMPARE(firstVoxelHu(v), derivedFirstVoxelHu(*brain, v, derived[i].huShift));
       QVERIFY(c.comparison.sameFrameOfReference() && c.comparison.linked());
-      SliceView* view = reading_->cellView(views[i]);
+      QWidget* view = cellWidget(views[i]);
       QVERIFY(view);
       QTRY_VERIFY(view->isVisible());
     }
@@ -857,7 +865,8 @@ class ReadingTest : public QObject {
             !window_->volumeView().isVisible());
     SliceView* coronal = reading_->cellView(GridView::Coronal);
     SliceView* sagittal = reading_->cellView(GridView::Sagittal);
-    SliceView* threeD = reading_->cellView(GridView::Volume3d);
+    VolumeView* threeD = reading_->cell3dView();  // the 3D view's place: its series in 3D
+    QVERIFY(threeD && !reading_->cellView(GridView::Volume3d));
     // (Each cell's view sits below its series' name: its top is below the axial view's.)
     auto at = [&](QWidget* w) { return w->mapTo(window_, QPoint(0, 0)); };
     QTRY_VERIFY(at(coronal).x() > at(&axial).x() && at(coronal).y() >= at(&axial).y() &&
@@ -894,16 +903,41 @@ class ReadingTest : public QObject {
       QVERIFY2(off.isEmpty(), qPrintable(off));
     }
     for (int notches : {2, -3}) {
-      const double before = cellZ(GridView::Volume3d);
-      wheel(threeD, notches);
+      const double before = cellZ(GridView::Coronal);
+      wheel(coronal, notches);
       QVERIFY2(
-          std::abs(std::abs(cellZ(GridView::Volume3d) - before) - 10.0 * std::abs(notches)) < 1e-6,
-          qPrintable(QString("the cell moved %1 mm").arg(cellZ(GridView::Volume3d) - before)));
+          std::abs(std::abs(cellZ(GridView::Coronal) - before) - 10.0 * std::abs(notches)) < 1e-6,
+          qPrintable(QString("the cell moved %1 mm").arg(cellZ(GridView::Coronal) - before)));
       QVERIFY2(
-          std::abs(mainZ() - cellZ(GridView::Volume3d)) <= 0.5 * brain->spacingMm.z + 1e-6,
-          qPrintable(QString("main z %1, cell z %2").arg(mainZ()).arg(cellZ(GridView::Volume3d))));
+          std::abs(mainZ() - cellZ(GridView::Coronal)) <= 0.5 * brain->spacingMm.z + 1e-6,
+          qPrintable(QString("main z %1, cell z %2").arg(mainZ()).arg(cellZ(GridView::Coronal))));
       const QString off = othersFollow("a cell scrolled");
       QVERIFY2(off.isEmpty(), qPrintable(off));
+    }
+
+    // The 3D cell renders its series through its own render thread, its camera the main
+    // one's (one Frame of Reference): the main camera turned, the cell's frame follows.
+    {
+      QSignalSpy frames(reading_->cell3dScheduler(), &RenderScheduler::frameReady);
+      fixture_.models->render.update(kCamera, [](RenderParams& p) { p.camera.azimuthDeg = 40.0; });
+      const SeriesCell& c = *cells.cell(GridView::Volume3d);
+      QCOMPARE(c.render.params().camera.azimuthDeg, 40.0);
+      bool full = false;
+      for (int tries = 0; tries < 600 && !full; ++tries) {
+        if (frames.isEmpty()) frames.wait(100);
+        while (!frames.isEmpty())
+          full = !frames.takeFirst().at(0).value<std::shared_ptr<const Frame>>()->interactive;
+      }
+      QVERIFY2(full, "the 3D cell rendered no full frame within 60 s");
+      QCoreApplication::processEvents();
+      const QImage f = threeD->lastFrame();
+      QVERIFY(!f.isNull());
+      // The head in the frame: more than a tenth of its pixels differ from the corner's
+      // background (the head fills about half of a framed view).
+      int head = 0;
+      for (int y = 0; y < f.height(); ++y)
+        for (int x = 0; x < f.width(); ++x) head += f.pixel(x, y) != f.pixel(0, 0);
+      QVERIFY2(head > f.width() * f.height() / 10, qPrintable(QString("%1 pixels").arg(head)));
     }
 
     // README's docs/images/reading-four-series.png with VOXRAY_CELLS_SHOT=PATH (under xvfb-run
@@ -934,7 +968,7 @@ class ReadingTest : public QObject {
       const Volume& v = *cells.cell(views[i])->document.volume();
       QCOMPARE(v.study.seriesInstanceUid, uids[i]);
       QCOMPARE(firstVoxelHu(v), derivedFirstVoxelHu(*brain, v, derived[i].huShift));
-      QTRY_VERIFY(reading_->cellView(views[i]) && reading_->cellView(views[i])->isVisible());
+      QTRY_VERIFY(cellWidget(views[i]) && cellWidget(views[i])->isVisible());
     }
     QVERIFY(!window_->compareView() || !window_->compareView()->isVisible());
 

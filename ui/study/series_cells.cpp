@@ -16,8 +16,9 @@ std::vector<PlacedView> cellsToOpen(const ReadingLayout& l, const std::string& s
   return out;
 }
 
-SeriesCells::SeriesCells(VolumeDocument& main, CrosshairModel& mainCrosshair)
-    : main_(main), mainCrosshair_(mainCrosshair) {
+SeriesCells::SeriesCells(VolumeDocument& main, CrosshairModel& mainCrosshair,
+                         RenderStateModel& mainRender)
+    : main_(main), mainCrosshair_(mainCrosshair), mainRender_(mainRender) {
   // Another main volume (a session, the next series): each cell's link maps from it anew.
   mainConn_ = main_.changed.connect([this] {
     for (auto& c : cells_) refreshGeometry(*c);
@@ -58,6 +59,7 @@ std::vector<GridView> SeriesCells::setCells(const std::vector<PlacedView>& wante
     auto c = std::make_unique<SeriesCell>();
     c->placed = p;
     c->link = std::make_unique<ComparisonLink>(c->comparison, mainCrosshair_, c->crosshair);
+    c->renderLink = std::make_unique<RenderLink>(c->comparison, mainRender_, c->render);
     next.push_back(std::move(c));
     added.push_back(p.view);
   }
@@ -93,6 +95,7 @@ void SeriesCells::refreshGeometry(SeriesCell& c) {
   c.comparison.setGeometries(VolumeGeometry::of(*main_.volume()),
                              VolumeGeometry::of(*c.document.volume()));
   c.link->syncMovingToFixed();
+  c.renderLink->syncMovingToFixed();
 }
 
 }  // namespace voxray

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_link.h"
 #include "comparison_model.h"
 #include "crosshair_model.h"
 #include "layout_model.h"
@@ -30,6 +31,9 @@ struct SeriesCell {
   RenderStateModel render;
   ComparisonModel comparison;  // fixed: the main document; moving: this cell's
   std::unique_ptr<ComparisonLink> link;
+  // Its 3D look and camera follow the main one's (and the main camera its), as compare's
+  // prior column: for a cell shown in 3D.
+  std::unique_ptr<RenderLink> renderLink;
 };
 
 // The views of L that need a cell of their own with SHOWN as the main document's series:
@@ -39,8 +43,9 @@ std::vector<PlacedView> cellsToOpen(const ReadingLayout& l, const std::string& s
 
 class SeriesCells {
  public:
-  // MAIN and its crosshair: the main document the cells are linked to (they outlive this).
-  SeriesCells(VolumeDocument& main, CrosshairModel& mainCrosshair);
+  // MAIN, its crosshair and render state: the main document the cells are linked to (they
+  // outlive this).
+  SeriesCells(VolumeDocument& main, CrosshairModel& mainCrosshair, RenderStateModel& mainRender);
   ~SeriesCells();
   SeriesCells(const SeriesCells&) = delete;
   SeriesCells& operator=(const SeriesCells&) = delete;
@@ -53,8 +58,9 @@ class SeriesCells {
   std::vector<GridView> setCells(const std::vector<PlacedView>& wanted);
   void clear() { setCells({}); }
 
-  // VIEW's cell shows SERIES: its crosshair on the main one's patient point (when linked),
-  // its window the series' own. False: VIEW has no cell (it went while the series loaded).
+  // VIEW's cell shows SERIES: its crosshair and 3D camera on the main one's patient point
+  // (when linked), its 3D look the main one's, its window the series' own. False: VIEW has no cell
+  // (it went while the series loaded).
   bool setVolume(GridView view, VolumeSeries series, const std::string& name);
 
   SeriesCell* cell(GridView view);
@@ -66,6 +72,7 @@ class SeriesCells {
   void refreshGeometry(SeriesCell& c);  // the main or the cell's volume changed
   VolumeDocument& main_;
   CrosshairModel& mainCrosshair_;
+  RenderStateModel& mainRender_;
   std::vector<std::unique_ptr<SeriesCell>> cells_;
   int mainConn_ = 0;
 };

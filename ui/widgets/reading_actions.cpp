@@ -26,6 +26,7 @@
 #include "json_text_dialog.h"
 #include "load_controller.h"
 #include "main_window.h"
+#include "render_scheduler.h"
 #include "series_drag.h"
 #include "session_actions.h"
 #include "slice_view.h"
@@ -65,7 +66,7 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
     : QObject(&window),
       window_(window),
       models_(models),
-      cells_(std::make_unique<SeriesCells>(models.document, models.crosshair)) {
+      cells_(std::make_unique<SeriesCells>(models.document, models.crosshair, models.render)) {
   setObjectName("readingActions");
   configFolder_ = QStandardPaths::writableLocation(QStandardPaths::AppConfigLocation);
   buildMenu();
@@ -109,9 +110,13 @@ ReadingActions::~ReadingActions() {
   // The cells' views and loaders go before the models they are bound to.
   for (const auto& [view, w] : cellViews_)
     if (w) delete w->parentWidget();  // the view and its name
+  if (cell3d_) delete cell3d_->parentWidget();
+  cell3dScheduler_.reset();
   for (const auto& [view, l] : cellLoaders_) delete l.data();
   cells_.reset();
 }
+
+VolumeView* ReadingActions::cell3dView() const { return cell3d_.data(); }
 
 SliceView* ReadingActions::cellView(GridView view) const {
   auto it = cellViews_.find(view);
@@ -126,6 +131,14 @@ void ReadingActions::closeCell(GridView view) {
       delete box;
     }
     cellViews_.erase(it);
+  }
+  if (view == GridView::Volume3d && cell3dScheduler_) {
+    if (cell3d_) {
+      QWidget* box = cell3d_->parentWidget();
+      window_.grid().setCellView(view, nullptr);
+      delete box;
+    }
+    cell3dScheduler_.reset();  // after its view
   }
   if (auto it = cellLoaders_.find(view); it != cellLoaders_.end()) {
     delete it->second.data();  // cancels a load under way and waits for it
@@ -146,9 +159,6 @@ void ReadingActions::showCells(const std::string& current) {
     SeriesCell& c = *cells_->cell(v);
     // An axial view of the cell's series, as compare's columns show theirs: the cells read
     // side by side, one patient z in each.
-    auto* view =
-        new SliceView(Orientation::Axial, c.document, c.crosshair, c.windowLevel, c.render);
-    view->setObjectName(QString::fromStdString("seriesCell-" + gridViewName(v)));
     const std::string series = c.placed.series;
     const QString name =
         QString::fromStdString(c.placed.description.empty() ? series : c.placed.description);
@@ -158,8 +168,24 @@ void ReadingActions::showCells(const std::string& current) {
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
     layout->addWidget(new QLabel(name));
+    QWidget* view = nullptr;
+    if (v == GridView::Volume3d) {
+      // The 3D view's place: the series in 3D, through a render thread (and device copy) of
+      // its own on the window's device, as compare's prior column.
+      cell3dScheduler_ = std::make_unique<RenderScheduler>(c.render, c.document,
+                                                           QString::fromStdString(models_.device));
+      cell3d_ = new VolumeView(c.render, c.document, c.crosshair, *cell3dScheduler_);
+      view = cell3d_;
+    } else {
+      // An axial view of the cell's series, as compare's columns show theirs: the cells read
+      // side by side, one patient z in each.
+      auto* slice =
+          new SliceView(Orientation::Axial, c.document, c.crosshair, c.windowLevel, c.render);
+      cellViews_[v] = slice;
+      view = slice;
+    }
+    view->setObjectName(QString::fromStdString("seriesCell-" + gridViewName(v)));
     layout->addWidget(view, 1);
-    cellViews_[v] = view;
     window_.grid().setCellView(v, box);
     if (SeriesDropFilter* drops = window_.seriesDrops()) drops->watch(view);
     auto* loader = new LoadController(&window_);
@@ -507,8 +533,11 @@ void ReadingActions::dropSeries(QWidget* target, const SeriesDrag& d) {
   }
   // A series cell's view: the series goes in that cell (a series of the open study; another
   // study's opens beside, as on the grid's other cells). Later: the drop's view may close.
-  for (const auto& [cell, w] : cellViews_)
-    if (w == target) {
+  std::map<GridView, QWidget*> cellWidgets;
+  for (const auto& [cell, w] : cellViews_) cellWidgets[cell] = w.data();
+  if (cell3d_) cellWidgets[GridView::Volume3d] = cell3d_.data();
+  for (const auto& [cell, w] : cellWidgets)
+    if (w && w == target) {
       if (!own) {
         status(name + " opens beside");
         window_.openPrior(folder, options);

@@ -29,7 +29,9 @@ namespace voxray::ui {
 
 class LoadController;
 class MainWindow;
+class RenderScheduler;
 class SliceView;
+class VolumeView;
 struct SeriesDrag;
 
 class ReadingActions : public QObject {
@@ -72,10 +74,13 @@ class ReadingActions : public QObject {
   // right column); on compare's right column it opens there. The other column is kept.
   void dropSeries(QWidget* view, const SeriesDrag& d);
   // More than two series placed: the cells of the views showing another series than the
-  // main document's (series_cells.h), and each one's slice view (an axial view of its own
-  // series, in that view's grid position; none: the view has no cell).
+  // main document's (series_cells.h), and each one's view in that view's grid position: an
+  // axial slice view of its own series (cellView; none: the view has no cell), or in the 3D
+  // view's place its series in 3D (cell3dView, with its own render thread).
   const SeriesCells& seriesCells() const { return *cells_; }
   SliceView* cellView(GridView view) const;
+  VolumeView* cell3dView() const;
+  RenderScheduler* cell3dScheduler() const { return cell3dScheduler_.get(); }
   // The open study's volume series in the study's order (none: no DICOM folder).
   std::vector<StudySeries> studySeries() const;
   // The view the last focused slice view is (axial before any).
@@ -137,6 +142,8 @@ class ReadingActions : public QObject {
   std::unique_ptr<SeriesCells> cells_;
   std::map<GridView, QPointer<SliceView>> cellViews_;
   std::map<GridView, QPointer<LoadController>> cellLoaders_;
+  std::unique_ptr<RenderScheduler> cell3dScheduler_;  // the 3D cell's, before its models go
+  QPointer<VolumeView> cell3d_;
   std::string cellsFolder_;
 };
 
