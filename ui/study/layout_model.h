@@ -49,7 +49,8 @@ struct PlacedView {
 // The grid as the reader left it: the layout and, when a hanging protocol (or the user: Show
 // series in this view) placed series, what each named view holds. Two different series show
 // side by side (the first cell's series in the left column, the other in the right, linked in
-// patient coordinates: compare). Saved in sessions (Session::reading).
+// patient coordinates: compare); three or four each in its own cell (series_cells.h). Saved in
+// sessions (Session::reading).
 struct ReadingLayout {
   ViewLayout layout = ViewLayout::MprPlus3d;
   std::vector<PlacedView> placed;  // empty: every view shows the open volume

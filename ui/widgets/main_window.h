@@ -71,6 +71,8 @@ class MainWindow : public QMainWindow {
   // INPUT as the prior beside the study: the comparison mode, once loaded.
   void openPrior(const std::string& input, const LoadOptions& options = {});
   void setCompareMode(bool on);  // the two columns instead of the four views, or back
+  // What makes a view take series dragged from the study browser (a series cell's view too).
+  SeriesDropFilter* seriesDrops() const { return seriesDrops_; }
 
   // Opens INPUT (DICOM, raw with options.raw, or "" for the phantom) on the load thread;
   // once loaded it starts from its own defaults, with STUDYVALUES on top (openStudy).

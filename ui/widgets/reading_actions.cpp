@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QKeySequence>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
@@ -18,17 +19,20 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QVBoxLayout>
 
 #include "compare_view.h"
 #include "gui_message.h"
 #include "json_text_dialog.h"
 #include "load_controller.h"
 #include "main_window.h"
+#include "render_scheduler.h"
 #include "series_drag.h"
 #include "session_actions.h"
 #include "slice_view.h"
 #include "study_attributes.h"
 #include "study_browser_dialog.h"
+#include "view_grid.h"
 #include "volume_view.h"
 #include "voxray/io/error.h"
 #include "window_level.h"
@@ -59,7 +63,10 @@ std::string qtKeyNormaliser(const std::string& key) {
 }
 
 ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
-    : QObject(&window), window_(window), models_(models) {
+    : QObject(&window),
+      window_(window),
+      models_(models),
+      cells_(std::make_unique<SeriesCells>(models.document, models.crosshair, models.render)) {
   setObjectName("readingActions");
   configFolder_ = QStandardPaths::writableLocation(QStandardPaths::AppConfigLocation);
   buildMenu();
@@ -73,7 +80,11 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
     setReading(ReadingLayout{*last, {}});
   // A study the user opens (not a session: it brings its own view) hangs by the rules.
   connect(&window_, &MainWindow::volumeShown, this, [this] {
-    if (pendingPlacement_) {  // the series a rule placed is shown now
+    // Another study: the cells of the last one close, and their placement with them (a
+    // session opens its own again; a rule places the new study's).
+    if (!cells_->empty() && models_.source.path != cellsFolder_)
+      setReading(ReadingLayout{reading_.layout, {}});  // its placement goes with them
+    if (pendingPlacement_) {                           // the series a rule placed is shown now
       ReadingLayout r = *pendingPlacement_;
       pendingPlacement_.reset();
       const std::string shown = shownSeries(r.layout, r.placed).value_or("");
@@ -95,6 +106,106 @@ ReadingActions::ReadingActions(MainWindow& window, AppModels& models)
   connect(&window_.loader(), &LoadController::cancelled, this, dropPending);
 }
 
+ReadingActions::~ReadingActions() {
+  // The cells' views and loaders go before the models they are bound to.
+  for (const auto& [view, w] : cellViews_)
+    if (w) delete w->parentWidget();  // the view and its name
+  if (cell3d_) delete cell3d_->parentWidget();
+  cell3dScheduler_.reset();
+  for (const auto& [view, l] : cellLoaders_) delete l.data();
+  cells_.reset();
+}
+
+VolumeView* ReadingActions::cell3dView() const { return cell3d_.data(); }
+
+SliceView* ReadingActions::cellView(GridView view) const {
+  auto it = cellViews_.find(view);
+  return it == cellViews_.end() ? nullptr : it->second.data();
+}
+
+void ReadingActions::closeCell(GridView view) {
+  if (auto it = cellViews_.find(view); it != cellViews_.end()) {
+    if (it->second) {
+      QWidget* box = it->second->parentWidget();  // the view and its name
+      window_.grid().setCellView(view, nullptr);
+      delete box;
+    }
+    cellViews_.erase(it);
+  }
+  if (view == GridView::Volume3d && cell3dScheduler_) {
+    if (cell3d_) {
+      QWidget* box = cell3d_->parentWidget();
+      window_.grid().setCellView(view, nullptr);
+      delete box;
+    }
+    cell3dScheduler_.reset();  // after its view
+  }
+  if (auto it = cellLoaders_.find(view); it != cellLoaders_.end()) {
+    delete it->second.data();  // cancels a load under way and waits for it
+    cellLoaders_.erase(it);
+  }
+  std::vector<PlacedView> rest;
+  for (const auto& c : cells_->cells())
+    if (c->placed.view != view) rest.push_back(c->placed);
+  cells_->setCells(rest);
+}
+
+void ReadingActions::showCells(const std::string& current) {
+  const std::vector<PlacedView> wanted = cellsToOpen(reading_, current);
+  for (GridView v : cells_->leaving(wanted)) closeCell(v);
+  const std::string folder = models_.source.path;
+  cellsFolder_ = folder;
+  for (GridView v : cells_->setCells(wanted)) {
+    SeriesCell& c = *cells_->cell(v);
+    // An axial view of the cell's series, as compare's columns show theirs: the cells read
+    // side by side, one patient z in each.
+    const std::string series = c.placed.series;
+    const QString name =
+        QString::fromStdString(c.placed.description.empty() ? series : c.placed.description);
+    // The series' name above its view (as compare's columns have): which cell is which.
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(new QLabel(name));
+    QWidget* view = nullptr;
+    if (v == GridView::Volume3d) {
+      // The 3D view's place: the series in 3D, through a render thread (and device copy) of
+      // its own on the window's device, as compare's prior column.
+      cell3dScheduler_ = std::make_unique<RenderScheduler>(c.render, c.document,
+                                                           QString::fromStdString(models_.device));
+      cell3d_ = new VolumeView(c.render, c.document, c.crosshair, *cell3dScheduler_);
+      view = cell3d_;
+    } else {
+      // An axial view of the cell's series, as compare's columns show theirs: the cells read
+      // side by side, one patient z in each.
+      auto* slice =
+          new SliceView(Orientation::Axial, c.document, c.crosshair, c.windowLevel, c.render);
+      cellViews_[v] = slice;
+      view = slice;
+    }
+    view->setObjectName(QString::fromStdString("seriesCell-" + gridViewName(v)));
+    layout->addWidget(view, 1);
+    window_.grid().setCellView(v, box);
+    if (SeriesDropFilter* drops = window_.seriesDrops()) drops->watch(view);
+    auto* loader = new LoadController(&window_);
+    cellLoaders_[v] = loader;
+    connect(loader, &LoadController::loaded, this,
+            [this, v, series](VolumeSeries s, const QString& n, const QString&) {
+              // Its cell may have gone or changed series while it loaded.
+              if (SeriesCell* now = cells_->cell(v); now && now->placed.series == series)
+                cells_->setVolume(v, std::move(s), n.toStdString());
+            });
+    connect(loader, &LoadController::failed, this, [this, v, name](const QString& m) {
+      emit failed(
+          "Cannot open " + name + " in the " + QString::fromStdString(gridViewName(v)) + " view",
+          m);
+    });
+    LoadOptions options;
+    options.series = series;
+    loader->load(folder, options, name);
+  }
+}
 void ReadingActions::setConfigFolder(const QString& folder) {
   configFolder_ = folder;
   loadUserFiles();
@@ -212,11 +323,14 @@ void ReadingActions::setLayout(ViewLayout l) {
     models_.comparison.reset();
     window_.setCompareMode(false);
   }
-  setReading(ReadingLayout{l, {}});
+  setReading(ReadingLayout{l, {}});  // no series placed: the cells close
 }
 
 void ReadingActions::setReading(const ReadingLayout& r) {
   reading_ = r;
+  // One or two series: the grid's views and compare's columns show them; no cells.
+  if (seriesInCells(r).size() <= 2)
+    for (GridView c : cells_->leaving({})) closeCell(c);
   window_.grid().arrange(visibleCells(r));
   if (QAction* a = action("layout-" + layoutName(r.layout))) a->setChecked(true);
   if (const QString notes = emptyViewsText(); !notes.isEmpty()) status(notes);
@@ -286,6 +400,18 @@ bool ReadingActions::placeSeriesOf(const HangingRule& r) {
 }
 
 void ReadingActions::hang(ReadingLayout placed, const std::string& current) {
+  if (seriesInCells(placed).size() > 2 && !current.empty()) {
+    // Each series in its named view: the main document's in its views, the others in cells
+    // of their own (compare's columns are not needed).
+    if (besideShown_) {
+      besideShown_ = false;
+      models_.comparison.reset();
+      window_.setCompareMode(false);
+    }
+    setReading(placed);
+    showCells(current);
+    return;
+  }
   const auto beside = besideSeries(placed.layout, placed.placed, current);
   placed.placed = beside ? keepShown(placed.placed, current, beside->series)
                          : keepShown(placed.placed, current);
@@ -355,6 +481,7 @@ std::vector<std::string> ReadingActions::restoreReading(const ReadingLayout& r) 
   const auto cells = seriesInCells(checked);
   besideShown_ = cells.size() > 1 && priorIs(models_, models_.source.path, cells[1]);
   setReading(checked);
+  if (cells.size() > 2) showCells(openSeriesSelector());  // each series in its cell again
   return notes;
 }
 
@@ -404,6 +531,24 @@ void ReadingActions::dropSeries(QWidget* target, const SeriesDrag& d) {
     }
     return;
   }
+  // A series cell's view: the series goes in that cell (a series of the open study; another
+  // study's opens beside, as on the grid's other cells). Later: the drop's view may close.
+  std::map<GridView, QWidget*> cellWidgets;
+  for (const auto& [cell, w] : cellViews_) cellWidgets[cell] = w.data();
+  if (cell3d_) cellWidgets[GridView::Volume3d] = cell3d_.data();
+  for (const auto& [cell, w] : cellWidgets)
+    if (w && w == target) {
+      if (!own) {
+        status(name + " opens beside");
+        window_.openPrior(folder, options);
+        return;
+      }
+      status(name + " opens in the " + QString::fromStdString(gridViewName(cell)) + " view");
+      QTimer::singleShot(0, this, [this, cell, s = *own] {
+        hang(placeInView(reading_, cell, s), openSeriesSelector());
+      });
+      return;
+    }
   std::optional<GridView> view;
   if (target == &window_.volumeView()) view = GridView::Volume3d;
   for (int i = 0; i < 3; ++i)
@@ -490,7 +635,8 @@ void ReadingActions::showHangingProtocolEditor() {
                    "first whose every match field fits wins. A pattern is a case-insensitive "
                    "substring, or /a regex/. Layouts: 1x1, 1x2, 2x2, 1+3, mpr+3d, 3d. \"series\": "
                    "{\"axial\": \"T2\", \"3d\": 2} puts the study's series in views by "
-                   "description or by place (1, 2, …); the views show one series at a time.",
+                   "description or by place (1, 2, …); two series show side by side, three or "
+                   "four each in its own cell, linked in patient coordinates.",
                    QString::fromStdString(hangingProtocolsJson(protocols_)),
                    QString::fromStdString(defaultHangingProtocolsJson()),
                    [this](const std::string& json) { setProtocolsJson(json); });

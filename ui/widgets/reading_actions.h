@@ -6,17 +6,20 @@
 // it) acting while the views have the focus, and comes from the keymap (keymap.json in the
 // config folder). The rules and keys are reading_keymap.h's and hanging_protocol.h's.
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include "app_models.h"
 #include "hanging_protocol.h"
 #include "layout_model.h"
 #include "reading_keymap.h"
+#include "series_cells.h"
 
 class QAction;
 class QMenu;
@@ -24,14 +27,18 @@ class QWidget;
 
 namespace voxray::ui {
 
+class LoadController;
 class MainWindow;
+class RenderScheduler;
 class SliceView;
+class VolumeView;
 struct SeriesDrag;
 
 class ReadingActions : public QObject {
   Q_OBJECT
  public:
   ReadingActions(MainWindow& window, AppModels& models);
+  ~ReadingActions() override;
 
   // Where keymap.json and hanging-protocols.json live (the user's config folder, or one a
   // test sets); setConfigFolder reloads both.
@@ -66,6 +73,14 @@ class ReadingActions : public QObject {
   // grid it shows beside as showSeriesInView does (a series of another study: in compare's
   // right column); on compare's right column it opens there. The other column is kept.
   void dropSeries(QWidget* view, const SeriesDrag& d);
+  // More than two series placed: the cells of the views showing another series than the
+  // main document's (series_cells.h), and each one's view in that view's grid position: an
+  // axial slice view of its own series (cellView; none: the view has no cell), or in the 3D
+  // view's place its series in 3D (cell3dView, with its own render thread).
+  const SeriesCells& seriesCells() const { return *cells_; }
+  SliceView* cellView(GridView view) const;
+  VolumeView* cell3dView() const;
+  RenderScheduler* cell3dScheduler() const { return cell3dScheduler_.get(); }
   // The open study's volume series in the study's order (none: no DICOM folder).
   std::vector<StudySeries> studySeries() const;
   // The view the last focused slice view is (axial before any).
@@ -99,8 +114,13 @@ class ReadingActions : public QObject {
   QString applyLook(const HangingRule* r);  // the rule's window and 3D preset, said
   QString emptyViewsText() const;           // "Views left empty: sagittal: …", or ""
   // PLACED on the grid with CURRENT (the open series) shown: a second series opens beside it
-  // in compare's right column; a third's view is left empty with a note.
+  // in compare's right column; with more than two series each other series opens in a cell
+  // of its own in its view's place (series_cells.h).
   void hang(ReadingLayout placed, const std::string& current);
+  // The cells reading_ needs with CURRENT as the main document's series: kept, opened
+  // (each series loads from the study's folder) or closed.
+  void showCells(const std::string& current);
+  void closeCell(GridView view);
   std::string openSeriesSelector() const;  // the open series' selector, or ""
   void fillSeriesMenu(QMenu* menu);
 
@@ -117,6 +137,14 @@ class ReadingActions : public QObject {
   int focusedSlice_ = 0;
   // The placement opened its second series as compare's prior (a layout key closes it).
   bool besideShown_ = false;
+  // More than two series: the cells (their models), their views and loaders, and the study
+  // folder they were opened from (another study closes them).
+  std::unique_ptr<SeriesCells> cells_;
+  std::map<GridView, QPointer<SliceView>> cellViews_;
+  std::map<GridView, QPointer<LoadController>> cellLoaders_;
+  std::unique_ptr<RenderScheduler> cell3dScheduler_;  // the 3D cell's, before its models go
+  QPointer<VolumeView> cell3d_;
+  std::string cellsFolder_;
 };
 
 // Qt's reading of a key text ("ctrl+n" → "Ctrl+N"); "" when it is no key.

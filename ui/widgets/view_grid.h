@@ -24,9 +24,16 @@ class ViewGrid : public QWidget {
   // Places the views (by GridView number: the constructor's order) in CELLS; the others hide.
   void arrange(const std::vector<LayoutCell>& cells);
   bool shows(QWidget* view) const { return shown_.contains(view); }
+  // VIEW's grid position shows W (a series cell's own view; reading_actions.h) in place of
+  // the constructor's view, which hides; nullptr gives the position back to it. The layout
+  // is arranged again.
+  void setCellView(GridView view, QWidget* w);
+  QWidget* viewAt(GridView view) const { return views_[int(view)]; }
 
  private:
-  QList<QWidget*> views_;
+  QList<QWidget*> own_;    // the constructor's views
+  QList<QWidget*> views_;  // what each position shows now
+  std::vector<LayoutCell> cells_;
   QList<QWidget*> shown_;  // the current layout's views
   QWidget* maximised_ = nullptr;
 };
