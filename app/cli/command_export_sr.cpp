@@ -93,6 +93,7 @@ int runExportSr(const InputOptions& in, const ExportSrOptions& o) {
     const auto segments = reportSegments(*segmentation, v);
     list.insert(list.end(), segments.begin(), segments.end());
     if (!o.seg.empty()) {
+#ifdef VOXRAY_HAS_SEGMENT_FILES
       // Written first: the report's segment groups reference it by its SOP Instance UID.
       DicomSegOptions segOptions;
       segOptions.force = o.force;
@@ -102,6 +103,11 @@ int runExportSr(const InputOptions& in, const ExportSrOptions& o) {
       std::cout << o.seg << ": DICOM SEG of " << segmentation->segments.size() << " segment"
                 << (segmentation->segments.size() == 1 ? "" : "s") << ", SOP Instance UID "
                 << info.segSopInstanceUid << "\n";
+#else
+      throw inputError(
+          "export-sr --seg: this build has no DICOM SEG writer (built without "
+          "DCMTK); use a full build");
+#endif
     }
   }
   if (!o.output.empty()) {
