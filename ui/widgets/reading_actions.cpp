@@ -544,8 +544,9 @@ void ReadingActions::dropSeries(QWidget* target, const SeriesDrag& d) {
         return;
       }
       status(name + " opens in the " + QString::fromStdString(gridViewName(cell)) + " view");
-      QTimer::singleShot(0, this, [this, cell, s = *own] {
-        hang(placeInView(reading_, cell, s), openSeriesSelector());
+      // A copy: a structured binding cannot be captured in C++17.
+      QTimer::singleShot(0, this, [this, at = cell, s = *own] {
+        hang(placeInView(reading_, at, s), openSeriesSelector());
       });
       return;
     }
