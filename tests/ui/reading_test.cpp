@@ -341,13 +341,11 @@ class ReadingTest : public QObject {
   }
 
   void matchingRuleAppliesItsWindowAndLayout() {
-    const fs::path dir = freshDir("rules");
-    std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
+    useRules("rules", R"({"voxray-hanging-protocols": 1, "rules": [
       {"name": "chest", "match": {"series-description": "chest"}, "window": "Lung"},
       {"name": "head bone", "match": {"modality": "CT", "body-part": "brain",
                                       "series-description": "/brain\\s+5mm/"},
-       "layout": "1x2", "window": "Bone", "preset": "CT-Skin"}]})";
-    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+       "layout": "1x2", "window": "Bone", "preset": "CT-Skin"}]})");
     QVERIFY(errors_.isEmpty());
     QSignalSpy applied(reading_, &ReadingActions::protocolApplied);
     QSignalSpy shown(window_, &MainWindow::volumeShown);
@@ -667,11 +665,9 @@ class ReadingTest : public QObject {
   // note, and a session keeps the placement.
   void ruleSeriesPlacementLeavesAMissingSeriesEmptyAndTheSessionKeepsIt() {
     window_->resize(1800, 1000);
-    const fs::path dir = freshDir("placement");
-    std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
+    useRules("placement", R"({"voxray-hanging-protocols": 1, "rules": [
       {"name": "head", "match": {"modality": "CT"}, "layout": "2x2",
-       "series": {"axial": "brain", "coronal": 1, "sagittal": "STIR"}}]})";
-    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+       "series": {"axial": "brain", "coronal": 1, "sagittal": "STIR"}}]})");
     QVERIFY(errors_.isEmpty());
     openBrain();
     QCOMPARE(reading_->layout(), ViewLayout::TwoByTwo);
@@ -718,11 +714,9 @@ class ReadingTest : public QObject {
     const fs::path study = freshDir("two-series");
     const std::string t2Uid = writeTwoSeriesStudy(study);
     QVERIFY(!t2Uid.empty());
-    const fs::path dir = freshDir("two-series-config");
-    std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
+    useRules("two-series-config", R"({"voxray-hanging-protocols": 1, "rules": [
       {"name": "pair", "match": {"modality": "CT"}, "layout": "1x2",
-       "series": {"axial": "STD BRAIN", "3d": "T2 LIKE"}}]})";
-    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+       "series": {"axial": "STD BRAIN", "3d": "T2 LIKE"}}]})");
     QVERIFY(errors_.isEmpty());
     QSignalSpy shown(window_, &MainWindow::volumeShown);
     window_->open(study.string(), {});
@@ -812,12 +806,10 @@ class ReadingTest : public QObject {
                                                 {"ODD PLUS 10MM", 3030, true, 300}};
     const auto uids = writeStudy(study, derived);
     QCOMPARE(uids.size(), size_t(3));
-    const fs::path dir = freshDir("four-series-config");
-    std::ofstream(dir / "hanging-protocols.json") << R"({"voxray-hanging-protocols": 1, "rules": [
+    useRules("four-series-config", R"({"voxray-hanging-protocols": 1, "rules": [
       {"name": "four", "match": {"modality": "CT"}, "layout": "2x2",
        "series": {"axial": "STD BRAIN", "coronal": "T2 LIKE", "sagittal": "EVEN",
-                  "3d": "ODD PLUS"}}]})";
-    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+                  "3d": "ODD PLUS"}}]})");
     QVERIFY(errors_.isEmpty());
     QSignalSpy shown(window_, &MainWindow::volumeShown);
     window_->open(study.string(), {});
@@ -1224,6 +1216,12 @@ class ReadingTest : public QObject {
   }
 
  private:
+  // RULES (a hanging-protocols.json's text) as the rules of the fresh config folder NAME.
+  void useRules(const std::string& name, const char* rules) {
+    const fs::path dir = freshDir(name);
+    std::ofstream(dir / "hanging-protocols.json") << rules;
+    reading_->setConfigFolder(QString::fromStdString(dir.string()));
+  }
   void openBrain() {
     QSignalSpy shown(window_, &MainWindow::volumeShown);
     window_->open(kBrain, {});
