@@ -8,21 +8,30 @@
 //        exact in a float, so the nearest hit wins as in the host's composite);
 //   mip: the same z-buffer with depth (1 - value) / 2 (IceT has no max mode: the largest
 //        value is the nearest depth), depth 1 (IceT's empty) where the ray missed the clip box.
-// ICET_COMPOSITE_ONE_BUFFER: only the colour comes back. Rank 0 adds the background and
-// rounds as the kernels' to_rgba8.
+// Each rank gives IceT its slab's projection as bounds (slab_bounds.h), so IceT blends and
+// sends only the pixels a slab can cover. ICET_COMPOSITE_ONE_BUFFER: only the colour comes back.
+// Rank 0 adds the background and rounds as the kernels' to_rgba8.
 //
 // Against the host's composite (the same parts, compositeParts) the difference is float
 // rounding of "over" associated differently by IceT's tree, and dvr's early termination,
 // which IceT does not stop at: the parts behind the point where the opacity reached
 // earlyTermination add at most 1 - earlyTermination per channel (multi_device.h).
+// IcetColour::Bytes composites 8-bit premultiplied colour instead of float (a quarter of the
+// bytes to blend and send): each part is rounded once to 8 bits and IceT's byte "over" rounds
+// once per blend, so N ranks may differ from the float composite by up to N levels.
 #include <mpi.h>
 
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "slab_bounds.h"
 #include "voxray/engine/multi_device.h"
 #include "voxray/io/image.h"
 
 namespace voxray::mpi {
+
+enum class IcetColour { Floats, Bytes };
 
 struct IcetFrameStats {
   double frameMs = 0.0;      // this rank: icetDrawFrame's wall time (render and composite)
@@ -42,9 +51,10 @@ class IcetCompositor {
   // composited in the order RANKORDER (front to back, dvr). OUT (rank 0): the image. A part
   // that fails is drawn empty and its message returned in *ERROR on its rank; the frame
   // still completes on every rank, so the caller can agree on the outcome (rank_agreement.h).
+  // BOUNDS: where this rank's part can show (slabBoundsNdc; none: the whole image).
   void drawFrame(MultiDeviceRenderer& renderer, const RenderParams& p,
-                 const std::vector<int>& rankOrder, Image* out, IcetFrameStats* stats,
-                 std::string* error);
+                 const std::vector<int>& rankOrder, const std::optional<NdcBox>& bounds,
+                 IcetColour colour, Image* out, IcetFrameStats* stats, std::string* error);
 
  private:
   MPI_Comm comm_;

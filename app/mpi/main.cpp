@@ -22,6 +22,7 @@
 #include "rank_agreement.h"
 #include "rank_slab.h"
 #include "render_flags.h"
+#include "slab_bounds.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/io/error.h"
 
@@ -34,6 +35,7 @@ struct Options {
   std::string output, device;
   int frames = 1;
   bool wholeVolume = false;
+  std::string icetColour = "float";
 };
 
 std::string sliceText(const PartRange& r) {
@@ -184,12 +186,14 @@ int run(const Options& o, MPI_Comm world) {
 
   // 5. The frames: the first builds the kernels; with --frames N the rest are timed.
   IcetCompositor icet(world);
+  const std::optional<NdcBox> bounds = slabBoundsNdc(volume, p, range);
+  const IcetColour colour = o.icetColour == "bytes" ? IcetColour::Bytes : IcetColour::Floats;
   Image image;
   std::vector<double> frameMs, renderMs, compositeMs, ownMs, ownCompositeMs;
   for (int f = 0; f < std::max(o.frames, 1); ++f) {
     IcetFrameStats stats;
     MPI_Barrier(world);  // every rank starts the frame together: the time is the frame's
-    icet.drawFrame(*renderer, p, order, &image, &stats, &error);
+    icet.drawFrame(*renderer, p, order, bounds, colour, &image, &stats, &error);
     if (!allSucceeded(world, error, sliceText(range))) return 1;
     // The slowest rank's part bounds the frame. IceT's composite time on a faster rank holds
     // its wait for that part; on the slowest rank it is the composite alone.
@@ -257,6 +261,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000));
   app.add_flag("--whole-volume", o.wholeVolume,
                "every rank reads the whole volume, also where it could read its slab alone");
+  app.add_option("--icet-colour", o.icetColour,
+                 "what IceT composites: float (premultiplied float RGBA, the default) or bytes "
+                 "(8-bit: a quarter of the bytes, up to one level per rank from float)")
+      ->check(CLI::IsMember({"float", "bytes"}));
   int rc = 0;
   try {
     app.parse(argc, argv);

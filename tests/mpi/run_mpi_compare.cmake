@@ -1,6 +1,6 @@
 # One voxray-mpi frame against voxray-cli render of the same scene on one device (see
 # CMakeLists.txt for the bound). Fails on either run or when a pixel differs by more.
-execute_process(COMMAND ${MPIEXEC} ${MPI_FLAGS} -n ${NP} ${MPI} ${ARGS} -o ${OUT}-mpi.png
+execute_process(COMMAND ${MPIEXEC} ${MPI_FLAGS} -n ${NP} ${MPI} ${ARGS} ${MPI_ARGS} -o ${OUT}-mpi.png
   RESULT_VARIABLE rc TIMEOUT 240)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "voxray-mpi on ${NP} ranks failed (${rc})")
