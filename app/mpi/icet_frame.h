@@ -36,7 +36,11 @@ enum class IcetColour { Floats, Bytes };
 struct IcetFrameStats {
   double frameMs = 0.0;      // this rank: icetDrawFrame's wall time (render and composite)
   double renderMs = 0.0;     // this rank: its part in the draw callback (kernel and readback)
+  double copyMs = 0.0;       // this rank: the part into IceT's image (in the draw callback)
   double compositeMs = 0.0;  // ICET_COMPOSITE_TIME
+  double compressMs = 0.0;   // ICET_COMPRESS_TIME (part of the composite)
+  double blendMs = 0.0;      // ICET_BLEND_TIME (part of the composite)
+  double collectMs = 0.0;    // ICET_COLLECT_TIME: the pieces to rank 0
   double icetTotalMs = 0.0;  // ICET_TOTAL_DRAW_TIME
 };
 

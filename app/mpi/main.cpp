@@ -36,6 +36,7 @@ struct Options {
   int frames = 1;
   bool wholeVolume = false;
   std::string icetColour = "float";
+  std::string ess = "on";
 };
 
 std::string sliceText(const PartRange& r) {
@@ -159,6 +160,7 @@ int run(const Options& o, MPI_Comm world) {
     context = std::make_unique<ClContext>(selector);
     MultiDeviceOptions mo;
     mo.ranges = {range};
+    mo.emptySpaceSkipping = o.ess == "on";
     mo.valueRange = valueRange;
     renderer =
         std::make_unique<MultiDeviceRenderer>(std::vector<ClContext*>{context.get()}, volume, mo);
@@ -190,6 +192,7 @@ int run(const Options& o, MPI_Comm world) {
   const IcetColour colour = o.icetColour == "bytes" ? IcetColour::Bytes : IcetColour::Floats;
   Image image;
   std::vector<double> frameMs, renderMs, compositeMs, ownMs, ownCompositeMs;
+  std::vector<double> copyMs, compressMs, blendMs, collectMs, totalMs;
   for (int f = 0; f < std::max(o.frames, 1); ++f) {
     IcetFrameStats stats;
     MPI_Barrier(world);  // every rank starts the frame together: the time is the frame's
@@ -208,6 +211,11 @@ int run(const Options& o, MPI_Comm world) {
       frameMs.push_back(stats.frameMs);
       ownMs.push_back(stats.renderMs);
       ownCompositeMs.push_back(stats.compositeMs);
+      copyMs.push_back(stats.copyMs);
+      compressMs.push_back(stats.compressMs);
+      blendMs.push_back(stats.blendMs);
+      collectMs.push_back(stats.collectMs);
+      totalMs.push_back(stats.icetTotalMs);
       renderMs.push_back(slowest.ms);
       compositeMs.push_back(composite);
     }
@@ -224,7 +232,9 @@ int run(const Options& o, MPI_Comm world) {
   // Each rank's own part and IceT's composite time there (with its wait for slower parts).
   std::ostringstream own;
   own << "  " << ofRank << ": part " << median(ownMs) << " ms, IceT composite "
-      << median(ownCompositeMs) << " ms";
+      << median(ownCompositeMs) << " ms (compress " << median(compressMs) << ", blend "
+      << median(blendMs) << "), copy into IceT " << median(copyMs) << " ms, collect "
+      << median(collectMs) << " ms, IceT's total " << median(totalMs) << " ms";
   const auto partLines = gatherText(world, own.str());
   for (const auto& line : partLines) std::cerr << line << "\n";
   error.clear();
@@ -261,6 +271,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000));
   app.add_flag("--whole-volume", o.wholeVolume,
                "every rank reads the whole volume, also where it could read its slab alone");
+  app.add_option("--ess", o.ess, "empty-space skipping on (the default) or off (heavy frames)")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--icet-colour", o.icetColour,
                  "what IceT composites: float (premultiplied float RGBA, the default) or bytes "
                  "(8-bit: a quarter of the bytes, up to one level per rank from float)")
