@@ -56,10 +56,10 @@ namespace fs = std::filesystem;
 
 void ReadingTest::matchingRuleAppliesItsWindowAndLayout() {
   useRules("rules", R"({"voxray-hanging-protocols": 1, "rules": [
-    {"name": "chest", "match": {"series-description": "chest"}, "window": "Lung"},
-    {"name": "head bone", "match": {"modality": "CT", "body-part": "brain",
-                                    "series-description": "/brain\\s+5mm/"},
-     "layout": "1x2", "window": "Bone", "preset": "CT-Skin"}]})");
+      {"name": "chest", "match": {"series-description": "chest"}, "window": "Lung"},
+      {"name": "head bone", "match": {"modality": "CT", "body-part": "brain",
+                                      "series-description": "/brain\\s+5mm/"},
+       "layout": "1x2", "window": "Bone", "preset": "CT-Skin"}]})");
   QVERIFY(errors_.isEmpty());
   QSignalSpy applied(reading_, &ReadingActions::protocolApplied);
   QSignalSpy shown(window_, &MainWindow::volumeShown);
@@ -101,8 +101,8 @@ void ReadingTest::ruleEditorNamesTheFieldAndSavesWhatValidates() {
 void ReadingTest::ruleSeriesPlacementLeavesAMissingSeriesEmptyAndTheSessionKeepsIt() {
   window_->resize(1800, 1000);
   useRules("placement", R"({"voxray-hanging-protocols": 1, "rules": [
-    {"name": "head", "match": {"modality": "CT"}, "layout": "2x2",
-     "series": {"axial": "brain", "coronal": 1, "sagittal": "STIR"}}]})");
+      {"name": "head", "match": {"modality": "CT"}, "layout": "2x2",
+       "series": {"axial": "brain", "coronal": 1, "sagittal": "STIR"}}]})");
   QVERIFY(errors_.isEmpty());
   openBrain();
   QCOMPARE(reading_->layout(), ViewLayout::TwoByTwo);
@@ -150,8 +150,8 @@ void ReadingTest::ruleShowsTwoSeriesSideBySideLinkedInPatientZ() {
   const std::string t2Uid = writeTwoSeriesStudy(study);
   QVERIFY(!t2Uid.empty());
   useRules("two-series-config", R"({"voxray-hanging-protocols": 1, "rules": [
-    {"name": "pair", "match": {"modality": "CT"}, "layout": "1x2",
-     "series": {"axial": "STD BRAIN", "3d": "T2 LIKE"}}]})");
+      {"name": "pair", "match": {"modality": "CT"}, "layout": "1x2",
+       "series": {"axial": "STD BRAIN", "3d": "T2 LIKE"}}]})");
   QVERIFY(errors_.isEmpty());
   QSignalSpy shown(window_, &MainWindow::volumeShown);
   window_->open(study.string(), {});

@@ -69,9 +69,9 @@ void ReadingTest::ruleShowsFourSeriesEachInItsCell() {
   const auto uids = writeStudy(study, derived);
   QCOMPARE(uids.size(), size_t(3));
   useRules("four-series-config", R"({"voxray-hanging-protocols": 1, "rules": [
-    {"name": "four", "match": {"modality": "CT"}, "layout": "2x2",
-     "series": {"axial": "STD BRAIN", "coronal": "T2 LIKE", "sagittal": "EVEN",
-                "3d": "ODD PLUS"}}]})");
+      {"name": "four", "match": {"modality": "CT"}, "layout": "2x2",
+       "series": {"axial": "STD BRAIN", "coronal": "T2 LIKE", "sagittal": "EVEN",
+                  "3d": "ODD PLUS"}}]})");
   QVERIFY(errors_.isEmpty());
   QSignalSpy shown(window_, &MainWindow::volumeShown);
   window_->open(study.string(), {});
