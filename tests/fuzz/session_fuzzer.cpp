@@ -1,4 +1,4 @@
-// Fuzzes the session reader (session.cpp): the input is a session file's text. Only
+// Fuzzes the session reader (ui/study/session*.cpp): the input is a session file's text. Only
 // voxray::Error may come out, and a session that reads must write out as JSON that reads back
 // (what Voxray writes, Voxray must read).
 #include <cstddef>
