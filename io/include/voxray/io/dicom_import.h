@@ -4,6 +4,7 @@
 // split where geometry differs; the largest true volume is chosen unless the caller
 // selects another. Only std and GLM types here: DCMTK and OpenJPEG stay private.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,10 +81,15 @@ class DicomImport {
   void add(const std::string& path, std::string bytes);
   // Waits for the worker (options.cancel stops the wait and throws Cancelled), then imports.
   Volume finish(const std::string& input);
+  // The stored range (storedRange) of the volume finish() returned, when the import knows it
+  // from its slices without another pass over the voxels (no rescale, no resampling); else
+  // none. A pass over a 400-slice CT was 0.03 s of pacs get's critical path.
+  std::optional<ValueRange> storedRange() const { return range_; }
 
  private:
   LoadOptions options_;
   std::unique_ptr<dicom::ArrivedFiles> arrived_;
+  std::optional<ValueRange> range_;
 };
 
 }  // namespace voxray
