@@ -2,7 +2,9 @@
 // a DICOM instance of its own; staging folders left by a crash go when a cache opens, those
 // of a live retrieval stay.
 #include <fcntl.h>
+#include <linux/fs.h>
 #include <sys/file.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -191,6 +193,20 @@ TEST(CacheStagingTest, OpeningTheCacheRemovesOnlyStaleStagingFolders) {
   EXPECT_TRUE(fs::exists(staging + "1.2.4-living/I1.dcm"));
   EXPECT_TRUE(fs::exists(staging + "1.2.5-youngg/I1.dcm"));
   close(held);
+}
+
+// Each retrieval's folder is placed away from its siblings (ext4's FS_TOPDIR_FL on
+// staging/, staged_series.h says why): where the file system keeps such flags, it is set.
+TEST(CacheStagingTest, StagingAsksForNewFoldersToBeSpread) {
+  PacsCache cache(tempFolder("cache"));
+  const std::string staging = cache.root() + "/staging";
+  const int fd = open(staging.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  ASSERT_GE(fd, 0) << staging;
+  int flags = 0;
+  const bool hasFlags = ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0;
+  close(fd);
+  if (!hasFlags) GTEST_SKIP() << "this file system keeps no inode flags";
+  EXPECT_TRUE(flags & FS_TOPDIR_FL) << "flags " << std::hex << flags;
 }
 
 }  // namespace

@@ -84,6 +84,7 @@ PacsCache::PacsCache(std::string root, uint64_t capBytes)
                       "): set VOXRAY_CACHE_DIR to a writable folder");
   // What a crashed or killed retrieval left: it would count against the cap for ever.
   pacs::removeStaleStaging(root_ + "/staging");
+  pacs::spreadNewFolders(root_ + "/staging");
 }
 
 std::vector<CachedSeries> PacsCache::load() const {

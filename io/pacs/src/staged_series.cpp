@@ -1,7 +1,9 @@
 #include "staged_series.h"
 
 #include <fcntl.h>
+#include <linux/fs.h>
 #include <sys/file.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -46,6 +48,17 @@ StagingFolder::~StagingFolder() {
   std::error_code ignored;
   if (!path_.empty()) fs::remove_all(path_, ignored);
   if (fd_ >= 0) ::close(fd_);  // releases the lock, after the folder went
+}
+
+void spreadNewFolders(const std::string& stagingRoot) {
+  const int fd = ::open(stagingRoot.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  int flags = 0;
+  if (::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0 && !(flags & FS_TOPDIR_FL)) {
+    flags |= FS_TOPDIR_FL;
+    ::ioctl(fd, FS_IOC_SETFLAGS, &flags);  // a hint: where it is refused, nothing changes
+  }
+  ::close(fd);
 }
 
 void removeStaleStaging(const std::string& stagingRoot) {
