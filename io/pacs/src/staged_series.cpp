@@ -100,6 +100,20 @@ void SeriesCheck::arrived(const std::string& path, const std::string& bytes) {
   arrived_[path] = std::move(c);
 }
 
+void SeriesCheck::known(const std::string& path, const std::string& sopClassUid,
+                        const std::string& seriesUid, const std::string& sopInstanceUid) {
+  // notAnImage's verdicts, in its order, for a file that parsed.
+  Checked c;
+  if (sopClassUid.empty())
+    c.why = "it has no SOP Class UID";
+  else if (seriesUid != seriesUid_)
+    c.why = "it belongs to series " + (seriesUid.empty() ? std::string("(none)") : seriesUid);
+  else if (sopInstanceUid.empty())
+    c.why = "it has no SOP Instance UID";
+  c.instance = sopInstanceUid;
+  arrived_[path] = std::move(c);
+}
+
 SeriesCheck::Checked SeriesCheck::check(const std::string& path) const {
   if (auto it = arrived_.find(path); it != arrived_.end()) return it->second;
   DcmFileFormat file;

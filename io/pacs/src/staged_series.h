@@ -50,6 +50,10 @@ class SeriesCheck {
   explicit SeriesCheck(std::string seriesUid) : seriesUid_(std::move(seriesUid)) {}
   // BYTES: the whole content just written at PATH.
   void arrived(const std::string& path, const std::string& bytes);
+  // PATH's identity, as an import that parsed it read it (an image it decoded): the same
+  // verdict as arrived() without parsing the file again.
+  void known(const std::string& path, const std::string& sopClassUid, const std::string& seriesUid,
+             const std::string& sopInstanceUid);
   // verifyStagedSeries(FOLDER, the series, FILES), reading from disk only the FILES that
   // did not pass through arrived() (DIMSE: DCMTK writes them).
   void verify(const std::string& folder, const std::vector<std::string>& files) const;

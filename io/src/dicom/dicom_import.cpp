@@ -600,6 +600,15 @@ void DicomImport::add(const std::string& path, std::string bytes) {
   arrived_->add(path, std::move(bytes));
 }
 
+std::optional<ArrivedInstance> DicomImport::instance(const std::string& path) {
+  arrived_->drain(options_.cancel);
+  if (options_.cancel && *options_.cancel) return std::nullopt;
+  const dicom::ArrivedFiles::File* file = arrived_->find(path);
+  if (!file || file->frames.empty()) return std::nullopt;
+  const dicom::FrameHeader& h = file->frames.front();
+  return ArrivedInstance{h.sopClassUid, h.seriesUid, h.sopInstanceUid};
+}
+
 Volume DicomImport::finish(const std::string& input) {
   range_.reset();
   return importWith(input, options_, arrived_.get(), &range_);
