@@ -154,7 +154,7 @@ int runGet(const PacsOptions& o) {
   std::optional<Volume> v;
   if (import) v = import->finish(entry.folder);
   double readyS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  nlohmann::json j = v ? infoJson(*v, nullptr) : nlohmann::json::object();
+  nlohmann::json j = v ? infoJson(*v, nullptr, import->storedRange()) : nlohmann::json::object();
   j["cache_folder"] = entry.folder;
   j["images"] = entry.images;
   j["megabytes"] = double(entry.bytes) / 1e6;

@@ -3,8 +3,8 @@
 namespace voxray::cli {
 namespace {
 
-nlohmann::json volumeJson(const Volume& v) {
-  ValueRange r = storedRange(v);
+nlohmann::json volumeJson(const Volume& v, std::optional<ValueRange> known = std::nullopt) {
+  ValueRange r = known ? *known : storedRange(v);
   double a = v.toPhysical(r.min), b = v.toPhysical(r.max);
   nlohmann::json dir = nlohmann::json::array();
   for (int c = 0; c < 3; ++c) dir.push_back({v.direction[c].x, v.direction[c].y, v.direction[c].z});
@@ -55,8 +55,9 @@ nlohmann::json seriesJson(const DicomListing& l) {
 
 nlohmann::json timePointJson(const Volume& v) { return volumeJson(v); }
 
-nlohmann::json infoJson(const Volume& v, const DicomListing* listing) {
-  nlohmann::json j = volumeJson(v);
+nlohmann::json infoJson(const Volume& v, const DicomListing* listing,
+                        std::optional<ValueRange> range) {
+  nlohmann::json j = volumeJson(v, range);
   if (listing) {
     j["series"] = seriesJson(*listing);
     j["files_scanned"] = listing->filesScanned;

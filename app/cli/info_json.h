@@ -9,7 +9,10 @@
 namespace voxray::cli {
 
 // LISTING may be null (raw data, or a build without DICOM).
-nlohmann::json infoJson(const Volume& v, const DicomListing* listing);
+// RANGE: the volume's stored range when the caller knows it (DicomImport::storedRange),
+// saving a pass over every voxel; otherwise it is measured.
+nlohmann::json infoJson(const Volume& v, const DicomListing* listing,
+                        std::optional<ValueRange> range = std::nullopt);
 // One time point's entry of `info --all-time-points --json` (the volume's fields alone).
 nlohmann::json timePointJson(const Volume& v);
 

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "image/oiio_codec.h"
+#include "module/program_module.h"
 #include "voxray/io/error.h"
 #include "voxray/io/image.h"
 #include "voxray/io/temporary_file.h"
@@ -25,29 +26,14 @@ struct Codec {
   std::string missing;  // empty when loaded
 };
 
-// Beside the program (the build tree's bin/), else where it is installed (../lib/voxray).
 Codec loadCodec() {
   Codec c;
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  const char* name = "libvoxray_oiio.so";
-  std::string reasons;
-  for (const fs::path& folder : {exe.parent_path(), exe.parent_path() / ".." / "lib" / "voxray"}) {
-    const fs::path module = folder / name;
-    void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) {
-      const char* why = dlerror();
-      reasons += std::string(reasons.empty() ? "" : "; ") + (why ? why : module.string());
-      continue;
-    }
-    c.write = reinterpret_cast<decltype(c.write)>(dlsym(handle, "voxray_oiio_write"));
-    c.read = reinterpret_cast<decltype(c.read)>(dlsym(handle, "voxray_oiio_read"));
-    if (c.write && c.read) return c;
-    reasons += "; " + module.string() + " lacks its functions";
-  }
-  c.missing = std::string("OpenImageIO's module ") + name +
-              " is not beside the program nor in ../lib/voxray (" + reasons +
-              "): reinstall Voxray or rebuild it (target voxray_oiio)";
+  const char* symbols[] = {"voxray_oiio_write", "voxray_oiio_read", nullptr};
+  void* handle =
+      loadProgramModule("libvoxray_oiio.so", "OpenImageIO", "voxray_oiio", symbols, &c.missing);
+  if (!handle) return c;
+  c.write = reinterpret_cast<decltype(c.write)>(dlsym(handle, "voxray_oiio_write"));
+  c.read = reinterpret_cast<decltype(c.read)>(dlsym(handle, "voxray_oiio_read"));
   return c;
 }
 

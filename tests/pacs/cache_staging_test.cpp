@@ -2,7 +2,9 @@
 // a DICOM instance of its own; staging folders left by a crash go when a cache opens, those
 // of a live retrieval stay.
 #include <fcntl.h>
+#include <linux/fs.h>
 #include <sys/file.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -14,6 +16,7 @@
 #include <gmock/gmock.h>
 
 #include "pacs_test_support.h"
+#include "voxray/io/dicom_import.h"
 
 namespace voxray::test {
 namespace {
@@ -63,12 +66,17 @@ std::vector<std::string> copyPhantom(const std::string& folder,
   return out;
 }
 
+// IMPORTED: the files handed over also go to an import (pacs get's way), from whose reading
+// of them the cache takes their identities.
 std::string retrieveFailure(
-    const std::function<std::vector<std::string>(const std::string&)>& write,
-    bool handOver = false) {
+    const std::function<std::vector<std::string>(const std::string&)>& write, bool handOver = false,
+    bool imported = false) {
   PacsCache cache(tempFolder("cache"));
   CopyingClient client(write, handOver);
-  std::string m = failure([&] { cache.retrieve(client, kPhantomStudy, kPhantomSeries); });
+  DicomImport import;
+  std::string m = failure([&] {
+    cache.retrieve(client, kPhantomStudy, kPhantomSeries, {}, imported ? &import : nullptr);
+  });
   expectNothingCached(cache);
   return m;
 }
@@ -119,28 +127,29 @@ TEST(CacheStagingTest, AFileThatIsNotDicomIsNotKept) {
 // Files handed over as they arrive (WADO-RS) are checked from their bytes, with the same
 // messages as files read from disk (issue 39 item 8: nothing is read back).
 TEST(CacheStagingTest, HandedOverFilesGiveTheSameVerdicts) {
-  for (bool handOver : {false, true}) {
-    SCOPED_TRACE(handOver ? "handed over" : "read from disk");
+  for (int way = 0; way < 3; ++way) {
+    const bool handOver = way > 0, imported = way == 2;
+    SCOPED_TRACE(imported ? "handed over to an import" : handOver ? "handed over" : "from disk");
     EXPECT_THAT(
         retrieveFailure(
             [](const std::string& f) {
               return copyPhantom(f, {"S2010/I10", "S1000/I10"});
             },
-            handOver),
+            handOver, imported),
         testing::AllOf(HasSubstr("1.dcm, which is not an image of it (it belongs to series"),
                        HasSubstr("nothing was kept")));
     EXPECT_THAT(retrieveFailure(
                     [](const std::string& f) {
                       return copyPhantom(f, {"S2010/I10", "S2010/I10"});
                     },
-                    handOver),
+                    handOver, imported),
                 HasSubstr("1.dcm, which is not an image of it (its SOP Instance UID came twice)"));
     EXPECT_THAT(retrieveFailure(
                     [](const std::string& f) {
                       std::ofstream(f + "/0.dcm") << "<html>login</html>";
                       return std::vector<std::string>{f + "/0.dcm"};
                     },
-                    handOver),
+                    handOver, imported),
                 HasSubstr("0.dcm, which is not an image of it"));
   }
   PacsCache cache(tempFolder("cache"));
@@ -191,6 +200,20 @@ TEST(CacheStagingTest, OpeningTheCacheRemovesOnlyStaleStagingFolders) {
   EXPECT_TRUE(fs::exists(staging + "1.2.4-living/I1.dcm"));
   EXPECT_TRUE(fs::exists(staging + "1.2.5-youngg/I1.dcm"));
   close(held);
+}
+
+// Each retrieval's folder is placed away from its siblings (ext4's FS_TOPDIR_FL on
+// staging/, staged_series.h says why): where the file system keeps such flags, it is set.
+TEST(CacheStagingTest, StagingAsksForNewFoldersToBeSpread) {
+  PacsCache cache(tempFolder("cache"));
+  const std::string staging = cache.root() + "/staging";
+  const int fd = open(staging.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  ASSERT_GE(fd, 0) << staging;
+  int flags = 0;
+  const bool hasFlags = ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0;
+  close(fd);
+  if (!hasFlags) GTEST_SKIP() << "this file system keeps no inode flags";
+  EXPECT_TRUE(flags & FS_TOPDIR_FL) << "flags " << std::hex << flags;
 }
 
 }  // namespace

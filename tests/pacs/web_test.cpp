@@ -67,6 +67,12 @@ TEST_F(WebTest, WadoRsImportedAsItArrivesIsTheDiskVolume) {
   EXPECT_EQ(retrieved.dims, glm::ivec3(512, 512, 28));
   expectSameVolume(retrieved, loadVolume(dicomPath("ct-philips-phantom/S2010")));
   EXPECT_THAT(said, testing::Contains("Decoded 28 slices as they arrived"));
+  // The range it knows from the slices (what pacs get reports) is the voxels' own.
+  ASSERT_TRUE(import.storedRange().has_value());
+  const ValueRange measured = storedRange(retrieved);
+  EXPECT_EQ(import.storedRange()->min, measured.min);
+  EXPECT_EQ(import.storedRange()->max, measured.max);
+  EXPECT_LT(measured.min, measured.max);  // a CT phantom, not a constant
 }
 
 TEST_F(WebTest, CancelWhileImportingAsItArrivesLeavesNoHalfSeries) {

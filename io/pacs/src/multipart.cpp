@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string_view>
 
 #include "voxray/io/error.h"
 
@@ -10,12 +11,9 @@ namespace {
 
 constexpr size_t kMaxHeaderBytes = 16 << 10;
 constexpr size_t kMaxPreambleBytes = 64 << 10;
-// Parts from this size on are handed over in the buffer they arrived in (a CT slice is half a
-// megabyte); smaller ones are copied out of it. The next buffer gets room for a part as large
-// as the last plus kFeedSlack: the feed that ends a part brings the start of the next (curl
-// hands over up to 16 KiB at a time).
-constexpr size_t kHandOverBytes = 64 << 10;
-constexpr size_t kFeedSlack = 64 << 10;
+// The preamble, delimiter lines and headers are read this much at a time: what follows the
+// headers is copied no further than this before it is taken as content.
+constexpr size_t kMetaStep = 4 << 10;
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -47,84 +45,110 @@ std::string multipartBoundary(const std::string& contentType) {
 MultipartSplitter::MultipartSplitter(const std::string& boundary, OnPart onPart,
                                      size_t maxPartBytes)
     : delimiter_("\r\n--" + boundary), onPart_(std::move(onPart)), maxPartBytes_(maxPartBytes) {
-  buffer_ = "\r\n";  // the first delimiter may open the body without a CRLF before it
+  meta_ = "\r\n";  // the first delimiter may open the body without a CRLF before it
 }
 
 void MultipartSplitter::feed(const char* data, size_t size) {
-  if (state_ == State::Done) return;  // the epilogue is ignored, as RFC 2046 says
-  buffer_.append(data, size);
-  parse();
+  // The epilogue (after the close delimiter) is ignored, as RFC 2046 says.
+  while (size > 0 && state_ != State::Done) {
+    const size_t used = state_ == State::Content ? content(data, size) : meta(data, size);
+    data += used;
+    size -= used;
+  }
 }
 
-void MultipartSplitter::parse() {
-  for (;;) {
-    if (state_ == State::Preamble || state_ == State::Content) {
-      size_t at = buffer_.find(delimiter_, scanFrom_);
-      if (at == std::string::npos) {
-        if (state_ == State::Preamble && buffer_.size() > kMaxPreambleBytes)
-          throw inputError("the multipart body does not start with its boundary");
-        // The part's content is all of the buffer but what may start a delimiter.
-        if (state_ == State::Content && buffer_.size() + 1 > maxPartBytes_ + delimiter_.size())
-          throw partTooLarge();
-        scanFrom_ =
-            buffer_.size() >= delimiter_.size() ? buffer_.size() - delimiter_.size() + 1 : 0;
-        return;
-      }
-      if (state_ == State::Content) {
-        if (at > maxPartBytes_) throw partTooLarge();
-        std::string part;
-        if (at >= kHandOverBytes) {
-          // A large part is the buffer's head: the buffer becomes the part (no copy), and
-          // the bytes after it start the next buffer, with room for a part as large.
-          part = std::move(buffer_);
-          buffer_ = std::string();
-          buffer_.reserve(at + kFeedSlack);
-          buffer_.assign(part, at + delimiter_.size());
-          part.resize(at);
-        } else {
-          // A small one is copied out: the buffer (and its room) stays for the next.
-          part = buffer_.substr(0, at);
-          buffer_.erase(0, at + delimiter_.size());
-        }
-        onPart_(headers_, std::move(part));
-        ++parts_;
-      } else {
-        buffer_.erase(0, at + delimiter_.size());
-      }
-      scanFrom_ = 0;
-      state_ = State::AfterDelimiter;
-    } else if (state_ == State::AfterDelimiter) {
-      if (buffer_.size() < 2) return;
-      if (buffer_.compare(0, 2, "--") == 0) {
-        state_ = State::Done;
-        buffer_.clear();
-        return;
-      }
-      size_t eol = buffer_.find("\r\n");  // transport padding (spaces) may precede the CRLF
-      if (eol == std::string::npos) {
-        if (buffer_.size() > 256) throw inputError("a multipart delimiter is not followed by CRLF");
-        return;
-      }
-      if (buffer_.find_first_not_of(" \t") < eol)
-        throw inputError("a multipart delimiter is followed by text, not CRLF");
-      buffer_.erase(0, eol + 2);
-      state_ = State::Headers;
-    } else if (state_ == State::Headers) {
-      size_t end = buffer_.find("\r\n\r\n");
-      if (buffer_.rfind("\r\n", 0) == 0) end = 0;  // a part with no headers
-      if (end == std::string::npos) {
-        if (buffer_.size() > kMaxHeaderBytes)
-          throw inputError("a multipart part's headers are too long");
-        return;
-      }
-      headers_ = lower(buffer_.substr(0, end));
-      buffer_.erase(0, end == 0 ? 2 : end + 4);
-      scanFrom_ = 0;
-      state_ = State::Content;
-    } else {
-      return;
+size_t MultipartSplitter::content(const char* data, size_t size) {
+  const size_t d = delimiter_.size();
+  size_t end = std::string::npos;  // where the part ends in content_
+  size_t used = 0;                 // bytes of DATA up to the end of the delimiter
+  // A delimiter that starts in the content held (in its last d - 1 bytes) and ends in DATA.
+  const size_t held = std::min(content_.size(), d - 1);
+  if (held > 0) {
+    std::string edge = content_.substr(content_.size() - held);
+    edge.append(data, std::min(size, d - 1));
+    const size_t at = edge.find(delimiter_);
+    if (at != std::string::npos && at < held) {
+      end = content_.size() - held + at;
+      used = d - (held - at);
     }
   }
+  if (end == std::string::npos) {
+    const size_t at = std::string_view(data, size).find(delimiter_);
+    if (at == std::string::npos) {
+      content_.append(data, size);
+      // The part's content is all of it but what may start a delimiter.
+      if (content_.size() + 1 > maxPartBytes_ + d) throw partTooLarge();
+      return size;
+    }
+    content_.append(data, at);
+    end = content_.size();
+    used = at + d;
+  }
+  if (end > maxPartBytes_) throw partTooLarge();
+  // The held content becomes the part (no copy); the next one starts in a buffer of its own.
+  std::string part = std::move(content_);
+  content_ = std::string();
+  part.resize(end);
+  lastPart_ = end;
+  state_ = State::AfterDelimiter;
+  onPart_(headers_, std::move(part));
+  ++parts_;
+  return used;
+}
+
+size_t MultipartSplitter::meta(const char* data, size_t size) {
+  const size_t before = meta_.size();
+  const size_t take = std::min(size, kMetaStep);
+  meta_.append(data, take);
+  size_t end = 0;  // bytes of meta_ this state takes; what follows is the next state's
+  if (state_ == State::Preamble) {
+    const size_t at = meta_.find(delimiter_, scanFrom_);
+    if (at == std::string::npos) {
+      if (meta_.size() > kMaxPreambleBytes)
+        throw inputError("the multipart body does not start with its boundary");
+      scanFrom_ = meta_.size() >= delimiter_.size() ? meta_.size() - delimiter_.size() + 1 : 0;
+      return take;
+    }
+    end = at + delimiter_.size();
+    state_ = State::AfterDelimiter;
+  } else if (state_ == State::AfterDelimiter) {
+    if (meta_.size() < 2) return take;
+    if (meta_.compare(0, 2, "--") == 0) {
+      state_ = State::Done;
+      meta_.clear();
+      return size;
+    }
+    const size_t eol = meta_.find("\r\n");  // transport padding (spaces) may precede the CRLF
+    if (eol == std::string::npos) {
+      if (meta_.size() > 256) throw inputError("a multipart delimiter is not followed by CRLF");
+      return take;
+    }
+    if (meta_.find_first_not_of(" \t") < eol)
+      throw inputError("a multipart delimiter is followed by text, not CRLF");
+    end = eol + 2;
+    state_ = State::Headers;
+  } else {  // Headers
+    if (meta_.rfind("\r\n", 0) == 0) {
+      headers_.clear();  // a part with no headers
+      end = 2;
+    } else {
+      const size_t at = meta_.find("\r\n\r\n");
+      if (at == std::string::npos) {
+        if (meta_.size() > kMaxHeaderBytes)
+          throw inputError("a multipart part's headers are too long");
+        return take;
+      }
+      headers_ = lower(meta_.substr(0, at));
+      end = at + 4;
+    }
+    state_ = State::Content;
+    // Room for a part as large as the last (a series' images are alike) and a delimiter's
+    // start: the content is appended without reallocating.
+    content_.reserve(lastPart_ + delimiter_.size());
+  }
+  meta_.clear();
+  scanFrom_ = 0;
+  return end - before;  // the rest of DATA is read again in the next state
 }
 
 Error MultipartSplitter::partTooLarge() const {

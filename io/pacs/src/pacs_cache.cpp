@@ -84,6 +84,7 @@ PacsCache::PacsCache(std::string root, uint64_t capBytes)
                       "): set VOXRAY_CACHE_DIR to a writable folder");
   // What a crashed or killed retrieval left: it would count against the cap for ever.
   pacs::removeStaleStaging(root_ + "/staging");
+  pacs::spreadNewFolders(root_ + "/staging");
 }
 
 std::vector<CachedSeries> PacsCache::load() const {
@@ -186,10 +187,16 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   // decoded; DIMSE files are checked from disk at the end.
   pacs::SeriesCheck check(seriesUid);
   RetrieveOptions withImport = options;
+  // The staging folder becomes FOLDER once the series is complete: the import knows each
+  // file by the path it will have there.
+  auto inFolder = [&](const std::string& path) {
+    return folder + "/" + fs::path(path).filename().string();
+  };
   withImport.written = [&](const std::string& path, std::string content) {
-    check.arrived(path, content);
-    // The staging folder becomes FOLDER once the series is complete.
-    const std::string arrived = folder + "/" + fs::path(path).filename().string();
+    // With an import, the file is checked from what the import read of it (below): one
+    // parse of each file instead of two (~0.05 ms each, on the writer's thread).
+    if (!import) check.arrived(path, content);
+    const std::string arrived = inFolder(path);
     if (!options.written) {
       if (import) import->add(arrived, std::move(content));
       return;
@@ -207,7 +214,13 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
     throw;
   }
   if (options.cancel && options.cancel->load()) throw cancelledError("Retrieval cancelled");
-  // Complete only once what arrived is the series, whole: a node may send other objects.
+  if (import)
+    for (const auto& path : files)
+      if (auto id = import->instance(inFolder(path)))
+        check.known(path, id->sopClassUid, id->seriesInstanceUid, id->sopInstanceUid);
+  if (options.cancel && options.cancel->load()) throw cancelledError("Retrieval cancelled");
+  // Complete only once what arrived is the series, whole: a node may send other objects;
+  // the files the import did not read are parsed from disk.
   check.verify(pattern, files);
   CachedSeries entry{studyUid, seriesUid, folder, 0, now(), int(files.size())};
   entry.bytes = diskBytes(pattern);

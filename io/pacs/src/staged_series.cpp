@@ -1,7 +1,9 @@
 #include "staged_series.h"
 
 #include <fcntl.h>
+#include <linux/fs.h>
 #include <sys/file.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -48,6 +50,17 @@ StagingFolder::~StagingFolder() {
   if (fd_ >= 0) ::close(fd_);  // releases the lock, after the folder went
 }
 
+void spreadNewFolders(const std::string& stagingRoot) {
+  const int fd = ::open(stagingRoot.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  int flags = 0;
+  if (::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0 && !(flags & FS_TOPDIR_FL)) {
+    flags |= FS_TOPDIR_FL;
+    ::ioctl(fd, FS_IOC_SETFLAGS, &flags);  // a hint: where it is refused, nothing changes
+  }
+  ::close(fd);
+}
+
 void removeStaleStaging(const std::string& stagingRoot) {
   std::error_code ec;
   const auto youngest = fs::file_time_type::clock::now() - std::chrono::minutes(1);
@@ -84,6 +97,20 @@ void SeriesCheck::arrived(const std::string& path, const std::string& bytes) {
   Checked c;
   c.why = notAnImage(dicom::loadDicomHeader(file, bytes.data(), bytes.size(), DCM_PixelData), file,
                      seriesUid_, c.instance);
+  arrived_[path] = std::move(c);
+}
+
+void SeriesCheck::known(const std::string& path, const std::string& sopClassUid,
+                        const std::string& seriesUid, const std::string& sopInstanceUid) {
+  // notAnImage's verdicts, in its order, for a file that parsed.
+  Checked c;
+  if (sopClassUid.empty())
+    c.why = "it has no SOP Class UID";
+  else if (seriesUid != seriesUid_)
+    c.why = "it belongs to series " + (seriesUid.empty() ? std::string("(none)") : seriesUid);
+  else if (sopInstanceUid.empty())
+    c.why = "it has no SOP Instance UID";
+  c.instance = sopInstanceUid;
   arrived_[path] = std::move(c);
 }
 

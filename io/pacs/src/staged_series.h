@@ -25,6 +25,14 @@ class StagingFolder {
   int fd_ = -1;  // holds the lock
 };
 
+// Asks the file system to place each new folder in STAGING_ROOT away from its siblings
+// (ext4's "top of a hierarchy" hint, FS_TOPDIR_FL; other file systems ignore it). A series'
+// files take their inodes near their folder's, and ext4 without a journal skips, one by one
+// for every new file, the inodes freed there in the last minutes: after a series of 400
+// files was removed (evicted, or the cache cleared), the next 400 took ~0.07 s of CPU to
+// create instead of ~0.01 s (issue 39 item 8, measured with perf on the Xeon's ext4).
+void spreadNewFolders(const std::string& stagingRoot);
+
 // Removes the staging folders no live retrieval holds (left by a crash or a kill). Folders
 // younger than a minute stay: their retrieval may not have locked them yet.
 void removeStaleStaging(const std::string& stagingRoot);
@@ -42,6 +50,10 @@ class SeriesCheck {
   explicit SeriesCheck(std::string seriesUid) : seriesUid_(std::move(seriesUid)) {}
   // BYTES: the whole content just written at PATH.
   void arrived(const std::string& path, const std::string& bytes);
+  // PATH's identity, as an import that parsed it read it (an image it decoded): the same
+  // verdict as arrived() without parsing the file again.
+  void known(const std::string& path, const std::string& sopClassUid, const std::string& seriesUid,
+             const std::string& sopInstanceUid);
   // verifyStagedSeries(FOLDER, the series, FILES), reading from disk only the FILES that
   // did not pass through arrived() (DIMSE: DCMTK writes them).
   void verify(const std::string& folder, const std::vector<std::string>& files) const;

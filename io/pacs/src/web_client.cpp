@@ -1,7 +1,6 @@
 // The DICOMweb transport: QIDO-RS search, WADO-RS retrieve (multipart/related, streamed to
 // files as parts arrive, transfer syntaxes as stored), STOW-RS send.
 #include <algorithm>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +9,7 @@
 #include "http_session.h"
 #include "multipart.h"
 #include "pacs_messages.h"
+#include "part_writer.h"
 #include "sendable.h"
 #include "transports.h"
 #include "voxray/io/error.h"
@@ -162,19 +162,18 @@ class WebClient : public PacsClient {
     std::vector<std::string> files;
     RetrieveProgress progress;
     std::unique_ptr<MultipartSplitter> splitter;
+    // This thread receives; the files are written (and handed to options.written) on the
+    // writer's (part_writer.h).
+    PartWriter writer(options.written);
     auto onPart = [&](const std::string& headers, std::string content) {
       if (headers.find("content-type") != std::string::npos &&
           headers.find("application/dicom") == std::string::npos)
         throw inputError("a part of the answer is not application/dicom");
       std::string path = fileName(folder, int(files.size()));
-      std::ofstream out(path, std::ios::binary);
-      out.write(content.data(), std::streamsize(content.size()));
-      if (!out.flush())
-        throw outputError("cannot write " + path + ": the disk may be full; free space");
       files.push_back(path);
       progress.received = int(files.size());
       progress.megabytes += double(content.size()) / 1e6;
-      if (options.written) options.written(path, std::move(content));
+      writer.add(std::move(path), std::move(content));
       if (options.progress) options.progress(progress);
     };
     auto sink = [&](const char* data, size_t size, const std::string& type) {
@@ -201,6 +200,7 @@ class WebClient : public PacsClient {
       throw inputError(where + ": " + e.what());
     }
     if (files.empty()) throw inputError(where + ": the server sent no images");
+    writer.finish();
     return files;
   }
 

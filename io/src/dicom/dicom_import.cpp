@@ -457,9 +457,12 @@ void describePet(const Candidate& c, Volume& v) {
 
 Volume decodeCandidate(const Scan& s, int index, const std::string& input,
                        const LoadOptions& options, ArrivedFiles* arrived,
-                       std::vector<std::string> warnings);
+                       std::vector<std::string> warnings,
+                       std::optional<ValueRange>* range = nullptr);
 
-Volume importWith(const std::string& input, const LoadOptions& options, ArrivedFiles* arrived) {
+// RANGE (may be null): the volume's stored range where the slices' own ranges give it.
+Volume importWith(const std::string& input, const LoadOptions& options, ArrivedFiles* arrived,
+                  std::optional<ValueRange>* range = nullptr) {
   if (arrived) {
     arrived->drain(options.cancel);
     throwIfCancelled(options, input);
@@ -468,12 +471,12 @@ Volume importWith(const std::string& input, const LoadOptions& options, ArrivedF
   std::vector<std::string> warnings;
   const int index =
       chooseTimePoint(s, chooseCandidate(s, input, options, warnings), input, options);
-  return decodeCandidate(s, index, input, options, arrived, std::move(warnings));
+  return decodeCandidate(s, index, input, options, arrived, std::move(warnings), range);
 }
 
 Volume decodeCandidate(const Scan& s, int index, const std::string& input,
                        const LoadOptions& options, ArrivedFiles* arrived,
-                       std::vector<std::string> warnings) {
+                       std::vector<std::string> warnings, std::optional<ValueRange>* range) {
   const Candidate& c = s.candidates[size_t(index)];
   const FrameHeader& f0 = c.first();
   if (std::string why = unsupportedReason(f0); !why.empty()) throw inputError(f0.path + ": " + why);
@@ -497,6 +500,15 @@ Volume decodeCandidate(const Scan& s, int index, const std::string& input,
       remapSlice(v.voxels.data() + k * sliceSize, sliceSize, scales[k], common);
     });
     warnings.push_back(common.warning);
+  }
+  if (range && !common.remap && !g.needsResampling && !scales.empty()) {
+    // The voxels are the slices as stored (storeWords/storeSlice measured each one).
+    ValueRange r{scales[0].min, scales[0].max};
+    for (const SliceScale& sc : scales) {
+      r.min = std::min(r.min, sc.min);
+      r.max = std::max(r.max, sc.max);
+    }
+    *range = r;
   }
   if (g.needsResampling) {
     report(options, 0.92, "Resampling to a uniform grid");
@@ -588,8 +600,18 @@ void DicomImport::add(const std::string& path, std::string bytes) {
   arrived_->add(path, std::move(bytes));
 }
 
+std::optional<ArrivedInstance> DicomImport::instance(const std::string& path) {
+  arrived_->drain(options_.cancel);
+  if (options_.cancel && *options_.cancel) return std::nullopt;
+  const dicom::ArrivedFiles::File* file = arrived_->find(path);
+  if (!file || file->frames.empty()) return std::nullopt;
+  const dicom::FrameHeader& h = file->frames.front();
+  return ArrivedInstance{h.sopClassUid, h.seriesUid, h.sopInstanceUid};
+}
+
 Volume DicomImport::finish(const std::string& input) {
-  return importWith(input, options_, arrived_.get());
+  range_.reset();
+  return importWith(input, options_, arrived_.get(), &range_);
 }
 
 }  // namespace voxray

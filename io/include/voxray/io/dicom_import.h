@@ -4,6 +4,7 @@
 // split where geometry differs; the largest true volume is chosen unless the caller
 // selects another. Only std and GLM types here: DCMTK and OpenJPEG stay private.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,11 @@ std::vector<Volume> importDicomTimePoints(const std::string& input,
 // and finish() imports INPUT as importDicom(INPUT, OPTIONS) does, using that work for the
 // files at the same paths and reading the others from disk. The volume and the errors are
 // importDicom's: what the worker could not do is done again from the file on disk.
+// Who a file handed to DicomImport::add is, as its import read it.
+struct ArrivedInstance {
+  std::string sopClassUid, seriesInstanceUid, sopInstanceUid;
+};
+
 class DicomImport {
  public:
   explicit DicomImport(LoadOptions options = {});
@@ -78,12 +84,21 @@ class DicomImport {
   // BYTES: the whole content of the file at PATH (there, or written there before finish()).
   // May be called from any one thread at a time.
   void add(const std::string& path, std::string bytes);
+  // The file added at PATH once the worker has read it, when it is an image it decoded
+  // completely; else none (or cancelled). Waits for the worker: the PACS cache takes a
+  // series' identities from here instead of parsing each file a second time.
+  std::optional<ArrivedInstance> instance(const std::string& path);
   // Waits for the worker (options.cancel stops the wait and throws Cancelled), then imports.
   Volume finish(const std::string& input);
+  // The stored range (storedRange) of the volume finish() returned, when the import knows it
+  // from its slices without another pass over the voxels (no rescale, no resampling); else
+  // none. A pass over a 400-slice CT was 0.03 s of pacs get's critical path.
+  std::optional<ValueRange> storedRange() const { return range_; }
 
  private:
   LoadOptions options_;
   std::unique_ptr<dicom::ArrivedFiles> arrived_;
+  std::optional<ValueRange> range_;
 };
 
 }  // namespace voxray

@@ -92,8 +92,9 @@ struct RetrieveOptions {
   std::function<void(const RetrieveProgress&)> progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;              // true: stop, throw Cancelled
   // Each file once it is written, with its content (handed over: the callee may keep it), so
-  // that its import can start during the transfer. May be empty; DICOMweb calls it, DIMSE
-  // (files written by DCMTK) does not.
+  // that its import can start during the transfer. May be empty; DICOMweb calls it (from the
+  // thread that writes the files, one at a time, in order; all before retrieveSeries
+  // returns), DIMSE (files written by DCMTK) does not.
   std::function<void(const std::string& path, std::string content)> written;
 };
 
