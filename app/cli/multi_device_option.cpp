@@ -19,6 +19,16 @@ void MultiDeviceOption::add(CLI::App& cmd) {
   cmd.add_option("--device-budget-mib", budgetMib,
                  "with --split/--devices: the most each device may hold of the volume (its "
                  "range and apron); a range over it is an error that says so");
+  cmd.add_option("--composite", composite,
+                 "with --split/--devices: where the parts' images are composited: device "
+                 "(the first device; the others' images come to it in half floats, only the "
+                 "frame comes back) or host (every part's float image comes back)")
+      ->check(CLI::IsMember({"device", "host"}));
+}
+
+MultiDeviceOptions::Composite MultiDeviceOption::compositeWhere() const {
+  return composite == "host" ? MultiDeviceOptions::Composite::Host
+                             : MultiDeviceOptions::Composite::Device;
 }
 
 std::vector<std::unique_ptr<ClContext>> MultiDeviceOption::contexts(

@@ -9,6 +9,7 @@
 #include "device_frame.h"
 #include "empty_space.h"
 #include "multi_device_composite.h"
+#include "multi_device_gpu_composite.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/io/error.h"
 #include "voxray/io/volume.h"
@@ -27,6 +28,20 @@ std::string mib(size_t bytes) {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+// The profiled time of EVENTS (a part's kernel, per band); 0 where the driver does not profile.
+double kernelMs(const std::vector<cl::Event>& events) {
+  double ms = 0.0;
+  try {
+    for (const cl::Event& e : events)
+      ms += double(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                   e.getProfilingInfo<CL_PROFILING_COMMAND_START>()) *
+            1e-6;
+  } catch (const cl::Error&) {
+    return 0.0;
+  }
+  return ms;
 }
 
 }  // namespace
@@ -71,9 +86,9 @@ struct MultiDeviceRenderer::Impl {
     // Their copies on the host, in pinned memory (CL_MEM_ALLOC_HOST_PTR, mapped once): a GPU
     // copies into it at the bus's speed, where pageable memory goes through a staging copy.
     cl::Buffer hostColour, hostOrder;
-    size_t capacity = 0;  // pixels
-    PartImage image;      // points into the mapped host buffers
-    cl::Event done;
+    size_t capacity = 0, hostCapacity = 0;  // pixels
+    PartImage image;                        // points into the mapped host buffers
+    std::vector<cl::Event> done;            // the kernel, per band of rows
     Part(ContextImpl& c, const Volume& v, PartRange r, VolumeStorage s)
         : cl(c), range(r), frame(c, v, s) {}
     ~Part() { unmap(); }
@@ -88,28 +103,42 @@ struct MultiDeviceRenderer::Impl {
       }
       image = PartImage{};
     }
-    void reserve(size_t pixels) {
-      if (pixels <= capacity) return;
-      unmap();
+    // HOST: the host copies too (the host composite, renderParts).
+    void reserve(size_t pixels, bool host) {
       const size_t colourBytes = pixels * sizeof(cl_float4), orderBytes = pixels * sizeof(cl_float);
-      colour = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, colourBytes);
-      order = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, orderBytes);
+      if (pixels > capacity) {
+        colour = cl::Buffer(cl.context, CL_MEM_READ_WRITE, colourBytes);
+        order = cl::Buffer(cl.context, CL_MEM_READ_WRITE, orderBytes);
+        capacity = pixels;
+      }
+      if (!host || pixels <= hostCapacity) return;
+      unmap();
       hostColour = cl::Buffer(cl.context, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, colourBytes);
       hostOrder = cl::Buffer(cl.context, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, orderBytes);
       image.colour = static_cast<const float*>(
           cl.queue.enqueueMapBuffer(hostColour, CL_TRUE, CL_MAP_READ, 0, colourBytes));
       image.order = static_cast<const float*>(
           cl.queue.enqueueMapBuffer(hostOrder, CL_TRUE, CL_MAP_READ, 0, orderBytes));
-      capacity = pixels;
+      hostCapacity = pixels;
     }
   };
   const Volume& volume;
   MultiDeviceOptions opts;
   std::vector<std::unique_ptr<Part>> parts;
+  std::unique_ptr<DeviceCompositor> compositor;  // made at the first device-composited frame
 
   Impl(const Volume& v, const MultiDeviceOptions& o) : volume(v), opts(o) {}
   void upload(Part& part, int index);
-  void enqueue(Part& part, int index, const RenderParams& p, std::string& variant);
+  // PART's kernel over BANDS of rows (part.done: one event each). HALF: into the compositor's
+  // half-float image of the part, nothing read back; else float colour and order, read back
+  // into the host copies.
+  void enqueue(Part& part, int index, const RenderParams& p, std::string& variant,
+               const std::vector<FrameBand>& bands, bool half);
+  // The frame with the composite on the first device (DeviceCompositor) into OUT.
+  // ORDER: the parts front to back (visibilityKeys). STATS: one per part.
+  void renderOnDevice(const RenderParams& p, const std::vector<int>& order, Image& out,
+                      std::vector<PartStats>& stats, std::string& variant, Clock::time_point start,
+                      double& compositeMs);
 };
 
 void MultiDeviceRenderer::Impl::upload(Part& part, int index) {
@@ -217,7 +246,8 @@ std::vector<PartRange> MultiDeviceRenderer::ranges() const {
 }
 
 void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParams& p,
-                                        std::string& variant) {
+                                        std::string& variant, const std::vector<FrameBand>& bands,
+                                        bool half) {
   DeviceFrame& f = part.frame;
   f.updateSetup(p);
   // A sample a range takes may lie up to a step beyond its plane (dvr's first and last
@@ -240,12 +270,13 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
   RaycastParams k = f.frameParams(p, sw);
   glm::ivec3 cells = part.space.dims();
   k.cells = {{cells.x, cells.y, cells.z, 0}};
-  const std::string options = "-cl-fast-relaxed-math " + switchOptions(sw, false);
+  const std::string options =
+      "-cl-fast-relaxed-math " + switchOptions(sw, false) + (half ? " -D PART_HALF=1" : "");
   if (index == 0) variant = options;
   const size_t pixels = size_t(p.width) * size_t(p.height);
   cl::Kernel kernel = part.cl.kernel("multidev/raycast_part.cl", "raycast_part", options);
   clCall([&] {
-    part.reserve(pixels);
+    part.reserve(pixels, !half);
     f.uploadFrame(k);
     // mip reads the cells' min/max directly (as the one-ray-per-work-item raycaster).
     if (opts.emptySpaceSkipping && p.mode != Mode::Mip)
@@ -260,7 +291,7 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
     kernel.setArg(arg++, cl_int2{{r.storedFirst, r.storedEnd - r.storedFirst}});
     kernel.setArg(arg++, f.paramsBuffer);
     kernel.setArg(arg++, f.lutBuffer);
-    kernel.setArg(arg++, part.colour);
+    kernel.setArg(arg++, half ? compositor->partImage(size_t(index)) : part.colour);
     kernel.setArg(arg++, part.order);
     kernel.setArg(arg++, part.space.leap());
     kernel.setArg(arg++, part.space.range());
@@ -269,13 +300,22 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
     kernel.setArg(arg++, cl_float2{{float(r.first), float(r.end)}});
     kernel.setArg(arg++, cl_int2{{r.first == 0 ? 1 : 0, r.end == volume.dims.z ? 1 : 0}});
     cl::NDRange local = part.cl.info.isGpu ? cl::NDRange(16, 8) : cl::NullRange;
-    size_t gx = size_t(p.width), gy = size_t(p.height);
-    if (local.dimensions() == 2) {
-      gx = (gx + 15) / 16 * 16;
-      gy = (gy + 7) / 8 * 8;
-    }
+    size_t gx = size_t(p.width);
+    if (local.dimensions() == 2) gx = (gx + 15) / 16 * 16;
     cl::CommandQueue& q = part.cl.queue;
-    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local, nullptr, &part.done);
+    part.done.clear();
+    for (const FrameBand& b : bands) {
+      // Bands other than the last are whole work-groups tall (frameBands).
+      size_t gy = size_t(b.rows);
+      if (local.dimensions() == 2) gy = (gy + 7) / 8 * 8;
+      part.done.emplace_back();
+      q.enqueueNDRangeKernel(kernel, cl::NDRange(0, size_t(b.first)), cl::NDRange(gx, gy), local,
+                             nullptr, &part.done.back());
+    }
+    if (half) {
+      q.flush();
+      return 0;
+    }
     q.enqueueReadBuffer(part.colour, CL_FALSE, 0, pixels * sizeof(cl_float4),
                         const_cast<float*>(part.image.colour));
     q.enqueueReadBuffer(part.order, CL_FALSE, 0, pixels * sizeof(cl_float),
@@ -285,11 +325,105 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
   });
 }
 
+void MultiDeviceRenderer::Impl::renderOnDevice(const RenderParams& p, const std::vector<int>& order,
+                                               Image& out, std::vector<PartStats>& stats,
+                                               std::string& variant, Clock::time_point start,
+                                               double& compositeMs) {
+  const size_t n = parts.size();
+  auto fail = [&](size_t k, const Error& e) {
+    if (e.kind() == Error::Kind::Input) throw e;  // the frame's, not this device's
+    throw deviceError("device " + std::to_string(k + 1) + " of " + std::to_string(n) + " (" +
+                      parts[k]->cl.info.name + "): " + e.what());
+  };
+  if (!compositor) {
+    std::vector<ContextImpl*> contexts;
+    for (auto& part : parts) contexts.push_back(&part->cl);
+    try {
+      compositor = std::make_unique<DeviceCompositor>(contexts);
+    } catch (const Error& e) {
+      fail(0, e);
+    }
+  }
+  const size_t pixels = size_t(p.width) * size_t(p.height);
+  const int rowStep = parts[0]->cl.info.isGpu ? 8 : 1;  // the part kernel's work-group height
+  const std::vector<FrameBand> bands = frameBands(p.height, opts.bands, rowStep);
+  try {
+    clCall([&] {
+      compositor->reserve(pixels);
+      compositor->beginFrame();
+      return 0;
+    });
+  } catch (const Error& e) {
+    fail(0, e);
+  }
+  // The first part last: the others' bands start their way back while it is set up.
+  for (size_t j = n; j-- > 0;) {
+    Part& part = *parts[j];
+    if (j > 0 && !part.frame.valueRange && parts[0]->frame.valueRange)
+      part.frame.valueRange = parts[0]->frame.valueRange;
+    try {
+      enqueue(part, int(j), p, variant, bands, j > 0);
+      if (j > 0)
+        clCall([&] {
+          for (size_t b = 0; b < bands.size(); ++b)
+            compositor->readBand(j, p.width, bands[b], part.done[b]);
+          return 0;
+        });
+    } catch (const Error& e) {
+      fail(j, e);
+    }
+  }
+  out.width = p.width;
+  out.height = p.height;
+  out.rgba.resize(pixels * 4);
+  try {
+    clCall([&] {
+      for (size_t b = 0; b < bands.size(); ++b)
+        compositor->compositeBand(p.mode, order, glm::vec3(p.background), float(p.earlyTermination),
+                                  parts[0]->colour, parts[0]->done[b], p.width, p.height, bands[b],
+                                  b, out.rgba.data());
+      return 0;
+    });
+  } catch (const Error& e) {
+    fail(0, e);
+  }
+  // Each part's kernels done (the others' last band is on the host by now).
+  double lastReady = 0.0;
+  for (size_t k = 0; k < n; ++k) {
+    Part& part = *parts[k];
+    try {
+      clCall([&] {
+        part.done.back().wait();
+        return 0;
+      });
+    } catch (const Error& e) {
+      fail(k, e);
+    }
+    PartStats& s = stats[k];
+    s.readyMs = msSince(start);
+    s.device = part.cl.info.name;
+    s.range = part.range;
+    s.kernelMs = kernelMs(part.done);
+    lastReady = std::max(lastReady, s.readyMs);
+  }
+  try {
+    clCall([&] {
+      compositor->finish();
+      return 0;
+    });
+  } catch (const Error& e) {
+    fail(0, e);
+  }
+  compositeMs = msSince(start) - lastReady;
+}
+
 std::vector<double> MultiDeviceRenderer::visibilityKeys(const RenderParams& p) {
   std::vector<double> keys;
   const int slices = impl_->volume.dims.z;
   for (auto& part : impl_->parts) {
     DeviceFrame& f = part->frame;
+    // The volume's value range, found once by the first part (a pass over the whole volume).
+    if (!f.valueRange) f.valueRange = impl_->parts[0]->frame.valueRange;
     f.updateSetup(p);
     const ViewGeometry& g = f.setup.view;
     const PartRange& r = part->range;
@@ -329,12 +463,32 @@ void MultiDeviceRenderer::renderInto(const RenderParams& p, Image* out, MultiDev
   Impl& m = *impl_;
   std::string variant;
   std::vector<PartStats> partStats(m.parts.size());
+  // The composite packs the parts' order in 4 bits each (composite_parts.cl): 8 at most.
+  if (out && !partImages && m.opts.composite == MultiDeviceOptions::Composite::Device &&
+      m.parts.size() <= 8) {
+    std::vector<double> keys = visibilityKeys(p);
+    std::vector<int> order(m.parts.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return keys[size_t(a)] < keys[size_t(b)]; });
+    double compositeMs = 0.0;
+    m.renderOnDevice(p, order, *out, partStats, variant, start, compositeMs);
+    if (stats) {
+      stats->deviceComposite = true;
+      stats->compositeMs = compositeMs;
+      stats->parts = std::move(partStats);
+      stats->variant = variant;
+      stats->totalMs = msSince(start);
+    }
+    return;
+  }
+  const std::vector<FrameBand> whole{{0, p.height}};
   for (size_t k = 0; k < m.parts.size(); ++k) {
     Impl::Part& part = *m.parts[k];
     // The volume's value range, found once by the first part (a pass over the whole volume).
     if (k > 0 && !part.frame.valueRange) part.frame.valueRange = m.parts[0]->frame.valueRange;
     try {
-      m.enqueue(part, int(k), p, variant);
+      m.enqueue(part, int(k), p, variant, whole, false);
     } catch (const Error& e) {
       if (e.kind() == Error::Kind::Input) throw;  // the frame's, not this device's
       throw deviceError("device " + std::to_string(k + 1) + " of " +
@@ -355,13 +509,7 @@ void MultiDeviceRenderer::renderInto(const RenderParams& p, Image* out, MultiDev
     s.readyMs = msSince(start);
     s.device = part.cl.info.name;
     s.range = part.range;
-    try {
-      cl_ulong t0 = part.done.getProfilingInfo<CL_PROFILING_COMMAND_START>();
-      cl_ulong t1 = part.done.getProfilingInfo<CL_PROFILING_COMMAND_END>();
-      s.kernelMs = double(t1 - t0) * 1e-6;
-    } catch (const cl::Error&) {
-      s.kernelMs = 0.0;  // some drivers do not profile
-    }
+    s.kernelMs = kernelMs(part.done);
   }
   const auto composite = Clock::now();
   if (out) {
