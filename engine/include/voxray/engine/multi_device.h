@@ -98,8 +98,10 @@ std::vector<PartRange> planParts(int dimZ, const std::vector<double>& weights, i
 struct PartStats {
   std::string device;  // its name
   PartRange range;
-  double kernelMs = 0.0;  // the device's profiled kernel time
-  double readyMs = 0.0;   // from the frame's start until its image was on the host
+  double kernelMs = 0.0;  // the device's profiled kernel time (its bands' sum)
+  // From the frame's start until its image was on the host (host composite) or its kernel
+  // done (device composite).
+  double readyMs = 0.0;
 };
 
 struct MultiDeviceStats {
