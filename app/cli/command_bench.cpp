@@ -107,6 +107,7 @@ int benchSplit(const BenchOptions& o) {
   mo.emptySpaceSkipping = o.ess == "on";
   mo.budgetBytes = o.multi.budgetMib << 20;
   mo.composite = o.multi.compositeWhere();
+  mo.balance = o.multi.balance;
   mo.storage = parseStorage(o.storage);
   MultiDeviceRenderer r(contexts, v, mo);
   for (const auto& size : split(o.sizes))

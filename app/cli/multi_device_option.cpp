@@ -24,6 +24,9 @@ void MultiDeviceOption::add(CLI::App& cmd) {
                  "(the first device; the others' images come to it in half floats, only the "
                  "frame comes back) or host (every part's float image comes back)")
       ->check(CLI::IsMember({"device", "host"}));
+  cmd.add_flag("--balance", balance,
+               "with --split/--devices: each device holds the whole volume where they all can, "
+               "and the z ranges move between frames so that their kernel times even out");
 }
 
 MultiDeviceOptions::Composite MultiDeviceOption::compositeWhere() const {

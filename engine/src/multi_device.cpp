@@ -126,9 +126,14 @@ struct MultiDeviceRenderer::Impl {
   MultiDeviceOptions opts;
   std::vector<std::unique_ptr<Part>> parts;
   std::unique_ptr<DeviceCompositor> compositor;  // made at the first device-composited frame
+  bool balancing = false;                        // opts.balance, and each holds the volume
+  std::vector<double> lastKernelMs;              // per part, the last frame's
 
   Impl(const Volume& v, const MultiDeviceOptions& o) : volume(v), opts(o) {}
   void upload(Part& part, int index);
+  // opts.balance: moves the planes between the parts so that the last frame's kernel times,
+  // spread evenly over each part's slices, would have been equal.
+  void rebalance();
   // PART's kernel over BANDS of rows (part.done: one event each). HALF: into the compositor's
   // half-float image of the part, nothing read back; else float colour and order, read back
   // into the host copies.
@@ -221,6 +226,28 @@ MultiDeviceRenderer::MultiDeviceRenderer(const std::vector<ClContext*>& contexts
                          " to " + std::to_string(r.storedEnd - 1) + ") does not fit the " +
                          std::to_string(volume.dims.z) + " slices with an apron of " +
                          std::to_string(options.apron));
+  }
+  if (options.balance && options.ranges.empty() && contexts.size() > 1) {
+    // Each holds the whole volume where every device can (its largest allocation, the
+    // budget, a 3D image's depth); else the ranges stay planParts'.
+    const glm::ivec3 n = volume.dims;
+    const size_t bytes = size_t(n.x) * size_t(n.y) * size_t(n.z) * sizeof(int16_t);
+    bool fits = true;
+    for (ClContext* c : contexts) {
+      const DeviceInfo& d = c->device();
+      size_t limit = d.maxAllocBytes;
+      if (options.budgetBytes > 0) limit = std::min(limit, options.budgetBytes);
+      const bool image = options.storage == VolumeStorage::Image3d ||
+                         (options.storage == VolumeStorage::Auto && d.isGpu && d.imageSupport);
+      fits = fits && bytes <= limit && (!image || size_t(n.z) <= d.maxImage3d[2]);
+    }
+    if (fits) {
+      for (PartRange& r : ranges) {
+        r.storedFirst = 0;
+        r.storedEnd = n.z;
+      }
+      impl_->balancing = true;
+    }
   }
   for (size_t k = 0; k < contexts.size(); ++k) {
     ContextImpl& cl = contexts[k]->impl();
@@ -417,6 +444,39 @@ void MultiDeviceRenderer::Impl::renderOnDevice(const RenderParams& p, const std:
   compositeMs = msSince(start) - lastReady;
 }
 
+void MultiDeviceRenderer::Impl::rebalance() {
+  const size_t n = parts.size();
+  if (!balancing || lastKernelMs.size() != n) return;
+  double total = 0.0;
+  for (double t : lastKernelMs) {
+    if (!(t > 0.0)) return;  // a driver that does not profile: nothing to go by
+    total += t;
+  }
+  // Cost per slice, constant within each part's range; the new planes cut the cumulative
+  // cost into equal shares.
+  const int slices = volume.dims.z;
+  std::vector<int> planes;
+  double sum = 0.0;
+  size_t k = 0;
+  for (size_t j = 1; j < n; ++j) {
+    const double target = total * double(j) / double(n);
+    while (k < n && sum + lastKernelMs[k] < target) sum += lastKernelMs[k++];
+    const PartRange& r = parts[std::min(k, n - 1)]->range;
+    const double perSlice = lastKernelMs[std::min(k, n - 1)] / double(r.end - r.first);
+    planes.push_back(int(std::lround(double(r.first) + (target - sum) / perSlice)));
+  }
+  int first = 0;
+  for (size_t j = 0; j < n; ++j) {
+    PartRange& r = parts[j]->range;
+    // At least one slice each, and one left for each after.
+    int end = j + 1 == n ? slices : planes[j];
+    end = std::clamp(end, first + 1, slices - int(n - 1 - j));
+    r.first = first;
+    r.end = end;
+    first = end;
+  }
+}
+
 std::vector<double> MultiDeviceRenderer::visibilityKeys(const RenderParams& p) {
   std::vector<double> keys;
   const int slices = impl_->volume.dims.z;
@@ -461,6 +521,7 @@ void MultiDeviceRenderer::renderInto(const RenderParams& p, Image* out, MultiDev
                      toString(p.lighting) + ": render it on one device");
   if (p.width <= 0 || p.height <= 0) throw inputError("the image size must be positive");
   Impl& m = *impl_;
+  m.rebalance();
   std::string variant;
   std::vector<PartStats> partStats(m.parts.size());
   // The composite packs the parts' order in 4 bits each (composite_parts.cl): 8 at most.
@@ -473,6 +534,8 @@ void MultiDeviceRenderer::renderInto(const RenderParams& p, Image* out, MultiDev
                      [&](int a, int b) { return keys[size_t(a)] < keys[size_t(b)]; });
     double compositeMs = 0.0;
     m.renderOnDevice(p, order, *out, partStats, variant, start, compositeMs);
+    m.lastKernelMs.clear();
+    for (const PartStats& s : partStats) m.lastKernelMs.push_back(s.kernelMs);
     if (stats) {
       stats->deviceComposite = true;
       stats->compositeMs = compositeMs;
@@ -511,6 +574,8 @@ void MultiDeviceRenderer::renderInto(const RenderParams& p, Image* out, MultiDev
     s.range = part.range;
     s.kernelMs = kernelMs(part.done);
   }
+  m.lastKernelMs.clear();
+  for (const PartStats& s : partStats) m.lastKernelMs.push_back(s.kernelMs);
   const auto composite = Clock::now();
   if (out) {
     std::vector<const PartImage*> images;

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <memory>
 
@@ -131,6 +132,41 @@ TEST(MultiDeviceComposite, PartsStayOnTheHostAfterDeviceFrames) {
   }
   EXPECT_GT(met, 1000);
   EXPECT_LE(worst, 1);  // half floats: 0.125 of a level, one level after rounding
+}
+
+// --balance: every part holds the whole volume and the planes move between frames toward
+// equal kernel times; each frame stays the host composite's of fixed ranges within the same
+// level (every sample is still taken by exactly one part).
+TEST(MultiDeviceComposite, BalancedRangesMoveAndKeepThePixels) {
+  MultiDeviceOptions fixed, moving;
+  fixed.composite = MultiDeviceOptions::Composite::Host;
+  moving.balance = true;
+  MultiDeviceRenderer a(contextsOf(2), ball(), fixed);
+  MultiDeviceRenderer b(contextsOf(2), ball(), moving);
+  const std::vector<PartRange> planned = b.ranges();
+  ASSERT_EQ(planned.size(), 2u);
+  EXPECT_EQ(planned[0].storedFirst, 0);
+  EXPECT_EQ(planned[0].storedEnd, 30);  // the whole volume, on each part
+  EXPECT_EQ(planned[1].storedFirst, 0);
+  // Seen from above (elevation 80) the upper slabs hide the lower ones for dvr: the parts'
+  // costs differ, so the plane moves.
+  bool moved = false;
+  for (int frameIndex = 0; frameIndex < 4; ++frameIndex) {
+    RenderParams p = frame(Mode::Dvr, 80.0, false);
+    p.camera.azimuthDeg += 10.0 * frameIndex;
+    MultiDeviceStats stats;
+    Image want = a.render(p);
+    Image got = b.render(p, &stats);
+    EXPECT_LE(test::maxDiff(want, got), 1) << "frame " << frameIndex;
+    const std::vector<PartRange> now = b.ranges();
+    EXPECT_EQ(now[0].first, 0);
+    EXPECT_EQ(now[0].end, now[1].first);  // contiguous
+    EXPECT_EQ(now[1].end, 30);
+    moved = moved || now[0].end != planned[0].end;
+    std::cout << "frame " << frameIndex << ": plane at slice " << now[0].end << ", kernels "
+              << stats.parts[0].kernelMs << " and " << stats.parts[1].kernelMs << " ms\n";
+  }
+  EXPECT_TRUE(moved);
 }
 
 TEST(MultiDeviceComposite, BandsCoverTheFrameInWholeWorkGroups) {

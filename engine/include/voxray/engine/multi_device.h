@@ -85,6 +85,12 @@ struct MultiDeviceOptions {
   Composite composite = Composite::Device;
   // Bands of rows the device composite pipelines (0: by the height, about 256 rows a band).
   int bands = 0;
+  // Each device holds the whole volume where every one can (its largest allocation, the
+  // budget), and before each frame the planes between the ranges move so that the last
+  // frame's kernel times, spread evenly over each range's slices, would have been equal (a
+  // view's cost is rarely even along z). Ignored with `ranges` or where the volume does not
+  // fit: the ranges stay planParts'.
+  bool balance = false;
   // The whole volume's stored value range (the tables map it), when VOLUME holds the stored
   // slices of the ranges alone and the rest is filler (an MPI rank's slab). None: VOLUME's.
   std::optional<ValueRange> valueRange;
