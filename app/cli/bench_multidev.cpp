@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 #include <nlohmann/json.hpp>
 
@@ -29,6 +30,19 @@ MultiDeviceRow benchMultiDevice(MultiDeviceRenderer& r, RenderParams p, const Be
     row.devices = s.parts;
     row.deviceComposite = s.deviceComposite;
   }
+  if (row.deviceComposite) {
+    // The orbit's first frame composited on the host too: the largest difference, in 8-bit
+    // levels (half floats: at most one; multi_device.h).
+    orbitCamera(p.camera, run.orbit, 0, run.frames);
+    Image host;
+    r.render(p, img);
+    r.setComposite(MultiDeviceOptions::Composite::Host);
+    r.render(p, host);
+    r.setComposite(MultiDeviceOptions::Composite::Device);
+    row.hostDiff = 0;
+    for (size_t i = 0; i < img.rgba.size() && i < host.rgba.size(); ++i)
+      row.hostDiff = std::max(row.hostDiff, std::abs(int(img.rgba[i]) - int(host.rgba[i])));
+  }
   row.size = std::to_string(p.width) + "x" + std::to_string(p.height);
   row.mode = toString(p.mode);
   row.parts = r.partCount();
@@ -55,7 +69,8 @@ void printMultiDeviceRow(const MultiDeviceRow& row, bool json, std::ostream& out
                         {"max_ms", row.maxMs},
                         {"fps", row.fps},
                         {"composite_ms", row.compositeMs},
-                        {"composite", row.deviceComposite ? "device" : "host"}};
+                        {"composite", row.deviceComposite ? "device" : "host"},
+                        {"host_composite_diff", row.hostDiff}};
     for (const PartStats& d : row.devices)
       j["devices"].push_back({{"device", d.device},
                               {"first_slice", d.range.first},
@@ -73,6 +88,13 @@ void printMultiDeviceRow(const MultiDeviceRow& row, bool json, std::ostream& out
                 row.minMs, row.maxMs, row.fps, row.deviceComposite ? "device" : "host",
                 row.compositeMs);
   out << line;
+  if (row.hostDiff >= 0) {
+    std::snprintf(line, sizeof(line),
+                  "    the first frame composited on the host too: largest difference %d "
+                  "levels\n",
+                  row.hostDiff);
+    out << line;
+  }
   for (size_t k = 0; k < row.devices.size(); ++k) {
     const PartStats& d = row.devices[k];
     std::snprintf(line, sizeof(line),

@@ -7,13 +7,15 @@
 # build-gpu/data (gpu-env.sh takes the loader when the CLI does not start as it is). Run from
 # the root:
 #   docs/bench/gpu-round9.sh two   one GPU (the Raycaster) against two parts on two GPUs with
-#                                  the composite on the first device and on the host, and the
-#                                  part kernel alone on one GPU (--split 1), at 3840x2160, dvr
-#                                  CT-Bone, ESS off: the 8 GiB CT first, then the 512x512x400
+#                                  the composite on the first device (also with --balance) and
+#                                  on the host, and the part kernel alone on one GPU (--split
+#                                  1), at 3840x2160, dvr CT-Bone, ESS off: the 8 GiB CT first,
+#                                  then the 512x512x400
 set -x
 . docs/bench/gpu-env.sh
 nproc
 cat /proc/loadavg
+nvidia-smi topo -m
 heavy="--mode dvr --preset CT-Bone --sizes 3840x2160 --frames 12 --warmup 2 --ess off"
 # Two GPUs: one part on each; one GPU: two parts on it (two contexts: the split's overhead).
 if (($(nvidia-smi -L | wc -l) > 1)); then two="--split 2 --devices 0,1"; else two="--split 2 --device 0"; fi
@@ -22,6 +24,7 @@ cases() {  # INPUT...: the one-GPU frame, two GPUs (device, host composite), the
   for run in 1 2; do
     time $B bench "$@" $heavy --device 0 --no-count 2>&1
     time $B bench "$@" $heavy $two --composite device 2>&1
+    time $B bench "$@" $heavy $two --composite device --balance 2>&1
     time $B bench "$@" $heavy $two --composite host 2>&1
     [[ $run == 1 ]] && time $B bench "$@" $heavy --split 1 --devices 0 --composite device 2>&1
     cat /proc/loadavg

@@ -264,6 +264,10 @@ MultiDeviceRenderer::MultiDeviceRenderer(const std::vector<ClContext*>& contexts
 
 MultiDeviceRenderer::~MultiDeviceRenderer() = default;
 
+void MultiDeviceRenderer::setComposite(MultiDeviceOptions::Composite where) {
+  impl_->opts.composite = where;
+}
+
 int MultiDeviceRenderer::partCount() const { return int(impl_->parts.size()); }
 
 std::vector<PartRange> MultiDeviceRenderer::ranges() const {

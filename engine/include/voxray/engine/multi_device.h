@@ -145,6 +145,8 @@ class MultiDeviceRenderer {
   // the order of its direction's z; from an eye, a ray meets only the slabs on one side of the
   // eye's z, nearest first, so the distance from the eye's z to each slab orders them.
   std::vector<double> visibilityKeys(const RenderParams& params);
+  // Where render() composites from now on (MultiDeviceOptions::composite).
+  void setComposite(MultiDeviceOptions::Composite where);
   int partCount() const;
   std::vector<PartRange> ranges() const;
 
