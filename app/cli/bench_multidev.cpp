@@ -88,13 +88,6 @@ void printMultiDeviceRow(const MultiDeviceRow& row, bool json, std::ostream& out
                 row.minMs, row.maxMs, row.fps, row.deviceComposite ? "device" : "host",
                 row.compositeMs);
   out << line;
-  if (row.hostDiff >= 0) {
-    std::snprintf(line, sizeof(line),
-                  "    the first frame composited on the host too: largest difference %d "
-                  "levels\n",
-                  row.hostDiff);
-    out << line;
-  }
   for (size_t k = 0; k < row.devices.size(); ++k) {
     const PartStats& d = row.devices[k];
     std::snprintf(line, sizeof(line),
@@ -102,6 +95,13 @@ void printMultiDeviceRow(const MultiDeviceRow& row, bool json, std::ostream& out
                   "ms  [%s]\n",
                   k + 1, d.range.first, d.range.end - 1, d.range.storedFirst, d.range.storedEnd - 1,
                   d.kernelMs, d.readyMs, d.device.c_str());
+    out << line;
+  }
+  if (row.hostDiff >= 0) {
+    std::snprintf(line, sizeof(line),
+                  "    the first frame composited on the host too: largest difference %d "
+                  "levels\n",
+                  row.hostDiff);
     out << line;
   }
 }
