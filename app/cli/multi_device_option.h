@@ -15,6 +15,7 @@ struct MultiDeviceOption {
   int split = 0;        // parts; 0: one per --devices entry (or one device, no split)
   std::string devices;  // comma-separated device numbers or names (ClContext's selectors)
   size_t budgetMib = 0;
+  int bands = 0;                     // --bands (MultiDeviceOptions::bands)
   bool balance = false;              // --balance (MultiDeviceOptions::balance)
   std::string composite = "device";  // --composite: device or host (MultiDeviceOptions)
 

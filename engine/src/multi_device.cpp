@@ -30,18 +30,20 @@ double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-// The profiled time of EVENTS (a part's kernel, per band); 0 where the driver does not profile.
+// From the first of EVENTS' start to the last one's end (a part's kernel, per band, on one
+// device's clock; bands may overlap); 0 where the driver does not profile.
 double kernelMs(const std::vector<cl::Event>& events) {
-  double ms = 0.0;
+  if (events.empty()) return 0.0;
+  cl_ulong first = ~cl_ulong(0), last = 0;
   try {
-    for (const cl::Event& e : events)
-      ms += double(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                   e.getProfilingInfo<CL_PROFILING_COMMAND_START>()) *
-            1e-6;
+    for (const cl::Event& e : events) {
+      first = std::min(first, e.getProfilingInfo<CL_PROFILING_COMMAND_START>());
+      last = std::max(last, e.getProfilingInfo<CL_PROFILING_COMMAND_END>());
+    }
   } catch (const cl::Error&) {
     return 0.0;
   }
-  return ms;
+  return last > first ? double(last - first) * 1e-6 : 0.0;
 }
 
 }  // namespace
@@ -89,6 +91,8 @@ struct MultiDeviceRenderer::Impl {
     size_t capacity = 0, hostCapacity = 0;  // pixels
     PartImage image;                        // points into the mapped host buffers
     std::vector<cl::Event> done;            // the kernel, per band of rows
+    cl::CommandQueue secondQueue;           // every other band's (made for banded frames)
+    bool second() const { return secondQueue() != nullptr; }
     Part(ContextImpl& c, const Volume& v, PartRange r, VolumeStorage s)
         : cl(c), range(r), frame(c, v, s) {}
     ~Part() { unmap(); }
@@ -334,17 +338,29 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
     size_t gx = size_t(p.width);
     if (local.dimensions() == 2) gx = (gx + 15) / 16 * 16;
     cl::CommandQueue& q = part.cl.queue;
+    // Bands alternate between two in-order queues: a band's last work-groups run beside the
+    // next band's first instead of leaving the device idle until they finish (one queue cost
+    // 8 bands at 4K about a fifth of the kernel time on an H200: docs/bench/gpu-h200x2-round9.txt).
+    if (bands.size() > 1 && !part.second())
+      part.secondQueue =
+          cl::CommandQueue(part.cl.context, part.cl.device, CL_QUEUE_PROFILING_ENABLE);
+    // The second queue's bands after this frame's writes on the first (parameters, cells).
+    std::vector<cl::Event> setup(1);
+    if (bands.size() > 1) q.enqueueMarkerWithWaitList(nullptr, &setup[0]);
     part.done.clear();
-    for (const FrameBand& b : bands) {
+    for (size_t i = 0; i < bands.size(); ++i) {
+      const FrameBand& b = bands[i];
       // Bands other than the last are whole work-groups tall (frameBands).
       size_t gy = size_t(b.rows);
       if (local.dimensions() == 2) gy = (gy + 7) / 8 * 8;
       part.done.emplace_back();
-      q.enqueueNDRangeKernel(kernel, cl::NDRange(0, size_t(b.first)), cl::NDRange(gx, gy), local,
-                             nullptr, &part.done.back());
+      (i % 2 ? part.secondQueue : q)
+          .enqueueNDRangeKernel(kernel, cl::NDRange(0, size_t(b.first)), cl::NDRange(gx, gy), local,
+                                i % 2 ? &setup : nullptr, &part.done.back());
     }
     if (half) {
       q.flush();
+      if (bands.size() > 1) part.secondQueue.flush();
       return 0;
     }
     q.enqueueReadBuffer(part.colour, CL_FALSE, 0, pixels * sizeof(cl_float4),
@@ -423,10 +439,7 @@ void MultiDeviceRenderer::Impl::renderOnDevice(const RenderParams& p, const std:
   for (size_t k = 0; k < n; ++k) {
     Part& part = *parts[k];
     try {
-      clCall([&] {
-        part.done.back().wait();
-        return 0;
-      });
+      clCall([&] { return cl::Event::waitForEvents(part.done); });
     } catch (const Error& e) {
       fail(k, e);
     }

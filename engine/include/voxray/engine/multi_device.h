@@ -104,7 +104,8 @@ std::vector<PartRange> planParts(int dimZ, const std::vector<double>& weights, i
 struct PartStats {
   std::string device;  // its name
   PartRange range;
-  double kernelMs = 0.0;  // the device's profiled kernel time (its bands' sum)
+  // The device's profiled kernel time: its first band's start to its last band's end.
+  double kernelMs = 0.0;
   // From the frame's start until its image was on the host (host composite) or its kernel
   // done (device composite).
   double readyMs = 0.0;
