@@ -10,7 +10,11 @@
 #                                  the composite on the first device (also with --balance) and
 #                                  on the host, and the part kernel alone on one GPU (--split
 #                                  1), at 3840x2160, dvr CT-Bone, ESS off: the 8 GiB CT first,
-#                                  then the 512x512x400
+#                                  then the 512x512x400 (docs/bench/gpu-h200x2-round9.txt)
+#   docs/bench/gpu-round9.sh bands  the 8 GiB CT at 4K, ESS off, after the banded kernels went
+#                                  onto two queues: one GPU, then two GPUs with the device
+#                                  composite over 1, 2, 4 and 8 bands, without and with --balance,
+#                                  and the part kernel alone on one GPU over 1 and 8 bands
 set -x
 . docs/bench/gpu-env.sh
 nproc
@@ -30,7 +34,24 @@ cases() {  # INPUT...: the one-GPU frame, two GPUs (device, host composite), the
     cat /proc/loadavg
   done
 }
+big="/tmp/ctbig.raw --raw-dims 2048,2048,1024 --raw-type i16 --raw-spacing 0.1196,0.1196,0.1582"
 case ${1:-two} in
+  bands)
+    make_ct512
+    time python3 docs/bench/make_ct_big.py /tmp/ct512.raw /tmp/ctbig.raw 4 1024
+    # shellcheck disable=SC2086
+    for run in 1 2; do
+      $B bench $big $heavy --device 0 --no-count 2>&1
+      for bands in 1 2 4 8; do
+        $B bench $big $heavy $two --composite device --bands $bands 2>&1
+        $B bench $big $heavy $two --composite device --bands $bands --balance 2>&1
+      done
+      [[ $run == 1 ]] && for bands in 1 8; do
+        $B bench $big $heavy --split 1 --devices 0 --composite device --bands $bands 2>&1
+      done
+      cat /proc/loadavg
+    done
+    ;;
   two)
     make_ct512
     time python3 docs/bench/make_ct_big.py /tmp/ct512.raw /tmp/ctbig.raw 4 1024
