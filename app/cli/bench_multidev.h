@@ -14,6 +14,8 @@ struct MultiDeviceRow {
   std::string input, size, mode;
   int parts = 0;
   double medianMs = 0, minMs = 0, maxMs = 0, fps = 0, compositeMs = 0;
+  bool deviceComposite = false;  // composited on the first device (else the host)
+  int hostDiff = -1;  // device composite: the largest difference from the host's (levels)
   std::vector<PartStats> devices;  // per part: medians of kernelMs and readyMs, its range
 };
 

@@ -106,6 +106,9 @@ int benchSplit(const BenchOptions& o) {
   MultiDeviceOptions mo;
   mo.emptySpaceSkipping = o.ess == "on";
   mo.budgetBytes = o.multi.budgetMib << 20;
+  mo.composite = o.multi.compositeWhere();
+  mo.balance = o.multi.balance;
+  mo.bands = o.multi.bands;
   mo.storage = parseStorage(o.storage);
   MultiDeviceRenderer r(contexts, v, mo);
   for (const auto& size : split(o.sizes))

@@ -116,6 +116,9 @@ int renderSplit(const RenderOptions& o, const Volume& v, const RenderParams& p) 
   for (auto& c : owned) contexts.push_back(c.get());
   MultiDeviceOptions mo;
   mo.budgetBytes = o.multi.budgetMib << 20;
+  mo.composite = o.multi.compositeWhere();
+  mo.balance = o.multi.balance;
+  mo.bands = o.multi.bands;
   mo.storage = parseStorage(o.storage);
   MultiDeviceRenderer r(contexts, v, mo);
   MultiDeviceStats stats;

@@ -19,6 +19,24 @@ void MultiDeviceOption::add(CLI::App& cmd) {
   cmd.add_option("--device-budget-mib", budgetMib,
                  "with --split/--devices: the most each device may hold of the volume (its "
                  "range and apron); a range over it is an error that says so");
+  cmd.add_option("--composite", composite,
+                 "with --split/--devices: where the parts' images are composited: device "
+                 "(the first device; the others' images come to it in half floats, only the "
+                 "frame comes back) or host (every part's float image comes back)")
+      ->check(CLI::IsMember({"device", "host"}));
+  cmd.add_option("--bands", bands,
+                 "with --split/--devices and the device composite: bands of rows each frame is "
+                 "rendered and composited in, so that transfers overlap the kernels (0: by the "
+                 "height, about 256 rows a band, at most 8)")
+      ->check(CLI::Range(0, 64));
+  cmd.add_flag("--balance", balance,
+               "with --split/--devices: each device holds the whole volume where they all can, "
+               "and the z ranges move between frames so that their kernel times even out");
+}
+
+MultiDeviceOptions::Composite MultiDeviceOption::compositeWhere() const {
+  return composite == "host" ? MultiDeviceOptions::Composite::Host
+                             : MultiDeviceOptions::Composite::Device;
 }
 
 std::vector<std::unique_ptr<ClContext>> MultiDeviceOption::contexts(

@@ -9,6 +9,7 @@
 #include "device_frame.h"
 #include "empty_space.h"
 #include "multi_device_composite.h"
+#include "multi_device_gpu_composite.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/io/error.h"
 #include "voxray/io/volume.h"
@@ -27,6 +28,22 @@ std::string mib(size_t bytes) {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+// From the first of EVENTS' start to the last one's end (a part's kernel, per band, on one
+// device's clock; bands may overlap); 0 where the driver does not profile.
+double kernelMs(const std::vector<cl::Event>& events) {
+  if (events.empty()) return 0.0;
+  cl_ulong first = ~cl_ulong(0), last = 0;
+  try {
+    for (const cl::Event& e : events) {
+      first = std::min(first, e.getProfilingInfo<CL_PROFILING_COMMAND_START>());
+      last = std::max(last, e.getProfilingInfo<CL_PROFILING_COMMAND_END>());
+    }
+  } catch (const cl::Error&) {
+    return 0.0;
+  }
+  return last > first ? double(last - first) * 1e-6 : 0.0;
 }
 
 }  // namespace
@@ -71,9 +88,11 @@ struct MultiDeviceRenderer::Impl {
     // Their copies on the host, in pinned memory (CL_MEM_ALLOC_HOST_PTR, mapped once): a GPU
     // copies into it at the bus's speed, where pageable memory goes through a staging copy.
     cl::Buffer hostColour, hostOrder;
-    size_t capacity = 0;  // pixels
-    PartImage image;      // points into the mapped host buffers
-    cl::Event done;
+    size_t capacity = 0, hostCapacity = 0;  // pixels
+    PartImage image;                        // points into the mapped host buffers
+    std::vector<cl::Event> done;            // the kernel, per band of rows
+    cl::CommandQueue secondQueue;           // every other band's (made for banded frames)
+    bool second() const { return secondQueue() != nullptr; }
     Part(ContextImpl& c, const Volume& v, PartRange r, VolumeStorage s)
         : cl(c), range(r), frame(c, v, s) {}
     ~Part() { unmap(); }
@@ -88,28 +107,47 @@ struct MultiDeviceRenderer::Impl {
       }
       image = PartImage{};
     }
-    void reserve(size_t pixels) {
-      if (pixels <= capacity) return;
-      unmap();
+    // HOST: the host copies too (the host composite, renderParts).
+    void reserve(size_t pixels, bool host) {
       const size_t colourBytes = pixels * sizeof(cl_float4), orderBytes = pixels * sizeof(cl_float);
-      colour = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, colourBytes);
-      order = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, orderBytes);
+      if (pixels > capacity) {
+        colour = cl::Buffer(cl.context, CL_MEM_READ_WRITE, colourBytes);
+        order = cl::Buffer(cl.context, CL_MEM_READ_WRITE, orderBytes);
+        capacity = pixels;
+      }
+      if (!host || pixels <= hostCapacity) return;
+      unmap();
       hostColour = cl::Buffer(cl.context, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, colourBytes);
       hostOrder = cl::Buffer(cl.context, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, orderBytes);
       image.colour = static_cast<const float*>(
           cl.queue.enqueueMapBuffer(hostColour, CL_TRUE, CL_MAP_READ, 0, colourBytes));
       image.order = static_cast<const float*>(
           cl.queue.enqueueMapBuffer(hostOrder, CL_TRUE, CL_MAP_READ, 0, orderBytes));
-      capacity = pixels;
+      hostCapacity = pixels;
     }
   };
   const Volume& volume;
   MultiDeviceOptions opts;
   std::vector<std::unique_ptr<Part>> parts;
+  std::unique_ptr<DeviceCompositor> compositor;  // made at the first device-composited frame
+  bool balancing = false;                        // opts.balance, and each holds the volume
+  std::vector<double> lastKernelMs;              // per part, the last frame's
 
   Impl(const Volume& v, const MultiDeviceOptions& o) : volume(v), opts(o) {}
   void upload(Part& part, int index);
-  void enqueue(Part& part, int index, const RenderParams& p, std::string& variant);
+  // opts.balance: moves the planes between the parts so that the last frame's kernel times,
+  // spread evenly over each part's slices, would have been equal.
+  void rebalance();
+  // PART's kernel over BANDS of rows (part.done: one event each). HALF: into the compositor's
+  // half-float image of the part, nothing read back; else float colour and order, read back
+  // into the host copies.
+  void enqueue(Part& part, int index, const RenderParams& p, std::string& variant,
+               const std::vector<FrameBand>& bands, bool half);
+  // The frame with the composite on the first device (DeviceCompositor) into OUT.
+  // ORDER: the parts front to back (visibilityKeys). STATS: one per part.
+  void renderOnDevice(const RenderParams& p, const std::vector<int>& order, Image& out,
+                      std::vector<PartStats>& stats, std::string& variant, Clock::time_point start,
+                      double& compositeMs);
 };
 
 void MultiDeviceRenderer::Impl::upload(Part& part, int index) {
@@ -193,6 +231,28 @@ MultiDeviceRenderer::MultiDeviceRenderer(const std::vector<ClContext*>& contexts
                          std::to_string(volume.dims.z) + " slices with an apron of " +
                          std::to_string(options.apron));
   }
+  if (options.balance && options.ranges.empty() && contexts.size() > 1) {
+    // Each holds the whole volume where every device can (its largest allocation, the
+    // budget, a 3D image's depth); else the ranges stay planParts'.
+    const glm::ivec3 n = volume.dims;
+    const size_t bytes = size_t(n.x) * size_t(n.y) * size_t(n.z) * sizeof(int16_t);
+    bool fits = true;
+    for (ClContext* c : contexts) {
+      const DeviceInfo& d = c->device();
+      size_t limit = d.maxAllocBytes;
+      if (options.budgetBytes > 0) limit = std::min(limit, options.budgetBytes);
+      const bool image = options.storage == VolumeStorage::Image3d ||
+                         (options.storage == VolumeStorage::Auto && d.isGpu && d.imageSupport);
+      fits = fits && bytes <= limit && (!image || size_t(n.z) <= d.maxImage3d[2]);
+    }
+    if (fits) {
+      for (PartRange& r : ranges) {
+        r.storedFirst = 0;
+        r.storedEnd = n.z;
+      }
+      impl_->balancing = true;
+    }
+  }
   for (size_t k = 0; k < contexts.size(); ++k) {
     ContextImpl& cl = contexts[k]->impl();
     VolumeStorage s = options.storage;
@@ -208,6 +268,10 @@ MultiDeviceRenderer::MultiDeviceRenderer(const std::vector<ClContext*>& contexts
 
 MultiDeviceRenderer::~MultiDeviceRenderer() = default;
 
+void MultiDeviceRenderer::setComposite(MultiDeviceOptions::Composite where) {
+  impl_->opts.composite = where;
+}
+
 int MultiDeviceRenderer::partCount() const { return int(impl_->parts.size()); }
 
 std::vector<PartRange> MultiDeviceRenderer::ranges() const {
@@ -217,7 +281,8 @@ std::vector<PartRange> MultiDeviceRenderer::ranges() const {
 }
 
 void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParams& p,
-                                        std::string& variant) {
+                                        std::string& variant, const std::vector<FrameBand>& bands,
+                                        bool half) {
   DeviceFrame& f = part.frame;
   f.updateSetup(p);
   // A sample a range takes may lie up to a step beyond its plane (dvr's first and last
@@ -240,12 +305,13 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
   RaycastParams k = f.frameParams(p, sw);
   glm::ivec3 cells = part.space.dims();
   k.cells = {{cells.x, cells.y, cells.z, 0}};
-  const std::string options = "-cl-fast-relaxed-math " + switchOptions(sw, false);
+  const std::string options =
+      "-cl-fast-relaxed-math " + switchOptions(sw, false) + (half ? " -D PART_HALF=1" : "");
   if (index == 0) variant = options;
   const size_t pixels = size_t(p.width) * size_t(p.height);
   cl::Kernel kernel = part.cl.kernel("multidev/raycast_part.cl", "raycast_part", options);
   clCall([&] {
-    part.reserve(pixels);
+    part.reserve(pixels, !half);
     f.uploadFrame(k);
     // mip reads the cells' min/max directly (as the one-ray-per-work-item raycaster).
     if (opts.emptySpaceSkipping && p.mode != Mode::Mip)
@@ -260,7 +326,7 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
     kernel.setArg(arg++, cl_int2{{r.storedFirst, r.storedEnd - r.storedFirst}});
     kernel.setArg(arg++, f.paramsBuffer);
     kernel.setArg(arg++, f.lutBuffer);
-    kernel.setArg(arg++, part.colour);
+    kernel.setArg(arg++, half ? compositor->partImage(size_t(index)) : part.colour);
     kernel.setArg(arg++, part.order);
     kernel.setArg(arg++, part.space.leap());
     kernel.setArg(arg++, part.space.range());
@@ -269,13 +335,34 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
     kernel.setArg(arg++, cl_float2{{float(r.first), float(r.end)}});
     kernel.setArg(arg++, cl_int2{{r.first == 0 ? 1 : 0, r.end == volume.dims.z ? 1 : 0}});
     cl::NDRange local = part.cl.info.isGpu ? cl::NDRange(16, 8) : cl::NullRange;
-    size_t gx = size_t(p.width), gy = size_t(p.height);
-    if (local.dimensions() == 2) {
-      gx = (gx + 15) / 16 * 16;
-      gy = (gy + 7) / 8 * 8;
-    }
+    size_t gx = size_t(p.width);
+    if (local.dimensions() == 2) gx = (gx + 15) / 16 * 16;
     cl::CommandQueue& q = part.cl.queue;
-    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local, nullptr, &part.done);
+    // Bands alternate between two in-order queues: a band's last work-groups run beside the
+    // next band's first instead of leaving the device idle until they finish (one queue cost
+    // 8 bands at 4K about a fifth of the kernel time on an H200: docs/bench/gpu-h200x2-round9.txt).
+    if (bands.size() > 1 && !part.second())
+      part.secondQueue =
+          cl::CommandQueue(part.cl.context, part.cl.device, CL_QUEUE_PROFILING_ENABLE);
+    // The second queue's bands after this frame's writes on the first (parameters, cells).
+    std::vector<cl::Event> setup(1);
+    if (bands.size() > 1) q.enqueueMarkerWithWaitList(nullptr, &setup[0]);
+    part.done.clear();
+    for (size_t i = 0; i < bands.size(); ++i) {
+      const FrameBand& b = bands[i];
+      // Bands other than the last are whole work-groups tall (frameBands).
+      size_t gy = size_t(b.rows);
+      if (local.dimensions() == 2) gy = (gy + 7) / 8 * 8;
+      part.done.emplace_back();
+      (i % 2 ? part.secondQueue : q)
+          .enqueueNDRangeKernel(kernel, cl::NDRange(0, size_t(b.first)), cl::NDRange(gx, gy), local,
+                                i % 2 ? &setup : nullptr, &part.done.back());
+    }
+    if (half) {
+      q.flush();
+      if (bands.size() > 1) part.secondQueue.flush();
+      return 0;
+    }
     q.enqueueReadBuffer(part.colour, CL_FALSE, 0, pixels * sizeof(cl_float4),
                         const_cast<float*>(part.image.colour));
     q.enqueueReadBuffer(part.order, CL_FALSE, 0, pixels * sizeof(cl_float),
@@ -285,11 +372,135 @@ void MultiDeviceRenderer::Impl::enqueue(Part& part, int index, const RenderParam
   });
 }
 
+void MultiDeviceRenderer::Impl::renderOnDevice(const RenderParams& p, const std::vector<int>& order,
+                                               Image& out, std::vector<PartStats>& stats,
+                                               std::string& variant, Clock::time_point start,
+                                               double& compositeMs) {
+  const size_t n = parts.size();
+  auto fail = [&](size_t k, const Error& e) {
+    if (e.kind() == Error::Kind::Input) throw e;  // the frame's, not this device's
+    throw deviceError("device " + std::to_string(k + 1) + " of " + std::to_string(n) + " (" +
+                      parts[k]->cl.info.name + "): " + e.what());
+  };
+  if (!compositor) {
+    std::vector<ContextImpl*> contexts;
+    for (auto& part : parts) contexts.push_back(&part->cl);
+    try {
+      compositor = std::make_unique<DeviceCompositor>(contexts);
+    } catch (const Error& e) {
+      fail(0, e);
+    }
+  }
+  const size_t pixels = size_t(p.width) * size_t(p.height);
+  const int rowStep = parts[0]->cl.info.isGpu ? 8 : 1;  // the part kernel's work-group height
+  const std::vector<FrameBand> bands = frameBands(p.height, opts.bands, rowStep);
+  try {
+    clCall([&] {
+      compositor->reserve(pixels);
+      compositor->beginFrame();
+      return 0;
+    });
+  } catch (const Error& e) {
+    fail(0, e);
+  }
+  // The first part last: the others' bands start their way back while it is set up.
+  for (size_t j = n; j-- > 0;) {
+    Part& part = *parts[j];
+    if (j > 0 && !part.frame.valueRange && parts[0]->frame.valueRange)
+      part.frame.valueRange = parts[0]->frame.valueRange;
+    try {
+      enqueue(part, int(j), p, variant, bands, j > 0);
+      if (j > 0)
+        clCall([&] {
+          for (size_t b = 0; b < bands.size(); ++b)
+            compositor->readBand(j, p.width, bands[b], part.done[b]);
+          return 0;
+        });
+    } catch (const Error& e) {
+      fail(j, e);
+    }
+  }
+  out.width = p.width;
+  out.height = p.height;
+  out.rgba.resize(pixels * 4);
+  try {
+    clCall([&] {
+      for (size_t b = 0; b < bands.size(); ++b)
+        compositor->compositeBand(p.mode, order, glm::vec3(p.background), float(p.earlyTermination),
+                                  parts[0]->colour, parts[0]->done[b], p.width, p.height, bands[b],
+                                  b, out.rgba.data());
+      return 0;
+    });
+  } catch (const Error& e) {
+    fail(0, e);
+  }
+  // Each part's kernels done (the others' last band is on the host by now).
+  double lastReady = 0.0;
+  for (size_t k = 0; k < n; ++k) {
+    Part& part = *parts[k];
+    try {
+      clCall([&] { return cl::Event::waitForEvents(part.done); });
+    } catch (const Error& e) {
+      fail(k, e);
+    }
+    PartStats& s = stats[k];
+    s.readyMs = msSince(start);
+    s.device = part.cl.info.name;
+    s.range = part.range;
+    s.kernelMs = kernelMs(part.done);
+    lastReady = std::max(lastReady, s.readyMs);
+  }
+  try {
+    clCall([&] {
+      compositor->finish();
+      return 0;
+    });
+  } catch (const Error& e) {
+    fail(0, e);
+  }
+  compositeMs = msSince(start) - lastReady;
+}
+
+void MultiDeviceRenderer::Impl::rebalance() {
+  const size_t n = parts.size();
+  if (!balancing || lastKernelMs.size() != n) return;
+  double total = 0.0;
+  for (double t : lastKernelMs) {
+    if (!(t > 0.0)) return;  // a driver that does not profile: nothing to go by
+    total += t;
+  }
+  // Cost per slice, constant within each part's range; the new planes cut the cumulative
+  // cost into equal shares.
+  const int slices = volume.dims.z;
+  std::vector<int> planes;
+  double sum = 0.0;
+  size_t k = 0;
+  for (size_t j = 1; j < n; ++j) {
+    const double target = total * double(j) / double(n);
+    while (k < n && sum + lastKernelMs[k] < target) sum += lastKernelMs[k++];
+    const PartRange& r = parts[std::min(k, n - 1)]->range;
+    const double perSlice = lastKernelMs[std::min(k, n - 1)] / double(r.end - r.first);
+    planes.push_back(int(std::lround(double(r.first) + (target - sum) / perSlice)));
+  }
+  int first = 0;
+  for (size_t j = 0; j < n; ++j) {
+    PartRange& r = parts[j]->range;
+    // At least one slice each, and one left for each after.
+    int end = j + 1 == n ? slices : planes[j];
+    end = std::clamp(end, first + 1, slices - int(n - 1 - j));
+    r.first = first;
+    r.end = end;
+    first = end;
+  }
+}
+
 std::vector<double> MultiDeviceRenderer::visibilityKeys(const RenderParams& p) {
   std::vector<double> keys;
   const int slices = impl_->volume.dims.z;
   for (auto& part : impl_->parts) {
     DeviceFrame& f = part->frame;
+    // The volume's value range, found once by the first part (a pass over the whole volume).
+    if (!f.valueRange) f.valueRange = impl_->parts[0]->frame.valueRange;
     f.updateSetup(p);
     const ViewGeometry& g = f.setup.view;
     const PartRange& r = part->range;
@@ -327,14 +538,37 @@ void MultiDeviceRenderer::renderInto(const RenderParams& p, Image* out, MultiDev
                      toString(p.lighting) + ": render it on one device");
   if (p.width <= 0 || p.height <= 0) throw inputError("the image size must be positive");
   Impl& m = *impl_;
+  m.rebalance();
   std::string variant;
   std::vector<PartStats> partStats(m.parts.size());
+  // The composite packs the parts' order in 4 bits each (composite_parts.cl): 8 at most.
+  if (out && !partImages && m.opts.composite == MultiDeviceOptions::Composite::Device &&
+      m.parts.size() <= 8) {
+    std::vector<double> keys = visibilityKeys(p);
+    std::vector<int> order(m.parts.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return keys[size_t(a)] < keys[size_t(b)]; });
+    double compositeMs = 0.0;
+    m.renderOnDevice(p, order, *out, partStats, variant, start, compositeMs);
+    m.lastKernelMs.clear();
+    for (const PartStats& s : partStats) m.lastKernelMs.push_back(s.kernelMs);
+    if (stats) {
+      stats->deviceComposite = true;
+      stats->compositeMs = compositeMs;
+      stats->parts = std::move(partStats);
+      stats->variant = variant;
+      stats->totalMs = msSince(start);
+    }
+    return;
+  }
+  const std::vector<FrameBand> whole{{0, p.height}};
   for (size_t k = 0; k < m.parts.size(); ++k) {
     Impl::Part& part = *m.parts[k];
     // The volume's value range, found once by the first part (a pass over the whole volume).
     if (k > 0 && !part.frame.valueRange) part.frame.valueRange = m.parts[0]->frame.valueRange;
     try {
-      m.enqueue(part, int(k), p, variant);
+      m.enqueue(part, int(k), p, variant, whole, false);
     } catch (const Error& e) {
       if (e.kind() == Error::Kind::Input) throw;  // the frame's, not this device's
       throw deviceError("device " + std::to_string(k + 1) + " of " +
@@ -355,14 +589,10 @@ void MultiDeviceRenderer::renderInto(const RenderParams& p, Image* out, MultiDev
     s.readyMs = msSince(start);
     s.device = part.cl.info.name;
     s.range = part.range;
-    try {
-      cl_ulong t0 = part.done.getProfilingInfo<CL_PROFILING_COMMAND_START>();
-      cl_ulong t1 = part.done.getProfilingInfo<CL_PROFILING_COMMAND_END>();
-      s.kernelMs = double(t1 - t0) * 1e-6;
-    } catch (const cl::Error&) {
-      s.kernelMs = 0.0;  // some drivers do not profile
-    }
+    s.kernelMs = kernelMs(part.done);
   }
+  m.lastKernelMs.clear();
+  for (const PartStats& s : partStats) m.lastKernelMs.push_back(s.kernelMs);
   const auto composite = Clock::now();
   if (out) {
     std::vector<const PartImage*> images;

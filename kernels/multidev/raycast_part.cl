@@ -18,9 +18,15 @@
 //   iso: the shaded first hit with alpha 1; order its index, FLT_MAX when none
 //   mip: the window-mapped maximum of the part's samples, alpha 1 where the ray meets the
 //        clip box (the one-device frame shows black there, the background elsewhere)
+// PART_HALF (a part whose image the first device composites, composite_parts.cl): the colour
+// in half floats (vstore_half4, round to nearest: relative error at most 2^-11) into `colour`
+// as a half buffer, and no order (the slabs' order serves every pixel).
 // Phong only, one ray per work-item (no packets), no labels, overlay or adaptive steps: the
 // host asks for none of them.
 #define VOXRAY_PART 1
+#ifndef PART_HALF
+#define PART_HALF 0
+#endif
 #include "intersection/ray.cl"
 #include "march/march.cl"
 #include "variant.cl"
@@ -152,6 +158,12 @@ __kernel void raycast_part(VOLUME_ARG, __constant RaycastParams* P, __global con
       c = (float4)(g, g, g, 1.0f);
     }
   }
+#if PART_HALF
+  (void)o;
+  (void)order;
+  vstore_half4(c, (size_t)py * width + px, (__global half*)colour);
+#else
   colour[py * width + px] = c;
   order[py * width + px] = o;
+#endif
 }

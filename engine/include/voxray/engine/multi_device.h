@@ -7,9 +7,10 @@
 // entry, step and jitter), each taken by exactly one device: the range's planes z = first and
 // z = end (voxel coordinates, slice centres at integers) cut each ray into index ranges,
 // half-open along the ray (a sample on a plane belongs to the range the ray enters there),
-// computed alike by both neighbours of a plane. The host composites the partial
-// images per pixel in the order the ray meets the ranges: "over" of premultiplied colour for
-// dvr, max for mip, the nearest hit for iso.
+// computed alike by both neighbours of a plane. The partial images are composited in the
+// order the ray meets the ranges: "over" of premultiplied colour for dvr, max for mip, the
+// nearest hit for iso; by render() on the first device (the others' images come to it in half
+// floats, band by band: MultiDeviceOptions::composite), by the host from renderParts' floats.
 //
 // Equal to one device's frame (Raycaster with packets off, the same scalar march) within one
 // 8-bit level per channel, except where dvr's early termination cuts a ray: a device whose
@@ -17,7 +18,9 @@
 // past the point where the one-device ray stopped. What it adds there is weighted by the
 // transmittance left at that point, at most 1 - earlyTermination (the composite stops adding
 // ranges once the sum reaches earlyTermination), so dvr differs by at most
-// 1 - earlyTermination per channel (2.55 levels at the default 0.99) plus one level.
+// 1 - earlyTermination per channel (2.55 levels at the default 0.99) plus one level. The
+// device composite's half floats (relative error at most 2^-11: 0.25 of a level after "over")
+// can add one level more.
 //
 // Phong lighting; dvr, iso and mip; empty-space skipping, jitter, every gradient and
 // interpolation. Adaptive steps are off in the parts (segments grouped from a range's start
@@ -69,6 +72,25 @@ struct MultiDeviceOptions {
   // The ranges of the parts, one per context, instead of planParts' split of the volume: an
   // MPI rank renders its one range (app/mpi). Empty: planParts by memory.
   std::vector<PartRange> ranges;
+  // Where render() composites. Device: on the first device: the other parts write their
+  // images in half floats (8 bytes a pixel, no order: the slabs' order serves every pixel),
+  // read back and uploaded to it band by band of rows while the kernels run on, and its kernel
+  // composites them with its own part and writes RGBA8, the only thing read back (at most 8
+  // parts; more composite on the host). Host: every part's float image and order read back
+  // and composited on the host (renderParts always gives these). The device composite differs
+  // from the host's by the half floats alone (relative error at most 2^-11 per value: at most
+  // 0.25 of an 8-bit level after "over", so at most one level) and where that moves dvr's
+  // sum across earlyTermination (at most 1 - earlyTermination more).
+  enum class Composite { Device, Host };
+  Composite composite = Composite::Device;
+  // Bands of rows the device composite pipelines (0: by the height, about 256 rows a band).
+  int bands = 0;
+  // Each device holds the whole volume where every one can (its largest allocation, the
+  // budget), and before each frame the planes between the ranges move so that the last
+  // frame's kernel times, spread evenly over each range's slices, would have been equal (a
+  // view's cost is rarely even along z). Ignored with `ranges` or where the volume does not
+  // fit: the ranges stay planParts'.
+  bool balance = false;
   // The whole volume's stored value range (the tables map it), when VOLUME holds the stored
   // slices of the ranges alone and the rest is filler (an MPI rank's slab). None: VOLUME's.
   std::optional<ValueRange> valueRange;
@@ -82,13 +104,19 @@ std::vector<PartRange> planParts(int dimZ, const std::vector<double>& weights, i
 struct PartStats {
   std::string device;  // its name
   PartRange range;
-  double kernelMs = 0.0;  // the device's profiled kernel time
-  double readyMs = 0.0;   // from the frame's start until its image was on the host
+  // The device's profiled kernel time: its first band's start to its last band's end.
+  double kernelMs = 0.0;
+  // From the frame's start until its image was on the host (host composite) or its kernel
+  // done (device composite).
+  double readyMs = 0.0;
 };
 
 struct MultiDeviceStats {
   std::vector<PartStats> parts;
-  double compositeMs = 0.0;  // the host's composite alone
+  // The composite alone: the host's, or with the device composite the time from the last
+  // part's kernel finishing to the frame on the host.
+  double compositeMs = 0.0;
+  bool deviceComposite = false;  // the frame was composited on the first device
   double totalMs = 0.0;
   std::string variant;  // the parts' -D options
 };
@@ -118,6 +146,8 @@ class MultiDeviceRenderer {
   // the order of its direction's z; from an eye, a ray meets only the slabs on one side of the
   // eye's z, nearest first, so the distance from the eye's z to each slab orders them.
   std::vector<double> visibilityKeys(const RenderParams& params);
+  // Where render() composites from now on (MultiDeviceOptions::composite).
+  void setComposite(MultiDeviceOptions::Composite where);
   int partCount() const;
   std::vector<PartRange> ranges() const;
 
