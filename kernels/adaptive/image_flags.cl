@@ -1,0 +1,53 @@
+// Image-space adaptive sampling's two small kernels between and after the raycast passes
+// (adaptive/image_pass.cl says the order). Compiled on their own: no switches, no volume.
+#ifndef VOXRAY_IMAGE_FLAGS_CL
+#define VOXRAY_IMAGE_FLAGS_CL
+
+#include "adaptive/image_blocks.cl"
+
+// The corners of block (bx, by): columns x0, x1 and rows y0, y1 of the lattice.
+inline int4 image_corners(int4 ip, int2 size, int bx, int by) {
+  int x0 = bx * ip.x, y0 = by * ip.x;
+  return (int4)(x0, min(x0 + ip.x, size.x - 1), y0, min(y0 + ip.x, size.y - 1));
+}
+
+// One work-item per block: refined (1) where its four lattice pixels differ by `threshold`
+// levels or more in a channel (0: every block). The error estimate is the corners' spread:
+// bilinear fill is exact where they agree and the image is smooth in between; a hit or miss
+// (iso, dvr's background) shows as a jump of most of the range.
+__kernel void image_flags(__global const uchar4* out, __global uchar* flags, int4 ip, int2 size,
+                          float threshold) {
+  int bx = get_global_id(0), by = get_global_id(1);
+  int bw = max(ip.y - 1, 1), bh = max(ip.z - 1, 1);
+  if (bx >= bw || by >= bh) return;
+  int4 c = image_corners(ip, size, bx, by);
+  int4 a = convert_int4(out[c.z * size.x + c.x]), b = convert_int4(out[c.z * size.x + c.y]);
+  int4 d = convert_int4(out[c.w * size.x + c.x]), e = convert_int4(out[c.w * size.x + c.y]);
+  int4 spread = max(max(a, b), max(d, e)) - min(min(a, b), min(d, e));
+  int most = max(max(spread.x, spread.y), max(spread.z, spread.w));
+  flags[by * bw + bx] = (float)most >= threshold ? 1 : 0;
+}
+
+// One work-item per pixel: a pixel neither on the lattice nor marched by the refine pass
+// (whose work-items cover `foot` pixels: 1 x 1, or a packet's 4 x rows) is bilinear between
+// its block's corners, rounded to the nearest level.
+__kernel void image_fill(__global uchar4* out, __global const uchar* flags, int4 ip, int2 size,
+                         int2 foot) {
+  int x = get_global_id(0), y = get_global_id(1);
+  if (x >= size.x || y >= size.y) return;
+  bool lx = x % ip.x == 0 || x == size.x - 1, ly = y % ip.x == 0 || y == size.y - 1;
+  if (lx && ly) return;
+  int fx = x / foot.x * foot.x, fy = y / foot.y * foot.y;
+  if (image_refined(flags, ip, fx, fy, min(fx + foot.x, size.x) - 1, min(fy + foot.y, size.y) - 1))
+    return;
+  int bw = max(ip.y - 1, 1), bh = max(ip.z - 1, 1);
+  int4 c = image_corners(ip, size, image_block(x, ip.x, bw), image_block(y, ip.x, bh));
+  float u = c.y > c.x ? (float)(x - c.x) / (float)(c.y - c.x) : 0.0f;
+  float v = c.w > c.z ? (float)(y - c.z) / (float)(c.w - c.z) : 0.0f;
+  float4 a = convert_float4(out[c.z * size.x + c.x]), b = convert_float4(out[c.z * size.x + c.y]);
+  float4 d = convert_float4(out[c.w * size.x + c.x]), e = convert_float4(out[c.w * size.x + c.y]);
+  float4 top = a + (b - a) * u, bottom = d + (e - d) * u;
+  out[y * size.x + x] = convert_uchar4_sat_rte(top + (bottom - top) * v);
+}
+
+#endif
