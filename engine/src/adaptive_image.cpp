@@ -71,7 +71,7 @@ void AdaptiveImage::enqueue(ContextImpl& cl, const RenderParams& p, cl::Kernel& 
   fill.setArg(2, ip);
   fill.setArg(3, size);
   fill.setArg(4, foot);
-  q.enqueueNDRangeKernel(fill, cl::NullRange, cl::NDRange(size_t(p.width), size_t(p.height)),
+  q.enqueueNDRangeKernel(fill, cl::NullRange, cl::NDRange(size_t(l.blocksX()), size_t(l.blocksY())),
                          cl::NullRange, nullptr, &events[3]);
   q.enqueueReadBuffer(flags_, CL_FALSE, 0, blocks, hostFlags_.data());
 }
