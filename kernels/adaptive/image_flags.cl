@@ -44,16 +44,22 @@ __kernel void image_fill(__global uchar4* out, __global const uchar* flags, int4
   float iu = c.y > c.x ? 1.0f / (float)(c.y - c.x) : 0.0f;
   float iv = c.w > c.z ? 1.0f / (float)(c.w - c.z) : 0.0f;
   int xe = bx == bw - 1 ? size.x - 1 : c.y - 1, ye = by == bh - 1 ? size.y - 1 : c.w - 1;
+  // A refine work-item lies in one block where its footprint divides K: then no pixel of an
+  // unrefined block was marched, and the per-pixel test (25 ms of a 1024x768 frame on PoCL,
+  // its integer divisions) is left out.
+  bool straddles = ip.x % foot.x != 0 || ip.x % foot.y != 0;
   for (int y = c.z; y <= ye; ++y) {
-    bool ly = y % ip.x == 0 || y == size.y - 1;
+    bool ly = y == c.z || y == size.y - 1;  // the lattice rows this block owns
     int fy = y / foot.y * foot.y;
     float v = (float)(y - c.z) * iv;
     for (int x = c.x; x <= xe; ++x) {
-      if (ly && (x % ip.x == 0 || x == size.x - 1)) continue;  // a lattice pixel
-      int fx = x / foot.x * foot.x;
-      if (image_refined(flags, ip, fx, fy, min(fx + foot.x, size.x) - 1,
-                        min(fy + foot.y, size.y) - 1))
-        continue;  // marched with a refined block's packet
+      if (ly && (x == c.x || x == size.x - 1)) continue;  // a lattice pixel
+      if (straddles) {
+        int fx = x / foot.x * foot.x;
+        if (image_refined(flags, ip, fx, fy, min(fx + foot.x, size.x) - 1,
+                          min(fy + foot.y, size.y) - 1))
+          continue;  // marched with a refined block's packet
+      }
       float u = (float)(x - c.x) * iu;
       float4 top = a + (b - a) * u, bottom = d + (e - d) * u;
       out[y * size.x + x] = convert_uchar4_sat_rte(top + (bottom - top) * v);

@@ -170,52 +170,58 @@ TEST(AdaptiveImage, FlatImageNeedsNoRefinedBlock) {
   }
 }
 
-// The ball's iso surface on black: blocks on its outline (corners on the surface and off it)
+// The ball on black in each mode: blocks on its outline (corners on the surface and off it)
 // are refined, so each of their pixels is the plain frame's; blocks wholly inside the flat
 // background are not; far fewer rays than pixels. Lattice pixels of a packet pass can differ
 // from the plain frame's by float contraction (one level), hence the margin of 2 on the test.
 TEST(AdaptiveImage, EdgeBlocksAreRefinedAndFlatOnesAreNot) {
+  // K 2 with 16-lane packets: a refine work-item (4 x 4 pixels) spans blocks, and the fill
+  // must leave the pixels it marched in the blocks next to a refined one.
   for (Mode mode : {Mode::Iso, Mode::Dvr, Mode::Mip})
-    for (int lanes : {kPerRay, 8, 16}) {
-      SCOPED_TRACE(testing::Message() << "mode " << int(mode) << " lanes " << lanes);
-      RenderParams p = ballFrame(mode);
-      Image plain = render(ballVolume(), p, lanes);
-      p.adaptiveImage = 16.0;
-      FrameStats st;
-      Image adaptive = render(ballVolume(), p, lanes, &st);
-      const ImageLattice l = imageLattice(p.width, p.height, 4);
-      int edges = 0, flat = 0;
-      for (int by = 0; by < l.blocksY(); ++by)
-        for (int bx = 0; bx < l.blocksX(); ++bx) {
-          const int corners = blockSpread(plain, l, bx, by, true);
-          if (corners >= 16 + 2) {  // refined: every pixel marched
-            ++edges;
-            for (int y = by * l.k; y <= lastOwned(by, l.blocksY(), p.height, l.k); ++y)
-              for (int x = bx * l.k; x <= lastOwned(bx, l.blocksX(), p.width, l.k); ++x)
-                for (int c = 0; c < 3; ++c) {
-                  size_t i = (size_t(y) * p.width + x) * 4 + c;
-                  ASSERT_LE(std::abs(int(plain.rgba[i]) - int(adaptive.rgba[i])), 1)
-                      << "edge block (" << bx << ", " << by << ") pixel (" << x << ", " << y << ")";
-                }
-          } else if (blockSpread(plain, l, bx, by, false) == 0) {
-            ++flat;
-            // Flat: the fill reproduces it (the lattice pixels within a level of the plain).
-            for (int y = by * l.k; y <= lastOwned(by, l.blocksY(), p.height, l.k); ++y)
-              for (int x = bx * l.k; x <= lastOwned(bx, l.blocksX(), p.width, l.k); ++x)
-                for (int c = 0; c < 3; ++c) {
-                  size_t i = (size_t(y) * p.width + x) * 4 + c;
-                  ASSERT_LE(std::abs(int(plain.rgba[i]) - int(adaptive.rgba[i])), 1);
-                }
+    for (int lanes : {kPerRay, 8, 16})
+      for (int k : {2, 4}) {
+        SCOPED_TRACE(testing::Message()
+                     << "mode " << int(mode) << " lanes " << lanes << " k " << k);
+        RenderParams p = ballFrame(mode);
+        Image plain = render(ballVolume(), p, lanes);
+        p.adaptiveImage = 16.0;
+        p.adaptiveImageSpacing = k;
+        FrameStats st;
+        Image adaptive = render(ballVolume(), p, lanes, &st);
+        const ImageLattice l = imageLattice(p.width, p.height, k);
+        int edges = 0, flat = 0;
+        for (int by = 0; by < l.blocksY(); ++by)
+          for (int bx = 0; bx < l.blocksX(); ++bx) {
+            const int corners = blockSpread(plain, l, bx, by, true);
+            if (corners >= 16 + 2) {  // refined: every pixel marched
+              ++edges;
+              for (int y = by * l.k; y <= lastOwned(by, l.blocksY(), p.height, l.k); ++y)
+                for (int x = bx * l.k; x <= lastOwned(bx, l.blocksX(), p.width, l.k); ++x)
+                  for (int c = 0; c < 3; ++c) {
+                    size_t i = (size_t(y) * p.width + x) * 4 + c;
+                    ASSERT_LE(std::abs(int(plain.rgba[i]) - int(adaptive.rgba[i])), 1)
+                        << "edge block (" << bx << ", " << by << ") pixel (" << x << ", " << y
+                        << ")";
+                  }
+            } else if (blockSpread(plain, l, bx, by, false) == 0) {
+              ++flat;
+              // Flat: the fill reproduces it (the lattice pixels within a level of the plain).
+              for (int y = by * l.k; y <= lastOwned(by, l.blocksY(), p.height, l.k); ++y)
+                for (int x = bx * l.k; x <= lastOwned(bx, l.blocksX(), p.width, l.k); ++x)
+                  for (int c = 0; c < 3; ++c) {
+                    size_t i = (size_t(y) * p.width + x) * 4 + c;
+                    ASSERT_LE(std::abs(int(plain.rgba[i]) - int(adaptive.rgba[i])), 1);
+                  }
+            }
           }
-        }
-      std::cout << "ball mode " << int(mode) << " lanes " << lanes << ": " << st.adaptiveRefined
-                << " of " << st.adaptiveBlocks << " blocks refined; " << edges
-                << " outline blocks, " << flat << " flat\n";
-      EXPECT_GT(edges, 20);  // the ball's outline crosses tens of 4 x 4 blocks
-      EXPECT_GT(flat, 100);  // the background around it
-      EXPECT_GE(st.adaptiveRefined, edges);
-      EXPECT_LE(st.adaptiveRefined, st.adaptiveBlocks - flat);
-    }
+        std::cout << "ball mode " << int(mode) << " lanes " << lanes << " k " << k << ": "
+                  << st.adaptiveRefined << " of " << st.adaptiveBlocks << " blocks refined; "
+                  << edges << " outline blocks, " << flat << " flat\n";
+        EXPECT_GT(edges, 20);  // the ball's outline crosses tens of 4 x 4 blocks
+        EXPECT_GT(flat, 100);  // the background around it
+        EXPECT_GE(st.adaptiveRefined, edges);
+        EXPECT_LE(st.adaptiveRefined, st.adaptiveBlocks - flat);
+      }
 }
 
 // CThead dvr (CT-Bone, the default camera) at 512x384 with the default threshold ("on", 8
