@@ -32,9 +32,18 @@ cl::NDRange globalSize(size_t w, size_t h, const RaycastGrid& g) {
 
 }  // namespace
 
+const cl::Buffer& AdaptiveImage::hits(ContextImpl& cl, size_t pixels) {
+  if (pixels * sizeof(cl_float4) > hitCapacity_) {
+    hits_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, pixels * sizeof(cl_float4));
+    hitCapacity_ = pixels * sizeof(cl_float4);
+  }
+  return hits_;
+}
+
 void AdaptiveImage::enqueue(ContextImpl& cl, const RenderParams& p, cl::Kernel& lattice,
                             cl::Kernel& refine, cl_uint refineArg, const cl::Buffer& out,
-                            const RaycastGrid& grid, std::vector<cl::Event>& events) {
+                            const RaycastGrid& grid, const ImageDepth& depth,
+                            std::vector<cl::Event>& events) {
   const ImageLattice l = imageLattice(p.width, p.height, p.adaptiveImageSpacing);
   const size_t blocks = size_t(l.blocksX()) * size_t(l.blocksY());
   if (blocks > capacity_) {
@@ -57,6 +66,11 @@ void AdaptiveImage::enqueue(ContextImpl& cl, const RenderParams& p, cl::Kernel& 
   flags.setArg(2, ip);
   flags.setArg(3, size);
   flags.setArg(4, cl_float(p.adaptiveImage));
+  flags.setArg(5, depth.on ? hits_ : flags_);  // unread without depth
+  flags.setArg(6, cl_int(depth.on));
+  flags.setArg(7, depth.eye);
+  flags.setArg(8, depth.forward);
+  flags.setArg(9, cl_int(depth.ortho));
   q.enqueueNDRangeKernel(flags, cl::NullRange,
                          cl::NDRange(size_t(l.blocksX()), size_t(l.blocksY())), cl::NullRange,
                          nullptr, &events[1]);

@@ -24,8 +24,18 @@ struct RaycastGrid {
   cl::NDRange local;  // the raycaster's work-group size (NullRange: the driver's)
 };
 
+// iso's depth test between lattice pixels (image_flags.cl's depth_edge): the eye and view
+// direction in voxel coordinates (RaycastParams' eye_v, forward_v).
+struct ImageDepth {
+  bool on = false;
+  cl_float4 eye{{0.0f, 0.0f, 0.0f, 0.0f}}, forward{{0.0f, 0.0f, 1.0f, 0.0f}};
+  bool ortho = false;
+};
+
 class AdaptiveImage {
  public:
+  // The lattice pass's hit output for iso's depth test (HIT_OUTPUT), PIXELS float4s.
+  const cl::Buffer& hits(ContextImpl& cl, size_t pixels);
   // Enqueues on cl.queue, into OUT (the frame's uchar4 pixels): LATTICE (IMAGE_PASS 1) over
   // the lattice, the flags, REFINE (IMAGE_PASS 2; its argument REFINE_ARG is set here to the
   // flags) over the frame, then the fill. Both kernels' other arguments are the caller's.
@@ -33,14 +43,14 @@ class AdaptiveImage {
   // blocking call on the queue.
   void enqueue(ContextImpl& cl, const RenderParams& p, cl::Kernel& lattice, cl::Kernel& refine,
                cl_uint refineArg, const cl::Buffer& out, const RaycastGrid& grid,
-               std::vector<cl::Event>& events);
+               const ImageDepth& depth, std::vector<cl::Event>& events);
   // After the queue finished: blocks of the last frame, and those refined.
   int blocks() const { return int(hostFlags_.size()); }
   int refined() const;
 
  private:
-  cl::Buffer flags_;
-  size_t capacity_ = 0;
+  cl::Buffer flags_, hits_;
+  size_t capacity_ = 0, hitCapacity_ = 0;
   std::vector<uint8_t> hostFlags_;
 };
 

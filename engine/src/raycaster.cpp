@@ -558,7 +558,9 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   if (adaptive) {
     KernelSwitches pass = sw;
     pass.IMAGE_PASS = 1;
+    pass.HIT_OUTPUT = p.mode == Mode::Iso;  // the hits' depths for the flags (ImageDepth)
     lattice = m.cl.kernel("raycast.cl", "raycast", m.options(pass));
+    pass.HIT_OUTPUT = 0;
     pass.IMAGE_PASS = 2;
     refine = m.cl.kernel("raycast.cl", "raycast", m.options(pass));
     const ImageLattice l = imageLattice(p.width, p.height, p.adaptiveImageSpacing);
@@ -646,7 +648,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       m.hitsOut->resize(pixels);
     }
     // The arguments every pass of raycast.cl takes; returns the next argument's index.
-    auto setArgs = [&](cl::Kernel& kn) {
+    auto setArgs = [&](cl::Kernel& kn, const cl::Buffer* hits) {
       cl_uint arg = m.device.setArgs(kn, 0);  // vol, or vol0 .. per slab
       kn.setArg(arg++, f.paramsBuffer);
       kn.setArg(arg++, f.lutBuffer);
@@ -654,7 +656,7 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       kn.setArg(arg++, m.space.leap());
       kn.setArg(arg++, m.space.range());
       kn.setArg(arg++, m.countBuffer);
-      if (m.hitsOut) kn.setArg(arg++, m.hitBuffer);
+      if (hits) kn.setArg(arg++, *hits);
       if (sw.LABELS) {  // LABEL_PARAMS (kernels/classification/labels.cl)
         kn.setArg(arg++, m.labelBuffer);
         kn.setArg(arg++, m.segmentBuffer);
@@ -686,12 +688,18 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       gy = (gy + local[1] - 1) / local[1] * local[1];
     }
     if (adaptive) {
-      setArgs(lattice);
-      const cl_uint refineArg = setArgs(refine);
+      ImageDepth depth;
+      depth.on = p.mode == Mode::Iso;
+      depth.eye = k.eye_v;
+      depth.forward = k.forward_v;
+      depth.ortho = sw.ORTHO != 0;
+      setArgs(lattice, depth.on ? &m.adaptiveImage.hits(m.cl, pixels) : nullptr);
+      const cl_uint refineArg = setArgs(refine, nullptr);
       RaycastGrid grid{m.packets(), size_t(sw.LANES / 4) * size_t(sw.MIP_HALVES), local};
-      m.adaptiveImage.enqueue(m.cl, p, lattice, refine, refineArg, m.outBuffer, grid, passes);
+      m.adaptiveImage.enqueue(m.cl, p, lattice, refine, refineArg, m.outBuffer, grid, depth,
+                              passes);
     } else {
-      setArgs(kernel);
+      setArgs(kernel, m.hitsOut ? &m.hitBuffer : nullptr);
       q.enqueueNDRangeKernel(kernel, cl::NDRange(0, oy), cl::NDRange(gx, gy), local, nullptr,
                              &done);
     }

@@ -11,12 +11,40 @@ inline int4 image_corners(int4 ip, int2 size, int bx, int by) {
   return (int4)(x0, min(x0 + ip.x, size.x - 1), y0, min(y0 + ip.x, size.y - 1));
 }
 
+// iso (depth 1): whether the corners' hits (voxel coordinates, w < 0: none) show an edge the
+// colours may not: some corners hit and others miss, or two neighbours lie more than 4 times
+// farther apart in depth (from the eye; along `forward` when ortho) than across (a surface
+// steeper than 76 degrees to the view, or a step between two surfaces), plus a voxel of slack.
+inline bool depth_edge(__global const float4* hits, int2 size, int4 c, float4 eye, float4 forward,
+                       int ortho) {
+  float4 h[4] = {hits[c.z * size.x + c.x], hits[c.z * size.x + c.y], hits[c.w * size.x + c.y],
+                 hits[c.w * size.x + c.x]};  // around the block
+  int hit = 0;
+  for (int i = 0; i < 4; ++i) hit += h[i].w >= 0.0f;
+  if (hit == 0) return false;
+  if (hit < 4) return true;
+  float depth[4];
+  for (int i = 0; i < 4; ++i)
+    depth[i] =
+        ortho ? dot(h[i].xyz - eye.xyz, normalize(forward.xyz)) : distance(h[i].xyz, eye.xyz);
+  for (int i = 0; i < 4; ++i) {
+    int j = (i + 1) & 3;
+    float dz = fabs(depth[i] - depth[j]);
+    float3 d = h[i].xyz - h[j].xyz;
+    float across = sqrt(fmax(dot(d, d) - dz * dz, 0.0f));
+    if (dz > 4.0f * across + 1.0f) return true;
+  }
+  return false;
+}
+
 // One work-item per block: refined (1) where its four lattice pixels differ by `threshold`
-// levels or more in a channel (0: every block). The error estimate is the corners' spread:
-// bilinear fill is exact where they agree and the image is smooth in between; a hit or miss
-// (iso, dvr's background) shows as a jump of most of the range.
+// levels or more in a channel (0: every block), or, with `depth` (iso), where depth_edge says.
+// The error estimate is the corners' spread: bilinear fill is exact where they agree and the
+// image is smooth in between; a hit or miss against the background shows as a jump of most of
+// the range, one surface before another of the same colour only in depth.
 __kernel void image_flags(__global const uchar4* out, __global uchar* flags, int4 ip, int2 size,
-                          float threshold) {
+                          float threshold, __global const float4* hits, int depth, float4 eye,
+                          float4 forward, int ortho) {
   int bx = get_global_id(0), by = get_global_id(1);
   int bw = max(ip.y - 1, 1), bh = max(ip.z - 1, 1);
   if (bx >= bw || by >= bh) return;
@@ -25,7 +53,8 @@ __kernel void image_flags(__global const uchar4* out, __global uchar* flags, int
   int4 d = convert_int4(out[c.w * size.x + c.x]), e = convert_int4(out[c.w * size.x + c.y]);
   int4 spread = max(max(a, b), max(d, e)) - min(min(a, b), min(d, e));
   int most = max(max(spread.x, spread.y), max(spread.z, spread.w));
-  flags[by * bw + bx] = (float)most >= threshold ? 1 : 0;
+  bool edge = (float)most >= threshold || (depth && depth_edge(hits, size, c, eye, forward, ortho));
+  flags[by * bw + bx] = edge ? 1 : 0;
 }
 
 // One work-item per block (a pixel a work-item cost PoCL 5 ms at 512x384, about 10 % of an

@@ -224,6 +224,50 @@ TEST(AdaptiveImage, EdgeBlocksAreRefinedAndFlatOnesAreNot) {
       }
 }
 
+// iso refines by depth as well as colour: at threshold 255 no colour refines a block, so every
+// refined block is one whose corners hit and miss the ball (or lie far apart in depth), and
+// each block on the outline is refined all the same; the pixels of those blocks are the plain
+// frame's. dvr at 255 refines none.
+TEST(AdaptiveImage, IsoRefinesWhereCornersHitAndMiss) {
+  for (int lanes : {kPerRay, 8, 16}) {
+    SCOPED_TRACE(testing::Message() << "lanes " << lanes);
+    RenderParams p = ballFrame(Mode::Iso);
+    Image plain = render(ballVolume(), p, lanes);
+    p.adaptiveImage = 255.0;
+    FrameStats st;
+    Image adaptive = render(ballVolume(), p, lanes, &st);
+    const ImageLattice l = imageLattice(p.width, p.height, 4);
+    int outline = 0;
+    for (int by = 0; by < l.blocksY(); ++by)
+      for (int bx = 0; bx < l.blocksX(); ++bx) {
+        // A corner on the black background and one on the lit surface.
+        const int x0 = bx * l.k, y0 = by * l.k;
+        const int x1 = std::min(x0 + l.k, p.width - 1), y1 = std::min(y0 + l.k, p.height - 1);
+        int dark = 0;
+        for (int y : {y0, y1})
+          for (int x : {x0, x1}) dark += plain.rgba[(size_t(y) * p.width + x) * 4] == 0;
+        if (dark == 0 || dark == 4) continue;
+        ++outline;
+        for (int y = y0; y <= lastOwned(by, l.blocksY(), p.height, l.k); ++y)
+          for (int x = x0; x <= lastOwned(bx, l.blocksX(), p.width, l.k); ++x) {
+            size_t i = (size_t(y) * p.width + x) * 4;
+            ASSERT_LE(std::abs(int(plain.rgba[i]) - int(adaptive.rgba[i])), 1)
+                << "outline block (" << bx << ", " << by << ") pixel (" << x << ", " << y << ")";
+          }
+      }
+    std::cout << "ball iso at threshold 255, lanes " << lanes << ": " << st.adaptiveRefined
+              << " of " << st.adaptiveBlocks << " blocks refined, " << outline
+              << " on the outline\n";
+    EXPECT_GT(outline, 20);
+    EXPECT_GE(st.adaptiveRefined, outline);
+    EXPECT_LE(st.adaptiveRefined, outline + outline / 2);  // the outline, and little else
+    p.mode = Mode::Dvr;
+    p.preset = "CT-Bone";
+    render(ballVolume(), p, lanes, &st);
+    EXPECT_EQ(st.adaptiveRefined, 0);
+  }
+}
+
 // CThead dvr (CT-Bone, the default camera) at 512x384 with the default threshold ("on", 8
 // levels at 4-pixel spacing) against the plain frame: PSNR above kCtheadOnPsnrDb.
 TEST(AdaptiveImage, CtheadOnIsCloseToThePlainFrame) {
