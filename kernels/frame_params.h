@@ -47,3 +47,6 @@ VOXRAY_PARAM(float4, gradient_opacity)
 VOXRAY_PARAM(float4, tf2d)
 // PREINT (preint_table.h): the stored value of row and column 0, rows per stored unit, unused x 2.
 VOXRAY_PARAM(float4, preint)
+// Image-space adaptive sampling (IMAGE_PASS, adaptive/image_pass.cl): the lattice's spacing K,
+// its columns and rows, unused.
+VOXRAY_PARAM(int4, image_pass)

@@ -35,7 +35,21 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
                       ,
                       __global float4* hits
 #endif
-                          LABEL_PARAMS OVERLAY_PARAMS SURFACE_PARAMS) {
+                          LABEL_PARAMS OVERLAY_PARAMS SURFACE_PARAMS IMAGE_PASS_PARAMS) {
+#if IMAGE_PASS == 2
+  {  // the refine pass (adaptive/image_pass.cl): only work-items that touch a refined block
+#if PACKET
+    int fw = 4, fh = MIP_HALVES * PACKET_ROWS;
+#else
+    int fw = 1, fh = 1;
+#endif
+    int x0 = fw * (int)get_global_id(0), y0 = fh * (int)get_global_id(1);
+    if (x0 >= P->image.x || y0 >= P->image.y ||
+        !image_refined(refine, P->image_pass, x0, y0, min(x0 + fw, P->image.x) - 1,
+                       min(y0 + fh, P->image.y) - 1))
+      return;
+  }
+#endif
 #if PACKET
   if (MODE == 0)
     iso_packet(vol, P, lut, out, leap, range, count, get_global_id(0),
@@ -70,6 +84,7 @@ __kernel void raycast(VOLUME_ARG, __constant RaycastParams* P, __global const fl
 #endif
 #else
   int px = get_global_id(0), py = get_global_id(1);
+  IMAGE_PASS_PIXEL(int, px, py);  // the lattice pass: work-items on lattice pixels
   int width = P->image.x, height = P->image.y;
   if (px >= width || py >= height) return;
   float3 origin_w, dir_w;

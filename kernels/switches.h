@@ -120,6 +120,12 @@ VOXRAY_SWITCH(SURFACES, 0, BUILD, "|surfaces")
 // ADAPTIVE, TF2D, GRADIENT_OPACITY, LABELS, OVERLAY or SURFACES (they classify one sample);
 // the light grid and the path tracer read the colour table.
 VOXRAY_SWITCH(PREINT, 0, BUILD, "|preint")
+// Image-space adaptive sampling (issue 40, RenderParams::adaptiveImage, adaptive/image_pass.cl):
+// 0 the whole frame; 1 the lattice pass (every K-th pixel); 2 the refine pass (work-items that
+// touch a refined block; one more kernel argument, the blocks' flags). Set by the raycaster per
+// pass (engine/src/adaptive_image.cpp), never by kernelSwitches(), so every other variant
+// compiles as before (#if).
+VOXRAY_SWITCH(IMAGE_PASS, 0, BUILD, "|lattice|refine")
 
 // The packets' tuning (VOXRAY_TUNING above), measured on CPUs (docs/bench/history). An
 // experiment in a kernel directory (VOXRAY_KERNEL_DIR) tries another value with #undef and

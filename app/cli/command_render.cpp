@@ -255,6 +255,9 @@ Run addRenderCommand(CLI::App& app) {
     if (stats.lightingMs > 0.0)  // shadows, ao: the light grid, inside the total
       std::cerr << "; " << toString(p.lighting) << " precomputation " << stats.lightingMs << " ms";
     if (rc.slabCount() > 1) std::cerr << "; " << rc.slabCount() << " z slabs";
+    if (stats.adaptiveBlocks > 0)  // --adaptive-image
+      std::cerr << "; adaptive image: " << stats.adaptiveRefined << " of " << stats.adaptiveBlocks
+                << " blocks refined";
     std::cerr << ") -> " << o->output << "\n";
     if (o->repeat > 0) printRepeatedFrames(rc.rendererFor(p), p, *o);
     return 0;

@@ -18,6 +18,9 @@
 #   MODES      default dvr,mip       STEPS   default 4,2,1,0.5,0.25 (voxels)
 #   PREINT_STEPS  dvr: also Voxray with --preintegrate on at these steps (voxels), its own rows
 #              "Voxray preint" (default none; e.g. 1,2,4,8)
+#   ADAPTIVE_IMAGE  every mode: also Voxray with --adaptive-image T,K (image-space adaptive
+#              sampling), each ';'-separated setting its own rows "Voxray adaptive T,K"
+#              (default none; e.g. "4,4;8,4;16,2")   ADAPTIVE_STEPS  their steps (default STEPS)
 #   SIZE       default 512x384       ROUNDS  default 3      FRAMES  default 3 (per round)
 #   AZIMUTH, ELEVATION, ZOOM, FOV: the camera (defaults 30, 15, 1.3, 30)
 #   CLI        voxray-cli (default build/bin/voxray-cli)
@@ -89,6 +92,7 @@ done
 echo "load before: $(cat /proc/loadavg)" >&2
 VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow "$py" "$here/equal_error.py" --out "$out" --cli "$cli" \
   "${scenes[@]}" --modes "${MODES:-dvr,mip}" --steps "${STEPS:-4,2,1,0.5,0.25}" \
-  --preint-steps "${PREINT_STEPS:-}" --size "${SIZE:-512x384}" --rounds "${ROUNDS:-3}" --frames "${FRAMES:-3}" \
+  --preint-steps "${PREINT_STEPS:-}" --adaptive-image "${ADAPTIVE_IMAGE:-}" \
+  --adaptive-steps "${ADAPTIVE_STEPS:-}" --size "${SIZE:-512x384}" --rounds "${ROUNDS:-3}" --frames "${FRAMES:-3}" \
   --device "${DEVICE:-cpu}" --azimuth "${AZIMUTH:-30}" --elevation "${ELEVATION:-15}" \
   --zoom "${ZOOM:-1.3}" --fov "${FOV:-30}"

@@ -267,6 +267,11 @@ def main():
     # dvr only: Voxray with pre-integrated classification (--preintegrate on), its own rows
     # ("Voxray preint"), scored against the same converged image and reference.
     ap.add_argument("--preint-steps", default="")
+    # Every mode: Voxray with image-space adaptive sampling (--adaptive-image T,K), each
+    # setting of this ';'-separated list its own rows ("Voxray adaptive T,K") at
+    # --adaptive-steps (default: the steps above), scored as the others.
+    ap.add_argument("--adaptive-image", default="")
+    ap.add_argument("--adaptive-steps", default="")
     ap.add_argument("--size", default="512x384")
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--frames", type=int, default=3)
@@ -285,6 +290,8 @@ def main():
     width, height = (int(v) for v in a.size.lower().split("x"))
     steps = [float(s) for s in a.steps.split(",")]
     preint_steps = [float(s) for s in a.preint_steps.split(",") if s]
+    adaptive = [s for s in a.adaptive_image.split(";") if s]
+    adaptive_steps = [float(s) for s in (a.adaptive_steps or a.steps).split(",") if s]
     vp = os.path.join(a.out, "vtk-tf.vp")
     write_vp(vp)
     rows, notes = [], []
@@ -306,6 +313,8 @@ def main():
             base = lambda s: voxray_args(a, scene, mode, cam, vp, a.size, s * scene.voxel_mm)
             pre = lambda s: base(s) + ["--preintegrate", "on"]
             psteps = preint_steps if mode == "dvr" else []
+            ai_args = lambda s, t: base(s) + ["--adaptive-image", t]
+            ai_png = lambda s, t: os.path.join(a.out, f"{tag}-adaptive{t.replace(',', '_')}-{s:g}.png")
             # Converged images (1/16 voxel) and the common reference.
             log(f"{tag}: converged images and the double-precision reference")
             vtk_fine = vr.image(FINE * scene.voxel_mm)
@@ -332,6 +341,7 @@ def main():
             # Timed frames, VTK and Voxray taking turns each round.
             times = {(r, s): [] for r in ("vtk", "voxray") for s in steps}
             times.update({("preint", s): [] for s in psteps})
+            times.update({(t, s): [] for t in adaptive for s in adaptive_steps})
             for rnd in range(a.rounds):
                 for s in steps:
                     times[("vtk", s)] += vr.frames(s * scene.voxel_mm, a.frames)
@@ -340,6 +350,9 @@ def main():
                 for s in psteps:
                     png = os.path.join(a.out, f"{tag}-preint-{s:g}.png")
                     times[("preint", s)] += voxray_frames(a, pre(s), a.frames, png)
+                for t in adaptive:
+                    for s in adaptive_steps:
+                        times[(t, s)] += voxray_frames(a, ai_args(s, t), a.frames, ai_png(s, t))
                 log(f"{tag}: round {rnd + 1} of {a.rounds}")
             for s in steps:
                 vimg = vr.image(s * scene.voxel_mm)
@@ -359,6 +372,14 @@ def main():
                 rows.append(dict(scene=scene.name, mode=mode, renderer="Voxray preint", step=s,
                                  ms=float(np.median(times[("preint", s)])), psnr_own=po,
                                  ssim_own=so, psnr_ref=pr, ssim_ref=sr))
+            for t in adaptive:
+                for s in adaptive_steps:
+                    aimg = read_rgb(ai_png(s, t))
+                    po, so = score(aimg, vox_fine)
+                    pr, sr = score(aimg, ref)
+                    rows.append(dict(scene=scene.name, mode=mode, renderer=f"Voxray adaptive {t}",
+                                     step=s, ms=float(np.median(times[(t, s)])), psnr_own=po,
+                                     ssim_own=so, psnr_ref=pr, ssim_ref=sr))
             # The converged images against the reference: each renderer's own error floor.
             for name, img in ((vtk_name, vtk_fine), ("Voxray", vox_fine)):
                 pr, sr = score(img, ref)
@@ -429,8 +450,10 @@ def write_results(a, rows, notes):
     for sc, mode in cases:
         case_rows = [r for r in rows if r["scene"] == sc and r["mode"] == mode]
         names = ["Voxray"]
-        if any(r["renderer"] == "Voxray preint" for r in case_rows):
-            names += ["Voxray preint", "both"]
+        others = sorted({r["renderer"] for r in case_rows
+                         if r["renderer"].startswith("Voxray ")})
+        if others:  # each technique alone, and "both": every Voxray row together
+            names += others + ["both"]
         for name in names:
             for line in ratios(case_rows, name):
                 label = "" if name == "Voxray" else f" [{name}]"

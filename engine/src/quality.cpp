@@ -27,6 +27,8 @@ QualityPreset parseQualityPreset(const std::string& text, const std::string& ori
     q.gradient = parseGradient(j.value("gradient", "zucker-hummel"));
     q.refine = j.value("refine", 4);
     q.jitter = j.value("jitter", false);
+    q.adaptiveImage = j.value("adaptive_image", -1.0);
+    q.adaptiveImageSpacing = j.value("adaptive_image_spacing", 4);
     if (j.contains("measured")) {
       const auto& m = j["measured"];
       q.measuredPsnrDb = m.value("psnr_db", 0.0);
@@ -38,10 +40,12 @@ QualityPreset parseQualityPreset(const std::string& text, const std::string& ori
     throw inputError(origin + ": not a quality preset: " + e.what());
   }
   if (!(q.stepVoxels > 0.0) || !(q.resolutionScale > 0.0 && q.resolutionScale <= 1.0) ||
-      q.refine < 0 || q.refine > 16)
+      q.refine < 0 || q.refine > 16 || q.adaptiveImage > 255.0 || q.adaptiveImageSpacing < 2 ||
+      q.adaptiveImageSpacing > 8)
     throw inputError(origin +
                      ": step_voxels must be > 0, resolution_scale in (0, 1], refine "
-                     "0 ... 16");
+                     "0 ... 16, adaptive_image at most 255 (below 0: off), "
+                     "adaptive_image_spacing 2 ... 8");
   return q;
 }
 
@@ -82,6 +86,10 @@ RenderParams applyQuality(RenderParams p, const QualityPreset& q, double minSpac
   p.stepMm = stepMmOf(q.stepVoxels, minSpacingMm);
   p.refine = q.refine;
   p.jitter = q.jitter;
+  if (q.adaptiveImage >= 0.0) {  // a preset without the key keeps the frame's own choice
+    p.adaptiveImage = q.adaptiveImage;
+    p.adaptiveImageSpacing = q.adaptiveImageSpacing;
+  }
   p.width = std::max(1, int(p.width * q.resolutionScale + 0.5));
   p.height = std::max(1, int(p.height * q.resolutionScale + 0.5));
   return p;

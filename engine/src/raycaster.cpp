@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "adaptive_image.h"
 #include "device_frame.h"
 #include "empty_space.h"
 #include "label_cells.h"
@@ -82,6 +83,7 @@ struct Raycaster::Impl {
   cl::Buffer surfaceFieldBuffer, surfaceGeoBuffer, surfaceColourBuffer, surfaceLayer, surfaceProbe;
   size_t surfaceLayerCapacity = 0, surfaceProbeCapacity = 0;
   std::vector<Raycaster::SurfaceHit>* probeOut = nullptr;  // set by surfaceHits
+  AdaptiveImage adaptiveImage;                             // RenderParams::adaptiveImage's passes
 
   Impl(ClContext& ctx, const Volume& v, VolumeStorage s)
       : frame(std::make_shared<DeviceFrame>(ctx.impl(), v, s)),
@@ -548,6 +550,23 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
   const size_t rowBytes = size_t(p.width) * 4;
   std::string opts = m.options(sw);
   cl::Kernel kernel = m.cl.kernel("raycast.cl", "raycast", opts);
+  // Image-space adaptive sampling (adaptive_image.h): whole frames of pixels only; hits,
+  // probes, surfaces and the overlay read or write per pixel what its passes do not lay out.
+  const bool adaptive =
+      wantsAdaptiveImage(p) && !band && !m.hitsOut && !m.probeOut && !sw.SURFACES && !sw.OVERLAY;
+  cl::Kernel lattice, refine;
+  if (adaptive) {
+    KernelSwitches pass = sw;
+    pass.IMAGE_PASS = 1;
+    pass.HIT_OUTPUT = p.mode == Mode::Iso;  // the hits' depths for the flags (ImageDepth)
+    lattice = m.cl.kernel("raycast.cl", "raycast", m.options(pass));
+    pass.HIT_OUTPUT = 0;
+    pass.IMAGE_PASS = 2;
+    refine = m.cl.kernel("raycast.cl", "raycast", m.options(pass));
+    const ImageLattice l = imageLattice(p.width, p.height, p.adaptiveImageSpacing);
+    k.image_pass = {{l.k, l.cols, l.rows, 0}};
+  }
+  std::vector<cl::Event> passes;  // the adaptive frame's kernels
   cl::Event done;
   std::array<cl_uint, 64> counts{};
   double lightingMs = 0.0;
@@ -621,33 +640,37 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       q.enqueueWriteBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     // Segments shown as surfaces: their layer first (the same rows), which the march reads.
     if (sw.SURFACES) m.surfacePass(p, sw, size_t(y0), size_t(y1), m.probeOut != nullptr);
-    cl_uint arg = m.device.setArgs(kernel, 0);  // vol, or vol0 .. per slab
-    kernel.setArg(arg++, f.paramsBuffer);
-    kernel.setArg(arg++, f.lutBuffer);
-    kernel.setArg(arg++, m.outBuffer);
-    kernel.setArg(arg++, m.space.leap());
-    kernel.setArg(arg++, m.space.range());
-    kernel.setArg(arg++, m.countBuffer);
     if (m.hitsOut) {
       if (pixels * sizeof(cl_float4) > m.hitCapacity) {
         m.hitBuffer = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
         m.hitCapacity = pixels * sizeof(cl_float4);
       }
       m.hitsOut->resize(pixels);
-      kernel.setArg(arg++, m.hitBuffer);
     }
-    if (sw.LABELS) {  // LABEL_PARAMS (kernels/classification/labels.cl)
-      kernel.setArg(arg++, m.labelBuffer);
-      kernel.setArg(arg++, m.segmentBuffer);
-      if (sw.SEGMENT_TF) kernel.setArg(arg++, m.segTfBuffer);  // SEGTF_PARAMS (segment_tf.cl)
-    }
-    if (sw.OVERLAY) {  // OVERLAY_PARAMS (kernels/classification/overlay.cl)
-      kernel.setArg(arg++, m.overlayVolume);
-      kernel.setArg(arg++, m.overlayLut);
-      kernel.setArg(arg++, m.overlayCellBuffer);
-      kernel.setArg(arg++, m.overlayGeometry);
-    }
-    if (sw.SURFACES) kernel.setArg(arg++, m.surfaceLayer);  // SURFACE_PARAMS (surfaces.cl)
+    // The arguments every pass of raycast.cl takes; returns the next argument's index.
+    auto setArgs = [&](cl::Kernel& kn, const cl::Buffer* hits) {
+      cl_uint arg = m.device.setArgs(kn, 0);  // vol, or vol0 .. per slab
+      kn.setArg(arg++, f.paramsBuffer);
+      kn.setArg(arg++, f.lutBuffer);
+      kn.setArg(arg++, m.outBuffer);
+      kn.setArg(arg++, m.space.leap());
+      kn.setArg(arg++, m.space.range());
+      kn.setArg(arg++, m.countBuffer);
+      if (hits) kn.setArg(arg++, *hits);
+      if (sw.LABELS) {  // LABEL_PARAMS (kernels/classification/labels.cl)
+        kn.setArg(arg++, m.labelBuffer);
+        kn.setArg(arg++, m.segmentBuffer);
+        if (sw.SEGMENT_TF) kn.setArg(arg++, m.segTfBuffer);  // SEGTF_PARAMS (segment_tf.cl)
+      }
+      if (sw.OVERLAY) {  // OVERLAY_PARAMS (kernels/classification/overlay.cl)
+        kn.setArg(arg++, m.overlayVolume);
+        kn.setArg(arg++, m.overlayLut);
+        kn.setArg(arg++, m.overlayCellBuffer);
+        kn.setArg(arg++, m.overlayGeometry);
+      }
+      if (sw.SURFACES) kn.setArg(arg++, m.surfaceLayer);  // SURFACE_PARAMS (surfaces.cl)
+      return arg;
+    };
     cl::NDRange local = m.local();
     // A band starts at the work-item row holding Y0: the kernels take their pixel from
     // get_global_id, which counts the offset, and drop items past the image.
@@ -664,7 +687,22 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
       gx = (gx + local[0] - 1) / local[0] * local[0];
       gy = (gy + local[1] - 1) / local[1] * local[1];
     }
-    q.enqueueNDRangeKernel(kernel, cl::NDRange(0, oy), cl::NDRange(gx, gy), local, nullptr, &done);
+    if (adaptive) {
+      ImageDepth depth;
+      depth.on = p.mode == Mode::Iso;
+      depth.eye = k.eye_v;
+      depth.forward = k.forward_v;
+      depth.ortho = sw.ORTHO != 0;
+      setArgs(lattice, depth.on ? &m.adaptiveImage.hits(m.cl, pixels) : nullptr);
+      const cl_uint refineArg = setArgs(refine, nullptr);
+      RaycastGrid grid{m.packets(), size_t(sw.LANES / 4) * size_t(sw.MIP_HALVES), local};
+      m.adaptiveImage.enqueue(m.cl, p, lattice, refine, refineArg, m.outBuffer, grid, depth,
+                              passes);
+    } else {
+      setArgs(kernel, m.hitsOut ? &m.hitBuffer : nullptr);
+      q.enqueueNDRangeKernel(kernel, cl::NDRange(0, oy), cl::NDRange(gx, gy), local, nullptr,
+                             &done);
+    }
     if (m.opts.countSamples)
       q.enqueueReadBuffer(m.countBuffer, CL_FALSE, 0, sizeof(counts), counts.data());
     if (m.hitsOut)
@@ -690,11 +728,17 @@ void Raycaster::render(const RenderParams& p, Image& out, FrameStats* stats) {
     stats->variant = opts;
     stats->lightingMs = lightingMs;
     stats->samples = 0.0;
+    stats->adaptiveBlocks = adaptive ? m.adaptiveImage.blocks() : 0;
+    stats->adaptiveRefined = adaptive ? m.adaptiveImage.refined() : 0;
     for (cl_uint c : counts) stats->samples += double(c);
     try {
-      cl_ulong t0 = done.getProfilingInfo<CL_PROFILING_COMMAND_START>();
-      cl_ulong t1 = done.getProfilingInfo<CL_PROFILING_COMMAND_END>();
-      stats->kernelMs = double(t1 - t0) * 1e-6;
+      if (!adaptive) passes = {done};
+      stats->kernelMs = 0.0;  // the adaptive frame's: its passes, flags and fill together
+      for (const cl::Event& e : passes) {
+        cl_ulong t0 = e.getProfilingInfo<CL_PROFILING_COMMAND_START>();
+        cl_ulong t1 = e.getProfilingInfo<CL_PROFILING_COMMAND_END>();
+        stats->kernelMs += double(t1 - t0) * 1e-6;
+      }
     } catch (const cl::Error&) {
       stats->kernelMs = 0.0;  // some drivers do not profile; the wall time still stands
     }

@@ -83,6 +83,26 @@ void parseSize(RenderParams& p, const std::string& s) {
   p.height = h;
 }
 
+// --adaptive-image on: this threshold (levels of 255) at 4-pixel spacing; measured in
+// tests/engine/adaptive_image_test.cpp and docs/bench (issue 40).
+constexpr double kAdaptiveImageOnLevels = 8.0;
+
+void parseAdaptiveImage(RenderParams& p, const std::string& s) {
+  if (s == "off" || s == "on") {
+    p.adaptiveImage = s == "on" ? kAdaptiveImageOnLevels : -1.0;
+    p.adaptiveImageSpacing = 4;
+    return;
+  }
+  auto v = toDoubles("adaptive-image", s, 1, 2);
+  if (!(v[0] >= 0.0 && v[0] <= 255.0))
+    throw inputError("--adaptive-image: THRESHOLD is 0 ... 255 levels (or off), got '" + s + "'");
+  const double k = v.size() > 1 ? v[1] : 4.0;
+  if (!(k >= 2.0 && k <= 8.0) || k != std::floor(k))
+    throw inputError("--adaptive-image: K is a whole 2 ... 8 pixels, got '" + s + "'");
+  p.adaptiveImage = v[0];
+  p.adaptiveImageSpacing = int(k);
+}
+
 void parseClip(RenderParams& p, const std::string& s) {
   auto v = toDoubles("clip", s, 6, 6);
   for (double f : v) checkInDomain("clip", kFractionDomain, f, s);
@@ -342,6 +362,19 @@ std::vector<ParamSpec> makeSpecs() {
              "dvr: classify each step over the values between its two samples (pre-integrated "
              "table; longer steps keep thin features)",
              FIELD(preintegrate)),
+      {"adaptive-image", "off|on|THRESHOLD[,K]",
+       "image-space adaptive sampling: rays at every K-th pixel (2 ... 8, default 4) first, "
+       "then every pixel of the K x K blocks whose corners differ by THRESHOLD levels (of 255) "
+       "or more, the rest bilinear (0 = every block: the plain frame; on = 8,4; off = every "
+       "pixel)",
+       none, [](P& p, S s) { parseAdaptiveImage(p, s); },
+       [](const P& p) {
+         if (p.adaptiveImage < 0.0) return std::string("off");
+         std::string out = fmt(p.adaptiveImage);
+         out += ',';
+         out += std::to_string(p.adaptiveImageSpacing);
+         return out;
+       }},
       {"segment-mask", "off|show:L,...|hide:L,...",
        "dvr with a segmentation: show only what the segments of labels L cover, or hide them "
        "(off = the whole volume)",

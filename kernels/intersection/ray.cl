@@ -4,6 +4,7 @@
 #ifndef VOXRAY_RAY_CL
 #define VOXRAY_RAY_CL
 
+#include "adaptive/image_pass.cl"
 #include "intersection/intersect.cl"
 #include "jitter_hash.h"
 #include "variant.cl"

@@ -70,6 +70,7 @@ inline intN pixel_raysN(__constant RaycastParams* P, int gx, int gy, RayPacket* 
   intN lane = (intN)(LANE_LIST(LANE_INDEX));
 #undef LANE_INDEX
   intN px = 4 * gx + (lane & 3), py = PACKET_ROWS * gy + (lane >> 2);
+  IMAGE_PASS_PIXEL(intN, px, py);  // the lattice pass: lanes on lattice pixels
   floatN sx = (2.0f * (convert_floatN(px) + 0.5f) / width - 1.0f) * P->view.x * P->view.y;
   floatN sy = (1.0f - 2.0f * (convert_floatN(py) + 0.5f) / height) * P->view.x;
   floatN inv_len = 1.0f;

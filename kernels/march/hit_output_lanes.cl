@@ -25,6 +25,7 @@ inline void write_hits_packet(__constant RaycastParams* P, __global float4* hits
   vstoreN(x, 0, hx), vstoreN(y, 0, hy), vstoreN(z, 0, hz), vstoreN(w, 0, hw);
   for (int l = 0; l < LANES; ++l) {
     int px = 4 * gx + (l & 3), py = PACKET_ROWS * gy + (l >> 2);
+    IMAGE_PASS_PIXEL(int, px, py);  // iso's lattice pass writes its hits (image_pass.cl)
     if (px >= P->image.x || py >= P->image.y) continue;
     hits[py * P->image.x + px] =
         hw[l] < 0.0f ? (float4)(0.0f, 0.0f, 0.0f, -1.0f) : (float4)(hx[l], hy[l], hz[l], hw[l]);

@@ -44,6 +44,7 @@ inline void write_packet(__constant RaycastParams* P, __global uchar4* out, __gl
   uint total = 0;
   for (int l = 0; l < LANES; ++l) {
     int px = 4 * gx + (l & 3), py = PACKET_ROWS * gy + (l >> 2);
+    IMAGE_PASS_PIXEL(int, px, py);  // as pixel_raysN's
     if (px >= P->image.x || py >= P->image.y) continue;
     out[py * P->image.x + px] = to_rgba8((float3)(cr[l], cg[l], cb[l]));
     total += counts[l];

@@ -72,6 +72,7 @@ const std::map<std::string, std::string> kUnusual = {
     {"jitter", "on"},
     {"adaptive", "0.05"},
     {"preintegrate", "on"},
+    {"adaptive-image", "12.5,2"},
     {"segment-mask", "hide:2,7"},
     {"segment-blend", "0.35"},
     {"segment-tf", "3:-1000:1:0.5:0.25:0,0.1:1:0.5:0.25:0.333;7:-5:0:0:1:1"},

@@ -23,6 +23,10 @@ struct QualityPreset {
   Gradient gradient = Gradient::ZuckerHummel;
   int refine = 4;
   bool jitter = false;
+  // Image-space adaptive sampling (RenderParams::adaptiveImage): threshold in levels (below 0:
+  // off) and lattice spacing; keys "adaptive_image" and "adaptive_image_spacing".
+  double adaptiveImage = -1.0;
+  int adaptiveImageSpacing = 4;
   // Measured on CThead dvr (CT-Bone) by `voxray-cli accuracy`: PSNR against the
   // reference renderer at 1/16-voxel steps, and the speed-up over the reference preset.
   double measuredPsnrDb = 0.0;

@@ -99,6 +99,12 @@ struct RenderParams {
   // raycaster's only (the reference renderer stays the plain integral it is measured against);
   // not with tf2d, gradientOpacity, a segmentation or an overlay (then off), nor adaptiveError.
   bool preintegrate = false;
+  // Image-space adaptive sampling (issue 40, the raycaster's; engine/src/adaptive_image.h):
+  // rays at every adaptiveImageSpacing-th pixel first, then every pixel of the blocks between
+  // them whose corners differ by adaptiveImage levels (of 255) or more in a channel, the rest
+  // bilinear. Below 0: off (every pixel marched); 0: every block refined (the plain frame).
+  double adaptiveImage = -1.0;
+  int adaptiveImageSpacing = 4;  // 2 ... 8 pixels
   // dvr with a segmentation: the labels shown (segment-mask) and how strongly a visible
   // segment's colour replaces the table's colour (0: not at all, 1: wholly).
   SegmentMask segmentMask;

@@ -21,6 +21,10 @@ struct FrameStats {
   // seconds they took since the last restart.
   int pathSamples = 0;
   double pathSeconds = 0.0;
+  // Image-space adaptive sampling (RenderParams::adaptiveImage): the frame's blocks between
+  // lattice pixels and those refined (every pixel marched); 0 and 0 when it was off.
+  int adaptiveBlocks = 0;
+  int adaptiveRefined = 0;
 };
 
 // A still image's budget for a progressive renderer: samples per pixel (0: no limit) or
