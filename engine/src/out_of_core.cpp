@@ -10,6 +10,7 @@
 #include "device_frame.h"
 #include "empty_space.h"
 #include "macro_cells.h"
+#include "streamed_cells.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/io/error.h"
 #include "voxray/io/parallel.h"
@@ -34,11 +35,19 @@ std::string mib(size_t bytes) {
 // to_rgba8 (kernels/shading/shading.cl), as multi_device_composite.cpp rounds.
 uint8_t toByte(float c) { return uint8_t(std::nearbyint(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
 
+// The device bytes EmptySpace holds for CELLS cells: min/max, occupancy, distances and level,
+// scratch.
+size_t cellBytes(const glm::ivec3& cells) {
+  return size_t(cells.x) * size_t(cells.y) * size_t(cells.z) * 8;
+}
+
+}  // namespace
+
 // computeMacroCells of the source's volume without holding it: slices are read GROUP at a
 // time, and each cell is made once the slices it covers (4c - 1 to 4c + 4) are in. The
 // window of slices starts at a multiple of kCellSize, so computeMacroCells of the window
 // spans each of its cells over the same slices as over the whole volume.
-MacroCells streamCells(SlabSource& src, int group) {
+MacroCells streamMacroCells(SlabSource& src, int group) {
   const Volume& g = src.geometry();
   MacroCells m;
   m.dims = (g.dims + (kCellSize - 1)) / kCellSize;
@@ -71,14 +80,6 @@ MacroCells streamCells(SlabSource& src, int group) {
   }
   return m;
 }
-
-// The device bytes EmptySpace holds for CELLS cells: min/max, occupancy, distances and level,
-// scratch.
-size_t cellBytes(const glm::ivec3& cells) {
-  return size_t(cells.x) * size_t(cells.y) * size_t(cells.z) * 8;
-}
-
-}  // namespace
 
 struct OutOfCoreRenderer::Impl {
   struct Part {
@@ -370,7 +371,8 @@ OutOfCoreRenderer::OutOfCoreRenderer(ClContext& context, SlabSource& source,
   }
   // One pass over the source: the empty-space cells and the value range the tables map.
   const int chunk = source.preferredSlices();
-  MacroCells mc = streamCells(source, chunk > 0 ? (chunk + 3) / 4 * 4 : 64);
+  MacroCells mc = source.whole() ? computeMacroCells(*source.whole())
+                                 : streamMacroCells(source, chunk > 0 ? (chunk + 3) / 4 * 4 : 64);
   int lo = INT16_MAX, hi = INT16_MIN;
   for (size_t c = 0; c + 1 < mc.minMax.size(); c += 2) {
     lo = std::min<int>(lo, mc.minMax[c]);

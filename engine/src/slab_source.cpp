@@ -49,6 +49,7 @@ class VolumeSource : public SlabSource {
   const int16_t* slicesInPlace(int first) const override {
     return v_.voxels.data() + size_t(first) * size_t(v_.dims.x) * size_t(v_.dims.y);
   }
+  const Volume* whole() const override { return &v_; }
   const Volume& coarse() override {
     if (!coarse_) coarse_ = coarseLevel(v_, factor_);
     return *coarse_;

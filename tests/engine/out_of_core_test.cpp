@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "stability_helpers.h"
+#include "streamed_cells.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/out_of_core.h"
 #include "voxray/engine/raycaster.h"
@@ -175,6 +176,7 @@ TEST(OutOfCoreCache, SecondFrameUploadsOnlyWhatDoesNotFit) {
   EXPECT_EQ(s1.uploads, n);
   EXPECT_EQ(s2.uploads, n - k);
   EXPECT_EQ(test::maxDiff(a, b), 0);
+  EXPECT_LE(test::maxDiff(inCore(v, true).render(p), b), 1);  // several parts held: the same frame
 }
 
 // A preview uploads nothing, draws the missing parts from the coarse level and says so; with
@@ -269,6 +271,27 @@ TEST(OutOfCoreFault, AllocationFailureDropsToCoarse) {
     EXPECT_EQ(s.partsFull, ooc.partCount());
     EXPECT_LE(s.partsResident, 2);
     EXPECT_LE(test::maxDiff(full, img), 1);
+  }
+}
+
+// The empty-space cells from slices streamed a group at a time equal those of the whole
+// volume, bit for bit, for groups that do and do not divide the slices (61: 15 cells and a
+// partial one; 37 x 29 partial along x and y too).
+TEST(OutOfCoreCells, StreamedEqualWhole) {
+  Volume v;
+  v.dims = {37, 29, 61};
+  v.voxels.resize(v.voxelCount());
+  uint32_t seed = 12345;
+  for (auto& x : v.voxels) {
+    seed = seed * 1664525u + 1013904223u;
+    x = int16_t(int(seed >> 16) % 4000 - 1000);
+  }
+  const MacroCells whole = computeMacroCells(v);
+  auto src = volumeSlabSource(v);
+  for (int group : {4, 8, 12, 64, 128}) {
+    const MacroCells streamed = streamMacroCells(*src, group);
+    EXPECT_EQ(streamed.dims, whole.dims);
+    EXPECT_TRUE(streamed.minMax == whole.minMax) << "group " << group;
   }
 }
 

@@ -26,6 +26,9 @@ class SlabSource {
     (void)first;
     return nullptr;
   }
+  // The whole volume when it lies in host memory (the empty-space cells are then made from it
+  // in place, without the streamed pass's copies), else nullptr.
+  virtual const Volume* whole() const { return nullptr; }
   // Slices a read is best aligned to (a Zarr chunk's depth: a read across a chunk decodes it
   // whole); 0: any.
   virtual int preferredSlices() const { return 0; }
