@@ -535,6 +535,13 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
         }
       }
       if (!part.resident) {
+        if (s.message.empty())
+          s.message = "the device holds " + mib(m.partBudget) +
+                      " of parts since an allocation "
+                      "failed, less than part " +
+                      std::to_string(it.part + 1) + " (" + mib(part.bytes) +
+                      "): it is drawn from the coarse level; free the device "
+                      "and open the volume again for full resolution";
         drawCoarse(it);
         continue;
       }

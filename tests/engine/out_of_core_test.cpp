@@ -272,6 +272,20 @@ TEST(OutOfCoreFault, AllocationFailureDropsToCoarse) {
     EXPECT_LE(s.partsResident, 2);
     EXPECT_LE(test::maxDiff(full, img), 1);
   }
+  // A device that takes no part at all: every frame is the coarse level's, flagged and
+  // explained, never an error.
+  o.faultDeviceParts = 0;
+  OutOfCoreRenderer none(test::pocl(), *src, o);
+  for (int frameIndex = 0; frameIndex < 2; ++frameIndex) {
+    Image img;
+    OutOfCoreStats s;
+    ASSERT_NO_THROW(none.render(frame(Mode::Dvr, View::Oblique), img, &s));
+    EXPECT_EQ(s.partsCoarse, none.partCount());
+    EXPECT_EQ(s.partsResident, 0);
+    EXPECT_FALSE(s.fullResolution);
+    EXPECT_NE(s.message.find("coarse level"), std::string::npos) << s.message;
+    EXPECT_GT(litPixels(img), int(img.rgba.size() / 4 / 50));
+  }
 }
 
 // The empty-space cells from slices streamed a group at a time equal those of the whole
