@@ -110,10 +110,12 @@ struct OutOfCoreRenderer::Impl {
   std::vector<Part> parts;
   size_t partBudget = 0, residentBytes = 0, fixedBytes = 0;
   int uploadsDone = 0;
+  bool evictedPending = false;  // a part left the device since the queue last finished
   double openMs = 0.0;
   cl::Buffer colour, order;  // one launch's image on the device
+  cl::Buffer accBuffer;      // the composite so far, on the device (float4 per pixel)
   size_t capacity = 0;
-  std::vector<float> host, acc;  // one launch's image on the host; the composite so far
+  std::vector<float> acc;        // the composite, read back once the frame's parts are in
   std::vector<int16_t> staging;  // one part's slices, released after its upload
 
   Impl(ContextImpl& c, SlabSource& s, const OutOfCoreOptions& opts, VolumeStorage st)
@@ -133,6 +135,7 @@ struct OutOfCoreRenderer::Impl {
     part.image = cl::Image3D();
     part.resident = false;
     residentBytes -= part.bytes;
+    evictedPending = true;
   }
   void keys(std::vector<Item>& items, const RenderParams& p);
   void launch(const Item& item, const RenderParams& p);
@@ -163,6 +166,12 @@ void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
   }
   const auto t1 = Clock::now();
   s.readMs += std::chrono::duration<double, std::milli>(t1 - t0).count();
+  // An evicted part's memory is freed once the launches queued on it are done: wait for them
+  // (after the read above, which overlaps them) so that the budget is what the device holds.
+  if (evictedPending) {
+    clCall([&] { return cl.queue.finish(); });
+    evictedPending = false;
+  }
   try {
     clCall([&] {
       auto* ptr = const_cast<int16_t*>(in);
@@ -254,12 +263,7 @@ void OutOfCoreRenderer::Impl::launch(const Item& item, const RenderParams& p) {
     const PartRange& r = parts[size_t(item.part)].range;
     stored = {{r.storedFirst, r.storedEnd - r.storedFirst}};
   }
-  clCall([&] {
-    if (pixels > capacity) {
-      colour = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
-      order = cl::Buffer(cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float));
-      capacity = pixels;
-    }
+  clCall([&] {  // the image buffers: draw() made them for the frame's size
     cl_uint arg = 0;
     if (storage == VolumeStorage::Image3d)
       kernel.setArg(arg++, isCoarse ? coarseImage : parts[size_t(item.part)].image);
@@ -281,34 +285,20 @@ void OutOfCoreRenderer::Impl::launch(const Item& item, const RenderParams& p) {
       gy = (gy + 7) / 8 * 8;
     }
     cl.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local);
-    host.resize(pixels * 4);
-    cl.queue.enqueueReadBuffer(colour, CL_TRUE, 0, pixels * sizeof(cl_float4), host.data());
+    // Into the composite on the device, front to back (the items come in the order the rays
+    // meet them): no part image crosses the bus, and the next part's slices are read and
+    // uploaded while the queue runs (it is in order: the next launch waits for this one).
+    cl::Kernel add = cl.kernel("multidev/accumulate_part.cl", "accumulate_part", "");
+    const cl_int mode = p.mode == Mode::Iso ? 0 : p.mode == Mode::Dvr ? 1 : 2;
+    add.setArg(0, colour);
+    add.setArg(1, accBuffer);
+    add.setArg(2, mode);
+    add.setArg(3, cl_float(p.earlyTermination));
+    add.setArg(4, cl_int(pixels));
+    cl.queue.enqueueNDRangeKernel(add, cl::NullRange, cl::NDRange((pixels + 63) / 64 * 64),
+                                  cl::NullRange);
+    cl.queue.flush();
     return 0;
-  });
-  // Into the composite, front to back (the items come in the order the rays meet them).
-  const Mode mode = p.mode;
-  const float et = float(p.earlyTermination);
-  const int bandRows = 32;
-  parallelFor(size_t((p.height + bandRows - 1) / bandRows), [&](size_t band) {
-    const size_t y0 = band * bandRows, y1 = std::min(size_t(p.height), y0 + bandRows);
-    for (size_t px = y0 * size_t(p.width); px < y1 * size_t(p.width); ++px) {
-      const float* c = &host[px * 4];
-      float* a = &acc[px * 4];
-      if (mode == Mode::Dvr) {
-        if (a[3] < et) {
-          const float t = 1.0f - a[3];
-          a[0] += t * c[0];
-          a[1] += t * c[1];
-          a[2] += t * c[2];
-          a[3] += t * c[3];
-        }
-      } else if (mode == Mode::Iso) {
-        if (a[3] == 0.0f && c[3] > 0.0f) std::copy(c, c + 4, a);  // the nearest slab's hit
-      } else if (c[3] > 0.0f) {  // mip: the largest of the slabs whose rays met the clip box
-        a[0] = a[3] > 0.0f ? std::max(a[0], c[0]) : c[0];
-        a[3] = 1.0f;
-      }
-    }
   });
 }
 
@@ -475,7 +465,17 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
   }
   m.keys(items, p);
   const size_t pixels = size_t(p.width) * size_t(p.height);
-  m.acc.assign(pixels * 4, 0.0f);
+  clCall([&] {
+    if (pixels > m.capacity) {
+      m.colour = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
+      m.order = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float));
+      m.accBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_WRITE, pixels * sizeof(cl_float4));
+      m.capacity = pixels;
+    }
+    m.cl.queue.enqueueFillBuffer(m.accBuffer, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}}, 0,
+                                 pixels * sizeof(cl_float4));
+    return 0;
+  });
   bool coarseReady = false;
   auto drawCoarse = [&](const Impl::Item& it) {
     if (!coarseReady) {
@@ -549,7 +549,12 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
     m.launch(it, p);
     ++s.partsFull;
   }
-  // The composite so far into bytes, the background behind.
+  m.acc.resize(pixels * 4);
+  clCall([&] {
+    m.cl.queue.enqueueReadBuffer(m.accBuffer, CL_TRUE, 0, pixels * sizeof(cl_float4), m.acc.data());
+    return 0;
+  });
+  // The composite into bytes, the background behind.
   out.width = p.width;
   out.height = p.height;
   out.rgba.resize(pixels * 4);

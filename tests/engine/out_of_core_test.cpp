@@ -156,6 +156,31 @@ INSTANTIATE_TEST_SUITE_P(Modes, OutOfCore, ::testing::Values(0, 1, 2, 3),
                                   (c.ess ? "_ess" : "_noess");
                          });
 
+// The storage GPUs use (image3d_t) for the parts and the coarse level, on PoCL.
+TEST(OutOfCoreStorage, ImageEqualsInCore) {
+  if (!test::pocl().device().imageSupport) GTEST_SKIP() << "no image support";
+  const Volume& v = tallVolume();
+  auto src = volumeSlabSource(v);
+  OutOfCoreOptions o = thirdOf(v);
+  o.storage = VolumeStorage::Image3d;
+  OutOfCoreRenderer ooc(test::pocl(), *src, o);
+  Raycaster one(test::pocl(), v, VolumeStorage::Image3d);
+  RaycasterOptions ro;
+  ro.packets = false;
+  one.setOptions(ro);
+  for (Mode mode : {Mode::Dvr, Mode::Iso, Mode::Mip}) {
+    const RenderParams p = frame(mode, View::Oblique);
+    Image b, pv;
+    OutOfCoreStats s;
+    ooc.render(p, b, &s);
+    EXPECT_TRUE(s.fullResolution);
+    EXPECT_LE(test::maxDiff(one.render(p), b), 1) << toString(mode);
+    ooc.preview(p, pv, &s);  // the coarse level as an image too
+    EXPECT_GT(s.partsCoarse, 0);
+    EXPECT_GT(litPixels(pv), int(pv.rgba.size() / 4 / 50));
+  }
+}
+
 // The same frame again: the part needed latest leaves, so the parts kept are those the next
 // frame wants first (and the last one, which it wants before any evicted one comes round):
 // it uploads n - k parts (k held), where LRU would upload all n.

@@ -3,8 +3,9 @@
 // 38 part 2). The volume is planned as z-range parts (multi_device.h's parts: each marches only
 // its samples of the one-device ray), more than the budget holds; only as many as fit are on
 // the device at once. A converged frame renders every part in visibility order, uploading
-// those missing (evicting others), and composites each into an accumulator as it comes: the
-// host holds the accumulator and one part's image, never every part's. A preview frame (an
+// those missing (evicting others), and composites each into an accumulator on the device as it
+// comes (kernels/multidev/accumulate_part.cl): one image is read back a frame, and the next
+// part's slices are read from the source while the device renders. A preview frame (an
 // orbit, a drag) uploads nothing: it draws the parts on the device at full resolution and the
 // others from a coarse level over the same z range, and says it is not at full resolution.
 //
