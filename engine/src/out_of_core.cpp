@@ -404,6 +404,12 @@ int OutOfCoreRenderer::residentCount() const {
   return int(std::count_if(impl_->parts.begin(), impl_->parts.end(),
                            [](const Impl::Part& p) { return p.resident; }));
 }
+std::vector<int> OutOfCoreRenderer::residentParts() const {
+  std::vector<int> out;
+  for (size_t i = 0; i < impl_->parts.size(); ++i)
+    if (impl_->parts[i].resident) out.push_back(int(i));
+  return out;
+}
 std::vector<PartRange> OutOfCoreRenderer::ranges() const {
   std::vector<PartRange> out;
   for (const auto& p : impl_->parts) out.push_back(p.range);

@@ -243,6 +243,64 @@ TEST(OutOfCorePreview, CoarseWhereMissingAndFlagged) {
   EXPECT_EQ(test::maxDiff(c2, p2), 0);
 }
 
+// The preview differs from the converged frame only where its rays cross a part that is not
+// on the device. Seen from the side with parallel rays, each image row lies in one plane z,
+// so one part alone draws it; the row's z comes from a mip of a ramp (value 20 z) of the same
+// geometry. Rows 2 slices or more inside a held part's own range are the converged frame's
+// exactly; rows in the missing parts are drawn coarse, and some differ.
+TEST(OutOfCorePreview, DiffersOnlyWhereAPartIsMissing) {
+  const Volume& v = tallVolume();
+  Volume ramp = v;
+  for (int z = 0; z < v.dims.z; ++z)
+    for (int i = 0; i < v.dims.x * v.dims.y; ++i)
+      ramp.voxels[size_t(z) * size_t(v.dims.x * v.dims.y) + size_t(i)] = int16_t(20 * z);
+  RenderParams p = frame(Mode::Dvr, View::Oblique, 64, 96);
+  p.camera.elevationDeg = 0.0;
+  p.camera.azimuthDeg = 30.0;
+  p.camera.projection = Projection::Orthographic;
+  RenderParams m = p;
+  m.mode = Mode::Mip;
+  m.shading = false;
+  const Image zImage = inCore(ramp, true).render(m);  // grey = z / 95 (the ramp's range)
+  auto src = volumeSlabSource(v);
+  OutOfCoreRenderer ooc(test::pocl(), *src, thirdOf(v));
+  Image converged, preview;
+  OutOfCoreStats s;
+  ooc.render(p, converged, &s);
+  ooc.preview(p, preview, &s);
+  ASSERT_FALSE(s.fullResolution);
+  const std::vector<PartRange> ranges = ooc.ranges();
+  std::vector<bool> held(ranges.size(), false);
+  for (int i : ooc.residentParts()) held[size_t(i)] = true;
+  int same = 0, sameLit = 0, inMissing = 0, differ = 0;
+  for (size_t px = 0; px < zImage.rgba.size() / 4; ++px) {
+    if (zImage.rgba[px * 4] == 0) continue;  // the ray misses the volume (or z < 0.4)
+    const double z = zImage.rgba[px * 4] / 255.0 * (v.dims.z - 1);
+    int worst = 0;
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst,
+                       std::abs(int(preview.rgba[px * 4 + c]) - int(converged.rgba[px * 4 + c])));
+    for (size_t k = 0; k < ranges.size(); ++k) {
+      if (z < ranges[k].first - 0.5 || z >= ranges[k].end - 0.5) continue;
+      const bool inside = z >= ranges[k].first + 2 && z <= ranges[k].end - 3;
+      if (held[k] && inside) {
+        EXPECT_EQ(worst, 0) << "pixel " << px << " at z " << z << " in held part " << k;
+        ++same;
+        sameLit += converged.rgba[px * 4] > 20;  // the volume shows there, not the background
+      } else if (!held[k] && inside) {
+        ++inMissing;
+        differ += worst > 1;
+      }
+    }
+  }
+  std::cout << same << " pixels in held parts equal (" << sameLit << " lit), " << differ << " of "
+            << inMissing << " in missing parts differ\n";
+  EXPECT_GT(same, 200);
+  EXPECT_GT(sameLit, 50);  // 66 here: the ellipsoid's ends lie in the parts held
+  EXPECT_GT(inMissing, 200);
+  EXPECT_GT(differ, 0);
+}
+
 // A budget below one part: a clear error naming the budget and what to ask for.
 TEST(OutOfCoreBudget, TooSmallForOnePartSaysWhatToDo) {
   const Volume& v = tallVolume();

@@ -86,6 +86,7 @@ class OutOfCoreRenderer {
 
   int partCount() const;
   int residentCount() const;
+  std::vector<int> residentParts() const;  // the parts on the device now, by index
   std::vector<PartRange> ranges() const;
   size_t budgetBytes() const;       // what the parts may hold (the budget less the fixed bytes)
   size_t partBytesLargest() const;  // the largest part's stored slices
