@@ -129,7 +129,7 @@ TEST_F(OutOfCoreCli, StreamedZarrStaysWithinTheBudget) {
   // Beyond the fixed part: the budget (64 MiB, a quarter of the volume: on a CPU device the
   // parts held are host memory), one part's slices read for its upload (kept for the next;
   // at most 1/8 of the budget), the pass's window of slices (72 of 512: 0.14x) and the
-  // decoders' chunks: 0.27-0.31x here over 6 runs. At most 0.6x the volume: an in-core run
+  // decoders' chunks: 0.27-0.31x here over 3 runs. At most 0.6x the volume: an in-core run
   // holds 1x at least.
   EXPECT_LE(overKiB, 0.6 * volumeKiB) << b.out;
   const auto j = nlohmann::json::parse(b.out);
