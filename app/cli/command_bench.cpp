@@ -23,6 +23,7 @@
 #include "input_options.h"
 #include "labels_option.h"
 #include "multi_device_option.h"
+#include "out_of_core_run.h"
 #include "overlay_option.h"
 #include "quality_choice.h"
 #include "render_flags.h"
@@ -57,7 +58,8 @@ struct BenchOptions {
   CinematicFlags cinematic;
   LabelsOption labels;
   OverlayOption overlay;
-  MultiDeviceOption multi;  // --split, --devices (issue 38)
+  MultiDeviceOption multi;    // --split, --devices (issue 38)
+  OutOfCoreOption outOfCore;  // --memory-budget (issue 38 part 2)
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -125,6 +127,34 @@ int benchSplit(const BenchOptions& o) {
   if (!o.json)
     std::printf("%d frames per case over a 360-degree orbit after a warm-up; medians\n",
                 o.run.frames);
+  return 0;
+}
+
+// --memory-budget: each size over the orbit out of core on one device, preview and converged.
+int benchOutOfCoreSizes(const BenchOptions& o) {
+  if (o.multi.active() || o.seedTable || o.stallRepeats > 0 || !o.drag.empty() ||
+      o.tfDragPairs > 0 || o.firstImage || !o.labels.raw.empty() || !o.labels.file.empty() ||
+      !o.overlay.path.empty() || !o.quality.empty())
+    throw inputError(
+        "--memory-budget benches plain frames on one device: leave out --split/--devices, "
+        "--seed-table, --stall, --drag, --tf-drag, --first-image, --quality, labels and "
+        "--overlay");
+  std::optional<Volume> held;
+  auto source = openSlabSource(o.input, held);
+  const std::string name =
+      o.input.input.empty() ? "phantom" : std::filesystem::path(o.input.input).filename().string();
+  OutOfCoreRun run;
+  run.device = o.device;
+  run.storage = o.storage;
+  run.ess = o.ess == "on";
+  run.json = o.json;
+  for (const auto& size : split(o.sizes))
+    for (const auto& grad : split(o.gradients)) {
+      RenderParams p = o.flags.params();
+      findRenderParamSpec("size").parse(p, size);
+      p.gradient = parseGradient(grad);
+      benchOutOfCore(o.outOfCore, *source, name, p, run, o.run, std::cout);
+    }
   return 0;
 }
 
@@ -222,6 +252,7 @@ Run addBenchCommand(CLI::App& app) {
   o->labels.add(*cmd);
   o->overlay.add(*cmd);
   o->multi.add(*cmd);
+  o->outOfCore.add(*cmd);
   return [o, sizesOption, gradientsOption] {
     if (o->stallRepeats > 0 && o->quality.empty())
       throw inputError("--stall needs --quality (the sharp frame's preset, e.g. balanced)");
@@ -231,6 +262,7 @@ Run addBenchCommand(CLI::App& app) {
     o->run.countSamples = !o->noCount;
     o->run.orbit = o->orbit == "elevation" ? Orbit::Elevation : Orbit::Azimuth;
     if (o->multi.active()) return benchSplit(*o);
+    if (o->outOfCore.active()) return benchOutOfCoreSizes(*o);
     if (o->firstImage) {
       RenderParams p = o->flags.params();
       findRenderParamSpec("size").parse(p, split(o->sizes).front());

@@ -9,6 +9,7 @@
 #include "input_options.h"
 #include "labels_option.h"
 #include "multi_device_option.h"
+#include "out_of_core_run.h"
 #include "overlay_option.h"
 #include "render_flags.h"
 #include "render_state_model.h"
@@ -36,7 +37,8 @@ struct RenderOptions {
   CinematicFlags cinematic;
   LabelsOption labels;
   OverlayOption overlay;
-  MultiDeviceOption multi;  // --split, --devices (issue 38)
+  MultiDeviceOption multi;    // --split, --devices (issue 38)
+  OutOfCoreOption outOfCore;  // --memory-budget (issue 38 part 2)
 };
 
 // What this command line renders: the session's state (when --session is given) with what
@@ -213,11 +215,26 @@ Run addRenderCommand(CLI::App& app) {
   o->labels.add(*cmd);
   o->overlay.add(*cmd);
   o->multi.add(*cmd);
+  o->outOfCore.add(*cmd);
   return [o] {
     const Session s = sessionToRender(*o);
     InputOptions input = o->input;
     input.input = s.input.path;
     input.flags = s.input.flags;
+    if (o->outOfCore.active()) {
+      if (o->reference || o->multi.active() || !o->labels.raw.empty() || !o->labels.file.empty() ||
+          !o->overlay.path.empty() || !o->saveSession.empty() || o->repeat > 0)
+        throw inputError(
+            "--memory-budget renders plain frames on one device: leave out --reference, "
+            "--split/--devices, labels, --overlay, --save-session and --repeat");
+      std::optional<Volume> held;  // the loaded volume, when INPUT is not streamed
+      auto source = openSlabSource(input, held);
+      OutOfCoreRun run;
+      run.device = o->device;
+      run.storage = o->storage;
+      return renderOutOfCore(o->outOfCore, *source, frameToRender(*o, s, source->geometry()), run,
+                             o->output);
+    }
     Volume v = input.load();
     const RenderParams p = frameToRender(*o, s, v);
     if (!o->saveSession.empty()) {  // before rendering: a kept file stops the command early

@@ -1,6 +1,7 @@
 #include "empty_space.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "cl_context_impl.h"
 #include "dvr_occupancy.h"
@@ -13,9 +14,14 @@
 namespace voxray {
 
 void EmptySpace::upload(ContextImpl& cl, const Volume& v) {
-  range_ = cl::Buffer();  // it may read cells_ in place (below): gone before they are
-  cells_ = computeMacroCells(v);
+  upload(cl, computeMacroCells(v));
   volume_ = &v;
+}
+
+void EmptySpace::upload(ContextImpl& cl, MacroCells cells) {
+  range_ = cl::Buffer();  // it may read cells_ in place (below): gone before they are
+  cells_ = std::move(cells);
+  volume_ = nullptr;
   valueLo_ = INT16_MAX, valueHi_ = INT16_MIN;
   for (size_t c = 0; c + 1 < cells_.minMax.size(); c += 2) {
     valueLo_ = std::min<int>(valueLo_, cells_.minMax[c]);

@@ -20,6 +20,9 @@ class EmptySpace {
  public:
   // Computes the macro cells of v on the host and uploads them.
   void upload(ContextImpl& cl, const Volume& v);
+  // The same from cells computed elsewhere (an out-of-core volume's, streamed: out_of_core.h).
+  // Without the volume, iso packets' block bits cannot be made: their frames must not ask.
+  void upload(ContextImpl& cl, MacroCells cells);
   // Brings the occupancy up to date for a frame whose parameters k are already enqueued
   // in params and lutBuffer (the queue is in order). mip needs none: it reads the min/max
   // directly. adaptive (dvr): also each cell's step level (kernels/empty_space/classify.cl,

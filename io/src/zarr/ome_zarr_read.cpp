@@ -83,15 +83,18 @@ struct ChunkCount {
   size_t missing = 0, total = 0;
 };
 
-// The array's 3D volume at index 0 of any leading (t, c) axes into DEST, as samples of its own
-// type in native byte order, i fastest. The spatial axes are the last three (z, y, x). Chunks
-// are decoded in parallel; each writes its own box of DEST.
+// Slices [ZFIRST, ZEND) (all when ZEND is 0) of the array's 3D volume at index 0 of any leading
+// (t, c) axes into DEST, as samples of its own type in native byte order, i fastest. The
+// spatial axes are the last three (z, y, x). Only the chunks whose z range meets the slices are
+// read; they are decoded in parallel, each writing its own box of DEST.
 ChunkCount readSpatial(ZarrStore& store, const ArrayMeta& m, const LoadOptions& options,
-                       uint8_t* dest) {
+                       uint8_t* dest, uint64_t zFirst = 0, uint64_t zEnd = 0) {
   const size_t n = m.shape.size(), lead = n - 3, ts = m.typeSize();
   const uint64_t X = m.shape[n - 1], Y = m.shape[n - 2], Z = m.shape[n - 3];
   const uint64_t cx = m.chunks[n - 1], cy = m.chunks[n - 2], cz = m.chunks[n - 3];
-  const uint64_t gx = (X + cx - 1) / cx, gy = (Y + cy - 1) / cy, gz = (Z + cz - 1) / cz;
+  if (zEnd == 0) zEnd = Z;
+  const uint64_t gx = (X + cx - 1) / cx, gy = (Y + cy - 1) / cy;
+  const uint64_t gz0 = zFirst / cz, gz = (zEnd + cz - 1) / cz - gz0;
   const uint64_t chunkBytes = m.chunkSamples() * ts;
   // Any encoding of a chunk (Blosc, zstd, deflate) is below twice its size plus headers.
   const uint64_t maxFile = chunkBytes * 2 + 4096 + (m.crc32cSuffix ? 4 : 0);
@@ -102,19 +105,20 @@ ChunkCount readSpatial(ZarrStore& store, const ArrayMeta& m, const LoadOptions& 
   parallelFor(
       out.total,
       [&](size_t c) {
-        const uint64_t ix = c % gx, iy = (c / gx) % gy, iz = c / (gx * gy);
+        const uint64_t ix = c % gx, iy = (c / gx) % gy, iz = gz0 + c / (gx * gy);
         std::vector<uint64_t> index(lead, 0);
         index.insert(index.end(), {iz, iy, ix});
         const std::string key = m.chunkKey(index);
         const uint64_t x0 = ix * cx, y0 = iy * cy, z0 = iz * cz;
-        const uint64_t nx = std::min(cx, X - x0), ny = std::min(cy, Y - y0),
-                       nz = std::min(cz, Z - z0);
+        const uint64_t nx = std::min(cx, X - x0), ny = std::min(cy, Y - y0);
+        // The chunk's slices within [zFirst, zEnd): from zs (of the chunk) to ze.
+        const uint64_t zs = std::max(z0, zFirst) - z0, ze = std::min(z0 + cz, zEnd) - z0;
         std::vector<uint8_t> data, raw;
         if (!readChunk(store, m, key, data, maxFile)) {
           ++missing;
-          for (uint64_t z = 0; z < nz; ++z)
+          for (uint64_t z = zs; z < ze; ++z)
             for (uint64_t y = 0; y < ny; ++y) {
-              uint8_t* row = dest + (((z0 + z) * Y + y0 + y) * X + x0) * ts;
+              uint8_t* row = dest + (((z0 + z - zFirst) * Y + y0 + y) * X + x0) * ts;
               for (uint64_t x = 0; x < nx; ++x) std::memcpy(row + x * ts, fill.data(), ts);
             }
         } else {
@@ -127,9 +131,9 @@ ChunkCount readSpatial(ZarrStore& store, const ArrayMeta& m, const LoadOptions& 
           zarr::decodeChunk(m.codec, data, raw, ts, where);
           if (m.swap) swapBytes(raw.data(), raw.size() / ts, ts);
           // Leading indices are 0: the 3D box starts the chunk, rows of cx samples.
-          for (uint64_t z = 0; z < nz; ++z)
+          for (uint64_t z = zs; z < ze; ++z)
             for (uint64_t y = 0; y < ny; ++y)
-              std::memcpy(dest + (((z0 + z) * Y + y0 + y) * X + x0) * ts,
+              std::memcpy(dest + (((z0 + z - zFirst) * Y + y0 + y) * X + x0) * ts,
                           raw.data() + ((z * cy + y) * cx) * ts, size_t(nx * ts));
         }
         const size_t k = ++done;
@@ -265,6 +269,65 @@ Volume importOmeZarr(ZarrStore& store, const LoadOptions& options) {
   }
   report(options, 1.0, "Loaded");
   return v;
+}
+
+struct OmeZarrLevel::Impl {
+  ZarrStore& store;
+  zarr::Pyramid pyramid;
+  ArrayMeta meta;
+  Volume geometry;
+  size_t missing = 0;
+  uint64_t read = 0;
+  std::vector<uint8_t> samples;  // an 8-bit range before it widens to int16
+  explicit Impl(ZarrStore& s) : store(s) {}
+};
+
+OmeZarrLevel::OmeZarrLevel(ZarrStore& store, int level) : impl_(std::make_unique<Impl>(store)) {
+  Impl& m = *impl_;
+  m.pyramid = zarr::readPyramid(store);
+  zarr::checkLevelIndex(m.pyramid, level, store.where(""));
+  m.meta = zarr::readArrayMeta(store, m.pyramid.levels[size_t(level)].path, m.pyramid.format);
+  m.geometry = zarr::describeLevel(m.pyramid, level, m.meta, store.where(""));
+  using K = detail::SampleKind;
+  if (m.meta.kind != K::I16 && m.meta.kind != K::U8 && m.meta.kind != K::I8)
+    throw inputError(m.meta.metadataFile + ": the array holds " + m.meta.dataType +
+                     " values; Voxray streams int16 and 8-bit arrays only (their values are the "
+                     "voxels). Convert it once with voxray-cli convert INPUT -o OUTPUT.ome.zarr, "
+                     "or render it without --memory-budget");
+}
+
+OmeZarrLevel::~OmeZarrLevel() = default;
+
+const Volume& OmeZarrLevel::geometry() const { return impl_->geometry; }
+int OmeZarrLevel::levelCount() const { return int(impl_->pyramid.levels.size()); }
+int OmeZarrLevel::chunkSlices() const {
+  const auto& c = impl_->meta.chunks;
+  return int(c[c.size() - 3]);
+}
+size_t OmeZarrLevel::missingChunks() const { return impl_->missing; }
+uint64_t OmeZarrLevel::chunksRead() const { return impl_->read; }
+
+void OmeZarrLevel::readSlices(int first, int end, int16_t* dest) {
+  Impl& m = *impl_;
+  const glm::ivec3 d = m.geometry.dims;
+  if (first < 0 || end > d.z || first >= end)
+    throw inputError("slices " + std::to_string(first) + " to " + std::to_string(end - 1) +
+                     " are not within the " + std::to_string(d.z) + " slices of " +
+                     m.store.where(m.meta.path));
+  const size_t count = size_t(d.x) * size_t(d.y) * size_t(end - first);
+  const bool wide = m.meta.kind == detail::SampleKind::I16;
+  if (!wide) m.samples.resize(count);
+  const ChunkCount c = readSpatial(m.store, m.meta, LoadOptions{},
+                                   wide ? reinterpret_cast<uint8_t*>(dest) : m.samples.data(),
+                                   uint64_t(first), uint64_t(end));
+  m.missing += c.missing;
+  m.read += c.total;
+  if (!wide) {
+    const bool isSigned = m.meta.kind == detail::SampleKind::I8;
+    for (size_t i = 0; i < count; ++i)
+      dest[i] = isSigned ? int16_t(int8_t(m.samples[i])) : int16_t(m.samples[i]);
+    std::vector<uint8_t>().swap(m.samples);  // released: a range's bytes, not held between reads
+  }
 }
 
 }  // namespace voxray

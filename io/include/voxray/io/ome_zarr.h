@@ -49,6 +49,35 @@ std::unique_ptr<ZarrStore> zarrFolderStore(const std::string& path);
 Volume importOmeZarr(const std::string& path, const LoadOptions& options = {});
 Volume importOmeZarr(ZarrStore& store, const LoadOptions& options = {});
 
+// One level of an OME-Zarr pyramid read a range of slices at a time (out-of-core rendering,
+// issue 38 part 2): opening reads the group's and the level's metadata, nothing else; each
+// readSlices reads only the chunks whose z range meets its slices. int16 arrays (HU as they are)
+// and 8-bit ones (their values fit int16 exactly) only: other types need the whole array's
+// values to choose a storage (raw_samples.h), which a range cannot know.
+class OmeZarrLevel {
+ public:
+  // STORE must outlive this. Throws Error (Input) as importOmeZarr does for bad metadata, for a
+  // level out of range, and for a data type other than int16, uint8 or int8 (saying to convert
+  // it with voxray-cli convert, which writes int16 HU).
+  OmeZarrLevel(ZarrStore& store, int level);
+  ~OmeZarrLevel();
+  OmeZarrLevel(const OmeZarrLevel&) = delete;
+  OmeZarrLevel& operator=(const OmeZarrLevel&) = delete;
+  // The level as a Volume without voxels: dims, spacing, origin, direction, unit, modality.
+  const Volume& geometry() const;
+  int levelCount() const;   // levels of the pyramid, full resolution first
+  int chunkSlices() const;  // the chunks' depth along z: reads aligned to it decode no more
+  // Slices [FIRST, END) as stored values, i fastest, into DEST (dims.x * dims.y * (END - FIRST)
+  // values). Missing chunks read as the fill value and are counted. Safe from one thread.
+  void readSlices(int first, int end, int16_t* dest);
+  size_t missingChunks() const;
+  uint64_t chunksRead() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 enum class ZarrCodec { BloscZstd, Zstd, Gzip, None };
 // "blosc-zstd", "zstd", "gzip", "none"; throws Error (Input) for another name.
 ZarrCodec parseZarrCodec(const std::string& name);

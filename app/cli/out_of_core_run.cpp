@@ -1,0 +1,158 @@
+#include "out_of_core_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "voxray/engine/cl_context.h"
+#include "voxray/engine/orbit.h"
+#include "voxray/engine/out_of_core.h"
+#include "voxray/io/error.h"
+#include "voxray/io/image.h"
+#include "voxray/io/statistics.h"
+#ifdef VOXRAY_HAS_ZARR
+#include "voxray/io/ome_zarr.h"
+#endif
+
+namespace voxray::cli {
+
+VolumeStorage parseStorage(const std::string& s);
+
+void OutOfCoreOption::add(CLI::App& cmd) {
+  cmd.add_option("--memory-budget", budgetMib,
+                 "render out of core on one device holding at most MIB of the volume (its "
+                 "parts, coarse level and empty-space cells): the rest is uploaded part by part "
+                 "as each frame needs it; an OME-Zarr INPUT is read on demand, never whole")
+      ->check(CLI::Range(size_t(1), size_t(1) << 30));
+  cmd.add_option("--part-slices", partSlices,
+                 "with --memory-budget: slices each part owns (default: about 8 parts fit)")
+      ->check(CLI::Range(1, 1 << 20));
+}
+
+std::unique_ptr<SlabSource> openSlabSource(const InputOptions& input, std::optional<Volume>& held) {
+#ifdef VOXRAY_HAS_ZARR
+  if (!input.input.empty() && isOmeZarr(input.input)) {
+    if (input.level != 0 || !input.flags.empty())
+      throw inputError(
+          "--memory-budget streams an OME-Zarr's full-resolution level as it is: "
+          "leave out --level and the input flags");
+    return omeZarrSlabSource(input.input);
+  }
+#endif
+  held = input.load();
+  return volumeSlabSource(*held);
+}
+
+namespace {
+
+OutOfCoreOptions optionsOf(const OutOfCoreOption& option, const OutOfCoreRun& run) {
+  OutOfCoreOptions o;
+  o.budgetBytes = option.budgetMib << 20;
+  o.partSlices = option.partSlices;
+  o.emptySpaceSkipping = run.ess;
+  o.storage = parseStorage(run.storage);
+  return o;
+}
+
+double mibOf(size_t bytes) { return double(bytes) / double(1 << 20); }
+
+}  // namespace
+
+int renderOutOfCore(const OutOfCoreOption& option, SlabSource& source, const RenderParams& p,
+                    const OutOfCoreRun& run, const std::string& output) {
+  ClContext ctx(run.device);
+  OutOfCoreRenderer r(ctx, source, optionsOf(option, run));
+  Image img;
+  OutOfCoreStats s;
+  r.render(p, img, &s);
+  writeImage(output, img);
+  std::fprintf(stderr,
+               "rendered %dx%d %s on %s out of core in %.0f ms (first frame includes the kernel "
+               "builds): %d parts, %d held after it, %d uploaded (%.0f MiB; read %.0f ms, copied "
+               "%.0f ms); opening %.0f ms; %s%s\n",
+               p.width, p.height, toString(p.mode), ctx.device().name.c_str(), s.totalMs, s.parts,
+               s.partsResident, s.uploads, mibOf(s.bytesUploaded), s.readMs, s.uploadMs, r.openMs(),
+               s.fullResolution ? "full resolution" : "NOT at full resolution",
+               s.deviceOutOfMemory ? (": " + s.message).c_str() : "");
+  for (const std::string& w : source.geometry().warnings)
+    std::cerr << "voxray-cli: warning: " << w << "\n";
+  std::cerr << "-> " << output << "\n";
+  return 0;
+}
+
+void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std::string& name,
+                    const RenderParams& base, const OutOfCoreRun& run, const BenchRun& bench,
+                    std::ostream& out) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  ClContext ctx(run.device);
+  OutOfCoreRenderer r(ctx, source, optionsOf(option, run));
+  RenderParams p = base;
+  Image img;
+  OutOfCoreStats s;
+  // The first image: the pass over the source, the coarse level, then a preview (its kernels
+  // built here).
+  r.preview(p, img, &s);
+  const double firstMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  r.render(p, img, &s);  // the converged frame's kernels, and the cache filled
+  std::vector<double> preview, converged, uploaded, uploads;
+  int coarseParts = 0;
+  for (int i = 0; i < bench.frames; ++i) {
+    orbitCamera(p.camera, bench.orbit, i, bench.frames);
+    r.preview(p, img, &s);
+    preview.push_back(s.totalMs);
+    coarseParts = s.partsCoarse;
+  }
+  for (int i = 0; i < bench.frames; ++i) {
+    orbitCamera(p.camera, bench.orbit, i, bench.frames);
+    r.render(p, img, &s);
+    converged.push_back(s.totalMs);
+    uploaded.push_back(mibOf(s.bytesUploaded));
+    uploads.push_back(double(s.uploads));
+  }
+  const double previewMs = median(preview), convergedMs = median(converged);
+  const double peak = residentMiB(true);
+  const double volumeMib = mibOf(source.geometry().byteSize());
+  if (run.json) {
+    out << nlohmann::json{{"input", name},
+                          {"size", std::to_string(p.width) + "x" + std::to_string(p.height)},
+                          {"mode", toString(p.mode)},
+                          {"device", ctx.device().name},
+                          {"source", source.describe()},
+                          {"volume_mib", volumeMib},
+                          {"budget_mib", option.budgetMib},
+                          {"parts", r.partCount()},
+                          {"parts_resident", r.residentCount()},
+                          {"preview_coarse_parts", coarseParts},
+                          {"open_ms", r.openMs()},
+                          {"first_image_ms", firstMs},
+                          {"preview_median_ms", previewMs},
+                          {"preview_fps", 1000.0 / previewMs},
+                          {"converged_median_ms", convergedMs},
+                          {"uploads_per_converged_frame", median(uploads)},
+                          {"uploaded_mib_per_converged_frame", median(uploaded)},
+                          {"peak_rss_mib", peak}}
+               .dump()
+        << "\n";
+    return;
+  }
+  char line[512];
+  std::snprintf(line, sizeof(line),
+                "%s %dx%d %s on %s, %s: %.0f MiB volume, budget %zu MiB: %d parts, %d held\n"
+                "  first image %.0f ms (opening %.0f ms: one pass over the source, the coarse "
+                "level)\n"
+                "  preview (orbit, %d parts coarse): median %.1f ms, %.2f fps\n"
+                "  converged: median %.0f ms, %.0f parts / %.0f MiB uploaded per frame\n"
+                "  peak resident memory %.0f MiB; %d frames each over a 360-degree orbit; "
+                "medians\n",
+                name.c_str(), p.width, p.height, toString(p.mode), ctx.device().name.c_str(),
+                source.describe().c_str(), volumeMib, option.budgetMib, r.partCount(),
+                r.residentCount(), firstMs, r.openMs(), coarseParts, previewMs, 1000.0 / previewMs,
+                convergedMs, median(uploads), median(uploaded), peak, bench.frames);
+  out << line;
+}
+
+}  // namespace voxray::cli

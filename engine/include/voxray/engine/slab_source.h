@@ -1,0 +1,53 @@
+#pragma once
+// Where an out-of-core frame's slices come from (out_of_core.h, issue 38 part 2): a volume in
+// memory, or one level of an OME-Zarr pyramid read a range of slices at a time, so that the
+// host never holds the whole volume when it cannot. Each source also gives a coarse level with
+// the full volume's box, shown where the device does not hold the full slices.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+class SlabSource {
+ public:
+  virtual ~SlabSource() = default;
+  // The volume without voxels: dims, spacing, origin, direction, slope, intercept, unit,
+  // modality, window.
+  virtual const Volume& geometry() const = 0;
+  // Slices [FIRST, END) as stored values, i fastest, into DEST (dims.x * dims.y * (END -
+  // FIRST) values). Throws Error (Input) when they cannot be read.
+  virtual void readSlices(int first, int end, int16_t* dest) = 0;
+  // Slices from FIRST where they already lie in host memory for as long as the source lives (a
+  // CPU device then reads them in place), else nullptr.
+  virtual const int16_t* slicesInPlace(int first) const {
+    (void)first;
+    return nullptr;
+  }
+  // The whole volume when it lies in host memory (the empty-space cells are then made from it
+  // in place, without the streamed pass's copies), else nullptr.
+  virtual const Volume* whole() const { return nullptr; }
+  // Slices a read is best aligned to (a Zarr chunk's depth: a read across a chunk decodes it
+  // whole); 0: any.
+  virtual int preferredSlices() const { return 0; }
+  // A coarse level with the full volume's box (coarse_level.h's geometry), made or read once
+  // and held by the source.
+  virtual const Volume& coarse() = 0;
+  // What the source is, for messages and the bench ("in memory", "OME-Zarr level 0").
+  virtual std::string describe() const = 0;
+};
+
+// VOLUME (which must outlive the source), its coarse level the box mean of FACTOR (4 or 8).
+std::unique_ptr<SlabSource> volumeSlabSource(const Volume& volume, int coarseFactor = 4);
+
+#ifdef VOXRAY_HAS_ZARR
+// Level 0 of the OME-Zarr at PATH, read on demand; its coarse level the pyramid's first level
+// whose voxels are at most 1/64 of level 0's (the coarsest when none is), else the box mean
+// of level 0 made while streaming. Opening reads the metadata and that coarse level only.
+// Throws Error (Input) as OmeZarrLevel does.
+std::unique_ptr<SlabSource> omeZarrSlabSource(const std::string& path);
+#endif
+
+}  // namespace voxray

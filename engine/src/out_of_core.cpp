@@ -1,0 +1,589 @@
+#include "voxray/engine/out_of_core.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <numeric>
+
+#include "device_frame.h"
+#include "empty_space.h"
+#include "macro_cells.h"
+#include "streamed_cells.h"
+#include "voxray/engine/cl_context.h"
+#include "voxray/io/error.h"
+#include "voxray/io/parallel.h"
+#include "voxray/io/volume.h"
+
+namespace voxray {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+std::string mib(size_t bytes) {
+  double m = double(bytes) / double(1 << 20);
+  char text[32];
+  std::snprintf(text, sizeof(text), m < 10 ? "%.2f MiB" : "%.0f MiB", m);
+  return text;
+}
+
+// to_rgba8 (kernels/shading/shading.cl), as multi_device_composite.cpp rounds.
+uint8_t toByte(float c) { return uint8_t(std::nearbyint(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
+
+// The device bytes EmptySpace holds for CELLS cells: min/max, occupancy, distances and level,
+// scratch.
+size_t cellBytes(const glm::ivec3& cells) {
+  return size_t(cells.x) * size_t(cells.y) * size_t(cells.z) * 8;
+}
+
+}  // namespace
+
+// computeMacroCells of the source's volume without holding it: slices are read GROUP at a
+// time, and each cell is made once the slices it covers (4c - 1 to 4c + 4) are in. The
+// window of slices starts at a multiple of kCellSize, so computeMacroCells of the window
+// spans each of its cells over the same slices as over the whole volume.
+MacroCells streamMacroCells(SlabSource& src, int group) {
+  const Volume& g = src.geometry();
+  MacroCells m;
+  m.dims = (g.dims + (kCellSize - 1)) / kCellSize;
+  const size_t plane = size_t(m.dims.x) * size_t(m.dims.y);
+  m.minMax.resize(plane * size_t(m.dims.z) * 2);
+  const size_t slice = size_t(g.dims.x) * size_t(g.dims.y);
+  Volume window;
+  window.dims = g.dims;
+  int first = 0, end = 0, next = 0;  // slices [first, end) in the window; cells from next
+  while (next < m.dims.z) {
+    const int readEnd = std::min(g.dims.z, end + group);
+    window.voxels.resize(size_t(readEnd - first) * slice);
+    src.readSlices(end, readEnd, window.voxels.data() + size_t(end - first) * slice);
+    end = readEnd;
+    int ready = m.dims.z;  // cells whose slices are all read
+    if (end < g.dims.z) ready = end >= kCellSize + 1 ? (end - kCellSize - 1) / kCellSize + 1 : 0;
+    if (ready <= next) continue;
+    window.dims.z = end - first;
+    const MacroCells part = computeMacroCells(window);
+    const int offset = first / kCellSize;
+    std::copy(part.minMax.begin() + ptrdiff_t(size_t(next - offset) * plane * 2),
+              part.minMax.begin() + ptrdiff_t(size_t(ready - offset) * plane * 2),
+              m.minMax.begin() + ptrdiff_t(size_t(next) * plane * 2));
+    next = ready;
+    const int keep = std::max(next * kCellSize - kCellSize, 0);
+    std::memmove(window.voxels.data(), window.voxels.data() + size_t(keep - first) * slice,
+                 size_t(end - keep) * slice * sizeof(int16_t));
+    window.voxels.resize(size_t(end - keep) * slice);
+    first = keep;
+  }
+  return m;
+}
+
+struct OutOfCoreRenderer::Impl {
+  struct Part {
+    PartRange range;
+    size_t bytes = 0;
+    bool resident = false;
+    cl::Buffer buffer;
+    cl::Image3D image;
+  };
+  // One kernel launch of a frame: a part at full resolution, or slices [first, end) from the
+  // coarse level.
+  struct Item {
+    int first = 0, end = 0;
+    int part = -1;  // -1: coarse
+    double key = 0.0;
+  };
+
+  ContextImpl& cl;
+  SlabSource& src;
+  OutOfCoreOptions o;
+  const Volume& geom;
+  const Volume& coarse;
+  VolumeStorage storage;
+  DeviceFrame full, coarseFrame;
+  EmptySpace fullSpace, coarseSpace;
+  cl::Buffer coarseBuffer;
+  cl::Image3D coarseImage;
+  std::vector<Part> parts;
+  size_t partBudget = 0, residentBytes = 0, fixedBytes = 0;
+  int uploadsDone = 0;
+  bool evictedPending = false;  // a part left the device since the queue last finished
+  double openMs = 0.0;
+  cl::Buffer colour, order;  // one launch's image on the device
+  cl::Buffer accBuffer;      // the composite so far, on the device (float4 per pixel)
+  size_t capacity = 0;
+  std::vector<float> acc;  // the composite, read back once the frame's parts are in
+  // One part's slices on their way to the device, kept for the next: freeing and allocating
+  // a part's bytes per upload let glibc's raised mmap threshold put them on the heap, whose
+  // fragments the process kept (peak RSS 0.36-0.65x of a streamed Zarr in tests/cli).
+  std::vector<int16_t> staging;
+
+  Impl(ContextImpl& c, SlabSource& s, const OutOfCoreOptions& opts, VolumeStorage st)
+      : cl(c),
+        src(s),
+        o(opts),
+        geom(s.geometry()),
+        coarse(s.coarse()),
+        storage(st),
+        full(c, geom, st),
+        coarseFrame(c, coarse, st) {}
+
+  size_t sliceBytes() const { return size_t(geom.dims.x) * size_t(geom.dims.y) * 2; }
+  void upload(Part& part, OutOfCoreStats& s);
+  void evict(Part& part) {
+    part.buffer = cl::Buffer();
+    part.image = cl::Image3D();
+    part.resident = false;
+    residentBytes -= part.bytes;
+    evictedPending = true;
+  }
+  void keys(std::vector<Item>& items, const RenderParams& p);
+  void launch(const Item& item, const RenderParams& p);
+  void setUp(DeviceFrame& f, EmptySpace& space, const RenderParams& p, RaycastParams& k,
+             std::string& options);
+};
+
+void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
+  const PartRange& r = part.range;
+  const glm::ivec3 n = geom.dims;
+  const int slices = r.storedEnd - r.storedFirst;
+  if (o.faultDeviceParts >= 0 && std::count_if(parts.begin(), parts.end(), [](const Part& q) {
+                                   return q.resident;
+                                 }) >= o.faultDeviceParts)
+    throw deviceError(
+        "clCreateBuffer failed: CL_MEM_OBJECT_ALLOCATION_FAILURE (-4) (the fault "
+        "hook: the device takes " +
+        std::to_string(o.faultDeviceParts) + " parts)");
+  const auto t0 = Clock::now();
+  const int16_t* in = nullptr;
+  const bool image = storage == VolumeStorage::Image3d;
+  // A CPU device reads slices already in host memory where they are (as DeviceVolume does).
+  if (!cl.info.isGpu && !image) in = src.slicesInPlace(r.storedFirst);
+  if (!in) {
+    staging.resize(size_t(slices) * size_t(n.x) * size_t(n.y));
+    src.readSlices(r.storedFirst, r.storedEnd, staging.data());
+    in = staging.data();
+  }
+  const auto t1 = Clock::now();
+  s.readMs += std::chrono::duration<double, std::milli>(t1 - t0).count();
+  // An evicted part's memory is freed once the launches queued on it are done: wait for them
+  // (after the read above, which overlaps them) so that the budget is what the device holds.
+  if (evictedPending) {
+    clCall([&] { return cl.queue.finish(); });
+    evictedPending = false;
+  }
+  const auto t2 = Clock::now();  // the copy alone, not the wait for the queued parts
+  clCall([&] {
+    auto* ptr = const_cast<int16_t*>(in);
+    if (image) {
+      cl::ImageFormat format(CL_R, CL_SNORM_INT16);  // as DeviceVolume: the kernel scales back
+      part.image = cl::Image3D(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, format,
+                               size_t(n.x), size_t(n.y), size_t(slices), 0, 0, ptr);
+    } else {
+      const cl_mem_flags where = in == staging.data() ? CL_MEM_COPY_HOST_PTR : CL_MEM_USE_HOST_PTR;
+      part.buffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | where, part.bytes, ptr);
+    }
+    return 0;
+  });
+  s.uploadMs += msSince(t2);
+  ++uploadsDone;
+  ++s.uploads;
+  s.bytesUploaded += part.bytes;
+  part.resident = true;
+  residentBytes += part.bytes;
+}
+
+void OutOfCoreRenderer::Impl::keys(std::vector<Item>& items, const RenderParams& p) {
+  const ViewGeometry& g = full.setup.view;
+  for (Item& it : items) {
+    // As MultiDeviceRenderer::visibilityKeys: slabs of z, ordered along the view's z.
+    const double lo = it.first == 0 ? -HUGE_VAL : double(it.first);
+    const double hi = it.end == geom.dims.z ? HUGE_VAL : double(it.end);
+    if (p.camera.projection == Projection::Orthographic) {
+      const double dz = g.dirToVoxel(g.forward).z;
+      it.key = dz >= 0.0 ? double(it.first) : -double(it.first);
+    } else {
+      const double ez = g.toVoxel(g.eye).z;
+      it.key = std::max({lo - ez, ez - hi, 0.0});
+    }
+  }
+  std::stable_sort(items.begin(), items.end(),
+                   [](const Item& a, const Item& b) { return a.key < b.key; });
+}
+
+void OutOfCoreRenderer::Impl::setUp(DeviceFrame& f, EmptySpace& space, const RenderParams& p,
+                                    RaycastParams& k, std::string& options) {
+  KernelFacts facts;
+  facts.emptySpaceSkipping = o.emptySpaceSkipping;
+  facts.storageImage = storage == VolumeStorage::Image3d;
+  KernelSwitches sw = kernelSwitches(p, facts);
+  sw.ADAPTIVE = 0;  // segments grouped from a part's start would not be the whole ray's
+  k = f.frameParams(p, sw);
+  const glm::ivec3 cells = space.dims();
+  k.cells = {{cells.x, cells.y, cells.z, 0}};
+  options = "-cl-fast-relaxed-math " + switchOptions(sw, false);
+  clCall([&] {
+    f.uploadFrame(k);
+    if (o.emptySpaceSkipping && p.mode != Mode::Mip)
+      space.classify(cl, f.paramsBuffer, f.lutBuffer, k, p.mode, f.setup.lut, false, false, false);
+    return 0;
+  });
+}
+
+void OutOfCoreRenderer::Impl::launch(const Item& item, const RenderParams& p) {
+  const bool isCoarse = item.part < 0;
+  DeviceFrame& f = isCoarse ? coarseFrame : full;
+  EmptySpace& space = isCoarse ? coarseSpace : fullSpace;
+  const size_t pixels = size_t(p.width) * size_t(p.height);
+  KernelFacts facts;
+  facts.emptySpaceSkipping = o.emptySpaceSkipping;
+  facts.storageImage = storage == VolumeStorage::Image3d;
+  KernelSwitches sw = kernelSwitches(p, facts);
+  sw.ADAPTIVE = 0;
+  const std::string options = "-cl-fast-relaxed-math " + switchOptions(sw, false);
+  cl::Kernel kernel = cl.kernel("multidev/raycast_part.cl", "raycast_part", options);
+  // The planes in the level's own voxel coordinates: the full volume's slice centres z =
+  // first and z = end, through LPS, along the coarse level's k axis.
+  cl_float2 bounds{{float(item.first), float(item.end)}};
+  cl_int2 stored{{0, coarse.dims.z}};
+  if (isCoarse) {
+    const glm::dvec3 k = coarse.direction[2];
+    auto toCoarse = [&](double z) {
+      const glm::dvec3 at = geom.originMm + geom.direction[2] * (z * geom.spacingMm.z);
+      return float(glm::dot(at - coarse.originMm, k) / coarse.spacingMm.z);
+    };
+    bounds = {{toCoarse(item.first), toCoarse(item.end)}};
+  } else {
+    const PartRange& r = parts[size_t(item.part)].range;
+    stored = {{r.storedFirst, r.storedEnd - r.storedFirst}};
+  }
+  clCall([&] {  // the image buffers: draw() made them for the frame's size
+    cl_uint arg = 0;
+    if (storage == VolumeStorage::Image3d)
+      kernel.setArg(arg++, isCoarse ? coarseImage : parts[size_t(item.part)].image);
+    else
+      kernel.setArg(arg++, isCoarse ? coarseBuffer : parts[size_t(item.part)].buffer);
+    kernel.setArg(arg++, stored);
+    kernel.setArg(arg++, f.paramsBuffer);
+    kernel.setArg(arg++, f.lutBuffer);
+    kernel.setArg(arg++, colour);
+    kernel.setArg(arg++, order);
+    kernel.setArg(arg++, space.leap());
+    kernel.setArg(arg++, space.range());
+    kernel.setArg(arg++, bounds);
+    kernel.setArg(arg++, cl_int2{{item.first == 0 ? 1 : 0, item.end == geom.dims.z ? 1 : 0}});
+    cl::NDRange local = cl.info.isGpu ? cl::NDRange(16, 8) : cl::NullRange;
+    size_t gx = size_t(p.width), gy = size_t(p.height);
+    if (local.dimensions() == 2) {
+      gx = (gx + 15) / 16 * 16;
+      gy = (gy + 7) / 8 * 8;
+    }
+    cl.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local);
+    // Into the composite on the device, front to back (the items come in the order the rays
+    // meet them): no part image crosses the bus, and the next part's slices are read and
+    // uploaded while the queue runs (it is in order: the next launch waits for this one).
+    cl::Kernel add = cl.kernel("multidev/accumulate_part.cl", "accumulate_part", "");
+    const cl_int mode = p.mode == Mode::Iso ? 0 : p.mode == Mode::Dvr ? 1 : 2;
+    add.setArg(0, colour);
+    add.setArg(1, accBuffer);
+    add.setArg(2, mode);
+    add.setArg(3, cl_float(p.earlyTermination));
+    add.setArg(4, cl_int(pixels));
+    cl.queue.enqueueNDRangeKernel(add, cl::NullRange, cl::NDRange((pixels + 63) / 64 * 64),
+                                  cl::NullRange);
+    cl.queue.flush();
+    return 0;
+  });
+}
+
+OutOfCoreRenderer::OutOfCoreRenderer(ClContext& context, SlabSource& source,
+                                     const OutOfCoreOptions& options) {
+  const auto start = Clock::now();
+  ContextImpl& cl = context.impl();
+  if (options.apron < 2)
+    throw inputError("the apron must be at least 2 slices (the gradients' stencil)");
+  VolumeStorage s = options.storage;
+  if (s == VolumeStorage::Auto)
+    s = cl.info.isGpu && cl.info.imageSupport ? VolumeStorage::Image3d : VolumeStorage::Buffer;
+  if (s == VolumeStorage::Image3d && !cl.info.imageSupport)
+    throw deviceError(cl.info.name + " has no image support: render with the buffer storage");
+  const Volume& g = source.geometry();
+  if (g.voxelCount() == 0) throw inputError("the volume is empty");
+  source.coarse();  // made (or read) before Impl binds it
+  impl_ = std::make_unique<Impl>(cl, source, options, s);
+  Impl& m = *impl_;
+  const int apron = options.apron;
+  const size_t sliceBytes = m.sliceBytes();
+  const size_t budget = options.budgetBytes ? options.budgetBytes : cl.info.maxAllocBytes;
+  const glm::ivec3 cells = (g.dims + (kCellSize - 1)) / kCellSize;
+  const glm::ivec3 coarseCells = (m.coarse.dims + (kCellSize - 1)) / kCellSize;
+  m.fixedBytes = m.coarse.byteSize() +
+                 (options.emptySpaceSkipping ? cellBytes(cells) + cellBytes(coarseCells) : 0);
+  m.partBudget = budget > m.fixedBytes ? budget - m.fixedBytes : 0;
+  const int minSlices = std::min(g.dims.z, 1 + 2 * apron);
+  const size_t budgetSlices = m.partBudget / sliceBytes;
+  auto tooSmall = [&](size_t slices) {
+    throw inputError("the memory budget of " + mib(budget) + " leaves " + mib(m.partBudget) +
+                     " for the volume's slices after its coarse level and empty-space cells (" +
+                     mib(m.fixedBytes) + "), less than one part of " + std::to_string(slices) +
+                     " slices of " + mib(sliceBytes) + " each needs (" + mib(slices * sliceBytes) +
+                     ": its own slices and an apron of " + std::to_string(apron) +
+                     " on either side): raise --memory-budget to at least " +
+                     std::to_string((m.fixedBytes + slices * sliceBytes + (1 << 20) - 1) >> 20) +
+                     " MiB");
+  };
+  if (budgetSlices < size_t(minSlices)) tooSmall(size_t(minSlices));
+  int owned = options.partSlices;
+  if (owned <= 0) {
+    // About 8 parts in the budget: a frame then uploads close to the volume less the budget
+    // (n - k + 1 of n parts); thinner parts spend more of their bytes on aprons.
+    const int b = int(std::min<size_t>(budgetSlices, size_t(g.dims.z) + 2 * apron));
+    owned = std::max(b / 8 - 2 * apron, std::min(b - 2 * apron, 4 * apron));
+    const int chunk = source.preferredSlices();
+    if (chunk > 0 && owned > chunk) owned = owned / chunk * chunk;  // reads chunk-aligned
+  }
+  owned = std::clamp(owned, 1, g.dims.z);
+  for (int first = 0; first < g.dims.z; first += owned) {
+    Impl::Part p;
+    p.range.first = first;
+    p.range.end = std::min(first + owned, g.dims.z);
+    p.range.storedFirst = std::max(first - apron, 0);
+    p.range.storedEnd = std::min(p.range.end + apron, g.dims.z);
+    p.bytes = size_t(p.range.storedEnd - p.range.storedFirst) * sliceBytes;
+    if (p.bytes > m.partBudget) tooSmall(size_t(p.range.storedEnd - p.range.storedFirst));
+    m.parts.push_back(std::move(p));
+  }
+  // One pass over the source: the empty-space cells and the value range the tables map.
+  const int chunk = source.preferredSlices();
+  MacroCells mc = source.whole() ? computeMacroCells(*source.whole())
+                                 : streamMacroCells(source, chunk > 0 ? (chunk + 3) / 4 * 4 : 64);
+  int lo = INT16_MAX, hi = INT16_MIN;
+  for (size_t c = 0; c + 1 < mc.minMax.size(); c += 2) {
+    lo = std::min<int>(lo, mc.minMax[c]);
+    hi = std::max<int>(hi, mc.minMax[c + 1]);
+  }
+  const ValueRange range{int16_t(lo), int16_t(hi)};
+  m.full.valueRange = range;
+  m.coarseFrame.valueRange = range;  // the coarse level's colours are the full volume's
+  try {
+    clCall([&] {
+      m.full.paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
+      m.coarseFrame.paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
+      auto* ptr = const_cast<int16_t*>(m.coarse.voxels.data());
+      const glm::ivec3 d = m.coarse.dims;
+      if (s == VolumeStorage::Image3d)
+        m.coarseImage = cl::Image3D(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                    cl::ImageFormat(CL_R, CL_SNORM_INT16), size_t(d.x), size_t(d.y),
+                                    size_t(d.z), 0, 0, ptr);
+      else
+        m.coarseBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                    m.coarse.byteSize(), ptr);
+      return 0;
+    });
+    if (options.emptySpaceSkipping) {
+      m.fullSpace.upload(cl, std::move(mc));
+      m.coarseSpace.upload(cl, m.coarse);
+    }
+  } catch (const Error& e) {
+    throw deviceError(cl.info.name + ": the coarse level (" + mib(m.coarse.byteSize()) +
+                      ") and empty-space cells could not be put on the device: " + e.what());
+  }
+  m.openMs = msSince(start);
+}
+
+OutOfCoreRenderer::~OutOfCoreRenderer() = default;
+
+int OutOfCoreRenderer::partCount() const { return int(impl_->parts.size()); }
+int OutOfCoreRenderer::residentCount() const {
+  return int(std::count_if(impl_->parts.begin(), impl_->parts.end(),
+                           [](const Impl::Part& p) { return p.resident; }));
+}
+std::vector<int> OutOfCoreRenderer::residentParts() const {
+  std::vector<int> out;
+  for (size_t i = 0; i < impl_->parts.size(); ++i)
+    if (impl_->parts[i].resident) out.push_back(int(i));
+  return out;
+}
+std::vector<PartRange> OutOfCoreRenderer::ranges() const {
+  std::vector<PartRange> out;
+  for (const auto& p : impl_->parts) out.push_back(p.range);
+  return out;
+}
+size_t OutOfCoreRenderer::budgetBytes() const { return impl_->partBudget; }
+size_t OutOfCoreRenderer::partBytesLargest() const {
+  size_t b = 0;
+  for (const auto& p : impl_->parts) b = std::max(b, p.bytes);
+  return b;
+}
+double OutOfCoreRenderer::openMs() const { return impl_->openMs; }
+
+void OutOfCoreRenderer::render(const RenderParams& p, Image& out, OutOfCoreStats* stats) {
+  draw(p, out, stats, true);
+}
+
+void OutOfCoreRenderer::preview(const RenderParams& p, Image& out, OutOfCoreStats* stats) {
+  draw(p, out, stats, false);
+}
+
+void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* stats,
+                             bool converge) {
+  const auto start = Clock::now();
+  if (p.lighting != Lighting::Phong)
+    throw inputError(std::string("an out-of-core frame is lit by phong only, not ") +
+                     toString(p.lighting) + ": render it without --memory-budget");
+  if (p.width <= 0 || p.height <= 0) throw inputError("the image size must be positive");
+  Impl& m = *impl_;
+  OutOfCoreStats s;
+  s.parts = int(m.parts.size());
+  RaycastParams k{};
+  std::string options;
+  m.full.updateSetup(p);
+  // A sample a part takes may lie a step beyond its plane and its stencil 2 slices further:
+  // beyond the apron it would read the clamped edge (as multi_device.h refuses).
+  const double stepSlices = m.full.setup.stepMm / m.geom.spacingMm.z;
+  if (stepSlices > double(m.o.apron - 2) + 1e-6) {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+                  "the step (%.3g mm, %.3g slices) is longer than the %d slices an out-of-core "
+                  "frame allows with its apron of %d",
+                  m.full.setup.stepMm, stepSlices, m.o.apron - 2, m.o.apron);
+    throw inputError(std::string(text) + ": render with a finer --step");
+  }
+  m.setUp(m.full, m.fullSpace, p, k, options);
+  // The items: in a converged frame every part; in a preview the resident parts and the runs
+  // of parts between them from the coarse level (one launch per run).
+  std::vector<Impl::Item> items;
+  for (size_t i = 0; i < m.parts.size(); ++i) {
+    const PartRange& r = m.parts[i].range;
+    if (converge || m.parts[i].resident) {
+      items.push_back({r.first, r.end, int(i), 0.0});
+    } else if (!items.empty() && items.back().part < 0) {
+      items.back().end = r.end;
+    } else {
+      items.push_back({r.first, r.end, -1, 0.0});
+    }
+  }
+  m.keys(items, p);
+  const size_t pixels = size_t(p.width) * size_t(p.height);
+  clCall([&] {
+    if (pixels > m.capacity) {
+      m.colour = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
+      m.order = cl::Buffer(m.cl.context, CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float));
+      m.accBuffer = cl::Buffer(m.cl.context, CL_MEM_READ_WRITE, pixels * sizeof(cl_float4));
+      m.capacity = pixels;
+    }
+    m.cl.queue.enqueueFillBuffer(m.accBuffer, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}}, 0,
+                                 pixels * sizeof(cl_float4));
+    return 0;
+  });
+  bool coarseReady = false;
+  auto drawCoarse = [&](const Impl::Item& it) {
+    if (!coarseReady) {
+      RaycastParams ck{};
+      std::string co;
+      m.coarseFrame.updateSetup(p);
+      m.setUp(m.coarseFrame, m.coarseSpace, p, ck, co);
+      coarseReady = true;
+    }
+    Impl::Item c = it;
+    c.part = -1;
+    m.launch(c, p);
+    s.fullResolution = false;
+    s.partsCoarse += int(std::count_if(m.parts.begin(), m.parts.end(), [&](const Impl::Part& q) {
+      return q.range.first >= it.first && q.range.end <= it.end;
+    }));
+  };
+  // Each part's position in this frame's order: what Belady's rule evicts by.
+  std::vector<int> position(m.parts.size(), 0);
+  for (size_t j = 0; j < items.size(); ++j)
+    if (items[j].part >= 0) position[size_t(items[j].part)] = int(j);
+  for (size_t j = 0; j < items.size(); ++j) {
+    const Impl::Item& it = items[j];
+    if (it.part < 0) {
+      drawCoarse(it);
+      continue;
+    }
+    Impl::Part& part = m.parts[size_t(it.part)];
+    if (!part.resident) {
+      bool fits = !s.deviceOutOfMemory && part.bytes <= m.partBudget;
+      while (fits && m.residentBytes + part.bytes > m.partBudget) {
+        // Evict the part needed again latest: one still to come in this frame by its
+        // position, one already drawn in the next frame's (the same order).
+        int victim = -1, latest = -1;
+        for (size_t q = 0; q < m.parts.size(); ++q) {
+          if (!m.parts[q].resident || int(q) == it.part) continue;
+          const int next = position[q] > int(j) ? position[q] : int(items.size()) + position[q];
+          if (next > latest) latest = next, victim = int(q);
+        }
+        if (victim < 0) break;
+        m.evict(m.parts[size_t(victim)]);
+      }
+      if (fits) {
+        try {
+          m.upload(part, s);
+        } catch (const Error& e) {
+          if (e.kind() != Error::Kind::Device) throw;
+          // The device is fuller than the budget said: hold what it holds now, and draw the
+          // parts it cannot take from the coarse level.
+          s.deviceOutOfMemory = true;
+          m.partBudget = m.residentBytes;
+          s.message = "the device could not take part " + std::to_string(it.part + 1) + " of " +
+                      std::to_string(m.parts.size()) + " (" + mib(part.bytes) + ") beside the " +
+                      mib(m.residentBytes) + " it holds (" + e.what() +
+                      "); the parts it cannot hold are drawn from the coarse level: lower "
+                      "--memory-budget, or free the device";
+        }
+      }
+      if (!part.resident) {
+        if (s.message.empty())
+          s.message = "the device holds " + mib(m.partBudget) +
+                      " of parts since an allocation "
+                      "failed, less than part " +
+                      std::to_string(it.part + 1) + " (" + mib(part.bytes) +
+                      "): it is drawn from the coarse level; free the device "
+                      "and open the volume again for full resolution";
+        drawCoarse(it);
+        continue;
+      }
+    }
+    m.launch(it, p);
+    ++s.partsFull;
+  }
+  m.acc.resize(pixels * 4);
+  clCall([&] {
+    m.cl.queue.enqueueReadBuffer(m.accBuffer, CL_TRUE, 0, pixels * sizeof(cl_float4), m.acc.data());
+    return 0;
+  });
+  // The composite into bytes, the background behind.
+  out.width = p.width;
+  out.height = p.height;
+  out.rgba.resize(pixels * 4);
+  const glm::vec3 bg(p.background);
+  parallelFor(size_t((p.height + 31) / 32), [&](size_t band) {
+    const size_t y0 = band * 32, y1 = std::min(size_t(p.height), y0 + 32);
+    for (size_t px = y0 * size_t(p.width); px < y1 * size_t(p.width); ++px) {
+      const float* a = &m.acc[px * 4];
+      glm::vec3 rgb = bg;
+      if (p.mode == Mode::Dvr)
+        rgb = glm::vec3(a[0], a[1], a[2]) + (1.0f - a[3]) * bg;
+      else if (p.mode == Mode::Iso) {
+        if (a[3] > 0.0f) rgb = glm::vec3(a[0], a[1], a[2]);
+      } else if (a[3] > 0.0f && a[0] >= 0.0f) {
+        rgb = glm::vec3(a[0]);
+      }
+      uint8_t* o = &out.rgba[px * 4];
+      o[0] = toByte(rgb.x);
+      o[1] = toByte(rgb.y);
+      o[2] = toByte(rgb.z);
+      o[3] = 255;
+    }
+  });
+  s.partsResident = residentCount();
+  s.totalMs = msSince(start);
+  if (stats) *stats = s;
+}
+
+}  // namespace voxray

@@ -1,0 +1,148 @@
+#include "voxray/engine/slab_source.h"
+
+#include <algorithm>
+#include <cstring>
+#include <optional>
+#include <vector>
+
+#include "voxray/engine/coarse_level.h"
+#include "voxray/io/error.h"
+#ifdef VOXRAY_HAS_ZARR
+#include "voxray/io/ome_zarr.h"
+#endif
+
+namespace voxray {
+
+namespace {
+
+// V's geometry and value mapping without its voxels (nor a copy of them on the way).
+Volume withoutVoxels(const Volume& v) {
+  Volume g;
+  g.dims = v.dims;
+  g.spacingMm = v.spacingMm;
+  g.originMm = v.originMm;
+  g.direction = v.direction;
+  g.slope = v.slope;
+  g.intercept = v.intercept;
+  g.unit = v.unit;
+  g.modality = v.modality;
+  g.window = v.window;
+  g.suv = v.suv;
+  g.timePoint = v.timePoint;
+  g.timePoints = v.timePoints;
+  g.sourceType = v.sourceType;
+  return g;
+}
+
+class VolumeSource : public SlabSource {
+ public:
+  VolumeSource(const Volume& v, int factor) : v_(v), factor_(factor), geometry_(withoutVoxels(v)) {
+    if (v.voxelCount() == 0 || v.voxels.size() != v.voxelCount())
+      throw inputError("the volume is empty or its voxel count does not match its dimensions");
+  }
+  const Volume& geometry() const override { return geometry_; }
+  void readSlices(int first, int end, int16_t* dest) override {
+    const size_t slice = size_t(v_.dims.x) * size_t(v_.dims.y);
+    std::memcpy(dest, v_.voxels.data() + size_t(first) * slice,
+                size_t(end - first) * slice * sizeof(int16_t));
+  }
+  const int16_t* slicesInPlace(int first) const override {
+    return v_.voxels.data() + size_t(first) * size_t(v_.dims.x) * size_t(v_.dims.y);
+  }
+  const Volume* whole() const override { return &v_; }
+  const Volume& coarse() override {
+    if (!coarse_) coarse_ = coarseLevel(v_, factor_);
+    return *coarse_;
+  }
+  std::string describe() const override { return "in memory"; }
+
+ private:
+  const Volume& v_;
+  int factor_;
+  Volume geometry_;
+  std::optional<Volume> coarse_;
+};
+
+#ifdef VOXRAY_HAS_ZARR
+class ZarrSource : public SlabSource {
+ public:
+  explicit ZarrSource(const std::string& path)
+      : store_(zarrFolderStore(path)), level0_(*store_, 0), path_(path) {}
+  const Volume& geometry() const override { return level0_.geometry(); }
+  void readSlices(int first, int end, int16_t* dest) override {
+    level0_.readSlices(first, end, dest);
+  }
+  int preferredSlices() const override { return level0_.chunkSlices(); }
+  const Volume& coarse() override {
+    if (coarse_) return *coarse_;
+    const Volume& g = level0_.geometry();
+    // The first level with at most 1/64 of the voxels (a 4x mean along each axis), else the
+    // coarsest: opening then reads that level alone.
+    int pick = level0_.levelCount() - 1;
+    for (int l = 1; l < level0_.levelCount(); ++l) {
+      OmeZarrLevel level(*store_, l);
+      if (level.geometry().voxelCount() * 64 <= g.voxelCount()) {
+        pick = l;
+        break;
+      }
+    }
+    if (pick > 0) {
+      OmeZarrLevel level(*store_, pick);
+      Volume c = level.geometry();
+      c.voxels.resize(c.voxelCount());
+      level.readSlices(0, c.dims.z, c.voxels.data());
+      coarse_ = std::move(c);
+    } else {
+      coarse_ = streamedMean(4);  // one level: its 4x mean, FACTOR slices at a time
+    }
+    coarse_->slope = g.slope;
+    coarse_->intercept = g.intercept;
+    return *coarse_;
+  }
+  std::string describe() const override { return "OME-Zarr " + path_ + " level 0, streamed"; }
+
+ private:
+  // coarseLevel of level 0 without holding it: each coarse slice from its FACTOR slices.
+  Volume streamedMean(int factor) {
+    const Volume& g = level0_.geometry();
+    Volume slab = g;
+    Volume c;
+    std::vector<int16_t> slices;
+    for (int z0 = 0; z0 < g.dims.z; z0 += factor) {
+      const int z1 = std::min(g.dims.z, z0 + factor);
+      slab.dims.z = z1 - z0;
+      slab.voxels.resize(slab.voxelCount());
+      level0_.readSlices(z0, z1, slab.voxels.data());
+      Volume one = coarseLevel(slab, factor);  // x, y as the whole's; one slice
+      if (c.voxels.empty()) {
+        c = withoutVoxels(g);
+        c.dims = (g.dims + factor - 1) / factor;
+        c.spacingMm = glm::dvec3(g.dims) * g.spacingMm / glm::dvec3(c.dims);
+        c.originMm = g.originMm + g.direction * ((c.spacingMm - g.spacingMm) * 0.5);
+        c.voxels.resize(c.voxelCount());
+      }
+      std::copy(one.voxels.begin(), one.voxels.end(),
+                c.voxels.begin() + ptrdiff_t(size_t(z0 / factor) * one.voxels.size()));
+    }
+    return c;
+  }
+  std::unique_ptr<ZarrStore> store_;
+  OmeZarrLevel level0_;
+  std::string path_;
+  std::optional<Volume> coarse_;
+};
+#endif
+
+}  // namespace
+
+std::unique_ptr<SlabSource> volumeSlabSource(const Volume& volume, int coarseFactor) {
+  return std::make_unique<VolumeSource>(volume, coarseFactor);
+}
+
+#ifdef VOXRAY_HAS_ZARR
+std::unique_ptr<SlabSource> omeZarrSlabSource(const std::string& path) {
+  return std::make_unique<ZarrSource>(path);
+}
+#endif
+
+}  // namespace voxray
