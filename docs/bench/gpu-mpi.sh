@@ -4,7 +4,8 @@
 # (empty-space skipping off) at 4K, dvr and mip, IceT on float and on 8-bit colour, on the
 # 512x512x400 CT and the 2048x2048x1024 CT (8 GiB, make_ct_big.py; each rank reads its slab
 # alone). Before: build voxray-mpi in build-gpu, run gpu-mpi-pack.sh, carry as gpu-round6.sh
-# says. Run from the root: docs/bench/gpu-mpi.sh [small|big|both]
+# says. Run from the root: docs/bench/gpu-mpi.sh [small|big|both|bytes]
+# (bytes: the 8 GiB CT, dvr, IceT on bytes only)
 set -x
 . docs/bench/gpu-env.sh
 . docs/bench/gpu-mpi-env.sh
@@ -22,6 +23,21 @@ ranks() {  # INPUT...: 1 rank then 2 ranks, IceT on float and on bytes, twice
   done
 }
 BIG="/tmp/ctbig.raw --raw-dims 2048,2048,1024 --raw-type i16 --raw-spacing 0.1196,0.1196,0.1582"
+if [[ ${1:-} == bytes ]]; then
+  [[ -e /tmp/ctbig.raw ]] || {
+    make_ct512
+    python3 docs/bench/make_ct_big.py /tmp/ct512.raw /tmp/ctbig.raw 4 1024
+  }
+  for run in 1 2 3; do
+    for n in 1 2; do
+      echo "## run $run, $n rank(s), --icet-colour bytes"
+      # shellcheck disable=SC2086
+      $M -n $n "$R/voxray-mpi" $BIG --mode dvr --preset CT-Bone $heavy --icet-colour bytes 2>&1 |
+        grep -E '^rendered|rank [0-9]:|rror'
+    done
+  done
+  exit 0
+fi
 case ${1:-both} in
   small | both)
     make_ct512
