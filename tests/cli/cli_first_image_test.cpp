@@ -2,8 +2,6 @@
 // memory (getrusage of the child) on a 256 MiB volume against the same command on a tiny one,
 // for raw and NRRD input, and the coarse preview's image before the full one.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -14,59 +12,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "child_cli.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct ChildRun {
-  int status = -1;
-  long maxRssKiB = 0;
-  std::string out;
-};
+using voxray::test::ChildRun;
+using voxray::test::runCli;
 
-// ARGS run as voxray-cli's arguments; stdout captured, the child's peak RSS from wait4.
-ChildRun runCli(const std::vector<std::string>& args) {
-  int pipeFd[2];
-  if (::pipe(pipeFd) != 0) return {};
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::dup2(pipeFd[1], 1);
-    ::close(pipeFd[0]);
-    ::close(pipeFd[1]);
-    std::vector<char*> argv{const_cast<char*>(VOXRAY_CLI)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(VOXRAY_CLI, argv.data());
-    ::_exit(127);
-  }
-  ::close(pipeFd[1]);
-  ChildRun r;
-  char buf[4096];
-  for (ssize_t n; (n = ::read(pipeFd[0], buf, sizeof buf)) > 0;) r.out.append(buf, size_t(n));
-  ::close(pipeFd[0]);
-  struct rusage use {};
-  ::wait4(pid, &r.status, 0, &use);
-  r.maxRssKiB = use.ru_maxrss;  // KiB on Linux
-  return r;
-}
-
-// A little-endian int16 volume X x Y x Z: a CT-like ball (air, skin, a bone shell, brain).
 void writeBall(const fs::path& path, int nx, int ny, int nz) {
-  std::ofstream f(path, std::ios::binary);
-  std::vector<int16_t> slice(size_t(nx) * size_t(ny));
-  for (int z = 0; z < nz; ++z) {
-    for (int y = 0; y < ny; ++y)
-      for (int x = 0; x < nx; ++x) {
-        const double dx = (x - nx / 2.0) / (0.45 * nx), dy = (y - ny / 2.0) / (0.42 * ny),
-                     dz = (z - nz / 2.0) / (0.47 * nz);
-        const double r = dx * dx + dy * dy + dz * dz;
-        slice[size_t(y) * size_t(nx) + size_t(x)] = int16_t(r < 0.77   ? 1064
-                                                            : r < 0.86 ? 2024
-                                                            : r < 1.0  ? 1024
-                                                                       : 24);
-      }
-    f.write(reinterpret_cast<const char*>(slice.data()), std::streamsize(slice.size() * 2));
-  }
+  voxray::test::writeBall(path, nx, ny, nz, 1024);
 }
 
 void writeNhdr(const fs::path& path, const fs::path& raw, int nx, int ny, int nz) {

@@ -18,6 +18,7 @@
 #include <memory>
 
 #include "frame_bands.h"
+#include "multi_device_fixture.h"
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
@@ -27,20 +28,8 @@ namespace voxray {
 
 namespace {
 
-// 40x36x30, anisotropic; the ball (z 4.5 to 24.5) crosses every part's boundary obliquely.
-const Volume& ball() {
-  static Volume v = test::ball({40, 36, 30}, 10.0, 1000.0, -1000.0, {1.0, 1.1, 1.3});
-  return v;
-}
-
-std::vector<ClContext*> contextsOf(int n) {
-  static std::map<int, std::vector<std::unique_ptr<ClContext>>> made;
-  auto& c = made[n];
-  if (c.empty()) c = splitDevice(test::testDeviceSelector(), n);
-  std::vector<ClContext*> out;
-  for (auto& p : c) out.push_back(p.get());
-  return out;
-}
+const Volume& ball() { return test::partsBall(); }
+std::vector<ClContext*> contextsOf(int n) { return test::partContexts(n); }
 
 RenderParams frame(Mode mode, double elevationDeg, bool inside) {
   RenderParams p;

@@ -19,6 +19,7 @@
 #include <tuple>
 
 #include "accuracy_cthead.h"
+#include "multi_device_fixture.h"
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
@@ -30,22 +31,8 @@ namespace voxray {
 
 namespace {
 
-// 40x36x30, anisotropic: 2, 3 and 4 parts own 15, 10 and 7-8 slices; the ball (z 4.5 to 24.5)
-// and its bump cross every boundary obliquely.
-const Volume& ballVolume() {
-  static Volume v = test::ball({40, 36, 30}, 10.0, 1000.0, -1000.0, {1.0, 1.1, 1.3});
-  return v;
-}
-
-// The contexts of N parts, made once per N (each builds its kernels once).
-std::vector<ClContext*> contexts(int n) {
-  static std::map<int, std::vector<std::unique_ptr<ClContext>>> made;
-  auto& c = made[n];
-  if (c.empty()) c = splitDevice(test::testDeviceSelector(), n);
-  std::vector<ClContext*> out;
-  for (auto& p : c) out.push_back(p.get());
-  return out;
-}
+const Volume& ballVolume() { return test::partsBall(); }
+std::vector<ClContext*> contexts(int n) { return test::partContexts(n); }
 
 enum class View { AlongPlusZ, AlongMinusZ, Oblique, Inside };
 const char* name(View v) {
