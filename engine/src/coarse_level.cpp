@@ -11,24 +11,32 @@
 
 namespace voxray {
 
+Volume withoutVoxels(const Volume& v) {
+  Volume g;
+  g.dims = v.dims;
+  g.spacingMm = v.spacingMm;
+  g.originMm = v.originMm;
+  g.direction = v.direction;
+  g.slope = v.slope;
+  g.intercept = v.intercept;
+  g.unit = v.unit;
+  g.modality = v.modality;
+  g.window = v.window;
+  g.suv = v.suv;
+  g.timePoint = v.timePoint;
+  g.timePoints = v.timePoints;
+  g.sourceType = v.sourceType;
+  return g;
+}
+
 Volume coarseLevel(const Volume& v, int factor) {
   if (factor < 1)
     throw inputError("a coarse level's factor must be 1 or more, not " + std::to_string(factor));
   if (v.voxelCount() == 0 || v.voxels.size() != v.voxelCount())
     throw inputError("the volume is empty or its voxel count does not match its dimensions");
-  Volume c;
-  c.slope = v.slope;
-  c.intercept = v.intercept;
-  c.unit = v.unit;
-  c.modality = v.modality;
-  c.window = v.window;
+  Volume c = withoutVoxels(v);
   c.study = v.study;
   c.study.sliceSopInstanceUids.clear();  // its slices are not the files'
-  c.suv = v.suv;
-  c.timePoint = v.timePoint;
-  c.timePoints = v.timePoints;
-  c.sourceType = v.sourceType;
-  c.direction = v.direction;
   const glm::ivec3 n = v.dims;
   c.dims = (n + factor - 1) / factor;
   c.spacingMm = glm::dvec3(n) * v.spacingMm / glm::dvec3(c.dims);

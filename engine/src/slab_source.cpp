@@ -15,25 +15,6 @@ namespace voxray {
 
 namespace {
 
-// V's geometry and value mapping without its voxels (nor a copy of them on the way).
-Volume withoutVoxels(const Volume& v) {
-  Volume g;
-  g.dims = v.dims;
-  g.spacingMm = v.spacingMm;
-  g.originMm = v.originMm;
-  g.direction = v.direction;
-  g.slope = v.slope;
-  g.intercept = v.intercept;
-  g.unit = v.unit;
-  g.modality = v.modality;
-  g.window = v.window;
-  g.suv = v.suv;
-  g.timePoint = v.timePoint;
-  g.timePoints = v.timePoints;
-  g.sourceType = v.sourceType;
-  return g;
-}
-
 class VolumeSource : public SlabSource {
  public:
   VolumeSource(const Volume& v, int factor) : v_(v), factor_(factor), geometry_(withoutVoxels(v)) {

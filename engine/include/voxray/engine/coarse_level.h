@@ -10,6 +10,11 @@
 
 namespace voxray {
 
+// VOLUME's geometry and value mapping without its voxels (nor a copy of them on the way): dims,
+// spacing, origin, direction, slope, intercept, unit, modality, window, SUV, time point and
+// count, source type. Not the study identity or warnings.
+Volume withoutVoxels(const Volume& volume);
+
 // Dims ceil(n / FACTOR) per axis; spacing n * spacing / coarse dims, so that the coarse box
 // is exactly the full volume's box (same corners in LPS) even where n is not a multiple of
 // FACTOR (a partial cell at the far end averages the voxels it has). Everything but the
