@@ -10,9 +10,9 @@ set -x
 . docs/bench/gpu-env.sh
 . docs/bench/gpu-mpi-env.sh
 heavy="--size 3840x2160 --azimuth 30 --elevation 20 --frames 6 --ess off"
-ranks() {  # INPUT...: 1 rank then 2 ranks, IceT on float and on bytes, twice
-  for run in 1 2; do
-    for colour in float bytes; do
+ranks() {  # INPUT...: 1 rank then 2 ranks, IceT on each of COLOURS, RUNS times
+  for run in ${RUNS:-1 2}; do
+    for colour in ${COLOURS:-float bytes}; do
       for n in 1 2; do
         echo "## run $run, $n rank(s), --icet-colour $colour: $*"
         # shellcheck disable=SC2086
@@ -23,21 +23,12 @@ ranks() {  # INPUT...: 1 rank then 2 ranks, IceT on float and on bytes, twice
   done
 }
 BIG="/tmp/ctbig.raw --raw-dims 2048,2048,1024 --raw-type i16 --raw-spacing 0.1196,0.1196,0.1582"
-if [[ ${1:-} == bytes ]]; then
+make_big() {
   [[ -e /tmp/ctbig.raw ]] || {
     make_ct512
     python3 docs/bench/make_ct_big.py /tmp/ct512.raw /tmp/ctbig.raw 4 1024
   }
-  for run in 1 2 3; do
-    for n in 1 2; do
-      echo "## run $run, $n rank(s), --icet-colour bytes"
-      # shellcheck disable=SC2086
-      $M -n $n "$R/voxray-mpi" $BIG --mode dvr --preset CT-Bone $heavy --icet-colour bytes 2>&1 |
-        grep -E '^rendered|rank [0-9]:|rror'
-    done
-  done
-  exit 0
-fi
+}
 case ${1:-both} in
   small | both)
     make_ct512
@@ -47,13 +38,15 @@ case ${1:-both} in
     ranks $V --mode mip
     ;;&
   big | both)
-    [[ -e /tmp/ctbig.raw ]] || {
-      make_ct512
-      python3 docs/bench/make_ct_big.py /tmp/ct512.raw /tmp/ctbig.raw 4 1024
-    }
+    make_big
     # shellcheck disable=SC2086
     ranks $BIG --mode dvr --preset CT-Bone
     # shellcheck disable=SC2086
     ranks $BIG --mode mip
+    ;;
+  bytes)
+    make_big
+    # shellcheck disable=SC2086
+    COLOURS=bytes RUNS="1 2 3" ranks $BIG --mode dvr --preset CT-Bone
     ;;
 esac
