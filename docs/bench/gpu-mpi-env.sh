@@ -1,4 +1,5 @@
-# Sourced after gpu-env.sh by the GPU bench scripts that run voxray-mpi (gpu-round9.sh mpi):
+# shellcheck shell=bash
+# Sourced after gpu-env.sh by gpu-mpi.sh, the GPU bench script that runs voxray-mpi:
 # Debian's Open MPI packed by gpu-mpi-pack.sh into build-gpu/mpi, relocated there, every
 # program through the carried loader. Sets M, the mpirun command line up to the program.
 R=$PWD/build-gpu/mpi
@@ -14,4 +15,5 @@ cat >"$R/voxray-mpi" <<WRAP
 exec $LOADER $PWD/build-gpu/bin/voxray-mpi "\$@"
 WRAP
 chmod +x "$R/voxray-mpi"
+# shellcheck disable=SC2034  # used by the script that sources this
 M="$LOADER $R/bin/orterun --oversubscribe"
