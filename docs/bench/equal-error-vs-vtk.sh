@@ -27,6 +27,10 @@
 #   PYTHON     a Python with vtk, scikit-image, matplotlib (default the repository's .venv,
 #              made by scripts/bootstrap)
 #   RAW400     the ct400 raw (ct400-raw.py) when already made; else made in OUT_DIR/data
+#   SCORE      on (default); off: render and time only, no reference and no scores (the GPU
+#              machine: VTK and numpy there, no scikit-image, scipy or matplotlib); again: score
+#              the images an earlier SCORE=off run left in OUT_DIR, with its times (results.tsv),
+#              and write the table and the plot (the same scenes, modes, steps and camera)
 #   DATA       the shared data folder (default ../shared/data from the repository)
 # VTK renders offscreen through EGL (VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow).
 set -euo pipefail
@@ -38,8 +42,16 @@ py=${PYTHON:-$root/.venv/bin/python}
 data=${DATA:-$root/../shared/data}
 mkdir -p "$out/data"
 case "$(cd "$out" && pwd)" in */shared/data*) echo "refusing to write into the shared data" >&2; exit 1 ;; esac
-if [ ! -x "$py" ] || ! "$py" -c 'import vtk, skimage, matplotlib' 2>/dev/null; then
-  echo "$py lacks vtk, scikit-image or matplotlib: run scripts/bootstrap" >&2
+case ${SCORE:-on} in
+  on) score=() ;;
+  off) score=(--no-score) ;;
+  again) score=(--rescore) ;;
+  *) echo "SCORE: on, off or again, not '$SCORE'" >&2; exit 1 ;;
+esac
+needs="import vtkmodules, numpy"
+[ "${SCORE:-on}" = off ] || needs="$needs, skimage, scipy, matplotlib"
+if [ ! -x "$py" ] || ! "$py" -c "$needs" 2>/dev/null; then
+  echo "$py cannot $needs: run scripts/bootstrap (or set PYTHON)" >&2
   exit 1
 fi
 [ -x "$cli" ] || { echo "$cli not found: build voxray-cli (or set CLI)" >&2; exit 1; }
@@ -95,4 +107,4 @@ VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow "$py" "$here/equal_error.py" --out 
   --preint-steps "${PREINT_STEPS:-}" --adaptive-image "${ADAPTIVE_IMAGE:-}" \
   --adaptive-steps "${ADAPTIVE_STEPS:-}" --size "${SIZE:-512x384}" --rounds "${ROUNDS:-3}" --frames "${FRAMES:-3}" \
   --device "${DEVICE:-cpu}" --azimuth "${AZIMUTH:-30}" --elevation "${ELEVATION:-15}" \
-  --zoom "${ZOOM:-1.3}" --fov "${FOV:-30}"
+  --zoom "${ZOOM:-1.3}" --fov "${FOV:-30}" "${score[@]}"

@@ -34,9 +34,18 @@ import sys
 import time
 
 import numpy as np
-import vtk
-from skimage.metrics import peak_signal_noise_ratio, structural_similarity
-from vtk.util import numpy_support
+# VTK's own modules only (not "import vtk", which loads all ~360 of its libraries): the GPU
+# rows run on a machine where this script's VTK is a trimmed copy carried there.
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL render window and mappers)
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import VTK_SHORT, VTK_UNSIGNED_CHAR
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
+                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty,
+                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingVolume import vtkFixedPointVolumeRayCastMapper
+from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
 
 FINE = 1.0 / 16  # the converged images' step, voxels (the issue's 1/16)
 # VTK's transfer function (../shared/peers/vtk_volume_bench.py, iso 400).
@@ -94,28 +103,28 @@ class VtkRenderer:
         arr = np.fromfile(scene.raw, dtype="<i2")
         if arr.size != nx * ny * nz:
             sys.exit(f"{scene.raw}: {arr.size} voxels, expected {nx}x{ny}x{nz}")
-        img = vtk.vtkImageData()
+        img = vtkImageData()
         img.SetDimensions(nx, ny, nz)
         img.SetSpacing(*scene.spacing)
         img.SetOrigin(*[-(n - 1) * 0.5 * s for n, s in zip(scene.dims, scene.spacing)])
         img.GetPointData().SetScalars(
-            numpy_support.numpy_to_vtk(arr, deep=True, array_type=vtk.VTK_SHORT))
+            numpy_support.numpy_to_vtk(arr, deep=True, array_type=VTK_SHORT))
         self._keep = arr
         if mapper == "gpu":
-            m = vtk.vtkGPUVolumeRayCastMapper()
+            m = vtkOpenGLGPUVolumeRayCastMapper()
             m.SetAutoAdjustSampleDistances(0)
             m.SetLockSampleDistanceToInputSpacing(0)
             m.SetUseJittering(0)
         else:
-            m = vtk.vtkFixedPointVolumeRayCastMapper()
+            m = vtkFixedPointVolumeRayCastMapper()
             m.SetNumberOfThreads(os.cpu_count() or 1)
             m.SetImageSampleDistance(1.0)
             m.SetAutoAdjustSampleDistances(0)
         m.SetInputData(img)
-        prop = vtk.vtkVolumeProperty()
+        prop = vtkVolumeProperty()
         prop.SetInterpolationTypeToLinear()
         prop.SetScalarOpacityUnitDistance(1.0)
-        ctf, otf = vtk.vtkColorTransferFunction(), vtk.vtkPiecewiseFunction()
+        ctf, otf = vtkColorTransferFunction(), vtkPiecewiseFunction()
         if mode == "dvr":
             for hu, r, g, b in COLOUR:
                 ctf.AddRGBPoint(hu, r, g, b)
@@ -136,23 +145,23 @@ class VtkRenderer:
             m.SetBlendModeToMaximumIntensity()
         prop.SetColor(ctf)
         prop.SetScalarOpacity(otf)
-        vol = vtk.vtkVolume()
+        vol = vtkVolume()
         vol.SetMapper(m)
         vol.SetProperty(prop)
-        ren = vtk.vtkRenderer()
+        ren = vtkRenderer()
         ren.AddVolume(vol)
         ren.SetBackground(0, 0, 0)
         # VTK's automatic headlight has a black ambient colour, which zeroes the property's
         # ambient term; this one is white, so that ambient 0.2 means in VTK what it means in
         # Voxray (and in the .vp file) and the two shade alike.
-        light = vtk.vtkLight()
+        light = vtkLight()
         light.SetLightTypeToHeadlight()
         light.SetAmbientColor(1, 1, 1)
         light.SetDiffuseColor(1, 1, 1)
         light.SetSpecularColor(1, 1, 1)
         light.SetIntensity(1.0)
         ren.AddLight(light)
-        rw = vtk.vtkRenderWindow()
+        rw = vtkRenderWindow()
         rw.SetOffScreenRendering(1)
         rw.AddRenderer(ren)
         rw.SetSize(width, height)
@@ -181,7 +190,7 @@ class VtkRenderer:
     def image(self, step_mm):
         self.m.SetSampleDistance(step_mm)
         self.rw.Render()
-        w2i = vtk.vtkWindowToImageFilter()
+        w2i = vtkWindowToImageFilter()
         w2i.SetInput(self.rw)
         w2i.SetInputBufferTypeToRGB()
         w2i.ReadFrontBufferOff()
@@ -222,13 +231,38 @@ def voxray_frames(a, base, n, png):
 
 
 def read_rgb(path):
-    from skimage.io import imread
-    return imread(path)[:, :, :3]
+    """PNG through VTK's reader (libpng): the same pixels skimage read, with no skimage needed
+    where the images are made (--no-score)."""
+    r = vtkPNGReader()
+    r.SetFileName(path)
+    r.Update()
+    out = r.GetOutput()
+    w, h, _ = out.GetDimensions()
+    if w * h == 0:
+        sys.exit(f"{path}: not a readable PNG")
+    px = numpy_support.vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, -1)
+    return px[::-1, :, :3].copy()  # VTK's rows run bottom to top
+
+
+def save_png(path, rgb):
+    h, w, _ = rgb.shape
+    img = vtkImageData()
+    img.SetDimensions(w, h, 1)
+    flat = np.ascontiguousarray(rgb[::-1, :, :3]).reshape(-1, 3)
+    img.GetPointData().SetScalars(
+        numpy_support.numpy_to_vtk(flat, deep=True, array_type=VTK_UNSIGNED_CHAR))
+    wr = vtkPNGWriter()
+    wr.SetFileName(path)
+    wr.SetInputData(img)
+    wr.Write()
 
 
 def score(img, ref):
+    if ref is None:
+        return math.nan, math.nan  # --no-score: the images and times only
     if np.array_equal(img, ref):
         return 99.0, 1.0  # identical: PSNR capped as Voxray's accuracy sweep caps it
+    from skimage.metrics import peak_signal_noise_ratio, structural_similarity
     psnr = peak_signal_noise_ratio(ref, img, data_range=255)
     # Wang et al. 2004: Gaussian window sigma 1.5, population covariances, per channel.
     ssim = structural_similarity(ref, img, data_range=255, channel_axis=2, gaussian_weights=True,
@@ -242,7 +276,6 @@ def silhouette(a_img, b_img, out_png):
     counts as covered above 20 of 255 levels: below that lie the faint fringes where the two
     reconstructions' last few percent of opacity differ, which say nothing about the camera."""
     from scipy import ndimage
-    from skimage.io import imsave
     ma, mb = a_img.max(axis=2) > 20, b_img.max(axis=2) > 20
     edge = lambda m: m & ~ndimage.binary_erosion(m)
     ea, eb = edge(ma), edge(mb)
@@ -253,7 +286,7 @@ def silhouette(a_img, b_img, out_png):
     over[ma & mb] = (255, 255, 255)
     over[ma & ~mb] = (255, 0, 0)
     over[mb & ~ma] = (0, 255, 0)
-    imsave(out_png, over, check_contrast=False)
+    save_png(out_png, over)
     return int((ma ^ mb).sum()), float(np.mean(d)), float(np.max(d))
 
 
@@ -282,6 +315,11 @@ def main():
     ap.add_argument("--fov", type=float, default=30.0)
     ap.add_argument("--replot", action="store_true",
                     help="only draw pareto.png again from the results.tsv in --out")
+    # The GPU rows: the machine with the GPU has VTK but not scikit-image or scipy, and its
+    # CPU time is scarce. --no-score there renders and times only (no reference, no scores);
+    # --rescore here scores those images with the times of that run's results.tsv.
+    ap.add_argument("--no-score", action="store_true")
+    ap.add_argument("--rescore", action="store_true")
     a = ap.parse_args()
     if a.replot:
         replot(a)
@@ -294,6 +332,7 @@ def main():
     adaptive_steps = [float(s) for s in (a.adaptive_steps or a.steps).split(",") if s]
     vp = os.path.join(a.out, "vtk-tf.vp")
     write_vp(vp)
+    timed = read_times(a.out) if a.rescore else {}
     rows, notes = [], []
     log = lambda s: print(s, file=sys.stderr, flush=True)
     for scene_text in a.scene:
@@ -301,92 +340,138 @@ def main():
         cam = Camera(scene, a, width, height)
         for mode in a.modes.split(","):
             tag = f"{scene.name}-{mode}"
-            mapper = "gpu" if a.device == "gpu" else "fixed"
-            vr = VtkRenderer(scene, mode, width, height, cam, mapper)
-            gl = next((l for l in vr.gl.splitlines() if "renderer string" in l), "")
-            if a.device == "gpu" and (not gl or "llvmpipe" in gl or "softpipe" in gl):
-                notes.append(f"{tag}: no GPU OpenGL context ({gl.strip() or 'none'}): VTK's GPU "
-                             "mapper skipped, VTK rows are its CPU ray caster")
-                vr = VtkRenderer(scene, mode, width, height, cam, "fixed")
-                mapper = "fixed"
-            vtk_name = "VTK " + ("GPU" if mapper == "gpu" else "fixed-point")
-            base = lambda s: voxray_args(a, scene, mode, cam, vp, a.size, s * scene.voxel_mm)
-            pre = lambda s: base(s) + ["--preintegrate", "on"]
+            c = Case(a, scene, mode, cam, vp, tag)
             psteps = preint_steps if mode == "dvr" else []
-            ai_args = lambda s, t: base(s) + ["--adaptive-image", t]
-            ai_png = lambda s, t: os.path.join(a.out, f"{tag}-adaptive{t.replace(',', '_')}-{s:g}.png")
-            # Converged images (1/16 voxel) and the common reference.
-            log(f"{tag}: converged images and the double-precision reference")
-            vtk_fine = vr.image(FINE * scene.voxel_mm)
-            vox_fine_png = os.path.join(a.out, f"{tag}-voxray-fine.png")
-            run(base(FINE) + ["--device", a.device, "-o", vox_fine_png])
-            vox_fine = read_rgb(vox_fine_png)
-            ref_png = os.path.join(a.out, f"{tag}-reference.png")
-            # Minutes on a CPU: kept between runs into the same folder, beside the command that
-            # made it, and made again when this run's command differs.
-            ref_cmd = " ".join(base(FINE) + ["--reference", "-o", ref_png])
-            made = open(ref_png + ".cmd").read() if os.path.exists(ref_png + ".cmd") else ""
-            if not os.path.exists(ref_png) or made != ref_cmd:
-                run(base(FINE) + ["--reference", "-o", ref_png])
-                with open(ref_png + ".cmd", "w") as f:
-                    f.write(ref_cmd)
-            ref = read_rgb(ref_png)
-            from skimage.io import imsave
-            imsave(os.path.join(a.out, f"{tag}-vtk-fine.png"), vtk_fine, check_contrast=False)
-            mis, mean_d, max_d = silhouette(vtk_fine, vox_fine,
-                                            os.path.join(a.out, f"{tag}-silhouettes.png"))
-            notes.append(f"{tag}: silhouettes of the converged images: {mis} pixels covered by one "
-                         f"renderer only of {width * height}; outline distance mean {mean_d:.2f} "
-                         f"px, max {max_d:.2f} px")
-            # Timed frames, VTK and Voxray taking turns each round.
-            times = {(r, s): [] for r in ("vtk", "voxray") for s in steps}
-            times.update({("preint", s): [] for s in psteps})
-            times.update({(t, s): [] for t in adaptive for s in adaptive_steps})
-            for rnd in range(a.rounds):
-                for s in steps:
-                    times[("vtk", s)] += vr.frames(s * scene.voxel_mm, a.frames)
-                    png = os.path.join(a.out, f"{tag}-voxray-{s:g}.png")
-                    times[("voxray", s)] += voxray_frames(a, base(s), a.frames, png)
-                for s in psteps:
-                    png = os.path.join(a.out, f"{tag}-preint-{s:g}.png")
-                    times[("preint", s)] += voxray_frames(a, pre(s), a.frames, png)
-                for t in adaptive:
-                    for s in adaptive_steps:
-                        times[(t, s)] += voxray_frames(a, ai_args(s, t), a.frames, ai_png(s, t))
-                log(f"{tag}: round {rnd + 1} of {a.rounds}")
+            if a.rescore:
+                vtk_name = next((k[2] for k in timed if k[:2] == (scene.name, mode) and
+                                 k[2].startswith("VTK")), None)
+                if vtk_name is None:
+                    sys.exit(f"{a.out}/results.tsv has no VTK rows for {tag}")
+                times = {(r, s): [timed[(scene.name, mode, n, s)]]
+                         for r, n, ss in (("vtk", vtk_name, steps), ("voxray", "Voxray", steps),
+                                          ("preint", "Voxray preint", psteps))
+                         for s in ss}
+                times.update({(t, s): [timed[(scene.name, mode, f"Voxray adaptive {t}", s)]]
+                              for t in adaptive for s in adaptive_steps})
+            else:
+                vtk_name, times = c.render_and_time(steps, psteps, adaptive, adaptive_steps, log)
+            rows += c.score_rows(vtk_name, times, steps, psteps, adaptive, adaptive_steps, notes,
+                                 log)
+    write_results(a, rows, notes)
+
+
+def read_times(out):
+    """(scene, mode, renderer, step) -> the median ms of an earlier run's results.tsv."""
+    import csv
+    with open(os.path.join(out, "results.tsv")) as f:
+        return {(r["scene"], r["mode"], r["renderer"], float(r["step_voxels"])):
+                float(r["ms_median"]) for r in csv.DictReader(f, delimiter="\t")}
+
+
+class Case:
+    """One scene and mode: its images (named by tag, step and technique), made and timed, or
+    read back and scored."""
+
+    def __init__(self, a, scene, mode, cam, vp, tag):
+        self.a, self.scene, self.mode, self.cam, self.tag = a, scene, mode, cam, tag
+        self.base = lambda s: voxray_args(a, scene, mode, cam, vp, a.size, s * scene.voxel_mm)
+
+    def png(self, what, step=None):
+        tail = "" if step is None else f"-{step:g}"
+        return os.path.join(self.a.out, f"{self.tag}-{what}{tail}.png")
+
+    def adaptive_png(self, t, s):
+        return self.png(f"adaptive{t.replace(',', '_')}", s)
+
+    def ai_args(self, s, t):
+        return self.base(s) + ["--adaptive-image", t]
+
+    def pre(self, s):
+        return self.base(s) + ["--preintegrate", "on"]
+
+    def render_and_time(self, steps, psteps, adaptive, adaptive_steps, log):
+        a, tag = self.a, self.tag
+        width, height = (int(v) for v in a.size.lower().split("x"))
+        mapper = "gpu" if a.device == "gpu" else "fixed"
+        vr = VtkRenderer(self.scene, self.mode, width, height, self.cam, mapper)
+        gl = next((l for l in vr.gl.splitlines() if "renderer string" in l), "")
+        log(f"{tag}: VTK's {gl.strip() or 'OpenGL renderer unknown'}")
+        if a.device == "gpu" and (not gl or "llvmpipe" in gl or "softpipe" in gl):
+            log(f"{tag}: no GPU OpenGL context: VTK's GPU mapper skipped, VTK rows are its CPU "
+                "ray caster")
+            vr = VtkRenderer(self.scene, self.mode, width, height, self.cam, "fixed")
+            mapper = "fixed"
+        vtk_name = "VTK " + ("GPU" if mapper == "gpu" else "fixed-point")
+        log(f"{tag}: converged images")
+        save_png(self.png("vtk-fine"), vr.image(FINE * self.scene.voxel_mm))
+        run(self.base(FINE) + ["--device", a.device, "-o", self.png("voxray-fine")])
+        # Timed frames, VTK and Voxray taking turns each round.
+        times = {(r, s): [] for r in ("vtk", "voxray") for s in steps}
+        times.update({("preint", s): [] for s in psteps})
+        times.update({(t, s): [] for t in adaptive for s in adaptive_steps})
+        for rnd in range(a.rounds):
             for s in steps:
-                vimg = vr.image(s * scene.voxel_mm)
-                imsave(os.path.join(a.out, f"{tag}-vtk-{s:g}.png"), vimg, check_contrast=False)
-                ximg = read_rgb(os.path.join(a.out, f"{tag}-voxray-{s:g}.png"))
-                for name, img, own in ((vtk_name, vimg, vtk_fine), ("Voxray", ximg, vox_fine)):
-                    key = "vtk" if name != "Voxray" else "voxray"
-                    po, so = score(img, own)
-                    pr, sr = score(img, ref)
-                    rows.append(dict(scene=scene.name, mode=mode, renderer=name, step=s,
-                                     ms=float(np.median(times[(key, s)])), psnr_own=po,
-                                     ssim_own=so, psnr_ref=pr, ssim_ref=sr))
+                times[("vtk", s)] += vr.frames(s * self.scene.voxel_mm, a.frames)
+                times[("voxray", s)] += voxray_frames(a, self.base(s), a.frames,
+                                                      self.png("voxray", s))
             for s in psteps:
-                pimg = read_rgb(os.path.join(a.out, f"{tag}-preint-{s:g}.png"))
-                po, so = score(pimg, vox_fine)
-                pr, sr = score(pimg, ref)
-                rows.append(dict(scene=scene.name, mode=mode, renderer="Voxray preint", step=s,
-                                 ms=float(np.median(times[("preint", s)])), psnr_own=po,
-                                 ssim_own=so, psnr_ref=pr, ssim_ref=sr))
+                times[("preint", s)] += voxray_frames(a, self.pre(s), a.frames,
+                                                      self.png("preint", s))
             for t in adaptive:
                 for s in adaptive_steps:
-                    aimg = read_rgb(ai_png(s, t))
-                    po, so = score(aimg, vox_fine)
-                    pr, sr = score(aimg, ref)
-                    rows.append(dict(scene=scene.name, mode=mode, renderer=f"Voxray adaptive {t}",
-                                     step=s, ms=float(np.median(times[(t, s)])), psnr_own=po,
-                                     ssim_own=so, psnr_ref=pr, ssim_ref=sr))
+                    times[(t, s)] += voxray_frames(a, self.ai_args(s, t), a.frames,
+                                                   self.adaptive_png(t, s))
+            log(f"{tag}: round {rnd + 1} of {a.rounds}")
+        for s in steps:
+            save_png(self.png("vtk", s), vr.image(s * self.scene.voxel_mm))
+        del vr
+        return vtk_name, times
+
+    def reference(self):
+        ref_png = self.png("reference")
+        # Minutes on a CPU: kept between runs into the same folder, beside the command that
+        # made it, and made again when this run's command differs.
+        ref_cmd = " ".join(self.base(FINE) + ["--reference", "-o", ref_png])
+        made = open(ref_png + ".cmd").read() if os.path.exists(ref_png + ".cmd") else ""
+        if not os.path.exists(ref_png) or made != ref_cmd:
+            run(self.base(FINE) + ["--reference", "-o", ref_png])
+            with open(ref_png + ".cmd", "w") as f:
+                f.write(ref_cmd)
+        return read_rgb(ref_png)
+
+    def score_rows(self, vtk_name, times, steps, psteps, adaptive, adaptive_steps, notes, log):
+        a, tag, scene, mode = self.a, self.tag, self.scene, self.mode
+        width, height = (int(v) for v in a.size.lower().split("x"))
+        vtk_fine, vox_fine = read_rgb(self.png("vtk-fine")), read_rgb(self.png("voxray-fine"))
+        ref, own = None, {}
+        if not a.no_score:
+            log(f"{tag}: the double-precision reference")
+            ref = self.reference()
+            own = {"vtk": vtk_fine, "voxray": vox_fine}
+            mis, mean_d, max_d = silhouette(vtk_fine, vox_fine, self.png("silhouettes"))
+            notes.append(f"{tag}: silhouettes of the converged images: {mis} pixels covered by "
+                         f"one renderer only of {width * height}; outline distance mean "
+                         f"{mean_d:.2f} px, max {max_d:.2f} px")
+        images = [(vtk_name, "vtk", s, self.png("vtk", s)) for s in steps]
+        images += [("Voxray", "voxray", s, self.png("voxray", s)) for s in steps]
+        images += [("Voxray preint", "preint", s, self.png("preint", s)) for s in psteps]
+        images += [(f"Voxray adaptive {t}", t, s, self.adaptive_png(t, s))
+                   for t in adaptive for s in adaptive_steps]
+        rows = []
+        for name, key, s, path in images:
+            img = read_rgb(path)
+            po, so = score(img, own.get("vtk" if key == "vtk" else "voxray"))
+            pr, sr = score(img, ref)
+            rows.append(dict(scene=scene.name, mode=mode, renderer=name, step=s,
+                             ms=float(np.median(times[(key, s)])), psnr_own=po, ssim_own=so,
+                             psnr_ref=pr, ssim_ref=sr))
+        if ref is not None:
             # The converged images against the reference: each renderer's own error floor.
             for name, img in ((vtk_name, vtk_fine), ("Voxray", vox_fine)):
                 pr, sr = score(img, ref)
                 notes.append(f"{tag}: {name} at 1/16 voxel against Voxray's reference: "
                              f"PSNR {pr:.2f} dB, SSIM {sr:.4f}")
-            del vr
-    write_results(a, rows, notes)
+        return rows
 
 
 def cheapest(rows, key, target):
@@ -446,6 +531,10 @@ def write_results(a, rows, notes):
                      f"{r['ms']:.1f} | {r['psnr_own']:.2f} | {r['ssim_own']:.4f} | "
                      f"{r['psnr_ref']:.2f} | {r['ssim_ref']:.4f} |")
     lines.append("")
+    if a.no_score:  # the times and images only: --rescore makes the table and the plot
+        with open(os.path.join(a.out, "table.md"), "w") as f:
+            f.write("\n".join(lines) + "\n")
+        return
     cases = sorted({(r["scene"], r["mode"]) for r in rows})
     for sc, mode in cases:
         case_rows = [r for r in rows if r["scene"] == sc and r["mode"] == mode]

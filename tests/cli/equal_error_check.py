@@ -11,7 +11,11 @@ one frame, and checks what it wrote, so that the benchmark cannot rot unnoticed:
   2 px apart (mean at most 1 px) at 160x120, where a camera off by one degree of orbit or
   5 % of view angle moves the phantom's outline by 2-3 px; the remaining pixel comes from the
   two reconstructions' edges (VTK's fixed-point scalars, Voxray's float);
-- table.md carries the ratio lines and pareto.png is a PNG.
+- table.md carries the ratio lines and pareto.png is a PNG;
+- the GPU machine's split (SCORE=off there: images and times only; SCORE=again here: scored)
+  gives the same rows: a second run with SCORE=off writes NaN scores and no plot, and
+  SCORE=again on its folder gives every row the PSNR and SSIM of the one-step run above
+  (both renderers are deterministic on the CPU: equal images, so equal scores to the digit).
 
 usage: equal_error_check.py SCRIPT CLI PYTHON DATA WORK
 """
@@ -78,6 +82,34 @@ for mode in ("dvr", "mip"):
 with open(os.path.join(work, "pareto.png"), "rb") as f:
     if f.read(8) != b"\x89PNG\r\n\x1a\n":
         failures.append("pareto.png is not a PNG")
+
+split = work.rstrip("/") + "-split"
+for score in ("off", "again"):
+    r = subprocess.run(["bash", script, split], env=dict(env, SCORE=score), capture_output=True,
+                       text=True)
+    if r.returncode != 0:
+        sys.exit(f"SCORE={score} failed ({r.returncode}):\n{r.stdout}\n{r.stderr}")
+    with open(os.path.join(split, "results.tsv")) as f:
+        split_rows = list(csv.DictReader(f, delimiter="\t"))
+    if score == "off":
+        bad = [r for r in split_rows if not math.isnan(float(r["psnr_own_db"]))]
+        if len(split_rows) != 8 or bad:
+            failures.append(f"SCORE=off: {len(split_rows)} rows, {len(bad)} with scores")
+        if os.path.exists(os.path.join(split, "pareto.png")):
+            failures.append("SCORE=off drew a plot")
+split_by = {(r["mode"], r["renderer"], float(r["step_voxels"])): r for r in split_rows}
+for key, r in by.items():
+    s = split_by.get(key)
+    if s is None:
+        failures.append(f"SCORE=again: no row {key}")
+        continue
+    for col in ("psnr_own_db", "ssim_own", "psnr_ref_db", "ssim_ref"):
+        if s[col] != r[col]:
+            failures.append(f"SCORE=again {key} {col}: {s[col]}, one-step run {r[col]}")
+    if not float(s["ms_median"]) > 0.0:
+        failures.append(f"SCORE=again {key}: time {s['ms_median']}")
+if not os.path.exists(os.path.join(split, "pareto.png")):
+    failures.append("SCORE=again drew no plot")
 
 if failures:
     sys.exit("\n".join(failures))
