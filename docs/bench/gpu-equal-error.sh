@@ -8,7 +8,9 @@
 # Carried (build/carry/, made here): eqpack.tar.xz (build-gpu's voxray-cli and its libraries,
 # and eq/cthead_lps_hu.raw), vtk.aa + vtk.ab (a split xz tar of the vtkmodules the script's
 # imports load, from PyPI's vtk wheel for the device's Python, stripped), pelvis150.raw.xz (the
-# 150 HU slices that make-ct400.sh mirrors into the 400-slice CT). Two calls, the machine warm
+# 150 HU slices that make-ct400.sh mirrors into the 400-slice CT), glvnd.tar.xz (Debian's
+# libglvnd: the machine has NVIDIA's EGL vendor library but not the libEGL.so.1 that loads
+# it). Two calls, the machine warm
 # between them: `unpack` (first carry), then `run` (second carry).
 #
 # usage: docs/bench/gpu-equal-error.sh unpack|run      OUT: where the images and times go
@@ -23,6 +25,7 @@ case ${1:?unpack or run} in
     echo "unpacked: $(ls $g)" ;;
   run)
     cat $g/vtk.aa build/carry/vtk.ab | tar xJf - -C $g
+    tar xJf build/carry/glvnd.tar.xz -C $g
     # ct400 as make-ct400.sh makes it: slice s of 400 is slice s mod 150 of the pelvis, the
     # order reversed in every other block of 150.
     xz -dc build/carry/pelvis150.raw.xz > /tmp/pelvis150.raw
@@ -53,7 +56,7 @@ SH
     out=${OUT:-/tmp}/ee-gpu
     mkdir -p "$out/data"
     cp $g/eq/cthead_lps_hu.raw "$out/data/"
-    PYTHONPATH=$root/$g VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow DEVICE=gpu SCORE=off \
+    LD_LIBRARY_PATH=$root/$g/glvnd PYTHONPATH=$root/$g VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow DEVICE=gpu SCORE=off \
       CLI=/tmp/voxray-cli PYTHON=$(command -v python3) RAW400=/tmp/ct400_hu_le.raw \
       SCENES=${SCENES:-ct400,cthead} MODES=${MODES:-dvr,mip} ROUNDS=${ROUNDS:-3} \
       FRAMES=${FRAMES:-3} ADAPTIVE_IMAGE=${ADAPTIVE_IMAGE:-} \
