@@ -215,7 +215,19 @@ void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
   ringNext = (ringNext + 1) % ring.size();
   if (slot.copied()) clCall([&] { return slot.copied.wait(); });
   const auto t0 = Clock::now();
-  src.readSlices(r.storedFirst, r.storedEnd, slot.ptr);
+  if (const int16_t* in = src.slicesInPlace(r.storedFirst)) {
+    // Slices in host memory: copied on every core (one core's memcpy, 5-10 GB/s, would be
+    // slower than the bus the pinned copy runs at).
+    const size_t bytes = part.bytes, pieces = 64, piece = (bytes / pieces + 4095) / 4096 * 4096;
+    auto* to = reinterpret_cast<char*>(slot.ptr);
+    const auto* from = reinterpret_cast<const char*>(in);
+    parallelFor(pieces, [&](size_t k) {
+      const size_t at = std::min(k * piece, bytes), end = std::min(at + piece, bytes);
+      std::memcpy(to + at, from + at, end - at);
+    });
+  } else {
+    src.readSlices(r.storedFirst, r.storedEnd, slot.ptr);
+  }
   s.readMs += msSince(t0);
   // The evicted parts' memory is free once their last launches are done: wait for those alone
   // (the part drawn just before, in a frame that evicts in order) so that the budget is what
