@@ -16,9 +16,11 @@
 # UPLOADS: the upload paths the out-of-core case runs, in turn (--ooc-upload; default "pinned
 # direct": the pinned staging ring with copies beside the kernels, then the blocking copies
 # from pageable memory it replaced); each prints read, upload, kernel and overlapped ms per
-# converged frame. On the device machine (lean build in build-gpu, TIME_BIN where the image
-# has no /usr/bin/time):
-#   TIME_BIN=build-gpu/bin/time docs/bench/out-of-core.sh 2048,2048,768 2048 1920x1080
+# converged frame. On the device machine (issue 38's upload-bound frame, gpu-h200-out-of-core.txt):
+# build build-gpu lean here as gpu-bench.sh's header says (voxray-cli is all it needs), carry
+# build-gpu (its bin/, lib/ and the GNU time binary gpu-round8.sh names) and run from the
+# repository root, 8 frames as that log (about 3 minutes: two out-of-core runs and in core):
+#   TIME_BIN=build-gpu/bin/time FRAMES=8 docs/bench/out-of-core.sh 2048,2048,768 2048 1920x1080
 set -u
 DIMS=${1:-2048,2048,768}
 BUDGET=${2:-2048}

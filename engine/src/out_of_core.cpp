@@ -134,7 +134,12 @@ struct OutOfCoreRenderer::Impl {
   size_t ringNext = 0;
   cl::CommandQueue transfer;       // in order, profiling on; the copies alone
   std::vector<cl::Event> freeing;  // the last launches on the parts evicted since the last copy
-  std::vector<cl::Event> kernelEvents, copyEvents;  // this frame's, for its stats
+  // This frame's launches and copies not yet counted, and what those counted took. An event
+  // holds its command and so the buffers it used (PoCL frees an evicted part's memory only
+  // with its last launch's event): they are counted and dropped as they finish.
+  std::vector<cl::Event> kernelEvents, copyEvents;
+  double kernelMs = 0.0, copyMs = 0.0;
+  void harvest();
 
   Impl(ContextImpl& c, SlabSource& s, const OutOfCoreOptions& opts, VolumeStorage st)
       : cl(c),
@@ -207,6 +212,31 @@ bool OutOfCoreRenderer::Impl::makeRing() {
   return true;
 }
 
+void OutOfCoreRenderer::Impl::harvest() {
+  auto take = [](std::vector<cl::Event>& events, double& ms) {
+    std::vector<cl::Event> running;
+    for (const cl::Event& e : events) {
+      try {
+        if (e.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() != CL_COMPLETE) {
+          running.push_back(e);
+          continue;
+        }
+        ms += double(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                     e.getProfilingInfo<CL_PROFILING_COMMAND_START>()) *
+              1e-6;  // nanoseconds
+      } catch (const cl::Error&) {
+        // no profiling on this queue: the frame's stats lack this time
+      }
+    }
+    events = std::move(running);
+  };
+  take(kernelEvents, kernelMs);
+  take(copyEvents, copyMs);
+  for (Slot& slot : ring)
+    if (slot.copied() && slot.copied.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() == CL_COMPLETE)
+      slot.copied = cl::Event();
+}
+
 void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
   const PartRange& r = part.range;
   const glm::ivec3 n = geom.dims;
@@ -235,6 +265,10 @@ void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
   if (!freeing.empty()) {
     clCall([&] { return cl::WaitForEvents(freeing); });
     freeing.clear();
+    clCall([&] {
+      harvest();
+      return 0;
+    });
   }
   evictedPending = false;
   cl::Event copied;
@@ -301,7 +335,11 @@ void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
   // An evicted part's memory is freed once the launches queued on it are done: wait for them
   // (after the read above, which overlaps them) so that the budget is what the device holds.
   if (evictedPending) {
-    clCall([&] { return cl.queue.finish(); });
+    clCall([&] {
+      cl.queue.finish();
+      harvest();
+      return 0;
+    });
     evictedPending = false;
     freeing.clear();
   }
@@ -641,6 +679,7 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
   };
   m.kernelEvents.clear();
   m.copyEvents.clear();
+  m.kernelMs = m.copyMs = 0.0;
   const auto partsStart = Clock::now();
   // Each part's position in this frame's order: what Belady's rule evicts by.
   std::vector<int> position(m.parts.size(), 0);
@@ -701,20 +740,12 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
   m.acc.resize(pixels * 4);
   clCall([&] { return m.cl.queue.finish(); });
   s.partsMs = msSince(partsStart);
-  // The profiled times (nanoseconds; every event here is done).
-  auto profiled = [](const std::vector<cl::Event>& events) {
-    double ms = 0.0;
-    for (const cl::Event& e : events)
-      ms += double(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                   e.getProfilingInfo<CL_PROFILING_COMMAND_START>()) *
-            1e-6;
-    return ms;
-  };
-  clCall([&] {
-    s.kernelMs = profiled(m.kernelEvents);
-    if (s.pinned) s.uploadMs = profiled(m.copyEvents);
+  clCall([&] {  // every event is done: the rest counted
+    m.harvest();
     return 0;
   });
+  s.kernelMs = m.kernelMs;
+  if (s.pinned) s.uploadMs = m.copyMs;
   m.kernelEvents.clear();
   m.copyEvents.clear();
   s.overlapMs = std::max(0.0, s.readMs + s.uploadMs + s.kernelMs - s.partsMs);
