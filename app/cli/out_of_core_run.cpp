@@ -30,6 +30,12 @@ void OutOfCoreOption::add(CLI::App& cmd) {
   cmd.add_option("--part-slices", partSlices,
                  "with --memory-budget: slices each part owns (default: about 8 parts fit)")
       ->check(CLI::Range(1, 1 << 20));
+  cmd.add_option("--ooc-upload", upload,
+                 "with --memory-budget: how parts reach the device: pinned (host staging the "
+                 "runtime pins, copies on a queue of their own beside the kernels), direct (the "
+                 "slices where they are, a blocking copy) or auto (pinned on a GPU, direct on a "
+                 "CPU)")
+      ->check(CLI::IsMember({"auto", "direct", "pinned"}));
 }
 
 std::unique_ptr<SlabSource> openSlabSource(const InputOptions& input, std::optional<Volume>& held) {
@@ -52,6 +58,9 @@ OutOfCoreOptions optionsOf(const OutOfCoreOption& option, const OutOfCoreRun& ru
   OutOfCoreOptions o;
   o.budgetBytes = option.budgetMib << 20;
   o.partSlices = option.partSlices;
+  o.upload = option.upload == "pinned"   ? OutOfCoreOptions::Upload::Pinned
+             : option.upload == "direct" ? OutOfCoreOptions::Upload::Direct
+                                         : OutOfCoreOptions::Upload::Auto;
   o.emptySpaceSkipping = run.ess;
   o.storage = parseStorage(run.storage);
   return o;
@@ -71,10 +80,11 @@ int renderOutOfCore(const OutOfCoreOption& option, SlabSource& source, const Ren
   writeImage(output, img);
   std::fprintf(stderr,
                "rendered %dx%d %s on %s out of core in %.0f ms (first frame includes the kernel "
-               "builds): %d parts, %d held after it, %d uploaded (%.0f MiB; read %.0f ms, copied "
-               "%.0f ms); opening %.0f ms; %s%s\n",
+               "builds): %d parts, %d held after it, %d uploaded (%.0f MiB%s; read %.0f ms, copied "
+               "%.0f ms, kernels %.0f ms, %.0f ms of them overlapped); opening %.0f ms; %s%s\n",
                p.width, p.height, toString(p.mode), ctx.device().name.c_str(), s.totalMs, s.parts,
-               s.partsResident, s.uploads, mibOf(s.bytesUploaded), s.readMs, s.uploadMs, r.openMs(),
+               s.partsResident, s.uploads, mibOf(s.bytesUploaded), s.pinned ? ", pinned" : "",
+               s.readMs, s.uploadMs, s.kernelMs, s.overlapMs, r.openMs(),
                s.fullResolution ? "full resolution" : "NOT at full resolution",
                s.deviceOutOfMemory ? (": " + s.message).c_str() : "");
   for (const std::string& w : source.geometry().warnings)
@@ -98,7 +108,8 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
   r.preview(p, img, &s);
   const double firstMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   r.render(p, img, &s);  // the converged frame's kernels, and the cache filled
-  std::vector<double> preview, converged, uploaded, uploads;
+  std::vector<double> preview, converged, uploaded, uploads, readMs, uploadMs, kernelMs, overlapMs;
+  bool pinned = false;
   int coarseParts = 0;
   for (int i = 0; i < bench.frames; ++i) {
     orbitCamera(p.camera, bench.orbit, i, bench.frames);
@@ -112,6 +123,11 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
     converged.push_back(s.totalMs);
     uploaded.push_back(mibOf(s.bytesUploaded));
     uploads.push_back(double(s.uploads));
+    readMs.push_back(s.readMs);
+    uploadMs.push_back(s.uploadMs);
+    kernelMs.push_back(s.kernelMs);
+    overlapMs.push_back(s.overlapMs);
+    pinned = pinned || s.pinned;
   }
   const double previewMs = median(preview), convergedMs = median(converged);
   const double peak = residentMiB(true);
@@ -134,24 +150,33 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                           {"converged_median_ms", convergedMs},
                           {"uploads_per_converged_frame", median(uploads)},
                           {"uploaded_mib_per_converged_frame", median(uploaded)},
+                          {"upload_path", pinned ? "pinned" : "direct"},
+                          {"converged_read_ms", median(readMs)},
+                          {"converged_upload_ms", median(uploadMs)},
+                          {"converged_kernel_ms", median(kernelMs)},
+                          {"converged_overlap_ms", median(overlapMs)},
                           {"peak_rss_mib", peak}}
                .dump()
         << "\n";
     return;
   }
-  char line[512];
+  char line[768];
   std::snprintf(line, sizeof(line),
                 "%s %dx%d %s on %s, %s: %.0f MiB volume, budget %zu MiB: %d parts, %d held\n"
                 "  first image %.0f ms (opening %.0f ms: one pass over the source, the coarse "
                 "level)\n"
                 "  preview (orbit, %d parts coarse): median %.1f ms, %.2f fps\n"
-                "  converged: median %.0f ms, %.0f parts / %.0f MiB uploaded per frame\n"
+                "  converged: median %.0f ms, %.0f parts / %.0f MiB uploaded per frame (%s)\n"
+                "    per converged frame: read %.0f ms, upload %.0f ms, kernels %.0f ms, of "
+                "which %.0f ms overlapped\n"
                 "  peak resident memory %.0f MiB; %d frames each over a 360-degree orbit; "
                 "medians\n",
                 name.c_str(), p.width, p.height, toString(p.mode), ctx.device().name.c_str(),
                 source.describe().c_str(), volumeMib, option.budgetMib, r.partCount(),
                 r.residentCount(), firstMs, r.openMs(), coarseParts, previewMs, 1000.0 / previewMs,
-                convergedMs, median(uploads), median(uploaded), peak, bench.frames);
+                convergedMs, median(uploads), median(uploaded), pinned ? "pinned" : "direct",
+                median(readMs), median(uploadMs), median(kernelMs), median(overlapMs), peak,
+                bench.frames);
   out << line;
 }
 

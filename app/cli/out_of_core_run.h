@@ -17,6 +17,7 @@ namespace voxray::cli {
 struct OutOfCoreOption {
   size_t budgetMib = 0;
   int partSlices = 0;
+  std::string upload = "auto";  // --ooc-upload: auto, direct or pinned (OutOfCoreOptions::Upload)
 
   void add(CLI::App& cmd);
   bool active() const { return budgetMib > 0; }

@@ -7,6 +7,7 @@
 // Errors: every rank stops at the same step, rank 0 says once what failed on which rank, and
 // every rank exits 1 (usage errors 2). No exception leaves a rank with the others waiting.
 #include <mpi.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -61,6 +62,13 @@ std::string deviceFor(const std::string& given, MPI_Comm world) {
   }
   if (gpus.empty()) return "auto";
   return std::to_string(gpus[size_t(local) % gpus.size()]);
+}
+
+// This process's peak resident memory (tests/mpi/rank_memory.py: a rank holds its slab).
+long peakResidentMiB() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return long(u.ru_maxrss) / 1024;  // KiB on Linux
 }
 
 double median(std::vector<double> v) {
@@ -133,7 +141,8 @@ int run(const Options& o, MPI_Comm world) {
       if (!allSucceeded(world, error, "")) return 1;
     }
   }
-  // The whole volume's stored range (the tables map it): agreed over the slabs.
+  // The whole volume's stored range (the tables map it): agreed over the slabs. VOLUME: the
+  // whole volume's geometry; with a slab read, without voxels (the rank holds SLAB alone).
   std::optional<ValueRange> valueRange;
   Volume volume;
   if (slabRead) {
@@ -142,8 +151,7 @@ int run(const Options& o, MPI_Comm world) {
     MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_INT, MPI_MIN, world);
     MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_INT, MPI_MAX, world);
     valueRange = ValueRange{int16_t(lo), int16_t(hi)};
-    volume = placeSlab(std::move(*slab), range, slices, int16_t(lo));
-    slab.reset();
+    volume = slabGeometry(*slab, range, slices);
   } else {
     volume = std::move(*whole);
     whole.reset();
@@ -162,6 +170,10 @@ int run(const Options& o, MPI_Comm world) {
     mo.ranges = {range};
     mo.emptySpaceSkipping = o.ess == "on";
     mo.valueRange = valueRange;
+    if (slab) {
+      mo.slab = &*slab;
+      mo.slabFirst = range.storedFirst;
+    }
     renderer =
         std::make_unique<MultiDeviceRenderer>(std::vector<ClContext*>{context.get()}, volume, mo);
     keys = renderer->visibilityKeys(p);
@@ -234,7 +246,8 @@ int run(const Options& o, MPI_Comm world) {
   own << "  " << ofRank << ": part " << median(ownMs) << " ms, IceT composite "
       << median(ownCompositeMs) << " ms (compress " << median(compressMs) << ", blend "
       << median(blendMs) << "), copy into IceT " << median(copyMs) << " ms, collect "
-      << median(collectMs) << " ms, IceT's total " << median(totalMs) << " ms";
+      << median(collectMs) << " ms, IceT's total " << median(totalMs) << " ms, peak resident "
+      << peakResidentMiB() << " MiB";
   const auto partLines = gatherText(world, own.str());
   for (const auto& line : partLines) std::cerr << line << "\n";
   error.clear();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "voxray/engine/coarse_level.h"  // withoutVoxels
 #include "voxray/io/error.h"
 
 namespace voxray::mpi {
@@ -20,6 +21,16 @@ Volume readSlab(const std::string& input, const LoadOptions& options, const Part
   return importRaw(input, layout, {options.progress, options.cancel});
 }
 
+Volume slabGeometry(const Volume& slab, const PartRange& range, int totalSlices) {
+  Volume v = withoutVoxels(slab);
+  v.study = slab.study;
+  v.warnings = slab.warnings;
+  v.dims.z = totalSlices;
+  // readSlab's origin is at its first slice: back to slice 0.
+  v.originMm -= v.direction * glm::dvec3(0.0, 0.0, range.storedFirst * v.spacingMm.z);
+  return v;
+}
+
 Volume placeSlab(Volume slab, const PartRange& range, int totalSlices, int16_t fill) {
   const int held = range.storedEnd - range.storedFirst;
   if (slab.dims.z != held)
@@ -29,7 +40,7 @@ Volume placeSlab(Volume slab, const PartRange& range, int totalSlices, int16_t f
   VoxelVector slices = std::move(slab.voxels);
   Volume v = std::move(slab);
   v.dims.z = totalSlices;
-  // readSlab's origin is at its first slice: back to slice 0.
+  // readSlab's origin is at its first slice: back to slice 0 (as slabGeometry).
   v.originMm -= v.direction * glm::dvec3(0.0, 0.0, range.storedFirst * v.spacingMm.z);
   const size_t sliceVoxels = size_t(v.dims.x) * size_t(v.dims.y);
   v.voxels.assign(v.voxelCount(), fill);

@@ -10,6 +10,7 @@
 #include "empty_space.h"
 #include "multi_device_composite.h"
 #include "multi_device_gpu_composite.h"
+#include "streamed_cells.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/io/error.h"
 #include "voxray/io/volume.h"
@@ -178,7 +179,11 @@ void MultiDeviceRenderer::Impl::upload(Part& part, int index) {
                       std::to_string(d.maxImage3d[0]) + "x" + std::to_string(d.maxImage3d[1]) +
                       "x" + std::to_string(d.maxImage3d[2]) +
                       "): render with --storage buffer or split over more devices");
-  auto* first = const_cast<int16_t*>(volume.voxels.data()) + size_t(r.storedFirst) * n.x * n.y;
+  // The stored slices: in the whole volume, or in the rank's slab (opts.slab).
+  const Volume& held = opts.slab ? *opts.slab : volume;
+  const int heldFirst = opts.slab ? opts.slabFirst : 0;
+  auto* first = const_cast<int16_t*>(held.voxels.data()) +
+                size_t(r.storedFirst - heldFirst) * size_t(n.x) * size_t(n.y);
   try {
     clCall([&] {
       if (image) {
@@ -197,14 +202,38 @@ void MultiDeviceRenderer::Impl::upload(Part& part, int index) {
   } catch (const Error& e) {
     throw deviceError(what + ": " + e.what());
   }
-  if (opts.emptySpaceSkipping) part.space.upload(part.cl, volume);
+  if (opts.emptySpaceSkipping) {
+    if (opts.slab)
+      part.space.upload(part.cl,
+                        slabMacroCells(*opts.slab, opts.slabFirst, n.z, opts.valueRange->min));
+    else
+      part.space.upload(part.cl, volume);
+  }
 }
 
 MultiDeviceRenderer::MultiDeviceRenderer(const std::vector<ClContext*>& contexts,
                                          const Volume& volume, const MultiDeviceOptions& options)
     : impl_(std::make_unique<Impl>(volume, options)) {
-  if (volume.voxelCount() == 0 || volume.voxels.size() != volume.voxelCount())
+  if (options.slab) {
+    const Volume& slab = *options.slab;
+    if (slab.voxels.size() != slab.voxelCount() || slab.dims.x != volume.dims.x ||
+        slab.dims.y != volume.dims.y || options.slabFirst < 0 ||
+        options.slabFirst + slab.dims.z > volume.dims.z || volume.voxelCount() == 0)
+      throw inputError("the slab (" + std::to_string(slab.dims.z) + " slices from " +
+                       std::to_string(options.slabFirst) + ") does not fit the volume's " +
+                       std::to_string(volume.dims.x) + "x" + std::to_string(volume.dims.y) + "x" +
+                       std::to_string(volume.dims.z) + " voxels");
+    if (!options.valueRange) throw inputError("a slab renderer needs the whole volume's range");
+    for (const PartRange& r : options.ranges)
+      if (r.storedFirst < options.slabFirst || r.storedEnd > options.slabFirst + slab.dims.z)
+        throw inputError("the slab holds slices " + std::to_string(options.slabFirst) + " to " +
+                         std::to_string(options.slabFirst + slab.dims.z - 1) +
+                         ", not the stored slices " + std::to_string(r.storedFirst) + " to " +
+                         std::to_string(r.storedEnd - 1) + " of its range");
+    if (options.ranges.empty()) throw inputError("a slab renderer needs its ranges");
+  } else if (volume.voxelCount() == 0 || volume.voxels.size() != volume.voxelCount()) {
     throw inputError("the volume is empty or its voxel count does not match its dimensions");
+  }
   if (options.apron < 2)
     throw inputError("the apron must be at least 2 slices (the gradients' stencil)");
   // Shares by the memory each device may use: equal devices get equal ranges.

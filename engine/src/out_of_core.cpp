@@ -88,6 +88,14 @@ struct OutOfCoreRenderer::Impl {
     bool resident = false;
     cl::Buffer buffer;
     cl::Image3D image;
+    cl::Event ready;    // its pinned copy, which its first launch after it waits for
+    cl::Event lastUse;  // its last launch: its memory is free once that is done
+  };
+  // One pinned staging buffer of the ring: mapped once, its pointer the copies' source.
+  struct Slot {
+    cl::Buffer host;
+    int16_t* ptr = nullptr;
+    cl::Event copied;  // the last copy from it: its bytes are free to overwrite once done
   };
   // One kernel launch of a frame: a part at full resolution, or slices [first, end) from the
   // coarse level.
@@ -120,6 +128,18 @@ struct OutOfCoreRenderer::Impl {
   // a part's bytes per upload let glibc's raised mmap threshold put them on the heap, whose
   // fragments the process kept (peak RSS 0.36-0.65x of a streamed Zarr in tests/cli).
   std::vector<int16_t> staging;
+  // The pinned path (OutOfCoreOptions::Upload): made at its first upload.
+  bool pinned = false;
+  std::vector<Slot> ring;
+  size_t ringNext = 0;
+  cl::CommandQueue transfer;       // in order, profiling on; the copies alone
+  std::vector<cl::Event> freeing;  // the last launches on the parts evicted since the last copy
+  // This frame's launches and copies not yet counted, and what those counted took. An event
+  // holds its command and so the buffers it used (PoCL frees an evicted part's memory only
+  // with its last launch's event): they are counted and dropped as they finish.
+  std::vector<cl::Event> kernelEvents, copyEvents;
+  double kernelMs = 0.0, copyMs = 0.0;
+  void harvest();
 
   Impl(ContextImpl& c, SlabSource& s, const OutOfCoreOptions& opts, VolumeStorage st)
       : cl(c),
@@ -129,22 +149,155 @@ struct OutOfCoreRenderer::Impl {
         coarse(s.coarse()),
         storage(st),
         full(c, geom, st),
-        coarseFrame(c, coarse, st) {}
+        coarseFrame(c, coarse, st) {
+    pinned = o.upload == OutOfCoreOptions::Upload::Pinned ||
+             (o.upload == OutOfCoreOptions::Upload::Auto && c.info.isGpu);
+  }
+  ~Impl() {
+    try {
+      for (Slot& slot : ring)
+        if (slot.ptr) transfer.enqueueUnmapMemObject(slot.host, slot.ptr);
+      if (transfer()) transfer.finish();
+      cl.queue.finish();
+    } catch (const cl::Error&) {
+      // the buffers go with the context; nothing else to do while tearing down
+    }
+  }
 
   size_t sliceBytes() const { return size_t(geom.dims.x) * size_t(geom.dims.y) * 2; }
   void upload(Part& part, OutOfCoreStats& s);
+  void uploadPinned(Part& part, OutOfCoreStats& s);
+  bool makeRing();
   void evict(Part& part) {
     part.buffer = cl::Buffer();
     part.image = cl::Image3D();
     part.resident = false;
     residentBytes -= part.bytes;
     evictedPending = true;
+    if (part.lastUse()) freeing.push_back(part.lastUse);
+    part.lastUse = cl::Event();
+    part.ready = cl::Event();
   }
   void keys(std::vector<Item>& items, const RenderParams& p);
   void launch(const Item& item, const RenderParams& p);
   void setUp(DeviceFrame& f, EmptySpace& space, const RenderParams& p, RaycastParams& k,
              std::string& options);
 };
+
+// Two pinned buffers of the largest part: one is filled from the source while the other's copy
+// runs (a third would wait for the same part to leave the device: the eviction waits for the
+// launch before). False where the runtime will not pin them: the parts then go Direct.
+bool OutOfCoreRenderer::Impl::makeRing() {
+  size_t bytes = 0;
+  for (const Part& q : parts) bytes = std::max(bytes, q.bytes);
+  try {
+    clCall([&] {
+      transfer = cl::CommandQueue(cl.context, cl.device, CL_QUEUE_PROFILING_ENABLE);
+      ring.resize(2);
+      for (Slot& slot : ring) {
+        slot.host = cl::Buffer(cl.context, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, bytes);
+        slot.ptr = static_cast<int16_t*>(
+            transfer.enqueueMapBuffer(slot.host, CL_TRUE, CL_MAP_WRITE, 0, bytes));
+      }
+      return 0;
+    });
+  } catch (const Error& e) {
+    if (e.kind() != Error::Kind::Device) throw;
+    for (Slot& slot : ring)
+      if (slot.ptr) clCall([&] { return transfer.enqueueUnmapMemObject(slot.host, slot.ptr); });
+    ring.clear();
+    pinned = false;
+    return false;
+  }
+  return true;
+}
+
+void OutOfCoreRenderer::Impl::harvest() {
+  auto take = [](std::vector<cl::Event>& events, double& ms) {
+    std::vector<cl::Event> running;
+    for (const cl::Event& e : events) {
+      try {
+        if (e.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() != CL_COMPLETE) {
+          running.push_back(e);
+          continue;
+        }
+        ms += double(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                     e.getProfilingInfo<CL_PROFILING_COMMAND_START>()) *
+              1e-6;  // nanoseconds
+      } catch (const cl::Error&) {
+        // no profiling on this queue: the frame's stats lack this time
+      }
+    }
+    events = std::move(running);
+  };
+  take(kernelEvents, kernelMs);
+  take(copyEvents, copyMs);
+  for (Slot& slot : ring)
+    if (slot.copied() && slot.copied.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() == CL_COMPLETE)
+      slot.copied = cl::Event();
+}
+
+void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
+  const PartRange& r = part.range;
+  const glm::ivec3 n = geom.dims;
+  const int slices = r.storedEnd - r.storedFirst;
+  Slot& slot = ring[ringNext];
+  ringNext = (ringNext + 1) % ring.size();
+  if (slot.copied()) clCall([&] { return slot.copied.wait(); });
+  const auto t0 = Clock::now();
+  if (const int16_t* in = src.slicesInPlace(r.storedFirst)) {
+    // Slices in host memory: copied on every core (one core's memcpy, 5-10 GB/s, would be
+    // slower than the bus the pinned copy runs at).
+    const size_t bytes = part.bytes, pieces = 64, piece = (bytes / pieces + 4095) / 4096 * 4096;
+    auto* to = reinterpret_cast<char*>(slot.ptr);
+    const auto* from = reinterpret_cast<const char*>(in);
+    parallelFor(pieces, [&](size_t k) {
+      const size_t at = std::min(k * piece, bytes), end = std::min(at + piece, bytes);
+      std::memcpy(to + at, from + at, end - at);
+    });
+  } else {
+    src.readSlices(r.storedFirst, r.storedEnd, slot.ptr);
+  }
+  s.readMs += msSince(t0);
+  // The evicted parts' memory is free once their last launches are done: wait for those alone
+  // (the part drawn just before, in a frame that evicts in order) so that the budget is what
+  // the device holds; the read above ran while they did.
+  if (!freeing.empty()) {
+    clCall([&] { return cl::WaitForEvents(freeing); });
+    freeing.clear();
+    clCall([&] {
+      harvest();
+      return 0;
+    });
+  }
+  evictedPending = false;
+  cl::Event copied;
+  try {
+    clCall([&] {
+      if (storage == VolumeStorage::Image3d) {
+        cl::ImageFormat format(CL_R, CL_SNORM_INT16);  // as DeviceVolume: the kernel scales back
+        part.image = cl::Image3D(cl.context, CL_MEM_READ_ONLY, format, size_t(n.x), size_t(n.y),
+                                 size_t(slices));
+        transfer.enqueueWriteImage(part.image, CL_FALSE, {0, 0, 0},
+                                   {size_t(n.x), size_t(n.y), size_t(slices)}, 0, 0, slot.ptr,
+                                   nullptr, &copied);
+      } else {
+        part.buffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, part.bytes);
+        transfer.enqueueWriteBuffer(part.buffer, CL_FALSE, 0, part.bytes, slot.ptr, nullptr,
+                                    &copied);
+      }
+      transfer.flush();
+      return 0;
+    });
+  } catch (const Error&) {
+    part.buffer = cl::Buffer();
+    part.image = cl::Image3D();
+    throw;
+  }
+  slot.copied = copied;
+  part.ready = copied;
+  copyEvents.push_back(copied);
+}
 
 void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
   const PartRange& r = part.range;
@@ -157,6 +310,16 @@ void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
         "clCreateBuffer failed: CL_MEM_OBJECT_ALLOCATION_FAILURE (-4) (the fault "
         "hook: the device takes " +
         std::to_string(o.faultDeviceParts) + " parts)");
+  if (pinned && (!ring.empty() || makeRing())) {
+    uploadPinned(part, s);
+    s.pinned = true;
+    ++uploadsDone;
+    ++s.uploads;
+    s.bytesUploaded += part.bytes;
+    part.resident = true;
+    residentBytes += part.bytes;
+    return;
+  }
   const auto t0 = Clock::now();
   const int16_t* in = nullptr;
   const bool image = storage == VolumeStorage::Image3d;
@@ -172,8 +335,13 @@ void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
   // An evicted part's memory is freed once the launches queued on it are done: wait for them
   // (after the read above, which overlaps them) so that the budget is what the device holds.
   if (evictedPending) {
-    clCall([&] { return cl.queue.finish(); });
+    clCall([&] {
+      cl.queue.finish();
+      harvest();
+      return 0;
+    });
     evictedPending = false;
+    freeing.clear();
   }
   const auto t2 = Clock::now();  // the copy alone, not the wait for the queued parts
   clCall([&] {
@@ -281,7 +449,19 @@ void OutOfCoreRenderer::Impl::launch(const Item& item, const RenderParams& p) {
       gx = (gx + 15) / 16 * 16;
       gy = (gy + 7) / 8 * 8;
     }
-    cl.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local);
+    // A part just copied through the pinned ring: its kernel waits for the copy (on the
+    // transfer queue), the launches after it wait in order.
+    std::vector<cl::Event> wait;
+    Part* part = isCoarse ? nullptr : &parts[size_t(item.part)];
+    if (part && part->ready()) wait.push_back(part->ready);
+    cl::Event ran, added;
+    cl.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(gx, gy), local,
+                                  wait.empty() ? nullptr : &wait, &ran);
+    if (part) {
+      part->ready = cl::Event();
+      part->lastUse = ran;
+    }
+    kernelEvents.push_back(ran);
     // Into the composite on the device, front to back (the items come in the order the rays
     // meet them): no part image crosses the bus, and the next part's slices are read and
     // uploaded while the queue runs (it is in order: the next launch waits for this one).
@@ -293,7 +473,8 @@ void OutOfCoreRenderer::Impl::launch(const Item& item, const RenderParams& p) {
     add.setArg(3, cl_float(p.earlyTermination));
     add.setArg(4, cl_int(pixels));
     cl.queue.enqueueNDRangeKernel(add, cl::NullRange, cl::NDRange((pixels + 63) / 64 * 64),
-                                  cl::NullRange);
+                                  cl::NullRange, nullptr, &added);
+    kernelEvents.push_back(added);
     cl.queue.flush();
     return 0;
   });
@@ -496,6 +677,10 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
       return q.range.first >= it.first && q.range.end <= it.end;
     }));
   };
+  m.kernelEvents.clear();
+  m.copyEvents.clear();
+  m.kernelMs = m.copyMs = 0.0;
+  const auto partsStart = Clock::now();
   // Each part's position in this frame's order: what Belady's rule evicts by.
   std::vector<int> position(m.parts.size(), 0);
   for (size_t j = 0; j < items.size(); ++j)
@@ -553,6 +738,17 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
     ++s.partsFull;
   }
   m.acc.resize(pixels * 4);
+  clCall([&] { return m.cl.queue.finish(); });
+  s.partsMs = msSince(partsStart);
+  clCall([&] {  // every event is done: the rest counted
+    m.harvest();
+    return 0;
+  });
+  s.kernelMs = m.kernelMs;
+  if (s.pinned) s.uploadMs = m.copyMs;
+  m.kernelEvents.clear();
+  m.copyEvents.clear();
+  s.overlapMs = std::max(0.0, s.readMs + s.uploadMs + s.kernelMs - s.partsMs);
   clCall([&] {
     m.cl.queue.enqueueReadBuffer(m.accBuffer, CL_TRUE, 0, pixels * sizeof(cl_float4), m.acc.data());
     return 0;

@@ -8,4 +8,9 @@ namespace voxray {
 
 MacroCells streamMacroCells(SlabSource& source, int group);
 
+// computeMacroCells of a volume of TOTALSLICES slices whose slices [FIRST, FIRST +
+// slab.dims.z) are SLAB's and the others FILL (at most every value of SLAB: an MPI rank's
+// filler), holding SLAB and a few filler slices only (multi_device.cpp).
+MacroCells slabMacroCells(const Volume& slab, int first, int totalSlices, int16_t fill);
+
 }  // namespace voxray

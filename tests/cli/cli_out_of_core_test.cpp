@@ -91,6 +91,34 @@ TEST_F(OutOfCoreCli, StreamedZarrStaysWithinTheBudget) {
   EXPECT_GT(j.at("uploads_per_converged_frame").get<double>(), 0.0);
   EXPECT_GT(j.at("preview_coarse_parts").get<int>(), 0);
   EXPECT_LT(j.at("preview_median_ms").get<double>(), j.at("converged_median_ms").get<double>());
+  EXPECT_EQ(j.at("upload_path").get<std::string>(), "direct");  // auto on a CPU device
+}
+
+// --ooc-upload pinned (what a GPU takes by default), forced on PoCL: the same parts uploaded
+// per converged frame as the direct path, and the frame's read, copy and kernel times with
+// their overlap (at most their sum).
+TEST_F(OutOfCoreCli, PinnedUploadSaysItsTimes) {
+  std::vector<std::string> pinned = bench("big");
+  pinned.insert(pinned.end(), {"--ooc-upload", "pinned"});
+  const ChildRun d = runCli(bench("big"));
+  const ChildRun p = runCli(pinned);
+  ASSERT_EQ(d.status, 0) << d.out;
+  ASSERT_EQ(p.status, 0) << p.out;
+  const auto jd = nlohmann::json::parse(d.out), jp = nlohmann::json::parse(p.out);
+  EXPECT_EQ(jp.at("upload_path").get<std::string>(), "pinned");
+  EXPECT_EQ(jp.at("uploads_per_converged_frame").get<double>(),
+            jd.at("uploads_per_converged_frame").get<double>());
+  EXPECT_EQ(jp.at("uploaded_mib_per_converged_frame").get<double>(),
+            jd.at("uploaded_mib_per_converged_frame").get<double>());
+  const double read = jp.at("converged_read_ms").get<double>(),
+               upload = jp.at("converged_upload_ms").get<double>(),
+               kernel = jp.at("converged_kernel_ms").get<double>(),
+               overlap = jp.at("converged_overlap_ms").get<double>();
+  EXPECT_GT(read, 0.0);
+  EXPECT_GT(upload, 0.0);
+  EXPECT_GT(kernel, 0.0);
+  EXPECT_GE(overlap, 0.0);
+  EXPECT_LE(overlap, read + upload + kernel);
 }
 
 TEST_F(OutOfCoreCli, BudgetBelowOnePartSaysWhatToDo) {

@@ -94,6 +94,14 @@ struct MultiDeviceOptions {
   // The whole volume's stored value range (the tables map it), when VOLUME holds the stored
   // slices of the ranges alone and the rest is filler (an MPI rank's slab). None: VOLUME's.
   std::optional<ValueRange> valueRange;
+  // An MPI rank's slab alone (app/mpi): VOLUME is the whole volume's geometry without voxels
+  // (withoutVoxels) and SLAB holds its slices [slabFirst, slabFirst + slab->dims.z), which
+  // must take in every range's stored slices; valueRange is then required. The empty-space
+  // cells are those of the whole volume with the slices outside the slab at valueRange->min
+  // (what they were when a rank held the whole volume's size, filled). SLAB must outlive the
+  // renderer. Null: VOLUME holds every slice.
+  const Volume* slab = nullptr;
+  int slabFirst = 0;
 };
 
 // DIMZ slices into weights.size() contiguous ranges in proportion to WEIGHTS (each > 0), each
