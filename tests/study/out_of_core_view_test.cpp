@@ -200,7 +200,7 @@ TEST(OutOfCoreWorker, ConvergedFrameEqualsInCoreAndADragFrameIsAFlaggedPreview) 
     EXPECT_EQ(still->outOfCoreStats.partsFull, 4);
     EXPECT_EQ(still->resolutionNote, "");
     EXPECT_EQ(still->limitsNote, "");
-    EXPECT_LE(still->outOfCoreStats.partsResident, 1);                  // out of core indeed
+    EXPECT_LE(still->outOfCoreStats.partsResident, 1);  // out of core indeed
     // Not an empty frame: the ball covers about an eighth of the view at the default distance.
     EXPECT_GT(litPixels(still->image), 96 * 72 / 10) << toString(mode);
     EXPECT_LE(maxDiff(still->image, inCore.render(p)), 1) << toString(mode);
