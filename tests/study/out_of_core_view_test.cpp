@@ -220,6 +220,25 @@ TEST(OutOfCoreWorker, ConvergedFrameEqualsInCoreAndADragFrameIsAFlaggedPreview) 
   }
 }
 
+// Shadows are the one-device Raycaster's: out of core the frame is lit by phong, and says so.
+TEST(OutOfCoreWorker, LightingItCannotDrawIsOffWithANote) {
+  const auto v = ball();
+  Frames got;
+  RenderWorker w("cpu", got.callbacks());
+  w.setOutOfCore(fourParts());
+  w.setVolume(v);
+  const RenderParams phong = view(Mode::Dvr);
+  auto plain = got.render(w, phong, false);
+  ASSERT_TRUE(plain);
+  RenderParams shadows = phong;
+  shadows.lighting = Lighting::Shadows;
+  auto f = got.render(w, shadows, false);
+  ASSERT_TRUE(f);
+  EXPECT_EQ(f->limitsNote, "Out of core, off: shadows (lit by phong)");
+  EXPECT_EQ(f->resolutionNote, "");
+  EXPECT_EQ(maxDiff(f->image, plain->image), 0);  // the phong frame, not a silent other one
+}
+
 TEST(OutOfCoreWorker, AutomaticBudgetKeepsAFittingStudyInCoreByteForByte) {
   const auto v = ball();
   Raycaster inCore(pocl(), *v);  // before the worker's context, as above

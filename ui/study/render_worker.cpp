@@ -323,13 +323,21 @@ void RenderWorker::run() {
       working_ = false;
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
-               pendingSegmentation_ || pendingOverlay_ || (!pendingPrepare_.empty() && raycaster) ||
+               pendingSegmentation_ || pendingOverlay_ ||
+               (!pendingPrepare_.empty() && (raycaster || ooc)) ||
                (!pendingPreload_.empty() && raycaster) || pendingOutOfCore_ ||
                (!pendingBackground_.empty() && (raycaster || ooc)) || !pendingOnDevice_.empty();
       });
       if (task_.cancelled()) return;
       working_ = true;
-      if (raycaster) prepare = std::exchange(pendingPrepare_, {});
+      if (raycaster) {
+        prepare = std::exchange(pendingPrepare_, {});
+      } else if (ooc && !pendingPrepare_.empty()) {
+        // The Raycaster's variants: none to build for an out-of-core study (its part kernels
+        // build with its first frames); the status says none are left.
+        pendingPrepare_.clear();
+        if (callbacks_.preparing) task_.post([f = callbacks_.preparing] { f(0); });
+      }
       if (!pendingOnDevice_.empty()) {
         onDevice = std::move(pendingOnDevice_.front());
         pendingOnDevice_.erase(pendingOnDevice_.begin());
