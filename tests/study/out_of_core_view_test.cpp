@@ -220,6 +220,44 @@ TEST(OutOfCoreWorker, ConvergedFrameEqualsInCoreAndADragFrameIsAFlaggedPreview) 
   }
 }
 
+// What the out-of-core renderer draws as the in-core one does, and so is not turned off: a 2D
+// transfer function, gradient opacity, a clip box (the same bound as above).
+TEST(OutOfCoreWorker, TwoDimensionalTableGradientOpacityAndClipMatchInCore) {
+  const auto v = ball();
+  Raycaster inCore(pocl(), *v);  // before the worker's context
+  RaycasterOptions ro;
+  ro.packets = false;
+  inCore.setOptions(ro);
+  Frames got;
+  RenderWorker w("cpu", got.callbacks());
+  w.setOutOfCore(fourParts());
+  w.setVolume(v);
+  RenderParams tf2d = view(Mode::Dvr);
+  Tf2dPrimitive bone;
+  bone.hu0 = 500.0;
+  bone.hu1 = 1200.0;
+  bone.g0 = 0.0;
+  bone.g1 = 2000.0;
+  bone.rgb = {0.9, 0.8, 0.6};
+  bone.opacity = 0.6;
+  bone.soft = 0.3;
+  tf2d.tf2d.primitives = {bone};
+  RenderParams gradient = view(Mode::Dvr);
+  gradient.gradientOpacity = {{0.0, 0.2}, {200.0, 1.0}};
+  RenderParams clip = view(Mode::Iso);
+  clip.clip.hi.x = 0.6;  // the box's right face (0 ... 1 of the volume) moved in
+  clip.clip.lo.z = 0.3;
+  int index = 0;
+  for (const RenderParams& p : {tf2d, gradient, clip}) {
+    auto f = got.render(w, p, false);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->limitsNote, "") << index;
+    EXPECT_GT(litPixels(f->image), 96 * 72 / 20) << index;
+    EXPECT_LE(maxDiff(f->image, inCore.render(p)), 1) << index;
+    ++index;
+  }
+}
+
 // Shadows are the one-device Raycaster's: out of core the frame is lit by phong, and says so.
 TEST(OutOfCoreWorker, LightingItCannotDrawIsOffWithANote) {
   const auto v = ball();

@@ -408,7 +408,8 @@ void RenderWorker::run() {
       const size_t globalMem = ctx->device().globalMemBytes;
       const OutOfCoreChoice choice =
           chooseOutOfCore(nextVolume->byteSize(), globalMem, oocSettings.budgetBytes);
-      // Out of core in place of the study shown (a failure leaves it rendering).
+      // Out of core in place of the study shown (a failure leaves an in-core study rendering;
+      // an out-of-core one leaves the device first, below, so that its parts make room).
       auto openOoc = [&](size_t budget) {
         auto next = openOutOfCore(*ctx, nextVolume, budget, oocSettings);
         raycaster = nullptr;
@@ -592,7 +593,7 @@ void RenderWorker::run() {
         if (req->withHits)
           throw Error(Error::Kind::Input,
                       "picking in 3D needs the volume on the device whole: it is drawn out of "
-                      "core; raise or clear the GPU memory budget (Render settings) to pick");
+                      "core; raise or clear the GPU memory budget (Render panel, Quality) to pick");
         // A study just opened holds no part yet: its first image is a preview (the coarse
         // level, uploading nothing) shown at once, the converged frame after it.
         if (!req->interactive && req->tag == 0 && !req->background &&
