@@ -9,6 +9,9 @@
 #include <QTemporaryDir>
 
 #include "settings_store.h"
+#include "study_state.h"
+#include "voxray/io/orientation.h"
+#include "voxray/io/raw_import.h"
 #include "window_fixture.h"
 
 using namespace voxray;
@@ -108,6 +111,55 @@ class OutOfCoreViewTest : public QObject {
     QVERIFY(!seen.back().interactive);
     QVERIFY(seen.back().outOfCore);
     QCOMPARE(view.frameNote(), QString());
+    w.stop();
+  }
+
+  // The README's picture (not a check): CThead under an 8 MiB budget, grabbed at a drag's
+  // preview frame, the note in the 3D view's top right corner. Written under Xvfb by
+  // VOXRAY_OUT_OF_CORE_SHOT=docs/images/out-of-core-drag.png xvfb-run -a -s "-screen 0
+  // 1920x1080x24" build/bin/voxray_ui_out_of_core_view_tests readmeScreenshot.
+  void readmeScreenshot() {
+    const QString shot = qEnvironmentVariable("VOXRAY_OUT_OF_CORE_SHOT");
+    if (shot.isEmpty()) QSKIP("set VOXRAY_OUT_OF_CORE_SHOT=PATH to write the README's screenshot");
+    test::PhantomWindow w;
+    QVERIFY(w.start());
+    RawLayout l;  // voxray-cli's --raw-dims 256,256 --raw-type i16 --raw-endian big ...
+    l.dims = {256, 256, 0};
+    l.type = SampleType::I16;
+    l.order = ByteOrder::Big;
+    l.spacingMm = {1.0, 1.0, 2.0};
+    l.slope = 1.0;
+    l.intercept = -1024.0;
+    l.direction = directionFromAxesCode("LPI");
+    auto v = std::make_shared<const Volume>(
+        importRaw(std::string(VOXRAY_DATA_DIR) + "/stanford/CThead", l));
+    Quality q = w.models->render.quality();
+    q.resolution = {0, 0};  // the view's size
+    q.gpuBudgetMib = 8;
+    w.models->render.setQuality(q);
+    w.window->resize(1900, 1040);
+    openStudy(*w.models, v, "CThead");
+    VolumeView& view = w.window->volumeView();
+    test::settledFrame(*w.window);
+    bool saved = false;
+    connect(&w.window->scheduler(), &RenderScheduler::frameReady, this,
+            [&](std::shared_ptr<const Frame> f) {
+              if (f->interactive && !saved && !view.frameNote().isEmpty())
+                saved = w.window->grab().save(shot);
+            });
+    auto send = [&view](QEvent::Type type, QPointF at, Qt::MouseButton b, Qt::MouseButtons held) {
+      QMouseEvent e(type, at, view.mapToGlobal(at), b, held, Qt::NoModifier);
+      QApplication::sendEvent(&view, &e);
+    };
+    const QPointF from = view.rect().center();
+    send(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+    QDeadlineTimer deadline(120000);
+    for (int i = 1; !saved && !deadline.hasExpired(); ++i) {
+      send(QEvent::MouseMove, from + QPointF(6.0 * (i % 40), 0.0), Qt::NoButton, Qt::LeftButton);
+      QTest::qWait(30);
+    }
+    send(QEvent::MouseButtonRelease, from, Qt::LeftButton, Qt::NoButton);
+    QVERIFY(saved);
     w.stop();
   }
 };
