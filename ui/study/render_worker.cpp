@@ -349,7 +349,7 @@ void RenderWorker::run() {
       pendingSegmentation_.reset();
       overlayUpdate = std::move(pendingOverlay_);
       pendingOverlay_.reset();
-      oocUpdate = std::move(pendingOutOfCore_);
+      oocUpdate = pendingOutOfCore_;
       pendingOutOfCore_.reset();
       if (pendingExport_) {
         req = std::move(pendingExport_);
