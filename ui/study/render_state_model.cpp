@@ -125,6 +125,7 @@ std::string RenderStateModel::toText() const {
   out << "ui-quality=" << quality_.preset << "\n";
   out << "ui-slice-interp=" << voxray::toString(sliceInterp_) << "\n";
   out << "ui-drag-fps=" << quality_.dragFps << "\n";
+  out << "ui-gpu-budget-mib=" << quality_.gpuBudgetMib << "\n";
   return out.str();
 }
 
@@ -149,6 +150,8 @@ void RenderStateModel::fromText(const std::string& text) {
       } else if (key == "ui-drag-fps") {
         const double fps = std::stod(value);
         if (std::isfinite(fps)) q.dragFps = std::clamp(fps, kDragFpsMin, kDragFpsMax);
+      } else if (key == "ui-gpu-budget-mib") {
+        q.gpuBudgetMib = std::clamp(std::stoi(value), 0, kGpuBudgetMibMax);
       } else if (key == "size" || key == "ui-step-scale") {
         // The view decides the size; ui-step-scale was an older version's quality.
       } else {

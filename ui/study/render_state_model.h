@@ -29,6 +29,8 @@ enum Change : unsigned {
 constexpr double kPresetShiftLimitHu = 1000.0;
 // The drag frame rate's range, for the spin box and saved preferences alike.
 constexpr double kDragFpsMin = 5.0, kDragFpsMax = 60.0;
+// The GPU memory budget's largest value in MiB (1 TiB), for the spin box and saved preferences.
+constexpr int kGpuBudgetMibMax = 1 << 20;
 
 struct Quality {
   glm::ivec2 resolution{0, 0};  // {0, 0} = the view's size (the "window size" choice)
@@ -38,6 +40,9 @@ struct Quality {
   std::string preset = "balanced";
   // Frames per second that drag frames adapt their size and step to hold (AdaptiveQuality).
   double dragFps = 20.0;
+  // The "GPU memory budget" in MiB (issue 38): a study larger than it is drawn out of core
+  // (out_of_core_view.h); 0: automatic, out of core only when it does not fit the device.
+  int gpuBudgetMib = 0;
 };
 
 // The look a first start opens with, before any preference is saved (issue 41 item 6): dvr

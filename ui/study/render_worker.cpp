@@ -8,6 +8,7 @@
 #include <thread>
 #include <utility>
 
+#include "out_of_core_view.h"
 #include "voxray/engine/coarse_level.h"
 #include "voxray/io/error.h"
 
@@ -36,6 +37,30 @@ void RenderWorker::setVolume(std::shared_ptr<const Volume> volume, bool sameSeri
     pendingVolume_ = std::move(volume);
   }
   wake_.notify_all();
+}
+
+void RenderWorker::setOutOfCore(OutOfCoreSettings settings) {
+  {
+    std::lock_guard lock(mutex_);
+    pendingOutOfCore_ = settings;
+  }
+  wake_.notify_all();
+}
+
+std::unique_ptr<RenderWorker::OutOfCoreShown> RenderWorker::openOutOfCore(
+    ClContext& ctx, std::shared_ptr<const Volume> volume, size_t budget,
+    const OutOfCoreSettings& settings) {
+  auto o = std::make_unique<OutOfCoreShown>();
+  o->volume = std::move(volume);
+  o->budgetBytes = budget;
+  // The study lies in host memory already: its slices are read from there part by part.
+  o->source = volumeSlabSource(*o->volume);
+  OutOfCoreOptions options;
+  options.budgetBytes = budget;
+  options.partSlices = settings.partSlices;
+  options.faultDeviceParts = settings.faultDeviceParts;
+  o->renderer = std::make_unique<OutOfCoreRenderer>(ctx, *o->source, options);
+  return o;
 }
 
 void RenderWorker::setSegmentation(std::shared_ptr<const Segmentation> whole) {
@@ -252,7 +277,7 @@ void RenderWorker::selectTimePoint(ClContext& ctx, const std::shared_ptr<const V
 bool RenderWorker::busy() {
   std::lock_guard lock(mutex_);
   return working_ || pendingVolume_ || pendingView_ || pendingExport_ || pendingSegmentation_ ||
-         pendingOverlay_ || !pendingOnDevice_.empty();
+         pendingOverlay_ || pendingOutOfCore_ || !pendingOnDevice_.empty();
 }
 
 void RenderWorker::run() {
@@ -276,6 +301,8 @@ void RenderWorker::run() {
   std::optional<OverlayUpdate> overlay;      // the render thread's (setOverlay)
   const Raycaster* overlayOn = nullptr;      // the raycaster holding it
   std::thread builder;                       // prepare()'s builds; joined before ctx goes
+  OutOfCoreSettings oocSettings;             // setOutOfCore's
+  std::unique_ptr<OutOfCoreShown> ooc;       // the study drawn out of core (raycaster null)
   struct Join {
     std::thread& t;
     ~Join() {
@@ -290,18 +317,27 @@ void RenderWorker::run() {
     std::optional<Request> req;
     std::vector<RenderParams> prepare;
     std::shared_ptr<OnDevice> onDevice;
+    std::optional<OutOfCoreSettings> oocUpdate;
     {
       std::unique_lock lock(mutex_);
       working_ = false;
       wake_.wait(lock, [&] {
         return task_.cancelled() || pendingVolume_ || pendingView_ || pendingExport_ ||
-               pendingSegmentation_ || pendingOverlay_ || (!pendingPrepare_.empty() && raycaster) ||
-               (!pendingPreload_.empty() && raycaster) ||
-               (!pendingBackground_.empty() && raycaster) || !pendingOnDevice_.empty();
+               pendingSegmentation_ || pendingOverlay_ ||
+               (!pendingPrepare_.empty() && (raycaster || ooc)) ||
+               (!pendingPreload_.empty() && raycaster) || pendingOutOfCore_ ||
+               (!pendingBackground_.empty() && (raycaster || ooc)) || !pendingOnDevice_.empty();
       });
       if (task_.cancelled()) return;
       working_ = true;
-      if (raycaster) prepare = std::exchange(pendingPrepare_, {});
+      if (raycaster) {
+        prepare = std::exchange(pendingPrepare_, {});
+      } else if (ooc && !pendingPrepare_.empty()) {
+        // The Raycaster's variants: none to build for an out-of-core study (its part kernels
+        // build with its first frames); the status says none are left.
+        pendingPrepare_.clear();
+        if (callbacks_.preparing) task_.post([f = callbacks_.preparing] { f(0); });
+      }
       if (!pendingOnDevice_.empty()) {
         onDevice = std::move(pendingOnDevice_.front());
         pendingOnDevice_.erase(pendingOnDevice_.begin());
@@ -313,6 +349,8 @@ void RenderWorker::run() {
       pendingSegmentation_.reset();
       overlayUpdate = std::move(pendingOverlay_);
       pendingOverlay_.reset();
+      oocUpdate = pendingOutOfCore_;
+      pendingOutOfCore_.reset();
       if (pendingExport_) {
         req = std::move(pendingExport_);
         pendingExport_.reset();
@@ -320,7 +358,7 @@ void RenderWorker::run() {
         req = std::move(pendingView_);
         pendingView_.reset();
       }
-      if (!req && !nextVolume && raycaster && !pendingBackground_.empty()) {
+      if (!req && !nextVolume && (raycaster || ooc) && !pendingBackground_.empty()) {
         auto& [tag, params] = pendingBackground_.front();
         req = Request{std::move(params), false, tag, false, {}, 0, true};
         pendingBackground_.erase(pendingBackground_.begin());
@@ -347,11 +385,46 @@ void RenderWorker::run() {
       if (!builder.joinable()) builder = std::thread([this, c = ctx.get()] { buildLoop(*c); });
       wake_.notify_all();
     }
+    if (oocUpdate && !(*oocUpdate == oocSettings)) {
+      oocSettings = *oocUpdate;
+      // The study shown opens again when it moves into or out of core, or its budget changes
+      // (in core to in core: nothing to do). A 4D series' time points stay as they are.
+      std::shared_ptr<const Volume> study = ooc                    ? ooc->volume
+                                            : uploaded.size() == 1 ? uploaded.front().volume
+                                                                   : nullptr;
+      if (study && !nextVolume) {
+        const OutOfCoreChoice c = chooseOutOfCore(study->byteSize(), ctx->device().globalMemBytes,
+                                                  oocSettings.budgetBytes);
+        if (c.outOfCore || ooc) {
+          nextVolume = study;
+          sameSeries = false;
+        }
+      }
+    }
     if (nextVolume) {
       if (!residency)
         residency = std::make_unique<VolumeResidency>(
             residencyBudget(ctx->device().isGpu, ctx->device().globalMemBytes));
-      if (!sameSeries) {
+      const size_t globalMem = ctx->device().globalMemBytes;
+      const OutOfCoreChoice choice =
+          chooseOutOfCore(nextVolume->byteSize(), globalMem, oocSettings.budgetBytes);
+      // Out of core in place of the study shown (a failure leaves an in-core study rendering;
+      // an out-of-core one leaves the device first, below, so that its parts make room).
+      auto openOoc = [&](size_t budget) {
+        auto next = openOutOfCore(*ctx, nextVolume, budget, oocSettings);
+        raycaster = nullptr;
+        uploaded.clear();
+        residency->clear();
+        ooc = std::move(next);
+      };
+      if (!sameSeries && choice.outOfCore) {
+        try {
+          ooc.reset();  // its parts leave the device before the next study's come
+          openOoc(choice.budgetBytes);
+        } catch (const std::exception& e) {
+          reportError(e.what(), true);
+        }
+      } else if (!sameSeries) {
         // Another study: it replaces every volume uploaded, once it is on the device (a
         // failed upload leaves the last study rendering).
         if (nextVolume->byteSize() >= kCoarsePreviewBytes)
@@ -359,16 +432,30 @@ void RenderWorker::run() {
         try {
           auto next = std::make_unique<Raycaster>(*ctx, *nextVolume);
           raycaster = nullptr;
+          ooc.reset();
           uploaded.clear();
           residency->clear();
           residency->use(nextVolume.get(), nextVolume->byteSize());
           uploaded.push_back({nextVolume, std::move(next)});
           raycaster = uploaded.back().raycaster.get();
+        } catch (const Error& e) {
+          if (e.kind() != Error::Kind::Device) {
+            reportError(e.what(), true);
+          } else {
+            // The device could not take it whole (it holds less than it said, or other
+            // programs hold part of it): out of core within what the headroom leaves.
+            try {
+              openOoc(chooseOutOfCore(SIZE_MAX, globalMem, 0).budgetBytes);
+            } catch (const std::exception& e2) {
+              reportError(std::string(e.what()) + "; out of core: " + e2.what(), true);
+            }
+          }
         } catch (const std::exception& e) {
           reportError(e.what(), true);
         }
       } else {
         selectTimePoint(*ctx, nextVolume, uploaded, *residency, raycaster);
+        if (raycaster) ooc.reset();  // a time point of a series: in core (the worker's rule)
       }
     }
     if (ahead && residency && residency->preload(ahead.get(), ahead->byteSize())) {
@@ -450,6 +537,34 @@ void RenderWorker::run() {
         reportError(e.what(), false);
       }
     }
+    // An out-of-core frame of ASKED into FRAME: a preview (the parts on the device, the
+    // others coarse) or converged; what the renderer does not draw is off, and said.
+    auto drawOutOfCore = [&](const RenderParams& asked, bool preview, Frame& frame) {
+      const bool labels = segmentation && !segmentation->segments.empty() &&
+                          sameGrid(segmentation->grid, gridOf(*ooc->volume));
+      const bool fused = overlay && overlay->volume;
+      const OutOfCoreParams o = outOfCoreParams(asked, labels, fused, ooc->volume->spacingMm.z);
+      OutOfCoreStats s;
+      if (preview)
+        ooc->renderer->preview(o.params, frame.image, &s);
+      else
+        ooc->renderer->render(o.params, frame.image, &s);
+      frame.outOfCore = true;
+      frame.outOfCoreStats = s;
+      frame.stats.totalMs = s.totalMs;
+      frame.resolutionNote = resolutionNote(s);
+      frame.limitsNote = limitsNote(o.off);
+    };
+    if (onDevice && ooc && onDevice->volume == ooc->volume.get()) {
+      try {
+        Frame f;
+        drawOutOfCore(onDevice->params, false, f);
+        onDevice->image.set_value(std::move(f.image));
+      } catch (...) {
+        onDevice->image.set_exception(std::current_exception());
+      }
+      onDevice.reset();
+    }
     if (onDevice) {
       // The raycaster that holds its volume, lit as a still frame: the image a raycaster of
       // its own would render.
@@ -467,6 +582,42 @@ void RenderWorker::run() {
       } catch (...) {
         onDevice->image.set_exception(std::current_exception());
       }
+    }
+    if (req && ooc && !raycaster) {
+      auto frame = std::make_shared<Frame>();
+      frame->params = req->params;
+      frame->interactive = req->interactive;
+      frame->tag = req->tag;
+      frame->volume = ooc->volume.get();
+      try {
+        if (req->withHits)
+          throw Error(Error::Kind::Input,
+                      "picking in 3D needs the volume on the device whole: it is drawn out of "
+                      "core; raise or clear the GPU memory budget (Render panel, Quality) to pick");
+        // A study just opened holds no part yet: its first image is a preview (the coarse
+        // level, uploading nothing) shown at once, the converged frame after it.
+        if (!req->interactive && req->tag == 0 && !req->background &&
+            ooc->renderer->residentCount() == 0 && callbacks_.frame) {
+          auto first = std::make_shared<Frame>(*frame);
+          first->coarse = true;
+          drawOutOfCore(req->params, true, *first);
+          task_.post([f = callbacks_.frame, first] { f(first); });
+        }
+        // The bands of a sharp frame are not split here: one converged frame.
+        drawOutOfCore(req->params, req->interactive, *frame);
+        if (req->background) {
+          if (callbacks_.background) task_.post([f = callbacks_.background, frame] { f(frame); });
+          continue;
+        }
+        if (req->tag == 0) {
+          view = frame->image;
+          lastView = req->params;
+        }
+        if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
+      } catch (const std::exception& e) {
+        reportError(e.what(), false);
+      }
+      continue;
     }
     if (!req || !raycaster) continue;
     // A drag's frames keep the shadows grid of its start (issue 40 item 4); the first frame

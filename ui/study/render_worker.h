@@ -20,6 +20,7 @@
 #include "refine_bands.h"
 #include "time_series.h"
 #include "voxray/engine/cl_context.h"
+#include "voxray/engine/out_of_core.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/render_params.h"
 #include "voxray/io/image.h"
@@ -46,6 +47,22 @@ struct Frame {
   // level of the volume, in its geometry, before the full volume is uploaded; the frame of the
   // full volume follows. Show it, and say "coarse preview" while it shows.
   bool coarse = false;
+  // Out of core (issue 38 part 2, out_of_core_view.h): a study larger than the device (or the
+  // GPU memory budget) drawn part by part. A drag's frame is a preview (the parts on the
+  // device at full resolution, the others from a coarse level); the still frame converges.
+  // The view says RESOLUTIONNOTE while it shows ("" at full resolution) and LIMITSNOTE while
+  // something the out-of-core renderer does not draw is off ("" when nothing is).
+  bool outOfCore = false;
+  OutOfCoreStats outOfCoreStats;
+  std::string resolutionNote, limitsNote;
+};
+
+// How the worker decides on out of core (chooseOutOfCore).
+struct OutOfCoreSettings {
+  size_t budgetBytes = 0;     // the "GPU memory budget" preference; 0: automatic
+  int partSlices = 0;         // OutOfCoreOptions::partSlices (0: about 8 parts fit)
+  int faultDeviceParts = -1;  // OutOfCoreOptions::faultDeviceParts (tests)
+  bool operator==(const OutOfCoreSettings&) const = default;
 };
 
 // A new study of at least this many bytes is previewed from a coarse level before its upload
@@ -80,6 +97,10 @@ class RenderWorker {
   // residencyBudget (time_series.h), so that switching back needs no upload; otherwise
   // (another study) every uploaded volume is released first.
   void setVolume(std::shared_ptr<const Volume> volume, bool sameSeries = false);
+  // How a study is put on the device: in core, or out of core when it does not fit the device
+  // or SETTINGS' budget (a 4D series' time points stay in core). A change that moves the study
+  // shown between the two (or changes its budget) opens it again.
+  void setOutOfCore(OutOfCoreSettings settings);
   // The time points of SERIES not uploaded yet, uploaded one at a time while no frame or
   // volume waits, as far as residencyBudget allows, so that switching to them needs no
   // upload (a frame asked for meanwhile waits for one upload at most). A later setVolume of
@@ -151,6 +172,19 @@ class RenderWorker {
   std::condition_variable wake_;
   bool working_ = false;  // the render thread took work and has not come back for more
   std::shared_ptr<const Volume> pendingVolume_;
+  std::optional<OutOfCoreSettings> pendingOutOfCore_;
+  // The study drawn out of core (null renderer: in core).
+  struct OutOfCoreShown {
+    std::shared_ptr<const Volume> volume;
+    std::unique_ptr<SlabSource> source;
+    std::unique_ptr<OutOfCoreRenderer> renderer;
+    size_t budgetBytes = 0;
+  };
+  // Opens VOLUME out of core within BUDGET on CTX; throws what the renderer throws.
+  static std::unique_ptr<OutOfCoreShown> openOutOfCore(ClContext& ctx,
+                                                       std::shared_ptr<const Volume> volume,
+                                                       size_t budget,
+                                                       const OutOfCoreSettings& settings);
   struct SegmentationUpdate {
     bool replace = false;  // `whole` replaces the copy (null: none)
     std::shared_ptr<const Segmentation> whole;

@@ -38,6 +38,7 @@ RenderScheduler::RenderScheduler(RenderStateModel& state, VolumeDocument& doc,
   cb.preparing = [this](int left) { emit preparingChanged(left); };
   cb.background = [this](std::shared_ptr<const Frame> f) { emit backgroundReady(std::move(f)); };
   worker_ = std::make_unique<RenderWorker>(device.toStdString(), cb, postTo(this));
+  sendOutOfCore();  // before the first study: it opens as the preference says
   stateConnection_ = state_.changed.connect([this](unsigned what) {
     if (what != kSlices) requestFrame();  // the slice views' interpolation is not in 3D
   });
@@ -126,7 +127,17 @@ void RenderScheduler::requestPick() {
     worker_->request(pickFrameParams(fullParams(), doc_.minSpacingMm()), false, kPickTag, true);
 }
 
+void RenderScheduler::sendOutOfCore() {
+  const int mib = state_.quality().gpuBudgetMib;
+  if (mib == sentBudgetMib_) return;
+  sentBudgetMib_ = mib;
+  OutOfCoreSettings o;
+  o.budgetBytes = size_t(mib) << 20;
+  worker_->setOutOfCore(o);
+}
+
 void RenderScheduler::requestFrame() {
+  sendOutOfCore();
   if (doc_.empty()) return;
   if (interacting_) settle_.start();  // restart: refine only once the mouse rests
   adaptive_.setTargetFps(state_.quality().dragFps);

@@ -81,6 +81,8 @@ class RenderScheduler : public QObject {
 
  private:
   void requestFrame();
+  // The GPU memory budget preference to the worker, when it changed (RenderWorker::setOutOfCore).
+  void sendOutOfCore();
   void onFrame(std::shared_ptr<const Frame> frame);
   // The frames likely next: this look's drag frames, the other modes' still and drag frames.
   std::vector<RenderParams> likelyFrames() const;
@@ -97,6 +99,7 @@ class RenderScheduler : public QObject {
   AdaptiveQuality adaptive_;
   ProgressiveRender progressive_;  // cinematic: the next pass while the view is still
   int stateConnection_ = 0, docConnection_ = 0, timeConnection_ = 0;
+  int sentBudgetMib_ = -1;         // the budget the worker has (-1: none sent yet)
   bool sentSegmentation_ = false;  // the worker holds a segmentation: edits send their box
 };
 

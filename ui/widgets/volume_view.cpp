@@ -35,6 +35,8 @@ VolumeView::VolumeView(RenderStateModel& state, VolumeDocument& doc, CrosshairMo
   auto show = [this](std::shared_ptr<const Frame> f) {
     frame_ = toQImage(f->image);
     frameInteractive_ = f->interactive;
+    resolutionNote_ = QString::fromStdString(f->resolutionNote);
+    limitsNote_ = QString::fromStdString(f->limitsNote);
     update();
   };
   connect(&scheduler_, &RenderScheduler::frameReady, this, show);
@@ -141,6 +143,13 @@ void VolumeView::paintEvent(QPaintEvent*) {
     painter.drawPolygon(lasso_.data(), int(lasso_.size()));
     painter.translate(r.topLeft());
   }
+  if (const QString n = frameNote(); !n.isEmpty()) {
+    // Top right, over the image: the study text is top left, the orientation marker bottom
+    // left.
+    const QRect box(QPoint(6, 4), r.size() - QSize(12, 8));
+    painter.setPen(QColor(255, 200, 80));
+    painter.drawText(box, Qt::AlignRight | Qt::AlignTop | Qt::TextWordWrap, n);
+  }
   drawOrientationMarker(painter, proj->g, r.size());
   if (state_.studyText() && !studyTextHidden_)
     drawCornerLines(painter, studyTextLines(v.study), QRect(QPoint(6, 4), r.size()));
@@ -150,6 +159,11 @@ QString VolumeView::note() const {
   if (doc_.empty() || !frame_.isNull()) return {};
   return failed_ ? QString("No 3D image: the renderer failed (see the message)")
                  : QString("Preparing the 3D renderer…");
+}
+
+QString VolumeView::frameNote() const {
+  if (resolutionNote_.isEmpty() || limitsNote_.isEmpty()) return resolutionNote_ + limitsNote_;
+  return resolutionNote_ + "\n" + limitsNote_;
 }
 
 void VolumeView::setStudyTextHidden(bool hidden) {

@@ -37,6 +37,9 @@ class VolumeView : public QWidget {
   // seconds on PoCL, issue 41 item 9), or that rendering failed; "" once a frame shows.
   QString note() const;
   bool lastFrameInteractive() const { return frameInteractive_; }
+  // What the view says over a frame drawn out of core (issue 38): "Not at full resolution (k
+  // of n parts)" while a preview shows, what is off out of core; "" for other frames.
+  QString frameNote() const;
   // Where the 3D image is drawn inside the widget, and its projection (for overlays, tests).
   QRect imageRect() const;
   std::optional<ViewProjection> projection() const;
@@ -81,6 +84,7 @@ class VolumeView : public QWidget {
   RenderScheduler& scheduler_;
   QImage frame_;
   bool frameInteractive_ = false;
+  QString resolutionNote_, limitsNote_;  // the frame's (Frame::resolutionNote, limitsNote)
   bool studyTextHidden_ = false;
   bool failed_ = false;  // a render error came before any frame
   Drag drag_ = Drag::None;
