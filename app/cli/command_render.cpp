@@ -106,6 +106,8 @@ void writeRenderOutput(const std::string& path, const Image& img, const Volume& 
     writeSecondaryCapture(path, {img}, info);
     return;
   }
+#else
+  (void)v;  // a build without DICOM writes no Secondary Capture
 #endif
   writeImage(path, img);
 }
