@@ -54,6 +54,8 @@ class ZarrSource : public SlabSource {
     level0_.readSlices(first, end, dest);
   }
   int preferredSlices() const override { return level0_.chunkSlices(); }
+  std::optional<ValueRange> statedRange() const override { return level0_.statedRange(); }
+  size_t missingChunks() const override { return level0_.missingChunks(); }
   const Volume& coarse() override {
     if (coarse_) return *coarse_;
     const Volume& g = level0_.geometry();

@@ -278,6 +278,7 @@ struct OmeZarrLevel::Impl {
   Volume geometry;
   size_t missing = 0;
   uint64_t read = 0;
+  int level = 0;
   std::vector<uint8_t> samples;  // an 8-bit range before it widens to int16
   explicit Impl(ZarrStore& s) : store(s) {}
 };
@@ -286,6 +287,7 @@ OmeZarrLevel::OmeZarrLevel(ZarrStore& store, int level) : impl_(std::make_unique
   Impl& m = *impl_;
   m.pyramid = zarr::readPyramid(store);
   zarr::checkLevelIndex(m.pyramid, level, store.where(""));
+  m.level = level;
   m.meta = zarr::readArrayMeta(store, m.pyramid.levels[size_t(level)].path, m.pyramid.format);
   m.geometry = zarr::describeLevel(m.pyramid, level, m.meta, store.where(""));
   using K = detail::SampleKind;
@@ -306,6 +308,10 @@ int OmeZarrLevel::chunkSlices() const {
 }
 size_t OmeZarrLevel::missingChunks() const { return impl_->missing; }
 uint64_t OmeZarrLevel::chunksRead() const { return impl_->read; }
+std::optional<ValueRange> OmeZarrLevel::statedRange() const {
+  if (impl_->level != 0) return std::nullopt;
+  return impl_->pyramid.level0Range;
+}
 
 void OmeZarrLevel::readSlices(int first, int end, int16_t* dest) {
   Impl& m = *impl_;

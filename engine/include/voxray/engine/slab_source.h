@@ -5,6 +5,7 @@
 // the full volume's box, shown where the device does not hold the full slices.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "voxray/io/volume.h"
@@ -32,6 +33,14 @@ class SlabSource {
   // Slices a read is best aligned to (a Zarr chunk's depth: a read across a chunk decodes it
   // whole); 0: any.
   virtual int preferredSlices() const { return 0; }
+  // The volume's smallest and largest stored value when the source knows them without a pass
+  // over the voxels: an OME-Zarr Voxray wrote states them, a raw file's source found them
+  // making its coarse level. Else none (the renderer starts from the coarse level's). A hint:
+  // the renderer checks it against the voxels as it reads them (out_of_core.h).
+  virtual std::optional<ValueRange> statedRange() const { return std::nullopt; }
+  // Chunks read so far that were missing, shown as empty (their fill value); 0 for sources
+  // without chunks.
+  virtual size_t missingChunks() const { return 0; }
   // A coarse level with the full volume's box (coarse_level.h's geometry), made or read once
   // and held by the source.
   virtual const Volume& coarse() = 0;
