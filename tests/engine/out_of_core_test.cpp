@@ -20,6 +20,7 @@
 #include "voxray/engine/out_of_core.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/error.h"
+#include "voxray/io/raw_import.h"
 #ifdef VOXRAY_HAS_ZARR
 #include "voxray/io/ome_zarr.h"
 #endif
@@ -408,6 +409,79 @@ TEST(OutOfCoreCells, StreamedEqualWhole) {
         << range.x << " to " << range.y;
     EXPECT_EQ(part.size(), size_t(rows.y - rows.x) * row);
   }
+}
+
+// A raw file read with pread a range of slices at a time: the converged frame equals the one
+// from the same file loaded whole (importRaw), bit for bit, for a layout whose storage needs no
+// look at the values (big-endian i16 as it is: no pass before the first image but the coarse
+// level's) and for one that needs the values (an intercept that could leave int16: the reader
+// scans them first, as importRaw does, and stores them alike). A folder of slice files too.
+TEST(OutOfCoreRaw, ReadOnDemandEqualsLoadedWhole) {
+  const Volume& v = tallVolume();
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("voxray-ooc-raw-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "slices");
+  const size_t slice = size_t(v.dims.x) * v.dims.y;
+  std::vector<uint8_t> bytes(v.voxels.size() * 2);
+  for (size_t i = 0; i < v.voxels.size(); ++i) {  // big endian
+    bytes[2 * i] = uint8_t(uint16_t(v.voxels[i]) >> 8);
+    bytes[2 * i + 1] = uint8_t(uint16_t(v.voxels[i]) & 0xff);
+  }
+  const std::string file = (dir / "tall.raw").string();
+  std::ofstream(file, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  for (int z = 0; z < v.dims.z; ++z)
+    std::ofstream((dir / "slices" / ("s." + std::to_string(z + 1))).string(), std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data() + size_t(z) * slice * 2),
+               std::streamsize(slice * 2));
+  RawLayout layout;
+  layout.dims = v.dims;
+  layout.order = ByteOrder::Big;
+  layout.spacingMm = v.spacingMm;
+  RawLayout shifted = layout;  // -32768 - 1024 would not fit int16: the values decide
+  shifted.intercept = -1024.0;
+  RawLayout stack = layout;
+  stack.dims.z = 0;  // every file of the folder
+  struct Input {
+    std::string path;
+    RawLayout layout;
+    bool scanned;
+  };
+  const RenderParams p = frame(Mode::Dvr, View::Oblique);
+  for (const Input& in : {Input{file, layout, false}, Input{file, shifted, true},
+                          Input{(dir / "slices").string(), stack, false}}) {
+    const Volume whole = importRaw(in.path, in.layout);
+    EXPECT_EQ(RawSliceReader(in.path, in.layout).scanned(), in.scanned) << in.path;
+    auto raw = rawSlabSource(in.path, in.layout);
+    auto mem = volumeSlabSource(whole);
+    const Volume& g = raw->geometry();
+    EXPECT_EQ(g.dims, whole.dims);
+    EXPECT_EQ(g.slope, whole.slope);
+    EXPECT_EQ(g.intercept, whole.intercept);
+    EXPECT_EQ(g.unit, whole.unit);
+    std::vector<int16_t> part(slice * 21);
+    raw->readSlices(40, 61, part.data());
+    EXPECT_TRUE(std::equal(part.begin(), part.end(), whole.voxels.begin() + 40 * slice));
+    OutOfCoreRenderer a(test::pocl(), *raw, thirdOf(v)), b(test::pocl(), *mem, thirdOf(v));
+    ASSERT_GT(a.partCount(), 2);
+    // The coarse level's pass found the exact range: the first converged frame is not redrawn.
+    ASSERT_TRUE(raw->statedRange().has_value());
+    EXPECT_EQ(raw->statedRange()->min, storedRange(whole).min);
+    EXPECT_EQ(raw->statedRange()->max, storedRange(whole).max);
+    for (Mode mode : {Mode::Dvr, Mode::Mip}) {
+      RenderParams q = frame(mode, View::Oblique);
+      Image ia, ib;
+      OutOfCoreStats s;
+      a.render(q, ia, &s);
+      EXPECT_FALSE(s.redrawnForRange);
+      b.render(q, ib);
+      EXPECT_EQ(test::maxDiff(ia, ib), 0) << in.path << " " << toString(mode);
+      EXPECT_GT(litPixels(ia), int(ia.rgba.size() / 4 / 50));
+    }
+  }
+  EXPECT_THROW(rawSlabSource((dir / "missing.raw").string(), layout), Error);
+  std::filesystem::remove_all(dir);
 }
 
 #ifdef VOXRAY_HAS_ZARR

@@ -11,6 +11,10 @@
 #include "voxray/io/volume.h"
 
 namespace voxray {
+struct RawLayout;
+}
+
+namespace voxray {
 
 class SlabSource {
  public:
@@ -50,6 +54,12 @@ class SlabSource {
 
 // VOLUME (which must outlive the source), its coarse level the box mean of FACTOR (4 or 8).
 std::unique_ptr<SlabSource> volumeSlabSource(const Volume& volume, int coarseFactor = 4);
+
+// The raw INPUT (a file, a slice folder or pattern) under LAYOUT, read a range of slices at a
+// time with pread, never whole (RawSliceReader: values stored as importRaw stores them). The
+// coarse level, the 4x box mean, and the value range come from one streamed pass when the
+// renderer asks for the coarse level. Throws Error (Input) as importRaw does.
+std::unique_ptr<SlabSource> rawSlabSource(const std::string& input, const RawLayout& layout);
 
 #ifdef VOXRAY_HAS_ZARR
 // Level 0 of the OME-Zarr at PATH, read on demand; its coarse level the pyramid's first level
