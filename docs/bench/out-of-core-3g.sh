@@ -28,15 +28,16 @@ fi
 nproc; free -g | head -2; cat /proc/loadavg
 if [ ! -d "$Z" ]; then
   echo "== convert (the whole volume is loaded, then written in slabs)"
-  $TIME $B convert $IN -o "$Z"
+  # shellcheck disable=SC2086
+  $TIME "$B" convert $IN -o "$Z"
   cat /proc/loadavg
 fi
 echo "== OME-Zarr streamed, budget $BUDGET MiB, parts of $PARTS slices, prlimit --as=$LIMIT"
 # shellcheck disable=SC2086
-$TIME prlimit --as="$LIMIT" $B bench "$Z" $LOOK --memory-budget "$BUDGET" --part-slices "$PARTS"
+$TIME prlimit --as="$LIMIT" "$B" bench "$Z" $LOOK --memory-budget "$BUDGET" --part-slices "$PARTS"
 cat /proc/loadavg
 echo "== raw file read with pread, budget $BUDGET MiB, parts of $PARTS slices, prlimit --as=$LIMIT"
 # shellcheck disable=SC2086
-$TIME prlimit --as="$LIMIT" $B bench $IN $LOOK --memory-budget "$BUDGET" --part-slices "$PARTS"
+$TIME prlimit --as="$LIMIT" "$B" bench $IN $LOOK --memory-budget "$BUDGET" --part-slices "$PARTS"
 cat /proc/loadavg
 [ "${KEEP:-0}" = 1 ] || rm -rf "$RAW" "$Z" "$DIR/ct512.raw"
