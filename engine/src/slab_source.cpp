@@ -125,12 +125,17 @@ class ZarrSource : public SlabSource {
   const Volume& coarse() override {
     if (coarse_) return *coarse_;
     const Volume& g = level0_.geometry();
-    // The first level with at most 1/64 of the voxels (a 4x mean along each axis), else the
-    // coarsest: opening then reads that level alone.
+    // The first level with at most 1/64 of the voxels (a 4x mean along each axis) and at most
+    // kCoarseBytes, else the coarsest: opening then reads that level alone. The cap: the first
+    // image waits for it and every preview marches it; the 8 GiB CT's 4x level (128 MiB) took
+    // 1.9 s to open and 3.4 s a 512x512 preview on the shared 2-core Xeon (run E in
+    // docs/bench/out-of-core-pocl.txt), against the 2 s to the first image.
+    constexpr size_t kCoarseBytes = size_t(32) << 20;
     int pick = level0_.levelCount() - 1;
     for (int l = 1; l < level0_.levelCount(); ++l) {
       OmeZarrLevel level(*store_, l);
-      if (level.geometry().voxelCount() * 64 <= g.voxelCount()) {
+      const size_t n = level.geometry().voxelCount();
+      if (n * 64 <= g.voxelCount() && n * sizeof(int16_t) <= kCoarseBytes) {
         pick = l;
         break;
       }
