@@ -12,6 +12,7 @@
 #include "voxray/engine/out_of_core.h"
 #include "voxray/io/error.h"
 #include "voxray/io/image.h"
+#include "voxray/io/raw_import.h"
 #include "voxray/io/statistics.h"
 #ifdef VOXRAY_HAS_ZARR
 #include "voxray/io/ome_zarr.h"
@@ -25,7 +26,8 @@ void OutOfCoreOption::add(CLI::App& cmd) {
   cmd.add_option("--memory-budget", budgetMib,
                  "render out of core on one device holding at most MIB of the volume (its "
                  "parts, coarse level and empty-space cells): the rest is uploaded part by part "
-                 "as each frame needs it; an OME-Zarr INPUT is read on demand, never whole")
+                 "as each frame needs it; an OME-Zarr or raw INPUT is read on demand, never "
+                 "whole")
       ->check(CLI::Range(size_t(1), size_t(1) << 30));
   cmd.add_option("--part-slices", partSlices,
                  "with --memory-budget: slices each part owns (default: about 8 parts fit)")
@@ -48,6 +50,10 @@ std::unique_ptr<SlabSource> openSlabSource(const InputOptions& input, std::optio
     return omeZarrSlabSource(input.input);
   }
 #endif
+  // A raw input is read with pread a range of slices at a time, never whole.
+  const LoadOptions o = input.loadOptions();
+  if (o.raw && !input.input.empty() && input.input.rfind("db:", 0) != 0)
+    return rawSlabSource(input.input, *o.raw);
   held = input.load();
   return volumeSlabSource(*held);
 }
@@ -81,12 +87,15 @@ int renderOutOfCore(const OutOfCoreOption& option, SlabSource& source, const Ren
   std::fprintf(stderr,
                "rendered %dx%d %s on %s out of core in %.0f ms (first frame includes the kernel "
                "builds): %d parts, %d held after it, %d uploaded (%.0f MiB%s; read %.0f ms, copied "
-               "%.0f ms, kernels %.0f ms, %.0f ms of them overlapped); opening %.0f ms; %s%s\n",
+               "%.0f ms, kernels %.0f ms, %.0f ms of them overlapped); opening %.0f ms; %s%s%s\n",
                p.width, p.height, toString(p.mode), ctx.device().name.c_str(), s.totalMs, s.parts,
                s.partsResident, s.uploads, mibOf(s.bytesUploaded), s.pinned ? ", pinned" : "",
                s.readMs, s.uploadMs, s.kernelMs, s.overlapMs, r.openMs(),
                s.fullResolution ? "full resolution" : "NOT at full resolution",
-               s.deviceOutOfMemory ? (": " + s.message).c_str() : "");
+               s.deviceOutOfMemory ? (": " + s.message).c_str() : "",
+               s.redrawnForRange ? " (drawn twice: the value range grew as the parts were read)"
+                                 : "");
+  if (!s.note.empty()) std::cerr << "voxray-cli: warning: " << s.note << "\n";
   for (const std::string& w : source.geometry().warnings)
     std::cerr << "voxray-cli: warning: " << w << "\n";
   std::cerr << "-> " << output << "\n";
@@ -107,7 +116,12 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
   // built here).
   r.preview(p, img, &s);
   const double firstMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  const double firstCells = s.cellsKnown;
   r.render(p, img, &s);  // the converged frame's kernels, and the cache filled
+  const double convergedAtMs =
+      std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  const bool redrawn = s.redrawnForRange;
+  const std::string note = s.note;
   std::vector<double> preview, converged, uploaded, uploads, readMs, uploadMs, kernelMs, overlapMs;
   bool pinned = false;
   int coarseParts = 0;
@@ -145,6 +159,10 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                           {"preview_coarse_parts", coarseParts},
                           {"open_ms", r.openMs()},
                           {"first_image_ms", firstMs},
+                          {"first_image_cells_known", firstCells},
+                          {"first_converged_at_ms", convergedAtMs},
+                          {"first_converged_redrawn", redrawn},
+                          {"note", note},
                           {"preview_median_ms", previewMs},
                           {"preview_fps", 1000.0 / previewMs},
                           {"converged_median_ms", convergedMs},
@@ -163,8 +181,8 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
   char line[768];
   std::snprintf(line, sizeof(line),
                 "%s %dx%d %s on %s, %s: %.0f MiB volume, budget %zu MiB: %d parts, %d held\n"
-                "  first image %.0f ms (opening %.0f ms: one pass over the source, the coarse "
-                "level)\n"
+                "  first image %.0f ms (opening %.0f ms: the coarse level); first converged frame "
+                "done at %.0f ms%s\n"
                 "  preview (orbit, %d parts coarse): median %.1f ms, %.2f fps\n"
                 "  converged: median %.0f ms, %.0f parts / %.0f MiB uploaded per frame (%s)\n"
                 "    per converged frame: read %.0f ms, upload %.0f ms, kernels %.0f ms, of "
@@ -173,11 +191,14 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                 "medians\n",
                 name.c_str(), p.width, p.height, toString(p.mode), ctx.device().name.c_str(),
                 source.describe().c_str(), volumeMib, option.budgetMib, r.partCount(),
-                r.residentCount(), firstMs, r.openMs(), coarseParts, previewMs, 1000.0 / previewMs,
-                convergedMs, median(uploads), median(uploaded), pinned ? "pinned" : "direct",
-                median(readMs), median(uploadMs), median(kernelMs), median(overlapMs), peak,
+                r.residentCount(), firstMs, r.openMs(), convergedAtMs,
+                redrawn ? " (drawn twice: the range grew)" : "", coarseParts, previewMs,
+                1000.0 / previewMs, convergedMs, median(uploads), median(uploaded),
+                pinned ? "pinned" : "direct", median(readMs), median(uploadMs), median(kernelMs),
+                median(overlapMs), peak,
                 bench.frames);
   out << line;
+  if (!note.empty()) out << "  note: " << note << "\n";
 }
 
 }  // namespace voxray::cli

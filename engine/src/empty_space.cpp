@@ -1,6 +1,7 @@
 #include "empty_space.h"
 
 #include <algorithm>
+#include <cstring>
 #include <utility>
 
 #include "cl_context_impl.h"
@@ -43,6 +44,29 @@ void EmptySpace::upload(ContextImpl& cl, MacroCells cells) {
     scratch_ = cl::Buffer(cl.context, CL_MEM_READ_WRITE, n);
     return 0;
   });
+  key_.clear();
+}
+
+void EmptySpace::replaceRows(ContextImpl& cl, const glm::ivec2& rows, const int16_t* minMax) {
+  const size_t row = size_t(cells_.dims.x) * size_t(cells_.dims.y) * 2;
+  const size_t at = size_t(rows.x) * row, count = size_t(rows.y - rows.x) * row;
+  if (count == 0) return;
+  clCall([&] {
+    // Blocking, in an in-order queue: mapped once the launches queued before are done with
+    // the old rows (a CPU device reads cells_ in place: they change only then).
+    void* p = cl.queue.enqueueMapBuffer(range_, CL_TRUE, CL_MAP_WRITE, at * sizeof(int16_t),
+                                        count * sizeof(int16_t));
+    std::copy_n(minMax, count, cells_.minMax.begin() + ptrdiff_t(at));
+    if (p != cells_.minMax.data() + at) std::memcpy(p, minMax, count * sizeof(int16_t));
+    cl.queue.enqueueUnmapMemObject(range_, p);
+    cl.queue.finish();
+    return 0;
+  });
+  valueLo_ = INT16_MAX, valueHi_ = INT16_MIN;
+  for (size_t c = 0; c + 1 < cells_.minMax.size(); c += 2) {
+    valueLo_ = std::min<int>(valueLo_, cells_.minMax[c]);
+    valueHi_ = std::max<int>(valueHi_, cells_.minMax[c + 1]);
+  }
   key_.clear();
 }
 

@@ -23,6 +23,10 @@ class EmptySpace {
   // The same from cells computed elsewhere (an out-of-core volume's, streamed: out_of_core.h).
   // Without the volume, iso packets' block bits cannot be made: their frames must not ask.
   void upload(ContextImpl& cl, MacroCells cells);
+  // Replaces the cell rows along z from ROWS.x to ROWS.y with MINMAX (as MacroCells::minMax)
+  // on the host and the device, once the queue is done with them; the next classification
+  // follows (an out-of-core volume's rows, found as its parts are first read).
+  void replaceRows(ContextImpl& cl, const glm::ivec2& rows, const int16_t* minMax);
   // Brings the occupancy up to date for a frame whose parameters k are already enqueued
   // in params and lutBuffer (the queue is in order). mip needs none: it reads the min/max
   // directly. adaptive (dvr): also each cell's step level (kernels/empty_space/classify.cl,

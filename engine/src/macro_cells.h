@@ -25,4 +25,12 @@ struct MacroCells {
 // those voxels, with one to spare. Runs on all hardware threads.
 MacroCells computeMacroCells(const Volume& v);
 
+// The rows of cells along z [x, y) whose voxels all lie in slices [FIRST, END) of a volume of
+// SLICES slices (out-of-core parts: out_of_core.h); (0, 0) when none does.
+glm::ivec2 completeCellRows(int first, int end, int slices);
+// Those ROWS' min/max (as MacroCells::minMax, from row ROWS.x) of a volume of DIMS from its
+// slices held at SLICES from slice FIRST on; equal to computeMacroCells' rows of the whole.
+std::vector<int16_t> computeMacroCellRows(const int16_t* slices, int first, const glm::ivec3& dims,
+                                          const glm::ivec2& rows);
+
 }  // namespace voxray

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 #include <numeric>
+#include <optional>
+#include <utility>
 
 #include "device_frame.h"
 #include "empty_space.h"
@@ -140,6 +142,16 @@ struct OutOfCoreRenderer::Impl {
   std::vector<cl::Event> kernelEvents, copyEvents;
   double kernelMs = 0.0, copyMs = 0.0;
   void harvest();
+  // The cell rows along z made from the voxels so far (out_of_core.h), those not yet applied,
+  // the values they hold, and the range the source stated or the coarse level's.
+  std::vector<char> rowKnown;
+  int rowsKnown = 0;
+  std::vector<std::pair<glm::ivec2, std::vector<int16_t>>> pendingRows;
+  int knownLo = INT16_MAX, knownHi = INT16_MIN;
+  ValueRange hint{};
+  bool hintStated = false;
+  ValueRange used{};  // what the frames' tables span now
+  std::string note;
 
   Impl(ContextImpl& c, SlabSource& s, const OutOfCoreOptions& opts, VolumeStorage st)
       : cl(c),
@@ -178,10 +190,13 @@ struct OutOfCoreRenderer::Impl {
     part.lastUse = cl::Event();
     part.ready = cl::Event();
   }
+  void learnRows(const int16_t* slices, int first, int end);
+  ValueRange currentRange() const;
+  bool applyLearned();
   void keys(std::vector<Item>& items, const RenderParams& p);
   void launch(const Item& item, const RenderParams& p);
   void setUp(DeviceFrame& f, EmptySpace& space, const RenderParams& p, RaycastParams& k,
-             std::string& options);
+             std::string& options, bool classify = true);
 };
 
 // Two pinned buffers of the largest part: one is filled from the source while the other's copy
@@ -258,6 +273,8 @@ void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
   } else {
     src.readSlices(r.storedFirst, r.storedEnd, slot.ptr);
   }
+  // The empty-space cells and the range from the slices as the Direct path learns them.
+  if (rowsKnown < int(rowKnown.size())) learnRows(slot.ptr, r.storedFirst, r.storedEnd);
   s.readMs += msSince(t0);
   // The evicted parts' memory is free once their last launches are done: wait for those alone
   // (the part drawn just before, in a frame that evicts in order) so that the budget is what
@@ -299,6 +316,51 @@ void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
   copyEvents.push_back(copied);
 }
 
+// The cell rows all of whose voxels lie in slices [FIRST, END) (held at SLICES) and are not
+// known yet: made now (on the host, while the device renders), applied at the next frame.
+void OutOfCoreRenderer::Impl::learnRows(const int16_t* slices, int first, int end) {
+  glm::ivec2 rows = completeCellRows(first, end, geom.dims.z);
+  while (rows.x < rows.y && rowKnown[size_t(rows.x)]) ++rows.x;
+  while (rows.x < rows.y && rowKnown[size_t(rows.y - 1)]) --rows.y;
+  if (rows.x >= rows.y) return;
+  std::vector<int16_t> mm = computeMacroCellRows(slices, first, geom.dims, rows);
+  for (size_t c = 0; c + 1 < mm.size(); c += 2) {
+    knownLo = std::min<int>(knownLo, mm[c]);
+    knownHi = std::max<int>(knownHi, mm[c + 1]);
+  }
+  for (int r = rows.x; r < rows.y; ++r) {
+    rowsKnown += !rowKnown[size_t(r)];
+    rowKnown[size_t(r)] = 1;
+  }
+  if (o.emptySpaceSkipping) pendingRows.emplace_back(rows, std::move(mm));
+}
+
+// Every row known: the voxels' range, as in core. Else the hint widened to the rows known.
+ValueRange OutOfCoreRenderer::Impl::currentRange() const {
+  if (rowsKnown == int(rowKnown.size())) return {int16_t(knownLo), int16_t(knownHi)};
+  if (rowsKnown == 0) return hint;
+  return {int16_t(std::min<int>(hint.min, knownLo)), int16_t(std::max<int>(hint.max, knownHi))};
+}
+
+// The learned rows to the device and the range to the tables. True when the range changed.
+bool OutOfCoreRenderer::Impl::applyLearned() {
+  for (const auto& [rows, mm] : pendingRows) fullSpace.replaceRows(cl, rows, mm.data());
+  pendingRows.clear();
+  const ValueRange r = currentRange();
+  if (rowsKnown == int(rowKnown.size()) && hintStated && note.empty() &&
+      (r.min != hint.min || r.max != hint.max))
+    note = "the value range the source states (" + std::to_string(hint.min) + " to " +
+           std::to_string(hint.max) + ") is not its voxels' (" + std::to_string(r.min) + " to " +
+           std::to_string(r.max) + "): the voxels' is used";
+  if (r.min == used.min && r.max == used.max) return false;
+  used = r;
+  full.valueRange = r;
+  coarseFrame.valueRange = r;  // the coarse level's colours are the full volume's
+  full.setupKey.reset();       // the tables are made again for the new range
+  coarseFrame.setupKey.reset();
+  return true;
+}
+
 void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
   const PartRange& r = part.range;
   const glm::ivec3 n = geom.dims;
@@ -330,6 +392,7 @@ void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
     src.readSlices(r.storedFirst, r.storedEnd, staging.data());
     in = staging.data();
   }
+  if (rowsKnown < int(rowKnown.size())) learnRows(in, r.storedFirst, r.storedEnd);
   const auto t1 = Clock::now();
   s.readMs += std::chrono::duration<double, std::milli>(t1 - t0).count();
   // An evicted part's memory is freed once the launches queued on it are done: wait for them
@@ -383,7 +446,7 @@ void OutOfCoreRenderer::Impl::keys(std::vector<Item>& items, const RenderParams&
 }
 
 void OutOfCoreRenderer::Impl::setUp(DeviceFrame& f, EmptySpace& space, const RenderParams& p,
-                                    RaycastParams& k, std::string& options) {
+                                    RaycastParams& k, std::string& options, bool classify) {
   KernelFacts facts;
   facts.emptySpaceSkipping = o.emptySpaceSkipping;
   facts.storageImage = storage == VolumeStorage::Image3d;
@@ -395,7 +458,7 @@ void OutOfCoreRenderer::Impl::setUp(DeviceFrame& f, EmptySpace& space, const Ren
   options = "-cl-fast-relaxed-math " + switchOptions(sw, false);
   clCall([&] {
     f.uploadFrame(k);
-    if (o.emptySpaceSkipping && p.mode != Mode::Mip)
+    if (classify && o.emptySpaceSkipping && p.mode != Mode::Mip)
       space.classify(cl, f.paramsBuffer, f.lutBuffer, k, p.mode, f.setup.lut, false, false, false);
     return 0;
   });
@@ -537,18 +600,35 @@ OutOfCoreRenderer::OutOfCoreRenderer(ClContext& context, SlabSource& source,
     if (p.bytes > m.partBudget) tooSmall(size_t(p.range.storedEnd - p.range.storedFirst));
     m.parts.push_back(std::move(p));
   }
-  // One pass over the source: the empty-space cells and the value range the tables map.
-  const int chunk = source.preferredSlices();
-  MacroCells mc = source.whole() ? computeMacroCells(*source.whole())
-                                 : streamMacroCells(source, chunk > 0 ? (chunk + 3) / 4 * 4 : 64);
-  int lo = INT16_MAX, hi = INT16_MIN;
-  for (size_t c = 0; c + 1 < mc.minMax.size(); c += 2) {
-    lo = std::min<int>(lo, mc.minMax[c]);
-    hi = std::max<int>(hi, mc.minMax[c + 1]);
+  // No pass over the source (out_of_core.h): an in-memory source's cells and range are made in
+  // place; a streamed source's cells start conservative and its range as stated or coarse.
+  const int rows = cells.z;
+  m.rowKnown.assign(size_t(rows), 0);
+  MacroCells mc;
+  if (source.whole()) {
+    mc = computeMacroCells(*source.whole());
+    for (size_t c = 0; c + 1 < mc.minMax.size(); c += 2) {
+      m.knownLo = std::min<int>(m.knownLo, mc.minMax[c]);
+      m.knownHi = std::max<int>(m.knownHi, mc.minMax[c + 1]);
+    }
+    m.rowKnown.assign(size_t(rows), 1);
+    m.rowsKnown = rows;
+  } else {
+    if (options.emptySpaceSkipping) {
+      mc.dims = cells;
+      mc.minMax.resize(size_t(cells.x) * size_t(cells.y) * size_t(cells.z) * 2);
+      for (size_t c = 0; c < mc.minMax.size(); c += 2) {
+        mc.minMax[c] = INT16_MIN;
+        mc.minMax[c + 1] = INT16_MAX;
+      }
+    }
+    const std::optional<ValueRange> stated = source.statedRange();
+    m.hintStated = stated.has_value();
+    m.hint = stated ? *stated : storedRange(m.coarse);
   }
-  const ValueRange range{int16_t(lo), int16_t(hi)};
-  m.full.valueRange = range;
-  m.coarseFrame.valueRange = range;  // the coarse level's colours are the full volume's
+  m.used = m.currentRange();
+  m.full.valueRange = m.used;
+  m.coarseFrame.valueRange = m.used;  // the coarse level's colours are the full volume's
   try {
     clCall([&] {
       m.full.paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
@@ -602,7 +682,23 @@ size_t OutOfCoreRenderer::partBytesLargest() const {
 double OutOfCoreRenderer::openMs() const { return impl_->openMs; }
 
 void OutOfCoreRenderer::render(const RenderParams& p, Image& out, OutOfCoreStats* stats) {
-  draw(p, out, stats, true);
+  OutOfCoreStats first;
+  draw(p, out, &first, true);
+  // Its parts widened the range its tables spanned: again, with the range every part agrees
+  // on (all read now, unless the device held too few: then the frame says so anyway).
+  if (impl_->applyLearned()) {
+    draw(p, out, stats, true);
+    if (stats) {
+      stats->redrawnForRange = true;
+      stats->uploads += first.uploads;
+      stats->bytesUploaded += first.bytesUploaded;
+      stats->readMs += first.readMs;
+      stats->uploadMs += first.uploadMs;
+      stats->totalMs += first.totalMs;
+    }
+  } else if (stats) {
+    *stats = first;
+  }
 }
 
 void OutOfCoreRenderer::preview(const RenderParams& p, Image& out, OutOfCoreStats* stats) {
@@ -617,6 +713,7 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
                      toString(p.lighting) + ": render it without --memory-budget");
   if (p.width <= 0 || p.height <= 0) throw inputError("the image size must be positive");
   Impl& m = *impl_;
+  m.applyLearned();
   OutOfCoreStats s;
   s.parts = int(m.parts.size());
   RaycastParams k{};
@@ -633,7 +730,6 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
                   m.full.setup.stepMm, stepSlices, m.o.apron - 2, m.o.apron);
     throw inputError(std::string(text) + ": render with a finer --step");
   }
-  m.setUp(m.full, m.fullSpace, p, k, options);
   // The items: in a converged frame every part; in a preview the resident parts and the runs
   // of parts between them from the coarse level (one launch per run).
   std::vector<Impl::Item> items;
@@ -648,6 +744,11 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
     }
   }
   m.keys(items, p);
+  // A preview with no part on the device draws none: the full volume's cells need no
+  // classification (at first they are all conservative, 67 M of them for 8 GiB).
+  const bool anyPart =
+      std::any_of(items.begin(), items.end(), [](const Impl::Item& it) { return it.part >= 0; });
+  m.setUp(m.full, m.fullSpace, p, k, options, anyPart);
   const size_t pixels = size_t(p.width) * size_t(p.height);
   clCall([&] {
     if (pixels > m.capacity) {
@@ -778,6 +879,15 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
     }
   });
   s.partsResident = residentCount();
+  s.cellsKnown = m.rowKnown.empty() ? 1.0 : double(m.rowsKnown) / double(m.rowKnown.size());
+  s.missingChunks = m.src.missingChunks();
+  s.note = m.note;
+  if (s.missingChunks) {
+    const std::string missing = std::to_string(s.missingChunks) +
+                                " chunks of the volume were missing where it was read: drawn "
+                                "empty (their fill value); the store is incomplete, copy it again";
+    s.note = s.note.empty() ? missing : s.note + "; " + missing;
+  }
   s.totalMs = msSince(start);
   if (stats) *stats = s;
 }

@@ -288,6 +288,95 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   return v;
 }
 
+struct RawSliceReader::Impl {
+  std::vector<SliceSource> sources;
+  detail::SampleDecoding decoding;
+  detail::Storage storage;
+  Volume geometry;
+  size_t sliceBytes = 0;
+  bool scanned = false;
+};
+
+RawSliceReader::RawSliceReader(const std::string& input, const RawLayout& layout)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  RawLayout l = layout;
+  l.zSlab.reset();
+  int z = 0;
+  m.sources = listSources(input, l, z);
+  m.decoding = detail::decodingOf(l);
+  const size_t sliceVoxels = size_t(l.dims.x) * size_t(l.dims.y);
+  m.sliceBytes = sliceVoxels * sampleBytes(l.type);
+  // The type's whole range, rescaled: when importRaw's choice for it keeps the values as they
+  // are, its choice for the actual values (a part of that range) does too.
+  const bool integerType = l.type == SampleType::U8 || l.type == SampleType::I16;
+  detail::ValueStats typeRange;
+  if (integerType) {
+    const double a = l.type == SampleType::U8 ? 0.0 : -32768.0;
+    const double b = l.type == SampleType::U8 ? 255.0 : 32767.0;
+    typeRange.min = std::min(a * l.slope, b * l.slope) + l.intercept;
+    typeRange.max = std::max(a * l.slope, b * l.slope) + l.intercept;
+    typeRange.any = true;
+    typeRange.integral = l.slope == std::floor(l.slope) && l.intercept == std::floor(l.intercept);
+  }
+  const detail::Storage asIs = detail::chooseStorage(typeRange, m.decoding);
+  if (integerType && typeRange.integral && asIs.slope == 1.0 && asIs.intercept == 0.0 &&
+      asIs.warning.empty()) {
+    m.storage = asIs;
+  } else {
+    // As importRaw: the storage from every value. One slice at a time (a slice per thread).
+    std::vector<detail::ValueStats> stats(static_cast<size_t>(z));
+    parallelFor(size_t(z), [&](size_t k) {
+      std::vector<uint8_t> slice(m.sliceBytes);
+      readExactly(m.sources[k], slice.data(), m.sliceBytes);
+      stats[k] = detail::scanSamples(slice.data(), sliceVoxels, m.decoding);
+    });
+    detail::ValueStats all;
+    for (const auto& st : stats) all.merge(st);
+    m.storage = detail::chooseStorage(all, m.decoding);
+    m.scanned = true;
+  }
+  Volume& v = m.geometry;
+  v.dims = {l.dims.x, l.dims.y, z};
+  v.spacingMm = l.spacingMm;
+  v.direction = l.direction;
+  v.slope = m.storage.slope;
+  v.intercept = m.storage.intercept;
+  v.unit = rawValueUnit(l);
+  v.sourceType = toString(l.type);
+  if (!m.storage.warning.empty()) v.warnings.push_back(m.storage.warning);
+}
+
+RawSliceReader::~RawSliceReader() = default;
+
+const Volume& RawSliceReader::geometry() const { return impl_->geometry; }
+bool RawSliceReader::scanned() const { return impl_->scanned; }
+
+void RawSliceReader::readSlices(int first, int end, int16_t* dest) const {
+  const Impl& m = *impl_;
+  const glm::ivec3 d = m.geometry.dims;
+  if (first < 0 || end > d.z || first >= end) {
+    std::string text = "slices ";  // appended: GCC 12 warns falsely on a + chain here
+    text += std::to_string(first);
+    text += " to ";
+    text += std::to_string(end - 1);
+    text += " are not within the ";
+    text += std::to_string(d.z);
+    text += " slices of the raw input";
+    throw inputError(text);
+  }
+  const size_t sliceVoxels = size_t(d.x) * size_t(d.y);
+  const bool inPlace = m.sliceBytes == sliceVoxels * sizeof(int16_t);
+  parallelFor(size_t(end - first), [&](size_t i) {
+    int16_t* out = dest + i * sliceVoxels;
+    std::vector<uint8_t> samples(inPlace ? 0 : m.sliceBytes);
+    uint8_t* raw = inPlace ? reinterpret_cast<uint8_t*>(out) : samples.data();
+    readExactly(m.sources[size_t(first) + i], raw, m.sliceBytes);
+    // In place for 16-bit samples: each is read before its voxel is written (as importRaw).
+    detail::storeSamples(raw, sliceVoxels, m.decoding, m.storage, out);
+  });
+}
+
 namespace {
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });

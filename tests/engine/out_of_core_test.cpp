@@ -9,7 +9,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <regex>
+#include <sstream>
 
 #include "stability_helpers.h"
 #include "streamed_cells.h"
@@ -17,6 +20,7 @@
 #include "voxray/engine/out_of_core.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/io/error.h"
+#include "voxray/io/raw_import.h"
 #ifdef VOXRAY_HAS_ZARR
 #include "voxray/io/ome_zarr.h"
 #endif
@@ -390,6 +394,94 @@ TEST(OutOfCoreCells, StreamedEqualWhole) {
     EXPECT_EQ(streamed.dims, whole.dims);
     EXPECT_TRUE(streamed.minMax == whole.minMax) << "group " << group;
   }
+  // A part's complete rows from its slices alone equal the whole's rows: slices [9, 30) hold
+  // every voxel of rows 3 to 6 (row c spans slices 4c - 1 to 4c + 4), [0, 61) all 16 rows.
+  EXPECT_EQ(completeCellRows(9, 30, 61), glm::ivec2(3, 7));
+  EXPECT_EQ(completeCellRows(0, 61, 61), glm::ivec2(0, 16));
+  EXPECT_EQ(completeCellRows(55, 61, 61), glm::ivec2(14, 16));  // the last row ends at 60
+  EXPECT_EQ(completeCellRows(10, 14, 61), glm::ivec2(0, 0));    // no row fits in 4 slices
+  const size_t slice = size_t(v.dims.x) * v.dims.y, row = size_t(whole.dims.x) * whole.dims.y * 2;
+  for (glm::ivec2 range : {glm::ivec2(9, 30), glm::ivec2(0, 61), glm::ivec2(55, 61)}) {
+    const glm::ivec2 rows = completeCellRows(range.x, range.y, v.dims.z);
+    const std::vector<int16_t> part =
+        computeMacroCellRows(v.voxels.data() + size_t(range.x) * slice, range.x, v.dims, rows);
+    EXPECT_TRUE(std::equal(part.begin(), part.end(), whole.minMax.begin() + rows.x * row))
+        << range.x << " to " << range.y;
+    EXPECT_EQ(part.size(), size_t(rows.y - rows.x) * row);
+  }
+}
+
+// A raw file read with pread a range of slices at a time: the converged frame equals the one
+// from the same file loaded whole (importRaw), bit for bit, for a layout whose storage needs no
+// look at the values (big-endian i16 as it is: no pass before the first image but the coarse
+// level's) and for one that needs the values (an intercept that could leave int16: the reader
+// scans them first, as importRaw does, and stores them alike). A folder of slice files too.
+TEST(OutOfCoreRaw, ReadOnDemandEqualsLoadedWhole) {
+  const Volume& v = tallVolume();
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("voxray-ooc-raw-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "slices");
+  const size_t slice = size_t(v.dims.x) * v.dims.y;
+  std::vector<uint8_t> bytes(v.voxels.size() * 2);
+  for (size_t i = 0; i < v.voxels.size(); ++i) {  // big endian
+    bytes[2 * i] = uint8_t(uint16_t(v.voxels[i]) >> 8);
+    bytes[2 * i + 1] = uint8_t(uint16_t(v.voxels[i]) & 0xff);
+  }
+  const std::string file = (dir / "tall.raw").string();
+  std::ofstream(file, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  for (int z = 0; z < v.dims.z; ++z)
+    std::ofstream((dir / "slices" / ("s." + std::to_string(z + 1))).string(), std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data() + size_t(z) * slice * 2),
+               std::streamsize(slice * 2));
+  RawLayout layout;
+  layout.dims = v.dims;
+  layout.order = ByteOrder::Big;
+  layout.spacingMm = v.spacingMm;
+  RawLayout shifted = layout;  // -32768 - 1024 would not fit int16: the values decide
+  shifted.intercept = -1024.0;
+  RawLayout stack = layout;
+  stack.dims.z = 0;  // every file of the folder
+  struct Input {
+    std::string path;
+    RawLayout layout;
+    bool scanned;
+  };
+  const RenderParams p = frame(Mode::Dvr, View::Oblique);
+  for (const Input& in : {Input{file, layout, false}, Input{file, shifted, true},
+                          Input{(dir / "slices").string(), stack, false}}) {
+    const Volume whole = importRaw(in.path, in.layout);
+    EXPECT_EQ(RawSliceReader(in.path, in.layout).scanned(), in.scanned) << in.path;
+    auto raw = rawSlabSource(in.path, in.layout);
+    auto mem = volumeSlabSource(whole);
+    const Volume& g = raw->geometry();
+    EXPECT_EQ(g.dims, whole.dims);
+    EXPECT_EQ(g.slope, whole.slope);
+    EXPECT_EQ(g.intercept, whole.intercept);
+    EXPECT_EQ(g.unit, whole.unit);
+    std::vector<int16_t> part(slice * 21);
+    raw->readSlices(40, 61, part.data());
+    EXPECT_TRUE(std::equal(part.begin(), part.end(), whole.voxels.begin() + 40 * slice));
+    OutOfCoreRenderer a(test::pocl(), *raw, thirdOf(v)), b(test::pocl(), *mem, thirdOf(v));
+    ASSERT_GT(a.partCount(), 2);
+    // The coarse level's pass found the exact range: the first converged frame is not redrawn.
+    ASSERT_TRUE(raw->statedRange().has_value());
+    EXPECT_EQ(raw->statedRange()->min, storedRange(whole).min);
+    EXPECT_EQ(raw->statedRange()->max, storedRange(whole).max);
+    for (Mode mode : {Mode::Dvr, Mode::Mip}) {
+      RenderParams q = frame(mode, View::Oblique);
+      Image ia, ib;
+      OutOfCoreStats s;
+      a.render(q, ia, &s);
+      EXPECT_FALSE(s.redrawnForRange);
+      b.render(q, ib);
+      EXPECT_EQ(test::maxDiff(ia, ib), 0) << in.path << " " << toString(mode);
+      EXPECT_GT(litPixels(ia), int(ia.rgba.size() / 4 / 50));
+    }
+  }
+  EXPECT_THROW(rawSlabSource((dir / "missing.raw").string(), layout), Error);
+  std::filesystem::remove_all(dir);
 }
 
 #ifdef VOXRAY_HAS_ZARR
@@ -425,6 +517,119 @@ TEST(OutOfCoreZarr, StreamedEqualsInCore) {
     ooc.render(p, b);
     EXPECT_LE(test::maxDiff(inCore(whole, true).render(p), b), 1);
   }
+  std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+std::filesystem::path tempZarr(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("voxray-ooc-" + name + "-" + std::to_string(::getpid()) + ".ome.zarr");
+  std::filesystem::remove_all(dir);
+  ZarrWriteOptions w;
+  w.chunk = 16;
+  writeOmeZarr(tallVolume(), dir.string(), w);
+  return dir;
+}
+
+// inCore() keyed by a local's address would outlive it: a raycaster of its own.
+Image renderInCore(const Volume& v, const RenderParams& p) {
+  Raycaster r(test::pocl(), v, VolumeStorage::Buffer);
+  RaycasterOptions o;
+  o.packets = false;
+  r.setOptions(o);
+  return r.render(p);
+}
+
+// Replaces the "level0-range" entry of DIR's group attributes with TEXT ("" removes it).
+void setStatedRange(const std::filesystem::path& dir, const std::string& text) {
+  const auto file = dir / ".zattrs";
+  std::stringstream in;
+  in << std::ifstream(file).rdbuf();
+  const std::string before = in.str();
+  const std::regex entry(R"re(,?\s*"level0-range"\s*:\s*(\[[^\]]*\]|"[^"]*"))re");
+  if (!std::regex_search(before, entry)) throw std::runtime_error("no level0-range in " + before);
+  const std::string after =
+      std::regex_replace(before, entry, text.empty() ? "" : ", \"level0-range\": " + text);
+  std::ofstream(file) << after;
+}
+
+}  // namespace
+
+// The first image reads no full-resolution slice, and the converged frame is the in-core one
+// whatever the Zarr states of its range: the range convert writes (used from the first frame,
+// not drawn again), none (the coarse level's range, narrower, widened as the parts arrive:
+// the first converged frame is drawn again), a wrong one (replaced by the voxels', and said),
+// a damaged one (ignored, with a warning). The frames of all four are equal, bit for bit.
+TEST(OutOfCoreZarr, NoPassBeforeTheFirstImageAndTheSameConvergedFrame) {
+  const Volume& v = tallVolume();
+  const auto dir = tempZarr("range");
+  const Volume whole = importOmeZarr(dir.string());
+  const ValueRange exact = storedRange(whole);
+  const RenderParams p = frame(Mode::Dvr, View::Oblique);
+  const Image inCoreFrame = renderInCore(whole, p);
+  std::vector<Image> converged;
+  for (const std::string stated : {"written", "[0, 10]", "\"wide\"", ""}) {
+    if (stated != "written") setStatedRange(dir, stated);
+    auto src = omeZarrSlabSource(dir.string());
+    if (stated == "written") {
+      ASSERT_TRUE(src->statedRange().has_value());
+      EXPECT_EQ(src->statedRange()->min, exact.min);
+      EXPECT_EQ(src->statedRange()->max, exact.max);
+    }
+    bool warned = false;
+    for (const std::string& w : src->geometry().warnings)
+      warned = warned || w.find("level0-range") != std::string::npos;
+    EXPECT_EQ(warned, stated == "\"wide\"") << stated;
+    OutOfCoreRenderer ooc(test::pocl(), *src, thirdOf(v));
+    Image first, b;
+    OutOfCoreStats s;
+    ooc.preview(p, first, &s);  // the first image: from the coarse level, no part read
+    EXPECT_EQ(s.partsCoarse, ooc.partCount());
+    EXPECT_EQ(s.cellsKnown, 0.0);
+    EXPECT_GT(litPixels(first), int(first.rgba.size() / 4 / 50)) << stated;
+    ooc.render(p, b, &s);
+    EXPECT_TRUE(s.fullResolution);
+    EXPECT_EQ(s.cellsKnown, 1.0);
+    EXPECT_EQ(s.redrawnForRange, stated != "written") << stated;
+    EXPECT_EQ(s.note.find("is not its voxels'") != std::string::npos, stated == "[0, 10]")
+        << stated << ": " << s.note;
+    EXPECT_LE(test::maxDiff(inCoreFrame, b), 1) << stated;
+    // The next frame: the cells made from the voxels, the range settled; nothing drawn twice.
+    Image again;
+    ooc.render(frame(Mode::Dvr, View::AlongMinusZ), again, &s);
+    EXPECT_FALSE(s.redrawnForRange);
+    EXPECT_LE(test::maxDiff(renderInCore(whole, frame(Mode::Dvr, View::AlongMinusZ)), again), 1)
+        << stated;
+    converged.push_back(b);
+  }
+  for (size_t i = 1; i < converged.size(); ++i)
+    EXPECT_EQ(test::maxDiff(converged[0], converged[i]), 0) << i;
+  std::filesystem::remove_all(dir);
+}
+
+// Missing level-0 chunks: the first image still comes (it reads none of them), the converged
+// frame draws them empty, as the in-core reader's fill value does, and says how many.
+TEST(OutOfCoreZarr, MissingChunksDrawnEmptyAndSaid) {
+  const auto dir = tempZarr("missing");
+  // Chunk (z 2, y 1, x 1) of level 0: slices 32-47, across the ellipsoid's middle.
+  ASSERT_TRUE(std::filesystem::remove(dir / "0" / "2" / "1" / "1"))
+      << "the chunk key layout changed";
+  const Volume whole = importOmeZarr(dir.string());  // reads it as the fill value, with a warning
+  auto src = omeZarrSlabSource(dir.string());
+  OutOfCoreRenderer ooc(test::pocl(), *src, thirdOf(tallVolume()));
+  const RenderParams p = frame(Mode::Dvr, View::Oblique);
+  Image b;
+  OutOfCoreStats s;
+  ooc.preview(p, b, &s);
+  EXPECT_EQ(s.missingChunks, 0u);
+  EXPECT_TRUE(s.note.empty()) << s.note;
+  ooc.render(p, b, &s);
+  EXPECT_EQ(s.missingChunks, 1u);
+  EXPECT_NE(s.note.find("1 chunks of the volume were missing"), std::string::npos) << s.note;
+  EXPECT_LE(test::maxDiff(renderInCore(whole, p), b), 1);
+  // Not the complete volume's frame: the hole shows.
+  EXPECT_GT(test::maxDiff(inCore(tallVolume(), true).render(p), b), 8);
   std::filesystem::remove_all(dir);
 }
 #endif

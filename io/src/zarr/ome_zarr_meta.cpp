@@ -1,6 +1,7 @@
 #include "ome_zarr_meta.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "voxray/io/error.h"
 #include "zarr_array.h"
@@ -190,6 +191,19 @@ Pyramid parsePyramid(int format, const Json& document, const std::string& file) 
     if (v.contains("unit") && v["unit"].is_string()) p.unit = v["unit"].get<std::string>();
     if (v.contains("modality") && v["modality"].is_string())
       p.modality = v["modality"].get<std::string>();
+    // A damaged range is left out and said: out-of-core rendering then finds it from the
+    // voxels (it only spares that pass; never trusted over them: out_of_core.h).
+    if (v.contains("level0-range")) {
+      const Json& r = v["level0-range"];
+      if (r.is_array() && r.size() == 2 && r[0].is_number_integer() && r[1].is_number_integer() &&
+          r[0].get<int64_t>() >= INT16_MIN && r[1].get<int64_t>() <= INT16_MAX &&
+          r[0].get<int64_t>() <= r[1].get<int64_t>())
+        p.level0Range = ValueRange{int16_t(r[0].get<int64_t>()), int16_t(r[1].get<int64_t>())};
+      else
+        p.warnings.push_back("voxray.level0-range " + r.dump() +
+                             " is not two whole numbers from -32768 to 32767, smallest first; "
+                             "ignored (the range is found from the voxels)");
+    }
   }
   return p;
 }

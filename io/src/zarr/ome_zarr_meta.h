@@ -2,6 +2,7 @@
 // The OME-NGFF multiscales metadata (0.4 in a Zarr v2 group's .zattrs, 0.5 under "ome" in a
 // Zarr v3 group's zarr.json) and Voxray's own "voxray" block beside it, read into what the
 // loader needs: each level's array folder, spacing and translation in mm, and the direction.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@ struct Pyramid {
   std::vector<Level> levels;  // full resolution first
   glm::dmat3 direction{1.0};  // LPS directions of i, j, k (the voxray block; else identity)
   std::string unit = "scanner units", modality;
+  // Level 0's smallest and largest value, when Voxray wrote them (voxray.level0-range).
+  std::optional<ValueRange> level0Range;
   std::vector<std::string> warnings;
 };
 

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <mutex>
+#include <set>
 #include <sstream>
 
 #include "../file_kind.h"
@@ -81,6 +83,7 @@ bool readChunk(ZarrStore& store, const ArrayMeta& m, const std::string& key,
 
 struct ChunkCount {
   size_t missing = 0, total = 0;
+  std::vector<uint64_t> missingAt;  // the missing chunks' z, y, x grid index, x fastest
 };
 
 // Slices [ZFIRST, ZEND) (all when ZEND is 0) of the array's 3D volume at index 0 of any leading
@@ -102,6 +105,7 @@ ChunkCount readSpatial(ZarrStore& store, const ArrayMeta& m, const LoadOptions& 
   out.total = size_t(gx * gy * gz);
   const std::vector<uint8_t> fill = sampleOf(m.fill, m.kind);
   std::atomic<size_t> missing{0}, done{0};
+  std::mutex missingLock;
   parallelFor(
       out.total,
       [&](size_t c) {
@@ -116,6 +120,10 @@ ChunkCount readSpatial(ZarrStore& store, const ArrayMeta& m, const LoadOptions& 
         std::vector<uint8_t> data, raw;
         if (!readChunk(store, m, key, data, maxFile)) {
           ++missing;
+          {
+            std::lock_guard<std::mutex> hold(missingLock);
+            out.missingAt.push_back((iz * gy + iy) * gx + ix);
+          }
           for (uint64_t z = zs; z < ze; ++z)
             for (uint64_t y = 0; y < ny; ++y) {
               uint8_t* row = dest + (((z0 + z - zFirst) * Y + y0 + y) * X + x0) * ts;
@@ -276,8 +284,9 @@ struct OmeZarrLevel::Impl {
   zarr::Pyramid pyramid;
   ArrayMeta meta;
   Volume geometry;
-  size_t missing = 0;
+  std::set<uint64_t> missing;  // chunks found missing: a chunk two reads meet counts once
   uint64_t read = 0;
+  int level = 0;
   std::vector<uint8_t> samples;  // an 8-bit range before it widens to int16
   explicit Impl(ZarrStore& s) : store(s) {}
 };
@@ -286,6 +295,7 @@ OmeZarrLevel::OmeZarrLevel(ZarrStore& store, int level) : impl_(std::make_unique
   Impl& m = *impl_;
   m.pyramid = zarr::readPyramid(store);
   zarr::checkLevelIndex(m.pyramid, level, store.where(""));
+  m.level = level;
   m.meta = zarr::readArrayMeta(store, m.pyramid.levels[size_t(level)].path, m.pyramid.format);
   m.geometry = zarr::describeLevel(m.pyramid, level, m.meta, store.where(""));
   using K = detail::SampleKind;
@@ -304,8 +314,12 @@ int OmeZarrLevel::chunkSlices() const {
   const auto& c = impl_->meta.chunks;
   return int(c[c.size() - 3]);
 }
-size_t OmeZarrLevel::missingChunks() const { return impl_->missing; }
+size_t OmeZarrLevel::missingChunks() const { return impl_->missing.size(); }
 uint64_t OmeZarrLevel::chunksRead() const { return impl_->read; }
+std::optional<ValueRange> OmeZarrLevel::statedRange() const {
+  if (impl_->level != 0) return std::nullopt;
+  return impl_->pyramid.level0Range;
+}
 
 void OmeZarrLevel::readSlices(int first, int end, int16_t* dest) {
   Impl& m = *impl_;
@@ -320,7 +334,7 @@ void OmeZarrLevel::readSlices(int first, int end, int16_t* dest) {
   const ChunkCount c = readSpatial(m.store, m.meta, LoadOptions{},
                                    wide ? reinterpret_cast<uint8_t*>(dest) : m.samples.data(),
                                    uint64_t(first), uint64_t(end));
-  m.missing += c.missing;
+  m.missing.insert(c.missingAt.begin(), c.missingAt.end());
   m.read += c.total;
   if (!wide) {
     const bool isSigned = m.meta.kind == detail::SampleKind::I8;

@@ -32,6 +32,7 @@ using Json = nlohmann::json;
 struct Format {
   int version = 2;
   bool int16 = true;  // else float32
+  ValueRange range;   // int16: level 0's smallest and largest value as written
   zarr::Codec codec;
   size_t typeSize() const { return int16 ? 2 : 4; }
 };
@@ -285,12 +286,15 @@ void writeGroupMeta(const fs::path& root, const Volume& v, const Format& f,
   Json direction = Json::array();
   for (int c = 0; c < 3; ++c)
     direction.push_back({v.direction[c].x, v.direction[c].y, v.direction[c].z});
-  const Json voxray = {{"direction", direction},
-                       {"unit", v.unit},
-                       {"modality", v.modality},
-                       {"note",
-                        "direction: LPS unit vectors of x, y, z (columns); the LPS "
-                        "origin is direction * translation"}};
+  Json voxray = {{"direction", direction},
+                 {"unit", v.unit},
+                 {"modality", v.modality},
+                 {"note",
+                  "direction: LPS unit vectors of x, y, z (columns); the LPS "
+                  "origin is direction * translation"}};
+  // Out-of-core rendering maps its colour table over level 0's value range before it has
+  // read level 0 (voxray/engine/out_of_core.h): two numbers here spare it a pass over 8 GiB.
+  if (f.int16) voxray["level0-range"] = {f.range.min, f.range.max};
   if (f.version == 2) {
     multiscale["version"] = "0.4";
     writeJson(root / ".zgroup", {{"zarr_format", 2}});
@@ -305,10 +309,13 @@ void writeGroupMeta(const fs::path& root, const Volume& v, const Format& f,
 }
 
 // Physical values are whole numbers that fit int16: HU as they are. Otherwise float32.
-bool fitsInt16(const Volume& v) {
+// RANGE: then the written values' range.
+bool fitsInt16(const Volume& v, ValueRange& range) {
   if (v.slope != 1.0 || v.intercept != std::floor(v.intercept)) return false;
   const ValueRange r = storedRange(v);
-  return r.min + v.intercept >= -32768.0 && r.max + v.intercept <= 32767.0;
+  if (r.min + v.intercept < -32768.0 || r.max + v.intercept > 32767.0) return false;
+  range = {int16_t(r.min + v.intercept), int16_t(r.max + v.intercept)};
+  return true;
 }
 
 }  // namespace
@@ -343,7 +350,7 @@ ZarrWriteResult writeOmeZarr(const Volume& v, const std::string& path,
 
   Format f;
   f.version = options.zarrVersion;
-  f.int16 = fitsInt16(v);
+  f.int16 = fitsInt16(v, f.range);
   switch (options.codec) {
     case ZarrCodec::BloscZstd:
       f.codec.kind = zarr::Codec::Kind::Blosc;

@@ -19,9 +19,19 @@
 // n parts held it uploads all n every frame; this uploads n - k once the frame before has
 // filled the device.
 //
-// The slices come from a SlabSource (slab_source.h), read per part and released after upload;
-// the empty-space cells and the value range come from one streamed pass over the source when
-// the renderer is made.
+// The slices come from a SlabSource (slab_source.h), read per part and released after upload.
+// Opening reads no full-resolution slice (the first image must not wait for 8 GiB, issue 38):
+// the empty-space cells of parts not yet read are conservative (min -32768, max 32767: every
+// transfer function finds them occupied, so skipping stays exact) and are filled in from each
+// part's slices when it is first read (the cell rows all of whose voxels it holds), applied at
+// the next frame. The value range, which the colour table spans (its entries lie between the
+// range's ends) and which a mip without a window maps to grey, starts as the source states it
+// (voxray-cli convert writes it into the Zarr) or else as the coarse level's, widened to the
+// cells read; once every row is read it is the voxels' own, as in core. A converged frame
+// whose range changed while it read its parts is drawn again with the range it ended with, so
+// a converged frame is the in-core frame (within the bound above) from the first one on. A
+// stated range the voxels contradict is replaced and the stats say so. An in-memory source's
+// cells and range are made from it in place when the renderer is made.
 //
 // How a part reaches a GPU (OutOfCoreOptions::upload, Pinned): its slices are read into host
 // staging the runtime pins (two buffers made with CL_MEM_ALLOC_HOST_PTR and mapped once, used
@@ -87,14 +97,19 @@ struct OutOfCoreStats {
   bool pinned = false;  // the frame's uploads went through the pinned staging ring
   double totalMs = 0.0;
   std::string message;  // what went wrong when deviceOutOfMemory, for the user
+  // The converged frame was drawn twice: its value range grew as its parts were first read.
+  bool redrawnForRange = false;
+  double cellsKnown = 1.0;   // of the empty-space cell rows, those made from the voxels
+  size_t missingChunks = 0;  // the source's chunks read so far that were missing (drawn empty)
+  std::string note;          // about the data, for the user (missing chunks, a wrong range)
 };
 
 class OutOfCoreRenderer {
  public:
-  // CONTEXT and SOURCE must outlive the renderer. Reads the source once (the empty-space cells
-  // and the value range), uploads the coarse level. Throws Error (Input) when the budget cannot
-  // hold one part (naming the budget, the bytes one part needs and the budget to ask for), and
-  // Error (Device) when the coarse level cannot be uploaded.
+  // CONTEXT and SOURCE must outlive the renderer. Reads the source's coarse level (and an
+  // in-memory source's cells) and uploads it; no full-resolution slice. Throws Error (Input) when
+  // the budget cannot hold one part (naming the budget, the bytes one part needs and the budget to
+  // ask for), and Error (Device) when the coarse level cannot be uploaded.
   OutOfCoreRenderer(ClContext& context, SlabSource& source, const OutOfCoreOptions& options = {});
   ~OutOfCoreRenderer();
   OutOfCoreRenderer(const OutOfCoreRenderer&) = delete;
@@ -113,7 +128,7 @@ class OutOfCoreRenderer {
   std::vector<PartRange> ranges() const;
   size_t budgetBytes() const;       // what the parts may hold (the budget less the fixed bytes)
   size_t partBytesLargest() const;  // the largest part's stored slices
-  double openMs() const;            // the streamed pass and the coarse level's upload
+  double openMs() const;            // the coarse level's read and upload
 
  private:
   void draw(const RenderParams& params, Image& out, OutOfCoreStats* stats, bool converge);

@@ -5,9 +5,14 @@
 // the full volume's box, shown where the device does not hold the full slices.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "voxray/io/volume.h"
+
+namespace voxray {
+struct RawLayout;
+}
 
 namespace voxray {
 
@@ -32,6 +37,14 @@ class SlabSource {
   // Slices a read is best aligned to (a Zarr chunk's depth: a read across a chunk decodes it
   // whole); 0: any.
   virtual int preferredSlices() const { return 0; }
+  // The volume's smallest and largest stored value when the source knows them without a pass
+  // over the voxels: an OME-Zarr Voxray wrote states them, a raw file's source found them
+  // making its coarse level. Else none (the renderer starts from the coarse level's). A hint:
+  // the renderer checks it against the voxels as it reads them (out_of_core.h).
+  virtual std::optional<ValueRange> statedRange() const { return std::nullopt; }
+  // Chunks read so far that were missing, shown as empty (their fill value); 0 for sources
+  // without chunks.
+  virtual size_t missingChunks() const { return 0; }
   // A coarse level with the full volume's box (coarse_level.h's geometry), made or read once
   // and held by the source.
   virtual const Volume& coarse() = 0;
@@ -42,9 +55,15 @@ class SlabSource {
 // VOLUME (which must outlive the source), its coarse level the box mean of FACTOR (4 or 8).
 std::unique_ptr<SlabSource> volumeSlabSource(const Volume& volume, int coarseFactor = 4);
 
+// The raw INPUT (a file, a slice folder or pattern) under LAYOUT, read a range of slices at a
+// time with pread, never whole (RawSliceReader: values stored as importRaw stores them). The
+// coarse level, the 4x box mean, and the value range come from one streamed pass when the
+// renderer asks for the coarse level. Throws Error (Input) as importRaw does.
+std::unique_ptr<SlabSource> rawSlabSource(const std::string& input, const RawLayout& layout);
+
 #ifdef VOXRAY_HAS_ZARR
 // Level 0 of the OME-Zarr at PATH, read on demand; its coarse level the pyramid's first level
-// whose voxels are at most 1/64 of level 0's (the coarsest when none is), else the box mean
+// whose voxels are at most 1/64 of level 0's and at most 32 MiB (the coarsest when none is), else the box mean
 // of level 0 made while streaming. Opening reads the metadata and that coarse level only.
 // Throws Error (Input) as OmeZarrLevel does.
 std::unique_ptr<SlabSource> omeZarrSlabSource(const std::string& path);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,9 @@ class OmeZarrLevel {
   void readSlices(int first, int end, int16_t* dest);
   size_t missingChunks() const;
   uint64_t chunksRead() const;
+  // Level 0's smallest and largest stored value as the metadata states them (Voxray's writer
+  // records them), for level 0 only; absent otherwise or when damaged (a warning says so).
+  std::optional<ValueRange> statedRange() const;
 
  private:
   struct Impl;

@@ -3,6 +3,7 @@
 // pattern with a range, or one raw file. No headers are parsed: the user states the layout.
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -54,6 +55,31 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
 // (anything but slope 1, intercept 0: the rescale field and --raw-rescale say "to HU"),
 // else "value", so that an MR or an unscaled stack is never labelled HU.
 std::string rawValueUnit(const RawLayout& layout);
+
+// A raw input read a range of slices at a time (out-of-core rendering, issue 38): opening lists
+// and checks the files as importRaw does; each read preads only its slices, never the whole.
+// The values are stored exactly as importRaw stores them. When the sample type's whole range,
+// rescaled, fits int16 as it is (u8 and i16 with a whole slope and intercept that keep it
+// there, e.g. --raw-rescale 1,0), that storage needs no look at the values; otherwise opening
+// reads every slice once (a slice at a time) to choose it as importRaw does.
+class RawSliceReader {
+ public:
+  // Throws Error (Input) as importRaw does. layout.zSlab is not taken.
+  RawSliceReader(const std::string& input, const RawLayout& layout);
+  ~RawSliceReader();
+  RawSliceReader(const RawSliceReader&) = delete;
+  RawSliceReader& operator=(const RawSliceReader&) = delete;
+  // The volume as importRaw makes it, without voxels.
+  const Volume& geometry() const;
+  // Slices [FIRST, END) as stored values, i fastest, into DEST. Throws Error (Input) naming the
+  // file when it cannot be read.
+  void readSlices(int first, int end, int16_t* dest) const;
+  bool scanned() const;  // opening read the values to choose their storage
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 SampleType parseSampleType(const std::string& s);  // u8, i16, u16, f32
 ByteOrder parseByteOrder(const std::string& s);    // big, little
