@@ -43,26 +43,12 @@ void ArrivedFiles::add(const std::string& path, std::shared_ptr<const std::strin
   changed_.notify_all();
 }
 
-void ArrivedFiles::processNext(std::unique_lock<std::mutex>& lock) {
-  auto [path, bytes] = std::move(queue_.front());
-  queue_.pop_front();
-  ++busy_;
-  lock.unlock();
-  process(path, std::move(bytes));
-  lock.lock();
-  --busy_;
-  changed_.notify_all();
-}
-
 void ArrivedFiles::drain(const std::atomic<bool>* cancel) {
   std::unique_lock lock(mutex_);
   // Cancel is a flag, not an event: looked at every 50 ms.
-  while (!queue_.empty() || busy_ > 0) {
+  while (!queue_.empty() || busy_) {
     if (cancel && *cancel) return;
-    if (!queue_.empty())
-      processNext(lock);
-    else
-      changed_.wait_for(lock, std::chrono::milliseconds(50));
+    changed_.wait_for(lock, std::chrono::milliseconds(50));
   }
 }
 
@@ -86,22 +72,25 @@ void ArrivedFiles::work() {
   for (;;) {
     changed_.wait(lock, [&] { return stop_ || !queue_.empty(); });
     if (stop_) return;
-    processNext(lock);
+    auto [path, bytes] = std::move(queue_.front());
+    queue_.pop_front();
+    busy_ = true;
+    lock.unlock();
+    process(path, std::move(bytes));
+    lock.lock();
+    busy_ = false;
+    changed_.notify_all();
   }
 }
 
-size_t ArrivedFiles::newSlot(std::unique_lock<std::mutex>& lock,
-                             std::pair<uintptr_t, uintptr_t>* populate) {
+size_t ArrivedFiles::newSlot() {
   const size_t k = slots_.size();
   const size_t needed = (k + 1) * sliceSize_;
-  *populate = {0, 0};
   if (needed > voxels_.capacity()) {
     // How many files are coming is not known (WADO-RS does not say). Growing by doubling
     // cost 0.1 s of CPU for 400 CT slices (copies, and page faults on each new buffer), so
     // address space for kReservedSlices is taken at once: only the pages written are
-    // memory. Past it (or where that much address space is refused) the buffer doubles,
-    // once no slice is being written into it.
-    changed_.wait(lock, [&] { return copying_ == 0; });
+    // memory. Past it (or where that much address space is refused) the buffer doubles.
     size_t want = std::max(voxels_.capacity() * 2, kReservedSlices * sliceSize_);
     want = std::min(want, std::max(kMaxVoxels, needed));
     try {
@@ -111,19 +100,21 @@ size_t ArrivedFiles::newSlot(std::unique_lock<std::mutex>& lock,
     }
     populated_ = voxels_.size();
   }
+#ifdef MADV_POPULATE_WRITE
   if (needed > populated_) {
     // Page tables for the next slices in one call (4 KiB page faults one by one cost a
-    // tenth of the worker's CPU time), made by the caller outside the lock.
+    // tenth of the worker's CPU time); ignored by kernels before Linux 5.14.
     const size_t ahead = std::min(voxels_.capacity(), needed + 16 * sliceSize_);
-    const uintptr_t page = 4096;
     auto* begin = reinterpret_cast<char*>(voxels_.data() + populated_);
-    *populate = {(reinterpret_cast<uintptr_t>(begin) + page - 1) & ~(page - 1),
-                 reinterpret_cast<uintptr_t>(voxels_.data() + ahead) & ~(page - 1)};
+    const uintptr_t page = 4096;
+    auto from = (reinterpret_cast<uintptr_t>(begin) + page - 1) & ~(page - 1);
+    auto to = reinterpret_cast<uintptr_t>(voxels_.data() + ahead) & ~(page - 1);
+    if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
     populated_ = ahead;
   }
+#endif
   voxels_.resize(needed);
   slots_.emplace_back();
-  ++copying_;
   return k;
 }
 
@@ -148,47 +139,23 @@ void ArrivedFiles::process(const std::string& path, std::shared_ptr<const std::s
         pixels->frameValues(h, values);
         if (values.size() != n) return;  // the import says what is wrong with it
       }
-      std::unique_lock lock(mutex_);
       if (sliceSize_ == 0) sliceSize_ = n;
       if (n != sliceSize_) return;  // not one stack with the first file
-      std::pair<uintptr_t, uintptr_t> populate;
-      const size_t k = newSlot(lock, &populate);
-      const double air = airValue(h.modality);
-      slots_[k].air = air;
-      int16_t* slice = voxels_.data() + k * sliceSize_;
-      lock.unlock();
-      // copying_ is counted from here: voxels_ stays where it is until it is uncounted.
-      bool stored = true;
-      SliceScale scale;
-      try {
-#ifdef MADV_POPULATE_WRITE
-        // Ignored by kernels before Linux 5.14.
-        if (populate.second > populate.first)
-          madvise(reinterpret_cast<void*>(populate.first), populate.second - populate.first,
-                  MADV_POPULATE_WRITE);
-#endif
-        auto* words = reinterpret_cast<uint16_t*>(slice);
-        if (direct && native.read(h, words))
-          scale = storeWords(words, n, h, air);
-        else if (direct)
-          stored = false;  // a slot the import does not use: it then reads the files from disk
-        else
-          scale = storeSlice(values, h, air, slice);
-      } catch (...) {
-        stored = false;
-      }
-      lock.lock();
-      --copying_;
-      if (stored) slots_[k].scale = scale;
-      lock.unlock();
-      changed_.notify_all();
-      if (!stored) return;
+      const size_t k = newSlot();
+      Slot& slot = slots_[k];
+      slot.air = airValue(h.modality);
+      auto* words = reinterpret_cast<uint16_t*>(voxels_.data() + k * sliceSize_);
+      if (direct && native.read(h, words))
+        slot.scale = storeWords(words, n, h, slot.air);
+      else if (direct)
+        return;  // a slot the import does not use: it then reads the files from disk
+      else
+        slot.scale = storeSlice(values, h, slot.air, voxels_.data() + k * sliceSize_);
       file.slots.push_back(k);
     }
   } catch (const std::exception&) {
     return;  // Error or bad_alloc: the import reads the file again and reports it
   }
-  std::lock_guard lock(mutex_);
   files_[pathKey(path)] = std::move(file);
 }
 

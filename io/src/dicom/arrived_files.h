@@ -34,10 +34,7 @@ class ArrivedFiles {
   // BYTES: the whole file that is (or will be) at PATH; shared, not copied (the PACS cache
   // writes the same bytes to its file meanwhile).
   void add(const std::string& path, std::shared_ptr<const std::string> bytes);
-  // Waits until every file added so far is processed, or until *CANCEL is true. The calling
-  // thread processes queued files alongside the worker meanwhile: at the end of a transfer
-  // the worker was ~50 ms behind on a loaded 2-core machine, on one core while the other
-  // waited here (issue 39 item 8).
+  // Waits until every file added so far is processed, or until *CANCEL is true.
   void drain(const std::atomic<bool>* cancel);
 
   // The decoded frames below are read only after drain().
@@ -61,23 +58,14 @@ class ArrivedFiles {
 
  private:
   void work();
-  // Pops the queue's first file and processes it with MUTEX_ (held as LOCK) released.
-  void processNext(std::unique_lock<std::mutex>& lock);
-  // Run by the worker and by a thread in drain() at once: MUTEX_ guards the members below;
-  // the slices are parsed and copied without it.
   void process(const std::string& path, std::shared_ptr<const std::string> bytes);
-  // Under MUTEX_ (LOCK): a slot of sliceSize_ voxels at the end of voxels_, its index; the
-  // caller then writes it (copying_ counted: voxels_ grows only when no slice is being
-  // written). *POPULATE gets the byte range [first, second) to give page tables to, outside
-  // the lock, while copying_ is counted.
-  size_t newSlot(std::unique_lock<std::mutex>& lock, std::pair<uintptr_t, uintptr_t>* populate);
+  // A slot of sliceSize_ voxels at the end of voxels_; its index.
+  size_t newSlot();
 
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::pair<std::string, std::shared_ptr<const std::string>>> queue_;
-  int busy_ = 0;     // files being processed
-  int copying_ = 0;  // slices being written into voxels_
-  bool stop_ = false;
+  bool busy_ = false, stop_ = false;
   std::thread worker_;
 
   std::map<std::string, File> files_;  // by pathKey

@@ -253,30 +253,23 @@ void decodeSlices(const Candidate& c, const LoadOptions& options, const std::vec
 }
 
 // Moves slice SOURCE[k] of VOXELS to slice k, for every k (SOURCE is a permutation),
-// following its cycles with one slice aside. The cycles are independent: they are spread
-// over the cores (a series that arrives in the reverse of its order is 200 two-slice cycles
-// for 400 slices; the one pass over 210 MB was ~18 ms on pacs get's critical path).
+// following its cycles with one slice aside.
 void permuteSlices(VoxelVector& voxels, size_t sliceSize, const std::vector<size_t>& source) {
-  std::vector<size_t> starts;  // each cycle by its lowest slice
-  std::vector<bool> seen(source.size(), false);
-  for (size_t start = 0; start < source.size(); ++start) {
-    if (seen[start]) continue;
-    for (size_t k = start; !seen[k]; k = source[k]) seen[k] = true;
-    if (source[start] != start) starts.push_back(start);
-  }
+  std::vector<bool> placed(source.size(), false);
+  std::vector<int16_t> aside(sliceSize);
   auto slice = [&](size_t k) { return voxels.data() + k * sliceSize; };
-  // A few chunks of cycles per core, each with its slice aside.
-  const size_t chunks = std::min<size_t>(starts.size(), 16);
-  parallelFor(chunks, [&](size_t chunk) {
-    std::vector<int16_t> aside(sliceSize);
-    for (size_t c = chunk; c < starts.size(); c += chunks) {
-      const size_t start = starts[c];
-      std::copy_n(slice(start), sliceSize, aside.data());
-      size_t k = start;
-      for (; source[k] != start; k = source[k]) std::copy_n(slice(source[k]), sliceSize, slice(k));
-      std::copy_n(aside.data(), sliceSize, slice(k));
+  for (size_t start = 0; start < source.size(); ++start) {
+    if (placed[start] || source[start] == start) continue;
+    std::copy_n(slice(start), sliceSize, aside.data());
+    size_t k = start;
+    while (source[k] != start) {
+      std::copy_n(slice(source[k]), sliceSize, slice(k));
+      placed[k] = true;
+      k = source[k];
     }
-  });
+    std::copy_n(aside.data(), sliceSize, slice(k));
+    placed[k] = true;
+  }
 }
 
 // Page tables for the BYTES at P, made on every core: the volume's first touch (50,000
