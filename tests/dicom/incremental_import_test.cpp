@@ -9,8 +9,11 @@
 
 #include <unistd.h>
 
+#include "../io/test_support.h"
 #include "folder_bytes.h"
 #include "test_data.h"
+#include "voxray/io/dicom_import.h"
+#include "voxray/io/phantom_series.h"
 
 namespace voxray {
 namespace {
@@ -59,6 +62,27 @@ TEST(DicomIncremental, FilesInAnyOrderGiveTheDiskVolumeBitForBit) {
   expectSame(fedImport(folder, files), disk);
   std::shuffle(files.begin(), files.end(), std::mt19937(12));
   expectSame(fedImport(folder, files), disk);
+}
+
+// More slices than the arrival buffer reserves at first (1,024), all fed before finish(): the
+// worker and the thread waiting in finish() process them at once, and the buffer grows while
+// both take slots. Reversed, so that every slice moves in the reorder too.
+TEST(DicomIncremental, ASeriesPastTheReservedSlicesGivesTheDiskVolume) {
+  test::TempDir dir;
+  PetSpherePhantom p;
+  p.dims = {8, 8, 1100};
+  p.spacingMm = {4.0, 4.0, 0.25};  // the sphere still crosses many slices
+  writePetSpherePhantom(dir.file("pt"), p);
+  const Volume disk = importDicom(dir.file("pt"));
+  ASSERT_EQ(disk.dims, glm::ivec3(8, 8, 1100));
+  auto files = filesOf(dir.file("pt"));
+  ASSERT_EQ(files.size(), 1100u);
+  std::reverse(files.begin(), files.end());
+  std::vector<std::string> said;
+  LoadOptions o;
+  o.progress = [&](double, const std::string& what) { said.push_back(what); };
+  expectSame(fedImport(dir.file("pt"), files, o), disk);
+  EXPECT_TRUE(test::anyContains(said, "Decoded 1100 slices as they arrived"));
 }
 
 TEST(DicomIncremental, FinishingTwiceReadsTheSecondTimeFromDisk) {

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <memory>
 
 #include <gmock/gmock.h>
 
@@ -25,8 +26,8 @@ namespace fs = std::filesystem;
 using testing::HasSubstr;
 
 // A node that "retrieves" by copying files: WRITE gets the staging folder, returns the files
-// it reports. HAND_OVER: each file's bytes also go to RetrieveOptions::written, as WADO-RS
-// hands them over (by default the bytes on disk; HANDED may give others).
+// it reports. HAND_OVER: each file's bytes also go to RetrieveOptions::arrived and ::written,
+// as WADO-RS hands them over (by default the bytes on disk; HANDED may give others).
 class CopyingClient : public PacsClient {
  public:
   explicit CopyingClient(std::function<std::vector<std::string>(const std::string&)> write,
@@ -39,11 +40,13 @@ class CopyingClient : public PacsClient {
                                           const std::string& folder,
                                           const RetrieveOptions& options) override {
     std::vector<std::string> files = write_(folder);
-    if (handOver_ && options.written)
+    if (handOver_)
       for (const auto& f : files) {
         std::ifstream in(f, std::ios::binary);
         std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        options.written(f, handed_ ? handed_(f) : bytes);
+        auto shared = std::make_shared<const std::string>(handed_ ? handed_(f) : bytes);
+        if (options.arrived) options.arrived(f, shared);
+        if (options.written) options.written(f, *shared);
       }
     return files;
   }

@@ -192,18 +192,21 @@ CachedSeries PacsCache::retrieve(PacsClient& client, const std::string& studyUid
   auto inFolder = [&](const std::string& path) {
     return folder + "/" + fs::path(path).filename().string();
   };
-  withImport.written = [&](const std::string& path, std::string content) {
-    // With an import, the file is checked from what the import read of it (below): one
-    // parse of each file instead of two (~0.05 ms each, on the writer's thread).
-    if (!import) check.arrived(path, content);
-    const std::string arrived = inFolder(path);
-    if (!options.written) {
-      if (import) import->add(arrived, std::move(content));
-      return;
-    }
-    if (import) import->add(arrived, content);
-    options.written(path, std::move(content));
-  };
+  // With an import, each file goes to it as soon as it is received (RetrieveOptions::arrived),
+  // not after it is written, and is checked from what the import read of it (below): one
+  // parse of each file instead of two (~0.05 ms each, on the writer's thread).
+  if (import) {
+    withImport.arrived = [&](const std::string& path, std::shared_ptr<const std::string> bytes) {
+      import->add(inFolder(path), bytes);
+      if (options.arrived) options.arrived(path, std::move(bytes));
+    };
+    withImport.written = options.written;
+  } else {
+    withImport.written = [&](const std::string& path, std::string content) {
+      check.arrived(path, content);
+      if (options.written) options.written(path, std::move(content));
+    };
+  }
   std::vector<std::string> files;
   try {
     files = client.retrieveSeries(studyUid, seriesUid, pattern, withImport);

@@ -45,11 +45,11 @@ void PartWriter::rethrow() {
   if (error_) std::rethrow_exception(error_);
 }
 
-void PartWriter::add(std::string path, std::string content) {
+void PartWriter::add(std::string path, std::shared_ptr<std::string> content) {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [&] { return error_ || queuedBytes_ <= kMaxQueuedBytes; });
   rethrow();
-  queuedBytes_ += content.size();
+  queuedBytes_ += content->size();
   queue_.emplace_back(std::move(path), std::move(content));
   lock.unlock();
   changed_.notify_all();
@@ -68,13 +68,15 @@ void PartWriter::work() {
     if (stop_ || error_) return;
     auto [path, content] = std::move(queue_.front());
     queue_.pop_front();
-    queuedBytes_ -= content.size();
+    queuedBytes_ -= content->size();
     busy_ = true;
     lock.unlock();
     std::exception_ptr error;
     try {
-      writeFile(path, content);
-      if (written_) written_(path, std::move(content));
+      writeFile(path, *content);
+      // The only holder left (an import drops its share, never takes one): moved out.
+      if (written_)
+        written_(path, content.use_count() == 1 ? std::move(*content) : std::string(*content));
     } catch (...) {
       error = std::current_exception();
     }

@@ -8,6 +8,7 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -16,8 +17,8 @@ namespace voxray::pacs {
 
 class PartWriter {
  public:
-  // WRITTEN (may be empty) gets each file once it is on disk, with its content, on the
-  // writer's thread.
+  // WRITTEN (may be empty) gets each file once it is on disk, with its content (moved out
+  // when no one else holds it, else copied), on the writer's thread.
   using Written = std::function<void(const std::string& path, std::string content)>;
   explicit PartWriter(Written written);
   ~PartWriter();  // stops: what is not written yet is dropped
@@ -26,7 +27,7 @@ class PartWriter {
 
   // Queues CONTENT for PATH; waits while more than kMaxQueuedBytes are queued. Throws the
   // error that stopped the writer, if one did.
-  void add(std::string path, std::string content);
+  void add(std::string path, std::shared_ptr<std::string> content);
   // Waits until everything queued is written; throws the writer's error, if any.
   void finish();
 
@@ -41,7 +42,7 @@ class PartWriter {
   Written written_;
   std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<std::pair<std::string, std::string>> queue_;
+  std::deque<std::pair<std::string, std::shared_ptr<std::string>>> queue_;
   size_t queuedBytes_ = 0;
   bool busy_ = false, stop_ = false;
   std::exception_ptr error_;

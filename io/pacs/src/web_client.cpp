@@ -173,7 +173,9 @@ class WebClient : public PacsClient {
       files.push_back(path);
       progress.received = int(files.size());
       progress.megabytes += double(content.size()) / 1e6;
-      writer.add(std::move(path), std::move(content));
+      auto shared = std::make_shared<std::string>(std::move(content));
+      if (options.arrived) options.arrived(path, shared);
+      writer.add(std::move(path), std::move(shared));
       if (options.progress) options.progress(progress);
     };
     auto sink = [&](const char* data, size_t size, const std::string& type) {

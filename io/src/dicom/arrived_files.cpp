@@ -34,7 +34,7 @@ ArrivedFiles::~ArrivedFiles() {
   if (worker_.joinable()) worker_.join();
 }
 
-void ArrivedFiles::add(const std::string& path, std::string bytes) {
+void ArrivedFiles::add(const std::string& path, std::shared_ptr<const std::string> bytes) {
   {
     std::lock_guard lock(mutex_);
     queue_.emplace_back(path, std::move(bytes));
@@ -118,7 +118,7 @@ size_t ArrivedFiles::newSlot() {
   return k;
 }
 
-void ArrivedFiles::process(const std::string& path, std::string bytes) {
+void ArrivedFiles::process(const std::string& path, std::shared_ptr<const std::string> bytes) {
   auto parsed = std::make_unique<DcmFileFormat>();
   File file;
   std::string why;
@@ -126,8 +126,7 @@ void ArrivedFiles::process(const std::string& path, std::string bytes) {
     // The pixel data stays in BYTES (PARSED keeps them): uncompressed 16-bit frames are
     // copied from there into their slots as the folder import reads them from files
     // (NativeFrames); the others are decoded by PixelFile, made when first needed.
-    auto shared = std::make_shared<const std::string>(std::move(bytes));
-    if (readFrameHeaders(path, std::move(shared), *parsed, file.frames, why) != ScanResult::Image)
+    if (readFrameHeaders(path, std::move(bytes), *parsed, file.frames, why) != ScanResult::Image)
       return;
     NativeFrames native(*parsed);
     std::unique_ptr<PixelFile> pixels;

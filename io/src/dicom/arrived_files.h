@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -30,8 +31,9 @@ class ArrivedFiles {
   ArrivedFiles(const ArrivedFiles&) = delete;
   ArrivedFiles& operator=(const ArrivedFiles&) = delete;
 
-  // BYTES: the whole file that is (or will be) at PATH.
-  void add(const std::string& path, std::string bytes);
+  // BYTES: the whole file that is (or will be) at PATH; shared, not copied (the PACS cache
+  // writes the same bytes to its file meanwhile).
+  void add(const std::string& path, std::shared_ptr<const std::string> bytes);
   // Waits until every file added so far is processed, or until *CANCEL is true.
   void drain(const std::atomic<bool>* cancel);
 
@@ -56,13 +58,13 @@ class ArrivedFiles {
 
  private:
   void work();
-  void process(const std::string& path, std::string bytes);
+  void process(const std::string& path, std::shared_ptr<const std::string> bytes);
   // A slot of sliceSize_ voxels at the end of voxels_; its index.
   size_t newSlot();
 
   std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<std::pair<std::string, std::string>> queue_;
+  std::deque<std::pair<std::string, std::shared_ptr<const std::string>>> queue_;
   bool busy_ = false, stop_ = false;
   std::thread worker_;
 

@@ -597,6 +597,10 @@ DicomImport::DicomImport(LoadOptions options)
 DicomImport::~DicomImport() = default;
 
 void DicomImport::add(const std::string& path, std::string bytes) {
+  arrived_->add(path, std::make_shared<const std::string>(std::move(bytes)));
+}
+
+void DicomImport::add(const std::string& path, std::shared_ptr<const std::string> bytes) {
   arrived_->add(path, std::move(bytes));
 }
 

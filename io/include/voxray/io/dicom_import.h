@@ -84,6 +84,8 @@ class DicomImport {
   // BYTES: the whole content of the file at PATH (there, or written there before finish()).
   // May be called from any one thread at a time.
   void add(const std::string& path, std::string bytes);
+  // The same with the bytes shared, not copied (the PACS cache writes them to the file).
+  void add(const std::string& path, std::shared_ptr<const std::string> bytes);
   // The file added at PATH once the worker has read it, when it is an image it decoded
   // completely; else none (or cancelled). Waits for the worker: the PACS cache takes a
   // series' identities from here instead of parsing each file a second time.

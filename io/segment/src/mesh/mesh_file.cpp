@@ -29,11 +29,6 @@ namespace fs = std::filesystem;
 namespace voxray {
 namespace {
 
-std::string lower(std::string s) {
-  for (auto& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
 std::string frameName(MeshCoordinates c) { return c == MeshCoordinates::Lps ? "LPS" : "RAS"; }
 
 // Hidden beside the target (same file system, so the rename is atomic), extension kept.
@@ -191,33 +186,6 @@ void writeObj(const fs::path& file, const fs::path& mtlFile, const std::string& 
 }
 
 }  // namespace
-
-MeshFormat meshFormatFor(const std::string& path) {
-  const std::string ext = lower(fs::path(path).extension().string());
-  if (ext == ".stl") return MeshFormat::Stl;
-  if (ext == ".obj") return MeshFormat::Obj;
-  if (ext == ".ply") return MeshFormat::Ply;
-  throw inputError("Cannot tell the mesh format of \"" + path +
-                   "\": end the name with .stl, .obj or .ply.");
-}
-
-std::string perSegmentPath(const std::string& path, const Segment& segment) {
-  const fs::path p(path);
-  std::string name;
-  for (char c : segment.name) {
-    if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_')
-      name += c;
-    else if (!name.empty() && name.back() != '_')
-      name += '_';
-  }
-  while (!name.empty() && name.back() == '_') name.pop_back();
-  std::string file = p.stem().string() + "_" + std::to_string(segment.label);
-  if (!name.empty()) {
-    file += '_';
-    file.append(name, 0, 64);
-  }
-  return (p.parent_path() / (file + p.extension().string())).string();
-}
 
 void writeMeshFile(const std::string& path, const Segmentation& s,
                    const std::vector<uint8_t>& labels, const MeshFileOptions& options) {

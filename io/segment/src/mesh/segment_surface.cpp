@@ -408,28 +408,4 @@ SegmentSurface makeSurface(const Segmentation& s, uint8_t label, const SurfaceOp
   return out;
 }
 
-EdgeCount countEdges(const SegmentSurface& surface) {
-  // Each directed edge as (min, max) << 1 | direction, sorted: equal keys then sit together.
-  std::vector<uint64_t> keys;
-  keys.reserve(surface.indices.size());
-  for (size_t i = 0; i + 2 < surface.indices.size(); i += 3)
-    for (int e = 0; e < 3; ++e) {
-      const uint64_t a = surface.indices[i + e], b = surface.indices[i + (e + 1) % 3];
-      keys.push_back((std::min(a, b) << 33) | (std::max(a, b) << 1) | (a < b ? 1 : 0));
-    }
-  std::sort(keys.begin(), keys.end());
-  EdgeCount c;
-  for (size_t i = 0; i < keys.size();) {
-    size_t j = i, forward = 0;
-    while (j < keys.size() && (keys[j] >> 1) == (keys[i] >> 1)) forward += keys[j++] & 1;
-    const size_t n = j - i;
-    ++c.edges;
-    if (n == 1) ++c.boundary;
-    if (n > 2) ++c.nonManifold;
-    if (n == 2 && forward != 1) ++c.misoriented;
-    i = j;
-  }
-  return c;
-}
-
 }  // namespace voxray

@@ -96,6 +96,11 @@ struct RetrieveOptions {
   // thread that writes the files, one at a time, in order; all before retrieveSeries
   // returns), DIMSE (files written by DCMTK) does not.
   std::function<void(const std::string& path, std::string content)> written;
+  // Each file's content as soon as it is received, before it is written (PATH: where it
+  // will be), shared with the writer, not copied: its import then never waits for the file
+  // system (issue 39 item 8). May be empty; DICOMweb calls it from the receiving thread, in
+  // order, all before retrieveSeries returns; DIMSE does not.
+  std::function<void(const std::string& path, std::shared_ptr<const std::string> content)> arrived;
 };
 
 class PacsClient {
