@@ -84,17 +84,17 @@ int renderOutOfCore(const OutOfCoreOption& option, SlabSource& source, const Ren
   OutOfCoreStats s;
   r.render(p, img, &s);
   writeImage(output, img);
-  std::fprintf(stderr,
-               "rendered %dx%d %s on %s out of core in %.0f ms (first frame includes the kernel "
-               "builds): %d parts, %d held after it, %d uploaded (%.0f MiB%s; read %.0f ms, copied "
-               "%.0f ms, kernels %.0f ms, %.0f ms of them overlapped); opening %.0f ms; %s%s%s\n",
-               p.width, p.height, toString(p.mode), ctx.device().name.c_str(), s.totalMs, s.parts,
-               s.partsResident, s.uploads, mibOf(s.bytesUploaded), s.pinned ? ", pinned" : "",
-               s.readMs, s.uploadMs, s.kernelMs, s.overlapMs, r.openMs(),
-               s.fullResolution ? "full resolution" : "NOT at full resolution",
-               s.deviceOutOfMemory ? (": " + s.message).c_str() : "",
-               s.redrawnForRange ? " (drawn twice: the value range grew as the parts were read)"
-                                 : "");
+  std::fprintf(
+      stderr,
+      "rendered %dx%d %s on %s out of core in %.0f ms (first frame includes the kernel "
+      "builds): %d parts, %d held after it, %d uploaded (%.0f MiB%s; read %.0f ms, copied "
+      "%.0f ms, kernels %.0f ms, %.0f ms of them overlapped); opening %.0f ms; %s%s%s\n",
+      p.width, p.height, toString(p.mode), ctx.device().name.c_str(), s.totalMs, s.parts,
+      s.partsResident, s.uploads, mibOf(s.bytesUploaded), s.pinned ? ", pinned" : "", s.readMs,
+      s.uploadMs, s.kernelMs, s.overlapMs, r.openMs(),
+      s.fullResolution ? "full resolution" : "NOT at full resolution",
+      s.deviceOutOfMemory ? (": " + s.message).c_str() : "",
+      s.redrawnForRange ? " (drawn twice: the value range grew as the parts were read)" : "");
   if (!s.note.empty()) std::cerr << "voxray-cli: warning: " << s.note << "\n";
   for (const std::string& w : source.geometry().warnings)
     std::cerr << "voxray-cli: warning: " << w << "\n";
@@ -195,8 +195,7 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                 redrawn ? " (drawn twice: the range grew)" : "", coarseParts, previewMs,
                 1000.0 / previewMs, convergedMs, median(uploads), median(uploaded),
                 pinned ? "pinned" : "direct", median(readMs), median(uploadMs), median(kernelMs),
-                median(overlapMs), peak,
-                bench.frames);
+                median(overlapMs), peak, bench.frames);
   out << line;
   if (!note.empty()) out << "  note: " << note << "\n";
 }

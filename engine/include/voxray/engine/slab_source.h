@@ -63,9 +63,9 @@ std::unique_ptr<SlabSource> rawSlabSource(const std::string& input, const RawLay
 
 #ifdef VOXRAY_HAS_ZARR
 // Level 0 of the OME-Zarr at PATH, read on demand; its coarse level the pyramid's first level
-// whose voxels are at most 1/64 of level 0's and at most 32 MiB (the coarsest when none is), else the box mean
-// of level 0 made while streaming. Opening reads the metadata and that coarse level only.
-// Throws Error (Input) as OmeZarrLevel does.
+// whose voxels are at most 1/64 of level 0's and at most 32 MiB (the coarsest when none is), else
+// the box mean of level 0 made while streaming. Opening reads the metadata and that coarse level
+// only. Throws Error (Input) as OmeZarrLevel does.
 std::unique_ptr<SlabSource> omeZarrSlabSource(const std::string& path);
 #endif
 
