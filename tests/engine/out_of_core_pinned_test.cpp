@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "stability_helpers.h"
+#include "tall_volume.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/out_of_core.h"
 #include "voxray/io/error.h"
@@ -16,28 +17,6 @@
 namespace voxray {
 
 namespace {
-
-// 40x36x96: a blurred ellipsoid along z (it crosses every part) and a denser rod.
-const Volume& tallBall() {
-  static Volume v = [] {
-    Volume t;
-    t.dims = {40, 36, 96};
-    t.spacingMm = {1.0, 1.1, 0.9};
-    t.voxels.resize(t.voxelCount());
-    for (int z = 0; z < t.dims.z; ++z)
-      for (int y = 0; y < t.dims.y; ++y)
-        for (int x = 0; x < t.dims.x; ++x) {
-          const double ex = (x - 19.5) / 15.0, ey = (y - 17.5) / 13.0, ez = (z - 47.5) / 44.0;
-          const double r = std::sqrt(ex * ex + ey * ey + ez * ez);
-          double hu = -1000.0 + 2000.0 / (1.0 + std::exp((r - 1.0) * 14.0));
-          const double rod = std::hypot(x - 26.0, y - 15.0);
-          hu += 800.0 / (1.0 + std::exp((rod - 3.0) * 2.0)) * (z > 20 && z < 80);
-          t.voxels[t.index(x, y, z)] = int16_t(std::lround(std::clamp(hu, -1024.0, 3000.0)));
-        }
-    return t;
-  }();
-  return v;
-}
 
 RenderParams view(Mode mode, double elevation, double azimuth = 35.0) {
   RenderParams p;
@@ -56,7 +35,7 @@ RenderParams view(Mode mode, double elevation, double azimuth = 35.0) {
 OutOfCoreOptions options(OutOfCoreOptions::Upload upload, bool ess = true,
                          VolumeStorage storage = VolumeStorage::Buffer) {
   OutOfCoreOptions o;
-  o.budgetBytes = tallBall().byteSize() / 2;
+  o.budgetBytes = test::tallVolume().byteSize() / 2;
   o.partSlices = 4;  // 12-slice parts with their aprons: 8 parts, 3 held at once
   o.emptySpaceSkipping = ess;
   o.storage = storage;
@@ -67,7 +46,7 @@ OutOfCoreOptions options(OutOfCoreOptions::Upload upload, bool ess = true,
 // Frames from elevation 90 down to -90 and back: the part order turns over, so the evictions
 // differ from frame to frame. For each: the image, the uploads, the parts held.
 void expectSameFrames(const OutOfCoreOptions& direct, const OutOfCoreOptions& pinned, Mode mode) {
-  const Volume& v = tallBall();
+  const Volume& v = test::tallVolume();
   auto srcA = volumeSlabSource(v), srcB = volumeSlabSource(v);
   OutOfCoreRenderer a(test::pocl(), *srcA, direct), b(test::pocl(), *srcB, pinned);
   ASSERT_EQ(a.partCount(), b.partCount());
@@ -115,7 +94,7 @@ TEST(OutOfCorePinned, ImageStorageEqualsDirect) {
 
 // Auto on a CPU device stays Direct (in-place slices, no copy): nothing pinned.
 TEST(OutOfCorePinned, AutoOnCpuIsDirect) {
-  auto src = volumeSlabSource(tallBall());
+  auto src = volumeSlabSource(test::tallVolume());
   OutOfCoreRenderer r(test::pocl(), *src, options(OutOfCoreOptions::Upload::Auto));
   Image img;
   OutOfCoreStats s;
@@ -128,7 +107,7 @@ TEST(OutOfCorePinned, AutoOnCpuIsDirect) {
 // (host), and the overlap as their sum less that stretch. The kernels run one after another
 // on one in-order queue inside the stretch; 1 ms of slack for the two clocks' rounding.
 TEST(OutOfCorePinned, StatsSayReadUploadKernelAndOverlap) {
-  auto src = volumeSlabSource(tallBall());
+  auto src = volumeSlabSource(test::tallVolume());
   OutOfCoreRenderer r(test::pocl(), *src, options(OutOfCoreOptions::Upload::Pinned));
   Image img;
   OutOfCoreStats s;
@@ -151,7 +130,7 @@ TEST(OutOfCorePinned, StatsSayReadUploadKernelAndOverlap) {
 // drawn coarse, flagged and explained; the next frame converges within what it held.
 TEST(OutOfCorePinned, AllocationFailureAsDirect) {
   using U = OutOfCoreOptions::Upload;
-  const Volume& v = tallBall();
+  const Volume& v = test::tallVolume();
   auto srcA = volumeSlabSource(v), srcB = volumeSlabSource(v);
   OutOfCoreOptions od = options(U::Direct), op = options(U::Pinned);
   od.faultDeviceParts = op.faultDeviceParts = 2;

@@ -309,6 +309,19 @@ void RenderWorker::run() {
       if (t.joinable()) t.join();  // cancelled: it ends after the build in progress
     }
   } join{builder};
+  // A frame made for REQ: to the background callback, or shown (a view frame is kept: banded
+  // frames paint over it, time points warm up with its parameters).
+  auto deliver = [&](const Request& r, const std::shared_ptr<Frame>& frame) {
+    if (r.background) {
+      if (callbacks_.background) task_.post([f = callbacks_.background, frame] { f(frame); });
+      return;
+    }
+    if (r.tag == 0) {
+      view = frame->image;
+      lastView = r.params;
+    }
+    if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
+  };
   while (true) {
     std::shared_ptr<const Volume> nextVolume, ahead;
     bool sameSeries = false;
@@ -605,15 +618,7 @@ void RenderWorker::run() {
         }
         // The bands of a sharp frame are not split here: one converged frame.
         drawOutOfCore(req->params, req->interactive, *frame);
-        if (req->background) {
-          if (callbacks_.background) task_.post([f = callbacks_.background, frame] { f(frame); });
-          continue;
-        }
-        if (req->tag == 0) {
-          view = frame->image;
-          lastView = req->params;
-        }
-        if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
+        deliver(*req, frame);
       } catch (const std::exception& e) {
         reportError(e.what(), false);
       }
@@ -644,15 +649,7 @@ void RenderWorker::run() {
         frame->image = raycaster->renderWithHits(req->params, frame->hits, &frame->stats);
       else
         raycaster->rendererFor(req->params).render(req->params, frame->image, &frame->stats);
-      if (req->background) {
-        if (callbacks_.background) task_.post([f = callbacks_.background, frame] { f(frame); });
-        continue;
-      }
-      if (req->tag == 0) {
-        view = frame->image;
-        lastView = req->params;
-      }
-      if (callbacks_.frame) task_.post([f = callbacks_.frame, frame] { f(frame); });
+      deliver(*req, frame);
     } catch (const std::exception& e) {
       reportError(e.what(), false);
     }

@@ -129,32 +129,6 @@ QGroupBox* makeRenderGroup(RenderStateModel& m, VolumeDocument& doc) {
       QMessageBox::warning(preset, "Preset", e.what());
     }
   });
-  // Issue 38: a study larger than this is drawn out of core (RenderWorker::setOutOfCore).
-  auto* budget = new QSpinBox;
-  budget->setObjectName("gpuBudget");
-  budget->setRange(0, kGpuBudgetMibMax);
-  budget->setSingleStep(256);
-  budget->setSuffix(" MiB");
-  budget->setSpecialValueText("automatic");
-  budget->setKeyboardTracking(false);
-  budget->setToolTip(
-      "Device memory the 3D view may hold of a study: a larger study is drawn out of core, "
-      "part by part; while dragging it shows the parts on the device at full resolution and "
-      "the others coarse, and converges when the mouse rests. Automatic: only a study that "
-      "does not fit the device");
-  auto refreshBudget = [budget, &m] {
-    QSignalBlocker b(budget);
-    budget->setValue(m.quality().gpuBudgetMib);
-  };
-  refreshBudget();
-  onModelChange<unsigned>(budget, m.changed, [refreshBudget](unsigned what) {
-    if (what & kQuality) refreshBudget();
-  });
-  QObject::connect(budget, &QSpinBox::valueChanged, box, [&m](int mib) {
-    Quality q = m.quality();
-    q.gpuBudgetMib = mib;
-    m.setQuality(q);
-  });
   form->addRow("Preset", preset);
   form->addRow("Shift", makePresetShiftRow(m, doc));
 
