@@ -36,6 +36,16 @@ cases() {  # INPUT...: the one-GPU frame, two GPUs (device, host composite), the
 }
 big="/tmp/ctbig.raw --raw-dims 2048,2048,1024 --raw-type i16 --raw-spacing 0.1196,0.1196,0.1582"
 case ${1:-two} in
+  alternate)  # the goal's ratio round by round: one GPU, then two (4 bands, with and without
+    # --balance), ROUNDS times, so each ratio is taken from frames minutes apart at most
+    make_ct512
+    time python3 docs/bench/make_ct_big.py /tmp/ct512.raw /tmp/ctbig.raw 4 1024
+    # shellcheck disable=SC2086
+    for ((run = 1; run <= ${ROUNDS:-4}; run++)); do
+      $B bench $big $heavy --device 0 --no-count 2>&1
+      $B bench $big $heavy $two --composite device --bands 4 2>&1
+      $B bench $big $heavy $two --composite device --bands 4 --balance 2>&1
+    done ;;
   bands)
     make_ct512
     time python3 docs/bench/make_ct_big.py /tmp/ct512.raw /tmp/ctbig.raw 4 1024
