@@ -23,6 +23,7 @@ import csv
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -84,6 +85,7 @@ with open(os.path.join(work, "pareto.png"), "rb") as f:
         failures.append("pareto.png is not a PNG")
 
 split = work.rstrip("/") + "-split"
+shutil.rmtree(split, ignore_errors=True)  # a plot left by an earlier run is not SCORE=off's
 for score in ("off", "again"):
     r = subprocess.run(["bash", script, split], env=dict(env, SCORE=score), capture_output=True,
                        text=True)
