@@ -19,6 +19,7 @@
 #include "render_worker.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/raycaster.h"
+#include "worker_frames.h"
 
 namespace voxray {
 namespace {
@@ -30,42 +31,10 @@ ClContext& pocl() {
   return ctx;
 }
 
-// The worker's frames on its thread (no Post), as worker_frames.h, but a request waits for its
-// own frame past the coarse first image of a study just opened (Frame::coarse).
-struct Frames {
-  std::mutex mutex;
-  std::condition_variable arrived;
-  std::shared_ptr<const Frame> last;
-  int coarse = 0;  // coarse first images seen
-  std::string error;
-
-  RenderCallbacks callbacks() {
-    RenderCallbacks cb;
-    cb.frame = [this](std::shared_ptr<const Frame> f) {
-      std::lock_guard lock(mutex);
-      if (f->coarse)
-        ++coarse;
-      else
-        last = std::move(f);
-      arrived.notify_all();
-    };
-    cb.error = [this](const std::string& m, bool) {
-      std::lock_guard lock(mutex);
-      error = m;
-      arrived.notify_all();
-    };
-    return cb;
-  }
-  std::shared_ptr<const Frame> render(RenderWorker& w, const RenderParams& p, bool interactive) {
-    std::unique_lock lock(mutex);
-    last.reset();
-    lock.unlock();
-    w.request(p, interactive);
-    lock.lock();
-    arrived.wait_for(lock, std::chrono::seconds(240), [&] { return last || !error.empty(); });
-    EXPECT_EQ(error, "");
-    return last;
-  }
+// The worker's frames (worker_frames.h), waiting up to 4 minutes for one: an out-of-core
+// frame on PoCL marches one ray per work-item.
+struct Frames : test::WorkerFrames {
+  Frames() { wait = std::chrono::seconds(240); }
 };
 
 TEST(OutOfCoreChoice, UserBudgetDecidesElseTheDeviceLessItsHeadroom) {
