@@ -18,6 +18,7 @@ target_sources(voxray_io PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/secondary_capture.cpp
   ${CMAKE_CURRENT_LIST_DIR}/series_grouping.cpp
   ${CMAKE_CURRENT_LIST_DIR}/siemens_mosaic.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/slice_permute.cpp
   ${CMAKE_CURRENT_LIST_DIR}/phantom_series.cpp
   ${CMAKE_CURRENT_LIST_DIR}/private_tags.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stack_geometry.cpp

@@ -19,6 +19,7 @@
 #include "pixel_decode.h"
 #include "resample.h"
 #include "series_grouping.h"
+#include "slice_permute.h"
 #include "stack_geometry.h"
 #include "value_mapping.h"
 #include "voxray/io/error.h"
@@ -250,26 +251,6 @@ void decodeSlices(const Candidate& c, const LoadOptions& options, const std::vec
         }
       },
       options.cancel);
-}
-
-// Moves slice SOURCE[k] of VOXELS to slice k, for every k (SOURCE is a permutation),
-// following its cycles with one slice aside.
-void permuteSlices(VoxelVector& voxels, size_t sliceSize, const std::vector<size_t>& source) {
-  std::vector<bool> placed(source.size(), false);
-  std::vector<int16_t> aside(sliceSize);
-  auto slice = [&](size_t k) { return voxels.data() + k * sliceSize; };
-  for (size_t start = 0; start < source.size(); ++start) {
-    if (placed[start] || source[start] == start) continue;
-    std::copy_n(slice(start), sliceSize, aside.data());
-    size_t k = start;
-    while (source[k] != start) {
-      std::copy_n(slice(source[k]), sliceSize, slice(k));
-      placed[k] = true;
-      k = source[k];
-    }
-    std::copy_n(aside.data(), sliceSize, slice(k));
-    placed[k] = true;
-  }
 }
 
 // Page tables for the BYTES at P, made on every core: the volume's first touch (50,000
