@@ -38,6 +38,11 @@ void OutOfCoreOption::add(CLI::App& cmd) {
                  "slices where they are, a blocking copy) or auto (pinned on a GPU, direct on a "
                  "CPU)")
       ->check(CLI::IsMember({"auto", "direct", "pinned"}));
+  cmd.add_option("--ooc-reuse", reuse,
+                 "with --memory-budget and pinned uploads: on (default) copies a part into an "
+                 "evicted part's device memory of its size; off releases and allocates per part "
+                 "(for comparing the two)")
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 std::unique_ptr<SlabSource> openSlabSource(const InputOptions& input, std::optional<Volume>& held) {
@@ -67,6 +72,7 @@ OutOfCoreOptions optionsOf(const OutOfCoreOption& option, const OutOfCoreRun& ru
   o.upload = option.upload == "pinned"   ? OutOfCoreOptions::Upload::Pinned
              : option.upload == "direct" ? OutOfCoreOptions::Upload::Direct
                                          : OutOfCoreOptions::Upload::Auto;
+  o.reuseDeviceMemory = option.reuse == "on";
   o.emptySpaceSkipping = run.ess;
   o.storage = parseStorage(run.storage);
   return o;
@@ -122,7 +128,8 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
       std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   const bool redrawn = s.redrawnForRange;
   const std::string note = s.note;
-  std::vector<double> preview, converged, uploaded, uploads, readMs, uploadMs, kernelMs, overlapMs;
+  std::vector<double> preview, converged, uploaded, uploads, readMs, uploadMs, kernelMs, overlapMs,
+      allocations;
   bool pinned = false;
   int coarseParts = 0;
   for (int i = 0; i < bench.frames; ++i) {
@@ -141,6 +148,7 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
     uploadMs.push_back(s.uploadMs);
     kernelMs.push_back(s.kernelMs);
     overlapMs.push_back(s.overlapMs);
+    allocations.push_back(double(s.allocations));
     pinned = pinned || s.pinned;
   }
   const double previewMs = median(preview), convergedMs = median(converged);
@@ -173,6 +181,7 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                           {"converged_upload_ms", median(uploadMs)},
                           {"converged_kernel_ms", median(kernelMs)},
                           {"converged_overlap_ms", median(overlapMs)},
+                          {"device_allocations_per_converged_frame", median(allocations)},
                           {"peak_rss_mib", peak}}
                .dump()
         << "\n";
@@ -184,7 +193,8 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                 "  first image %.0f ms (opening %.0f ms: the coarse level); first converged frame "
                 "done at %.0f ms%s\n"
                 "  preview (orbit, %d parts coarse): median %.1f ms, %.2f fps\n"
-                "  converged: median %.0f ms, %.0f parts / %.0f MiB uploaded per frame (%s)\n"
+                "  converged: median %.0f ms, %.0f parts / %.0f MiB uploaded per frame (%s, %.0f "
+                "device allocations)\n"
                 "    per converged frame: read %.0f ms, upload %.0f ms, kernels %.0f ms, of "
                 "which %.0f ms overlapped\n"
                 "  peak resident memory %.0f MiB; %d frames each over a 360-degree orbit; "
@@ -194,8 +204,8 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                 r.residentCount(), firstMs, r.openMs(), convergedAtMs,
                 redrawn ? " (drawn twice: the range grew)" : "", coarseParts, previewMs,
                 1000.0 / previewMs, convergedMs, median(uploads), median(uploaded),
-                pinned ? "pinned" : "direct", median(readMs), median(uploadMs), median(kernelMs),
-                median(overlapMs), peak, bench.frames);
+                pinned ? "pinned" : "direct", median(allocations), median(readMs), median(uploadMs),
+                median(kernelMs), median(overlapMs), peak, bench.frames);
   out << line;
   if (!note.empty()) out << "  note: " << note << "\n";
 }

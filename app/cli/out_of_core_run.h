@@ -18,6 +18,7 @@ struct OutOfCoreOption {
   size_t budgetMib = 0;
   int partSlices = 0;
   std::string upload = "auto";  // --ooc-upload: auto, direct or pinned (OutOfCoreOptions::Upload)
+  std::string reuse = "on";     // --ooc-reuse: OutOfCoreOptions::reuseDeviceMemory
 
   void add(CLI::App& cmd);
   bool active() const { return budgetMib > 0; }

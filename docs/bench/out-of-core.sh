@@ -13,9 +13,10 @@
 # made by docs/bench/make_ball_raw.py under /tmp when missing. CLI: the voxray-cli to run
 # (default: build-gpu/bin/voxray-cli through gpu-env.sh). VOXRAY_DEVICE picks the device (gpu).
 # ZARR=1 also converts the raw volume to an OME-Zarr (chunks 64, blosc-zstd) and streams it.
-# UPLOADS: the upload paths the out-of-core case runs, in turn (--ooc-upload; default "pinned
-# direct": the pinned staging ring with copies beside the kernels, then the blocking copies
-# from pageable memory it replaced); each prints read, upload, kernel and overlapped ms per
+# UPLOADS: the upload paths the out-of-core case runs, in turn (--ooc-upload, ",off" adds
+# --ooc-reuse off; default "pinned pinned,off direct": the pinned staging ring with copies beside
+# the kernels into evicted parts' device memory, the same allocating per part, then the blocking
+# copies from pageable memory it replaced); each prints read, upload, kernel and overlapped ms per
 # converged frame. On the device machine (issue 38's upload-bound frame, gpu-h200-out-of-core.txt):
 # build build-gpu lean here as gpu-bench.sh's header says (voxray-cli is all it needs), carry
 # build-gpu (its bin/, lib/ and the GNU time binary gpu-round8.sh names) and run from the
@@ -34,9 +35,11 @@ IN="$RAW --raw-dims $DIMS --raw-type i16 --raw-rescale 1,0"
 LOOK="--mode dvr --preset CT-Bone --device ${VOXRAY_DEVICE:-gpu} --sizes $SIZE --frames ${FRAMES:-12}"
 TIME="${TIME_BIN:-/usr/bin/time} -f %e_s_wall_%M_KiB_peak_RSS"
 ls -l "$RAW"; nproc; free -g | head -2; cat /proc/loadavg
-for U in ${UPLOADS:-pinned direct}; do
-  echo "== out of core: budget $BUDGET MiB, --ooc-upload $U"
-  $TIME $B bench $IN $LOOK --memory-budget "$BUDGET" --ooc-upload "$U" 2>&1
+for U in ${UPLOADS:-pinned pinned,off direct}; do
+  R=on
+  [[ $U == *,* ]] && R=${U#*,} && U=${U%,*}
+  echo "== out of core: budget $BUDGET MiB, --ooc-upload $U --ooc-reuse $R"
+  $TIME $B bench $IN $LOOK --memory-budget "$BUDGET" --ooc-upload "$U" --ooc-reuse "$R" 2>&1
   cat /proc/loadavg
 done
 echo "== in core (the whole volume on the device; fails where it does not fit)"

@@ -454,6 +454,7 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
   }
   m.acc.resize(pixels * 4);
   clCall([&] { return m.cl.queue.finish(); });
+  m.spares.clear();  // an upload that failed left them: their launches are done
   s.partsMs = msSince(partsStart);
   clCall([&] {  // every event is done: the rest counted
     m.harvest();

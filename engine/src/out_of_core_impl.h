@@ -39,6 +39,13 @@ struct OutOfCoreRenderer::Impl {
     int16_t* ptr = nullptr;
     cl::Event copied;  // the last copy from it: its bytes are free to overwrite once done
   };
+  // An evicted part's device memory (the pinned path), kept for the next part of its size.
+  struct Spare {
+    cl::Buffer buffer;
+    cl::Image3D image;
+    size_t bytes = 0;
+    cl::Event lastUse;  // the evicted part's last launch: a copy into it waits for that
+  };
   // One kernel launch of a frame: a part at full resolution, or slices [first, end) from the
   // coarse level.
   struct Item {
@@ -76,6 +83,8 @@ struct OutOfCoreRenderer::Impl {
   size_t ringNext = 0;
   cl::CommandQueue transfer;       // in order, profiling on; the copies alone
   std::vector<cl::Event> freeing;  // the last launches on the parts evicted since the last copy
+  std::vector<Spare> spares;       // evicted, not yet reused or released
+  Spare takeSpare(size_t bytes);   // one of BYTES (none: empty); the others released
   // This frame's launches and copies not yet counted, and what those counted took. An event
   // holds its command and so the buffers it used (PoCL frees an evicted part's memory only
   // with its last launch's event): they are counted and dropped as they finish.
@@ -121,12 +130,15 @@ struct OutOfCoreRenderer::Impl {
   void uploadPinned(Part& part, OutOfCoreStats& s);
   bool makeRing();
   void evict(Part& part) {
+    if (!ring.empty() && o.reuseDeviceMemory)
+      spares.push_back({part.buffer, part.image, part.bytes, part.lastUse});
+    else if (part.lastUse())
+      freeing.push_back(part.lastUse);
     part.buffer = cl::Buffer();
     part.image = cl::Image3D();
     part.resident = false;
     residentBytes -= part.bytes;
     evictedPending = true;
-    if (part.lastUse()) freeing.push_back(part.lastUse);
     part.lastUse = cl::Event();
     part.ready = cl::Event();
   }

@@ -65,6 +65,21 @@ void OutOfCoreRenderer::Impl::harvest() {
       slot.copied = cl::Event();
 }
 
+OutOfCoreRenderer::Impl::Spare OutOfCoreRenderer::Impl::takeSpare(size_t bytes) {
+  Spare taken;
+  for (size_t k = 0; k < spares.size(); ++k)
+    if (spares[k].bytes == bytes) {
+      taken = std::move(spares[k]);
+      spares.erase(spares.begin() + std::ptrdiff_t(k));
+      break;
+    }
+  // The others (another size: the parts at the volume's ends have one apron) are released once
+  // their launches are done, as Direct releases every evicted part.
+  for (Spare& spare : spares)
+    if (spare.lastUse()) freeing.push_back(spare.lastUse);
+  return taken;
+}
+
 void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
   const PartRange& r = part.range;
   const glm::ivec3 n = geom.dims;
@@ -89,9 +104,11 @@ void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
   // The empty-space cells and the range from the slices as the Direct path learns them.
   if (rowsKnown < int(rowKnown.size())) learnRows(slot.ptr, r.storedFirst, r.storedEnd);
   s.readMs += msSince(t0);
-  // The evicted parts' memory is free once their last launches are done: wait for those alone
-  // (the part drawn just before, in a frame that evicts in order) so that the budget is what
-  // the device holds; the read above ran while they did.
+  // An evicted part's memory of this size is reused: its copy waits on the device for that
+  // part's last launch. The others' memory is free once their last launches are done: wait for
+  // those alone (the part drawn just before, in a frame that evicts in order) so that the
+  // budget is what the device holds; the read above ran while they did.
+  Spare spare = takeSpare(part.bytes);
   if (!freeing.empty()) {
     clCall([&] { return cl::WaitForEvents(freeing); });
     freeing.clear();
@@ -100,21 +117,27 @@ void OutOfCoreRenderer::Impl::uploadPinned(Part& part, OutOfCoreStats& s) {
       return 0;
     });
   }
+  spares.clear();  // their launches are done: released without waiting
   evictedPending = false;
   cl::Event copied;
+  std::vector<cl::Event> after;
+  if (spare.lastUse()) after.push_back(spare.lastUse);
+  const std::vector<cl::Event>* wait = after.empty() ? nullptr : &after;
+  if (!spare.buffer() && !spare.image()) ++s.allocations;
   try {
     clCall([&] {
       if (storage == VolumeStorage::Image3d) {
         cl::ImageFormat format(CL_R, CL_SNORM_INT16);  // as DeviceVolume: the kernel scales back
-        part.image = cl::Image3D(cl.context, CL_MEM_READ_ONLY, format, size_t(n.x), size_t(n.y),
-                                 size_t(slices));
+        part.image = spare.image() ? spare.image
+                                   : cl::Image3D(cl.context, CL_MEM_READ_ONLY, format, size_t(n.x),
+                                                 size_t(n.y), size_t(slices));
         transfer.enqueueWriteImage(part.image, CL_FALSE, {0, 0, 0},
-                                   {size_t(n.x), size_t(n.y), size_t(slices)}, 0, 0, slot.ptr,
-                                   nullptr, &copied);
+                                   {size_t(n.x), size_t(n.y), size_t(slices)}, 0, 0, slot.ptr, wait,
+                                   &copied);
       } else {
-        part.buffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, part.bytes);
-        transfer.enqueueWriteBuffer(part.buffer, CL_FALSE, 0, part.bytes, slot.ptr, nullptr,
-                                    &copied);
+        part.buffer =
+            spare.buffer() ? spare.buffer : cl::Buffer(cl.context, CL_MEM_READ_ONLY, part.bytes);
+        transfer.enqueueWriteBuffer(part.buffer, CL_FALSE, 0, part.bytes, slot.ptr, wait, &copied);
       }
       transfer.flush();
       return 0;
@@ -175,6 +198,7 @@ void OutOfCoreRenderer::Impl::upload(Part& part, OutOfCoreStats& s) {
     freeing.clear();
   }
   const auto t2 = Clock::now();  // the copy alone, not the wait for the queued parts
+  ++s.allocations;
   clCall([&] {
     auto* ptr = const_cast<int16_t*>(in);
     if (image) {

@@ -84,6 +84,50 @@ TEST(OutOfCorePinned, EqualsDirectBitForBit) {
   expectSameFrames(options(U::Direct, false), options(U::Pinned, false), Mode::Dvr);
 }
 
+// Pinned uploads copy into an evicted part's device memory of the same size instead of
+// releasing it and allocating anew (NVIDIA's runtime waited for a released buffer's launches):
+// the frames stay those of Direct bit for bit with reuse on and off; with it on, only a part of
+// another size (the two end parts: one apron, 8 slices against 12) allocates once the device is
+// full, at most 2 a frame; off, every upload allocates, as Direct.
+TEST(OutOfCorePinned, ReusesEvictedPartsMemory) {
+  using U = OutOfCoreOptions::Upload;
+  OutOfCoreOptions off = options(U::Pinned);
+  off.reuseDeviceMemory = false;
+  expectSameFrames(options(U::Direct), off, Mode::Dvr);
+  for (VolumeStorage storage : {VolumeStorage::Buffer, VolumeStorage::Image3d}) {
+    if (storage == VolumeStorage::Image3d && !test::pocl().device().imageSupport) continue;
+    for (bool reuse : {true, false}) {
+      OutOfCoreOptions o = options(U::Pinned, true, storage);
+      o.reuseDeviceMemory = reuse;
+      auto src = volumeSlabSource(test::tallVolume());
+      OutOfCoreRenderer r(test::pocl(), *src, o);
+      int uploads = 0, allocations = 0;
+      int frameIndex = 0;
+      for (double elevation : {90.0, -90.0, 90.0, -40.0}) {
+        Image img;
+        OutOfCoreStats s;
+        r.render(view(Mode::Dvr, elevation), img, &s);
+        const std::string at = std::string(reuse ? "reuse" : "no reuse") + " frame " +
+                               std::to_string(frameIndex) +
+                               (storage == VolumeStorage::Buffer ? " buffers" : " images");
+        ASSERT_GT(s.uploads, 0) << at;
+        if (!reuse) {
+          EXPECT_EQ(s.allocations, s.uploads) << at;
+        } else if (frameIndex > 0) {
+          EXPECT_LE(s.allocations, 2) << at;
+        }
+        if (frameIndex > 0) uploads += s.uploads, allocations += s.allocations;
+        ++frameIndex;
+      }
+      if (reuse) {
+        EXPECT_LT(2 * allocations, uploads) << allocations << " allocations";
+      }
+      RecordProperty(std::string(reuse ? "reuse" : "no_reuse") + "_allocations_uploads",
+                     std::to_string(allocations) + "/" + std::to_string(uploads));
+    }
+  }
+}
+
 // The storage GPUs take (image3d_t): the copies are image writes.
 TEST(OutOfCorePinned, ImageStorageEqualsDirect) {
   if (!test::pocl().device().imageSupport) GTEST_SKIP() << "no image support";

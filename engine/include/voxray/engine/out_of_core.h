@@ -70,6 +70,11 @@ struct OutOfCoreOptions {
   // a CPU device (where "pinned" memory is ordinary memory and in-place slices copy nothing).
   enum class Upload { Auto, Direct, Pinned };
   Upload upload = Upload::Auto;
+  // Pinned: an evicted part's device memory is kept for the next part of the same size, its
+  // copy waiting on the device for the evicted part's last launch. NVIDIA's runtime waited for
+  // a buffer's queued launches when it was released, which ran the read, the copy and the
+  // kernels one after another. False (benchmarks' A/B): released and allocated as Direct does.
+  bool reuseDeviceMemory = true;
   // A fault hook (tests): the device takes at most this many parts at once, whatever the
   // budget says; an upload beyond fails as an allocation on a full device does. -1: no limit.
   int faultDeviceParts = -1;
@@ -83,6 +88,7 @@ struct OutOfCoreStats {
   int partsFull = 0;               // drawn at full resolution in this frame
   int partsCoarse = 0;  // drawn from the coarse level in this frame (full + coarse = parts)
   int uploads = 0;      // parts uploaded in this frame
+  int allocations = 0;  // device allocations for parts in this frame (fewer than uploads: reused)
   size_t bytesUploaded = 0;
   double readMs = 0.0;    // reading the uploaded parts' slices from the source (host wall)
   double uploadMs = 0.0;  // their copies to the device: Pinned, the copies' profiled device
