@@ -133,12 +133,11 @@ int benchSplit(const BenchOptions& o) {
 // --memory-budget: each size over the orbit out of core on one device, preview and converged.
 int benchOutOfCoreSizes(const BenchOptions& o) {
   if (o.multi.active() || o.seedTable || o.stallRepeats > 0 || !o.drag.empty() ||
-      o.tfDragPairs > 0 || o.firstImage || !o.labels.raw.empty() || !o.labels.file.empty() ||
+      o.tfDragPairs > 0 || !o.labels.raw.empty() || !o.labels.file.empty() ||
       !o.overlay.path.empty() || !o.quality.empty())
     throw inputError(
         "--memory-budget benches plain frames on one device: leave out --split/--devices, "
-        "--seed-table, --stall, --drag, --tf-drag, --first-image, --quality, labels and "
-        "--overlay");
+        "--seed-table, --stall, --drag, --tf-drag, --quality, labels and --overlay");
   std::optional<Volume> held;
   auto source = openSlabSource(o.input, held);
   const std::string name =
@@ -148,6 +147,7 @@ int benchOutOfCoreSizes(const BenchOptions& o) {
   run.storage = o.storage;
   run.ess = o.ess == "on";
   run.json = o.json;
+  run.firstOnly = o.firstImage;
   for (const auto& size : split(o.sizes))
     for (const auto& grad : split(o.gradients)) {
       RenderParams p = o.flags.params();
@@ -203,7 +203,8 @@ Run addBenchCommand(CLI::App& app) {
                 "time from the start to the first image (a coarse level's frame) and to the "
                 "full-resolution frame of the first --sizes, split by step (read, coarse level, "
                 "upload, empty-space tables, frames), with the peak resident memory against "
-                "the volume's bytes (issue 38)");
+                "the volume's bytes (issue 38); with --memory-budget: the first image alone "
+                "(context, opening, frame), no converged frame");
   cmd->add_option("--coarse-factor", o->coarseFactor,
                   "--first-image: the coarse level's reduction per axis, 2, 4 or 8 (box mean); "
                   "1: no coarse frame (the full frame is the first image, as before)")

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -80,6 +81,13 @@ OutOfCoreOptions optionsOf(const OutOfCoreOption& option, const OutOfCoreRun& ru
 
 double mibOf(size_t bytes) { return double(bytes) / double(1 << 20); }
 
+// OutOfCoreStats::shown for the bench's reader.
+const char* shownText(const std::string& shown) {
+  return shown == "preview"  ? "a preview from the quick level"
+         : shown == "coarse" ? "the coarse level"
+                             : "full resolution";
+}
+
 }  // namespace
 
 int renderOutOfCore(const OutOfCoreOption& option, SlabSource& source, const RenderParams& p,
@@ -113,16 +121,58 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                     std::ostream& out) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
+  auto msSinceStart = [&] {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  };
   ClContext ctx(run.device);
-  OutOfCoreRenderer r(ctx, source, optionsOf(option, run));
+  const double contextMs = msSinceStart();
   RenderParams p = base;
+  const OutOfCoreOptions options = optionsOf(option, run);
+  // The first frame's programs built while the renderer reads the source's first level: a
+  // failed build is built again, and reported, by the frame that needs it.
+  std::jthread build([&] {
+    try {
+      OutOfCoreRenderer::prebuild(ctx, p, options);
+    } catch (const Error&) {
+    }
+  });
+  OutOfCoreRenderer r(ctx, source, options);
+  const double openedMs = msSinceStart();
   Image img;
   OutOfCoreStats s;
-  // The first image: the pass over the source, the coarse level, then a preview (its kernels
-  // built here).
+  // The first image: the source's quick (or coarse) level, then a preview (its kernels built
+  // by then or waited for).
   r.preview(p, img, &s);
-  const double firstMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  const double firstMs = msSinceStart();
+  build.join();
   const double firstCells = s.cellsKnown;
+  const std::string firstShown = s.shown;
+  if (run.firstOnly) {
+    if (run.json) {
+      out << nlohmann::json{{"input", name},
+                            {"size", std::to_string(p.width) + "x" + std::to_string(p.height)},
+                            {"device", ctx.device().name},
+                            {"source", source.describe()},
+                            {"context_ms", contextMs},
+                            {"open_ms", r.openMs()},
+                            {"opened_at_ms", openedMs},
+                            {"first_image_ms", firstMs},
+                            {"first_image_shown", firstShown},
+                            {"peak_rss_mib", residentMiB(true)}}
+                 .dump()
+          << "\n";
+    } else {
+      char line[512];
+      std::snprintf(line, sizeof(line),
+                    "%s %dx%d %s on %s: first image %.0f ms (%s; context %.0f ms, opening %.0f "
+                    "ms, frame from %.0f ms); peak resident memory %.0f MiB\n",
+                    name.c_str(), p.width, p.height, toString(p.mode), ctx.device().name.c_str(),
+                    firstMs, shownText(firstShown), contextMs, r.openMs(), openedMs,
+                    residentMiB(true));
+      out << line;
+    }
+    return;
+  }
   r.render(p, img, &s);  // the converged frame's kernels, and the cache filled
   const double convergedAtMs =
       std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -168,6 +218,9 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                           {"open_ms", r.openMs()},
                           {"first_image_ms", firstMs},
                           {"first_image_cells_known", firstCells},
+                          {"first_image_shown", firstShown},
+                          {"context_ms", contextMs},
+                          {"opened_at_ms", openedMs},
                           {"first_converged_at_ms", convergedAtMs},
                           {"first_converged_redrawn", redrawn},
                           {"note", note},
@@ -187,11 +240,11 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
         << "\n";
     return;
   }
-  char line[768];
+  char line[1024];
   std::snprintf(line, sizeof(line),
                 "%s %dx%d %s on %s, %s: %.0f MiB volume, budget %zu MiB: %d parts, %d held\n"
-                "  first image %.0f ms (opening %.0f ms: the coarse level); first converged frame "
-                "done at %.0f ms%s\n"
+                "  first image %.0f ms (%s; context %.0f ms, opening %.0f ms: the first level; "
+                "frame from %.0f ms); first converged frame done at %.0f ms%s\n"
                 "  preview (orbit, %d parts coarse): median %.1f ms, %.2f fps\n"
                 "  converged: median %.0f ms, %.0f parts / %.0f MiB uploaded per frame (%s, %.0f "
                 "device allocations)\n"
@@ -201,9 +254,9 @@ void benchOutOfCore(const OutOfCoreOption& option, SlabSource& source, const std
                 "medians\n",
                 name.c_str(), p.width, p.height, toString(p.mode), ctx.device().name.c_str(),
                 source.describe().c_str(), volumeMib, option.budgetMib, r.partCount(),
-                r.residentCount(), firstMs, r.openMs(), convergedAtMs,
-                redrawn ? " (drawn twice: the range grew)" : "", coarseParts, previewMs,
-                1000.0 / previewMs, convergedMs, median(uploads), median(uploaded),
+                r.residentCount(), firstMs, shownText(firstShown), contextMs, r.openMs(), openedMs,
+                convergedAtMs, redrawn ? " (drawn twice: the range grew)" : "", coarseParts,
+                previewMs, 1000.0 / previewMs, convergedMs, median(uploads), median(uploaded),
                 pinned ? "pinned" : "direct", median(allocations), median(readMs), median(uploadMs),
                 median(kernelMs), median(overlapMs), peak, bench.frames);
   out << line;

@@ -32,6 +32,7 @@ struct OutOfCoreRun {
   std::string device, storage = "auto";
   bool ess = true;
   bool json = false;
+  bool firstOnly = false;  // bench --first-image: the first image's times, no other frame
 };
 
 // The converged frame of SOURCE into OUTPUT; a summary on stderr.

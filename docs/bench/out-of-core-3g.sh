@@ -7,6 +7,8 @@
 # this container has no systemd and a cgroup v1 hierarchy the helpers must not touch).
 # bench prints the time to the first image (a preview from the coarse level), to the first
 # converged frame, the medians and the peak RSS. The files go under DIR and are deleted.
+# FIRST=1: bench --first-image, the first image alone (context, opening, frame; no converged
+# frame), as run G in out-of-core-pocl.txt timed it.
 #
 #   docs/bench/out-of-core-3g.sh [DIR] [CLI]    (defaults /tmp/zarr38-data, build/bin/voxray-cli)
 set -u
@@ -16,6 +18,7 @@ RAW=$DIR/ctbig.raw
 Z=$DIR/ctbig.ome.zarr
 IN="$RAW --raw-dims 2048,2048,1024 --raw-type i16 --raw-spacing 0.1196,0.1196,0.1582"
 LOOK="--mode dvr --preset CT-Bone --device cpu --sizes ${SIZE:-512x512} --frames ${FRAMES:-1}"
+[ "${FIRST:-0}" = 1 ] && LOOK="$LOOK --first-image"
 BUDGET=${BUDGET:-1280}
 PARTS=${PARTS:-32}
 LIMIT=${LIMIT:-3221225472}  # 3 GiB of address space

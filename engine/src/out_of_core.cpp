@@ -39,7 +39,32 @@ size_t cellBytes(const glm::ivec3& cells) {
   return size_t(cells.x) * size_t(cells.y) * size_t(cells.z) * 8;
 }
 
+// The build options of a part's (and the coarse level's) raycast for P.
+std::string partOptions(const RenderParams& p, bool emptySpaceSkipping, VolumeStorage storage) {
+  KernelFacts facts;
+  facts.emptySpaceSkipping = emptySpaceSkipping;
+  facts.storageImage = storage == VolumeStorage::Image3d;
+  KernelSwitches sw = kernelSwitches(p, facts);
+  sw.ADAPTIVE = 0;  // segments grouped from a part's start would not be the whole ray's
+  return "-cl-fast-relaxed-math " + switchOptions(sw, false);
+}
+
+VolumeStorage resolved(const DeviceInfo& info, VolumeStorage s) {
+  if (s == VolumeStorage::Auto)
+    return info.isGpu && info.imageSupport ? VolumeStorage::Image3d : VolumeStorage::Buffer;
+  return s;
+}
+
 }  // namespace
+
+void OutOfCoreRenderer::prebuild(ClContext& context, const RenderParams& p,
+                                 const OutOfCoreOptions& o) {
+  const VolumeStorage s = resolved(context.device(), o.storage);
+  if (s == VolumeStorage::Image3d && !context.device().imageSupport) return;  // the ctor says
+  context.prebuild("multidev/raycast_part.cl", partOptions(p, o.emptySpaceSkipping, s));
+  context.prebuild("multidev/accumulate_part.cl", "");
+  if (o.emptySpaceSkipping && p.mode != Mode::Mip) context.prebuild("empty_space/classify.cl", "");
+}
 
 void OutOfCoreRenderer::Impl::keys(std::vector<Item>& items, const RenderParams& p) {
   const ViewGeometry& g = full.setup.view;
@@ -80,25 +105,20 @@ void OutOfCoreRenderer::Impl::setUp(DeviceFrame& f, EmptySpace& space, const Ren
 
 void OutOfCoreRenderer::Impl::launch(const Item& item, const RenderParams& p) {
   const bool isCoarse = item.part < 0;
-  DeviceFrame& f = isCoarse ? coarseFrame : full;
+  DeviceFrame& f = isCoarse ? *coarseFrame : full;
   EmptySpace& space = isCoarse ? coarseSpace : fullSpace;
   const size_t pixels = size_t(p.width) * size_t(p.height);
-  KernelFacts facts;
-  facts.emptySpaceSkipping = o.emptySpaceSkipping;
-  facts.storageImage = storage == VolumeStorage::Image3d;
-  KernelSwitches sw = kernelSwitches(p, facts);
-  sw.ADAPTIVE = 0;
-  const std::string options = "-cl-fast-relaxed-math " + switchOptions(sw, false);
+  const std::string options = partOptions(p, o.emptySpaceSkipping, storage);
   cl::Kernel kernel = cl.kernel("multidev/raycast_part.cl", "raycast_part", options);
   // The planes in the level's own voxel coordinates: the full volume's slice centres z =
   // first and z = end, through LPS, along the coarse level's k axis.
   cl_float2 bounds{{float(item.first), float(item.end)}};
-  cl_int2 stored{{0, coarse.dims.z}};
+  cl_int2 stored{{0, coarse->dims.z}};
   if (isCoarse) {
-    const glm::dvec3 k = coarse.direction[2];
+    const glm::dvec3 k = coarse->direction[2];
     auto toCoarse = [&](double z) {
       const glm::dvec3 at = geom.originMm + geom.direction[2] * (z * geom.spacingMm.z);
-      return float(glm::dot(at - coarse.originMm, k) / coarse.spacingMm.z);
+      return float(glm::dot(at - coarse->originMm, k) / coarse->spacingMm.z);
     };
     bounds = {{toCoarse(item.first), toCoarse(item.end)}};
   } else {
@@ -163,22 +183,25 @@ OutOfCoreRenderer::OutOfCoreRenderer(ClContext& context, SlabSource& source,
   ContextImpl& cl = context.impl();
   if (options.apron < 2)
     throw inputError("the apron must be at least 2 slices (the gradients' stencil)");
-  VolumeStorage s = options.storage;
-  if (s == VolumeStorage::Auto)
-    s = cl.info.isGpu && cl.info.imageSupport ? VolumeStorage::Image3d : VolumeStorage::Buffer;
+  const VolumeStorage s = resolved(cl.info, options.storage);
   if (s == VolumeStorage::Image3d && !cl.info.imageSupport)
     throw deviceError(cl.info.name + " has no image support: render with the buffer storage");
   const Volume& g = source.geometry();
   if (g.voxelCount() == 0) throw inputError("the volume is empty");
-  source.coarse();  // made (or read) before Impl binds it
-  impl_ = std::make_unique<Impl>(cl, source, options, s);
+  // A source whose coarse level takes a pass over the volume shows its quick level first
+  // (slab_source.h); the budget is planned with the coarse level's bytes all the same, so the
+  // parts are the same whichever is on the device.
+  const Volume* quick = source.quickLevel();
+  if (!quick) source.coarse();  // made (or read) before Impl binds it
+  impl_ = std::make_unique<Impl>(cl, source, options, s, quick);
   Impl& m = *impl_;
   const int apron = options.apron;
   const size_t sliceBytes = m.sliceBytes();
   const size_t budget = options.budgetBytes ? options.budgetBytes : cl.info.maxAllocBytes;
   const glm::ivec3 cells = (g.dims + (kCellSize - 1)) / kCellSize;
-  const glm::ivec3 coarseCells = (m.coarse.dims + (kCellSize - 1)) / kCellSize;
-  m.fixedBytes = m.coarse.byteSize() +
+  const glm::ivec3 coarseDims = quick ? source.coarseDims() : m.coarse->dims;
+  const glm::ivec3 coarseCells = (coarseDims + (kCellSize - 1)) / kCellSize;
+  m.fixedBytes = size_t(coarseDims.x) * size_t(coarseDims.y) * size_t(coarseDims.z) * 2 +
                  (options.emptySpaceSkipping ? cellBytes(cells) + cellBytes(coarseCells) : 0);
   m.partBudget = budget > m.fixedBytes ? budget - m.fixedBytes : 0;
   const int minSlices = std::min(g.dims.z, 1 + 2 * apron);
@@ -228,45 +251,87 @@ OutOfCoreRenderer::OutOfCoreRenderer(ClContext& context, SlabSource& source,
     m.rowKnown.assign(size_t(rows), 1);
     m.rowsKnown = rows;
   } else {
-    if (options.emptySpaceSkipping) {
-      mc.dims = cells;
-      mc.minMax.resize(size_t(cells.x) * size_t(cells.y) * size_t(cells.z) * 2);
-      for (size_t c = 0; c < mc.minMax.size(); c += 2) {
-        mc.minMax[c] = INT16_MIN;
-        mc.minMax[c + 1] = INT16_MAX;
-      }
-    }
+    // The conservative cells wait for the first frame that draws a part: a preview from the
+    // coarse level needs none (67 M of them for 8 GiB took 0.42 s of a 2.6 s first image).
+    m.cellsPending = options.emptySpaceSkipping;
     const std::optional<ValueRange> stated = source.statedRange();
     m.hintStated = stated.has_value();
-    m.hint = stated ? *stated : storedRange(m.coarse);
+    m.hint = stated ? *stated : storedRange(*m.coarse);
   }
   m.used = m.currentRange();
   m.full.valueRange = m.used;
-  m.coarseFrame.valueRange = m.used;  // the coarse level's colours are the full volume's
   try {
     clCall([&] {
       m.full.paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
-      m.coarseFrame.paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
-      auto* ptr = const_cast<int16_t*>(m.coarse.voxels.data());
-      const glm::ivec3 d = m.coarse.dims;
-      if (s == VolumeStorage::Image3d)
-        m.coarseImage = cl::Image3D(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                    cl::ImageFormat(CL_R, CL_SNORM_INT16), size_t(d.x), size_t(d.y),
-                                    size_t(d.z), 0, 0, ptr);
-      else
-        m.coarseBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                    m.coarse.byteSize(), ptr);
       return 0;
     });
-    if (options.emptySpaceSkipping) {
-      m.fullSpace.upload(cl, std::move(mc));
-      m.coarseSpace.upload(cl, m.coarse);
+    if (options.emptySpaceSkipping && !m.cellsPending) m.fullSpace.upload(cl, std::move(mc));
+  } catch (const Error& e) {
+    throw deviceError(cl.info.name +
+                      ": the empty-space cells could not be put on the device: " + e.what());
+  }
+  m.uploadCoarse();
+  m.openMs = msSince(start);
+}
+
+void OutOfCoreRenderer::Impl::uploadCoarse() {
+  coarseFrame = std::make_unique<DeviceFrame>(cl, *coarse, storage);
+  coarseFrame->valueRange = used;  // the coarse level's colours are the full volume's
+  try {
+    clCall([&] {
+      coarseFrame->paramsBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY, sizeof(RaycastParams));
+      auto* ptr = const_cast<int16_t*>(coarse->voxels.data());
+      const glm::ivec3 d = coarse->dims;
+      if (storage == VolumeStorage::Image3d)
+        coarseImage = cl::Image3D(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                  cl::ImageFormat(CL_R, CL_SNORM_INT16), size_t(d.x), size_t(d.y),
+                                  size_t(d.z), 0, 0, ptr);
+      else
+        coarseBuffer = cl::Buffer(cl.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                  coarse->byteSize(), ptr);
+      return 0;
+    });
+    if (o.emptySpaceSkipping) {
+      coarseSpace = EmptySpace();
+      coarseSpace.upload(cl, *coarse);
     }
   } catch (const Error& e) {
-    throw deviceError(cl.info.name + ": the coarse level (" + mib(m.coarse.byteSize()) +
-                      ") and empty-space cells could not be put on the device: " + e.what());
+    throw deviceError(cl.info.name + ": the coarse level (" + mib(coarse->byteSize()) +
+                      ") and its empty-space cells could not be put on the device: " + e.what());
   }
-  m.openMs = msSince(start);
+}
+
+void OutOfCoreRenderer::Impl::makeConservativeCells() {
+  MacroCells mc;
+  mc.dims = (geom.dims + (kCellSize - 1)) / kCellSize;
+  mc.minMax.resize(size_t(mc.dims.x) * size_t(mc.dims.y) * size_t(mc.dims.z) * 2);
+  for (size_t c = 0; c < mc.minMax.size(); c += 2) {
+    mc.minMax[c] = INT16_MIN;
+    mc.minMax[c + 1] = INT16_MAX;
+  }
+  try {
+    fullSpace.upload(cl, std::move(mc));
+  } catch (const Error& e) {
+    throw deviceError(cl.info.name +
+                      ": the empty-space cells could not be put on the device: " + e.what());
+  }
+  cellsPending = false;
+}
+
+void OutOfCoreRenderer::Impl::replaceQuick() {
+  const Volume& made = src.coarse();
+  // The last launch on the quick level is done before its buffers go.
+  clCall([&] { return cl.queue.finish(); });
+  coarse = &made;
+  quick = false;
+  uploadCoarse();
+  // The pass that made it found the value range (a raw file's): the frames' range from now.
+  if (!hintStated) {
+    if (const std::optional<ValueRange> stated = src.statedRange()) {
+      hint = *stated;
+      hintStated = true;
+    }
+  }
 }
 
 OutOfCoreRenderer::~OutOfCoreRenderer() = default;
@@ -327,6 +392,10 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
                      toString(p.lighting) + ": render it without --memory-budget");
   if (p.width <= 0 || p.height <= 0) throw inputError("the image size must be positive");
   Impl& m = *impl_;
+  // The quick level gives way to the coarse level once that is made; a converged frame waits
+  // for it (its range is the one the in-core frame has: no frame drawn twice for it).
+  if (m.quick && (converge || m.src.coarseReady())) m.replaceQuick();
+  if (m.cellsPending && (converge || m.residentBytes > 0)) m.makeConservativeCells();
   m.applyLearned();
   OutOfCoreStats s;
   s.parts = int(m.parts.size());
@@ -380,8 +449,8 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
     if (!coarseReady) {
       RaycastParams ck{};
       std::string co;
-      m.coarseFrame.updateSetup(p);
-      m.setUp(m.coarseFrame, m.coarseSpace, p, ck, co);
+      m.coarseFrame->updateSetup(p);
+      m.setUp(*m.coarseFrame, m.coarseSpace, p, ck, co);
       coarseReady = true;
     }
     Impl::Item c = it;
@@ -503,6 +572,10 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
                                 "empty (their fill value); the store is incomplete, copy it again";
     s.note = s.note.empty() ? missing : s.note + "; " + missing;
   }
+  s.shown = s.fullResolution ? "full" : m.quick ? "preview" : "coarse";
+  // The coarse level's pass starts once the first image is out, not before: it would take
+  // the CPU that image waits for.
+  if (m.quick) m.src.startCoarse();
   s.totalMs = msSince(start);
   if (stats) *stats = s;
 }

@@ -4,6 +4,7 @@
 // out_of_core_rows.cpp (the empty-space rows and the value range learned from the slices read).
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,9 +59,13 @@ struct OutOfCoreRenderer::Impl {
   SlabSource& src;
   OutOfCoreOptions o;
   const Volume& geom;
-  const Volume& coarse;
+  // The coarse level on the device: the source's, or its quick level (point samples) until
+  // that is made (slab_source.h): then QUICK, and the stats say "preview".
+  const Volume* coarse;
+  bool quick = false;
   VolumeStorage storage;
-  DeviceFrame full, coarseFrame;
+  DeviceFrame full;
+  std::unique_ptr<DeviceFrame> coarseFrame;  // made again for the level that replaces it
   EmptySpace fullSpace, coarseSpace;
   cl::Buffer coarseBuffer;
   cl::Image3D coarseImage;
@@ -102,15 +107,17 @@ struct OutOfCoreRenderer::Impl {
   ValueRange used{};  // what the frames' tables span now
   std::string note;
 
-  Impl(ContextImpl& c, SlabSource& s, const OutOfCoreOptions& opts, VolumeStorage st)
+  Impl(ContextImpl& c, SlabSource& s, const OutOfCoreOptions& opts, VolumeStorage st,
+       const Volume* quickLevel)
       : cl(c),
         src(s),
         o(opts),
         geom(s.geometry()),
-        coarse(s.coarse()),
+        coarse(quickLevel ? quickLevel : &s.coarse()),
+        quick(quickLevel != nullptr),
         storage(st),
         full(c, geom, st),
-        coarseFrame(c, coarse, st) {
+        coarseFrame(std::make_unique<DeviceFrame>(c, *coarse, st)) {
     pinned = o.upload == OutOfCoreOptions::Upload::Pinned ||
              (o.upload == OutOfCoreOptions::Upload::Auto && c.info.isGpu);
   }
@@ -142,6 +149,15 @@ struct OutOfCoreRenderer::Impl {
     part.lastUse = cl::Event();
     part.ready = cl::Event();
   }
+  // The coarse level (and its cells) to the device; Error (Device) when it cannot go.
+  void uploadCoarse();
+  // The quick level replaced by the source's coarse level (made, or waited for), its range
+  // taken as stated once the pass that found it is done.
+  void replaceQuick();
+  // A streamed source's cells, all conservative (out_of_core.h), made at the first frame that
+  // draws a part: until then CELLSPENDING.
+  void makeConservativeCells();
+  bool cellsPending = false;
   void learnRows(const int16_t* slices, int first, int end);
   ValueRange currentRange() const;
   bool applyLearned();

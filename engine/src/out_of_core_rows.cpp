@@ -47,9 +47,9 @@ bool OutOfCoreRenderer::Impl::applyLearned() {
   if (r.min == used.min && r.max == used.max) return false;
   used = r;
   full.valueRange = r;
-  coarseFrame.valueRange = r;  // the coarse level's colours are the full volume's
-  full.setupKey.reset();       // the tables are made again for the new range
-  coarseFrame.setupKey.reset();
+  coarseFrame->valueRange = r;  // the coarse level's colours are the full volume's
+  full.setupKey.reset();        // the tables are made again for the new range
+  coarseFrame->setupKey.reset();
   return true;
 }
 

@@ -143,7 +143,9 @@ std::vector<SliceSource> fileSources(const std::string& path, const RawLayout& l
   return sources;
 }
 
-void readExactly(const SliceSource& s, uint8_t* dest, size_t bytes) {
+// COUNT blocks of BYTES each, the i-th at S's offset + i * STRIDE, one after another into DEST:
+// one open for them all (a point-sampled level reads thousands of rows).
+void readBlocks(const SliceSource& s, uint8_t* dest, size_t bytes, size_t count, size_t stride) {
   // O_NONBLOCK and fstat: a path swapped for a FIFO after the checks must not hang here.
   const int fd = ::open(s.path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) throw inputError(s.path + ": cannot read (" + ioReason() + ")");
@@ -153,18 +155,26 @@ void readExactly(const SliceSource& s, uint8_t* dest, size_t bytes) {
     detail::refuseSpecialFile(s.path);
     throw inputError(s.path + ": is not a regular file; save the data to a file and open that");
   }
-  size_t done = 0;
-  while (done < bytes) {
-    const ssize_t n = ::pread(fd, dest + done, bytes - done, off_t(s.offset + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string reason = n < 0 ? ioReason() : "the file ended early";
-      ::close(fd);
-      throw inputError(s.path + ": cannot read (" + reason + ")");
+  for (size_t b = 0; b < count; ++b) {
+    uint8_t* to = dest + b * bytes;
+    const size_t at = s.offset + b * stride;
+    size_t done = 0;
+    while (done < bytes) {
+      const ssize_t n = ::pread(fd, to + done, bytes - done, off_t(at + done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        const std::string reason = n < 0 ? ioReason() : "the file ended early";
+        ::close(fd);
+        throw inputError(s.path + ": cannot read (" + reason + ")");
+      }
+      done += size_t(n);
     }
-    done += size_t(n);
   }
   ::close(fd);
+}
+
+void readExactly(const SliceSource& s, uint8_t* dest, size_t bytes) {
+  readBlocks(s, dest, bytes, 1, 0);
 }
 
 // INPUT's slices in z order (only listed and checked, not read); Z their count.
@@ -375,6 +385,25 @@ void RawSliceReader::readSlices(int first, int end, int16_t* dest) const {
     // In place for 16-bit samples: each is read before its voxel is written (as importRaw).
     detail::storeSamples(raw, sliceVoxels, m.decoding, m.storage, out);
   });
+}
+
+void RawSliceReader::readRows(int z, int firstRow, int rowStep, int rows, int16_t* dest) const {
+  const Impl& m = *impl_;
+  const glm::ivec3 d = m.geometry.dims;
+  if (z < 0 || z >= d.z || firstRow < 0 || rowStep < 1 || rows < 1 ||
+      firstRow + size_t(rows - 1) * size_t(rowStep) >= size_t(d.y))
+    throw inputError("rows " + std::to_string(firstRow) + " + " + std::to_string(rowStep) + " x " +
+                     std::to_string(rows - 1) + " of slice " + std::to_string(z) +
+                     " are not within the " + std::to_string(d.x) + "x" + std::to_string(d.y) +
+                     "x" + std::to_string(d.z) + " raw input");
+  const size_t rowBytes = m.sliceBytes / size_t(d.y);
+  const bool inPlace = rowBytes == size_t(d.x) * sizeof(int16_t);
+  std::vector<uint8_t> samples(inPlace ? 0 : rowBytes * size_t(rows));
+  uint8_t* raw = inPlace ? reinterpret_cast<uint8_t*>(dest) : samples.data();
+  SliceSource s = m.sources[size_t(z)];
+  s.offset += size_t(firstRow) * rowBytes;
+  readBlocks(s, raw, rowBytes, size_t(rows), size_t(rowStep) * rowBytes);
+  detail::storeSamples(raw, size_t(d.x) * size_t(rows), m.decoding, m.storage, dest);
 }
 
 namespace {

@@ -160,6 +160,8 @@ TEST_F(OutOfCoreCli, StreamedRawStaysWithinTheBudget) {
   // The coarse level's pass gave the exact value range: the first converged frame is drawn once.
   EXPECT_FALSE(j.at("first_converged_redrawn").get<bool>());
   EXPECT_EQ(j.at("first_image_cells_known").get<double>(), 0.0);  // no part read before it
+  // Drawn from the quick level's point samples, before the coarse level's pass over the file.
+  EXPECT_EQ(j.at("first_image_shown").get<std::string>(), "preview") << b.out;
 }
 
 // A Zarr whose level-0 chunk is gone: it opens, the first image comes, the frames draw it

@@ -447,22 +447,94 @@ TEST(OutOfCoreRaw, ReadOnDemandEqualsLoadedWhole) {
     EXPECT_TRUE(std::equal(part.begin(), part.end(), whole.voxels.begin() + 40 * slice));
     OutOfCoreRenderer a(test::pocl(), *raw, thirdOf(v)), b(test::pocl(), *mem, thirdOf(v));
     ASSERT_GT(a.partCount(), 2);
-    // The coarse level's pass found the exact range: the first converged frame is not redrawn.
-    ASSERT_TRUE(raw->statedRange().has_value());
-    EXPECT_EQ(raw->statedRange()->min, storedRange(whole).min);
-    EXPECT_EQ(raw->statedRange()->max, storedRange(whole).max);
+    EXPECT_EQ(a.ranges().size(), b.ranges().size()) << "the same plan, whichever level is shown";
+    // No pass before the first image (the quick level is on the device); the first converged
+    // frame waits for the coarse level's pass, which found the exact range: it is not redrawn.
+    EXPECT_FALSE(raw->statedRange().has_value());
     for (Mode mode : {Mode::Dvr, Mode::Mip}) {
       RenderParams q = frame(mode, View::Oblique);
       Image ia, ib;
       OutOfCoreStats s;
       a.render(q, ia, &s);
       EXPECT_FALSE(s.redrawnForRange);
+      EXPECT_EQ(s.shown, "full");
+      ASSERT_TRUE(raw->statedRange().has_value());
+      EXPECT_EQ(raw->statedRange()->min, storedRange(whole).min);
+      EXPECT_EQ(raw->statedRange()->max, storedRange(whole).max);
       b.render(q, ib);
       EXPECT_EQ(test::maxDiff(ia, ib), 0) << in.path << " " << toString(mode);
       EXPECT_GT(litPixels(ia), int(ia.rgba.size() / 4 / 50));
     }
   }
   EXPECT_THROW(rawSlabSource((dir / "missing.raw").string(), layout), Error);
+  std::filesystem::remove_all(dir);
+}
+
+// A raw file's first image is drawn before the coarse level's pass over the file: from the
+// quick level, point samples (each the voxel nearest its cell's centre, exactly), and says
+// "preview"; the pass starts after it. Once the pass is done the previews are the coarse
+// level's, equal bit for bit to an in-memory source's (the same 4x mean, range and cells), and
+// the converged frame equals the loaded volume's bit for bit (tolerance 0: the same parts, the
+// same slices, the same range; the quick level changes neither).
+TEST(OutOfCoreRaw, FirstImageFromPointSamplesBeforeThePass) {
+  const Volume& v = tallVolume();
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("voxray-ooc-quick-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "tall.raw").string();
+  std::ofstream(file, std::ios::binary)
+      .write(reinterpret_cast<const char*>(v.voxels.data()), std::streamsize(v.byteSize()));
+  RawLayout layout;
+  layout.dims = v.dims;
+  layout.spacingMm = v.spacingMm;
+  auto raw = rawSlabSource(file, layout);
+  auto mem = volumeSlabSource(v);
+  // 40x36x96 has 138240 voxels: under kQuickVoxels at 4x, so the quick level has the coarse
+  // level's dims, and its voxels are samples of the volume, not means.
+  const Volume* quick = raw->quickLevel();
+  ASSERT_NE(quick, nullptr);
+  const Volume& coarse = mem->coarse();
+  EXPECT_EQ(quick->dims, coarse.dims);
+  EXPECT_EQ(quick->originMm, coarse.originMm);
+  EXPECT_EQ(quick->spacingMm, coarse.spacingMm);
+  int differ = 0;
+  for (int k = 0; k < quick->dims.z; ++k)
+    for (int j = 0; j < quick->dims.y; ++j)
+      for (int i = 0; i < quick->dims.x; ++i) {
+        auto near = [](int c, int n, int cn) {  // the full voxel nearest coarse voxel c's centre
+          return std::clamp(int(std::lround((c + 0.5) * n / cn - 0.5)), 0, n - 1);
+        };
+        const int x = near(i, v.dims.x, quick->dims.x), y = near(j, v.dims.y, quick->dims.y),
+                  z = near(k, v.dims.z, quick->dims.z);
+        ASSERT_EQ(quick->voxels[quick->index(i, j, k)], v.voxels[v.index(x, y, z)])
+            << i << "," << j << "," << k;
+        differ += quick->voxels[quick->index(i, j, k)] != coarse.voxels[coarse.index(i, j, k)];
+      }
+  EXPECT_GT(differ, 0) << "samples, not the means";
+  OutOfCoreRenderer a(test::pocl(), *raw, thirdOf(v)), b(test::pocl(), *mem, thirdOf(v));
+  EXPECT_FALSE(raw->coarseReady()) << "no pass before the first image";
+  const RenderParams p = frame(Mode::Dvr, View::Oblique);
+  Image first, coarseA, coarseB, fullA, fullB;
+  OutOfCoreStats s;
+  a.preview(p, first, &s);
+  EXPECT_EQ(s.shown, "preview");
+  EXPECT_EQ(s.partsCoarse, a.partCount());
+  EXPECT_EQ(s.cellsKnown, 0.0);
+  EXPECT_GT(litPixels(first), int(first.rgba.size() / 4 / 50));
+  raw->coarse();  // the pass the first preview started, waited for
+  EXPECT_TRUE(raw->coarseReady());
+  a.preview(p, coarseA, &s);
+  EXPECT_EQ(s.shown, "coarse");
+  b.preview(p, coarseB, &s);
+  EXPECT_EQ(s.shown, "coarse");
+  EXPECT_EQ(test::maxDiff(coarseA, coarseB), 0);
+  EXPECT_GT(test::maxDiff(first, coarseA), 0) << "the preview was the samples'";
+  a.render(p, fullA, &s);
+  EXPECT_EQ(s.shown, "full");
+  EXPECT_FALSE(s.redrawnForRange);
+  b.render(p, fullB);
+  EXPECT_EQ(test::maxDiff(fullA, fullB), 0);
   std::filesystem::remove_all(dir);
 }
 

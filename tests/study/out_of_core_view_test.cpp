@@ -86,6 +86,10 @@ TEST(OutOfCoreChoice, ResolutionNoteCountsTheFullParts) {
   EXPECT_EQ(resolutionNote(s), "Not at full resolution (3 of 8 parts)");
   s.deviceOutOfMemory = true;
   EXPECT_EQ(resolutionNote(s), "Not at full resolution (3 of 8 parts); device out of memory");
+  s.deviceOutOfMemory = false;
+  s.shown = "preview";  // the source's quick level, before its coarse level is made
+  EXPECT_EQ(resolutionNote(s),
+            "Not at full resolution (3 of 8 parts); quick preview, the coarse level on its way");
 }
 
 // A CT-like ball, 96 x 96 x 64 (1.1 MiB): air, skin, a bone shell and brain in HU.

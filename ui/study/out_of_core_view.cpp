@@ -54,6 +54,7 @@ std::string resolutionNote(const OutOfCoreStats& s) {
   if (s.fullResolution) return "";
   std::string note = "Not at full resolution (" + std::to_string(s.partsFull) + " of " +
                      std::to_string(s.parts) + " parts)";
+  if (s.shown == "preview") note += "; quick preview, the coarse level on its way";
   if (s.deviceOutOfMemory) note += "; device out of memory";
   return note;
 }

@@ -44,7 +44,8 @@ OutOfCoreParams outOfCoreParams(const RenderParams& p, bool hasLabels, bool hasO
                                 double spacingZMm);
 
 // "Not at full resolution (3 of 8 parts)" while parts were drawn from the coarse level, plus
-// "; device out of memory" when an upload failed; "" at full resolution.
+// "; quick preview, the coarse level on its way" while the source's quick level (slab_source.h)
+// is shown, and "; device out of memory" when an upload failed; "" at full resolution.
 std::string resolutionNote(const OutOfCoreStats& s);
 // "Out of core, off: labels, fusion" for OFF; "" when nothing is off.
 std::string limitsNote(const std::vector<std::string>& off);

@@ -33,6 +33,13 @@
 // stated range the voxels contradict is replaced and the stats say so. An in-memory source's
 // cells and range are made from it in place when the renderer is made.
 //
+// A source whose coarse level is slow to make or read (slab_source.h's quickLevel: a raw file's
+// 4x mean is a pass over the whole file) is first shown from its quick level, a smaller one; the
+// first preview starts the coarse level on the source's thread, and the first frame after it is
+// made draws from it. A converged frame waits for it (its pass finds the value range, so the
+// frame is drawn once). The plan's budget counts the coarse level's bytes either way: the
+// parts, and so the converged frames, do not depend on which level is shown.
+//
 // How a part reaches a GPU (OutOfCoreOptions::upload, Pinned): its slices are read into host
 // staging the runtime pins (two buffers made with CL_MEM_ALLOC_HOST_PTR and mapped once, used
 // in turn) and copied by a non-blocking write on a transfer queue of its own; the part's
@@ -108,6 +115,10 @@ struct OutOfCoreStats {
   double cellsKnown = 1.0;   // of the empty-space cell rows, those made from the voxels
   size_t missingChunks = 0;  // the source's chunks read so far that were missing (drawn empty)
   std::string note;          // about the data, for the user (missing chunks, a wrong range)
+  // What the frame shows: "full" (every part at full resolution), "coarse" (parts from the
+  // coarse level, the box mean) or "preview" (parts from the source's quick level, point
+  // samples, before the coarse level is made: slab_source.h).
+  std::string shown = "full";
 };
 
 class OutOfCoreRenderer {
@@ -127,6 +138,13 @@ class OutOfCoreRenderer {
   void render(const RenderParams& params, Image& out, OutOfCoreStats* stats = nullptr);
   // The resident parts at full resolution, the others from the coarse level; uploads nothing.
   void preview(const RenderParams& params, Image& out, OutOfCoreStats* stats = nullptr);
+
+  // Builds the programs a frame of P needs (the parts' and the coarse level's raycast, the
+  // composite, the cells' classification) on CONTEXT, as ClContext::prebuild does: a thread
+  // runs it while the renderer is made, so the first image waits for the compiler less (a
+  // build with an empty PoCL cache takes seconds). Throws Error (Device) with the build log.
+  static void prebuild(ClContext& context, const RenderParams& p,
+                       const OutOfCoreOptions& options = {});
 
   int partCount() const;
   int residentCount() const;

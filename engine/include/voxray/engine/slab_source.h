@@ -48,6 +48,19 @@ class SlabSource {
   // A coarse level with the full volume's box (coarse_level.h's geometry), made or read once
   // and held by the source.
   virtual const Volume& coarse() = 0;
+  // Where coarse() takes long (a raw file's 4x mean reads all of it; an OME-Zarr's coarse
+  // level is 16 MiB to decode and march for the 8 GiB CT): a smaller level to show first, with
+  // the full volume's box and value mapping (a raw file's: point samples; a Zarr's: a coarser
+  // level of its pyramid). nullptr where coarse() is quick enough (the default). Made once
+  // and held.
+  virtual const Volume* quickLevel() { return nullptr; }
+  // The dims coarse() has, without making it (the renderer plans its budget with them).
+  virtual glm::ivec3 coarseDims() { return coarse().dims; }
+  // Starts making coarse() on a thread of the source's own, once (where quickLevel() is not
+  // nullptr; a no-op elsewhere). coarse() then waits for it; the source's destructor stops it.
+  virtual void startCoarse() {}
+  // coarse() is made (or failed: coarse() then throws), so that it returns at once.
+  virtual bool coarseReady() const { return true; }
   // What the source is, for messages and the bench ("in memory", "OME-Zarr level 0").
   virtual std::string describe() const = 0;
 };
@@ -57,15 +70,22 @@ std::unique_ptr<SlabSource> volumeSlabSource(const Volume& volume, int coarseFac
 
 // The raw INPUT (a file, a slice folder or pattern) under LAYOUT, read a range of slices at a
 // time with pread, never whole (RawSliceReader: values stored as importRaw stores them). The
-// coarse level, the 4x box mean, and the value range come from one streamed pass when the
-// renderer asks for the coarse level. Throws Error (Input) as importRaw does.
+// coarse level, the 4x box mean, and the value range come from one streamed pass over the
+// file (on the source's thread after startCoarse(), else when coarse() is asked for); until it
+// ends, quickLevel() is shown: point samples every 2^n-th voxel (n >= 2) along each axis, at
+// most kQuickVoxels of them. Throws Error (Input) as importRaw does.
 std::unique_ptr<SlabSource> rawSlabSource(const std::string& input, const RawLayout& layout);
+// The quick level's largest voxel count: 2 MiB of int16. Its read is what the first image
+// waits for (the 8 GiB CT: 64 slices x 128 rows of 4 KiB), and a preview marches it.
+constexpr size_t kQuickVoxels = size_t(1) << 20;
 
 #ifdef VOXRAY_HAS_ZARR
 // Level 0 of the OME-Zarr at PATH, read on demand; its coarse level the pyramid's first level
 // whose voxels are at most 1/64 of level 0's and at most 32 MiB (the coarsest when none is), else
-// the box mean of level 0 made while streaming. Opening reads the metadata and that coarse level
-// only. Throws Error (Input) as OmeZarrLevel does.
+// the box mean of level 0 made while streaming. Its quick level the first level after that with
+// at most kQuickVoxels, when there is one (the coarse level then read on the source's thread).
+// Opening reads the metadata and the quick (else the coarse) level only. Throws Error (Input) as
+// OmeZarrLevel does.
 std::unique_ptr<SlabSource> omeZarrSlabSource(const std::string& path);
 #endif
 

@@ -74,6 +74,11 @@ class RawSliceReader {
   // Slices [FIRST, END) as stored values, i fastest, into DEST. Throws Error (Input) naming the
   // file when it cannot be read.
   void readSlices(int first, int end, int16_t* dest) const;
+  // ROWS rows of slice Z (FIRSTROW, FIRSTROW + ROWSTEP, ...), whole, stored as readSlices
+  // stores them, into DEST (dims.x * ROWS values): a point-sampled level without reading the
+  // rows between (out-of-core's first image from a raw file). Throws Error (Input) as
+  // readSlices does, and for rows outside the slice.
+  void readRows(int z, int firstRow, int rowStep, int rows, int16_t* dest) const;
   bool scanned() const;  // opening read the values to choose their storage
 
  private:
