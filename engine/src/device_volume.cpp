@@ -15,7 +15,9 @@ namespace voxray {
 
 namespace {
 
-std::string mib(size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
+std::string mibRoundedUp(size_t bytes) {
+  return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB";
+}
 
 std::atomic<int> uploads{0};  // deviceVolumeUploads()
 
@@ -73,10 +75,10 @@ void DeviceVolume::upload(ContextImpl& cl, const Volume& volume, VolumeStorage s
   }
   size_t sliceBytes = size_t(n.x) * size_t(n.y) * sizeof(int16_t);
   size_t limit = d.maxAllocBytes;
-  std::string limitText = d.name + "'s largest allocation (" + mib(limit) + ")";
+  std::string limitText = d.name + "'s largest allocation (" + mibRoundedUp(limit) + ")";
   if (maxSlabBytes > 0 && maxSlabBytes < limit) {
     limit = maxSlabBytes;
-    limitText = "the slab limit (" + mib(limit) + ")";
+    limitText = "the slab limit (" + mibRoundedUp(limit) + ")";
   }
   size_t maxSlices = limit / sliceBytes;
   if (image && d.maxImage3d[2] < maxSlices) {
@@ -85,10 +87,10 @@ void DeviceVolume::upload(ContextImpl& cl, const Volume& volume, VolumeStorage s
   }
   std::optional<SlabPlan> plan = planSlabs(n.z, maxSlices);
   if (!plan)
-    throw deviceError("the volume (" + dims + ", " + mib(volume.byteSize()) + ") exceeds " +
-                      limitText + " and does not split into " +
+    throw deviceError("the volume (" + dims + ", " + mibRoundedUp(volume.byteSize()) +
+                      ") exceeds " + limitText + " and does not split into " +
                       std::to_string(SlabPlan::kMaxSlabs) + " slabs of " +
-                      std::to_string(maxSlices) + " slices (" + mib(sliceBytes) +
+                      std::to_string(maxSlices) + " slices (" + mibRoundedUp(sliceBytes) +
                       " each) within it: crop or downsample it, or use a device with more memory");
   plan_ = *plan;
   buffers_.clear();

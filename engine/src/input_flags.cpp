@@ -44,7 +44,7 @@ void parseRange(RawLayout& l, const std::string& s) {
       std::make_pair(toInt("raw-range", s.substr(0, dash)), toInt("raw-range", s.substr(dash + 1)));
 }
 
-std::vector<InputFlagSpec> makeSpecs() {
+std::vector<InputFlagSpec> makeInputFlagSpecs() {
   const ParamDomain dims = ParamDomain().atLeast(1).steps(1, 0);
   // Any positive spacing is accepted; a control offers up to 10 cm.
   const ParamDomain spacing = ParamDomain().above(0).steps(0.1, 3).in("mm").offer({}, 100);
@@ -131,7 +131,7 @@ std::vector<InputFlagSpec> makeSpecs() {
 }  // namespace
 
 const std::vector<InputFlagSpec>& inputFlagSpecs() {
-  static const std::vector<InputFlagSpec> specs = makeSpecs();
+  static const std::vector<InputFlagSpec> specs = makeInputFlagSpecs();
   return specs;
 }
 

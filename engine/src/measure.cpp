@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "voxray/io/error.h"
@@ -11,7 +12,6 @@ namespace voxray {
 
 namespace {
 constexpr double kInsideTolerance = 1e-9;  // boundary pixels count, despite rounding
-constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 glm::dvec3 voxelToPatient(const Volume& v, const glm::dvec3& voxel) {
@@ -59,8 +59,8 @@ double roiPixelsAndArea(const Volume& v, const PlaneRoi& roi, std::vector<glm::i
   const glm::dvec2 spacing(v.spacingMm[ua], v.spacingMm[va]);
   const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
   const glm::dvec2 sizeMm = (hi - lo) * spacing;
-  const double area =
-      roi.shape == RoiShape::Rect ? sizeMm.x * sizeMm.y : kPi * sizeMm.x * sizeMm.y / 4;
+  const double area = roi.shape == RoiShape::Rect ? sizeMm.x * sizeMm.y
+                                                  : std::numbers::pi * sizeMm.x * sizeMm.y / 4;
   const double slice = std::round(roi.a[n]);
   if (area <= 0.0 || v.voxelCount() == 0 || slice < 0 || slice >= v.dims[n]) return area;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "frame_setup.h"
 #include "reference_hooks.h"
@@ -14,7 +15,6 @@ namespace voxray {
 namespace {
 
 constexpr double kMaxDepth = 40.0;  // exp(-40) < 5e-18: the rest of a ray cannot matter
-constexpr double kPi = 3.14159265358979323846;
 
 // The estimators of the header's models on one frame's setup.
 struct Estimators {
@@ -68,7 +68,7 @@ struct Estimators {
 
   double visibility(const glm::dvec3& world, Rng& rng) const {
     std::uniform_real_distribution<double> uni(0.0, 1.0);
-    double z = 1.0 - 2.0 * uni(rng), phi = 2.0 * kPi * uni(rng);
+    double z = 1.0 - 2.0 * uni(rng), phi = 2.0 * std::numbers::pi * uni(rng);
     double r = std::sqrt(std::max(0.0, 1.0 - z * z));
     glm::dvec3 w(r * std::cos(phi), r * std::sin(phi), z);
     return std::exp(-depth(world, w, 0.0, radius, uni(rng)));

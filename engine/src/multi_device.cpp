@@ -7,7 +7,9 @@
 #include <numeric>
 
 #include "device_frame.h"
+#include "elapsed_ms.h"
 #include "empty_space.h"
+#include "mib_text.h"
 #include "multi_device_composite.h"
 #include "multi_device_gpu_composite.h"
 #include "streamed_cells.h"
@@ -19,17 +21,7 @@ namespace voxray {
 
 namespace {
 
-std::string mib(size_t bytes) {
-  double m = double(bytes) / double(1 << 20);
-  char text[32];
-  std::snprintf(text, sizeof(text), m < 10 ? "%.2f MiB" : "%.0f MiB", m);
-  return text;
-}
-
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
 
 // From the first of EVENTS' start to the last one's end (a part's kernel, per band, on one
 // device's clock; bands may overlap); 0 where the driver does not profile.
@@ -159,16 +151,16 @@ void MultiDeviceRenderer::Impl::upload(Part& part, int index) {
   const int slices = r.storedEnd - r.storedFirst;
   const size_t bytes = size_t(slices) * sliceBytes;
   size_t limit = d.maxAllocBytes;
-  std::string limitText = "its largest allocation (" + mib(limit) + ")";
+  std::string limitText = "its largest allocation (" + mibText(limit) + ")";
   if (opts.budgetBytes > 0 && opts.budgetBytes < limit) {
     limit = opts.budgetBytes;
-    limitText = "the budget per device (" + mib(limit) + ")";
+    limitText = "the budget per device (" + mibText(limit) + ")";
   }
   const std::string what = "device " + std::to_string(index + 1) + " of " +
                            std::to_string(parts.size()) + " (" + d.name + ") holds slices " +
                            std::to_string(r.storedFirst) + " to " +
                            std::to_string(r.storedEnd - 1) + " of " + std::to_string(n.z) +
-                           " (its range and apron, " + mib(bytes) + ")";
+                           " (its range and apron, " + mibText(bytes) + ")";
   if (bytes > limit)
     throw deviceError(what + ", more than " + limitText +
                       ": split over more devices (--split), or crop or downsample the volume");

@@ -4,16 +4,12 @@
 #include <array>
 #include <cmath>
 
+#include "rgba8.h"
 #include "voxray/io/parallel.h"
 
 namespace voxray {
 
 namespace {
-
-// to_rgba8 (kernels/shading/shading.cl): convert_uchar_sat_rte(clamp(c, 0, 1) * 255).
-uint8_t toByte(float c) {
-  return uint8_t(std::nearbyint(std::clamp(c, 0.0f, 1.0f) * 255.0f));  // default mode: even
-}
 
 constexpr int kMaxParts = 64;
 
@@ -68,9 +64,9 @@ void compositeParts(Mode mode, const std::vector<const PartImage*>& parts, int w
         if (grey >= 0.0f) rgb = glm::vec3(grey);
       }
       uint8_t* o = &out.rgba[px * 4];
-      o[0] = toByte(rgb.x);
-      o[1] = toByte(rgb.y);
-      o[2] = toByte(rgb.z);
+      o[0] = toRgba8Byte(rgb.x);
+      o[1] = toRgba8Byte(rgb.y);
+      o[2] = toRgba8Byte(rgb.z);
       o[3] = 255;
     }
   });

@@ -10,7 +10,9 @@
 #include <utility>
 
 #include "macro_cells.h"
+#include "mib_text.h"
 #include "out_of_core_impl.h"
+#include "rgba8.h"
 #include "streamed_cells.h"
 #include "voxray/io/error.h"
 #include "voxray/io/parallel.h"
@@ -19,19 +21,8 @@
 namespace voxray {
 
 using ooc::Clock;
-using ooc::msSince;
 
 namespace {
-
-std::string mib(size_t bytes) {
-  double m = double(bytes) / double(1 << 20);
-  char text[32];
-  std::snprintf(text, sizeof(text), m < 10 ? "%.2f MiB" : "%.0f MiB", m);
-  return text;
-}
-
-// to_rgba8 (kernels/shading/shading.cl), as multi_device_composite.cpp rounds.
-uint8_t toByte(float c) { return uint8_t(std::nearbyint(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
 
 // The device bytes EmptySpace holds for CELLS cells: min/max, occupancy, distances and level,
 // scratch.
@@ -207,14 +198,14 @@ OutOfCoreRenderer::OutOfCoreRenderer(ClContext& context, SlabSource& source,
   const int minSlices = std::min(g.dims.z, 1 + 2 * apron);
   const size_t budgetSlices = m.partBudget / sliceBytes;
   auto tooSmall = [&](size_t slices) {
-    throw inputError("the memory budget of " + mib(budget) + " leaves " + mib(m.partBudget) +
-                     " for the volume's slices after its coarse level and empty-space cells (" +
-                     mib(m.fixedBytes) + "), less than one part of " + std::to_string(slices) +
-                     " slices of " + mib(sliceBytes) + " each needs (" + mib(slices * sliceBytes) +
-                     ": its own slices and an apron of " + std::to_string(apron) +
-                     " on either side): raise --memory-budget to at least " +
-                     std::to_string((m.fixedBytes + slices * sliceBytes + (1 << 20) - 1) >> 20) +
-                     " MiB");
+    throw inputError(
+        "the memory budget of " + mibText(budget) + " leaves " + mibText(m.partBudget) +
+        " for the volume's slices after its coarse level and empty-space cells (" +
+        mibText(m.fixedBytes) + "), less than one part of " + std::to_string(slices) +
+        " slices of " + mibText(sliceBytes) + " each needs (" + mibText(slices * sliceBytes) +
+        ": its own slices and an apron of " + std::to_string(apron) +
+        " on either side): raise --memory-budget to at least " +
+        std::to_string((m.fixedBytes + slices * sliceBytes + (1 << 20) - 1) >> 20) + " MiB");
   };
   if (budgetSlices < size_t(minSlices)) tooSmall(size_t(minSlices));
   int owned = options.partSlices;
@@ -296,7 +287,7 @@ void OutOfCoreRenderer::Impl::uploadCoarse() {
       coarseSpace.upload(cl, *coarse);
     }
   } catch (const Error& e) {
-    throw deviceError(cl.info.name + ": the coarse level (" + mib(coarse->byteSize()) +
+    throw deviceError(cl.info.name + ": the coarse level (" + mibText(coarse->byteSize()) +
                       ") and its empty-space cells could not be put on the device: " + e.what());
   }
 }
@@ -500,18 +491,18 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
           s.deviceOutOfMemory = true;
           m.partBudget = m.residentBytes;
           s.message = "the device could not take part " + std::to_string(it.part + 1) + " of " +
-                      std::to_string(m.parts.size()) + " (" + mib(part.bytes) + ") beside the " +
-                      mib(m.residentBytes) + " it holds (" + e.what() +
+                      std::to_string(m.parts.size()) + " (" + mibText(part.bytes) +
+                      ") beside the " + mibText(m.residentBytes) + " it holds (" + e.what() +
                       "); the parts it cannot hold are drawn from the coarse level: lower "
                       "--memory-budget, or free the device";
         }
       }
       if (!part.resident) {
         if (s.message.empty())
-          s.message = "the device holds " + mib(m.partBudget) +
+          s.message = "the device holds " + mibText(m.partBudget) +
                       " of parts since an allocation "
                       "failed, less than part " +
-                      std::to_string(it.part + 1) + " (" + mib(part.bytes) +
+                      std::to_string(it.part + 1) + " (" + mibText(part.bytes) +
                       "): it is drawn from the coarse level; free the device "
                       "and open the volume again for full resolution";
         drawCoarse(it);
@@ -556,9 +547,9 @@ void OutOfCoreRenderer::draw(const RenderParams& p, Image& out, OutOfCoreStats* 
         rgb = glm::vec3(a[0]);
       }
       uint8_t* o = &out.rgba[px * 4];
-      o[0] = toByte(rgb.x);
-      o[1] = toByte(rgb.y);
-      o[2] = toByte(rgb.z);
+      o[0] = toRgba8Byte(rgb.x);
+      o[1] = toRgba8Byte(rgb.y);
+      o[2] = toRgba8Byte(rgb.z);
       o[3] = 255;
     }
   });

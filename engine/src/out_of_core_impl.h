@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "device_frame.h"
+#include "elapsed_ms.h"
 #include "empty_space.h"
 #include "voxray/engine/cl_context.h"
 #include "voxray/engine/out_of_core.h"
@@ -18,9 +19,6 @@ namespace voxray {
 namespace ooc {
 
 using Clock = std::chrono::steady_clock;
-inline double msSince(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
 
 }  // namespace ooc
 

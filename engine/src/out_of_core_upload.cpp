@@ -10,7 +10,6 @@
 namespace voxray {
 
 using ooc::Clock;
-using ooc::msSince;
 
 // Two pinned buffers of the largest part: one is filled from the source while the other's copy
 // runs (a third would wait for the same part to leave the device: the eviction waits for the

@@ -13,7 +13,7 @@ namespace voxray {
 namespace {
 
 // The grid is affine in voxel space too: one origin and two steps, no matrix per pixel.
-struct VoxelGrid {
+struct VoxelPlane {
   glm::dmat3 patientToVoxel;
   glm::dvec3 origin, stepX, stepY;
   glm::dvec3 lo{-0.5}, hi;
@@ -22,8 +22,8 @@ struct VoxelGrid {
   }
 };
 
-VoxelGrid voxelGrid(const Volume& v, const PlaneGrid& g) {
-  VoxelGrid vg;
+VoxelPlane voxelPlane(const Volume& v, const PlaneGrid& g) {
+  VoxelPlane vg;
   vg.patientToVoxel = glm::inverse(v.direction * glm::dmat3(glm::dvec3(v.spacingMm.x, 0, 0),
                                                             glm::dvec3(0, v.spacingMm.y, 0),
                                                             glm::dvec3(0, 0, v.spacingMm.z)));
@@ -38,7 +38,7 @@ VoxelGrid voxelGrid(const Volume& v, const PlaneGrid& g) {
 // and returns true, or leaves it at BACKGROUND.
 template <class Pixel>
 std::vector<float> samplePixels(const Volume& v, const PlaneGrid& g, float background,
-                                const VoxelGrid& vg, const Pixel& pixel) {
+                                const VoxelPlane& vg, const Pixel& pixel) {
   const glm::ivec2 size = glm::max(g.size, glm::ivec2(0));
   std::vector<float> out(size_t(size.x) * size_t(size.y), background);
   if (v.voxelCount() == 0 || out.empty()) return out;
@@ -54,7 +54,7 @@ std::vector<float> samplePixels(const Volume& v, const PlaneGrid& g, float backg
 
 std::vector<float> samplePlane(const Volume& v, const PlaneGrid& g, Interp interp,
                                float background) {
-  const VoxelGrid vg = voxelGrid(v, g);
+  const VoxelPlane vg = voxelPlane(v, g);
   return samplePixels(v, g, background, vg, [&](const glm::dvec3& p, float& value) {
     if (vg.inside(p)) value = float(v.toPhysical(sampleVolume(v, interp, p)));
   });
@@ -83,7 +83,7 @@ std::vector<float> samplePlane(const Volume& v, const PlaneGrid& g, Interp inter
                                const Slab& slab) {
   const int n = slabSamples(v, slab);
   if (n == 1) return samplePlane(v, g, interp, background);
-  const VoxelGrid vg = voxelGrid(v, g);
+  const VoxelPlane vg = voxelPlane(v, g);
   // Offsets across the slab in voxel units, from face to face.
   const glm::dvec3 normal = glm::normalize(glm::cross(g.uDir, g.vDir));
   std::vector<glm::dvec3> offsets(size_t(n), glm::dvec3(0.0));

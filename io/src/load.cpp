@@ -116,3 +116,6 @@ std::vector<Volume> loadVolumeSeries(const std::string& input, const LoadOptions
 }
 
 }  // namespace voxray
+
+// Unity builds: the next file of a batch must not see it.
+#undef VOXRAY_LOAD_DICOM

@@ -105,7 +105,7 @@ Coverage coverage(const Volume& v, const std::string& folder, int edge, double t
 
 // Slices of 48 x 48 pixels (2 mm), 16 of them, the table 3 mm a slice; each pixel holds
 // 2x + 3y + 5z of its LPS position (mm).
-constexpr int kSize = 48, kSlices = 16;
+constexpr int kTiltedSize = 48, kSlices = 16;
 constexpr double kPixel = 2.0, kAdvance = 3.0, kTiltDeg = 20.0;
 
 double linearValue(const glm::dvec3& p) { return 2 * p.x + 3 * p.y + 5 * p.z; }
@@ -121,7 +121,7 @@ void writeSeries(const std::string& folder, const Stack& st) {
   for (size_t k = 0; k < st.offsets.size(); ++k) {
     const glm::dvec3 origin = st.origin + st.offsets[k] * st.advance;
     test::TestSlice s;
-    s.size = kSize;
+    s.size = kTiltedSize;
     s.instance = int(k) + 1;
     s.position = {origin.x, origin.y, origin.z};
     s.orientation = {st.row.x, st.row.y, st.row.z, st.col.x, st.col.y, st.col.z};
@@ -145,7 +145,7 @@ std::vector<double> evenOffsets() {
 // left is rounding to whole HU twice (stored pixel, resampled voxel).
 void expectEveryPixelAtItsValue(const Volume& v, const std::string& folder) {
   const Coverage c = coverage(v, folder, 2, -1e9, 1);
-  EXPECT_EQ(c.pixels, size_t(kSize * kSize * kSlices));
+  EXPECT_EQ(c.pixels, size_t(kTiltedSize * kTiltedSize * kSlices));
   EXPECT_EQ(c.outside, 0u);
   EXPECT_LE(quantile(c.interiorError, 1.0), 1.0);
   EXPECT_GT(c.interiorError.size(), c.borderError.size());
@@ -162,7 +162,7 @@ TEST(DicomTiltCoverage, SyntheticTiltKeepsEveryPixelAtItsValue) {
   // Straightened: axial axes; along z from the lowest pixel row of the first slice
   // (10 - 47 * 2 * sin 20 deg) to the top row of the last (10 + 15 * 3).
   EXPECT_EQ(v.direction, glm::dmat3(1.0));
-  const double low = 10.0 - (kSize - 1) * kPixel * std::sin(t);
+  const double low = 10.0 - (kTiltedSize - 1) * kPixel * std::sin(t);
   EXPECT_NEAR(v.originMm.z, low, 1e-6);
   EXPECT_NEAR(v.originMm.z + (v.dims.z - 1) * v.spacingMm.z, 10.0 + kAdvance * (kSlices - 1), 1e-6);
   EXPECT_TRUE(test::anyContains(v.warnings, "outside the acquired slices and is filled with air"));

@@ -22,7 +22,7 @@ namespace voxray {
 
 namespace {
 
-constexpr int kPerRay = -1;
+using test::kPerRay;
 
 // CtheadOnIsCloseToThePlainFrame's bound: measured 56.4 dB (PoCL AVX-512, 512x384 CT-Bone
 // dvr, the default camera, 16-lane packets; see the test's properties). Another CPU build
@@ -45,13 +45,14 @@ Raycaster& raycaster(const Volume& v, int lanes) {
   return *r;
 }
 
-Image render(const Volume& v, const RenderParams& p, int lanes, FrameStats* stats = nullptr) {
+Image renderAdaptive(const Volume& v, const RenderParams& p, int lanes,
+                     FrameStats* stats = nullptr) {
   Image out;
   raycaster(v, lanes).render(p, out, stats);
   return out;
 }
 
-const Volume& ballVolume() {
+const Volume& adaptiveBall() {
   static Volume v = test::ball({64, 56, 40}, 14.0, 1000.0, -1000.0, {1.0, 1.1, 1.6});
   return v;
 }
@@ -140,11 +141,11 @@ TEST(AdaptiveImage, ThresholdZeroIsThePlainFrame) {
                      << "mode " << int(mode) << " lanes " << lanes << " k " << k);
         RenderParams p = ballFrame(mode);
         p.jitter = true;
-        Image plain = render(ballVolume(), p, lanes);
+        Image plain = renderAdaptive(adaptiveBall(), p, lanes);
         p.adaptiveImage = 0.0;
         p.adaptiveImageSpacing = k;
         FrameStats st;
-        Image adaptive = render(ballVolume(), p, lanes, &st);
+        Image adaptive = renderAdaptive(adaptiveBall(), p, lanes, &st);
         const ImageLattice l = imageLattice(p.width, p.height, k);
         EXPECT_EQ(st.adaptiveBlocks, l.blocksX() * l.blocksY());
         EXPECT_EQ(st.adaptiveRefined, st.adaptiveBlocks);
@@ -159,11 +160,11 @@ TEST(AdaptiveImage, FlatImageNeedsNoRefinedBlock) {
     RenderParams p = ballFrame(Mode::Dvr);
     p.background = {0.2, 0.3, 0.4};
     p.camera.panMm = {200.0, 0.0};  // the volume out of view
-    Image plain = render(ballVolume(), p, lanes);
+    Image plain = renderAdaptive(adaptiveBall(), p, lanes);
     ASSERT_EQ(blockSpread(plain, imageLattice(p.width, p.height, p.width), 0, 0, false), 0);
     p.adaptiveImage = 1.0;
     FrameStats st;
-    Image adaptive = render(ballVolume(), p, lanes, &st);
+    Image adaptive = renderAdaptive(adaptiveBall(), p, lanes, &st);
     EXPECT_EQ(st.adaptiveBlocks, 23 * 17);
     EXPECT_EQ(st.adaptiveRefined, 0);
     EXPECT_EQ(test::maxDiff(plain, adaptive), 0);
@@ -183,11 +184,11 @@ TEST(AdaptiveImage, EdgeBlocksAreRefinedAndFlatOnesAreNot) {
         SCOPED_TRACE(testing::Message()
                      << "mode " << int(mode) << " lanes " << lanes << " k " << k);
         RenderParams p = ballFrame(mode);
-        Image plain = render(ballVolume(), p, lanes);
+        Image plain = renderAdaptive(adaptiveBall(), p, lanes);
         p.adaptiveImage = 16.0;
         p.adaptiveImageSpacing = k;
         FrameStats st;
-        Image adaptive = render(ballVolume(), p, lanes, &st);
+        Image adaptive = renderAdaptive(adaptiveBall(), p, lanes, &st);
         const ImageLattice l = imageLattice(p.width, p.height, k);
         int edges = 0, flat = 0;
         for (int by = 0; by < l.blocksY(); ++by)
@@ -232,10 +233,10 @@ TEST(AdaptiveImage, IsoRefinesWhereCornersHitAndMiss) {
   for (int lanes : {kPerRay, 8, 16}) {
     SCOPED_TRACE(testing::Message() << "lanes " << lanes);
     RenderParams p = ballFrame(Mode::Iso);
-    Image plain = render(ballVolume(), p, lanes);
+    Image plain = renderAdaptive(adaptiveBall(), p, lanes);
     p.adaptiveImage = 255.0;
     FrameStats st;
-    Image adaptive = render(ballVolume(), p, lanes, &st);
+    Image adaptive = renderAdaptive(adaptiveBall(), p, lanes, &st);
     const ImageLattice l = imageLattice(p.width, p.height, 4);
     int outline = 0;
     for (int by = 0; by < l.blocksY(); ++by)
@@ -263,7 +264,7 @@ TEST(AdaptiveImage, IsoRefinesWhereCornersHitAndMiss) {
     EXPECT_LE(st.adaptiveRefined, outline + outline / 2);  // the outline, and little else
     p.mode = Mode::Dvr;
     p.preset = "CT-Bone";
-    render(ballVolume(), p, lanes, &st);
+    renderAdaptive(adaptiveBall(), p, lanes, &st);
     EXPECT_EQ(st.adaptiveRefined, 0);
   }
 }
@@ -274,10 +275,10 @@ TEST(AdaptiveImage, CtheadOnIsCloseToThePlainFrame) {
   if (!test::cthead()) GTEST_SKIP() << "CThead not found in " VOXRAY_SHARED_DATA;
   const Volume& v = *test::cthead();
   RenderParams p = test::ctheadDvr(512, 384);
-  Image plain = render(v, p, 16);
+  Image plain = renderAdaptive(v, p, 16);
   findRenderParamSpec("adaptive-image").parse(p, "on");
   FrameStats st;
-  Image adaptive = render(v, p, 16, &st);
+  Image adaptive = renderAdaptive(v, p, 16, &st);
   const double psnr = compareImages(toFloatImage(adaptive), toFloatImage(plain)).psnrDb;
   std::cout << "CThead 512x384 adaptive on: " << psnr << " dB against the plain frame, "
             << st.adaptiveRefined << " of " << st.adaptiveBlocks << " blocks refined\n";

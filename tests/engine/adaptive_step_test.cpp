@@ -48,7 +48,7 @@ std::vector<ControlPoint> table() {
           {300.0, {1.0, 1.0, 0.9, 0.6}},   {3000.0, {1.0, 1.0, 1.0, 1.0}}};
 }
 
-RenderParams params(double adaptive) {
+RenderParams adaptiveStepParams(double adaptive) {
   RenderParams p;
   p.width = 64;
   p.height = 48;
@@ -60,9 +60,9 @@ RenderParams params(double adaptive) {
   return p;
 }
 
-constexpr int kPerRay = -1;
+using test::kPerRay;
 
-Image render(const Volume& v, const RenderParams& p, int lanes, double* samples) {
+Image renderCountingSamples(const Volume& v, const RenderParams& p, int lanes, double* samples) {
   Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   RaycasterOptions o;
   o.countSamples = true;
@@ -84,8 +84,8 @@ TEST(AdaptiveStep, HomogeneousSlabWithinTheBound) {
   for (int lanes : {kPerRay, 8, 16}) {
     SCOPED_TRACE(testing::Message() << "lanes " << lanes);
     double fixedSamples = 0.0, adaptiveSamples = 0.0;
-    Image fixed = render(v, params(0.0), lanes, &fixedSamples);
-    Image adaptive = render(v, params(kBound), lanes, &adaptiveSamples);
+    Image fixed = renderCountingSamples(v, adaptiveStepParams(0.0), lanes, &fixedSamples);
+    Image adaptive = renderCountingSamples(v, adaptiveStepParams(kBound), lanes, &adaptiveSamples);
     EXPECT_LE(test::maxDiff(fixed, adaptive), 1);
     // Not a blank test: the slab shows (many pixels off the black background).
     int shown = 0;
@@ -105,8 +105,8 @@ TEST(AdaptiveStep, VaryingTableKeepsTheBaseStep) {
   for (int lanes : {kPerRay, 8, 16}) {
     SCOPED_TRACE(testing::Message() << "lanes " << lanes);
     double fixedSamples = 0.0, adaptiveSamples = 0.0;
-    Image fixed = render(v, params(0.0), lanes, &fixedSamples);
-    Image adaptive = render(v, params(kBound), lanes, &adaptiveSamples);
+    Image fixed = renderCountingSamples(v, adaptiveStepParams(0.0), lanes, &fixedSamples);
+    Image adaptive = renderCountingSamples(v, adaptiveStepParams(kBound), lanes, &adaptiveSamples);
     EXPECT_EQ(test::maxDiff(fixed, adaptive), 0);
     EXPECT_EQ(adaptiveSamples, fixedSamples);
     EXPECT_GT(fixedSamples, 1000.0);
@@ -119,10 +119,10 @@ TEST(AdaptiveStep, VaryingTableKeepsTheBaseStep) {
 // can), so their images differ, each within the bound of the fixed steps' image.
 TEST(AdaptiveStep, PacketsAndOneRayPerWorkItemAgree) {
   Volume v = test::rampX({48, 44, 48}, -150.0, 6.0);
-  RenderParams fixedParams = params(0.0), adaptiveParams = params(0.1);
+  RenderParams fixedParams = adaptiveStepParams(0.0), adaptiveParams = adaptiveStepParams(0.1);
   double samples = 0.0, fixedSamples = 0.0;
-  Image perRay = render(v, adaptiveParams, kPerRay, &samples);
-  Image fixed = render(v, fixedParams, kPerRay, &fixedSamples);
+  Image perRay = renderCountingSamples(v, adaptiveParams, kPerRay, &samples);
+  Image fixed = renderCountingSamples(v, fixedParams, kPerRay, &fixedSamples);
   // Measured: 39 % of the fixed steps' samples, every image within one level of the others
   // (float rounding; the bound allows more, each long segment at most 0.1 of the
   // transmittance in front of it, but along this ramp the table is nearly linear, where a
@@ -131,7 +131,7 @@ TEST(AdaptiveStep, PacketsAndOneRayPerWorkItemAgree) {
   EXPECT_LT(samples, 0.6 * fixedSamples);
   for (int lanes : {8, 16}) {
     SCOPED_TRACE(testing::Message() << "lanes " << lanes);
-    Image packets = render(v, adaptiveParams, lanes, &samples);
+    Image packets = renderCountingSamples(v, adaptiveParams, lanes, &samples);
     EXPECT_LE(test::maxDiff(packets, perRay), 2);
     EXPECT_LE(test::maxDiff(packets, fixed), 2);
     EXPECT_LT(samples, 0.6 * fixedSamples);
@@ -144,13 +144,13 @@ TEST(AdaptiveStep, OnlyWithABoundAndOpacityCorrection) {
   Volume v = slab(50);  // the raycaster keeps a reference
   Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   FrameStats stats;
-  RenderParams p = params(kBound);
+  RenderParams p = adaptiveStepParams(kBound);
   rc.render(p, &stats);
   EXPECT_NE(stats.variant.find("ADAPTIVE=1"), std::string::npos) << stats.variant;
   p.opacityCorrection = false;
   rc.render(p, &stats);
   EXPECT_NE(stats.variant.find("ADAPTIVE=0"), std::string::npos) << stats.variant;
-  rc.render(params(0.0), &stats);
+  rc.render(adaptiveStepParams(0.0), &stats);
   EXPECT_NE(stats.variant.find("ADAPTIVE=0"), std::string::npos) << stats.variant;
 }
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "test_volumes.h"
 #include "voxray/engine/camera.h"
@@ -79,6 +80,23 @@ void forEachPixelRay(const ViewGeometry& g, const RenderParams& p, F&& f) {
       g.ray(x, y, p.width, p.height, o, d);
       f(o, d);
     }
+}
+
+// Each pixel's ray's distance from the volume's centre (row by row), and whether a ray at
+// distance D surely crosses the sphere segment's voxels, or surely misses them (half a voxel
+// diagonal of room each way, for the voxelised edge).
+inline bool crossesSphereSegment(double d) {
+  return d < kSphereSegmentRadiusMm - kBallHalfDiagonalMm;
+}
+inline bool missesSphereSegment(double d) {
+  return d > kSphereSegmentRadiusMm + kBallHalfDiagonalMm + 0.05;
+}
+inline std::vector<double> sphereRayDistances(const Volume& v, const RenderParams& p) {
+  std::vector<double> out;
+  forEachPixelRay(makeViewGeometry(v, p), p, [&](const glm::dvec3& o, const glm::dvec3& d) {
+    out.push_back(glm::length(glm::cross(-o, d)));  // d is a unit vector
+  });
+  return out;
 }
 
 struct ImageDiff {

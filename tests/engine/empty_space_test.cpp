@@ -26,7 +26,7 @@ const Volume& sparseVolume() {
   return v;
 }
 
-RenderParams params(Mode mode, Gradient g, Interp interp, bool jitter) {
+RenderParams essParams(Mode mode, Gradient g, Interp interp, bool jitter) {
   RenderParams p;
   p.width = 80;
   p.height = 60;
@@ -73,10 +73,10 @@ const Volume& longVolume() {
 }
 
 // lanes: rays per CPU packet (8 or 16), 0 the raycaster's choice, kPerRay for none.
-constexpr int kPerRay = -1;
+using test::kPerRay;
 
-Image render(RaycasterOptions::Kernel k, bool ess, const RenderParams& p, int lanes = 0,
-             const Volume& volume = sparseVolume()) {
+Image renderEmptySpace(RaycasterOptions::Kernel k, bool ess, const RenderParams& p, int lanes = 0,
+                       const Volume& volume = sparseVolume()) {
   Raycaster rc(test::pocl(), volume, VolumeStorage::Buffer);
   RaycasterOptions o;
   o.kernel = k;
@@ -89,28 +89,28 @@ Image render(RaycasterOptions::Kernel k, bool ess, const RenderParams& p, int la
 
 }  // namespace
 
-using Case = std::tuple<Mode, Gradient, Interp, bool>;
-class EmptySpace : public ::testing::TestWithParam<Case> {};
+using EssCase = std::tuple<Mode, Gradient, Interp, bool>;
+class EmptySpace : public ::testing::TestWithParam<EssCase> {};
 
-std::string variantTestName(const ::testing::TestParamInfo<Case>& info) {
+std::string variantTestName(const ::testing::TestParamInfo<EssCase>& info) {
   auto [mode, g, interp, jitter] = info.param;
-  return kernelVariantName(params(mode, g, interp, jitter));
+  return kernelVariantName(essParams(mode, g, interp, jitter));
 }
 
 TEST_P(EmptySpace, SkippingChangesNoPixel) {
   auto [mode, g, interp, jitter] = GetParam();
-  RenderParams p = params(mode, g, interp, jitter);
+  RenderParams p = essParams(mode, g, interp, jitter);
   using K = RaycasterOptions::Kernel;
-  Image plain = render(K::Specialised, false, p, kPerRay);
-  EXPECT_EQ(test::maxDiff(plain, render(K::Specialised, true, p, kPerRay)), 0);
-  EXPECT_LE(test::maxDiff(plain, render(K::Uber, true, p)), 1);
+  Image plain = renderEmptySpace(K::Specialised, false, p, kPerRay);
+  EXPECT_EQ(test::maxDiff(plain, renderEmptySpace(K::Specialised, true, p, kPerRay)), 0);
+  EXPECT_LE(test::maxDiff(plain, renderEmptySpace(K::Uber, true, p)), 1);
   // Every mode runs ray packets on this CPU device, of either width; they must agree with
   // one ray per work-item, and skipping must not change their pixels.
   for (int lanes : {8, 16}) {
     SCOPED_TRACE(testing::Message() << lanes << " lanes");
-    Image packets = render(K::Specialised, false, p, lanes);
+    Image packets = renderEmptySpace(K::Specialised, false, p, lanes);
     EXPECT_LE(test::maxDiff(plain, packets), 1);
-    EXPECT_EQ(test::maxDiff(packets, render(K::Specialised, true, p, lanes)), 0);
+    EXPECT_EQ(test::maxDiff(packets, renderEmptySpace(K::Specialised, true, p, lanes)), 0);
   }
 }
 
@@ -136,14 +136,14 @@ INSTANTIATE_TEST_SUITE_P(Jittered, EmptySpace,
 // outside.
 TEST(EmptySpaceExtras, PacketsFillImagesOfOddSizes) {
   for (Mode mode : {Mode::Iso, Mode::Mip}) {
-    RenderParams p = params(mode, Gradient::Central, Interp::Linear, false);
+    RenderParams p = essParams(mode, Gradient::Central, Interp::Linear, false);
     p.width = 83;
     p.height = 61;
     using K = RaycasterOptions::Kernel;
-    Image perRay = render(K::Specialised, true, p, kPerRay);
+    Image perRay = renderEmptySpace(K::Specialised, true, p, kPerRay);
     for (int lanes : {8, 16}) {
       SCOPED_TRACE(testing::Message() << "mode " << int(mode) << ", " << lanes << " lanes");
-      Image packets = render(K::Specialised, true, p, lanes);
+      Image packets = renderEmptySpace(K::Specialised, true, p, lanes);
       ASSERT_EQ(packets.rgba.size(), size_t(83 * 61 * 4));
       EXPECT_LE(test::maxDiff(packets, perRay), 1);
       // And the ball is there: many pixels differ from the background in the corner.
@@ -178,21 +178,21 @@ TEST(EmptySpaceExtras, MipSkippingByWindowAndMaximumChangesNoPixel) {
       for (glm::dvec2 window : {glm::dvec2(0.0, 0.0), glm::dvec2(700.0, 450.0)}) {
         SCOPED_TRACE(testing::Message()
                      << "long " << along << " interp " << int(interp) << " window " << window.x);
-        RenderParams p = params(Mode::Mip, Gradient::Central, interp, false);
+        RenderParams p = essParams(Mode::Mip, Gradient::Central, interp, false);
         p.windowWidth = window.x;
         p.windowLevel = window.y;
         if (along) p.camera = {90.0, 0.0, 60.0};  // from the left, down the long axis
         const Volume& v = along ? longVolume() : noisyVolume();
         // Skipping on and off: the same kernel must give the same pixels.
-        Image plain = render(K::Specialised, false, p, kPerRay, v);
-        EXPECT_EQ(test::maxDiff(plain, render(K::Specialised, true, p, kPerRay, v)), 0);
+        Image plain = renderEmptySpace(K::Specialised, false, p, kPerRay, v);
+        EXPECT_EQ(test::maxDiff(plain, renderEmptySpace(K::Specialised, true, p, kPerRay, v)), 0);
         // Other compilations of the same algorithm: float contraction, one level at most.
         for (int lanes : {8, 16}) {
-          Image packets = render(K::Specialised, false, p, lanes, v);
-          EXPECT_EQ(test::maxDiff(packets, render(K::Specialised, true, p, lanes, v)), 0);
+          Image packets = renderEmptySpace(K::Specialised, false, p, lanes, v);
+          EXPECT_EQ(test::maxDiff(packets, renderEmptySpace(K::Specialised, true, p, lanes, v)), 0);
           EXPECT_LE(test::maxDiff(plain, packets), 1) << lanes << " lanes";
         }
-        EXPECT_LE(test::maxDiff(plain, render(K::Uber, true, p, kPerRay, v)), 1);
+        EXPECT_LE(test::maxDiff(plain, renderEmptySpace(K::Uber, true, p, kPerRay, v)), 1);
         // Not a blank test: greys, and with the narrow window saturated pixels too.
         int white = 0, grey = 0;
         for (size_t i = 0; i < plain.rgba.size(); i += 4) {
@@ -208,7 +208,7 @@ TEST(EmptySpaceExtras, MipSkippingByWindowAndMaximumChangesNoPixel) {
 
 TEST(EmptySpaceExtras, ClassifiesOnlyWhenTheRangeOrTableChanges) {
   Raycaster rc(test::pocl(), sparseVolume(), VolumeStorage::Buffer);
-  RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, false);
+  RenderParams p = essParams(Mode::Iso, Gradient::Central, Interp::Linear, false);
   rc.render(p);
   p.camera.azimuthDeg += 40.0;  // the camera moves: nothing to reclassify
   rc.render(p);
@@ -238,7 +238,7 @@ TEST(EmptySpaceExtras, TableEditsKeepSkippingExact) {
                                      {hi + 1.0, {0.9, 0.3, 0.2, 0.0}}};
   };
   std::vector<RenderParams> edits;
-  RenderParams p = params(Mode::Dvr, Gradient::Central, Interp::Linear, false);
+  RenderParams p = essParams(Mode::Dvr, Gradient::Central, Interp::Linear, false);
   for (double shift : {0.0, 1.0, 0.0, -350.0, 250.0}) {
     p.presetShiftHu = shift;
     edits.push_back(p);
@@ -264,7 +264,8 @@ TEST(EmptySpaceExtras, TableEditsKeepSkippingExact) {
       SCOPED_TRACE(testing::Message() << "edit " << edit);
       Image skipped = rc.render(e);
       EXPECT_EQ(rc.classifications(), ++edit);  // each edit reclassified the kept grid
-      Image plain = render(RaycasterOptions::Kernel::Specialised, false, e, lanes, noisyVolume());
+      Image plain =
+          renderEmptySpace(RaycasterOptions::Kernel::Specialised, false, e, lanes, noisyVolume());
       EXPECT_EQ(test::maxDiff(plain, skipped), 0);
       for (size_t i = 0; i < plain.rgba.size(); i += 4) shown += plain.rgba[i] > 20;
     }
@@ -278,7 +279,7 @@ TEST(EmptySpaceExtras, IsoBlockBitsOnlyForEightLanePackets) {
   // Packets are the CPU path: a GPU (VOXRAY_TEST_DEVICE=gpu) renders one ray per work-item.
   if (test::pocl().device().isGpu) GTEST_SKIP() << "ray packets run on CPU devices only";
   Raycaster rc(test::pocl(), sparseVolume(), VolumeStorage::Buffer);
-  RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, false);
+  RenderParams p = essParams(Mode::Iso, Gradient::Central, Interp::Linear, false);
   RaycasterOptions o;
   o.packetLanes = 16;
   rc.setOptions(o);
@@ -301,12 +302,14 @@ TEST(EmptySpaceExtras, IsoBlockBitsOnlyForEightLanePackets) {
 }
 
 TEST(EmptySpaceExtras, ClipBoxAndOrthographicToo) {
-  RenderParams p = params(Mode::Iso, Gradient::Central, Interp::Linear, true);
+  RenderParams p = essParams(Mode::Iso, Gradient::Central, Interp::Linear, true);
   p.camera.projection = Projection::Orthographic;
   p.clip.lo = {0.1, 0.45, 0.0};
   p.clip.hi = {0.7, 1.0, 0.9};
   using K = RaycasterOptions::Kernel;
-  EXPECT_EQ(test::maxDiff(render(K::Specialised, false, p), render(K::Specialised, true, p)), 0);
+  EXPECT_EQ(test::maxDiff(renderEmptySpace(K::Specialised, false, p),
+                          renderEmptySpace(K::Specialised, true, p)),
+            0);
 }
 
 }  // namespace voxray

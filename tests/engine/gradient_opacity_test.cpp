@@ -29,15 +29,10 @@ namespace voxray {
 
 namespace {
 
-ClContext& context() {
-  static ClContext ctx(test::testDeviceSelector());  // PoCL, or the GPU certificate's
-  return ctx;
-}
-
 // A table that shows the ball's inside (1000 HU) as well as its boundary, and a gradient
 // opacity that fades what is flat: 0 below 100 HU/mm, 1 from 600 HU/mm (the boundary's
 // |gradient| reaches about 1000 HU/mm).
-RenderParams ballParams() {
+RenderParams gradientOpacityParams() {
   RenderParams p = test::ballView(Mode::Dvr);
   p.stepMm = 0.5;
   p.transferFunction = {{-1000.0, {0.0, 0.0, 0.0, 0.0}},
@@ -45,10 +40,6 @@ RenderParams ballParams() {
                         {1000.0, {1.0, 0.95, 0.8, 0.08}}};
   p.gradientOpacity = {{100.0, 0.0}, {600.0, 1.0}};
   return p;
-}
-
-std::string describe(const RenderParams& p, bool packets) {
-  return kernelVariantName(p) + (packets ? " packets" : " one ray per work-item");
 }
 
 // The pixel whose ray passes closest to voxel position q.
@@ -101,7 +92,7 @@ TEST(GradientOpacity, KernelsAgreeWithTheReference) {
   const Volume& v = test::anisotropicBall();
   for (bool shading : {false, true})
     for (Gradient op : {Gradient::Central, Gradient::Sobel}) {
-      RenderParams p = ballParams();
+      RenderParams p = gradientOpacityParams();
       p.shading = shading;
       p.gradient = op;
       Image ref = renderReference(v, p);
@@ -110,13 +101,14 @@ TEST(GradientOpacity, KernelsAgreeWithTheReference) {
       test::ImageDiff changed = test::compareImages(ref, renderReference(v, off));
       EXPECT_GT(changed.meanAbs, 5.0) << "the factor must show";
       for (bool packets : {true, false}) {
-        Raycaster rc(context(), v, VolumeStorage::Buffer);
+        Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
         RaycasterOptions o = rc.options();
         o.packets = packets;
         rc.setOptions(o);
         Image gpu = rc.render(p);
         test::ImageDiff d = test::compareImages(gpu, ref);
-        std::string what = describe(p, packets) + " (max " + std::to_string(d.maxAbs) + ")";
+        std::string what =
+            test::variantDescription(p, packets) + " (max " + std::to_string(d.maxAbs) + ")";
         EXPECT_NE(rc.variantOptions(p).find("-D GRADIENT_OPACITY=1"), std::string::npos) << what;
         EXPECT_LE(d.meanAbs, 0.5) << what;
         EXPECT_LE(d.fractionOver3, 0.005) << what;
@@ -128,7 +120,7 @@ TEST(GradientOpacity, KernelsAgreeWithTheReference) {
 // skipping, the uber kernel, z slabs, image3d_t storage where the device has it.
 TEST(GradientOpacity, EveryWayOfComputingAgreesWithTheReference) {
   const Volume& v = test::anisotropicBall();
-  RenderParams p = ballParams();
+  RenderParams p = gradientOpacityParams();
   Image ref = renderReference(v, p);
   struct Way {
     const char* name;
@@ -147,8 +139,8 @@ TEST(GradientOpacity, EveryWayOfComputingAgreesWithTheReference) {
   ways[4].name = "image3d_t";
   ways[4].storage = VolumeStorage::Image3d;
   for (const Way& w : ways) {
-    if (w.storage == VolumeStorage::Image3d && !context().device().imageSupport) continue;
-    Raycaster rc(context(), v, w.storage);
+    if (w.storage == VolumeStorage::Image3d && !test::pocl().device().imageSupport) continue;
+    Raycaster rc(test::pocl(), v, w.storage);
     rc.setOptions(w.options);
     test::ImageDiff d = test::compareImages(rc.render(p), ref);
     std::string what = std::string(w.name) + " (max " + std::to_string(d.maxAbs) + ")";
@@ -165,17 +157,17 @@ TEST(GradientOpacity, FactorOneChangesNothingInAnyLighting) {
   const Volume& v = test::anisotropicBall();
   for (Lighting lighting : {Lighting::Phong, Lighting::Shadows, Lighting::Ao})
     for (bool packets : {true, false}) {
-      RenderParams off = ballParams();
+      RenderParams off = gradientOpacityParams();
       off.gradientOpacity.clear();
       off.lighting = lighting;
       RenderParams on = off;
       on.gradientOpacity = {{0.0, 1.0}};
-      Raycaster rc(context(), v, VolumeStorage::Buffer);
+      Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
       RaycasterOptions o = rc.options();
       o.packets = packets;
       rc.setOptions(o);
       Image a = rc.render(off), b = rc.render(on), c = rc.render(off);
-      std::string what = describe(on, packets) + " " + toString(lighting);
+      std::string what = test::variantDescription(on, packets) + " " + toString(lighting);
       EXPECT_NE(rc.variantOptions(on), rc.variantOptions(off)) << what;
       test::ImageDiff d = test::compareImages(a, b);
       EXPECT_LE(d.maxAbs, 1) << what;  // the same sums; fast maths may round one level apart
@@ -224,7 +216,7 @@ TEST(GradientOpacity, HidesTheInsideOfABlockThatA1DTableCannot) {
   ASSERT_NE(behind, slabOnly);
   ASSERT_NE(ball.x, -1);
 
-  Raycaster rc(context(), v, VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   for (const RenderParams* q : {&p, &go}) {
     Image ref = renderReference(v, *q);
     for (bool packets : {true, false}) {
@@ -235,7 +227,8 @@ TEST(GradientOpacity, HidesTheInsideOfABlockThatA1DTableCannot) {
       for (glm::ivec2 px : {behind, slabOnly, ball}) {
         glm::ivec3 a = rgbAt(gpu, px), b = rgbAt(ref, px);
         for (int c = 0; c < 3; ++c)
-          EXPECT_NEAR(a[c], b[c], 3) << describe(*q, packets) << " pixel " << px.x << "," << px.y;
+          EXPECT_NEAR(a[c], b[c], 3)
+              << test::variantDescription(*q, packets) << " pixel " << px.x << "," << px.y;
       }
     }
   }

@@ -29,11 +29,6 @@ namespace voxray {
 
 namespace {
 
-ClContext& context() {
-  static ClContext ctx(test::testDeviceSelector());  // PoCL, or the GPU certificate's
-  return ctx;
-}
-
 RenderParams baseParams(Mode mode) {
   RenderParams p = test::ballView(mode);
   p.isoLo = 0.0;
@@ -66,7 +61,7 @@ class KernelVsReference : public ::testing::TestWithParam<RenderParams> {};
 
 TEST_P(KernelVsReference, AgreesPixelByPixel) {
   const RenderParams& p = GetParam();
-  Raycaster rc(context(), test::anisotropicBall(), VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), test::anisotropicBall(), VolumeStorage::Buffer);
   Image gpu = rc.render(p);
   Image ref = renderReference(test::anisotropicBall(), p);
   test::expectCloseToReference(gpu, ref, rc.variantOptions(p));
@@ -91,16 +86,16 @@ TEST(KernelVsReferenceExtras, OrthographicClipBoxAndFixedLight) {
   p.clip.hi = {0.6, 1.0, 1.0};
   p.light.followCamera = false;
   p.light.position = {-200.0, -100.0, 50.0};
-  Raycaster rc(context(), test::anisotropicBall(), VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), test::anisotropicBall(), VolumeStorage::Buffer);
   test::expectCloseToReference(rc.render(p), renderReference(test::anisotropicBall(), p),
                                rc.variantOptions(p));
 }
 
 TEST(KernelVsReferenceExtras, ImageStorageMatchesTheReferenceToo) {
-  if (!context().device().imageSupport) GTEST_SKIP() << "device has no image support";
+  if (!test::pocl().device().imageSupport) GTEST_SKIP() << "device has no image support";
   for (Mode mode : {Mode::Iso, Mode::Dvr}) {
     RenderParams p = baseParams(mode);
-    Raycaster rc(context(), test::anisotropicBall(), VolumeStorage::Image3d);
+    Raycaster rc(test::pocl(), test::anisotropicBall(), VolumeStorage::Image3d);
     test::expectCloseToReference(rc.render(p), renderReference(test::anisotropicBall(), p),
                                  rc.variantOptions(p));
   }
@@ -126,7 +121,7 @@ TEST(KernelVsReferenceExtras, KernelHitPointsMatchTheReferences) {
   p.camera.elevationDeg = 25.0;
   p.stepMm = 0.5;
   p.refine = 8;
-  Raycaster rc(context(), v, VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   std::vector<glm::vec4> raw;
   FrameStats stats;
   Image img;

@@ -1,12 +1,13 @@
 // Label-aware dvr (issue 34): Raycaster::setSegmentation, segment-mask and segment-blend.
 // The scene: test_volumes.h's ball (1000 HU, radius 13 voxels, anisotropic 1 x 1.1 x 1.6 mm)
 // under a faint white table, so that the inside shows, and a segment (label 1) that is a
-// sphere of kRadiusMm around the volume's centre, where the camera looks.
+// sphere of test::kSphereSegmentRadiusMm around the volume's centre, where the camera looks.
 //
 // Geometry of the checks: a sample takes the label of its nearest voxel, which lies within
 // half a voxel's diagonal (1.09 mm here) of it. So a ray that passes the centre farther than
-// kRadiusMm + 1.09 mm reads no label 1, and one nearer than kRadiusMm - 1.09 mm crosses
-// label-1 voxels over several steps. Pixels between the two are not checked.
+// test::kSphereSegmentRadiusMm + 1.09 mm reads no label 1, and one nearer than
+// test::kSphereSegmentRadiusMm - 1.09 mm crosses label-1 voxels over several steps. Pixels between
+// the two are not checked.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,24 +31,15 @@ namespace {
 // a voxel's middle may also take the neighbour's label there, as those bounds allow.
 using test::expectCloseToReference;
 
-constexpr double kRadiusMm = test::kSphereSegmentRadiusMm;
-constexpr double kHalfDiagonalMm = test::kBallHalfDiagonalMm;
-
-// Label 1 on the voxels within kRadiusMm of the volume's centre; one red segment.
-Segmentation sphereSegment(const Volume& v) { return test::sphereSegment(v, {1.0f, 0.0f, 0.0f}); }
-
-// Each pixel's ray's distance (mm) from the volume's centre (the world origin).
-std::vector<double> rayDistances(const Volume& v, const RenderParams& p) {
-  std::vector<double> out;
-  test::forEachPixelRay(makeViewGeometry(v, p), p, [&](const glm::dvec3& o, const glm::dvec3& d) {
-    out.push_back(glm::length(glm::cross(-o, d)));  // d is a unit vector
-  });
-  return out;
+// Label 1 on the voxels within test::kSphereSegmentRadiusMm of the volume's centre; one red
+// segment.
+Segmentation redSphereSegment(const Volume& v) {
+  return test::sphereSegment(v, {1.0f, 0.0f, 0.0f});
 }
 
-Image renderWith(const Volume& v, const RenderParams& p, const Segmentation* seg, bool packets,
-                 bool ess = true, FrameStats* stats = nullptr,
-                 VolumeStorage storage = VolumeStorage::Buffer) {
+Image renderWithLabels(const Volume& v, const RenderParams& p, const Segmentation* seg,
+                       bool packets, bool ess = true, FrameStats* stats = nullptr,
+                       VolumeStorage storage = VolumeStorage::Buffer) {
   Raycaster rc(test::pocl(), v, storage);
   RaycasterOptions o;
   o.packets = packets;
@@ -60,27 +52,24 @@ Image renderWith(const Volume& v, const RenderParams& p, const Segmentation* seg
   return img;
 }
 
-bool inside(double d) { return d < kRadiusMm - kHalfDiagonalMm; }
-bool outside(double d) { return d > kRadiusMm + kHalfDiagonalMm + 0.05; }
-
 }  // namespace
 
 TEST(Labels, ASegmentationThatChangesNothingRendersThePixelsWithout) {
   const Volume& v = test::anisotropicBall();
   const RenderParams p = test::faintTableParams();
-  Segmentation none = sphereSegment(v);
+  Segmentation none = redSphereSegment(v);
   none.segments.clear();  // labels, but no segment names them
-  Segmentation hidden = sphereSegment(v);
+  Segmentation hidden = redSphereSegment(v);
   hidden.segments[0].visible = false;
   RenderParams blend0 = p;
   blend0.segmentBlend = 0.0;
   for (bool packets : {true, false}) {
     SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
-    const Image plain = renderWith(v, p, nullptr, packets);
-    EXPECT_EQ(renderWith(v, p, &none, packets).rgba, plain.rgba);
-    EXPECT_EQ(renderWith(v, p, &hidden, packets).rgba, plain.rgba);
-    const Segmentation red = sphereSegment(v);
-    EXPECT_EQ(renderWith(v, blend0, &red, packets).rgba, plain.rgba);
+    const Image plain = renderWithLabels(v, p, nullptr, packets);
+    EXPECT_EQ(renderWithLabels(v, p, &none, packets).rgba, plain.rgba);
+    EXPECT_EQ(renderWithLabels(v, p, &hidden, packets).rgba, plain.rgba);
+    const Segmentation red = redSphereSegment(v);
+    EXPECT_EQ(renderWithLabels(v, blend0, &red, packets).rgba, plain.rgba);
     Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
     RaycasterOptions o;
     o.packets = packets;
@@ -106,7 +95,7 @@ TEST(Labels, ASegmentationThatChangesNothingRendersThePixelsWithout) {
 
 TEST(Labels, KernelsMatchTheReference) {
   const Volume& v = test::anisotropicBall();
-  const Segmentation seg = sphereSegment(v);
+  const Segmentation seg = redSphereSegment(v);
   for (const char* mask : {"off", "show:1", "hide:1"})
     for (bool shading : {true, false}) {
       RenderParams p = test::faintTableParams(shading);
@@ -116,28 +105,29 @@ TEST(Labels, KernelsMatchTheReference) {
       for (bool packets : {true, false}) {
         const std::string what = std::string(mask) + (shading ? " shaded" : " unshaded") +
                                  (packets ? " packets" : " per ray");
-        expectCloseToReference(renderWith(v, p, &seg, packets), ref, what);
+        expectCloseToReference(renderWithLabels(v, p, &seg, packets), ref, what);
       }
       // The volume as an image (GPUs), the labels still a buffer beside it.
       if (test::pocl().device().imageSupport)
-        expectCloseToReference(renderWith(v, p, &seg, false, true, nullptr, VolumeStorage::Image3d),
-                               ref, std::string(mask) + " image3d");
+        expectCloseToReference(
+            renderWithLabels(v, p, &seg, false, true, nullptr, VolumeStorage::Image3d), ref,
+            std::string(mask) + " image3d");
     }
 }
 
 TEST(Labels, ARedSphereSegmentShowsRedWhereItLies) {
   const Volume& v = test::anisotropicBall();
   const RenderParams p = test::faintTableParams();
-  const Segmentation seg = sphereSegment(v);
-  const std::vector<double> dist = rayDistances(v, p);
+  const Segmentation seg = redSphereSegment(v);
+  const std::vector<double> dist = test::sphereRayDistances(v, p);
   for (bool packets : {true, false}) {
     SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
-    const Image plain = renderWith(v, p, nullptr, packets);
-    const Image img = renderWith(v, p, &seg, packets);
+    const Image plain = renderWithLabels(v, p, nullptr, packets);
+    const Image img = renderWithLabels(v, p, &seg, packets);
     int red = 0, outsideCount = 0;
     for (size_t i = 0; i < dist.size(); ++i) {
       const int r = img.rgba[4 * i], g = img.rgba[4 * i + 1], b = img.rgba[4 * i + 2];
-      if (inside(dist[i])) {
+      if (test::crossesSphereSegment(dist[i])) {
         // The red chord is 2 sqrt(6^2 - d^2) mm of the ray's 20-26 mm in the ball: 6.9 mm at
         // the disc's edge, where red leads green by 25 levels (seen: 25 ... 55), over 9.6 mm
         // within 3 mm of the middle (seen: 43 ... 55). Green is what the red replaced.
@@ -145,7 +135,7 @@ TEST(Labels, ARedSphereSegmentShowsRedWhereItLies) {
         EXPECT_LT(g + 20, int(plain.rgba[4 * i + 1])) << "pixel " << i;
         EXPECT_EQ(g, b) << "pixel " << i;
         red += r > g + 15;
-      } else if (outside(dist[i])) {
+      } else if (test::missesSphereSegment(dist[i])) {
         // The white table: grey, and exactly the pixels without labels.
         for (int c = 0; c < 3; ++c) EXPECT_EQ(img.rgba[4 * i + c], plain.rgba[4 * i + c]);
         ++outsideCount;
@@ -160,17 +150,17 @@ TEST(Labels, AShowMaskRendersNothingOutsideTheSegmentsDisc) {
   const Volume& v = test::anisotropicBall();
   RenderParams p = test::faintTableParams();
   p.segmentMask = parseSegmentMask("show:1");
-  const Segmentation seg = sphereSegment(v);
-  const std::vector<double> dist = rayDistances(v, p);
+  const Segmentation seg = redSphereSegment(v);
+  const std::vector<double> dist = test::sphereRayDistances(v, p);
   for (bool packets : {true, false}) {
     SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
-    const Image img = renderWith(v, p, &seg, packets);
+    const Image img = renderWithLabels(v, p, &seg, packets);
     int shown = 0;
     for (size_t i = 0; i < dist.size(); ++i) {
       const int r = img.rgba[4 * i];
-      if (outside(dist[i]))
+      if (test::missesSphereSegment(dist[i]))
         for (int c = 0; c < 3; ++c) EXPECT_EQ(img.rgba[4 * i + c], 0) << "pixel " << i;
-      if (inside(dist[i])) {
+      if (test::crossesSphereSegment(dist[i])) {
         EXPECT_GT(r, 40) << "pixel " << i;
         shown += r > 40;
       }
@@ -183,20 +173,20 @@ TEST(Labels, AHideMaskRemovesTheSegment) {
   const Volume& v = test::anisotropicBall();
   RenderParams p = test::faintTableParams();
   p.segmentMask = parseSegmentMask("hide:1");
-  const Segmentation seg = sphereSegment(v);
-  const std::vector<double> dist = rayDistances(v, p);
+  const Segmentation seg = redSphereSegment(v);
+  const std::vector<double> dist = test::sphereRayDistances(v, p);
   for (bool packets : {true, false}) {
     SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
-    const Image plain = renderWith(v, p, nullptr, packets);
-    const Image img = renderWith(v, p, &seg, packets);
+    const Image plain = renderWithLabels(v, p, nullptr, packets);
+    const Image img = renderWithLabels(v, p, &seg, packets);
     int darker = 0;
     for (size_t i = 0; i < dist.size(); ++i) {
       const int r = img.rgba[4 * i], g = img.rgba[4 * i + 1];
       EXPECT_EQ(r, g) << "pixel " << i;  // no red anywhere: the table is white
-      if (outside(dist[i]))
+      if (test::missesSphereSegment(dist[i]))
         for (int c = 0; c < 3; ++c) EXPECT_EQ(img.rgba[4 * i + c], plain.rgba[4 * i + c]);
       // The middle of the ball is gone along these rays: less white gathered.
-      if (inside(dist[i])) darker += r + 10 < plain.rgba[4 * i];
+      if (test::crossesSphereSegment(dist[i])) darker += r + 10 < plain.rgba[4 * i];
     }
     EXPECT_GT(darker, 40);
   }
@@ -204,28 +194,28 @@ TEST(Labels, AHideMaskRemovesTheSegment) {
 
 TEST(Labels, SkippingStaysExactWithAMaskAndLeapsWhatItHides) {
   const Volume& v = test::anisotropicBall();
-  const Segmentation seg = sphereSegment(v);
+  const Segmentation seg = redSphereSegment(v);
   for (const char* mask : {"off", "show:1", "hide:1"})
     for (bool packets : {true, false}) {
       SCOPED_TRACE(std::string(mask) + (packets ? " packets" : " per ray"));
       RenderParams p = test::faintTableParams();
       p.segmentMask = parseSegmentMask(mask);
-      EXPECT_EQ(test::maxDiff(renderWith(v, p, &seg, packets, true),
-                              renderWith(v, p, &seg, packets, false)),
+      EXPECT_EQ(test::maxDiff(renderWithLabels(v, p, &seg, packets, true),
+                              renderWithLabels(v, p, &seg, packets, false)),
                 0);
     }
   // A show mask leaps the macro cells without label 1: far fewer samples than without it.
   RenderParams p = test::faintTableParams();
   FrameStats all, shown;
-  renderWith(v, p, &seg, true, true, &all);
+  renderWithLabels(v, p, &seg, true, true, &all);
   p.segmentMask = parseSegmentMask("show:1");
-  renderWith(v, p, &seg, true, true, &shown);
+  renderWithLabels(v, p, &seg, true, true, &shown);
   EXPECT_LT(shown.samples, 0.5 * all.samples) << shown.samples << " of " << all.samples;
 }
 
 TEST(Labels, AnEditedBoxRendersAsTheWholeMapSetAgain) {
   const Volume& v = test::anisotropicBall();
-  const Segmentation full = sphereSegment(v);
+  const Segmentation full = redSphereSegment(v);
   Segmentation edited = full;
   std::fill(edited.labels.begin(), edited.labels.end(), uint8_t(0));
   for (const char* mask : {"off", "show:1"}) {
@@ -237,13 +227,13 @@ TEST(Labels, AnEditedBoxRendersAsTheWholeMapSetAgain) {
     rc.render(p);  // classified without the sphere
     // The sphere "painted": its voxels lie within 6 / (1, 1.1, 1.6) voxels of the centre.
     rc.updateSegmentation(full, {13, 11, 7}, {26, 24, 16});
-    EXPECT_EQ(rc.render(p).rgba, renderWith(v, p, &full, true).rgba);
+    EXPECT_EQ(rc.render(p).rgba, renderWithLabels(v, p, &full, true).rgba);
   }
 }
 
 TEST(Labels, ASegmentationOffTheVolumesGridIsRefused) {
   const Volume& v = test::anisotropicBall();
-  Segmentation s = sphereSegment(v);
+  Segmentation s = redSphereSegment(v);
   s.grid.spacingMm.z = 2.0;
   Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   try {

@@ -42,7 +42,7 @@ RenderParams turned(RenderParams p, double degrees) {
 }
 
 // PSNR of the 8-bit colour channels, peak 255.
-double psnr(const Image& a, const Image& b) {
+double imagePsnr(const Image& a, const Image& b) {
   double sq = 0.0;
   size_t n = 0;
   for (size_t i = 0; i < a.rgba.size(); ++i) {
@@ -71,7 +71,7 @@ HeldError heldError(const Volume& v, const RenderParams& still, double degrees) 
   RenderParams phong = p;
   phong.lighting = Lighting::Phong;
   Image unshadowed = rc.render(phong);
-  HeldError e{psnr(held, converged), psnr(unshadowed, converged)};
+  HeldError e{imagePsnr(held, converged), imagePsnr(unshadowed, converged)};
   std::printf("held grid %.0f degrees: %.1f dB (phong %.1f dB)\n", degrees, e.held, e.phong);
   return e;
 }

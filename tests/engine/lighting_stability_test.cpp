@@ -50,7 +50,7 @@ void expectLightingStable(const Volume& v, RenderParams p, const std::string& wh
   }
 }
 
-RenderParams ballParams(glm::dvec3 light) {
+RenderParams litBallParams(glm::dvec3 light) {
   RenderParams p = test::tinyParams(Mode::Dvr);
   p.light.followCamera = false;
   p.light.position = light;
@@ -63,7 +63,7 @@ TEST(LightingStability, LightInsideTheVolumeAndAtInfinity) {
   Volume v = test::ball({16, 16, 16}, 5.0);
   for (glm::dvec3 light : {glm::dvec3(0.0), glm::dvec3(0.0, -5.0, 0.0), glm::dvec3(1e30),
                            glm::dvec3(-1e30, 1e30, 0.0)})
-    expectLightingStable(v, ballParams(light), "light at " + std::to_string(light.x));
+    expectLightingStable(v, litBallParams(light), "light at " + std::to_string(light.x));
 }
 
 TEST(LightingStability, OpacityZeroAndOneEverywhere) {
@@ -86,7 +86,7 @@ TEST(LightingStability, ExtremeSpacing) {
   // 0.01 mm in-plane, 50 mm between slices: the grid's cells and the occlusion radius
   // (10 mm) span very different voxel counts along the axes.
   Volume v = test::ball({16, 16, 4}, 5.0, 1000.0, -1000.0, glm::dvec3(0.01, 0.01, 50.0));
-  expectLightingStable(v, ballParams(glm::dvec3(0.05, -0.05, 80.0)), "0.01 x 50 mm");
+  expectLightingStable(v, litBallParams(glm::dvec3(0.05, -0.05, 80.0)), "0.01 x 50 mm");
 }
 
 }  // namespace voxray

@@ -31,7 +31,7 @@ namespace {
 const Volume& ball() { return test::partsBall(); }
 std::vector<ClContext*> contextsOf(int n) { return test::partContexts(n); }
 
-RenderParams frame(Mode mode, double elevationDeg, bool inside) {
+RenderParams compositeFrame(Mode mode, double elevationDeg, bool inside) {
   RenderParams p;
   p.width = 64;
   p.height = 50;  // 3 bands of 17, 17 and 16 rows: the last one shorter
@@ -63,7 +63,7 @@ void expectDeviceEqualsHost(Mode mode, int parts) {
   // Along +z, along -z (the slabs' order reversed), oblique and from inside the volume.
   for (View v : {View{90.0, false, "along+z"}, View{-90.0, false, "along-z"},
                  View{25.0, false, "oblique"}, View{60.0, true, "eye-inside"}}) {
-    RenderParams p = frame(mode, v.elevation, v.inside);
+    RenderParams p = compositeFrame(mode, v.elevation, v.inside);
     MultiDeviceStats hs, ds;
     Image a = onHost.render(p, &hs);
     Image b = onDevice.render(p, &ds);
@@ -105,7 +105,7 @@ TEST(MultiDeviceComposite, PartsStayOnTheHostAfterDeviceFrames) {
   MultiDeviceOptions o;
   o.bands = 2;
   MultiDeviceRenderer r(contextsOf(2), ball(), o);
-  RenderParams p = frame(Mode::Mip, 25.0, false);
+  RenderParams p = compositeFrame(Mode::Mip, 25.0, false);
   Image composited = r.render(p);
   std::vector<PartImage> parts = r.renderParts(p);
   ASSERT_EQ(parts.size(), 2u);
@@ -141,7 +141,7 @@ TEST(MultiDeviceComposite, BalancedRangesMoveAndKeepThePixels) {
   // costs differ, so the plane moves.
   bool moved = false;
   for (int frameIndex = 0; frameIndex < 4; ++frameIndex) {
-    RenderParams p = frame(Mode::Dvr, 80.0, false);
+    RenderParams p = compositeFrame(Mode::Dvr, 80.0, false);
     p.camera.azimuthDeg += 10.0 * frameIndex;
     MultiDeviceStats stats;
     Image want = a.render(p);

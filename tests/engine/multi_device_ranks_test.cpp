@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 
+#include "multi_device_fixture.h"
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
@@ -19,11 +20,6 @@ namespace voxray {
 namespace {
 
 // 40x36x30 anisotropic ball (multi_device_test.cpp's): 3 parts own 10 slices each.
-const Volume& ballVolume() {
-  static Volume v = test::ball({40, 36, 30}, 10.0, 1000.0, -1000.0, {1.0, 1.1, 1.3});
-  return v;
-}
-
 // V with every slice outside [r.storedFirst, r.storedEnd) set to FILL.
 Volume slabOnly(const Volume& v, const PartRange& r, int16_t fill) {
   Volume out = v;
@@ -34,7 +30,7 @@ Volume slabOnly(const Volume& v, const PartRange& r, int16_t fill) {
   return out;
 }
 
-RenderParams frame(Mode mode, double elevation, double distance = 0.0) {
+RenderParams rankFrame(Mode mode, double elevation, double distance = 0.0) {
   RenderParams p;
   p.width = 64;
   p.height = 48;
@@ -54,7 +50,7 @@ RenderParams frame(Mode mode, double elevation, double distance = 0.0) {
 // Each part rendered alone from its slab equals the same part of the whole volume's split:
 // the same samples and stencils, the filler never read (float rounding only: 1e-5).
 TEST(MultiDeviceRanks, SlabOnlyPartsEqualTheWholeSplit) {
-  const Volume& whole = ballVolume();
+  const Volume& whole = test::partsBall();
   const std::vector<PartRange> ranges = planParts(whole.dims.z, {1.0, 1.0, 1.0}, 4);
   const ValueRange all = storedRange(whole);
   std::vector<std::unique_ptr<ClContext>> owned = splitDevice(test::testDeviceSelector(), 3);
@@ -62,7 +58,7 @@ TEST(MultiDeviceRanks, SlabOnlyPartsEqualTheWholeSplit) {
   for (auto& c : owned) contexts.push_back(c.get());
   MultiDeviceRenderer split(contexts, whole);
   for (Mode mode : {Mode::Dvr, Mode::Iso, Mode::Mip}) {
-    const RenderParams p = frame(mode, 25.0);
+    const RenderParams p = rankFrame(mode, 25.0);
     const std::vector<PartImage> reference = split.renderParts(p);
     ASSERT_EQ(reference.size(), 3u);
     const size_t pixels = size_t(p.width) * size_t(p.height);
@@ -94,14 +90,14 @@ TEST(MultiDeviceRanks, VisibilityKeysOrderEveryPixel) {
   std::vector<std::unique_ptr<ClContext>> owned = splitDevice(test::testDeviceSelector(), 3);
   std::vector<ClContext*> contexts;
   for (auto& c : owned) contexts.push_back(c.get());
-  MultiDeviceRenderer split(contexts, ballVolume());
+  MultiDeviceRenderer split(contexts, test::partsBall());
   struct View {
     const char* name;
     double elevation, distance;
   };
   for (View v : {View{"along+z", 90.0, 0.0}, View{"along-z", -90.0, 0.0},
                  View{"oblique", 25.0, 0.0}, View{"eye inside", 60.0, 5.0}}) {
-    const RenderParams p = frame(Mode::Dvr, v.elevation, v.distance);
+    const RenderParams p = rankFrame(Mode::Dvr, v.elevation, v.distance);
     const std::vector<double> keys = split.visibilityKeys(p);
     const std::vector<PartImage> parts = split.renderParts(p);
     const size_t pixels = size_t(p.width) * size_t(p.height);
@@ -126,7 +122,7 @@ TEST(MultiDeviceRanks, GivenRangeOutsideTheVolumeIsRefused) {
   MultiDeviceOptions o;
   o.ranges = {PartRange{20, 40, 16, 40}};
   try {
-    MultiDeviceRenderer r({&test::pocl()}, ballVolume(), o);
+    MultiDeviceRenderer r({&test::pocl()}, test::partsBall(), o);
     FAIL() << "a range past slice 29 was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("the range of slices 20 to 39 (held 16 to 39) does not "

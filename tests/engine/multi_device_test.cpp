@@ -31,7 +31,6 @@ namespace voxray {
 
 namespace {
 
-const Volume& ballVolume() { return test::partsBall(); }
 std::vector<ClContext*> contexts(int n) { return test::partContexts(n); }
 
 enum class View { AlongPlusZ, AlongMinusZ, Oblique, Inside };
@@ -56,13 +55,13 @@ void place(RenderParams& p, View v) {
   }
 }
 
-struct Case {
+struct SplitCase {
   Mode mode;
   bool ess;
   bool shaded;
 };
 
-RenderParams frame(const Case& c, View v, int w, int h) {
+RenderParams splitFrame(const SplitCase& c, View v, int w, int h) {
   RenderParams p;
   p.width = w;
   p.height = h;
@@ -75,7 +74,7 @@ RenderParams frame(const Case& c, View v, int w, int h) {
   return p;
 }
 
-void expectSame(const Volume& vol, const Case& c, int n, int w, int h, int tolerance = 1) {
+void expectSame(const Volume& vol, const SplitCase& c, int n, int w, int h, int tolerance = 1) {
   Raycaster one(test::pocl(), vol, VolumeStorage::Buffer);
   RaycasterOptions o;
   o.emptySpaceSkipping = c.ess;
@@ -87,7 +86,7 @@ void expectSame(const Volume& vol, const Case& c, int n, int w, int h, int toler
   ASSERT_EQ(split.partCount(), n);
   int worst = 0;
   for (View v : {View::AlongPlusZ, View::AlongMinusZ, View::Oblique, View::Inside}) {
-    RenderParams p = frame(c, v, w, h);
+    RenderParams p = splitFrame(c, v, w, h);
     Image a = one.render(p);
     MultiDeviceStats stats;
     Image b = split.render(p, &stats);
@@ -106,12 +105,12 @@ void expectSame(const Volume& vol, const Case& c, int n, int w, int h, int toler
 }  // namespace
 
 using Param = std::tuple<int, int>;  // parts, case index
-const Case kCases[] = {{Mode::Dvr, true, true},
-                       {Mode::Dvr, false, true},
-                       {Mode::Mip, true, false},
-                       {Mode::Iso, true, true}};
+const SplitCase kCases[] = {{Mode::Dvr, true, true},
+                            {Mode::Dvr, false, true},
+                            {Mode::Mip, true, false},
+                            {Mode::Iso, true, true}};
 std::string caseName(int i) {
-  const Case& c = kCases[i];
+  const SplitCase& c = kCases[i];
   return std::string(c.mode == Mode::Dvr   ? "dvr_shaded"
                      : c.mode == Mode::Mip ? "mip"
                                            : "iso") +
@@ -122,7 +121,7 @@ class MultiDevice : public ::testing::TestWithParam<Param> {};
 
 TEST_P(MultiDevice, BallEqualsOneDevice) {
   auto [n, i] = GetParam();
-  expectSame(ballVolume(), kCases[i], n, 64, 48);
+  expectSame(test::partsBall(), kCases[i], n, 64, 48);
 }
 
 TEST_P(MultiDevice, CtheadEqualsOneDevice) {
@@ -143,13 +142,13 @@ INSTANTIATE_TEST_SUITE_P(Parts, MultiDevice,
 // Jitter, an orthographic camera and a clip box: the per-pixel offsets are the whole ray's in
 // every part.
 TEST(MultiDeviceFrame, JitterAndOrthographic) {
-  RenderParams p = frame({Mode::Dvr, true, true}, View::Oblique, 64, 48);
+  RenderParams p = splitFrame({Mode::Dvr, true, true}, View::Oblique, 64, 48);
   p.jitter = true;
-  Raycaster one(test::pocl(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster one(test::pocl(), test::partsBall(), VolumeStorage::Buffer);
   RaycasterOptions o;
   o.packets = false;
   one.setOptions(o);
-  MultiDeviceRenderer split(contexts(3), ballVolume());
+  MultiDeviceRenderer split(contexts(3), test::partsBall());
   EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1);
   p.camera.projection = Projection::Orthographic;
   p.camera.elevationDeg = 90.0;  // rays exactly along z
@@ -169,17 +168,17 @@ TEST(MultiDeviceFrame, JitterAndOrthographic) {
 // voxel_at as one device's image.
 TEST(MultiDeviceFrame, ImageStorage) {
   if (!test::pocl().device().imageSupport) GTEST_SKIP() << "no image support";
-  Raycaster one(test::pocl(), ballVolume(), VolumeStorage::Image3d);
+  Raycaster one(test::pocl(), test::partsBall(), VolumeStorage::Image3d);
   RaycasterOptions o;
   o.packets = false;
   one.setOptions(o);
   MultiDeviceOptions mo;
   mo.storage = VolumeStorage::Image3d;
-  MultiDeviceRenderer split(contexts(2), ballVolume(), mo);
-  for (Case c :
-       {Case{Mode::Dvr, true, true}, Case{Mode::Iso, true, true}, Case{Mode::Mip, true, false}})
+  MultiDeviceRenderer split(contexts(2), test::partsBall(), mo);
+  for (SplitCase c : {SplitCase{Mode::Dvr, true, true}, SplitCase{Mode::Iso, true, true},
+                      SplitCase{Mode::Mip, true, false}})
     for (View v : {View::AlongMinusZ, View::Oblique}) {
-      RenderParams p = frame(c, v, 64, 48);
+      RenderParams p = splitFrame(c, v, 64, 48);
       EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1) << name(v);
     }
 }
@@ -188,14 +187,14 @@ TEST(MultiDeviceFrame, ImageStorage) {
 // a part takes across its plane (dvr's first and last segments, iso's refinement from the
 // sample before) still lie within the 4-slice apron.
 TEST(MultiDeviceFrame, CoarseStepWithinApron) {
-  Raycaster one(test::pocl(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster one(test::pocl(), test::partsBall(), VolumeStorage::Buffer);
   RaycasterOptions o;
   o.packets = false;
   one.setOptions(o);
-  MultiDeviceRenderer split(contexts(3), ballVolume());
-  for (Case c : {Case{Mode::Dvr, true, true}, Case{Mode::Iso, true, true}})
+  MultiDeviceRenderer split(contexts(3), test::partsBall());
+  for (SplitCase c : {SplitCase{Mode::Dvr, true, true}, SplitCase{Mode::Iso, true, true}})
     for (View v : {View::AlongPlusZ, View::Oblique}) {
-      RenderParams p = frame(c, v, 64, 48);
+      RenderParams p = splitFrame(c, v, 64, 48);
       p.stepMm = 2.6;
       p.jitter = true;
       EXPECT_LE(test::maxDiff(one.render(p), split.render(p)), 1) << name(v);
@@ -206,8 +205,8 @@ TEST(MultiDeviceFrame, CoarseStepWithinApron) {
 // rendered with reads clamped at the stored edge (136 levels off with an apron of 2 in the
 // case above).
 TEST(MultiDeviceFrame, StepBeyondApronIsRefused) {
-  MultiDeviceRenderer split(contexts(2), ballVolume());
-  RenderParams p = frame({Mode::Iso, true, true}, View::Oblique, 16, 16);
+  MultiDeviceRenderer split(contexts(2), test::partsBall());
+  RenderParams p = splitFrame({Mode::Iso, true, true}, View::Oblique, 16, 16);
   p.stepMm = 4.0;
   try {
     split.render(p);
@@ -253,7 +252,7 @@ TEST(MultiDeviceFrame, DeviceOverBudgetSaysWhichAndWhat) {
   MultiDeviceOptions o;
   o.budgetBytes = 40 * 36 * 2 * 5;  // 5 slices; each part needs 15 + its apron
   try {
-    MultiDeviceRenderer split(contexts(2), ballVolume(), o);
+    MultiDeviceRenderer split(contexts(2), test::partsBall(), o);
     FAIL() << "a part over the budget was accepted";
   } catch (const Error& e) {
     std::string m = e.what();
@@ -265,8 +264,8 @@ TEST(MultiDeviceFrame, DeviceOverBudgetSaysWhichAndWhat) {
 }
 
 TEST(MultiDeviceFrame, OtherLightingIsRefused) {
-  MultiDeviceRenderer split(contexts(2), ballVolume());
-  RenderParams p = frame({Mode::Dvr, true, true}, View::Oblique, 16, 16);
+  MultiDeviceRenderer split(contexts(2), test::partsBall());
+  RenderParams p = splitFrame({Mode::Dvr, true, true}, View::Oblique, 16, 16);
   p.lighting = Lighting::Shadows;
   EXPECT_THROW(split.render(p), Error);
 }

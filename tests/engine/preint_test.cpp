@@ -169,9 +169,9 @@ const Volume& phantom() {
   return v;
 }
 
-constexpr int kPerRay = -1;
+using test::kPerRay;
 
-Image render(const Volume& v, const RenderParams& p, bool ess, int lanes) {
+Image renderWithSkipping(const Volume& v, const RenderParams& p, bool ess, int lanes) {
   Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   RaycasterOptions o;
   o.emptySpaceSkipping = ess;
@@ -210,8 +210,8 @@ RenderParams phantomDvr(double stepMm, bool preint, bool shading) {
 // within a level. Measured mean difference (PoCL, packets): see the property.
 TEST(PreintRender, AtOneVoxelAgreesWithPlainClassification) {
   for (bool shading : {false, true}) {
-    Image off = render(phantom(), phantomDvr(2.0, false, shading), true, 0);
-    Image on = render(phantom(), phantomDvr(2.0, true, shading), true, 0);
+    Image off = renderWithSkipping(phantom(), phantomDvr(2.0, false, shading), true, 0);
+    Image on = renderWithSkipping(phantom(), phantomDvr(2.0, true, shading), true, 0);
     double mean = meanLevels(on, off);
     std::cout << "phantom step 1 voxel, shading " << shading << ": mean |preint - plain| " << mean
               << " levels\n";
@@ -230,11 +230,11 @@ TEST(PreintRender, ShadowsReadTheLightGridBehindTheTable) {
   p.lighting = Lighting::Shadows;
   p.light.followCamera = false;  // from the side and above: the skull shades its far half
   p.light.position = glm::dvec3(300.0, 0.0, 150.0);
-  Image plain = render(phantom(), p, true, 0);
+  Image plain = renderWithSkipping(phantom(), p, true, 0);
   p.preintegrate = true;
-  Image pre = render(phantom(), p, true, 0);
+  Image pre = renderWithSkipping(phantom(), p, true, 0);
   p.lighting = Lighting::Phong;
-  Image phong = render(phantom(), p, true, 0);
+  Image phong = renderWithSkipping(phantom(), p, true, 0);
   double moved = meanLevels(pre, plain), shadows = meanLevels(pre, phong);
   std::cout << "phantom shadows: |preint - plain| " << moved << ", |shadows - phong| (preint) "
             << shadows << " levels\n";
@@ -259,13 +259,13 @@ TEST(PreintRender, SkippingChangesNoPixelAndPacketsAgreeWithOneRay) {
       p.camera.azimuthDeg = 35.0;
       p.camera.elevationDeg = 25.0;
       p.camera.zoom = 1.0;
-      Image plain = render(v, p, false, kPerRay);
-      EXPECT_EQ(test::maxDiff(plain, render(v, p, true, kPerRay)), 0);
+      Image plain = renderWithSkipping(v, p, false, kPerRay);
+      EXPECT_EQ(test::maxDiff(plain, renderWithSkipping(v, p, true, kPerRay)), 0);
       for (int lanes : {8, 16}) {
         SCOPED_TRACE(testing::Message() << lanes << " lanes");
-        Image packets = render(v, p, false, lanes);
+        Image packets = renderWithSkipping(v, p, false, lanes);
         EXPECT_LE(test::maxDiff(plain, packets), 1);
-        EXPECT_EQ(test::maxDiff(packets, render(v, p, true, lanes)), 0);
+        EXPECT_EQ(test::maxDiff(packets, renderWithSkipping(v, p, true, lanes)), 0);
       }
       // Not a blank image: the ball (radius 10 of a 64-voxel box) covers about 120 pixels.
       int shown = 0;

@@ -1,12 +1,14 @@
 // Per-segment transfer functions (issue 35, RenderParams::segmentTfs, SEGMENT_TF): a segment's
 // own 1D table classifies the samples whose nearest voxel holds its label; the others keep the
 // volume's table. The scene is labels_test's: test_volumes.h's anisotropic ball (1000 HU,
-// radius 13 voxels, 1 x 1.1 x 1.6 mm) and label 1 on the voxels within kRadiusMm of its centre.
+// radius 13 voxels, 1 x 1.1 x 1.6 mm) and label 1 on the voxels within test::kSphereSegmentRadiusMm
+// of its centre.
 //
 // Geometry of the checks, as labels_test: a sample takes the label of its nearest voxel, within
 // half a voxel's diagonal (1.09 mm) of it. A ray that passes the centre farther than
-// kRadiusMm + 1.09 mm reads no label 1; one nearer than kRadiusMm - 1.09 mm crosses label-1
-// voxels. Pixels between the two are not checked.
+// test::kSphereSegmentRadiusMm + 1.09 mm reads no label 1; one nearer than
+// test::kSphereSegmentRadiusMm - 1.09 mm crosses label-1 voxels. Pixels between the two are not
+// checked.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -26,12 +28,11 @@ namespace voxray {
 
 namespace {
 
-constexpr double kRadiusMm = test::kSphereSegmentRadiusMm;
-constexpr double kHalfDiagonalMm = test::kBallHalfDiagonalMm;
-
-// Label 1 within kRadiusMm of the centre; its segment green, so that a red pixel can only come
-// from its own table (which replaces the tint).
-Segmentation sphereSegment(const Volume& v) { return test::sphereSegment(v, {0.0f, 1.0f, 0.0f}); }
+// Label 1 within test::kSphereSegmentRadiusMm of the centre; its segment green, so that a red pixel
+// can only come from its own table (which replaces the tint).
+Segmentation greenSphereSegment(const Volume& v) {
+  return test::sphereSegment(v, {0.0f, 1.0f, 0.0f});
+}
 
 const std::vector<ControlPoint> kTransparent = {{-1000.0, {1.0, 1.0, 1.0, 0.0}},
                                                 {3000.0, {1.0, 1.0, 1.0, 0.0}}};
@@ -56,17 +57,9 @@ RenderParams mixedParams(bool shading) {
   return p;
 }
 
-std::vector<double> rayDistances(const Volume& v, const RenderParams& p) {
-  std::vector<double> out;
-  test::forEachPixelRay(makeViewGeometry(v, p), p, [&](const glm::dvec3& o, const glm::dvec3& d) {
-    out.push_back(glm::length(glm::cross(-o, d)));
-  });
-  return out;
-}
-
-Image renderWith(const Volume& v, const RenderParams& p, const Segmentation& seg, bool packets,
-                 bool ess = true, FrameStats* stats = nullptr,
-                 VolumeStorage storage = VolumeStorage::Buffer) {
+Image renderWithSegmentTf(const Volume& v, const RenderParams& p, const Segmentation& seg,
+                          bool packets, bool ess = true, FrameStats* stats = nullptr,
+                          VolumeStorage storage = VolumeStorage::Buffer) {
   Raycaster rc(test::pocl(), v, storage);
   RaycasterOptions o;
   o.packets = packets;
@@ -79,24 +72,22 @@ Image renderWith(const Volume& v, const RenderParams& p, const Segmentation& seg
   return img;
 }
 
-bool inside(double d) { return d < kRadiusMm - kHalfDiagonalMm; }
-bool outside(double d) { return d > kRadiusMm + kHalfDiagonalMm + 0.05; }
-
 }  // namespace
 
 TEST(SegmentTf, ARedOpaqueSegmentShowsRedAndTheTransparentRestBackground) {
   const Volume& v = test::anisotropicBall();
-  const Segmentation seg = sphereSegment(v);
+  const Segmentation seg = greenSphereSegment(v);
   const RenderParams p = redBallParams(false);
-  const std::vector<double> dist = rayDistances(v, p);
+  const std::vector<double> dist = test::sphereRayDistances(v, p);
   int insideCount = 0, outsideCount = 0;
-  for (double d : dist) insideCount += inside(d), outsideCount += outside(d);
+  for (double d : dist)
+    insideCount += test::crossesSphereSegment(d), outsideCount += test::missesSphereSegment(d);
   ASSERT_EQ(insideCount, 112);  // labels_test's inner disc of 64 x 48 pixels
   ASSERT_GT(outsideCount, 1500);
   for (bool packets : {true, false})
     for (bool ess : {true, false}) {
       SCOPED_TRACE(std::string(packets ? "packets" : "per ray") + (ess ? " ess" : " no ess"));
-      const Image img = renderWith(v, p, seg, packets, ess);
+      const Image img = renderWithSegmentTf(v, p, seg, packets, ess);
       int red = 0, black = 0, redInside = 0, blackOutside = 0;
       for (size_t i = 0; i < dist.size(); ++i) {
         const int r = img.rgba[4 * i], g = img.rgba[4 * i + 1], b = img.rgba[4 * i + 2];
@@ -104,8 +95,8 @@ TEST(SegmentTf, ARedOpaqueSegmentShowsRedAndTheTransparentRestBackground) {
         // whole pixel, exactly red; nothing else shows (the volume's table is transparent).
         const bool isRed = r == 255 && g == 0 && b == 0, isBlack = r == 0 && g == 0 && b == 0;
         red += isRed, black += isBlack;
-        if (inside(dist[i])) redInside += isRed;
-        if (outside(dist[i])) blackOutside += isBlack;
+        if (test::crossesSphereSegment(dist[i])) redInside += isRed;
+        if (test::missesSphereSegment(dist[i])) blackOutside += isBlack;
         EXPECT_TRUE(isRed || isBlack) << "pixel " << i << ": " << r << "," << g << "," << b;
       }
       EXPECT_EQ(redInside, insideCount);
@@ -119,7 +110,7 @@ TEST(SegmentTf, ARedOpaqueSegmentShowsRedAndTheTransparentRestBackground) {
 
 TEST(SegmentTf, KernelsMatchTheReference) {
   const Volume& v = test::anisotropicBall();
-  const Segmentation seg = sphereSegment(v);
+  const Segmentation seg = greenSphereSegment(v);
   for (const char* scene : {"red", "mixed"})
     for (bool shading : {true, false}) {
       RenderParams p = std::string(scene) == "red" ? redBallParams(shading) : mixedParams(shading);
@@ -130,12 +121,12 @@ TEST(SegmentTf, KernelsMatchTheReference) {
           const std::string what = std::string(scene) + " " + mask +
                                    (shading ? " shaded" : " unshaded") +
                                    (packets ? " packets" : " per ray");
-          test::expectCloseToReference(renderWith(v, p, seg, packets), ref, what);
+          test::expectCloseToReference(renderWithSegmentTf(v, p, seg, packets), ref, what);
         }
         // The volume as an image (GPUs' storage), the labels and tables still buffers.
         if (test::pocl().device().imageSupport)
           test::expectCloseToReference(
-              renderWith(v, p, seg, false, true, nullptr, VolumeStorage::Image3d), ref,
+              renderWithSegmentTf(v, p, seg, false, true, nullptr, VolumeStorage::Image3d), ref,
               std::string(scene) + " " + mask + " image3d");
       }
     }
@@ -148,26 +139,26 @@ TEST(SegmentTf, KernelsMatchTheReference) {
 
 TEST(SegmentTf, SkippingIsExactAndStillLeaps) {
   const Volume& v = test::anisotropicBall();
-  const Segmentation seg = sphereSegment(v);
+  const Segmentation seg = greenSphereSegment(v);
   for (bool shading : {true, false})
     for (bool packets : {true, false}) {
       SCOPED_TRACE(std::string(shading ? "shaded" : "unshaded") + (packets ? " packets" : ""));
       for (const RenderParams& p : {redBallParams(shading), mixedParams(shading)})
-        EXPECT_EQ(test::maxDiff(renderWith(v, p, seg, packets, true),
-                                renderWith(v, p, seg, packets, false)),
+        EXPECT_EQ(test::maxDiff(renderWithSegmentTf(v, p, seg, packets, true),
+                                renderWithSegmentTf(v, p, seg, packets, false)),
                   0);
     }
   // The transparent volume is leapt outside the cells that hold label 1: far fewer samples
   // than without skipping (and the opaque red stops each ray at its first labelled sample).
   FrameStats skipped, all;
-  renderWith(v, redBallParams(true), seg, true, true, &skipped);
-  renderWith(v, redBallParams(true), seg, true, false, &all);
+  renderWithSegmentTf(v, redBallParams(true), seg, true, true, &skipped);
+  renderWithSegmentTf(v, redBallParams(true), seg, true, false, &all);
   EXPECT_LT(skipped.samples, 0.5 * all.samples) << skipped.samples << " of " << all.samples;
 }
 
 TEST(SegmentTf, OnlyFramesWithAnOwnTableCompileIt) {
   const Volume& v = test::anisotropicBall();
-  const Segmentation seg = sphereSegment(v);
+  const Segmentation seg = greenSphereSegment(v);
   Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   rc.setSegmentation(seg);
   RenderParams p = test::faintTableParams();
@@ -189,7 +180,7 @@ TEST(SegmentTf, OnlyFramesWithAnOwnTableCompileIt) {
   EXPECT_NE(rc.variantOptions(with2d).find("SEGMENT_TF=0"), std::string::npos);
   // Without the table the pixels are labels_test's (the tint back).
   RenderParams plain = test::faintTableParams();
-  EXPECT_EQ(rc.render(plain).rgba, renderWith(v, plain, seg, true).rgba);
+  EXPECT_EQ(rc.render(plain).rgba, renderWithSegmentTf(v, plain, seg, true).rgba);
   EXPECT_NE(rc.render(p).rgba, rc.render(plain).rgba);
 }
 

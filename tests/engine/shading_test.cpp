@@ -9,12 +9,7 @@
 
 namespace voxray {
 
-namespace {
-ClContext& context() {
-  static ClContext ctx(test::testDeviceSelector());  // PoCL, or the GPU certificate's
-  return ctx;
-}
-}  // namespace
+namespace {}  // namespace
 
 TEST(Shading, ZeroGradientIsLitAsFacingTheViewerNotNaN) {
   // A constant volume: every gradient is exactly zero, so the normal falls back to the
@@ -28,7 +23,7 @@ TEST(Shading, ZeroGradientIsLitAsFacingTheViewerNotNaN) {
   p.mode = Mode::Dvr;
   p.preset = "CT-Bone";
   p.light.position = {0.0, 0.0, 0.0};  // at the eye
-  Raycaster rc(context(), v, VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   for (const Image& img : {rc.render(p), renderReference(v, p)}) {
     int g = img.pixel(8, 8)[1];
     EXPECT_GE(g, 220);
@@ -46,7 +41,7 @@ TEST(Shading, CutFaceIsShadedAsAFlatCapFacingTheViewer) {
   p.surfaceColor = {0.4, 0.4, 0.4};
   p.light.position = {0.0, 0.0, 0.0};  // at the eye
   p.camera.zoom = 4.0;                 // every pixel sees the volume
-  Raycaster rc(context(), v, VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   Image img = rc.render(p);
   // The first sample is on the entry face: the cap normal faces the viewer exactly and
   // the light is at the eye: colour * (ambient + diffuse) + specular = 0.4 * 0.9 + 0.25 = 0.61 ->
@@ -66,7 +61,7 @@ TEST(Shading, LightOnTheLeftLightsTheLeftSide) {
   p.light.followCamera = false;
   p.light.position = {1000.0, -300.0, 0.0};  // patient's left (+x), in front
   p.camera.zoom = 2.0;
-  Raycaster rc(context(), v, VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   Image img = rc.render(p);
   // Anterior view: patient's left is on the image's right.
   int right = img.pixel(44, 32)[0], left = img.pixel(20, 32)[0];

@@ -17,7 +17,7 @@ std::vector<std::pair<int, int>> slabs(const SlabPlan& p) {
   return out;
 }
 
-using Slabs = std::vector<std::pair<int, int>>;  // (first stored slice, stored slices)
+using SlabList = std::vector<std::pair<int, int>>;  // (first stored slice, stored slices)
 
 }  // namespace
 
@@ -25,28 +25,28 @@ TEST(SlabPlan, AVolumeThatFitsIsOneSlabWithoutApron) {
   auto p = planSlabs(113, 113);
   ASSERT_TRUE(p);
   EXPECT_EQ(p->depth, 113);
-  EXPECT_EQ(slabs(*p), (Slabs{{0, 113}}));
-  EXPECT_EQ(slabs(*planSlabs(1, 1)), (Slabs{{0, 1}}));
+  EXPECT_EQ(slabs(*p), (SlabList{{0, 113}}));
+  EXPECT_EQ(slabs(*planSlabs(1, 1)), (SlabList{{0, 1}}));
 }
 
 TEST(SlabPlan, DepthNotDividingTheVolumeLeavesAShorterLastSlab) {
   // Owned [0, 4), [4, 8), [8, 10); two apron slices each side, clamped to [0, 10).
   SlabPlan p = slabsOfDepth(10, 4);
   EXPECT_EQ(p.depth, 4);
-  EXPECT_EQ(slabs(p), (Slabs{{0, 6}, {2, 8}, {6, 4}}));
+  EXPECT_EQ(slabs(p), (SlabList{{0, 6}, {2, 8}, {6, 4}}));
 }
 
 TEST(SlabPlan, DepthSmallerThanTheApronOverlapsSeveralSlabs) {
-  EXPECT_EQ(slabs(slabsOfDepth(5, 1)), (Slabs{{0, 3}, {0, 4}, {0, 5}, {1, 4}, {2, 3}}));
+  EXPECT_EQ(slabs(slabsOfDepth(5, 1)), (SlabList{{0, 3}, {0, 4}, {0, 5}, {1, 4}, {2, 3}}));
 }
 
 TEST(SlabPlan, TheFewestSlabsWithinTheLimit) {
   // Two slabs of 50 store 52 slices each (one apron side); at 51 it takes three of 34.
-  EXPECT_EQ(slabs(*planSlabs(100, 60)), (Slabs{{0, 52}, {48, 52}}));
+  EXPECT_EQ(slabs(*planSlabs(100, 60)), (SlabList{{0, 52}, {48, 52}}));
   auto three = planSlabs(100, 51);
   ASSERT_TRUE(three);
   EXPECT_EQ(three->depth, 34);
-  EXPECT_EQ(slabs(*three), (Slabs{{0, 36}, {32, 38}, {66, 34}}));
+  EXPECT_EQ(slabs(*three), (SlabList{{0, 36}, {32, 38}, {66, 34}}));
 }
 
 TEST(SlabPlan, NoPlanWhenEightSlabsDoNotFit) {

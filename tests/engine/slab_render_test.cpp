@@ -7,6 +7,7 @@
 
 #include <tuple>
 
+#include "multi_device_fixture.h"
 #include "stability_helpers.h"
 #include "test_volumes.h"
 #include "voxray/engine/cl_context.h"
@@ -20,18 +21,13 @@ namespace {
 
 // 30 slices: 3 slabs own 10 each, 2 own 15, 4 own 8 (the last 6). The ball spans z 4.5 to
 // 24.5, so its surface crosses each boundary obliquely.
-const Volume& ballVolume() {
-  static Volume v = test::ball({40, 36, 30}, 10.0, 1000.0, -1000.0, {1.0, 1.1, 1.3});
-  return v;
-}
-
 // Slab limits giving 2, 3 and 4 slabs: stored slices (owned plus aprons) times a slice.
 size_t slabBytes(int slabs) {
   const size_t slice = 40 * 36 * sizeof(int16_t);
   return slice * (slabs == 2 ? 17 : slabs == 3 ? 14 : 12);
 }
 
-RenderParams params(Mode mode, Gradient g, Interp interp, double elevationDeg) {
+RenderParams slabParams(Mode mode, Gradient g, Interp interp, double elevationDeg) {
   RenderParams p;
   p.width = 64;
   p.height = 48;
@@ -48,15 +44,15 @@ RenderParams params(Mode mode, Gradient g, Interp interp, double elevationDeg) {
 }  // namespace
 
 // mode, gradient, interpolation, empty-space skipping, slabs, storage
-using Case = std::tuple<Mode, Gradient, Interp, bool, int, VolumeStorage>;
-class Slabs : public ::testing::TestWithParam<Case> {};
+using SlabCase = std::tuple<Mode, Gradient, Interp, bool, int, VolumeStorage>;
+class Slabs : public ::testing::TestWithParam<SlabCase> {};
 
 TEST_P(Slabs, RenderExactlyAsOneVolume) {
   auto [mode, g, interp, ess, slabs, storage] = GetParam();
   if (storage == VolumeStorage::Image3d && !test::pocl().device().imageSupport)
     GTEST_SKIP() << "no image support";
-  Raycaster one(test::pocl(), ballVolume(), storage);
-  Raycaster split(test::pocl(), ballVolume(), storage);
+  Raycaster one(test::pocl(), test::partsBall(), storage);
+  Raycaster split(test::pocl(), test::partsBall(), storage);
   RaycasterOptions o;
   o.emptySpaceSkipping = ess;
   o.packets = false;
@@ -68,7 +64,7 @@ TEST_P(Slabs, RenderExactlyAsOneVolume) {
   // Oblique, and from above: rays along z through every boundary (perspective: near the
   // axis) and, orthographic, exactly along it.
   for (double elevation : {25.0, 90.0, -90.0}) {
-    RenderParams p = params(mode, g, interp, elevation);
+    RenderParams p = slabParams(mode, g, interp, elevation);
     FrameStats stats;
     Image a = one.render(p);
     Image b = split.render(p, &stats);
@@ -78,9 +74,9 @@ TEST_P(Slabs, RenderExactlyAsOneVolume) {
   }
 }
 
-std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+std::string caseName(const ::testing::TestParamInfo<SlabCase>& info) {
   auto [mode, g, interp, ess, slabs, storage] = info.param;
-  return kernelVariantName(params(mode, g, interp, 25.0)) + (ess ? "_ess_" : "_") +
+  return kernelVariantName(slabParams(mode, g, interp, 25.0)) + (ess ? "_ess_" : "_") +
          std::to_string(slabs) + "slabs" + (storage == VolumeStorage::Image3d ? "_image" : "");
 }
 
@@ -92,36 +88,36 @@ using S = VolumeStorage;
 // ESS, slab count and storage varied alongside rather than crossed.
 INSTANTIATE_TEST_SUITE_P(
     Bricks, Slabs,
-    ::testing::Values(Case{M::Iso, G::Central, I::Linear, true, 3, S::Buffer},
-                      Case{M::Iso, G::Central, I::Nearest, false, 2, S::Buffer},
-                      Case{M::Iso, G::Sobel, I::Linear, false, 4, S::Buffer},
-                      Case{M::Iso, G::Sobel, I::Nearest, true, 3, S::Buffer},
-                      Case{M::Iso, G::ZuckerHummel, I::Linear, true, 2, S::Buffer},
-                      Case{M::Iso, G::ZuckerHummel, I::Nearest, false, 4, S::Buffer},
-                      Case{M::Dvr, G::Central, I::Linear, false, 3, S::Buffer},
-                      Case{M::Dvr, G::ZuckerHummel, I::Nearest, true, 4, S::Buffer},
-                      Case{M::Dvr, G::Sobel, I::Linear, true, 2, S::Buffer},
-                      Case{M::Mip, G::Central, I::Linear, true, 4, S::Buffer},
-                      Case{M::Mip, G::Central, I::Nearest, false, 3, S::Buffer},
-                      Case{M::Iso, G::Central, I::Linear, true, 3, S::Image3d},
-                      Case{M::Dvr, G::ZuckerHummel, I::Linear, false, 2, S::Image3d}),
+    ::testing::Values(SlabCase{M::Iso, G::Central, I::Linear, true, 3, S::Buffer},
+                      SlabCase{M::Iso, G::Central, I::Nearest, false, 2, S::Buffer},
+                      SlabCase{M::Iso, G::Sobel, I::Linear, false, 4, S::Buffer},
+                      SlabCase{M::Iso, G::Sobel, I::Nearest, true, 3, S::Buffer},
+                      SlabCase{M::Iso, G::ZuckerHummel, I::Linear, true, 2, S::Buffer},
+                      SlabCase{M::Iso, G::ZuckerHummel, I::Nearest, false, 4, S::Buffer},
+                      SlabCase{M::Dvr, G::Central, I::Linear, false, 3, S::Buffer},
+                      SlabCase{M::Dvr, G::ZuckerHummel, I::Nearest, true, 4, S::Buffer},
+                      SlabCase{M::Dvr, G::Sobel, I::Linear, true, 2, S::Buffer},
+                      SlabCase{M::Mip, G::Central, I::Linear, true, 4, S::Buffer},
+                      SlabCase{M::Mip, G::Central, I::Nearest, false, 3, S::Buffer},
+                      SlabCase{M::Iso, G::Central, I::Linear, true, 3, S::Image3d},
+                      SlabCase{M::Dvr, G::ZuckerHummel, I::Linear, false, 2, S::Image3d}),
     caseName);
 
 TEST(Slabs, OrthographicAlongZ) {
-  Raycaster one(test::pocl(), ballVolume(), VolumeStorage::Buffer);
-  Raycaster split(test::pocl(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster one(test::pocl(), test::partsBall(), VolumeStorage::Buffer);
+  Raycaster split(test::pocl(), test::partsBall(), VolumeStorage::Buffer);
   RaycasterOptions o;
   o.packets = false;
   one.setOptions(o);
   o.maxSlabBytes = slabBytes(3);
   split.setOptions(o);
-  RenderParams p = params(Mode::Iso, Gradient::ZuckerHummel, Interp::Linear, 90.0);
+  RenderParams p = slabParams(Mode::Iso, Gradient::ZuckerHummel, Interp::Linear, 90.0);
   p.camera.projection = Projection::Orthographic;
   EXPECT_EQ(test::maxDiff(one.render(p), split.render(p)), 0);
 }
 
 TEST(Slabs, SplittingOffAndOnAgainFollowsTheLimit) {
-  Raycaster rc(test::pocl(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), test::partsBall(), VolumeStorage::Buffer);
   RaycasterOptions o;
   o.maxSlabBytes = slabBytes(4);
   rc.setOptions(o);
@@ -131,13 +127,13 @@ TEST(Slabs, SplittingOffAndOnAgainFollowsTheLimit) {
   EXPECT_EQ(rc.slabCount(), 1);
   // Packets (CPUs only) need one volume argument: only unsplit volumes get them.
   if (!test::pocl().device().isGpu)
-    EXPECT_NE(rc.variantOptions(params(Mode::Iso, Gradient::Central, Interp::Linear, 25.0))
+    EXPECT_NE(rc.variantOptions(slabParams(Mode::Iso, Gradient::Central, Interp::Linear, 25.0))
                   .find("-D PACKET=1"),
               std::string::npos);
 }
 
 TEST(Slabs, ALimitBelowFiveSlicesIsAClearDeviceError) {
-  Raycaster rc(test::pocl(), ballVolume(), VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), test::partsBall(), VolumeStorage::Buffer);
   RaycasterOptions o;
   o.maxSlabBytes = 4 * 40 * 36 * sizeof(int16_t);  // no slab depth leaves room for aprons
   try {

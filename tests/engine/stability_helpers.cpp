@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "voxray/engine/kernel_variant.h"
 #include "voxray/engine/raycaster.h"
 #include "voxray/engine/reference_renderer.h"
 
@@ -100,6 +101,10 @@ void expectAgrees(const Volume& v, const RenderParams& p, const Image& q, Volume
   EXPECT_LE(sum / double(n * 3), tol.meanAbs) << rc.variantOptions(p);
   EXPECT_LE(double(over) / double(n), tol.fractionOver3)
       << rc.variantOptions(p) << " (max " << worst << " levels)";
+}
+
+std::string variantDescription(const RenderParams& p, bool packets) {
+  return kernelVariantName(p) + (packets ? " packets" : " one ray per work-item");
 }
 
 }  // namespace voxray::test

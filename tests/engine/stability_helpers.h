@@ -14,6 +14,12 @@
 
 namespace voxray::test {
 
+// The modes every stability case renders.
+inline constexpr Mode kAllModes[] = {Mode::Iso, Mode::Dvr, Mode::Mip};
+// The lanes argument of the tests' render helpers that means one ray per work-item (no
+// packets); 8 or 16 are a packet's rays, 0 the raycaster's choice.
+inline constexpr int kPerRay = -1;
+
 // The test device: PoCL ("cpu") unless VOXRAY_TEST_DEVICE names another (the GPU stability
 // certificate, docs/stability/gpu-stability.sh, runs this suite on an NVIDIA GPU).
 ClContext& pocl();
@@ -27,6 +33,9 @@ Image renderKernel(const Volume& v, const RenderParams& p, bool packets);
 
 // The largest difference between two images of the same size, in 8-bit levels.
 int maxDiff(const Image& a, const Image& b);
+
+// The kernel variant's name and whether it marched packets, for a failure's message.
+std::string variantDescription(const RenderParams& p, bool packets);
 
 // Tolerance between the PoCL image and the quantised reference, in 8-bit levels. The
 // default is kernel_vs_reference_test.cpp's: float vs double can flip a first hit or a

@@ -16,11 +16,6 @@ namespace voxray {
 
 namespace {
 
-const Volume& ball16() {
-  static Volume v = test::ball({16, 16, 16}, 5.0);
-  return v;
-}
-
 RenderParams fixedLight(Mode m, glm::dvec3 light) {
   RenderParams p = test::tinyParams(m);
   p.light.followCamera = false;
@@ -38,7 +33,7 @@ TEST(StabilityLight, InsideTheVolumeAtTheHitPointAndFarAway) {
                              glm::dvec3(-1e30, 1e30, 0.0)}) {
       RenderParams p = fixedLight(m, light);
       p.camera.projection = Projection::Orthographic;
-      test::expectStable(ball16(), p, "light at " + std::to_string(light.x));
+      test::expectStable(test::ball16(), p, "light at " + std::to_string(light.x));
     }
 }
 
@@ -94,7 +89,7 @@ TEST(StabilityTransferFunction, CoincidentControlPointsRenderThroughBothRenderer
       p.transferFunction = kStep;
       p.shading = shading;
       if (m == Mode::Iso) p.isoLo = 100.0;  // the surface sits on the step
-      test::expectStable(ball16(), p,
+      test::expectStable(test::ball16(), p,
                          std::string("step at 100 HU, shading ") + (shading ? "on" : "off"));
     }
   // Unshaded dvr: every ray through the ball meets the step and stops on opaque red; the
@@ -102,8 +97,8 @@ TEST(StabilityTransferFunction, CoincidentControlPointsRenderThroughBothRenderer
   RenderParams p = test::tinyParams(Mode::Dvr);
   p.transferFunction = kStep;
   p.shading = false;
-  Raycaster rc(test::pocl(), ball16(), VolumeStorage::Buffer);
-  for (const Image& img : {rc.render(p), renderReference(ball16(), p)}) {
+  Raycaster rc(test::pocl(), test::ball16(), VolumeStorage::Buffer);
+  for (const Image& img : {rc.render(p), renderReference(test::ball16(), p)}) {
     const uint8_t* c = img.pixel(16, 12);
     EXPECT_GE(c[0], 250);
     EXPECT_EQ(c[1], 0);
@@ -123,7 +118,7 @@ TEST(StabilityJitter, ReferenceHashIsTheKernelsHash) {
 }
 
 TEST(StabilityJitter, KernelAndReferencePlaceJitteredSamplesAlike) {
-  Raycaster rc(test::pocl(), ball16(), VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), test::ball16(), VolumeStorage::Buffer);
   RenderParams probe = test::tinyParams(Mode::Dvr);
   probe.jitter = true;
   if (rc.variantOptions(probe).find("JITTER") == std::string::npos)
@@ -133,7 +128,7 @@ TEST(StabilityJitter, KernelAndReferencePlaceJitteredSamplesAlike) {
       RenderParams p = test::tinyParams(m);
       p.jitter = true;
       p.stepMm = step;
-      test::expectStable(ball16(), p, "jitter, step " + std::to_string(step));
+      test::expectStable(test::ball16(), p, "jitter, step " + std::to_string(step));
     }
 }
 

@@ -19,8 +19,6 @@ namespace voxray {
 
 namespace {
 
-constexpr Mode kModes[] = {Mode::Iso, Mode::Dvr, Mode::Mip};
-
 Volume filled(glm::ivec3 dims, glm::dvec3 spacing, auto&& value) {
   Volume v;
   v.dims = dims;
@@ -53,7 +51,7 @@ TEST(StabilityVolume, TinyAndFlatVolumes) {
       return -1000 + 2000 * (x + y + z) / std::max(1, c.dims.x + c.dims.y + c.dims.z - 3);
     });
     if (v.voxelCount() == 1) v.voxels[0] = 1000;
-    for (Mode m : kModes) {
+    for (Mode m : test::kAllModes) {
       test::expectStable(v, oblique(m), c.name);
       RenderParams p = test::tinyParams(m);
       p.camera.elevationDeg = 90.0;
@@ -66,7 +64,7 @@ TEST(StabilityVolume, AnisotropyFiveThousandToOne) {
   // 0.01 mm next to 50 mm: the default step (half of 0.01 mm) takes ~80000 samples per
   // ray across the 50 mm axis, and gradients scale by 5000 between axes.
   Volume v = test::ball({8, 8, 8}, 2.5, 1000.0, -1000.0, {0.01, 50.0, 1.0});
-  for (Mode m : kModes) {
+  for (Mode m : test::kAllModes) {
     RenderParams p = test::tinyParams(m, 24, 16);
     test::expectStable(v, p, "spacing 0.01 / 50 / 1 mm");
     p.camera.azimuthDeg = 90.0;
@@ -76,7 +74,7 @@ TEST(StabilityVolume, AnisotropyFiveThousandToOne) {
 
 TEST(StabilityVolume, ConstantVolumeHasZeroGradientEverywhere) {
   Volume v = test::constant({8, 8, 8}, 500);
-  for (Mode m : kModes) {
+  for (Mode m : test::kAllModes) {
     RenderParams p = oblique(m);
     p.isoLo = 400.0;  // every ray hits at its first sample, where the gradient is zero
     test::expectStable(v, p, "constant 500 HU");
@@ -95,7 +93,7 @@ Volume int16Checkerboard() {
 
 TEST(StabilityVolume, Int16ExtremesNextToEachOther) {
   Volume v = int16Checkerboard();
-  for (Mode m : kModes)
+  for (Mode m : test::kAllModes)
     for (Interp interp : {Interp::Linear, Interp::Nearest})
       for (bool shading : {true, false}) {
         RenderParams p = oblique(m);
@@ -166,7 +164,7 @@ TEST(StabilityVolume, FloatVolumeWithNaNAndInfinitiesIsEmptyThereWithAWarning) {
   // Non-finite voxels became the lowest value (air): they are empty, not bright.
   EXPECT_DOUBLE_EQ(v.toPhysical(v.voxels[10]), -1000.0);
   EXPECT_DOUBLE_EQ(v.toPhysical(v.voxels[100]), -1000.0);
-  for (Mode m : kModes) test::expectStable(v, oblique(m), "f32 with NaN and +-Inf");
+  for (Mode m : test::kAllModes) test::expectStable(v, oblique(m), "f32 with NaN and +-Inf");
 }
 
 }  // namespace voxray

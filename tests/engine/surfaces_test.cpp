@@ -28,7 +28,7 @@ namespace voxray {
 
 namespace {
 
-constexpr double kRadiusMm = 15.0;
+constexpr double kSurfaceRadiusMm = 15.0;
 
 // 48^3 voxels of 1 mm, all -1000 HU (the dvr table below leaves them transparent).
 const Volume& emptyVolume() {
@@ -111,7 +111,7 @@ bool dark(const Image& img, size_t i) {
 TEST(Surfaces, SphereSilhouetteAndNormalsAgreeWithTheAnalyticSphere) {
   const Volume& v = emptyVolume();
   Segmentation seg = emptySegmentation(v);
-  addSphere(seg, v, glm::dvec3(0.0), kRadiusMm, 1, {0.9f, 0.9f, 0.9f});
+  addSphere(seg, v, glm::dvec3(0.0), kSurfaceRadiusMm, 1, {0.9f, 0.9f, 0.9f});
   const RenderParams p = surfaceView(160);
   // The pixel's size: neighbouring orthographic rays' origins.
   glm::dvec3 o0, o1, d;
@@ -119,7 +119,7 @@ TEST(Surfaces, SphereSilhouetteAndNormalsAgreeWithTheAnalyticSphere) {
   g.ray(0, 0, p.width, p.height, o0, d);
   g.ray(1, 0, p.width, p.height, o1, d);
   const double pixelMm = glm::length(o1 - o0);
-  const double analyticPx = kRadiusMm / pixelMm;
+  const double analyticPx = kSurfaceRadiusMm / pixelMm;
   for (bool packets : {true, false}) {
     SCOPED_TRACE(packets ? "packets" : "one ray per work-item");
     Raycaster& rc = raycaster(packets);

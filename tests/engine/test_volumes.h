@@ -9,6 +9,11 @@ namespace voxray::test {
 // image is not symmetric.
 Volume ball(glm::ivec3 dims, double radius, double inside = 1000.0, double outside = -1000.0,
             glm::dvec3 spacing = glm::dvec3(1.0));
+// The stability cases' small ball: 16^3 voxels of 1 mm, radius 5.
+inline const Volume& ball16() {
+  static Volume v = ball({16, 16, 16}, 5.0);
+  return v;
+}
 // value = a + b * x (x in voxels): trilinear reconstruction of it is exact.
 Volume rampX(glm::ivec3 dims, double a, double b);
 Volume constant(glm::ivec3 dims, int16_t value);

@@ -33,11 +33,6 @@ namespace voxray {
 
 namespace {
 
-ClContext& context() {
-  static ClContext ctx(test::testDeviceSelector());  // PoCL, or the GPU certificate's
-  return ctx;
-}
-
 struct Diff {
   double meanAbs = 0.0;  // in 8-bit levels
   double fractionOver3 = 0.0;
@@ -84,14 +79,9 @@ Volume volumeWithSlope(double slope) {
 
 // The anisotropic ball of kernel_vs_reference_test.cpp (1000 HU in -1000, a smooth boundary
 // whose |gradient| reaches about 1000 HU/mm): gradients must be physical (per mm).
-const Volume& ballVolume() {
-  static Volume v = test::ball({40, 36, 24}, 13.0, 1000.0, -1000.0, {1.0, 1.1, 1.6});
-  return v;
-}
-
 // The boundary's middle (red, soft), the boundary's upper part as a triangle (blue), and the
 // flat inside faintly (white): every kind of primitive and overlap.
-RenderParams ballParams() {
+RenderParams tf2dBallParams() {
   RenderParams p;
   p.width = 64;
   p.height = 48;
@@ -107,10 +97,6 @@ RenderParams ballParams() {
                        rect(900.0, 1001.0, 0.0, 60.0, {1.0, 1.0, 1.0}, 0.04)};
   p.tf2d.gradientMax = 1500.0;
   return p;
-}
-
-std::string describe(const RenderParams& p, bool packets) {
-  return kernelVariantName(p) + (packets ? " packets" : " one ray per work-item");
 }
 
 }  // namespace
@@ -303,10 +289,10 @@ TEST(Tf2dFiles, RoundTripsExactly) {
 // its shading queue), central and Sobel gradients: kernel and reference agree, and the 2D
 // function changes the image (else both could ignore it and still agree).
 TEST(Tf2dKernels, AgreeWithTheReference) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   for (bool shading : {false, true})
     for (Gradient op : {Gradient::Central, Gradient::Sobel}) {
-      RenderParams p = ballParams();
+      RenderParams p = tf2dBallParams();
       p.shading = shading;
       p.gradient = op;
       Image ref = renderReference(v, p);
@@ -315,13 +301,14 @@ TEST(Tf2dKernels, AgreeWithTheReference) {
       Diff changed = compare(ref, renderReference(v, off));
       EXPECT_GT(changed.meanAbs, 5.0) << "the 2D function must show";
       for (bool packets : {true, false}) {
-        Raycaster rc(context(), v, VolumeStorage::Buffer);
+        Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
         RaycasterOptions o = rc.options();
         o.packets = packets;
         rc.setOptions(o);
         Image gpu = rc.render(p);
         Diff d = compare(gpu, ref);
-        std::string what = describe(p, packets) + " (max " + std::to_string(d.maxAbs) + ")";
+        std::string what =
+            test::variantDescription(p, packets) + " (max " + std::to_string(d.maxAbs) + ")";
         EXPECT_NE(rc.variantOptions(p).find("-D TF2D=1"), std::string::npos) << what;
         EXPECT_LE(d.meanAbs, 0.5) << what;
         EXPECT_LE(d.fractionOver3, 0.005) << what;
@@ -334,8 +321,8 @@ TEST(Tf2dKernels, AgreeWithTheReference) {
 // skipping stays exact: the frame with it is the frame without it (to a level of rounding), so
 // no cell it leaps held a sample the 2D table shows at some gradient.
 TEST(Tf2dKernels, EveryWayOfComputingAgreesWithTheReference) {
-  const Volume& v = ballVolume();
-  RenderParams p = ballParams();
+  const Volume& v = test::anisotropicBall();
+  RenderParams p = tf2dBallParams();
   Image ref = renderReference(v, p);
   struct Way {
     const char* name;
@@ -354,8 +341,8 @@ TEST(Tf2dKernels, EveryWayOfComputingAgreesWithTheReference) {
   ways[4].name = "image3d_t";
   ways[4].storage = VolumeStorage::Image3d;
   for (const Way& w : ways) {
-    if (w.storage == VolumeStorage::Image3d && !context().device().imageSupport) continue;
-    Raycaster rc(context(), v, w.storage);
+    if (w.storage == VolumeStorage::Image3d && !test::pocl().device().imageSupport) continue;
+    Raycaster rc(test::pocl(), v, w.storage);
     rc.setOptions(w.options);
     Diff d = compare(rc.render(p), ref);
     std::string what = std::string(w.name) + " (max " + std::to_string(d.maxAbs) + ")";
@@ -366,7 +353,7 @@ TEST(Tf2dKernels, EveryWayOfComputingAgreesWithTheReference) {
     EXPECT_LE(d.fractionOver3, 0.005) << what;
   }
   for (bool packets : {true, false}) {
-    Raycaster rc(context(), v, VolumeStorage::Buffer);
+    Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
     RaycasterOptions o = rc.options();
     o.packets = packets;
     rc.setOptions(o);
@@ -374,24 +361,26 @@ TEST(Tf2dKernels, EveryWayOfComputingAgreesWithTheReference) {
     o.emptySpaceSkipping = false;
     rc.setOptions(o);
     Diff d = compare(leaping, rc.render(p));
-    EXPECT_LE(d.maxAbs, 1) << describe(p, packets) << ": with and without empty-space skipping";
+    EXPECT_LE(d.maxAbs, 1) << test::variantDescription(p, packets)
+                           << ": with and without empty-space skipping";
   }
 }
 
 // Packets classify 2D samples from a queue (classify_queue.cl), except with hit output (the dvr
 // pick), labels or an overlay, which classify in place (dvr_tf2dN): the two agree.
 TEST(Tf2dKernels, ThePacketsQueueAndInPlaceAgree) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   for (bool shading : {false, true}) {
-    RenderParams p = ballParams();
+    RenderParams p = tf2dBallParams();
     p.shading = shading;
-    Raycaster rc(context(), v, VolumeStorage::Buffer);
+    Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
     Image queued = rc.render(p);
     std::vector<glm::vec4> hits;
     Image inPlace = rc.renderWithHits(p, hits);
     EXPECT_EQ(hits.size(), size_t(p.width * p.height));
     Diff d = compare(queued, inPlace);
-    EXPECT_LE(d.maxAbs, 1) << describe(p, true) << ": queued against in place (hit output)";
+    EXPECT_LE(d.maxAbs, 1) << test::variantDescription(p, true)
+                           << ": queued against in place (hit output)";
   }
 }
 
@@ -401,21 +390,21 @@ TEST(Tf2dKernels, ThePacketsQueueAndInPlaceAgree) {
 // largest over gradient: here the same), and the packets' queue shades with the gradient it
 // kept and the colour it looks up at (value, |gradient|).
 TEST(Tf2dKernels, TheSameTableChangesNothingInAnyLighting) {
-  const Volume& v = ballVolume();
+  const Volume& v = test::anisotropicBall();
   for (Lighting lighting : {Lighting::Phong, Lighting::Shadows, Lighting::Ao})
     for (bool packets : {true, false}) {
-      RenderParams off = ballParams();
+      RenderParams off = tf2dBallParams();
       off.tf2d = {};
       off.transferFunction = {{0.0, {0.8, 0.6, 0.4, 0.06}}};
       off.lighting = lighting;
       RenderParams on = off;
       on.tf2d.primitives = {rect(-1001.0, 1001.0, 0.0, 2000.0, {0.8, 0.6, 0.4}, 0.06)};
-      Raycaster rc(context(), v, VolumeStorage::Buffer);
+      Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
       RaycasterOptions o = rc.options();
       o.packets = packets;
       rc.setOptions(o);
       Image a = rc.render(off), b = rc.render(on), c = rc.render(off);
-      std::string what = describe(on, packets) + " " + toString(lighting);
+      std::string what = test::variantDescription(on, packets) + " " + toString(lighting);
       EXPECT_NE(rc.variantOptions(on), rc.variantOptions(off)) << what;
       Diff d = compare(a, b);
       EXPECT_LE(d.maxAbs, 1) << what;  // the same sums; fast maths may round one level apart
@@ -497,7 +486,7 @@ TEST(Tf2dImage, ShowsTheBoundaryAndNotTheSlabOfTheSameHu) {
     }
     return c;
   };
-  Raycaster rc(context(), v, VolumeStorage::Buffer);
+  Raycaster rc(test::pocl(), v, VolumeStorage::Buffer);
   for (bool packets : {true, false}) {
     RaycasterOptions o = rc.options();
     o.packets = packets;

@@ -71,7 +71,7 @@ std::vector<std::string> copyPhantom(const std::string& folder,
 
 // IMPORTED: the files handed over also go to an import (pacs get's way), from whose reading
 // of them the cache takes their identities.
-std::string retrieveFailure(
+std::string stagedRetrieveFailure(
     const std::function<std::vector<std::string>(const std::string&)>& write, bool handOver = false,
     bool imported = false) {
   PacsCache cache(tempFolder("cache"));
@@ -95,7 +95,7 @@ TEST(CacheStagingTest, ImagesOfTheSeriesAreKept) {
 }
 
 TEST(CacheStagingTest, AnImageOfAnotherSeriesIsNotKept) {
-  std::string m = retrieveFailure([](const std::string& f) {
+  std::string m = stagedRetrieveFailure([](const std::string& f) {
     return copyPhantom(f, {"S2010/I10", "S1000/I10"});
   });
   EXPECT_THAT(m,
@@ -104,7 +104,7 @@ TEST(CacheStagingTest, AnImageOfAnotherSeriesIsNotKept) {
 }
 
 TEST(CacheStagingTest, MoreFilesThanReportedAreNotKept) {
-  std::string m = retrieveFailure([](const std::string& f) {
+  std::string m = stagedRetrieveFailure([](const std::string& f) {
     auto files = copyPhantom(f, {"S2010/I10", "S2010/I100"});
     files.pop_back();
     return files;
@@ -113,14 +113,14 @@ TEST(CacheStagingTest, MoreFilesThanReportedAreNotKept) {
 }
 
 TEST(CacheStagingTest, TheSameInstanceTwiceIsNotKept) {
-  std::string m = retrieveFailure([](const std::string& f) {
+  std::string m = stagedRetrieveFailure([](const std::string& f) {
     return copyPhantom(f, {"S2010/I10", "S2010/I10"});
   });
   EXPECT_THAT(m, HasSubstr("came twice"));
 }
 
 TEST(CacheStagingTest, AFileThatIsNotDicomIsNotKept) {
-  std::string m = retrieveFailure([](const std::string& f) {
+  std::string m = stagedRetrieveFailure([](const std::string& f) {
     std::ofstream(f + "/0.dcm") << "<html>login</html>";
     return std::vector<std::string>{f + "/0.dcm"};
   });
@@ -134,20 +134,20 @@ TEST(CacheStagingTest, HandedOverFilesGiveTheSameVerdicts) {
     const bool handOver = way > 0, imported = way == 2;
     SCOPED_TRACE(imported ? "handed over to an import" : handOver ? "handed over" : "from disk");
     EXPECT_THAT(
-        retrieveFailure(
+        stagedRetrieveFailure(
             [](const std::string& f) {
               return copyPhantom(f, {"S2010/I10", "S1000/I10"});
             },
             handOver, imported),
         testing::AllOf(HasSubstr("1.dcm, which is not an image of it (it belongs to series"),
                        HasSubstr("nothing was kept")));
-    EXPECT_THAT(retrieveFailure(
+    EXPECT_THAT(stagedRetrieveFailure(
                     [](const std::string& f) {
                       return copyPhantom(f, {"S2010/I10", "S2010/I10"});
                     },
                     handOver, imported),
                 HasSubstr("1.dcm, which is not an image of it (its SOP Instance UID came twice)"));
-    EXPECT_THAT(retrieveFailure(
+    EXPECT_THAT(stagedRetrieveFailure(
                     [](const std::string& f) {
                       std::ofstream(f + "/0.dcm") << "<html>login</html>";
                       return std::vector<std::string>{f + "/0.dcm"};

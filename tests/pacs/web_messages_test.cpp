@@ -22,8 +22,8 @@ using testing::HasSubstr;
 using testing::Not;
 using WebMessagesTest = PacsTest;
 
-std::string retrieveFailure(const PacsNode& node, const std::string& study,
-                            const std::string& series) {
+std::string webRetrieveFailure(const PacsNode& node, const std::string& study,
+                               const std::string& series) {
   return failure([&] {
     PacsCache cache(tempFolder("cache"));
     auto client = makePacsClient(node);
@@ -33,14 +33,14 @@ std::string retrieveFailure(const PacsNode& node, const std::string& study,
 
 TEST_F(WebMessagesTest, UnknownSeriesSaysTheNodeHasNoSuchSeries) {
   const PacsNode node = server().webNode();
-  std::string m = retrieveFailure(node, kPhantomStudy, "1.2.3.999");
+  std::string m = webRetrieveFailure(node, kPhantomStudy, "1.2.3.999");
   EXPECT_THAT(m, AllOf(HasSubstr(node.label()), HasSubstr("has no series 1.2.3.999"),
                        Not(HasSubstr("base URL"))));
 }
 
 TEST_F(WebMessagesTest, UnknownStudySaysTheNodeHasNoSuchStudy) {
   const PacsNode node = server().webNode();
-  std::string m = retrieveFailure(node, "1.2.3.998", "1.2.3.999");
+  std::string m = webRetrieveFailure(node, "1.2.3.998", "1.2.3.999");
   EXPECT_THAT(m, AllOf(HasSubstr("has no study 1.2.3.998"), Not(HasSubstr("base URL"))));
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <numbers>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -87,8 +88,6 @@ std::pair<glm::dvec3, glm::dvec3> voxelBounds(const Segmentation& s, uint8_t lab
   return {lo, hi};
 }
 
-constexpr double kPi = 3.14159265358979323846;
-
 TEST_F(MeshFile, StlReadByTrimeshHasTheSegmentsBoundsAndIsWatertight) {
   const Segmentation s = sphereSegmentation(40.0, 0.7);
   writeMeshFile(file("ball.stl"), s, {1});
@@ -101,7 +100,7 @@ TEST_F(MeshFile, StlReadByTrimeshHasTheSegmentsBoundsAndIsWatertight) {
     EXPECT_NEAR(r["bounds"][1][a].get<double>(), hi[a], 0.7) << "axis " << a;
   }
   EXPECT_TRUE(r["watertight"].get<bool>());
-  const double volume = 4.0 / 3.0 * kPi * 40.0 * 40.0 * 40.0;
+  const double volume = 4.0 / 3.0 * std::numbers::pi * 40.0 * 40.0 * 40.0;
   EXPECT_NEAR(r["volume"].get<double>(), volume, 0.01 * volume);  // positive: faces point out
   EXPECT_EQ(r["header"].get<std::string>(), "Voxray mesh, LPS mm: Ball");
 }

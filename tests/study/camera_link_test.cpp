@@ -18,7 +18,7 @@ using test::rotation;
 
 // Today's CT (96 x 96 x 48 of 0.9 x 0.9 x 2 mm) and a prior on a grid of its own (turned,
 // 1 mm, elsewhere), as in comparison_test.
-VolumeGeometry fixedGeometry() {
+VolumeGeometry offsetFixedGeometry() {
   VolumeGeometry g;
   g.dims = {96, 96, 48};
   g.spacingMm = {0.9, 0.9, 2.0};
@@ -26,7 +26,7 @@ VolumeGeometry fixedGeometry() {
   g.frameOfReferenceUid = "1.2.today";
   return g;
 }
-VolumeGeometry movingGeometry() {
+VolumeGeometry unevenMovingGeometry() {
   VolumeGeometry g;
   g.dims = {90, 80, 70};
   g.spacingMm = glm::dvec3(1.0);
@@ -34,10 +34,6 @@ VolumeGeometry movingGeometry() {
   g.originMm = glm::dvec3(-6.0, 4.0, 3.0) - g.direction * (0.5 * glm::dvec3(g.dims - 1));
   g.frameOfReferenceUid = "1.2.prior";
   return g;
-}
-
-glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
-  return glm::dvec3(m * glm::dvec4(p, 1.0));
 }
 
 // Rounding of a few matrix products on coordinates of ~100 mm: ~1e-13; 1e-9 leaves room.
@@ -60,7 +56,7 @@ void expectSameRays(const CameraParams& a, const VolumeGeometry& g, const Camera
     glm::dvec3 oa, da, ob, db;
     va.engine.ray(px.x, px.y, 512, 384, oa, da);
     vb.engine.ray(px.x, px.y, 512, 384, ob, db);
-    const glm::dvec3 mappedOrigin = apply(fromToTo, ca + oa), mappedDir = r * da;
+    const glm::dvec3 mappedOrigin = test::applyRigid(fromToTo, ca + oa), mappedDir = r * da;
     expectNear(db, mappedDir, kTol, "ray direction");
     // The origin lies on the mapped ray (orthographic eyes may sit elsewhere along it).
     const glm::dvec3 off = (cb + ob) - mappedOrigin;
@@ -70,7 +66,7 @@ void expectSameRays(const CameraParams& a, const VolumeGeometry& g, const Camera
 
 TEST(CameraLink, TurningColumnA30DegreesAboutZTurnsBThroughTheTransform) {
   ComparisonModel m;
-  m.setGeometries(fixedGeometry(), movingGeometry());
+  m.setGeometries(offsetFixedGeometry(), unevenMovingGeometry());
   const glm::dmat4 movingToFixed = rigid(rotation({1.0, -0.4, 0.7}, 12.5), {-5.5, 3.25, 2.0});
   m.setMovingToFixed(movingToFixed);
   RenderStateModel fixed, moving;
@@ -98,7 +94,7 @@ TEST(CameraLink, TurningColumnA30DegreesAboutZTurnsBThroughTheTransform) {
   const PatientView a = patientView(fixed.params().camera, m.fixed());
   const PatientView b = patientView(moving.params().camera, m.moving());
   expectNear(b.forward, glm::dmat3(fixedToMoving) * a.forward, kTol, "view direction");
-  expectNear(b.eyeMm, apply(fixedToMoving, a.eyeMm), kTol, "eye");
+  expectNear(b.eyeMm, test::applyRigid(fixedToMoving, a.eyeMm), kTol, "eye");
   EXPECT_EQ(moving.params().camera.zoom, 1.3);  // perspective: the same angle of view
   // The same rays pixel by pixel, where the horizon maps onto the horizon (the transform's
   // rotation here tilts it: compare directions only then); a rotation about z keeps it.
@@ -109,7 +105,7 @@ TEST(CameraLink, TurningColumnA30DegreesAboutZTurnsBThroughTheTransform) {
 }
 
 TEST(CameraLink, TranslationOnlyMovesTheEyeAndCentralRayByExactlyIt) {
-  const VolumeGeometry f = fixedGeometry(), g = movingGeometry();
+  const VolumeGeometry f = offsetFixedGeometry(), g = unevenMovingGeometry();
   const glm::dvec3 t(14.0, -9.5, 22.25);
   const glm::dmat4 fixedToMoving = rigid(glm::dmat3(1.0), -t);  // movingToFixed moves by +t
   CameraParams a;
@@ -136,7 +132,7 @@ TEST(CameraLink, TranslationOnlyMovesTheEyeAndCentralRayByExactlyIt) {
 }
 
 TEST(CameraLink, OrthographicKeepsTheMillimetresAcross) {
-  const VolumeGeometry f = fixedGeometry(), g = movingGeometry();
+  const VolumeGeometry f = offsetFixedGeometry(), g = unevenMovingGeometry();
   const glm::dmat4 fixedToMoving = rigid(rotation({0, 0, 1}, 25.0), {3.0, 1.0, -2.0});
   CameraParams a;
   a.projection = Projection::Orthographic;
@@ -151,7 +147,7 @@ TEST(CameraLink, OrthographicKeepsTheMillimetresAcross) {
 
 TEST(CameraLink, EitherColumnLeadsWithoutEchoAndTheLookFollowsUntilUnlinked) {
   ComparisonModel m;
-  m.setGeometries(fixedGeometry(), movingGeometry());
+  m.setGeometries(offsetFixedGeometry(), unevenMovingGeometry());
   RenderStateModel fixed, moving;
   RenderLink link(m, fixed, moving);
   // No Frame of Reference in common, not aligned: the cameras are each column's own.

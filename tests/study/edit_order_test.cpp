@@ -3,16 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "edit_order.h"
+#include "label_count.h"
 #include "voxray/io/phantom.h"
 
 namespace voxray {
 namespace {
 
-size_t countLabel(const Segmentation& s, uint8_t label) {
-  size_t n = 0;
-  for (uint8_t l : s.labels) n += l == label;
-  return n;
-}
+using test::countLabel;
 
 void turn(AppModels& m, double azimuth) {
   m.render.update(kCamera, [&](RenderParams& p) { p.camera.azimuthDeg = azimuth; });

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hanging_protocol.h"
+#include "hanging_rule_json.h"
 #include "layout_model.h"
 #include "session.h"
 #include "voxray/io/error.h"
@@ -19,15 +20,12 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-const std::vector<StudySeries> kStudy = {{"1", "Scout", "1.2.3.1"},
-                                         {"2", "AX T1", "1.2.3.2"},
-                                         {"3", "AX T2 FLAIR", "1.2.3.3"},
-                                         {"4", "COR T2", "1.2.3.4"}};
+const std::vector<StudySeries> kPlacementStudy = {{"1", "Scout", "1.2.3.1"},
+                                                  {"2", "AX T1", "1.2.3.2"},
+                                                  {"3", "AX T2 FLAIR", "1.2.3.3"},
+                                                  {"4", "COR T2", "1.2.3.4"}};
 
-HangingRule ruleFromJson(const std::string& rule) {
-  return parseHangingProtocols(R"({"voxray-hanging-protocols": 1, "rules": [)" + rule + "]}")
-      .rules.at(0);
-}
+using test::ruleFromJson;
 
 const PlacedView& at(const std::vector<PlacedView>& placed, GridView v) {
   return *std::find_if(placed.begin(), placed.end(),
@@ -38,7 +36,7 @@ TEST(LayoutPlacement, TwoSeriesOfARuleShowSideBySideAndAThirdLeavesItsCellEmpty)
   // The classic T1 | T2 hanging: 1x2 puts the axial view first, the 3D view beside it.
   const HangingRule r =
       ruleFromJson(R"({"name": "T1|T2", "layout": "1x2", "series": {"axial": "T2", "3d": 2}})");
-  const ReadingLayout l{ViewLayout::OneByTwo, placeSeries(r, kStudy)};
+  const ReadingLayout l{ViewLayout::OneByTwo, placeSeries(r, kPlacementStudy)};
   EXPECT_EQ(at(l.placed, GridView::Axial).uid, "1.2.3.3");  // the UID comes with the series
   EXPECT_EQ(at(l.placed, GridView::Volume3d).uid, "1.2.3.2");
   const auto shown = shownSeries(l.layout, l.placed);
@@ -60,7 +58,7 @@ TEST(LayoutPlacement, TwoSeriesOfARuleShowSideBySideAndAThirdLeavesItsCellEmpty)
   const HangingRule three = ruleFromJson(
       R"({"name": "three", "layout": "2x2",
           "series": {"axial": "T1", "coronal": "COR", "sagittal": "FLAIR"}})");
-  const auto placed3 = placeSeries(three, kStudy);
+  const auto placed3 = placeSeries(three, kPlacementStudy);
   const auto beside3 = besideSeries(ViewLayout::TwoByTwo, placed3, "2");
   ASSERT_TRUE(beside3);
   EXPECT_EQ(beside3->series, "4");  // coronal comes before sagittal
@@ -78,19 +76,19 @@ TEST(LayoutPlacement, TwoSeriesOfARuleShowSideBySideAndAThirdLeavesItsCellEmpty)
 
 TEST(LayoutPlacement, ShowSeriesInThisViewPlacesItAndAMissingSeriesLeavesItsCellEmpty) {
   ReadingLayout l{ViewLayout::OneByTwo, {}};
-  l = placeInView(l, GridView::Axial, kStudy[1]);
-  l = placeInView(l, GridView::Volume3d, kStudy[3]);
+  l = placeInView(l, GridView::Axial, kPlacementStudy[1]);
+  l = placeInView(l, GridView::Volume3d, kPlacementStudy[3]);
   ASSERT_EQ(l.placed.size(), size_t(2));
   EXPECT_EQ(at(l.placed, GridView::Volume3d),
             (PlacedView{GridView::Volume3d, "4", "COR T2", "", "1.2.3.4"}));
   // Placed again: the cell's series is replaced, not added.
-  l = placeInView(l, GridView::Volume3d, kStudy[2]);
+  l = placeInView(l, GridView::Volume3d, kPlacementStudy[2]);
   ASSERT_EQ(l.placed.size(), size_t(2));
   EXPECT_EQ(seriesInCells(l), (std::vector<std::string>{"2", "3"}));
   // A rule naming a series the study lacks: its cell is empty, with a note; the rest hang.
   const HangingRule r =
       ruleFromJson(R"({"name": "mr", "layout": "1x2", "series": {"axial": "T1", "3d": "DWI"}})");
-  const ReadingLayout missing{ViewLayout::OneByTwo, placeSeries(r, kStudy)};
+  const ReadingLayout missing{ViewLayout::OneByTwo, placeSeries(r, kPlacementStudy)};
   EXPECT_FALSE(besideSeries(missing.layout, missing.placed, "2"));
   const auto cells = visibleCells(missing);
   ASSERT_EQ(cells.size(), size_t(1));
@@ -135,9 +133,9 @@ TEST(LayoutPlacement, ASessionsPlacementIsCheckedAgainstTheSeriesStillThere) {
                             {PlacedView{GridView::Axial, "3", "AX T2 FLAIR", "", "1.2.3.3"},
                              PlacedView{GridView::Coronal, "4", "COR T2", "", "1.2.3.4"}}};
   // Everything still there: unchanged.
-  EXPECT_EQ(checkPlacement(saved, kStudy), saved);
+  EXPECT_EQ(checkPlacement(saved, kPlacementStudy), saved);
   // COR T2 removed from the study: its view is left empty and says which series went.
-  std::vector<StudySeries> less(kStudy.begin(), kStudy.end() - 1);
+  std::vector<StudySeries> less(kPlacementStudy.begin(), kPlacementStudy.end() - 1);
   const ReadingLayout checked = checkPlacement(saved, less);
   EXPECT_EQ(checked.placed.at(0), saved.placed.at(0));
   EXPECT_EQ(checked.placed.at(1).series, "");
@@ -145,7 +143,7 @@ TEST(LayoutPlacement, ASessionsPlacementIsCheckedAgainstTheSeriesStillThere) {
             (std::vector<std::string>{
                 "coronal: its series 'COR T2' is no longer in the study; the view is left empty"}));
   // By UID, not by place: series 3 renumbered (its selector now "5") is still found...
-  std::vector<StudySeries> renumbered = kStudy;
+  std::vector<StudySeries> renumbered = kPlacementStudy;
   renumbered[2].selector = "5";
   EXPECT_EQ(checkPlacement(saved, renumbered).placed.at(0).series, "3");
   // ... while another series that took number 4 is not COR T2.

@@ -8,6 +8,8 @@
 
 #include "prior_move.h"
 
+#include "rigid_motion.h"
+
 namespace voxray {
 namespace {
 
@@ -28,10 +30,6 @@ ScreenPlane axialPlane() {
   p.pivotPx = {200.0, 150.0};
   p.pivotMm = {10.0, -20.0, 35.0};
   return p;
-}
-
-glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
-  return glm::dvec3(m * glm::dvec4(p, 1.0));
 }
 
 // The angle (degrees) of the rotation part of M, from its trace.
@@ -72,13 +70,14 @@ TEST(PriorMove, ShiftDragTurnsByTheAngleThePointerSweptAboutTheCrosshair) {
   // About the crosshair: it stays put, and about the view's normal (+z here): a point to the
   // crosshair's screen right turns clockwise on screen, towards screen down (+y).
   const glm::dvec3 p = plane.pivotMm, q = plane.pivotMm + glm::dvec3(10.0, 0.0, 0.0);
-  EXPECT_NEAR(glm::length(apply(change, p) - p), 0.0, 1e-9);
+  EXPECT_NEAR(glm::length(test::applyRigid(change, p) - p), 0.0, 1e-9);
   const double a = glm::radians(expected);
-  EXPECT_NEAR(glm::length(apply(change, q) - (p + 10.0 * glm::dvec3(std::cos(a), std::sin(a), 0))),
+  EXPECT_NEAR(glm::length(test::applyRigid(change, q) -
+                          (p + 10.0 * glm::dvec3(std::cos(a), std::sin(a), 0))),
               0.0, 1e-9);
   // In the prior's column the crosshair's point in the prior stays on today's crosshair.
   const glm::dmat4 own = turnedPrior(before, ComparisonModel::Side::Moving, plane, from, to);
-  EXPECT_NEAR(glm::length(apply(own, p) - apply(before, p)), 0.0, 1e-9);
+  EXPECT_NEAR(glm::length(test::applyRigid(own, p) - test::applyRigid(before, p)), 0.0, 1e-9);
   EXPECT_NEAR(rotationDegrees(own * glm::inverse(before)), expected, 1e-9);
 }
 
@@ -106,7 +105,7 @@ TEST(PriorMove, LinkedCrosshairMapsTheSamePointAfterADrag) {
                                 {124, 92}));  // 12 mm left, 4 mm anterior
   ASSERT_TRUE(m.linked());
   const glm::dvec3 wanted =
-      g.voxelOf(apply(glm::inverse(m.movingToFixed()), f.patientOf(fixed.centre())));
+      g.voxelOf(test::applyRigid(glm::inverse(m.movingToFixed()), f.patientOf(fixed.centre())));
   const glm::dvec3 e = glm::abs(moving.centre() - wanted);
   EXPECT_LE(std::max({e.x, e.y, e.z}), 0.5 + 1e-9);  // the prior rounds to its voxel centres
   // The moved prior's point under its crosshair: today's point less the 12 and -4 mm.

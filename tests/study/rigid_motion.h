@@ -16,4 +16,9 @@ inline glm::dmat4 rigid(const glm::dmat3& r, const glm::dvec3& t) {
   return m;
 }
 
+// The point P moved by the 4 x 4 M.
+inline glm::dvec3 applyRigid(const glm::dmat4& m, const glm::dvec3& p) {
+  return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
+
 }  // namespace voxray::test

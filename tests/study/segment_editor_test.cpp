@@ -3,6 +3,7 @@
 // tools' recipes (the CLI's), the operations' buttons and the 3D mask choices.
 #include <gtest/gtest.h>
 
+#include "label_count.h"
 #include "segment_overlay.h"
 #include "segment_scissors.h"
 #include "segment_tools.h"
@@ -20,11 +21,7 @@ const Volume& phantom64() {
   return v;
 }
 
-size_t countLabel(const Segmentation& s, uint8_t label) {
-  size_t n = 0;
-  for (uint8_t l : s.labels) n += l == label;
-  return n;
-}
+using test::countLabel;
 
 // Voxel centres of slice k (axis 2) within R mm of the point C (voxel units): the disc's
 // rasterisation, counted independently of segment_edit.

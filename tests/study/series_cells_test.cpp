@@ -15,10 +15,10 @@
 namespace voxray {
 namespace {
 
-const std::vector<StudySeries> kStudy = {{"1", "AX T1", "1.2.3.1"},
-                                         {"2", "AX T2", "1.2.3.2"},
-                                         {"3", "AX FLAIR", "1.2.3.3"},
-                                         {"4", "AX DWI", "1.2.3.4"}};
+const std::vector<StudySeries> kCellsStudy = {{"1", "AX T1", "1.2.3.1"},
+                                              {"2", "AX T2", "1.2.3.2"},
+                                              {"3", "AX FLAIR", "1.2.3.3"},
+                                              {"4", "AX DWI", "1.2.3.4"}};
 
 ReadingLayout fourSeries() {
   const HangingRule r =
@@ -26,7 +26,7 @@ ReadingLayout fourSeries() {
         "layout": "2x2", "series": {"axial": "T1", "coronal": "T2", "sagittal": "FLAIR",
         "3d": "DWI"}}]})")
           .rules.at(0);
-  return ReadingLayout{ViewLayout::TwoByTwo, placeSeries(r, kStudy)};
+  return ReadingLayout{ViewLayout::TwoByTwo, placeSeries(r, kCellsStudy)};
 }
 
 // A CT of 16 x 16 x SLICES voxels of 0.5 x 0.5 x SLICEMM mm, its first slice at z = Z0 mm,

@@ -16,7 +16,7 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-std::string readError(const std::string& text) {
+std::string readTextError(const std::string& text) {
   try {
     sessionFromJson(text, "s.json");
   } catch (const Error& e) {
@@ -48,7 +48,7 @@ bool validUtf8(const std::string& s) {
 TEST(SessionHostile, AnObjectOfAbsurdlyManyFieldsIsRefusedQuickly) {
   const std::string text = withUnknownRenderFields(300000);
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_EQ(readError(text),
+  EXPECT_EQ(readTextError(text),
             "session s.json: an object holds more than 1000 fields; not a Voxray session (or a "
             "damaged one)");
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
@@ -64,7 +64,7 @@ TEST(SessionHostile, AbsurdlyManyFieldsInAllAreRefused) {
     many += "}";
   }
   text.replace(text.find("\"measurements\": []"), 18, "\"measurements\": [" + many + "]");
-  EXPECT_EQ(readError(text),
+  EXPECT_EQ(readTextError(text),
             "session s.json: it holds more than 100000 fields in all; not a Voxray session (or a "
             "damaged one)");
 }
@@ -79,14 +79,14 @@ TEST(SessionHostile, ManyUnknownFieldsAreListedBriefly) {
 
 TEST(SessionHostile, ErrorsShowNoRawBytes) {
   // Invalid UTF-8 in a string: the JSON library's message quotes the bytes it read.
-  const std::string bad = readError("{\"voxray-session\": 1, \"layout\": \"\xff\xfe\"}");
+  const std::string bad = readTextError("{\"voxray-session\": 1, \"layout\": \"\xff\xfe\"}");
   EXPECT_NE(bad.find("s.json: not a JSON file"), std::string::npos) << bad;
   EXPECT_TRUE(validUtf8(bad)) << bad;
   EXPECT_NE(bad.find("\xEF\xBF\xBD"), std::string::npos) << bad;  // U+FFFD in their place
   // A terminal escape in a value shows as \u001b, not as the control character.
   Json j = Json::parse(sessionToJson(Session{}, "s.json"));
   j["render"]["azimuth"] = "left\x1b[31m";
-  const std::string escape = readError(j.dump());
+  const std::string escape = readTextError(j.dump());
   EXPECT_NE(escape.find("field 'render.azimuth' is wrong: --azimuth: 'left\\u001b[31m' is not a "
                         "number"),
             std::string::npos)

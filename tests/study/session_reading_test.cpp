@@ -14,6 +14,7 @@
 #include "../io/test_support.h"
 #include "app_models.h"
 #include "hanging_protocol.h"
+#include "hanging_rule_json.h"
 #include "layout_model.h"
 #include "results_export.h"
 #include "session.h"
@@ -28,13 +29,10 @@ namespace {
 using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
-const std::vector<StudySeries> kStudy = {
+const std::vector<StudySeries> kReadingStudy = {
     {"1", "Scout", ""}, {"2", "AX T1", ""}, {"3", "AX T2 FLAIR", ""}, {"4", "COR T2", ""}};
 
-HangingRule ruleFromJson(const std::string& rule) {
-  return parseHangingProtocols(R"({"voxray-hanging-protocols": 1, "rules": [)" + rule + "]}")
-      .rules.at(0);
-}
+using test::ruleFromJson;
 
 TEST(ReadingLayout, ARulePlacesSeriesByDescriptionOrPlaceAndAMissingOneLeavesItsViewEmpty) {
   const HangingRule r = ruleFromJson(
@@ -42,7 +40,7 @@ TEST(ReadingLayout, ARulePlacesSeriesByDescriptionOrPlaceAndAMissingOneLeavesIts
           "series": {"axial": "/t2\\s+flair/", "coronal": "cor", "3d": 2, "sagittal": "STIR"}})");
   ASSERT_EQ(r.series.size(), size_t(4));
   EXPECT_EQ(r.series.at(GridView::Volume3d).index, 2);
-  const std::vector<PlacedView> placed = placeSeries(r, kStudy);
+  const std::vector<PlacedView> placed = placeSeries(r, kReadingStudy);
   ASSERT_EQ(placed.size(), size_t(4));
   auto at = [&](GridView v) {
     return *std::find_if(placed.begin(), placed.end(),
@@ -71,7 +69,8 @@ TEST(ReadingLayout, ARulePlacesSeriesByDescriptionOrPlaceAndAMissingOneLeavesIts
   EXPECT_EQ(notes[1].rfind("sagittal: no series of this study matches 'STIR'", 0), 0u);
   EXPECT_EQ(notes[2].rfind("3d: its series 'AX T1'", 0), 0u) << notes[2];
   // A place beyond the study's series is said with the count.
-  const auto beyond = placeSeries(ruleFromJson(R"({"name": "x", "series": {"axial": 7}})"), kStudy);
+  const auto beyond =
+      placeSeries(ruleFromJson(R"({"name": "x", "series": {"axial": 7}})"), kReadingStudy);
   EXPECT_EQ(beyond.at(0).note,
             "series 7 of the rule 'x' is not in this study (it has 4 volume series); the view is "
             "left empty");

@@ -117,7 +117,7 @@ Json jsonOf(const Session& s, const std::string& sessionPath) {
 }
 
 // The message of the Error that reading J throws ("" when it reads).
-std::string readError(const Json& j) {
+std::string readJsonError(const Json& j) {
   try {
     sessionFromJson(j.dump(), "s.json");
   } catch (const Error& e) {
@@ -255,11 +255,11 @@ TEST(Session, UnknownFieldsAreListedAndIgnored) {
 
 TEST(Session, MissingOrWrongFieldsAreErrorsNamingTheField) {
   const Json good = jsonOf(Session{}, "s.json");
-  EXPECT_EQ(readError(good), "");
+  EXPECT_EQ(readJsonError(good), "");
   auto without = [&](const std::string& section, const std::string& key) {
     Json j = good;
     (key.empty() ? j : j[section]).erase(key.empty() ? section : key);
-    return readError(j);
+    return readJsonError(j);
   };
   EXPECT_NE(without("render", "").find("s.json: the required field 'render' is missing"),
             std::string::npos);
@@ -272,7 +272,7 @@ TEST(Session, MissingOrWrongFieldsAreErrorsNamingTheField) {
   auto with = [&](const std::string& section, const std::string& key, const Json& value) {
     Json j = good;
     (key.empty() ? j[section] : j[section][key]) = value;
-    return readError(j);
+    return readJsonError(j);
   };
   EXPECT_NE(with("slices", "crosshair", "1,2,3")
                 .find("field 'slices.crosshair' must be an array "
@@ -298,7 +298,7 @@ TEST(Session, MissingOrWrongFieldsAreErrorsNamingTheField) {
   EXPECT_EQ(read.render.camera.azimuthDeg, 30.0);
   EXPECT_TRUE(read.render.jitter);
 
-  EXPECT_NE(readError(Json::parse("[1, 2]")).find("not a Voxray session"), std::string::npos);
+  EXPECT_NE(readJsonError(Json::parse("[1, 2]")).find("not a Voxray session"), std::string::npos);
   // Measurements nested 100,000 deep (hostile input) are refused, not written back recursively.
   std::string deep = good.dump();
   deep.replace(deep.find("\"measurements\":[]"), 17,
@@ -321,12 +321,12 @@ TEST(Session, MissingOrWrongFieldsAreErrorsNamingTheField) {
 TEST(Session, ANewerVersionSaysSo) {
   Json j = jsonOf(Session{}, "s.json");
   j["voxray-session"] = kSessionVersion + 1;
-  EXPECT_NE(readError(j).find("written by a newer Voxray (session version " +
-                              std::to_string(kSessionVersion + 1) + "; this one reads up to " +
-                              std::to_string(kSessionVersion) + ")"),
+  EXPECT_NE(readJsonError(j).find("written by a newer Voxray (session version " +
+                                  std::to_string(kSessionVersion + 1) + "; this one reads up to " +
+                                  std::to_string(kSessionVersion) + ")"),
             std::string::npos);
   j["voxray-session"] = "one";
-  EXPECT_NE(readError(j).find("'voxray-session' must be a whole number"), std::string::npos);
+  EXPECT_NE(readJsonError(j).find("'voxray-session' must be a whole number"), std::string::npos);
 }
 
 TEST(Session, AnExistingFileIsReplacedOnlyWhenAllowed) {
@@ -384,7 +384,7 @@ TEST(Session, TurnedAndSlabViewsRoundTripAndAbsentMeansAcquisitionPlanesThin) {
   auto withView = [&](const Json& view) {
     Json bad = plain;
     bad["slices"]["views"]["axial"] = view;
-    return readError(bad);
+    return readJsonError(bad);
   };
   EXPECT_NE(withView({{"rotation", {{1, 0, 0}, {0, 1, 0}, {0, 0.5, 1}}}})
                 .find("field 'slices.views.axial.rotation' is not a rotation"),
@@ -453,9 +453,9 @@ TEST(Session, OverlaysRoundTripAndAnOlderSessionKeepsTheDefaults) {
             (ViewOverlays{true, true, true}));
 
   old["overlays"] = {{"planes", "yes"}};
-  EXPECT_EQ(readError(old), "session s.json: field 'overlays.planes' must be true or false");
+  EXPECT_EQ(readJsonError(old), "session s.json: field 'overlays.planes' must be true or false");
   old["overlays"] = true;
-  EXPECT_EQ(readError(old), "session s.json: field 'overlays' must be an object { ... }");
+  EXPECT_EQ(readJsonError(old), "session s.json: field 'overlays' must be an object { ... }");
 }
 
 TEST(Session, TheModelsOverlaysAreSavedAndRestored) {
@@ -506,7 +506,7 @@ TEST(Session, TheShapedTransferFunctionRoundTripsIntoTheEditor) {
   EXPECT_FALSE(sessionFromJson(j.dump(), "s.json").session.transferFunction.has_value());
   j = jsonOf(s, "s.json");
   j["transfer-function"]["opacity"][0][1] = 2.0;
-  EXPECT_EQ(readError(j),
+  EXPECT_EQ(readJsonError(j),
             "session s.json: field 'transfer-function' is wrong: opacity point 1 has 2; it must "
             "lie in 0 ... 1");
 }

@@ -18,7 +18,7 @@ namespace {
 // clamped neighbour halves it (8.33 HU/mm). Along i and k the values are constant (0 HU/mm),
 // whatever their spacing.
 constexpr double kRampG = 20.0 / 1.2;
-Volume ramp() {
+Volume rampVolume() {
   Volume v;
   v.dims = {16, 20, 12};
   v.spacingMm = {0.7, 0.6, 1.5};
@@ -51,7 +51,7 @@ Tf2dPrimitive rect(double hu0, double hu1, double g0, double g1) {
 }  // namespace
 
 TEST(Tf2dHistogram, ARampOfGHuPerMmLandsInTheGBin) {
-  const Volume v = ramp();
+  const Volume v = rampVolume();
   // 64 rows over 0 ... 64 HU/mm: one HU/mm a row, so 16.67 HU/mm is row 16, 8.33 row 8.
   Tf2dHistogram h = tf2dHistogram(v, 64.0);
   ASSERT_FALSE(h.empty());
@@ -78,14 +78,14 @@ TEST(Tf2dHistogram, ARampOfGHuPerMmLandsInTheGBin) {
 TEST(Tf2dHistogram, TheAutomaticAxisTopIsThePercentileRoundedUp) {
   // The sample (every 4th j: 0, 4, ... 16) is 80% inner voxels: the 99th percentile is
   // 16.67 HU/mm (to a fine bin of about 0.1 HU/mm), rounded up to a multiple of 8: 24.
-  Tf2dHistogram h = tf2dHistogram(ramp());
+  Tf2dHistogram h = tf2dHistogram(rampVolume());
   EXPECT_DOUBLE_EQ(h.gradientMax, 24.0);
   EXPECT_EQ(rowSum(h, int(kRampG / 24.0 * 64.0)), uint64_t(16 * 18 * 12));  // row 44
 }
 
 TEST(Tf2dHistogram, ACancelledCountIsEmpty) {
   std::atomic<bool> cancel{true};
-  EXPECT_TRUE(tf2dHistogram(ramp(), 64.0, &cancel).empty());
+  EXPECT_TRUE(tf2dHistogram(rampVolume(), 64.0, &cancel).empty());
 }
 
 TEST(Tf2dEdit, HitTestingFindsHandlesThenBodiesTopFirst) {

@@ -8,7 +8,7 @@
 namespace voxray {
 namespace {
 
-RenderParams ramp() {
+RenderParams rampParams() {
   RenderParams p;
   p.mode = Mode::Dvr;
   p.transferFunction = {{0.0, {1, 1, 1, 0.0}}, {200.0, {1, 1, 1, 0.2}}, {400.0, {1, 1, 1, 0.4}}};
@@ -19,21 +19,21 @@ RenderParams ramp() {
 
 TEST(TfDrag, UpMovesTheTableAlongHuAndSidewaysStretchesItAboutWhatShows) {
   // A tenth of the view up with 2000 HU per view height: +200 HU.
-  RenderParams up = dragTransferFunction(ramp(), {0.0, 0.1}, 2000.0, false);
+  RenderParams up = dragTransferFunction(rampParams(), {0.0, 0.1}, 2000.0, false);
   ASSERT_EQ(up.transferFunction.size(), 3u);
   EXPECT_DOUBLE_EQ(up.transferFunction[0].hu, 200.0);
   EXPECT_DOUBLE_EQ(up.transferFunction[2].hu, 600.0);
-  EXPECT_EQ(up.transferFunction[1].rgba, ramp().transferFunction[1].rgba);
+  EXPECT_EQ(up.transferFunction[1].rgba, rampParams().transferFunction[1].rgba);
   // Half the view right: twice as wide about the middle of the visible range (300 HU).
-  RenderParams wide = dragTransferFunction(ramp(), {0.5, 0.0}, 2000.0, false);
+  RenderParams wide = dragTransferFunction(rampParams(), {0.5, 0.0}, 2000.0, false);
   EXPECT_DOUBLE_EQ(wide.transferFunction[0].hu, -300.0);
   EXPECT_DOUBLE_EQ(wide.transferFunction[1].hu, 100.0);
   EXPECT_DOUBLE_EQ(wide.transferFunction[2].hu, 500.0);
   // With the opacity modifier a third of the view up doubles the opacity, clamped to 1.
-  RenderParams more = dragTransferFunction(ramp(), {0.3, 1.0 / 3.0}, 2000.0, true);
+  RenderParams more = dragTransferFunction(rampParams(), {0.3, 1.0 / 3.0}, 2000.0, true);
   EXPECT_DOUBLE_EQ(more.transferFunction[1].hu, 200.0);
   EXPECT_NEAR(more.transferFunction[2].rgba.a, 0.8, 1e-12);
-  RenderParams most = dragTransferFunction(ramp(), {0.0, 1.0}, 2000.0, true);
+  RenderParams most = dragTransferFunction(rampParams(), {0.0, 1.0}, 2000.0, true);
   EXPECT_DOUBLE_EQ(most.transferFunction[2].rgba.a, 1.0);
 }
 

@@ -34,9 +34,6 @@ json parsed(const CliRun& r) {
   return json::parse(r.output);
 }
 
-const std::string kPhilipsStudy = "1.3.46.670589.33.1.27492712521914879309.27169771283235650014";
-const std::string kTiltSeries = "1.2.826.0.1.3680043.9.4245.3115138630835728997848661150714813892";
-
 TEST(StudyDbCli, ImportFindSeriesVerifyAndOpenASeriesByUid) {
   const std::string db = tempFolder("db");
   const std::string scans = dicomPath("ct-philips-phantom") + " " + dicomPath("ct-ge-tilt") + " " +

@@ -26,9 +26,7 @@ namespace {
 // ct-ge-tilt: 1 study (HEAD, no study date), 1 CT series (2, HEAD) of 28 images; LICENSE.
 // ct-visible-human-pelvis: 1 study (Visible Human Female, 20050101, ID 000-000-001),
 //   1 CT series of 150 images.
-const std::string kPhilipsStudy = "1.3.46.670589.33.1.27492712521914879309.27169771283235650014";
 const std::string kPhilipsVolume = "1.3.46.670589.33.1.6002432791750815306.26862469513794233732";
-const std::string kTiltSeries = "1.2.826.0.1.3680043.9.4245.3115138630835728997848661150714813892";
 const std::string kPelvisSeries = "1.2.826.0.1.3680043.2.1125.1.75064541463040.2005072610384286453";
 
 std::vector<std::string> uids(const std::vector<StudyRow>& rows) {

@@ -8,6 +8,12 @@
 
 namespace voxray::test {
 
+// The shared data's Philips study and tilted series (../shared/data/dicom), by UID.
+inline const std::string kPhilipsStudy =
+    "1.3.46.670589.33.1.27492712521914879309.27169771283235650014";
+inline const std::string kTiltSeries =
+    "1.2.826.0.1.3680043.9.4245.3115138630835728997848661150714813892";
+
 inline std::string dicomPath(const std::string& rel) {
   return std::string(VOXRAY_DATA_DIR) + "/dicom/" + rel;
 }

@@ -15,20 +15,19 @@
 
 #include "gui_post.h"
 #include "pacs_node_dialog.h"
+#include "qt_text.h"
 
 namespace voxray::ui {
 namespace {
 
 // The query fields: object name (for field()), label, placeholder.
-const char* const kFields[][3] = {
+const char* const kQueryFields[][3] = {
     {"name", "Patient name", "e.g. DOE^J*"}, {"id", "Patient ID", ""},
     {"from", "Study date from", "YYYYMMDD"}, {"to", "Study date to", "YYYYMMDD"},
     {"modality", "Modality", "CT, MR, ..."}, {"accession", "Accession", ""}};
 
 enum Column { Date, Description, Modality, Series, Images, Patient, PatientId, Accession };
 constexpr int kUidRole = Qt::UserRole, kStudyUidRole = Qt::UserRole + 1;
-
-QString q(const std::string& s) { return QString::fromStdString(s); }
 
 }  // namespace
 
@@ -37,8 +36,8 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
   auto* form = new QFormLayout;
   node_ = new QComboBox;
   node_->setEditable(true);
-  for (const auto& n : PacsBrowser::configuredNodes()) node_->addItem(q(n));
-  node_->setToolTip("A node from " + q(pacsConfigPath()) +
+  for (const auto& n : PacsBrowser::configuredNodes()) node_->addItem(toQString(n));
+  node_->setToolTip("A node from " + toQString(pacsConfigPath()) +
                     ", or dicom://AE@host:port, or https://host/dicom-web");
   node_->lineEdit()->setPlaceholderText("dicom://CALLED_AE@host:port or https://host/dicom-web");
   form->addRow("Node", node_);
@@ -47,7 +46,7 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
   auto* hint = new QLabel(
       "No PACS node is configured. Type an address in Node: dicom://CALLED_AE@host:port "
       "(DIMSE) or https://host/dicom-web (DICOMweb). Or name nodes in " +
-      q(pacsConfigPath()) + " with Add a node…");
+      toQString(pacsConfigPath()) + " with Add a node…");
   hint->setObjectName("pacsNodeHint");
   hint->setWordWrap(true);
   hint->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -62,7 +61,7 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
   hintRow->setContentsMargins(0, 0, 0, 0);
   form->addRow(hint_);
   hint_->setVisible(node_->count() == 0);
-  for (const auto& f : kFields) {
+  for (const auto& f : kQueryFields) {
     auto* edit = new QLineEdit;
     edit->setObjectName(f[0]);
     edit->setPlaceholderText(f[2]);
@@ -138,8 +137,8 @@ PacsDialog::PacsDialog(QWidget* parent, const std::string& cacheFolder) : QDialo
     accept();
   };
   events.failed = [this](const std::string& message) {
-    setBusy(false, q(message));
-    emit failed(q(message));
+    setBusy(false, toQString(message));
+    emit failed(toQString(message));
   };
   events.cancelled = [this] {
     setBusy(
@@ -163,7 +162,7 @@ void PacsDialog::editNodes() {
   const QString typed = node_->currentText();
   QSignalBlocker block(node_);
   node_->clear();
-  for (const auto& n : PacsBrowser::configuredNodes()) node_->addItem(q(n));
+  for (const auto& n : PacsBrowser::configuredNodes()) node_->addItem(toQString(n));
   node_->setCurrentText(typed.isEmpty() && node_->count() > 0 ? node_->itemText(0) : typed);
   hint_->setVisible(node_->count() == 0);
 }
@@ -207,10 +206,10 @@ void PacsDialog::setBusy(bool busy, const QString& status) {
 void PacsDialog::showStudies(const std::vector<PacsMatch>& studies) {
   for (const auto& s : studies) {
     auto* item = new QTreeWidgetItem(
-        results_, {q(s.studyDate), q(s.studyDescription), q(s.modalities),
+        results_, {toQString(s.studyDate), toQString(s.studyDescription), toQString(s.modalities),
                    QString::number(s.numberOfSeries), QString::number(s.numberOfInstances),
-                   q(s.patientName), q(s.patientId), q(s.accessionNumber)});
-    item->setData(0, kUidRole, q(s.studyInstanceUid));
+                   toQString(s.patientName), toQString(s.patientId), toQString(s.accessionNumber)});
+    item->setData(0, kUidRole, toQString(s.studyInstanceUid));
     new QTreeWidgetItem(item, {"", "…"});  // makes it expandable; replaced by its series
   }
   status_->setText(QString("Searching… %1 studies so far").arg(results_->topLevelItemCount()));
@@ -219,14 +218,14 @@ void PacsDialog::showStudies(const std::vector<PacsMatch>& studies) {
 void PacsDialog::showSeries(const std::string& studyUid, const std::vector<PacsMatch>& series) {
   for (int i = 0; i < results_->topLevelItemCount(); ++i) {
     QTreeWidgetItem* study = results_->topLevelItem(i);
-    if (study->data(0, kUidRole).toString() != q(studyUid)) continue;
+    if (study->data(0, kUidRole).toString() != toQString(studyUid)) continue;
     qDeleteAll(study->takeChildren());
     for (const auto& s : series) {
       auto* item = new QTreeWidgetItem(
-          study, {"", QString("#%1 %2").arg(s.seriesNumber).arg(q(s.seriesDescription)),
-                  q(s.modalities), "", QString::number(s.numberOfInstances)});
-      item->setData(0, kUidRole, q(s.seriesInstanceUid));
-      item->setData(0, kStudyUidRole, q(studyUid));
+          study, {"", QString("#%1 %2").arg(s.seriesNumber).arg(toQString(s.seriesDescription)),
+                  toQString(s.modalities), "", QString::number(s.numberOfInstances)});
+      item->setData(0, kUidRole, toQString(s.seriesInstanceUid));
+      item->setData(0, kStudyUidRole, toQString(studyUid));
     }
   }
   setBusy(false, QString("%1 series").arg(series.size()));

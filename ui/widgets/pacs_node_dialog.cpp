@@ -13,19 +13,19 @@
 #include <QVBoxLayout>
 
 #include "gui_post.h"
+#include "qt_text.h"
 #include "voxray/io/error.h"
 
 namespace voxray::ui {
 namespace {
 
-QString q(const std::string& s) { return QString::fromStdString(s); }
 std::string s(const QLineEdit* e) { return e->text().toStdString(); }
 
 // The text fields in the form's order: PacsNodeForm name, placeholder, tooltip.
 struct FieldSpec {
   const char *name, *placeholder, *tip;
 };
-const FieldSpec kFields[] = {
+const FieldSpec kNodeFields[] = {
     {"name", "e.g. hospital", "The name the PACS dialogs and voxray-cli pacs list it by"},
     {"calledAe", "e.g. ORTHANC", "The PACS's AE title (1 to 16 characters)"},
     {"host", "pacs.example or 10.0.0.5", ""},
@@ -74,7 +74,7 @@ PacsNodeDialog::PacsNodeDialog(QWidget* parent, const std::string& configPath)
   auth_ = new QComboBox;
   auth_->setObjectName("auth");
   auth_->addItems({"None", "Basic (user and password)", "Bearer token"});
-  for (const auto& f : kFields) {
+  for (const auto& f : kNodeFields) {
     auto* edit = new QLineEdit;
     edit->setObjectName(f.name);
     edit->setPlaceholderText(f.placeholder);
@@ -82,7 +82,7 @@ PacsNodeDialog::PacsNodeDialog(QWidget* parent, const std::string& configPath)
     const std::string name = f.name;
     if (name == "password" || name == "bearerToken") edit->setEchoMode(QLineEdit::Password);
     fields_[name] = edit;
-    form_->addRow(q(pacsFieldLabel(name)), edit);
+    form_->addRow(toQString(pacsFieldLabel(name)), edit);
     if (name == "name") form_->addRow("Kind", kind_);
   }
   // The URL's authentication, right below it.
@@ -128,12 +128,12 @@ PacsNodeDialog::PacsNodeDialog(QWidget* parent, const std::string& configPath)
   PacsBrowserEvents events;
   events.echoed = [this](const std::string& label) {
     testButton_->setEnabled(true);
-    message_->setText(q(label) + " answers");
-    emit echoed(q(label));
+    message_->setText(toQString(label) + " answers");
+    emit echoed(toQString(label));
   };
   events.failed = [this](const std::string& m) {
     testButton_->setEnabled(true);
-    showProblem(q(m));
+    showProblem(toQString(m));
   };
   browser_ = std::make_unique<PacsBrowser>(events, std::string(), postTo(this));
   reload();
@@ -156,12 +156,12 @@ void PacsNodeDialog::reload() {
   } catch (const Error& e) {
     // A file that is not a node file is never overwritten: the user mends or moves it.
     file_.reset();
-    showProblem(q(e.what()));
+    showProblem(toQString(e.what()));
   }
   QSignalBlocker block(list_);
   list_->clear();
   if (file_)
-    for (const auto& n : file_->nodes()) list_->addItem(q(n.name));
+    for (const auto& n : file_->nodes()) list_->addItem(toQString(n.name));
 }
 
 void PacsNodeDialog::syncRows() {
@@ -196,22 +196,22 @@ PacsNodeForm PacsNodeDialog::form() const {
 }
 
 void PacsNodeDialog::showForm(const PacsNodeForm& f, const std::string& secretNote) {
-  field("name")->setText(q(f.name));
+  field("name")->setText(toQString(f.name));
   kind_->setCurrentIndex(f.web ? 1 : 0);
-  field("calledAe")->setText(q(f.calledAe));
-  field("host")->setText(q(f.host));
-  field("port")->setText(q(f.port));
-  field("callingAe")->setText(q(f.callingAe));
-  field("receivePort")->setText(q(f.receivePort));
-  field("baseUrl")->setText(q(f.baseUrl));
+  field("calledAe")->setText(toQString(f.calledAe));
+  field("host")->setText(toQString(f.host));
+  field("port")->setText(toQString(f.port));
+  field("callingAe")->setText(toQString(f.callingAe));
+  field("receivePort")->setText(toQString(f.receivePort));
+  field("baseUrl")->setText(toQString(f.baseUrl));
   auth_->setCurrentIndex(int(f.auth));
-  field("user")->setText(q(f.user));
-  field("caFile")->setText(q(f.caFile));
-  field("timeout")->setText(q(f.timeout));
+  field("user")->setText(toQString(f.user));
+  field("caFile")->setText(toQString(f.caFile));
+  field("timeout")->setText(toQString(f.timeout));
   // Stored secrets stay stored: the fields start empty and say one is there.
   for (const char* secret : {"password", "bearerToken"}) {
     field(secret)->clear();
-    field(secret)->setPlaceholderText(q(secretNote));
+    field(secret)->setPlaceholderText(toQString(secretNote));
   }
   message_->clear();
   syncRows();
@@ -253,7 +253,7 @@ bool PacsNodeDialog::save() {
       validatePacsNodeForm(f, others, editing_.empty() ? nullptr : file_->find(editing_));
   if (!errors.empty()) {
     QStringList lines;
-    for (const auto& e : errors) lines << q(e.message);
+    for (const auto& e : errors) lines << toQString(e.message);
     field(errors.front().field)->setFocus();
     showProblem(lines.join('\n'));
     return false;
@@ -261,28 +261,28 @@ bool PacsNodeDialog::save() {
   try {
     file_->put(f, editing_);
   } catch (const Error& e) {
-    showProblem(q(e.what()));
+    showProblem(toQString(e.what()));
     return false;
   }
-  const std::string name = q(f.name).trimmed().toStdString();
+  const std::string name = toQString(f.name).trimmed().toStdString();
   reload();
-  const auto found = list_->findItems(q(name), Qt::MatchExactly);
+  const auto found = list_->findItems(toQString(name), Qt::MatchExactly);
   if (!found.isEmpty()) list_->setCurrentItem(found.front());  // shows it as stored
-  message_->setText("Saved " + q(name) + " to " + q(configPath_));
-  emit saved(q(name));
+  message_->setText("Saved " + toQString(name) + " to " + toQString(configPath_));
+  emit saved(toQString(name));
   return true;
 }
 
 void PacsNodeDialog::deleteNode() {
   if (!file_ || editing_.empty()) return;
-  if (!confirm_("Delete the PACS node " + q(editing_) + "?")) return;
+  if (!confirm_("Delete the PACS node " + toQString(editing_) + "?")) return;
   try {
     file_->remove(editing_);
   } catch (const Error& e) {
-    showProblem(q(e.what()));
+    showProblem(toQString(e.what()));
     return;
   }
-  const QString gone = q(editing_);
+  const QString gone = toQString(editing_);
   reload();
   if (list_->count() > 0)
     list_->setCurrentRow(0);
@@ -296,11 +296,11 @@ void PacsNodeDialog::test() {
   try {
     node = nodeOf(form(), editing_.empty() || !file_ ? nullptr : file_->find(editing_));
   } catch (const Error& e) {
-    showProblem(q(e.what()));
+    showProblem(toQString(e.what()));
     return;
   }
   testButton_->setEnabled(false);
-  message_->setText("Testing " + q(node.label()) + "…");
+  message_->setText("Testing " + toQString(node.label()) + "…");
   browser_->echo(node);
 }
 

@@ -22,6 +22,7 @@
 
 #include "gui_post.h"
 #include "qt_image.h"
+#include "qt_text.h"
 #include "series_drag.h"
 #include "thumbnail.h"
 #ifdef VOXRAY_HAS_DICOM
@@ -44,17 +45,15 @@ enum Kind { PatientItem, StudyItem, SeriesItem };
 constexpr int kUidRole = Qt::UserRole, kKindRole = Qt::UserRole + 1;
 constexpr int kDescriptionRole = Qt::UserRole + 2;  // a series' description, for its drag
 
-QString q(const std::string& s) { return QString::fromStdString(s); }
-
 // DICOM DA (YYYYMMDD) as a reader writes it; anything else as stored.
 QString dateText(const std::string& da) {
-  if (da.size() != 8) return da.empty() ? QString("(no date)") : q(da);
-  return q(da.substr(0, 4) + "-" + da.substr(4, 2) + "-" + da.substr(6, 2));
+  if (da.size() != 8) return da.empty() ? QString("(no date)") : toQString(da);
+  return toQString(da.substr(0, 4) + "-" + da.substr(4, 2) + "-" + da.substr(6, 2));
 }
 
 // DICOM PN: "FAMILY^GIVEN" as "FAMILY, GIVEN".
 QString nameText(const std::string& pn) {
-  QStringList parts = q(pn).split('^');
+  QStringList parts = toQString(pn).split('^');
   while (!parts.isEmpty() && parts.last().isEmpty()) parts.removeLast();
   if (parts.isEmpty()) return "(no name)";
   return parts.size() == 1 ? parts[0] : parts[0] + ", " + parts.mid(1).join(' ');
@@ -187,7 +186,7 @@ StudyBrowserDialog::StudyBrowserDialog(QWidget* parent, const std::string& folde
         QString("Imported %1 images (%2 already there)").arg(r.added + r.updated).arg(r.unchanged);
     if (!r.skipped.empty())
       text += QString("; %1 files skipped (%2 not DICOM)").arg(r.skipped.size()).arg(r.notDicom);
-    for (const auto& w : r.warnings) text += "\n" + q(w);
+    for (const auto& w : r.warnings) text += "\n" + toQString(w);
     showResults();
     status_->setText(text);
     emit importFinished(r.added);
@@ -195,7 +194,7 @@ StudyBrowserDialog::StudyBrowserDialog(QWidget* parent, const std::string& folde
   events.importFailed = [this](const std::string& message) {
     progress_->setVisible(false);
     showResults();
-    error("Import failed", q(message));
+    error("Import failed", toQString(message));
   };
   events.thumbnail = [this](const std::string& uid, const Image& t) { showThumbnail(uid, t); };
   try {
@@ -243,22 +242,22 @@ void StudyBrowserDialog::showResults() {
   for (const PatientGroup& p : model_->patients()) {
     auto* patient = new QTreeWidgetItem;
     patient->setText(Name, nameText(p.patient.name));
-    patient->setText(IdOrDate, q(p.patient.patientId));
+    patient->setText(IdOrDate, toQString(p.patient.patientId));
     patient->setText(Series, p.studies.size() == 1 ? QString("1 study")
                                                    : QString("%1 studies").arg(p.studies.size()));
     patient->setData(0, kKindRole, PatientItem);
-    patient->setData(0, kUidRole, q(p.patient.patientId));
+    patient->setData(0, kUidRole, toQString(p.patient.patientId));
     for (size_t i : p.studies) {
       const StudyRow& s = studies[i];
       auto* study = new QTreeWidgetItem(patient);
-      study->setText(Name,
-                     s.study.description.empty() ? "(no description)" : q(s.study.description));
+      study->setText(
+          Name, s.study.description.empty() ? "(no description)" : toQString(s.study.description));
       study->setText(IdOrDate, dateText(s.study.date));
-      study->setText(Modality, q(s.modalities).replace('\\', ", "));
+      study->setText(Modality, toQString(s.modalities).replace('\\', ", "));
       study->setText(Series, QString::number(s.seriesCount));
       study->setText(Images, QString::number(s.instanceCount));
       study->setData(0, kKindRole, StudyItem);
-      study->setData(0, kUidRole, q(s.study.uid));
+      study->setData(0, kUidRole, toQString(s.study.uid));
       // Series are listed when expanded: 10,000 studies list at once.
       study->setChildIndicatorPolicy(QTreeWidgetItem::ShowIndicator);
     }
@@ -287,11 +286,11 @@ void StudyBrowserDialog::listSeries(QTreeWidgetItem* study) {
   for (const SeriesEntry& s : list) {
     auto* item = new QTreeWidgetItem(study);
     QString name =
-        s.row.series.description.empty() ? "(no description)" : q(s.row.series.description);
+        s.row.series.description.empty() ? "(no description)" : toQString(s.row.series.description);
     item->setText(Name, QString("#%1  %2").arg(s.row.series.number).arg(name));
-    item->setText(Modality, q(s.row.series.modality));
+    item->setText(Modality, toQString(s.row.series.modality));
     item->setText(Images, QString::number(s.row.instanceCount));
-    item->setText(Files, q(missingText(s)));
+    item->setText(Files, toQString(missingText(s)));
     if (s.missingFiles > 0) {
       item->setForeground(Files, QColor(200, 40, 40));
       item->setToolTip(Files,
@@ -299,7 +298,7 @@ void StudyBrowserDialog::listSeries(QTreeWidgetItem* study) {
                        "folder again (Import folder…), or Delete the series");
     }
     item->setData(0, kKindRole, SeriesItem);
-    item->setData(0, kUidRole, q(s.row.series.uid));
+    item->setData(0, kUidRole, toQString(s.row.series.uid));
     item->setData(0, kDescriptionRole, name);
   }
   study->setChildIndicatorPolicy(QTreeWidgetItem::DontShowIndicatorWhenChildless);
@@ -310,7 +309,8 @@ QMimeData* StudyBrowserDialog::dragData(QTreeWidgetItem* series) const {
   if (!model_ || !series || kindOf(series) != SeriesItem) return nullptr;
   try {
     auto [folder, options] = model_->openSeries(uidOf(series));
-    return seriesMimeData({q(folder), q(options.series), series->data(0, kUidRole).toString(),
+    return seriesMimeData({toQString(folder), toQString(options.series),
+                           series->data(0, kUidRole).toString(),
                            series->data(0, kDescriptionRole).toString()});
   } catch (const std::exception& e) {  // its files are gone: nothing to drag
     return nullptr;
@@ -326,11 +326,12 @@ void StudyBrowserDialog::showPriors(QTreeWidgetItem* study) {
     for (const StudyRow& p : model_->priors(uidOf(study))) {
       auto* item = new QListWidgetItem(
           QString("%1   %2   %3 (%4 series)")
-              .arg(dateText(p.study.date), q(p.modalities).replace('\\', ", "),
-                   p.study.description.empty() ? "(no description)" : q(p.study.description))
+              .arg(
+                  dateText(p.study.date), toQString(p.modalities).replace('\\', ", "),
+                  p.study.description.empty() ? "(no description)" : toQString(p.study.description))
               .arg(p.seriesCount),
           priors_);
-      item->setData(kUidRole, q(p.study.uid));
+      item->setData(kUidRole, toQString(p.study.uid));
     }
   } catch (const std::exception& e) {
     status_->setText(e.what());
@@ -343,7 +344,7 @@ void StudyBrowserDialog::showPriors(QTreeWidgetItem* study) {
 
 void StudyBrowserDialog::showThumbnail(const std::string& seriesUid, const Image& thumbnail) {
   if (thumbnail.width == 0) return;
-  const QString uid = q(seriesUid);
+  const QString uid = toQString(seriesUid);
   for (QTreeWidgetItemIterator it(tree_); *it; ++it) {
     if (kindOf(*it) == SeriesItem && (*it)->data(0, kUidRole).toString() == uid) {
       (*it)->setIcon(Name, QIcon(QPixmap::fromImage(toQImage(thumbnail))));
@@ -373,7 +374,7 @@ void StudyBrowserDialog::openSeriesOf(const std::string& studyUid, bool newWindo
     return;
   }
   auto [folder, options] = model_->openSeries(best);
-  emit openRequested(q(folder), q(options.series), newWindow);
+  emit openRequested(toQString(folder), toQString(options.series), newWindow);
 }
 
 void StudyBrowserDialog::openItem(QTreeWidgetItem* item) {
@@ -383,7 +384,7 @@ void StudyBrowserDialog::openItem(QTreeWidgetItem* item) {
       openSeriesOf(uidOf(item), false);
     } else if (kindOf(item) == SeriesItem) {
       auto [folder, options] = model_->openSeries(uidOf(item));
-      emit openRequested(q(folder), q(options.series), false);
+      emit openRequested(toQString(folder), toQString(options.series), false);
     } else {
       item->setExpanded(!item->isExpanded());
     }
@@ -451,9 +452,9 @@ void StudyBrowserDialog::showPacsTab() {
   pacs->show();
   connect(pacs, &QDialog::accepted, this, [this, pacs] {
     pacs->show();  // accept() hid the page
-    const QString folder = q(pacs->chosen().folder);
+    const QString folder = toQString(pacs->chosen().folder);
     storeRetrieved(folder);
-    emit pacsRetrieved(folder, q(pacs->chosen().seriesUid));
+    emit pacsRetrieved(folder, toQString(pacs->chosen().seriesUid));
   });
   connect(pacs, &QDialog::rejected, this, [this, pacs] {
     pacs->show();

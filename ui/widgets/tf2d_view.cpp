@@ -18,12 +18,12 @@ namespace voxray::ui {
 
 namespace {
 
-constexpr double kMargin = 8.0;
-constexpr double kGrab = 6.0;    // pixels from a corner that still take its handle
-constexpr double kStrip = 16.0;  // the axes' strips beside the plot
-constexpr double kMinSpanHu = 1.0, kMinSpanG = 0.1, kMaxSpan = 1e6;  // how far the axes zoom
+constexpr double kPlotMargin = 8.0;
+constexpr double kCornerGrab = 6.0;  // pixels from a corner that still take its handle
+constexpr double kStrip = 16.0;      // the axes' strips beside the plot
+constexpr double kPlotMinSpanHu = 1.0, kMinSpanG = 0.1, kMaxSpan = 1e6;  // how far the axes zoom
 
-QColor toQColor(glm::dvec3 c, double alpha = 1.0) {
+QColor plotColor(glm::dvec3 c, double alpha = 1.0) {
   return QColor::fromRgbF(float(c.r), float(c.g), float(c.b), float(alpha));
 }
 
@@ -92,8 +92,8 @@ void Tf2dView::fitVisible() {
 }
 
 QRectF Tf2dView::plotArea() const {
-  return QRectF(kMargin + kStrip, kMargin, width() - 2 * kMargin - kStrip,
-                height() - 2 * kMargin - kStrip);
+  return QRectF(kPlotMargin + kStrip, kPlotMargin, width() - 2 * kPlotMargin - kStrip,
+                height() - 2 * kPlotMargin - kStrip);
 }
 
 QRectF Tf2dView::huStrip() const {
@@ -136,7 +136,7 @@ void Tf2dView::select(std::optional<size_t> i) {
 
 std::optional<Tf2dHit> Tf2dView::hitAt(QPointF pos) const {
   QRectF a = plotArea();
-  double huTol = kGrab / a.width() * hu_.span(), gTol = kGrab / a.height() * g_.span();
+  double huTol = kCornerGrab / a.width() * hu_.span(), gTol = kCornerGrab / a.height() * g_.span();
   return tf2dHitTest(model_.property().tf2d, huAt(pos.x()), gAt(pos.y()), huTol, gTol);
 }
 
@@ -183,7 +183,7 @@ QMenu* Tf2dView::menuAt(QPointF pos) {
 
 void Tf2dView::pickColor(size_t i) {
   if (i >= model_.property().tf2d.primitives.size()) return;
-  QColor picked = QColorDialog::getColor(toQColor(model_.property().tf2d.primitives[i].rgb), this,
+  QColor picked = QColorDialog::getColor(plotColor(model_.property().tf2d.primitives[i].rgb), this,
                                          "Colour of the shape");
   if (picked.isValid()) model_.setTf2dColor(i, {picked.redF(), picked.greenF(), picked.blueF()});
 }
@@ -222,9 +222,9 @@ void Tf2dView::paintEvent(QPaintEvent*) {
       path.lineTo(xOf(mid + w0), yOf(p.g0));
       path.closeSubpath();
     }
-    painter.fillPath(path, toQColor(p.rgb, 0.15 + 0.35 * p.opacity));
+    painter.fillPath(path, plotColor(p.rgb, 0.15 + 0.35 * p.opacity));
     bool selected = selection_ && *selection_ == k;
-    painter.setPen(QPen(toQColor(p.rgb), selected ? 2.5 : 1.2));
+    painter.setPen(QPen(plotColor(p.rgb), selected ? 2.5 : 1.2));
     painter.drawPath(path);
     if (selected) {
       painter.setBrush(Qt::white);
@@ -296,7 +296,7 @@ void Tf2dView::wheelEvent(QWheelEvent* e) {
   const bool onHu = huStrip().contains(pos), onG = gradientStrip().contains(pos);
   const double f = wheelZoomFactor(e->angleDelta().y() / 120.0);
   // Over one axis' strip: that axis; elsewhere (Ctrl or not): both, about the cursor.
-  setRanges(onG ? hu_ : zoomAbout(hu_, huAt(pos.x()), f, kMinSpanHu, kMaxSpan),
+  setRanges(onG ? hu_ : zoomAbout(hu_, huAt(pos.x()), f, kPlotMinSpanHu, kMaxSpan),
             onHu ? g_ : zoomAbout(g_, gAt(pos.y()), f, kMinSpanG, kMaxSpan));
 }
 

@@ -16,13 +16,13 @@ namespace voxray::ui {
 
 namespace {
 
-constexpr double kMargin = 8.0;
+constexpr double kCurveMargin = 8.0;
 constexpr double kBarHeight = 18.0;
-constexpr double kAxisHeight = 16.0;                  // the HU labels' strip
-constexpr double kMinSpanHu = 1.0, kMaxSpanHu = 1e6;  // how far the axis zooms
-constexpr double kGrab = 6.0;                         // pixels from a point that still take it
+constexpr double kAxisHeight = 16.0;                            // the HU labels' strip
+constexpr double kCurveMinSpanHu = 1.0, kCurveMaxSpanHu = 1e6;  // how far the axis zooms
+constexpr double kPointGrab = 6.0;  // pixels from a point that still take it
 
-QColor toQColor(glm::dvec3 c) { return QColor::fromRgbF(float(c.r), float(c.g), float(c.b)); }
+QColor opaqueColor(glm::dvec3 c) { return QColor::fromRgbF(float(c.r), float(c.g), float(c.b)); }
 
 }  // namespace
 
@@ -80,8 +80,8 @@ void TfCurveView::setOpacityTop(double top) {
 }
 
 QRectF TfCurveView::curveArea() const {
-  return QRectF(kMargin, kMargin, width() - 2 * kMargin,
-                height() - 3 * kMargin - kBarHeight - kAxisHeight);
+  return QRectF(kCurveMargin, kCurveMargin, width() - 2 * kCurveMargin,
+                height() - 3 * kCurveMargin - kBarHeight - kAxisHeight);
 }
 
 QRectF TfCurveView::axisStrip() const {
@@ -91,7 +91,7 @@ QRectF TfCurveView::axisStrip() const {
 
 QRectF TfCurveView::colorBar() const {
   QRectF c = curveArea();
-  return QRectF(c.left(), c.bottom() + kMargin, c.width(), kBarHeight);
+  return QRectF(c.left(), c.bottom() + kCurveMargin, c.width(), kBarHeight);
 }
 
 double TfCurveView::xOf(double hu) const {
@@ -158,7 +158,7 @@ void TfCurveView::paintEvent(QPaintEvent*) {
   QLinearGradient fill(area.left(), 0, area.right(), 0);
   for (int k = 0; k <= 32; ++k) {
     double f = k / 32.0;
-    QColor c = toQColor(colorAt(vp, hu_.lo + f * hu_.span()));
+    QColor c = opaqueColor(colorAt(vp, hu_.lo + f * hu_.span()));
     c.setAlpha(110);
     fill.setColorAt(f, c);
   }
@@ -182,15 +182,15 @@ void TfCurveView::paintEvent(QPaintEvent*) {
   // The colour bar and its points.
   for (int c = 0; c < columns; ++c)
     p.fillRect(QRectF(bar.left() + c, bar.top(), 1.0, bar.height()),
-               toQColor(colorAt(vp, huAt(bar.left() + c))));
+               opaqueColor(colorAt(vp, huAt(bar.left() + c))));
   p.save();
-  p.setClipRect(bar.adjusted(-kGrab, 0, kGrab, 0));
+  p.setClipRect(bar.adjusted(-kPointGrab, 0, kPointGrab, 0));
   for (size_t i = 0; i < vp.color.size(); ++i) {
     bool chosen = selection_ && selection_->list == List::Color && selection_->index == i;
     double x = xOf(vp.color[i].hu);
     QPolygonF mark(
         {QPointF(x, bar.top()), QPointF(x - 5, bar.bottom()), QPointF(x + 5, bar.bottom())});
-    p.setBrush(toQColor(vp.color[i].rgb));
+    p.setBrush(opaqueColor(vp.color[i].rgb));
     p.setPen(QPen(chosen ? QColor(255, 200, 40) : QColor(20, 20, 20), chosen ? 2.0 : 1.0));
     p.drawPolygon(mark);
   }
@@ -207,8 +207,8 @@ void TfCurveView::paintEvent(QPaintEvent*) {
 std::optional<TfCurveView::Selection> TfCurveView::pointAt(QPointF pos) const {
   const VolumeProperty& vp = model_.property();
   std::optional<Selection> best;
-  double bestDistance = kGrab;
-  if (colorBar().adjusted(-kGrab, -kGrab, kGrab, kGrab).contains(pos)) {
+  double bestDistance = kPointGrab;
+  if (colorBar().adjusted(-kPointGrab, -kPointGrab, kPointGrab, kPointGrab).contains(pos)) {
     for (size_t i = 0; i < vp.color.size(); ++i) {
       double d = std::abs(xOf(vp.color[i].hu) - pos.x());
       if (d <= bestDistance) best = Selection{List::Color, i}, bestDistance = d;
@@ -275,8 +275,9 @@ void TfCurveView::mouseDoubleClickEvent(QMouseEvent* e) {
 
 void TfCurveView::wheelEvent(QWheelEvent* e) {
   // Over the curve, the axis or with Ctrl alike: the wheel has no other use here.
-  AxisRange r = zoomAbout(hu_, huAt(e->position().x()),
-                          wheelZoomFactor(e->angleDelta().y() / 120.0), kMinSpanHu, kMaxSpanHu);
+  AxisRange r =
+      zoomAbout(hu_, huAt(e->position().x()), wheelZoomFactor(e->angleDelta().y() / 120.0),
+                kCurveMinSpanHu, kCurveMaxSpanHu);
   setHuRange(r.lo, r.hi);
 }
 
@@ -298,7 +299,7 @@ void TfCurveView::removeSelected() {
 }
 
 void TfCurveView::pickColor(size_t index) {
-  QColor c = QColorDialog::getColor(toQColor(model_.property().color[index].rgb), this,
+  QColor c = QColorDialog::getColor(opaqueColor(model_.property().color[index].rgb), this,
                                     "Colour of the point");
   if (c.isValid()) model_.setPointColor(index, {c.redF(), c.greenF(), c.blueF()});
 }

@@ -15,7 +15,7 @@ namespace voxray::ui {
 
 namespace {
 
-constexpr double kHandleRadius = 6.0;
+constexpr double kVolumeHandleRadius = 6.0;  // the 3D view's clip-face and light handles
 
 std::optional<QPointF> screen(const ViewProjection& view, const glm::dvec3& world) {
   auto s = view.project(world);
@@ -67,7 +67,7 @@ void drawClipBox(QPainter& p, const Volume& v, const ClipBox& box, const ViewPro
     bool active = face == activeFace;
     p.setPen(QPen(Qt::black, 1.0));
     p.setBrush(active ? QColor(255, 255, 255) : clipBoxColor());
-    p.drawEllipse(*c, kHandleRadius, kHandleRadius);
+    p.drawEllipse(*c, kVolumeHandleRadius, kVolumeHandleRadius);
   }
 }
 
@@ -80,11 +80,11 @@ void drawLightHandle(QPainter& p, const Volume& v, const RenderParams& params,
   p.drawLine(*centre, *handle);
   p.setPen(QPen(Qt::black, 1.0));
   p.setBrush(active ? QColor(255, 255, 255) : QColor(255, 240, 120));
-  p.drawEllipse(*handle, kHandleRadius + 3, kHandleRadius + 3);
+  p.drawEllipse(*handle, kVolumeHandleRadius + 3, kVolumeHandleRadius + 3);
   p.setPen(QPen(QColor(255, 240, 120), 1.5));
   for (int ray = 0; ray < 8; ++ray) {  // sun rays: this handle is the light
-    QLineF l = QLineF::fromPolar(kHandleRadius + 9, ray * 45.0);
-    QLineF inner = QLineF::fromPolar(kHandleRadius + 5, ray * 45.0);
+    QLineF l = QLineF::fromPolar(kVolumeHandleRadius + 9, ray * 45.0);
+    QLineF inner = QLineF::fromPolar(kVolumeHandleRadius + 5, ray * 45.0);
     p.drawLine(*handle + inner.p2(), *handle + l.p2());
   }
 }

@@ -15,7 +15,7 @@
 namespace voxray {
 namespace {
 
-void check(const OFCondition& c, const std::string& what) {
+void checkKeyImagesStep(const OFCondition& c, const std::string& what) {
   if (c.bad())
     throw outputError("Cannot build the key object selection (" + what + ": " + c.text() +
                       "); please report this");
@@ -50,35 +50,37 @@ std::string writeKeyObjectSelection(const std::string& path, const Volume& v,
   DSRDocumentTree& tree = doc.getTree();
   // CID 7010: "Of Interest" is the general reason; a reader's choice says no more.
   if (tree.addContentItem(DSRTypes::RT_isRoot, DSRTypes::VT_Container) == 0)
-    check(EC_IllegalCall, "root");
-  check(tree.getCurrentContentItem().setConceptName(
-            DSRCodedEntryValue("113000", "DCM", "Of Interest")),
-        "title");
-  check(tree.getCurrentContentItem().setTemplateIdentification("2010", "DCMR"), "template");
+    checkKeyImagesStep(EC_IllegalCall, "root");
+  checkKeyImagesStep(tree.getCurrentContentItem().setConceptName(
+                         DSRCodedEntryValue("113000", "DCM", "Of Interest")),
+                     "title");
+  checkKeyImagesStep(tree.getCurrentContentItem().setTemplateIdentification("2010", "DCMR"),
+                     "template");
   bool first = true;
   auto add = [&](DSRTypes::E_ValueType type) {
     if (tree.addContentItem(DSRTypes::RT_contains, type,
                             first ? DSRTypes::AM_belowCurrent : DSRTypes::AM_afterCurrent) == 0)
-      check(EC_IllegalCall, "content item");
+      checkKeyImagesStep(EC_IllegalCall, "content item");
     first = false;
   };
   if (!info.description.empty()) {
     add(DSRTypes::VT_Text);
-    check(tree.getCurrentContentItem().setConceptName(
-              DSRCodedEntryValue("113012", "DCM", "Key Object Description")),
-          "description");
-    check(tree.getCurrentContentItem().setStringValue(info.description), "description");
+    checkKeyImagesStep(tree.getCurrentContentItem().setConceptName(
+                           DSRCodedEntryValue("113012", "DCM", "Key Object Description")),
+                       "description");
+    checkKeyImagesStep(tree.getCurrentContentItem().setStringValue(info.description),
+                       "description");
   }
   for (int k : slices) {
     add(DSRTypes::VT_Image);
-    check(tree.getCurrentContentItem().setImageReference(
-              DSRImageReferenceValue(s.sopClassUid, s.sliceSopInstanceUids[size_t(k)])),
-          "image");
+    checkKeyImagesStep(tree.getCurrentContentItem().setImageReference(DSRImageReferenceValue(
+                           s.sopClassUid, s.sliceSopInstanceUids[size_t(k)])),
+                       "image");
   }
-  report::fileWithImages(doc, s, "9002", "", check);
-  report::addEvidence(doc, s, slices, check);
+  report::fileWithImages(doc, s, "9002", "", checkKeyImagesStep);
+  report::addEvidence(doc, s, slices, checkKeyImagesStep);
   DcmFileFormat file;
-  check(doc.write(*file.getDataset()), "DICOM dataset");
+  checkKeyImagesStep(doc.write(*file.getDataset()), "DICOM dataset");
   OFString uid;
   doc.getSOPInstanceUID(uid);
   dicomwrite::saveAtomically(file, path, "key object selection");

@@ -27,7 +27,7 @@ using Group = CMR_TID1501_in_TID1500;
 using VolumeGroup = CMR_TID1411_in_TID1500;
 using Value = Group::MeasurementValue;
 
-void check(const OFCondition& c, const std::string& what) {
+void checkSrStep(const OFCondition& c, const std::string& what) {
   if (c.bad())
     throw outputError("Cannot build the measurement report (" + what + ": " + c.text() +
                       "); please report this with the measurement that caused it");
@@ -183,16 +183,16 @@ void addScoord3d(DSRDocumentTree& tree, const std::string& label,
              (!only || item.getConceptName() == *only))
       values.push_back(tree.getNodeID());
   } while (tree.iterate());
-  if (values.empty()) check(EC_IllegalCall, label + " (no value to give 3D coordinates)");
+  if (values.empty()) checkSrStep(EC_IllegalCall, label + " (no value to give 3D coordinates)");
   for (size_t id : values) {
-    if (tree.gotoNode(id) == 0) check(EC_IllegalCall, label + " (its value is lost)");
+    if (tree.gotoNode(id) == 0) checkSrStep(EC_IllegalCall, label + " (its value is lost)");
     if (tree.addContentItem(DSRTypes::RT_inferredFrom, DSRTypes::VT_SCoord3D,
                             DSRTypes::AM_belowCurrent) == 0)
-      check(EC_IllegalCall, label + " 3D coordinates");
-    check(tree.getCurrentContentItem().setConceptName(CODE_DCM_SourceOfMeasurement),
-          label + " 3D coordinates' name");
-    check(tree.getCurrentContentItem().setSpatialCoordinates3D(coordinates),
-          label + " 3D coordinates");
+      checkSrStep(EC_IllegalCall, label + " 3D coordinates");
+    checkSrStep(tree.getCurrentContentItem().setConceptName(CODE_DCM_SourceOfMeasurement),
+                label + " 3D coordinates' name");
+    checkSrStep(tree.getCurrentContentItem().setSpatialCoordinates3D(coordinates),
+                label + " 3D coordinates");
   }
 }
 
@@ -228,26 +228,28 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
         "report is filed in the series' study but names no image and has no image coordinates");
 
   TID1500_MeasurementReport report(CMR_CID7021::ImagingMeasurementReport);
-  check(report.setLanguage(CID5000_Languages::English, CID5001_Countries::UnitedStates),
-        "language");
-  check(report.getObservationContext().addDeviceObserver(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT),
-                                                         "Voxray", "Voxray"),
-        "observer");
-  check(report.addProcedureReported(CMR_CID100(DSRCodedEntryValue(CODE_SCT_ImagingProcedure))),
-        "procedure");
+  checkSrStep(report.setLanguage(CID5000_Languages::English, CID5001_Countries::UnitedStates),
+              "language");
+  checkSrStep(report.getObservationContext().addDeviceObserver(
+                  dicomwrite::newUid(SITE_INSTANCE_UID_ROOT), "Voxray", "Voxray"),
+              "observer");
+  checkSrStep(
+      report.addProcedureReported(CMR_CID100(DSRCodedEntryValue(CODE_SCT_ImagingProcedure))),
+      "procedure");
   // The image library lists every image a measurement references, once.
   std::vector<int> slices;
   for (const auto& m : measurements)
     for (int k : touchedSlices(v, m))
       if (std::find(slices.begin(), slices.end(), k) == slices.end()) slices.push_back(k);
-  check(report.getImageLibrary().createNewImageLibrary(), "image library");
-  if (!slices.empty()) check(report.getImageLibrary().addImageGroup(), "image library group");
+  checkSrStep(report.getImageLibrary().createNewImageLibrary(), "image library");
+  if (!slices.empty()) checkSrStep(report.getImageLibrary().addImageGroup(), "image library group");
   for (int k : slices) {
     DcmItem image;
     image.putAndInsertString(DCM_SOPClassUID, s.sopClassUid.c_str());
     image.putAndInsertString(DCM_SOPInstanceUID, s.sliceSopInstanceUids[size_t(k)].c_str());
-    check(report.getImageLibrary().addImageEntry(image, TID1600_ImageLibrary::withoutDescriptors),
-          "image library entry");
+    checkSrStep(
+        report.getImageLibrary().addImageEntry(image, TID1600_ImageLibrary::withoutDescriptors),
+        "image library entry");
   }
 
   const Quantity roi = roiQuantity(v);
@@ -285,52 +287,53 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
     if (volumetric) {
       // TID 1411 allows one reference to the region (rows 5 to 8: image regions, a volume
       // surface or the segment): the segment, since it has every voxel.
-      check(report.addVolumetricROIMeasurements(), "volumetric measurement group");
+      checkSrStep(report.addVolumetricROIMeasurements(), "volumetric measurement group");
       volume = &report.getVolumetricROIMeasurements();
-      check(volume->setTrackingIdentifier(label), "tracking identifier");
-      check(volume->setTrackingUniqueIdentifier(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT)),
-            "tracking UID");
+      checkSrStep(volume->setTrackingIdentifier(label), "tracking identifier");
+      checkSrStep(volume->setTrackingUniqueIdentifier(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT)),
+                  "tracking UID");
       DSRImageReferenceValue segment(UID_SegmentationStorage, info.segSopInstanceUid.c_str());
       segment.getSegmentList().addItem(Uint16(m.segmentNumber));
-      check(volume->setReferencedSegment(segment), label + " referenced segment");
-      check(volume->setSourceSeriesForSegmentation(s.seriesInstanceUid), label + " source series");
+      checkSrStep(volume->setReferencedSegment(segment), label + " referenced segment");
+      checkSrStep(volume->setSourceSeriesForSegmentation(s.seriesInstanceUid),
+                  label + " source series");
     } else {
-      check(report.addIndividualMeasurements(), "measurement group");
+      checkSrStep(report.addIndividualMeasurements(), "measurement group");
       group = &report.getIndividualMeasurements();
-      check(group->setTrackingIdentifier(label), "tracking identifier");
-      check(group->setTrackingUniqueIdentifier(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT)),
-            "tracking UID");
+      checkSrStep(group->setTrackingIdentifier(label), "tracking identifier");
+      checkSrStep(group->setTrackingUniqueIdentifier(dicomwrite::newUid(SITE_INSTANCE_UID_ROOT)),
+                  "tracking UID");
     }
     // One TID 300 per value, each with the image region it was measured in.
     auto add = [&](const DSRCodedEntryValue& name, double x, const DSRCodedEntryValue& unit,
                    const CID7464_GeneralRegionOfInterestMeasurementModifiers* derivation) {
       if (volume) {  // TID 1419's values: the segment is their region
-        check(volume->addMeasurement(CMR_CID7469(name), Value(ds(x), CMR_CID7181(unit)), OFTrue,
-                                     OFTrue),
-              label + " value");
+        checkSrStep(volume->addMeasurement(CMR_CID7469(name), Value(ds(x), CMR_CID7181(unit)),
+                                           OFTrue, OFTrue),
+                    label + " value");
         if (derivation)
-          check(volume->getMeasurement().setDerivation(*derivation), label + " derivation");
+          checkSrStep(volume->getMeasurement().setDerivation(*derivation), label + " derivation");
         return;
       }
-      check(
+      checkSrStep(
           group->addMeasurement(CMR_CID7469(name), Value(ds(x), CMR_CID7181(unit)), OFTrue, OFTrue),
           label + " value");
       auto& value = group->getMeasurement();
-      if (derivation) check(value.setDerivation(*derivation), label + " derivation");
+      if (derivation) checkSrStep(value.setDerivation(*derivation), label + " derivation");
       if (m.kind == ReportKind::Segment) {
         // A label map has no SCOORD: the values name the series (the evidence) only.
       } else if (onImage) {
         DSRImageReferenceValue image(s.sopClassUid, s.sliceSopInstanceUids[size_t(k)]);
-        check(value.addSpatialCoordinates(CODE_DCM_ImageRegion, scoord(m), image),
-              label + " image region");
+        checkSrStep(value.addSpatialCoordinates(CODE_DCM_ImageRegion, scoord(m), image),
+                    label + " image region");
       } else {
         // Across slices a 2D region has no one image: the images of its points instead
         // (TID 320 row 1). SCOORD3D would fit, but DCMTK's TID 300 class has no call for it.
         for (int t : touched)
-          check(value.addImage(
-                    CODE_DCM_SourceOfMeasurement,
-                    DSRImageReferenceValue(s.sopClassUid, s.sliceSopInstanceUids[size_t(t)])),
-                label + " image");
+          checkSrStep(value.addImage(
+                          CODE_DCM_SourceOfMeasurement,
+                          DSRImageReferenceValue(s.sopClassUid, s.sliceSopInstanceUids[size_t(t)])),
+                      label + " image");
       }
     };
     const DSRCodedEntryValue mm("mm", "UCUM", "millimeter");
@@ -389,40 +392,41 @@ WrittenReport writeMeasurementReport(const std::string& path, const Volume& v,
                        "without a pixel): leave it out of the report");
   }
   for (const std::string& comment : info.comments)
-    check(report.addQualitativeEvaluation(DSRCodedEntryValue("121106", "DCM", "Comment"),
-                                          OFString(comment.c_str())),
-          "comment");
+    checkSrStep(report.addQualitativeEvaluation(DSRCodedEntryValue("121106", "DCM", "Comment"),
+                                                OFString(comment.c_str())),
+                "comment");
   if (!report.isValid())
     throw outputError("The measurement report is incomplete (TID 1500); please report this");
 
   DSRDocument doc(DSRTypes::DT_ComprehensiveSR);
-  check(doc.setTreeFromRootTemplate(report, OFTrue), "document tree");
+  checkSrStep(doc.setTreeFromRootTemplate(report, OFTrue), "document tree");
   // The template makes the document the simplest type its tree fits (an Enhanced SR):
   // SCOORD3D needs the Comprehensive 3D SR, asked for before the coordinates go in.
   if (!points3d.empty())
-    check(doc.changeDocumentType(DSRTypes::DT_Comprehensive3DSR), "Comprehensive 3D SR");
+    checkSrStep(doc.changeDocumentType(DSRTypes::DT_Comprehensive3DSR), "Comprehensive 3D SR");
   for (const Coordinates3d& p : points3d) {
     DSRSpatialCoordinates3DValue c = p.value;
-    check(c.setFrameOfReferenceUID(frameOfReference.c_str()), p.label + " Frame of Reference");
+    checkSrStep(c.setFrameOfReferenceUID(frameOfReference.c_str()),
+                p.label + " Frame of Reference");
     addScoord3d(doc.getTree(), p.label, c, p.underVolumeOnly ? &volumeConcept() : nullptr);
   }
-  report::fileWithImages(doc, s, "9001", info.seriesDescription, check);
+  report::fileWithImages(doc, s, "9001", info.seriesDescription, checkSrStep);
   // Complete: every measurement made is in it; unverified: a person has not signed it.
   doc.completeDocument();
   // Every image the tree references is evidence of this study.
-  report::addEvidence(doc, s, slices, check);
+  report::addEvidence(doc, s, slices, checkSrStep);
   // The SEG its segment groups reference: evidence too (PS3.3 C.17.2.3), in the same study.
   if (std::any_of(measurements.begin(), measurements.end(),
                   [&](const ReportMeasurement& m) {
                     return m.kind == ReportKind::Segment && m.segmentNumber > 0;
                   }) &&
       !info.segSopInstanceUid.empty())
-    check(doc.getCurrentRequestedProcedureEvidence().addItem(
-              s.studyInstanceUid, info.segSeriesInstanceUid, UID_SegmentationStorage,
-              info.segSopInstanceUid),
-          "the SEG as evidence");
+    checkSrStep(doc.getCurrentRequestedProcedureEvidence().addItem(
+                    s.studyInstanceUid, info.segSeriesInstanceUid, UID_SegmentationStorage,
+                    info.segSopInstanceUid),
+                "the SEG as evidence");
   DcmFileFormat file;
-  check(doc.write(*file.getDataset()), "DICOM dataset");
+  checkSrStep(doc.write(*file.getDataset()), "DICOM dataset");
   OFString uid;
   doc.getSOPInstanceUID(uid);
   out.sopInstanceUid = uid.c_str();

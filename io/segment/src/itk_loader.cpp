@@ -11,14 +11,14 @@
 namespace voxray::itk_ops {
 namespace {
 
-struct Module {
+struct ItkModule {
   decltype(&voxray_itk_run) run = nullptr;
   std::string missing;  // empty when loaded
 };
 
-const Module& module() {
-  static const Module m = [] {
-    Module loaded;
+const ItkModule& itkModule() {
+  static const ItkModule m = [] {
+    ItkModule loaded;
     const char* symbols[] = {"voxray_itk_run", nullptr};
     if (void* handle =
             loadProgramModule("libvoxray_itk.so", "ITK", "voxray_itk", symbols, &loaded.missing))
@@ -30,7 +30,7 @@ const Module& module() {
 
 void run(const char* what, int operation, Block& b, glm::ivec3 radius, bool full,
          Islands* islands) {
-  const Module& m = module();
+  const ItkModule& m = itkModule();
   if (!m.run) throw inputError(std::string(what) + " is unavailable (" + m.missing + ")");
   const int r[3] = {radius.x, radius.y, radius.z};
   std::string why;

@@ -17,6 +17,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "day_number.h"
 #include "voxray/io/dicom_write.h"
 #include "voxray/io/error.h"
 
@@ -27,7 +28,7 @@ namespace {
 
 using dicomwrite::newUid;
 
-std::string number(double v) {
+std::string dsText(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.10g", v);  // DS holds 16 characters at most
   return text;
@@ -92,10 +93,10 @@ void putSlice(DcmDataset* d, const Put& put, glm::ivec3 dims, glm::dvec3 spacing
   // LPS, axial: the volume centred on the origin, slice k at z = (k - centre) * spacing.
   const glm::dvec3 origin = -0.5 * glm::dvec3(dims - 1) * spacing;
   put(DCM_ImagePositionPatient,
-      number(origin.x) + "\\" + number(origin.y) + "\\" + number(origin.z + k * spacing.z));
-  put(DCM_SliceLocation, number(origin.z + k * spacing.z));
-  put(DCM_PixelSpacing, number(spacing.y) + "\\" + number(spacing.x));
-  put(DCM_SliceThickness, number(spacing.z));
+      dsText(origin.x) + "\\" + dsText(origin.y) + "\\" + dsText(origin.z + k * spacing.z));
+  put(DCM_SliceLocation, dsText(origin.z + k * spacing.z));
+  put(DCM_PixelSpacing, dsText(spacing.y) + "\\" + dsText(spacing.x));
+  put(DCM_SliceThickness, dsText(spacing.z));
   d->putAndInsertUint16(DCM_Rows, Uint16(dims.y));
   d->putAndInsertUint16(DCM_Columns, Uint16(dims.x));
   d->putAndInsertUint16Array(DCM_PixelData, pixels.data(), pixels.size());
@@ -112,21 +113,12 @@ void checkDims(glm::ivec3 dims, glm::dvec3 spacing) {
     throw inputError("phantom: dims must be 2..4096 and spacing positive");
 }
 
-// Days since 1970-01-01 of D (its calendar date).
-double dayNumber(const OFDate& d) {
-  using namespace std::chrono;
-  return double(
-      sys_days(year_month_day(year(int(d.getYear())), month(d.getMonth()), day(d.getDay())))
-          .time_since_epoch()
-          .count());
-}
-
 double julianSeconds(const std::string& date, const std::string& time) {
   OFDate d;
   OFTime t;
   DcmDate::getOFDateFromString(date.c_str(), d);
   DcmTime::getOFTimeFromString(time.c_str(), t);
-  return dayNumber(d) * 86400.0 + t.getTimeInSeconds();
+  return dicom::dayNumber(d) * 86400.0 + t.getTimeInSeconds();
 }
 
 // A CSA2 ("SV10") image header holding TAGS, each a name and its items as text: the layout
@@ -222,7 +214,7 @@ void writePetSpherePhantom(const std::string& dir, const PetSpherePhantom& p) {
       d->putAndInsertString(tag, value.c_str());
     };
     putCommon(d, s, put);
-    if (!omitted("PatientWeight")) put(DCM_PatientWeight, number(p.weightKg));
+    if (!omitted("PatientWeight")) put(DCM_PatientWeight, dsText(p.weightKg));
     if (!p.geScanDateTime.empty()) {
       d->putAndInsertString(DcmTag(0x0009, 0x0010, EVR_LO), "GEMS_PETD_01");
       DcmTag scan(0x0009, 0x100D, EVR_DT);
@@ -247,9 +239,9 @@ void writePetSpherePhantom(const std::string& dir, const PetSpherePhantom& p) {
     if (!p.injectionDateTime.empty())
       drug->putAndInsertString(DCM_RadiopharmaceuticalStartDateTime, p.injectionDateTime.c_str());
     if (!omitted("RadionuclideTotalDose"))
-      drug->putAndInsertString(DCM_RadionuclideTotalDose, number(p.injectedDoseBq).c_str());
+      drug->putAndInsertString(DCM_RadionuclideTotalDose, dsText(p.injectedDoseBq).c_str());
     if (!omitted("RadionuclideHalfLife"))
-      drug->putAndInsertString(DCM_RadionuclideHalfLife, number(p.halfLifeS).c_str());
+      drug->putAndInsertString(DCM_RadionuclideHalfLife, dsText(p.halfLifeS).c_str());
     drug->putAndInsertString(DCM_Radiopharmaceutical, "Fluorodeoxyglucose F^18^");
     DcmItem* nuclide = nullptr;
     drug->findOrCreateSequenceItem(DCM_RadionuclideCodeSequence, nuclide, 0);
@@ -335,8 +327,8 @@ void writeBeatingSpherePhantom(const std::string& dir, const BeatingSpherePhanto
         put(DCM_NumberOfTemporalPositions, std::to_string(p.phases));
       }
       if (p.timing != "repeated") {
-        put(DCM_TriggerTime, number(nominalInterval * t / p.phases));
-        put(DCM_NominalInterval, number(nominalInterval));
+        put(DCM_TriggerTime, dsText(nominalInterval * t / p.phases));
+        put(DCM_NominalInterval, dsText(nominalInterval));
         put(DCM_CardiacNumberOfImages, std::to_string(p.phases));
       }
       d->putAndInsertUint16(DCM_PixelRepresentation, 1);
@@ -380,7 +372,7 @@ void writeMosaicPhantom(const std::string& dir, const MosaicPhantom& p) {
                             a[0] * (p.spacingMm.x * (whole.x - p.dims.x) / 2.0) -
                             a[1] * (p.spacingMm.y * (whole.y - p.dims.y) / 2.0);
   auto triple = [](const glm::dvec3& v) {
-    return number(v.x) + "\\" + number(v.y) + "\\" + number(v.z);
+    return dsText(v.x) + "\\" + dsText(v.y) + "\\" + dsText(v.z);
   };
   const int images = p.mrHeaderImages.value_or(n);
   const int csaImages = p.csaImages.value_or(images);
@@ -415,8 +407,8 @@ void writeMosaicPhantom(const std::string& dir, const MosaicPhantom& p) {
     put(DCM_MagneticFieldStrength, "3");
     put(DCM_FlipAngle, "90");
     put(DCM_InPlanePhaseEncodingDirection, "COL");
-    put(DCM_SliceThickness, number(p.sliceThicknessMm));
-    put(DCM_SpacingBetweenSlices, number(p.spacingMm.z));
+    put(DCM_SliceThickness, dsText(p.sliceThicknessMm));
+    put(DCM_SpacingBetweenSlices, dsText(p.spacingMm.z));
     put(DCM_InstanceNumber, std::to_string(t + 1));
     put(DCM_AcquisitionNumber, std::to_string(t + 1));
     put(DCM_AcquisitionDate, s.date);
@@ -425,7 +417,7 @@ void writeMosaicPhantom(const std::string& dir, const MosaicPhantom& p) {
     put(DCM_AcquisitionTime, time);
     put(DCM_ImagePositionPatient, triple(corner));
     put(DCM_ImageOrientationPatient, triple(a[0]) + "\\" + triple(a[1]));
-    put(DCM_PixelSpacing, number(p.spacingMm.y) + "\\" + number(p.spacingMm.x));
+    put(DCM_PixelSpacing, dsText(p.spacingMm.y) + "\\" + dsText(p.spacingMm.x));
     // Siemens' private attributes the split reads (dcm2niix reads the same).
     DcmTag creator19(0x0019, 0x0010, EVR_LO), creator29(0x0029, 0x0010, EVR_LO);
     d->putAndInsertString(creator19, "SIEMENS MR HEADER");
@@ -444,7 +436,7 @@ void writeMosaicPhantom(const std::string& dir, const MosaicPhantom& p) {
     const std::vector<Uint8> csa =
         csaHeader({{"NumberOfImagesInMosaic", {std::to_string(csaImages)}},
                    {"SliceNormalVector",
-                    {number(sliceNormal.x), number(sliceNormal.y), number(sliceNormal.z)}}});
+                    {dsText(sliceNormal.x), dsText(sliceNormal.y), dsText(sliceNormal.z)}}});
     d->putAndInsertUint8Array(header, csa.data(), Uint32(csa.size()));
     d->putAndInsertUint16(DCM_PixelRepresentation, 0);
     d->putAndInsertUint16(DCM_Rows, Uint16(whole.y));

@@ -11,6 +11,7 @@
 #include <dcmtk/dcmdata/dcvrdt.h>
 #include <dcmtk/dcmdata/dcvrtm.h>
 
+#include "day_number.h"
 #include "voxray/io/error.h"
 
 namespace voxray {
@@ -26,15 +27,6 @@ std::string missing(const char* name, const char* tag) {
   return std::string(name) + " " + tag + " is missing";
 }
 
-// Days since 1970-01-01 of D (its calendar date).
-double dayNumber(const OFDate& d) {
-  using namespace std::chrono;
-  return double(
-      sys_days(year_month_day(year(int(d.getYear())), month(d.getMonth()), day(d.getDay())))
-          .time_since_epoch()
-          .count());
-}
-
 // Seconds since 1970 of DA DATE and TM TIME (no time zone); nothing when either does not parse.
 std::optional<double> dateTimeSeconds(const std::string& date, const std::string& time) {
   OFDate d;
@@ -42,13 +34,13 @@ std::optional<double> dateTimeSeconds(const std::string& date, const std::string
   if (date.empty() || time.empty() || DcmDate::getOFDateFromString(date.c_str(), d).bad() ||
       DcmTime::getOFTimeFromString(time.c_str(), t).bad())
     return std::nullopt;
-  return dayNumber(d) * kSecondsPerDay + t.getTimeInSeconds(false /*time zone*/);
+  return dicom::dayNumber(d) * kSecondsPerDay + t.getTimeInSeconds(false /*time zone*/);
 }
 
 std::optional<double> dateTimeSeconds(const std::string& dt) {
   OFDateTime v;
   if (dt.empty() || DcmDateTime::getOFDateTimeFromString(dt.c_str(), v).bad()) return std::nullopt;
-  return dayNumber(v.getDate()) * kSecondsPerDay +
+  return dicom::dayNumber(v.getDate()) * kSecondsPerDay +
          v.getTime().getTimeInSeconds(false /*time zone*/);
 }
 

@@ -14,11 +14,7 @@ namespace {
 using test::TempDir;
 using testing::HasSubstr;
 
-std::string loadError(const std::string& path) {
-  const std::string m = test::errorMessage([&] { loadVolume(path); });
-  EXPECT_THAT(m, HasSubstr(path));
-  return m;
-}
+using test::loadError;
 
 // Writes a hand-made header (then DATA_BYTES zero bytes) as NAME; returns loadVolume's error.
 std::string headerError(const std::string& name, const std::string& header, size_t dataBytes = 0) {

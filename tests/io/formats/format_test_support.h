@@ -8,12 +8,21 @@
 #include <filesystem>
 #include <string>
 
+#include <gmock/gmock.h>
 #include <glm/glm.hpp>
 
 #include "../test_support.h"
+#include "voxray/io/load.h"
 #include "voxray/io/volume.h"
 
 namespace voxray::test {
+
+// The message loadVolume(PATH) fails with, which must name the file.
+inline std::string loadError(const std::string& path) {
+  const std::string m = errorMessage([&] { loadVolume(path); });
+  EXPECT_THAT(m, ::testing::HasSubstr(path));
+  return m;
+}
 
 inline std::string dicomData(const std::string& rel) { return dataPath("dicom/" + rel); }
 

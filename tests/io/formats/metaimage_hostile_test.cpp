@@ -14,7 +14,7 @@ using test::TempDir;
 using testing::HasSubstr;
 
 // A 4 x 3 x 2 MET_SHORT image whose ElementDataFile is DATA_FILE (and any lines after it).
-std::string header(const std::string& dataFile) {
+std::string hostileMetaImageHeader(const std::string& dataFile) {
   return "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\nElementType = MET_SHORT\n"
          "ElementDataFile = " +
          dataFile + "\n";
@@ -31,20 +31,20 @@ TEST(FormatsMetaImageHostile, DataFilesOutsideTheHeadersFolderAreRefused) {
   for (const std::string& name : {std::string("/etc/passwd"), std::string("../outside.raw"),
                                   dir.file("outside.raw"), std::string("link.raw")}) {
     SCOPED_TRACE(name);
-    test::writeHeaderFile(path, header(name));
+    test::writeHeaderFile(path, hostileMetaImageHeader(name));
     EXPECT_THAT(
         test::errorMessage([&] { loadVolume(path); }),
         HasSubstr(path + ": its data file '" + name + "' lies outside the header's folder"));
   }
-  test::writeHeaderFile(path, header("LIST 2D\n../outside1.raw\n../outside2.raw"));
+  test::writeHeaderFile(path, hostileMetaImageHeader("LIST 2D\n../outside1.raw\n../outside2.raw"));
   EXPECT_THAT(test::errorMessage([&] { loadVolume(path); }),
               HasSubstr("its data file '../outside1.raw' lies outside the header's folder"));
-  test::writeHeaderFile(path, header("../outside%d.raw 1 2 1"));
+  test::writeHeaderFile(path, hostileMetaImageHeader("../outside%d.raw 1 2 1"));
   EXPECT_THAT(test::errorMessage([&] { loadVolume(path); }),
               HasSubstr("its data file '../outside1.raw' lies outside the header's folder"));
   // The same data beside the header opens.
   fs::copy_file(dir.file("outside.raw"), dir.path() / "study" / "inside.raw");
-  test::writeHeaderFile(path, header("inside.raw"));
+  test::writeHeaderFile(path, hostileMetaImageHeader("inside.raw"));
   EXPECT_EQ(loadVolume(path).dims, glm::ivec3(4, 3, 2));
 }
 
@@ -64,7 +64,7 @@ TEST(FormatsMetaImageHostile, SizesTheDataCannotHoldAreRefusedBeforeAllocating) 
   test::writeHeaderFile(dir.file("detached.mhd"), huge + "ElementDataFile = small.raw\n");
   EXPECT_THAT(test::errorMessage([&] { loadVolume(dir.file("detached.mhd")); }),
               HasSubstr("more than its data file holds (48 bytes)"));
-  test::writeHeaderFile(dir.file("ok.mhd"), header("small.raw"));
+  test::writeHeaderFile(dir.file("ok.mhd"), hostileMetaImageHeader("small.raw"));
   EXPECT_EQ(loadVolume(dir.file("ok.mhd")).dims, glm::ivec3(4, 3, 2));
 }
 

@@ -19,7 +19,7 @@ using test::TempDir;
 using testing::HasSubstr;
 
 // A 4 x 3 x 2 short volume whose data file field is DATA_FILE (and any lines after it).
-std::string header(const std::string& dataFile) {
+std::string hostileNrrdHeader(const std::string& dataFile) {
   return "NRRD0004\ntype: short\ndimension: 3\nsizes: 4 3 2\nendian: little\nencoding: raw\n"
          "data file: " +
          dataFile + "\n";
@@ -35,11 +35,7 @@ std::vector<uint8_t> shorts(int n, int first) {
   return b;
 }
 
-std::string loadError(const std::string& path) {
-  const std::string m = test::errorMessage([&] { loadVolume(path); });
-  EXPECT_THAT(m, HasSubstr(path));
-  return m;
-}
+using test::loadError;
 
 // The error for a .nhdr holding HEADER in a fresh folder "study" inside DIR.
 std::string nhdrError(const TempDir& dir, const std::string& text) {
@@ -57,7 +53,7 @@ TEST(FormatsNrrdHostile, SlicePatternsThatOpenAreReadInOrder) {
   TempDir dir;
   test::writeBytes(dir.file("slice007.raw"), shorts(12, 0));
   test::writeBytes(dir.file("slice009.raw"), shorts(12, 100));
-  test::writeHeaderFile(dir.file("v.nhdr"), header("slice%03d.raw 7 9 2"));
+  test::writeHeaderFile(dir.file("v.nhdr"), hostileNrrdHeader("slice%03d.raw 7 9 2"));
   const Volume v = loadVolume(dir.file("v.nhdr"));
   ASSERT_EQ(v.dims, glm::ivec3(4, 3, 2));
   EXPECT_EQ(v.toPhysical(v.at(3, 2, 0)), 11.0);
@@ -71,7 +67,7 @@ TEST(FormatsNrrdHostile, PatternsTeemCannotPrintAreRefused) {
                               "slice%03d%s.raw 0 1 1", "slice%03d.raw 0 1 1 9 9"}) {
     SCOPED_TRACE(pattern);
     TempDir dir;
-    EXPECT_THAT(nhdrError(dir, header(pattern)),
+    EXPECT_THAT(nhdrError(dir, hostileNrrdHeader(pattern)),
                 HasSubstr("its data file pattern '" + std::string(pattern) +
                           "' is not one Voxray reads (NAME%03d.raw FIRST LAST STEP"));
   }
@@ -81,9 +77,9 @@ TEST(FormatsNrrdHostile, PatternsTeemCannotPrintAreRefused) {
 TEST(FormatsNrrdHostile, PatternRangesBeyondTheSizesAreRefusedQuickly) {
   TempDir dir;
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_THAT(nhdrError(dir, header("slice%03d.raw 0 2147483647 1")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("slice%03d.raw 0 2147483647 1")),
               HasSubstr("numbers of at most 9 digits"));
-  EXPECT_THAT(nhdrError(dir, header("slice%03d.raw 0 999999 1")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("slice%03d.raw 0 999999 1")),
               HasSubstr("the header names 1000000 data files; at most 24 are read"));
   EXPECT_LT(secondsSince(start), 5.0);
 }
@@ -101,20 +97,20 @@ TEST(FormatsNrrdHostile, DataFilesOutsideTheHeadersFolderAreRefused) {
                                   std::string("../outside.raw"), dir.file("outside.raw"),
                                   std::string("link.raw"), std::string("sub/x.raw")}) {
     SCOPED_TRACE(name);
-    EXPECT_THAT(nhdrError(dir, header(name)),
+    EXPECT_THAT(nhdrError(dir, hostileNrrdHeader(name)),
                 HasSubstr("its data file '" + name + "' lies outside the header's folder"));
   }
   // The list and pattern forms are held to the same rule.
-  EXPECT_THAT(nhdrError(dir, header("LIST\n../outside.raw\n../outside.raw")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("LIST\n../outside.raw\n../outside.raw")),
               HasSubstr("its data file '../outside.raw' lies outside the header's folder"));
-  EXPECT_THAT(nhdrError(dir, header("../outside%d.raw 1 2 1")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("../outside%d.raw 1 2 1")),
               HasSubstr("its data file '../outside1.raw' is missing"));
   // A lone carriage return may end a line for Teem and not for the check: refused as not text.
-  EXPECT_THAT(nhdrError(dir, header("x.raw\r../outside.raw")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("x.raw\r../outside.raw")),
               HasSubstr("header line 7 holds the byte 0x0d, which is not text"));
   test::writeBytes(dir.file("outside1.raw"), shorts(12, 0));
   test::writeBytes(dir.file("outside2.raw"), shorts(12, 0));
-  EXPECT_THAT(nhdrError(dir, header("../outside%d.raw 1 2 1")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("../outside%d.raw 1 2 1")),
               HasSubstr("its data file '../outside1.raw' lies outside the header's folder"));
 }
 
@@ -123,11 +119,12 @@ TEST(FormatsNrrdHostile, DataFilesThatAreNoRegularFilesAreRefused) {
   fs::create_directories(dir.path() / "study" / "folder");
   ASSERT_EQ(mkfifo((dir.path() / "study" / "pipe.raw").c_str(), 0600), 0);
   // Teem opened a FIFO (blocking for ever) and "-" (standard input).
-  EXPECT_THAT(nhdrError(dir, header("pipe.raw")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("pipe.raw")),
               HasSubstr("its data file 'pipe.raw' is not a regular file"));
-  EXPECT_THAT(nhdrError(dir, header("folder")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("folder")),
               HasSubstr("its data file 'folder' is not a regular file"));
-  EXPECT_THAT(nhdrError(dir, header("-")), HasSubstr("its data file is '-' (standard input)"));
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("-")),
+              HasSubstr("its data file is '-' (standard input)"));
 }
 
 // A data file inside the folder that does not hold what the header says is not this header's.
@@ -138,13 +135,13 @@ TEST(FormatsNrrdHostile, DataFilesOfTheWrongSizeAreRefused) {
   test::writeBytes((study / "big.raw").string(), shorts(50, 0));
   test::writeBytes((study / "s0.raw").string(), shorts(12, 0));
   test::writeBytes((study / "s1.raw").string(), shorts(13, 0));
-  EXPECT_THAT(nhdrError(dir, header("big.raw")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("big.raw")),
               HasSubstr("its data file 'big.raw' holds 100 bytes where the header's sizes and "
                         "type need 48"));
-  EXPECT_THAT(nhdrError(dir, header("LIST\ns0.raw\ns1.raw")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("LIST\ns0.raw\ns1.raw")),
               HasSubstr("its data file 's1.raw' holds 26 bytes where the header's sizes and "
                         "type need 24"));
-  EXPECT_THAT(nhdrError(dir, header("s%d.raw 0 1 1")),
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("s%d.raw 0 1 1")),
               HasSubstr("its data file 's1.raw' holds 26 bytes"));
   // With a byte skip the file holds more than the samples: at least that many.
   const std::string skip =
@@ -227,7 +224,8 @@ TEST(FormatsNrrdHostile, FieldsGivenTwiceAreRefused) {
                         "NRRD0004\ndata file: SKIPLIST\n");
   EXPECT_THAT(loadError((dir.path() / "early" / "v.nhdr").string()),
               HasSubstr("its data file field comes before the dimension and sizes"));
-  EXPECT_THAT(nhdrError(dir, header("LIST")), HasSubstr("its data file LIST names no file"));
+  EXPECT_THAT(nhdrError(dir, hostileNrrdHeader("LIST")),
+              HasSubstr("its data file LIST names no file"));
 }
 
 }  // namespace

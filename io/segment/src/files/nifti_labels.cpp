@@ -41,8 +41,8 @@ VoxelGrid gridOfAffine(const nifti_dmat44& a, const glm::ivec3& dims) {
 }
 
 template <typename T>
-void copyLabels(const nifti_image& n, double slope, double inter, LabelFile& out,
-                const std::string& path) {
+void copyNiftiLabels(const nifti_image& n, double slope, double inter, LabelFile& out,
+                     const std::string& path) {
   const T* v = static_cast<const T*>(n.data);
   for (size_t i = 0; i < out.labels.size(); ++i) {
     const double value = double(v[i]) * slope + inter;
@@ -103,28 +103,28 @@ LabelFile readNifti(const std::string& path) {
   const double inter = std::isfinite(n->scl_inter) ? n->scl_inter : 0.0;
   switch (n->datatype) {
     case DT_UINT8:
-      copyLabels<uint8_t>(*n, slope, inter, out, path);
+      copyNiftiLabels<uint8_t>(*n, slope, inter, out, path);
       break;
     case DT_INT8:
-      copyLabels<int8_t>(*n, slope, inter, out, path);
+      copyNiftiLabels<int8_t>(*n, slope, inter, out, path);
       break;
     case DT_INT16:
-      copyLabels<int16_t>(*n, slope, inter, out, path);
+      copyNiftiLabels<int16_t>(*n, slope, inter, out, path);
       break;
     case DT_UINT16:
-      copyLabels<uint16_t>(*n, slope, inter, out, path);
+      copyNiftiLabels<uint16_t>(*n, slope, inter, out, path);
       break;
     case DT_INT32:
-      copyLabels<int32_t>(*n, slope, inter, out, path);
+      copyNiftiLabels<int32_t>(*n, slope, inter, out, path);
       break;
     case DT_UINT32:
-      copyLabels<uint32_t>(*n, slope, inter, out, path);
+      copyNiftiLabels<uint32_t>(*n, slope, inter, out, path);
       break;
     case DT_FLOAT32:
-      copyLabels<float>(*n, slope, inter, out, path);
+      copyNiftiLabels<float>(*n, slope, inter, out, path);
       break;
     case DT_FLOAT64:
-      copyLabels<double>(*n, slope, inter, out, path);
+      copyNiftiLabels<double>(*n, slope, inter, out, path);
       break;
     default:
       throw inputError(path + ": holds " + nifti_datatype_string(n->datatype) +

@@ -126,7 +126,7 @@ glm::dvec3 lpsSigns(int space) {
 }
 
 template <typename T>
-void copyLabels(const Nrrd& n, LabelFile& out, const std::string& path) {
+void copyNrrdLabels(const Nrrd& n, LabelFile& out, const std::string& path) {
   const T* v = static_cast<const T*>(n.data);
   for (size_t i = 0; i < out.labels.size(); ++i) {
     const double value = double(v[i]);  // integer types only: whole numbers
@@ -209,22 +209,22 @@ LabelFile readNrrd(const std::string& path) {
   out.labels.resize(out.grid.voxelCount());
   switch (n->type) {
     case nrrdTypeUChar:
-      copyLabels<uint8_t>(*n, out, path);
+      copyNrrdLabels<uint8_t>(*n, out, path);
       break;
     case nrrdTypeChar:
-      copyLabels<int8_t>(*n, out, path);
+      copyNrrdLabels<int8_t>(*n, out, path);
       break;
     case nrrdTypeShort:
-      copyLabels<int16_t>(*n, out, path);
+      copyNrrdLabels<int16_t>(*n, out, path);
       break;
     case nrrdTypeUShort:
-      copyLabels<uint16_t>(*n, out, path);
+      copyNrrdLabels<uint16_t>(*n, out, path);
       break;
     case nrrdTypeInt:
-      copyLabels<int32_t>(*n, out, path);
+      copyNrrdLabels<int32_t>(*n, out, path);
       break;
     case nrrdTypeUInt:
-      copyLabels<uint32_t>(*n, out, path);
+      copyNrrdLabels<uint32_t>(*n, out, path);
       break;
     default:
       throw inputError(path + ": holds " + airEnumStr(nrrdType, n->type) +

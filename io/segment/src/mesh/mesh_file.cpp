@@ -52,7 +52,7 @@ glm::vec3 framed(const glm::vec3& lps, MeshCoordinates c) {
   return c == MeshCoordinates::Lps ? lps : glm::vec3(-lps.x, -lps.y, lps.z);
 }
 
-vtkSmartPointer<vtkPolyData> polyOf(const std::vector<const Part*>& parts, MeshCoordinates c) {
+vtkSmartPointer<vtkPolyData> polyOfParts(const std::vector<const Part*>& parts, MeshCoordinates c) {
   size_t nv = 0, nt = 0;
   for (const Part* p : parts) nv += p->surface.vertices.size(), nt += p->surface.triangleCount();
   vtkNew<vtkFloatArray> xyz;
@@ -102,7 +102,7 @@ std::string segmentList(const std::vector<const Part*>& parts) {
 
 void writeStl(const fs::path& file, const std::vector<const Part*>& parts, MeshCoordinates c) {
   vtkNew<vtkSTLWriter> writer;
-  writer->SetInputData(polyOf(parts, c));
+  writer->SetInputData(polyOfParts(parts, c));
   writer->SetFileName(file.c_str());
   writer->SetFileTypeToBinary();
   // A binary STL's 80-byte header is its only free text: the frame first, so it survives.
@@ -115,7 +115,7 @@ void writeStl(const fs::path& file, const std::vector<const Part*>& parts, MeshC
 
 void writePly(const fs::path& file, const std::vector<const Part*>& parts, MeshCoordinates c) {
   vtkNew<vtkPLYWriter> writer;
-  writer->SetInputData(polyOf(parts, c));
+  writer->SetInputData(polyOfParts(parts, c));
   writer->SetFileName(file.c_str());
   writer->SetFileTypeToBinary();
   writer->SetArrayName("RGB");  // each face in its segment's colour

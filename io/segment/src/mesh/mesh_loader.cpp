@@ -10,14 +10,14 @@
 namespace voxray {
 namespace {
 
-struct Module {
+struct MeshModule {
   decltype(&voxray_mesh_surface) surface = nullptr;
   decltype(&voxray_mesh_write) write = nullptr;
   std::string missing;  // empty when loaded
 };
 
-Module loadModule() {
-  Module m;
+MeshModule loadModule() {
+  MeshModule m;
   const char* symbols[] = {"voxray_mesh_surface", "voxray_mesh_write", nullptr};
   void* handle = loadProgramModule("libvoxray_mesh.so", "VTK", "voxray_mesh", symbols, &m.missing);
   if (!handle) return m;
@@ -26,8 +26,8 @@ Module loadModule() {
   return m;
 }
 
-const Module& module() {
-  static const Module m = loadModule();  // once, thread-safe
+const MeshModule& meshModule() {
+  static const MeshModule m = loadModule();  // once, thread-safe
   return m;
 }
 
@@ -39,7 +39,7 @@ const Module& module() {
 
 SegmentSurface makeSurface(const Segmentation& s, uint8_t label, const SurfaceOptions& options,
                            SurfaceTimings* timings) {
-  const Module& m = module();
+  const MeshModule& m = meshModule();
   if (!m.surface)
     throw outputError("Cannot make the surface of segment " + std::to_string(label) + " (" +
                       m.missing + ")");
@@ -52,7 +52,7 @@ SegmentSurface makeSurface(const Segmentation& s, uint8_t label, const SurfaceOp
 
 void writeMeshFile(const std::string& path, const Segmentation& s,
                    const std::vector<uint8_t>& labels, const MeshFileOptions& options) {
-  const Module& m = module();
+  const MeshModule& m = meshModule();
   if (!m.write) throw outputError(path + ": cannot write surface meshes (" + m.missing + ")");
   int kind = 0;
   std::string why;

@@ -140,7 +140,7 @@ Mesh meshOf(vtkPolyData* poly) {
   return m;
 }
 
-vtkSmartPointer<vtkPolyData> polyOf(const Mesh& m) {
+vtkSmartPointer<vtkPolyData> polyOfMesh(const Mesh& m) {
   vtkNew<vtkFloatArray> xyz;
   xyz->SetNumberOfComponents(3);
   xyz->SetNumberOfTuples(vtkIdType(m.xyz.size() / 3));
@@ -367,7 +367,7 @@ SegmentSurface makeSurface(const Segmentation& s, uint8_t label, const SurfaceOp
   } else if (reduce) {
     mesh = meshOf(poly);
     simplify(mesh, options.targetTriangles, t);
-    poly = options.smoothingIterations > 0 ? polyOf(mesh) : nullptr;
+    poly = options.smoothingIterations > 0 ? polyOfMesh(mesh) : nullptr;
   }
   t.decimate = since(start);
 
