@@ -75,6 +75,9 @@ class RawSliceReader {
   // file when it cannot be read.
   void readSlices(int first, int end, int16_t* dest) const;
   bool scanned() const;  // opening read the values to choose their storage
+  // When opening scanned: the stored values' smallest and largest, from that scan (no other
+  // read). Else none.
+  std::optional<ValueRange> storedRange() const;
 
  private:
   struct Impl;
