@@ -30,7 +30,7 @@ if [ ! -f "$RAW" ]; then
 fi
 nproc; free -g | head -2; cat /proc/loadavg
 if [ ! -d "$Z" ]; then
-  echo "== convert (the whole volume is loaded, then written in slabs)"
+  echo "== convert (the raw file read and written a chunk's depth of slices at a time, never whole)"
   # shellcheck disable=SC2086
   $TIME "$B" convert $IN -o "$Z"
   cat /proc/loadavg

@@ -305,6 +305,7 @@ struct RawSliceReader::Impl {
   Volume geometry;
   size_t sliceBytes = 0;
   bool scanned = false;
+  std::optional<ValueRange> storedRange;  // from the scan
 };
 
 RawSliceReader::RawSliceReader(const std::string& input, const RawLayout& layout)
@@ -345,6 +346,10 @@ RawSliceReader::RawSliceReader(const std::string& input, const RawLayout& layout
     for (const auto& st : stats) all.merge(st);
     m.storage = detail::chooseStorage(all, m.decoding);
     m.scanned = true;
+    // Non-finite samples store the fill value, the lowest; no finite one: all are 0 or fill.
+    const double lo = all.any ? all.min : 0.0, hi = all.any ? all.max : 0.0;
+    m.storedRange =
+        ValueRange{detail::storedValue(lo, m.storage), detail::storedValue(hi, m.storage)};
   }
   Volume& v = m.geometry;
   v.dims = {l.dims.x, l.dims.y, z};
@@ -361,6 +366,7 @@ RawSliceReader::~RawSliceReader() = default;
 
 const Volume& RawSliceReader::geometry() const { return impl_->geometry; }
 bool RawSliceReader::scanned() const { return impl_->scanned; }
+std::optional<ValueRange> RawSliceReader::storedRange() const { return impl_->storedRange; }
 
 void RawSliceReader::readSlices(int first, int end, int16_t* dest) const {
   const Impl& m = *impl_;

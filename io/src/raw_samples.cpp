@@ -194,6 +194,12 @@ void decodeSamples(const uint8_t* raw, size_t count, const SampleDecoding& decod
   visitSamples(raw, count, decoding, [&](size_t i, double v) { out[i] = v; });
 }
 
+int16_t storedValue(double value, const Storage& storage) {
+  // storeSamples' formula, the integer path's too (it gives the same for whole values).
+  const double s = std::nearbyint((value - storage.intercept) * (1.0 / storage.slope));
+  return int16_t(std::clamp(s, kStoredMin, kStoredMax));
+}
+
 void storeSamples(const uint8_t* raw, size_t count, const SampleDecoding& decoding,
                   const Storage& storage, int16_t* out) {
   if (wholeI16(decoding) && storage.slope == 1.0 &&

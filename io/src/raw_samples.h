@@ -41,6 +41,11 @@ struct Storage {
 // Chooses the storage for values described by `stats`, read as `decoding`.
 Storage chooseStorage(const ValueStats& stats, const SampleDecoding& decoding);
 
+// The voxel storeSamples gives the finite physical value VALUE under STORAGE. Rounding and
+// clamping never decrease as VALUE grows (STORAGE's slope is positive), so the stored values'
+// range is that of the smallest and the largest value.
+int16_t storedValue(double value, const Storage& storage);
+
 // Decodes samples to doubles: raw * slope + intercept of DECODING.
 void decodeSamples(const uint8_t* raw, size_t count, const SampleDecoding& decoding, double* out);
 

@@ -164,6 +164,40 @@ TEST_F(OutOfCoreCli, StreamedRawStaysWithinTheBudget) {
   EXPECT_EQ(j.at("first_image_shown").get<std::string>(), "preview") << b.out;
 }
 
+// voxray-cli convert of the 256 MiB raw file and of its OME-Zarr (issue 38): each read a
+// chunk's depth of slices at a time as the pyramid is written, never whole. Beyond the fixed
+// part the process holds level 0's slab (64 of 512 slices: 0.125x the volume), the slabs of
+// the further levels (int16: 0.04x), a few float slices and the chunks being encoded: 0.20x
+// from raw and 0.20x from OME-Zarr (81 MiB against 28-30 MiB, one run each at load 4-9). At
+// most 0.4x the volume: a whole load holds 1x at least.
+TEST_F(OutOfCoreCli, ConvertStreamsInBoundedMemory) {
+  const auto convert = [](const std::vector<std::string>& input, const std::string& out) {
+    std::vector<std::string> args = {"convert"};
+    args.insert(args.end(), input.begin(), input.end());
+    args.insert(args.end(), {"-o", (dir_ / out).string(), "--force", "--zarr-version", "3"});
+    return args;
+  };
+  const auto raw = [](const std::string& name, int n) {
+    const std::string d = std::to_string(n);
+    return std::vector<std::string>{(dir_ / (name + ".raw")).string(), "--raw-dims",
+                                    d + "," + d + "," + d, "--raw-type", "i16"};
+  };
+  const auto zarr = [](const std::string& name) {
+    return std::vector<std::string>{(dir_ / (name + ".ome.zarr")).string()};
+  };
+  for (const bool fromZarr : {false, true}) {
+    Peak peak;
+    ASSERT_TRUE(peakOverTiny(convert(fromZarr ? zarr("tiny") : raw("tiny", 64), "tiny3.ome.zarr"),
+                             convert(fromZarr ? zarr("big") : raw("big", 512), "big3.ome.zarr"), 1,
+                             peak));
+    EXPECT_LE(peak.over, 0.4) << (fromZarr ? "from OME-Zarr: " : "from raw: ") << peak.big.out;
+    EXPECT_NE(peak.big.out.find("4 levels: 512x512x512 256x256x256 128x128x128 64x64x64"),
+              std::string::npos)
+        << peak.big.out;
+    EXPECT_NE(peak.big.out.find("streamed"), std::string::npos) << peak.big.out;
+  }
+}
+
 // A Zarr whose level-0 chunk is gone: it opens, the first image comes, the frames draw it
 // empty and the bench says how many chunks were missing.
 TEST_F(OutOfCoreCli, MissingChunkShownEmptyAndSaid) {

@@ -1,8 +1,10 @@
-// A Volume out as an OME-Zarr pyramid, streamed in z-slabs: level 0's chunks are made straight
-// from the volume's voxels, one slab of chunk depth at a time; each slice of a level goes on to
-// the next level, which pairs slices into its own 2x2x2 means and writes its own slab when it
-// is full. Beyond the volume, memory holds one slab and one pending slice per level (about
-// 1/7 of a level-0 slab in all) and the chunks being encoded.
+// An OME-Zarr pyramid written from a SliceSource in z-slabs: level 0's chunks are made from one
+// slab of chunk depth at a time, read from the source (or where it holds them in place); each
+// slice of a level goes on to the next level, which pairs slices into its own 2x2x2 means and
+// writes its own slab when it is full. Memory holds one level-0 slab (int16), one slab and one
+// pending slice per further level (about 0.3x a level-0 slab in all when int16, 0.6x as float)
+// and the chunks being encoded, never the volume. The group's metadata is written last: it records
+// level 0's value range as the slabs passed.
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -43,7 +46,10 @@ struct LevelOut {
   glm::ivec3 dims{0};   // i, j, k
   glm::ivec3 chunk{0};  // chunk edge along i, j, k (the level's dims when smaller)
   fs::path folder;
-  std::vector<float> slab;  // up to chunk.z slices, exactly the values written
+  // Up to chunk.z slices, exactly the values written: whole numbers in int16 when the level
+  // is int16 (half the memory of floats), else floats.
+  std::vector<int16_t> slab16;
+  std::vector<float> slab;
   int slabZ0 = 0, slabCount = 0;
   std::vector<float> pending;  // a slice of the level above waiting for its pair
   bool hasPending = false;
@@ -165,9 +171,12 @@ class PyramidWriter {
 
   void push(size_t l, const std::vector<float>& slice) {
     LevelOut& level = levels_[l];
-    const size_t n = sliceSize(level.dims);
-    std::copy(slice.begin(), slice.end(),
-              level.slab.begin() + std::ptrdiff_t(size_t(level.slabCount) * n));
+    const size_t n = sliceSize(level.dims), at = size_t(level.slabCount) * n;
+    if (f_.int16)  // means of int16 values, rounded: whole and within int16
+      std::transform(slice.begin(), slice.end(), level.slab16.begin() + std::ptrdiff_t(at),
+                     [](float value) { return int16_t(value); });
+    else
+      std::copy(slice.begin(), slice.end(), level.slab.begin() + std::ptrdiff_t(at));
     ++level.slabCount;
     feed(l + 1, slice);
     if (level.slabCount == level.chunk.z) flush(l);
@@ -179,9 +188,11 @@ class PyramidWriter {
     writeSlab(
         level, f_, level.slabZ0, level.slabCount,
         [&](int z, int y, int x0, int count, float* out) {
-          const float* src =
-              level.slab.data() + size_t(z) * n + size_t(y) * size_t(level.dims.x) + size_t(x0);
-          std::copy(src, src + count, out);
+          const size_t at = size_t(z) * n + size_t(y) * size_t(level.dims.x) + size_t(x0);
+          if (f_.int16)
+            std::copy(level.slab16.data() + at, level.slab16.data() + at + count, out);
+          else
+            std::copy(level.slab.data() + at, level.slab.data() + at + count, out);
         },
         bytes, chunks);
     level.slabZ0 += level.slabCount;
@@ -308,14 +319,47 @@ void writeGroupMeta(const fs::path& root, const Volume& v, const Format& f,
                                    {zarr::kVoxrayBlock, voxray}}}});
 }
 
-// Physical values are whole numbers that fit int16: HU as they are. Otherwise float32.
-// RANGE: then the written values' range.
-bool fitsInt16(const Volume& v, ValueRange& range) {
+// Smallest and largest of N stored values at S, a slice a thread.
+ValueRange rangeOf(const int16_t* s, size_t slices, size_t sliceVoxels) {
+  std::vector<ValueRange> r(slices);
+  parallelFor(slices, [&](size_t k) {
+    int16_t lo = INT16_MAX, hi = INT16_MIN;
+    for (const int16_t* p = s + k * sliceVoxels; p != s + (k + 1) * sliceVoxels; ++p) {
+      lo = std::min(lo, *p);
+      hi = std::max(hi, *p);
+    }
+    r[k] = {lo, hi};
+  });
+  ValueRange all = r.front();
+  for (const ValueRange& x : r) all = {std::min(all.min, x.min), std::max(all.max, x.max)};
+  return all;
+}
+
+// The stored values' range: the source's, else one pass over its slices, STEP at a time.
+ValueRange storedRangeOf(SliceSource& source, int step) {
+  if (const std::optional<ValueRange> r = source.storedRange()) return *r;
+  const Volume& g = source.geometry();
+  const size_t n = sliceSize(g.dims);
+  std::vector<int16_t> slab;
+  std::optional<ValueRange> all;
+  for (int z0 = 0; z0 < g.dims.z; z0 += step) {
+    const int nz = std::min(step, g.dims.z - z0);
+    slab.resize(size_t(nz) * n);
+    source.readSlices(z0, z0 + nz, slab.data());
+    const ValueRange r = rangeOf(slab.data(), size_t(nz), n);
+    all = all ? ValueRange{std::min(all->min, r.min), std::max(all->max, r.max)} : r;
+  }
+  return all.value_or(ValueRange{});
+}
+
+// Physical values are whole numbers that fit int16: HU as they are. Otherwise float32. Only a
+// whole intercept other than 0 needs the stored range (stored + intercept may pass int16).
+bool fitsInt16(SliceSource& source, int step) {
+  const Volume& v = source.geometry();
   if (v.slope != 1.0 || v.intercept != std::floor(v.intercept)) return false;
-  const ValueRange r = storedRange(v);
-  if (r.min + v.intercept < -32768.0 || r.max + v.intercept > 32767.0) return false;
-  range = {int16_t(r.min + v.intercept), int16_t(r.max + v.intercept)};
-  return true;
+  if (v.intercept == 0.0) return true;
+  const ValueRange r = storedRangeOf(source, step);
+  return r.min + v.intercept >= -32768.0 && r.max + v.intercept <= 32767.0;
 }
 
 }  // namespace
@@ -330,6 +374,13 @@ ZarrCodec parseZarrCodec(const std::string& name) {
 
 ZarrWriteResult writeOmeZarr(const Volume& v, const std::string& path,
                              const ZarrWriteOptions& options) {
+  const std::unique_ptr<SliceSource> source = volumeSliceSource(v);
+  return writeOmeZarr(*source, path, options);
+}
+
+ZarrWriteResult writeOmeZarr(SliceSource& source, const std::string& path,
+                             const ZarrWriteOptions& options) {
+  const Volume& v = source.geometry();
   if (options.zarrVersion != 2 && options.zarrVersion != 3)
     throw inputError("--zarr-version: " + std::to_string(options.zarrVersion) +
                      " is neither 2 (NGFF 0.4) nor 3 (NGFF 0.5)");
@@ -350,7 +401,7 @@ ZarrWriteResult writeOmeZarr(const Volume& v, const std::string& path,
 
   Format f;
   f.version = options.zarrVersion;
-  f.int16 = fitsInt16(v, f.range);
+  f.int16 = fitsInt16(source, std::min(options.chunk, v.dims.z));
   switch (options.codec) {
     case ZarrCodec::BloscZstd:
       f.codec.kind = zarr::Codec::Kind::Blosc;
@@ -384,7 +435,11 @@ ZarrWriteResult writeOmeZarr(const Volume& v, const std::string& path,
       level.dims = dims;
       level.chunk = glm::min(dims, glm::ivec3(options.chunk));
       level.folder = temp / std::to_string(l);
-      if (l > 0) level.slab.resize(sliceSize(dims) * size_t(level.chunk.z));
+      const size_t slab = l > 0 ? sliceSize(dims) * size_t(level.chunk.z) : 0;
+      if (f.int16)
+        level.slab16.resize(slab);
+      else
+        level.slab.resize(slab);
       makeFolder(level.folder);
       writeArrayMeta(level, f);
       levels.push_back(std::move(level));
@@ -393,31 +448,47 @@ ZarrWriteResult writeOmeZarr(const Volume& v, const std::string& path,
       if (!more) break;
       dims = (dims + 1) / 2;
     }
-    writeGroupMeta(temp, v, f, levels);
 
     PyramidWriter pyramid(f, levels);
     const LevelOut& base = levels[0];
     const size_t n = sliceSize(v.dims);
-    const auto physical = [&](size_t at) { return float(v.voxels[at] * v.slope + v.intercept); };
+    std::vector<int16_t> read;  // level 0's slab when the source does not hold it in place
     std::vector<float> slice(n);
+    std::optional<ValueRange> range;  // of the stored values, as the slabs pass
     for (int z0 = 0; z0 < v.dims.z; z0 += base.chunk.z) {
       const int nz = std::min(base.chunk.z, v.dims.z - z0);
       if (options.progress)
         options.progress(double(z0) / v.dims.z, "Writing slices " + std::to_string(z0) + "-" +
                                                     std::to_string(z0 + nz - 1));
+      const int16_t* stored = source.slicesInPlace(z0);
+      if (!stored) {
+        read.resize(size_t(nz) * n);
+        source.readSlices(z0, z0 + nz, read.data());
+        stored = read.data();
+      }
+      const auto physical = [&](size_t at) { return float(stored[at] * v.slope + v.intercept); };
+      if (f.int16) {
+        const ValueRange r = rangeOf(stored, size_t(nz), n);
+        range = range ? ValueRange{std::min(range->min, r.min), std::max(range->max, r.max)} : r;
+      }
       writeSlab(
           base, f, z0, nz,
           [&](int z, int y, int x0, int count, float* out) {
-            const size_t at = v.index(x0, y, z0 + z);
+            const size_t at =
+                (size_t(z) * size_t(v.dims.y) + size_t(y)) * size_t(v.dims.x) + size_t(x0);
             for (int x = 0; x < count; ++x) out[x] = physical(at + size_t(x));
           },
           pyramid.bytes, pyramid.chunks);
-      for (int z = z0; z < z0 + nz; ++z) {
+      for (int z = 0; z < nz; ++z) {
         for (size_t i = 0; i < n; ++i) slice[i] = physical(size_t(z) * n + i);
         pyramid.feed(1, slice);
       }
     }
     pyramid.finish(1);
+    // int16: the values fit, so level 0's range is the stored one plus the intercept.
+    if (f.int16 && range)
+      f.range = {int16_t(range->min + v.intercept), int16_t(range->max + v.intercept)};
+    writeGroupMeta(temp, v, f, levels);
 
     if (fs::exists(fs::symlink_status(target, ec))) {
       const fs::path old = target.parent_path() /

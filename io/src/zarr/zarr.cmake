@@ -11,6 +11,7 @@ target_sources(voxray_io PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/zarr_folder_store.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ome_zarr_meta.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ome_zarr_read.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ome_zarr_slices.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ome_zarr_write.cpp)
 target_link_libraries(voxray_io PRIVATE PkgConfig::BLOSC PkgConfig::ZSTD ZLIB::ZLIB)
 target_compile_definitions(voxray_io PUBLIC VOXRAY_HAS_ZARR)

@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "voxray/io/load.h"
+#include "voxray/io/slice_source.h"
 #include "voxray/io/volume.h"
 
 namespace voxray {
@@ -82,6 +83,12 @@ class OmeZarrLevel {
   std::unique_ptr<Impl> impl_;
 };
 
+// Level LEVEL of the OME-Zarr in STORE (which the source then owns) as a SliceSource: the
+// metadata read on opening, each read only the chunks it meets (OmeZarrLevel); its warnings()
+// say how many chunks were missing. nullptr when the array holds a type OmeZarrLevel does not
+// stream (then load it whole). Throws Error (Input) as OmeZarrLevel does for bad metadata.
+std::unique_ptr<SliceSource> omeZarrSliceSource(std::unique_ptr<ZarrStore> store, int level);
+
 enum class ZarrCodec { BloscZstd, Zstd, Gzip, None };
 // "blosc-zstd", "zstd", "gzip", "none"; throws Error (Input) for another name.
 ZarrCodec parseZarrCodec(const std::string& name);
@@ -101,11 +108,19 @@ struct ZarrWriteResult {
   uint64_t chunks = 0, bytes = 0;
 };
 
-// Writes V as an OME-Zarr pyramid at PATH: level 0 holds V's physical values, each further level
-// the 2x2x2 mean of the one before (an odd last row, column or slice is averaged alone). Works in
-// z-slabs of one chunk's depth, so beyond V itself it holds a few slabs. Writes into a
-// temporary folder beside PATH and renames it. Throws Error (Output) when PATH exists and
-// options.force is false, or when writing fails; Error (Input) for bad options.
+// Writes SOURCE as an OME-Zarr pyramid at PATH: level 0 holds its physical values, each further
+// level the 2x2x2 mean of the one before (an odd last row, column or slice is averaged alone).
+// Level 0 is int16 when every value is a whole number that fits (HU as they are), else float32:
+// known from the slope and intercept, with the stored range only for a non-zero whole intercept
+// (then source.storedRange(), else one more pass over the slices). Reads and writes z-slabs of
+// one chunk's depth: it holds one slab of level 0 (none when the slices lie in place) and one
+// slab and one slice of each further level. Writes into a temporary folder beside PATH and
+// renames it. Throws Error (Output) when PATH exists and options.force is false, or when
+// writing fails; Error (Input) for bad options and what the source throws.
+ZarrWriteResult writeOmeZarr(SliceSource& source, const std::string& path,
+                             const ZarrWriteOptions& options = {});
+// V, in memory, the same way (volumeSliceSource: byte for byte what a streamed source of the
+// same values writes).
 ZarrWriteResult writeOmeZarr(const Volume& v, const std::string& path,
                              const ZarrWriteOptions& options = {});
 

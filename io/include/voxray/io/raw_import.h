@@ -80,6 +80,9 @@ class RawSliceReader {
   // readSlices does, and for rows outside the slice.
   void readRows(int z, int firstRow, int rowStep, int rows, int16_t* dest) const;
   bool scanned() const;  // opening read the values to choose their storage
+  // When opening scanned: the stored values' smallest and largest, from that scan (no other
+  // read). Else none.
+  std::optional<ValueRange> storedRange() const;
 
  private:
   struct Impl;
