@@ -31,7 +31,7 @@ namespace {
 using detail::kRawLayoutFlags;
 
 // One slice to read: `path` at byte `offset` (the header, or a slice inside a single file).
-struct SliceSource {
+struct SliceFileAt {
   std::string path;
   size_t offset = 0;
 };
@@ -84,7 +84,7 @@ size_t fileSize(const std::string& path) {
 
 // Slices of a folder or pattern: one file each, all header + one slice long. With a zSlab only
 // its files are checked (a rank reading its part does not open the others).
-std::vector<SliceSource> stackSources(const std::vector<detail::SliceFile>& files,
+std::vector<SliceFileAt> stackSources(const std::vector<detail::SliceFile>& files,
                                       const RawLayout& l, int& z) {
   if (l.dims.z != 0 && size_t(l.dims.z) != files.size()) {
     throw inputError("the stack has " + std::to_string(files.size()) + " slice files but " +
@@ -93,7 +93,7 @@ std::vector<SliceSource> stackSources(const std::vector<detail::SliceFile>& file
   }
   checkVoxelCount(l.dims.x, l.dims.y, (long long)files.size());
   z = int(files.size());
-  std::vector<SliceSource> sources;
+  std::vector<SliceFileAt> sources;
   for (size_t k = 0; k < files.size(); ++k) {
     const auto& f = files[k];
     const bool inSlab = !l.zSlab || (int(k) >= l.zSlab->first && int(k) < l.zSlab->second);
@@ -115,7 +115,7 @@ std::vector<SliceSource> stackSources(const std::vector<detail::SliceFile>& file
 }
 
 // Slices of one raw file: header, then Z slices; Z = 0 takes as many as the file holds.
-std::vector<SliceSource> fileSources(const std::string& path, const RawLayout& l, size_t sliceBytes,
+std::vector<SliceFileAt> fileSources(const std::string& path, const RawLayout& l, size_t sliceBytes,
                                      int& z) {
   if (l.range) {
     throw inputError(path + ": --raw-range selects files of a slice stack; a single raw file " +
@@ -138,14 +138,14 @@ std::vector<SliceSource> fileSources(const std::string& path, const RawLayout& l
                      dimsText(l.dims.x, l.dims.y) + "x" + std::to_string(z) + layout + ", found " +
                      std::to_string(found) + " — check " + kRawLayoutFlags);
   }
-  std::vector<SliceSource> sources;
+  std::vector<SliceFileAt> sources;
   for (int k = 0; k < z; ++k) sources.push_back({path, l.headerBytes + size_t(k) * sliceBytes});
   return sources;
 }
 
 // COUNT blocks of BYTES each, the i-th at S's offset + i * STRIDE, one after another into DEST:
 // one open for them all (a point-sampled level reads thousands of rows).
-void readBlocks(const SliceSource& s, uint8_t* dest, size_t bytes, size_t count, size_t stride) {
+void readBlocks(const SliceFileAt& s, uint8_t* dest, size_t bytes, size_t count, size_t stride) {
   // O_NONBLOCK and fstat: a path swapped for a FIFO after the checks must not hang here.
   const int fd = ::open(s.path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) throw inputError(s.path + ": cannot read (" + ioReason() + ")");
@@ -173,17 +173,17 @@ void readBlocks(const SliceSource& s, uint8_t* dest, size_t bytes, size_t count,
   ::close(fd);
 }
 
-void readExactly(const SliceSource& s, uint8_t* dest, size_t bytes) {
+void readExactly(const SliceFileAt& s, uint8_t* dest, size_t bytes) {
   readBlocks(s, dest, bytes, 1, 0);
 }
 
 // INPUT's slices in z order (only listed and checked, not read); Z their count.
-std::vector<SliceSource> listSources(const std::string& input, const RawLayout& layout, int& z) {
+std::vector<SliceFileAt> listSources(const std::string& input, const RawLayout& layout, int& z) {
   validateLayout(layout);
   checkVoxelCount(layout.dims.x, layout.dims.y, layout.dims.z);
   const size_t sliceBytes =
       size_t(layout.dims.x) * size_t(layout.dims.y) * sampleBytes(layout.type);
-  std::vector<SliceSource> sources;
+  std::vector<SliceFileAt> sources;
   std::error_code ec;
   if (fs::is_directory(input, ec)) {
     if (layout.range)
@@ -221,7 +221,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
   const size_t sampleSize = sampleBytes(layout.type);
   const size_t sliceBytes = sliceVoxels * sampleSize;
   int z = 0;
-  std::vector<SliceSource> sources = listSources(input, layout, z);
+  std::vector<SliceFileAt> sources = listSources(input, layout, z);
   int slabFirst = 0;
   if (layout.zSlab) {
     const auto [first, end] = *layout.zSlab;
@@ -229,7 +229,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
       throw inputError(input + ": slices " + std::to_string(first) + " to " +
                        std::to_string(end - 1) + " were asked for, but it holds slices 0 to " +
                        std::to_string(z - 1));
-    sources = std::vector<SliceSource>(sources.begin() + first, sources.begin() + end);
+    sources = std::vector<SliceFileAt>(sources.begin() + first, sources.begin() + end);
     z = end - first;
     slabFirst = first;
   }
@@ -299,7 +299,7 @@ Volume importRaw(const std::string& input, const RawLayout& layout, const RawFee
 }
 
 struct RawSliceReader::Impl {
-  std::vector<SliceSource> sources;
+  std::vector<SliceFileAt> sources;
   detail::SampleDecoding decoding;
   detail::Storage storage;
   Volume geometry;
@@ -406,7 +406,7 @@ void RawSliceReader::readRows(int z, int firstRow, int rowStep, int rows, int16_
   const bool inPlace = rowBytes == size_t(d.x) * sizeof(int16_t);
   std::vector<uint8_t> samples(inPlace ? 0 : rowBytes * size_t(rows));
   uint8_t* raw = inPlace ? reinterpret_cast<uint8_t*>(dest) : samples.data();
-  SliceSource s = m.sources[size_t(z)];
+  SliceFileAt s = m.sources[size_t(z)];
   s.offset += size_t(firstRow) * rowBytes;
   readBlocks(s, raw, rowBytes, size_t(rows), size_t(rowStep) * rowBytes);
   detail::storeSamples(raw, size_t(d.x) * size_t(rows), m.decoding, m.storage, dest);

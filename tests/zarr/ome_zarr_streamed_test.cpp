@@ -108,14 +108,14 @@ Input rawInput(RawCase c) {
   return in;
 }
 
-using Case = std::tuple<int, RawCase>;
+using StreamedConvertCase = std::tuple<int, RawCase>;
 
-std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+std::string streamedConvertName(const ::testing::TestParamInfo<StreamedConvertCase>& info) {
   static const char* const names[] = {"I16", "I16Shift", "U16Wide", "F32Quarter"};
   return "V" + std::to_string(std::get<0>(info.param)) + names[int(std::get<1>(info.param))];
 }
 
-class StreamedConvert : public ::testing::TestWithParam<Case> {};
+class StreamedConvert : public ::testing::TestWithParam<StreamedConvertCase> {};
 
 TEST_P(StreamedConvert, RawStreamedEqualsLoadedWholeByteForByte) {
   const auto [version, rawCase] = GetParam();
@@ -154,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(VersionsAndTypes, StreamedConvert,
                                             ::testing::Values(RawCase::I16, RawCase::I16Shift,
                                                               RawCase::U16Wide,
                                                               RawCase::F32Quarter)),
-                         caseName);
+                         streamedConvertName);
 
 // The range recorded in the metadata (out-of-core rendering maps its colour table with it) is
 // level 0's exact smallest and largest value: here -1024 and 1976 (a = 0 and a = 3000 occur).
